@@ -1,0 +1,72 @@
+#pragma once
+/// Public description of bodies: handles, creation definitions, state.
+
+#include <cstdint>
+
+#include "impulse/material.h"
+#include "impulse/math.h"
+#include "impulse/shape.h"
+
+namespace impulse {
+
+/// Stable body handle. 0 is null. The low bits hold slot index + 1, the high
+/// bits a generation that changes each time the slot is reused, so a stale id
+/// is recognised instead of silently naming another body. The value travels
+/// on the wire as uint32.
+struct BodyId {
+  std::uint32_t value = 0;
+
+  static constexpr int kIndexBits = 18;
+  static constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
+  static constexpr std::uint32_t kGenerationMask = (1u << (32 - kIndexBits)) - 1;
+
+  static BodyId make(std::int32_t slot, std::uint32_t generation) {
+    return {((generation & kGenerationMask) << kIndexBits) | (std::uint32_t(slot) + 1)};
+  }
+  bool isNull() const { return value == 0; }
+  std::int32_t slot() const { return std::int32_t(value & kIndexMask) - 1; }
+  std::uint32_t generation() const { return value >> kIndexBits; }
+  friend bool operator==(BodyId, BodyId) = default;
+  friend auto operator<=>(BodyId, BodyId) = default;
+};
+
+/// Everything needed to create a body. The shape is local to the centroid,
+/// and `position` is where the centroid goes.
+struct BodyDef {
+  Shape shape;
+  Vec2 position = Vec2::Zero();
+  Real angle = 0;
+  Vec2 linearVelocity = Vec2::Zero();
+  Real angularVelocity = 0;
+  Material material = Material::Solid;
+  bool isStatic = false;
+  bool ignoreGravity = false;
+  /// Air drag rates in 1/s: dv/dt = -linearDrag * v, exact over any dt.
+  Real linearDrag = 0;
+  Real angularDrag = 0;
+};
+
+/// Snapshot of one body's motion.
+struct BodyState {
+  BodyId id;
+  Vec2 position = Vec2::Zero();  ///< centre of mass
+  Real angle = 0;
+  Vec2 linearVelocity = Vec2::Zero();
+  Real angularVelocity = 0;
+  bool awake = false;
+};
+
+/// What does not change over a body's life.
+struct BodyDescription {
+  BodyId id;
+  Shape shape;
+  Material material = Material::Solid;
+  bool isStatic = false;
+  bool ignoreGravity = false;
+  MassProperties mass;  ///< zero mass and inertia for static bodies
+  Real restitution = 0;
+  Real staticFriction = 0;
+  Real dynamicFriction = 0;
+};
+
+}  // namespace impulse

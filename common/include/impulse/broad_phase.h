@@ -1,0 +1,72 @@
+#pragma once
+/// Broad phase: which shapes may touch, without testing every pair.
+///
+/// Two dynamic AABB trees (static proxies, movable proxies), so static-static
+/// pairs are never considered and a moving proxy only queries what it could
+/// touch. Only proxies that moved out of their fat box are re-inserted, and
+/// only proxies marked moved look for new pairs.
+
+#include <cstdint>
+#include <vector>
+
+#include "impulse/dynamic_tree.h"
+#include "impulse/math.h"
+
+namespace impulse {
+
+/// A candidate pair of user values, first < second.
+struct ProxyPair {
+  std::int32_t first = 0;
+  std::int32_t second = 0;
+  friend bool operator==(const ProxyPair&, const ProxyPair&) = default;
+};
+
+class BroadPhase {
+ public:
+  enum class ProxyKind : std::uint8_t { Static = 0, Movable = 1 };
+
+  /// Adds a proxy for a tight AABB; movable proxies are fattened by
+  /// kAabbMargin. Returns a proxy key (tree index and kind packed together).
+  std::int32_t createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind);
+  void destroyProxy(std::int32_t proxyKey);
+
+  /// Called with the new tight AABB of a moving proxy. Re-inserts it (and
+  /// queues it for pair search) only when it left its fat AABB. Returns true
+  /// when it was re-inserted.
+  bool updateProxy(std::int32_t proxyKey, const AABB& tightAABB);
+
+  /// Queues a proxy for pair search without moving it (e.g. a body woke up).
+  void touchProxy(std::int32_t proxyKey);
+
+  /// Finds the pairs whose fat AABBs overlap and involve a queued proxy, sorted
+  /// and without duplicates, into `pairs` (cleared first), then empties the
+  /// queue. The caller filters out pairs that already have a contact.
+  void findNewPairs(std::vector<ProxyPair>& pairs);
+
+  bool fatAABBsOverlap(std::int32_t proxyKeyA, std::int32_t proxyKeyB) const;
+  const AABB& fatAABB(std::int32_t proxyKey) const;
+
+  /// Calls visit(userValue) for every proxy whose fat AABB overlaps box;
+  /// visit returns false to stop early.
+  template <typename Visit>
+  void query(const AABB& box, Visit&& visit) const {
+    bool proceed = true;
+    for (const DynamicTree& tree : trees_) {
+      if (!proceed) return;
+      tree.query(box, [&](std::int32_t node) {
+        proceed = visit(tree.userValue(node));
+        return proceed;
+      });
+    }
+  }
+
+  int proxyCount() const;
+
+ private:
+  void queryPairs(std::int32_t proxyKey, std::vector<ProxyPair>& pairs) const;
+
+  DynamicTree trees_[2];
+  std::vector<std::int32_t> moveBuffer_;
+};
+
+}  // namespace impulse

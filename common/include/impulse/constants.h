@@ -1,0 +1,21 @@
+#pragma once
+/// Tolerances shared by collision and solver, in metres and seconds.
+
+#include "impulse/math.h"
+
+namespace impulse {
+
+/// Penetration the solver tolerates before pushing apart; keeps resting
+/// contacts persistent instead of flickering between touching and not.
+inline constexpr Real kLinearSlop = Real(0.005);
+/// Contacts are generated this far before shapes touch, so the solver can stop
+/// an approaching body exactly at the surface (speculative contact).
+inline constexpr Real kSpeculativeDistance = 4 * kLinearSlop;
+/// Fat AABB margin: a moving proxy is re-inserted in the tree only after it
+/// leaves its enlarged box.
+inline constexpr Real kAabbMargin = Real(0.1);
+/// Polygon vertex limits of SPEC.md.
+inline constexpr int kMinPolygonVertices = 3;
+inline constexpr int kMaxPolygonVertices = 16;
+
+}  // namespace impulse

@@ -1,0 +1,85 @@
+#pragma once
+/// Dynamic AABB tree (bounding volume hierarchy) with incremental insert and
+/// remove, balanced by rotations, nodes in one contiguous array.
+
+#include <cstdint>
+#include <vector>
+
+#include "impulse/math.h"
+
+namespace impulse {
+
+class DynamicTree {
+ public:
+  static constexpr std::int32_t kNull = -1;
+
+  /// Inserts a leaf holding `box` as is (callers fatten it). Returns the node index.
+  std::int32_t createProxy(const AABB& box, std::int32_t userValue);
+  void destroyProxy(std::int32_t node);
+  /// Removes and re-inserts the leaf with a new box.
+  void moveProxy(std::int32_t node, const AABB& box);
+
+  const AABB& box(std::int32_t node) const { return nodes_[node].box; }
+  std::int32_t userValue(std::int32_t node) const { return nodes_[node].userValue; }
+
+  /// Calls visit(node) for each leaf whose box overlaps `box`, in a
+  /// deterministic order; visit returns false to stop.
+  template <typename Visit>
+  void query(const AABB& box, Visit&& visit) const;
+
+  int height() const;
+  int leafCount() const { return leafCount_; }
+  /// Checks parent links, heights and enclosing boxes (for tests).
+  bool isValid() const;
+
+ private:
+  struct Node {
+    AABB box;
+    std::int32_t parent = kNull;  // also the free-list link for free nodes
+    std::int32_t child1 = kNull;
+    std::int32_t child2 = kNull;
+    std::int32_t userValue = -1;
+    std::int16_t height = 0;  // leaf 0, free -1
+    bool isLeaf() const { return child1 == kNull; }
+  };
+
+  std::int32_t allocateNode();
+  void freeNode(std::int32_t node);
+  void insertLeaf(std::int32_t leaf);
+  void removeLeaf(std::int32_t leaf);
+  std::int32_t findBestSibling(const AABB& leafBox) const;
+  void replaceChild(std::int32_t parent, std::int32_t oldChild, std::int32_t newChild);
+  void refit(std::int32_t node);
+  void refitAncestors(std::int32_t node);
+  std::int32_t balance(std::int32_t node);
+  std::int32_t rotateUp(std::int32_t node, std::int32_t child);
+  bool isValidNode(std::int32_t node) const;
+  std::int64_t freeNodeCount() const;
+
+  std::vector<Node> nodes_;
+  std::int32_t root_ = kNull;
+  std::int32_t freeList_ = kNull;
+  int leafCount_ = 0;
+  mutable std::vector<std::int32_t> stack_;
+};
+
+template <typename Visit>
+void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
+  if (root_ == kNull) return;
+  stack_.clear();
+  stack_.push_back(root_);
+  while (!stack_.empty()) {
+    std::int32_t index = stack_.back();
+    stack_.pop_back();
+    const Node& node = nodes_[index];
+    if (!node.box.overlaps(queryBox)) continue;
+    if (node.isLeaf()) {
+      if (!visit(index)) return;
+    } else {
+      stack_.push_back(node.child1);
+      stack_.push_back(node.child2);
+    }
+  }
+}
+
+}  // namespace impulse

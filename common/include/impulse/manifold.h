@@ -1,0 +1,71 @@
+#pragma once
+/// Narrow phase: contact manifolds between pairs of shapes, as pure functions.
+
+#include <array>
+#include <cstdint>
+
+#include "impulse/math.h"
+#include "impulse/shape.h"
+
+namespace impulse {
+
+/// One contact point. Geometry is written by the narrow phase; the impulses
+/// are solver state that the world carries from step to step by matching ids
+/// (warm starting).
+struct ManifoldPoint {
+  /// World point midway between the two surfaces.
+  Vec2 point = Vec2::Zero();
+  /// point minus the centre of mass of A, and of B (world orientation).
+  Vec2 anchorA = Vec2::Zero();
+  Vec2 anchorB = Vec2::Zero();
+  /// Signed distance along the normal: negative when overlapping.
+  Real separation = 0;
+  /// Feature key (which edges/vertices produced it), stable while the
+  /// configuration is stable.
+  std::uint16_t id = 0;
+
+  Real normalImpulse = 0;
+  Real tangentImpulse = 0;
+  /// Largest normal impulse applied in the last step (for restitution and events).
+  Real maxNormalImpulse = 0;
+  /// Relative normal velocity before the solve (restitution uses it).
+  Real relativeNormalVelocity = 0;
+  /// True when the id matched a point of the previous step.
+  bool persisted = false;
+};
+
+/// Up to two contact points sharing one normal, which points from A to B.
+struct Manifold {
+  Vec2 normal = Vec2::Zero();
+  int pointCount = 0;
+  std::array<ManifoldPoint, 2> points{};
+  /// Accumulated rolling resistance impulse (solver state).
+  Real rollingImpulse = 0;
+};
+
+/// Feature key of a point made from feature a of shape A and feature b of B.
+constexpr std::uint16_t makeFeatureId(int a, int b) {
+  return static_cast<std::uint16_t>(((a & 0xFF) << 8) | (b & 0xFF));
+}
+
+// Each function returns the points whose separation is below
+// kSpeculativeDistance (speculative contacts), and no points otherwise.
+Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB);
+Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB);
+Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
+                         const Transform& xfB);
+
+using CollideFunction = Manifold (*)(const Shape& a, const Transform& xfA, const Shape& b,
+                                     const Transform& xfB);
+
+/// Dispatch table entry for the ordered type pair, or nullptr when the pair
+/// must be given the other way round (shape A's type must be >= shape B's).
+CollideFunction collideFunction(ShapeType a, ShapeType b);
+
+/// Signed distance between two shapes: the exact gap when they are apart,
+/// and a negative value (minus the depth along the axis of least
+/// penetration) when they overlap. Continuous collision uses it.
+Real computeSeparation(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB);
+
+}  // namespace impulse

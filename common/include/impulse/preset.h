@@ -1,0 +1,38 @@
+#pragma once
+/// The scenes of SPEC.md (presets 0-10), built into a world. Server, tests and
+/// benchmark share them.
+
+#include <string>
+#include <vector>
+
+#include "impulse/material.h"
+#include "impulse/math.h"
+#include "impulse/world.h"
+
+namespace impulse {
+
+/// A yellow guide circle drawn by viewers (tutorial presets).
+struct Marker {
+  Vec2 center = Vec2::Zero();
+  Real radius = 0;
+};
+
+struct PresetInfo {
+  int id = 0;
+  std::string title;
+  std::vector<std::string> explanation;
+  std::vector<Marker> markers;
+  /// Whether users may draw shapes in this scene (sandbox and tutorials).
+  bool drawingAllowed = false;
+};
+
+inline constexpr int kPresetCount = 11;
+/// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
+inline const Vec2 kSceneSize = Vec2(25, Real(18.75));
+
+/// Clears the world, resets gravity and builds preset `id` (0..10).
+/// `selected` is the viewer's current material (preset 9 uses it).
+/// Returns nothing for an id out of range, leaving the world untouched.
+std::optional<PresetInfo> loadPreset(World& world, int id, Material selected = Material::Solid);
+
+}  // namespace impulse

@@ -1,0 +1,151 @@
+#pragma once
+/// The simulated world: bodies, gravity and the fixed step.
+///
+/// The world owns no threads and does no I/O. Callers create bodies, call
+/// step(dt) at a fixed rate and read states back (movedBodies() lists only
+/// bodies whose state changed in the last step).
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "impulse/body.h"
+#include "impulse/math.h"
+#include "impulse/shape.h"
+
+namespace impulse {
+
+struct WorldData;  // private state, defined in common/src/world_data.h
+
+inline const Vec2 kDefaultGravity = Vec2(0, Real(-9.81));
+
+/// Solver and world parameters. The benchmark sweeps them.
+struct WorldSettings {
+  Vec2 gravity = kDefaultGravity;
+  /// Sub-steps per step: more gives stiffer, more accurate contacts.
+  int subSteps = 4;
+  /// Relaxation passes (no position bias) per sub-step.
+  int relaxIterations = 1;
+  /// Contact stiffness (Hz) and damping ratio of the soft contact constraint;
+  /// the stiffness is capped at a quarter of the sub-step rate for stability.
+  Real contactHertz = 30;
+  Real contactDampingRatio = 10;
+  /// Fastest speed (m/s) at which overlap is pushed out: deep overlaps resolve
+  /// gently instead of launching bodies.
+  Real maxContactPushSpeed = 3;
+  /// Approach speeds below this (m/s) do not bounce, so resting stacks stay put.
+  Real restitutionThreshold = 1;
+  /// Contacts slower than this (m/s) in the tangent direction use static friction.
+  Real stickSpeed = Real(0.02);
+  bool enableWarmStarting = true;
+  bool enableSleep = true;
+  /// A body whose fastest point (centre or rim) stays slower than this (m/s)
+  /// for timeToSleep seconds may sleep with its island.
+  Real linearSleepTolerance = Real(0.05);
+  Real timeToSleep = Real(0.5);
+  bool enableContinuous = true;
+  /// Bodies may not be created with a centre outside these bounds.
+  AABB bounds{Vec2(-25, -25), Vec2(50, 45)};
+  /// Hard cap on live bodies (the server lowers it).
+  int maxBodies = 200000;
+  ShapeLimits shapeLimits;
+};
+
+/// Wall-clock milliseconds spent in each phase of the last step.
+struct StepProfile {
+  double pairs = 0;       ///< broad phase: new pairs
+  double collide = 0;     ///< narrow phase: manifolds
+  double solve = 0;       ///< contact solver and integration
+  double continuous = 0;  ///< time of impact for fast bodies
+  double sleep = 0;       ///< islands and sleeping
+  double total = 0;
+};
+
+/// Outcome of a body creation: an id, or a message that says what was wrong.
+struct CreateResult {
+  BodyId id;
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
+/// A body created from user-facing input (wire commands, tools): validated
+/// fully before anything changes.
+struct BodyOptions {
+  Material material = Material::Solid;
+  bool isStatic = false;
+  bool ignoreGravity = false;
+  Vec2 linearVelocity = Vec2::Zero();
+  Real angularVelocity = 0;
+  Real linearDrag = 0;
+  Real angularDrag = 0;
+};
+
+class World {
+ public:
+  explicit World(const WorldSettings& settings = {});
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
+
+  /// Validates the definition (finite numbers, bounds, shape, body limit).
+  CreateResult createBody(const BodyDef& def);
+  /// A circle centred at `center` (world).
+  CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options = {});
+  /// A polygon from world-space points in either winding.
+  CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options = {});
+  /// Removes a body and wakes what touched it. False for an unknown id.
+  bool destroyBody(BodyId id);
+  /// Removes every body.
+  void clear();
+
+  bool isValid(BodyId id) const;
+  std::optional<BodyState> bodyState(BodyId id) const;
+  std::optional<BodyDescription> bodyDescription(BodyId id) const;
+  /// Every live body's id in slot order.
+  std::vector<BodyId> bodyIds() const;
+  int bodyCount() const;
+  int awakeBodyCount() const;
+  int contactCount() const;
+
+  /// Ids whose state changed in the last step: awake bodies and the bodies
+  /// that fell asleep in it (a client needs their final rest state).
+  std::span<const BodyId> movedBodies() const;
+
+  void setGravity(const Vec2& gravity);
+  Vec2 gravity() const;
+
+  /// Wakes the body. The point defaults to the centre of mass. False for an
+  /// unknown id, a static body or a non-finite vector.
+  bool applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point = std::nullopt);
+  /// Force applied over the next step only.
+  bool applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point = std::nullopt);
+  bool setVelocity(BodyId id, const Vec2& linear, Real angular);
+
+  /// The body whose shape contains the point (the topmost-created if several).
+  std::optional<BodyId> queryPoint(const Vec2& point) const;
+
+  /// Advances the world by dt seconds (sub-stepped internally).
+  void step(Real dt);
+
+  const WorldSettings& settings() const;
+  /// Changes solver parameters between steps (gravity and bounds included).
+  void setSettings(const WorldSettings& settings);
+  const StepProfile& profile() const;
+  std::uint64_t stepCount() const;
+  double simulatedTime() const;
+
+  /// Hash of every body's exact bits (position, rotation, velocities, awake),
+  /// for determinism tests.
+  std::uint64_t stateHash() const;
+
+ private:
+  std::unique_ptr<WorldData> impl_;
+};
+
+}  // namespace impulse

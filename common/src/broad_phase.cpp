@@ -1,0 +1,122 @@
+#include "impulse/broad_phase.h"
+
+#include <algorithm>
+
+#include "impulse/constants.h"
+
+namespace impulse {
+namespace {
+
+constexpr std::int32_t kNullKey = -1;
+
+// A proxy key is the tree node index shifted left by one, with the kind (the
+// tree) in the low bit.
+std::int32_t makeKey(std::int32_t node, BroadPhase::ProxyKind kind) {
+  return (node << 1) | static_cast<std::int32_t>(kind);
+}
+std::int32_t nodeOf(std::int32_t proxyKey) { return proxyKey >> 1; }
+BroadPhase::ProxyKind kindOf(std::int32_t proxyKey) {
+  return static_cast<BroadPhase::ProxyKind>(proxyKey & 1);
+}
+int treeIndex(BroadPhase::ProxyKind kind) { return static_cast<int>(kind); }
+
+AABB fatten(const AABB& tight, BroadPhase::ProxyKind kind) {
+  // Static proxies never move, so a margin would only produce false pairs.
+  return kind == BroadPhase::ProxyKind::Movable ? tight.expanded(kAabbMargin) : tight;
+}
+
+bool pairLess(const ProxyPair& a, const ProxyPair& b) {
+  return a.first != b.first ? a.first < b.first : a.second < b.second;
+}
+
+// Appends a pair of `userValue` with every leaf of `tree` overlapping `box`,
+// except `skipNode` (the querying proxy itself).
+void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue,
+                  std::int32_t skipNode, std::vector<ProxyPair>& pairs) {
+  tree.query(box, [&](std::int32_t node) {
+    if (node != skipNode) {
+      const std::int32_t other = tree.userValue(node);
+      pairs.push_back({std::min(userValue, other), std::max(userValue, other)});
+    }
+    return true;
+  });
+}
+
+}  // namespace
+
+std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userValue,
+                                     ProxyKind kind) {
+  const std::int32_t node = trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind), userValue);
+  const std::int32_t key = makeKey(node, kind);
+  // A new static proxy is not queued: it cannot pair with other static proxies,
+  // and movable ones find it when they move (or the caller touches it).
+  if (kind == ProxyKind::Movable) moveBuffer_.push_back(key);
+  return key;
+}
+
+void BroadPhase::destroyProxy(std::int32_t proxyKey) {
+  // The node may be reused by the next createProxy under the same key, so its
+  // queue entries must go now. A linear scan: the queue only holds this step's
+  // movers.
+  std::replace(moveBuffer_.begin(), moveBuffer_.end(), proxyKey, kNullKey);
+  trees_[treeIndex(kindOf(proxyKey))].destroyProxy(nodeOf(proxyKey));
+}
+
+bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB) {
+  const ProxyKind kind = kindOf(proxyKey);
+  DynamicTree& tree = trees_[treeIndex(kind)];
+  const std::int32_t node = nodeOf(proxyKey);
+  if (tree.box(node).contains(tightAABB)) return false;
+  tree.moveProxy(node, fatten(tightAABB, kind));
+  moveBuffer_.push_back(proxyKey);
+  return true;
+}
+
+void BroadPhase::touchProxy(std::int32_t proxyKey) { moveBuffer_.push_back(proxyKey); }
+
+void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs) {
+  pairs.clear();
+  // A proxy both moved and touched is queued twice but needs one query.
+  std::sort(moveBuffer_.begin(), moveBuffer_.end());
+  moveBuffer_.erase(std::unique(moveBuffer_.begin(), moveBuffer_.end()), moveBuffer_.end());
+  for (std::int32_t proxyKey : moveBuffer_) {
+    if (proxyKey != kNullKey) queryPairs(proxyKey, pairs);
+  }
+  // Two queued proxies find each other from both ends; sorting also makes the
+  // output independent of tree shape and queue order.
+  std::sort(pairs.begin(), pairs.end(), pairLess);
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  moveBuffer_.clear();
+}
+
+bool BroadPhase::fatAABBsOverlap(std::int32_t proxyKeyA, std::int32_t proxyKeyB) const {
+  return fatAABB(proxyKeyA).overlaps(fatAABB(proxyKeyB));
+}
+
+const AABB& BroadPhase::fatAABB(std::int32_t proxyKey) const {
+  return trees_[treeIndex(kindOf(proxyKey))].box(nodeOf(proxyKey));
+}
+
+int BroadPhase::proxyCount() const {
+  return trees_[treeIndex(ProxyKind::Static)].leafCount() +
+         trees_[treeIndex(ProxyKind::Movable)].leafCount();
+}
+
+void BroadPhase::queryPairs(std::int32_t proxyKey, std::vector<ProxyPair>& pairs) const {
+  const ProxyKind kind = kindOf(proxyKey);
+  const std::int32_t node = nodeOf(proxyKey);
+  const DynamicTree& own = trees_[treeIndex(kind)];
+  const AABB& box = own.box(node);
+  const std::int32_t userValue = own.userValue(node);
+  const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
+  if (kind == ProxyKind::Movable) {
+    collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue, DynamicTree::kNull, pairs);
+    collectPairs(movable, box, userValue, node, pairs);
+  } else {
+    // A queued static proxy (touched or teleported) only looks for movable
+    // partners: static-static pairs never collide.
+    collectPairs(movable, box, userValue, DynamicTree::kNull, pairs);
+  }
+}
+
+}  // namespace impulse

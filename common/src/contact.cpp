@@ -1,0 +1,183 @@
+// Contact lifetime: creation from broad-phase pairs, manifold updates with
+// warm-start matching, and destruction. Contacts live in one array with a
+// free list and are threaded through both bodies' edge lists.
+
+#include <algorithm>
+#include <utility>
+
+#include "world_data.h"
+
+namespace impulse {
+
+namespace {
+
+std::uint64_t pairKey(std::int32_t a, std::int32_t b) {
+  auto lo = static_cast<std::uint64_t>(std::min(a, b));
+  auto hi = static_cast<std::uint64_t>(std::max(a, b));
+  return (lo << 32) | hi;
+}
+
+Real rollingRadius(const Shape& shape) {
+  // Only round shapes roll; a polygon's resistance to tipping is geometric.
+  return shape.type == ShapeType::Circle ? shape.circle.radius : Real(0);
+}
+
+void linkEdge(WorldData& world, std::int32_t contactIndex, int side) {
+  Contact& contact = world.contacts[contactIndex];
+  Body& body = world.bodies[side == 0 ? contact.bodyA : contact.bodyB];
+  std::int32_t key = edgeKey(contactIndex, side);
+  contact.edgePrev[side] = kNullIndex;
+  contact.edgeNext[side] = body.contactHead;
+  if (body.contactHead != kNullIndex) {
+    Contact& next = world.contacts[edgeContact(body.contactHead)];
+    next.edgePrev[edgeSide(body.contactHead)] = key;
+  }
+  body.contactHead = key;
+}
+
+void unlinkEdge(WorldData& world, std::int32_t contactIndex, int side) {
+  Contact& contact = world.contacts[contactIndex];
+  Body& body = world.bodies[side == 0 ? contact.bodyA : contact.bodyB];
+  std::int32_t prev = contact.edgePrev[side];
+  std::int32_t next = contact.edgeNext[side];
+  if (prev != kNullIndex) {
+    world.contacts[edgeContact(prev)].edgeNext[edgeSide(prev)] = next;
+  } else {
+    body.contactHead = next;
+  }
+  if (next != kNullIndex) world.contacts[edgeContact(next)].edgePrev[edgeSide(next)] = prev;
+}
+
+std::int32_t allocateContact(WorldData& world) {
+  if (world.freeContact != kNullIndex) {
+    std::int32_t index = world.freeContact;
+    world.freeContact = world.contacts[index].nextFree;
+    return index;
+  }
+  world.contacts.emplace_back();
+  return static_cast<std::int32_t>(world.contacts.size() - 1);
+}
+
+void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
+  // The collide table is filled for shape A's type >= shape B's type.
+  if (collideFunction(world.shapes[a].type, world.shapes[b].type) == nullptr) std::swap(a, b);
+  const MaterialProperties& ma = materialProperties(world.bodies[a].material);
+  const MaterialProperties& mb = materialProperties(world.bodies[b].material);
+
+  std::int32_t index = allocateContact(world);
+  Contact& contact = world.contacts[index];
+  contact = Contact{};
+  contact.bodyA = a;
+  contact.bodyB = b;
+  contact.collide = collideFunction(world.shapes[a].type, world.shapes[b].type);
+  contact.staticFriction = mixCoefficient(ma.staticFriction, mb.staticFriction);
+  contact.dynamicFriction = mixCoefficient(ma.dynamicFriction, mb.dynamicFriction);
+  contact.restitution = mixCoefficient(ma.restitution, mb.restitution);
+  contact.rollingResistance =
+      mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
+      std::max(rollingRadius(world.shapes[a]), rollingRadius(world.shapes[b]));
+  contact.pairKey = pairKey(a, b);
+  contact.alive = true;
+  linkEdge(world, index, 0);
+  linkEdge(world, index, 1);
+  world.contactByPair.emplace(contact.pairKey, index);
+  ++world.liveContacts;
+}
+
+// Carries impulses of points that persist (same feature id) into the new
+// manifold, so the solver starts from last step's answer.
+void matchWarmStart(const Manifold& previous, Manifold& next) {
+  for (int i = 0; i < next.pointCount; ++i) {
+    ManifoldPoint& point = next.points[i];
+    for (int j = 0; j < previous.pointCount; ++j) {
+      const ManifoldPoint& old = previous.points[j];
+      if (old.id != point.id) continue;
+      point.normalImpulse = old.normalImpulse;
+      point.tangentImpulse = old.tangentImpulse;
+      point.persisted = true;
+      break;
+    }
+  }
+  if (next.pointCount > 0) next.rollingImpulse = previous.rollingImpulse;
+}
+
+// Contacts that involve at least one awake body, each once, in a
+// deterministic order (awake list order, then edge order).
+void gatherActiveContacts(WorldData& world) {
+  world.activeContacts.clear();
+  for (std::int32_t slot : world.awakeBodies) {
+    for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
+      const Contact& contact = world.contacts[edgeContact(key)];
+      std::int32_t other = otherBody(contact, key);
+      // A contact between two awake bodies is taken by the lower slot.
+      if (!world.bodies[other].awake || slot < other) world.activeContacts.push_back(edgeContact(key));
+      key = contact.edgeNext[edgeSide(key)];
+    }
+  }
+}
+
+void updateManifold(WorldData& world, std::int32_t index) {
+  Contact& contact = world.contacts[index];
+  const Body& a = world.bodies[contact.bodyA];
+  const Body& b = world.bodies[contact.bodyB];
+  Manifold next = contact.collide(world.shapes[contact.bodyA], a.transform,
+                                  world.shapes[contact.bodyB], b.transform);
+  if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
+  contact.manifold = next;
+  contact.touching = next.pointCount > 0;
+}
+
+}  // namespace
+
+void updatePairs(WorldData& world) {
+  world.broadPhase.findNewPairs(world.newPairs);
+  for (const ProxyPair& pair : world.newPairs) {
+    const Body& a = world.bodies[pair.first];
+    const Body& b = world.bodies[pair.second];
+    if (a.isStatic && b.isStatic) continue;
+    if (world.contactByPair.contains(pairKey(pair.first, pair.second))) continue;
+    createContact(world, pair.first, pair.second);
+  }
+}
+
+void collideContacts(WorldData& world) {
+  gatherActiveContacts(world);
+  for (std::int32_t index : world.activeContacts) {
+    Contact& contact = world.contacts[index];
+    const Body& a = world.bodies[contact.bodyA];
+    const Body& b = world.bodies[contact.bodyB];
+    if (!world.broadPhase.fatAABBsOverlap(a.proxyKey, b.proxyKey)) {
+      destroyContact(world, index);
+      continue;
+    }
+    updateManifold(world, index);
+    // A touch from an awake body wakes a sleeping one, with its island.
+    if (contact.touching) {
+      wakeIsland(world, contact.bodyA);
+      wakeIsland(world, contact.bodyB);
+    }
+  }
+}
+
+void destroyContact(WorldData& world, std::int32_t index) {
+  Contact& contact = world.contacts[index];
+  unlinkEdge(world, index, 0);
+  unlinkEdge(world, index, 1);
+  world.contactByPair.erase(contact.pairKey);
+  contact.alive = false;
+  contact.nextFree = world.freeContact;
+  world.freeContact = index;
+  --world.liveContacts;
+}
+
+void destroyBodyContacts(WorldData& world, std::int32_t body) {
+  while (world.bodies[body].contactHead != kNullIndex) {
+    std::int32_t key = world.bodies[body].contactHead;
+    const Contact& contact = world.contacts[edgeContact(key)];
+    std::int32_t other = otherBody(contact, key);
+    if (contact.touching) wakeIsland(world, other);
+    destroyContact(world, edgeContact(key));
+  }
+}
+
+}  // namespace impulse

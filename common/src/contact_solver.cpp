@@ -1,0 +1,209 @@
+#include "contact_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace impulse {
+
+namespace {
+
+Vec2 pointVelocity(const SolverState& state, const Vec2& anchor) {
+  return state.linearVelocity + cross(state.angularVelocity, anchor);
+}
+
+void applyImpulse(SolverState& a, SolverState& b, const ContactConstraint& c, const Vec2& anchorA,
+                  const Vec2& anchorB, const Vec2& impulse) {
+  a.linearVelocity -= c.invMassA * impulse;
+  a.angularVelocity -= c.invInertiaA * cross(anchorA, impulse);
+  b.linearVelocity += c.invMassB * impulse;
+  b.angularVelocity += c.invInertiaB * cross(anchorB, impulse);
+}
+
+Real effectiveMass(const ContactConstraint& c, const Vec2& anchorA, const Vec2& anchorB,
+                   const Vec2& direction) {
+  Real ra = cross(anchorA, direction);
+  Real rb = cross(anchorB, direction);
+  Real k = c.invMassA + c.invMassB + c.invInertiaA * ra * ra + c.invInertiaB * rb * rb;
+  return k > 0 ? Real(1) / k : Real(0);
+}
+
+void solveNormalRows(ContactConstraint& c, SolverState& a, SolverState& b, const Vec2& deltaPosition,
+                     const ContactSolverContext& context, bool useBias, Real& totalNormalImpulse) {
+  for (int j = 0; j < c.pointCount; ++j) {
+    ConstraintPoint& cp = c.points[j];
+    // Current separation from the start-of-step value and the motion since:
+    // anchors are fixed in the bodies, rotated by the accumulated rotation.
+    Vec2 moved = deltaPosition + b.deltaRotation.apply(cp.anchorB) - a.deltaRotation.apply(cp.anchorA);
+    Real separation = cp.baseSeparation + moved.dot(c.normal);
+
+    Real bias = 0;
+    Real massScale = 1;
+    Real impulseScale = 0;
+    if (separation > 0) {
+      bias = separation * context.inverseSubStep;  // speculative: close the gap exactly
+    } else if (useBias) {
+      bias = std::max(c.softness.biasRate * separation, -context.maxPushSpeed);
+      massScale = c.softness.massScale;
+      impulseScale = c.softness.impulseScale;
+    }
+
+    Real vn = (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(c.normal);
+    Real impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+    Real accumulated = std::max(cp.normalImpulse + impulse, Real(0));
+    impulse = accumulated - cp.normalImpulse;
+    cp.normalImpulse = accumulated;
+    cp.totalNormalImpulse += impulse;
+    totalNormalImpulse += accumulated;
+    applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * c.normal);
+  }
+}
+
+void solveFrictionRows(ContactConstraint& c, SolverState& a, SolverState& b) {
+  Vec2 tangent = rightPerp(c.normal);
+  for (int j = 0; j < c.pointCount; ++j) {
+    ConstraintPoint& cp = c.points[j];
+    Real vt = (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(tangent);
+    Real limit = cp.friction * cp.normalImpulse;
+    Real accumulated = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
+    Real impulse = accumulated - cp.tangentImpulse;
+    cp.tangentImpulse = accumulated;
+    applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * tangent);
+  }
+}
+
+void solveRollingRow(ContactConstraint& c, SolverState& a, SolverState& b, Real totalNormalImpulse) {
+  if (c.rollingResistance == 0) return;
+  Real limit = c.rollingResistance * totalNormalImpulse;
+  Real previous = c.rollingImpulse;
+  c.rollingImpulse = std::clamp(previous - c.rollingMass * (b.angularVelocity - a.angularVelocity),
+                                -limit, limit);
+  Real impulse = c.rollingImpulse - previous;
+  a.angularVelocity -= c.invInertiaA * impulse;
+  b.angularVelocity += c.invInertiaB * impulse;
+}
+
+}  // namespace
+
+Softness makeSoftness(Real hertz, Real dampingRatio, Real h) {
+  if (hertz == 0) return {0, 1, 0};
+  Real omega = 2 * std::numbers::pi_v<Real> * hertz;
+  Real a1 = 2 * dampingRatio + h * omega;
+  Real a2 = h * omega * a1;
+  Real a3 = 1 / (1 + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
+void prepareContact(const WorldData& world, const Contact& contact, std::int32_t contactIndex,
+                    Softness contactSoftness, Softness staticSoftness,
+                    std::span<const SolverState> states, ContactConstraint& c) {
+  const Body& bodyA = world.bodies[contact.bodyA];
+  const Body& bodyB = world.bodies[contact.bodyB];
+  const Manifold& manifold = contact.manifold;
+  // Anything not awake (static) shares the dummy state 0 and gets zero
+  // inverse mass, so the dummy's velocity stays zero without checks per row.
+  c.stateA = bodyA.awake ? bodyA.solverIndex : 0;
+  c.stateB = bodyB.awake ? bodyB.solverIndex : 0;
+  c.contact = contactIndex;
+  c.pointCount = manifold.pointCount;
+  c.normal = manifold.normal;
+  c.invMassA = bodyA.awake ? bodyA.invMass : 0;
+  c.invInertiaA = bodyA.awake ? bodyA.invInertia : 0;
+  c.invMassB = bodyB.awake ? bodyB.invMass : 0;
+  c.invInertiaB = bodyB.awake ? bodyB.invInertia : 0;
+  c.restitution = contact.restitution;
+  c.rollingResistance = contact.rollingResistance;
+  c.rollingImpulse = manifold.rollingImpulse;
+  Real rollingK = c.invInertiaA + c.invInertiaB;
+  c.rollingMass = rollingK > 0 ? Real(1) / rollingK : Real(0);
+  // Contacts against static bodies are stiffer so stacks are not pushed
+  // into the ground.
+  c.softness = (c.stateA == 0 || c.stateB == 0) ? staticSoftness : contactSoftness;
+
+  const SolverState& a = states[c.stateA];
+  const SolverState& b = states[c.stateB];
+  Vec2 tangent = rightPerp(c.normal);
+  Real stickSpeed = world.settings.stickSpeed;
+  for (int j = 0; j < c.pointCount; ++j) {
+    const ManifoldPoint& mp = manifold.points[j];
+    ConstraintPoint& cp = c.points[j];
+    cp.anchorA = mp.anchorA;
+    cp.anchorB = mp.anchorB;
+    cp.normalImpulse = mp.normalImpulse;
+    cp.tangentImpulse = mp.tangentImpulse;
+    cp.totalNormalImpulse = 0;
+    cp.baseSeparation = mp.separation - (mp.anchorB - mp.anchorA).dot(c.normal);
+    cp.normalMass = effectiveMass(c, cp.anchorA, cp.anchorB, c.normal);
+    cp.tangentMass = effectiveMass(c, cp.anchorA, cp.anchorB, tangent);
+    Vec2 relative = pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA);
+    cp.relativeVelocity = relative.dot(c.normal);
+    // Coulomb with two coefficients: a contact that is not slipping is held
+    // by static friction; once it slips, dynamic friction opposes it.
+    cp.friction = std::abs(relative.dot(tangent)) < stickSpeed ? contact.staticFriction
+                                                                 : contact.dynamicFriction;
+  }
+}
+
+void warmStartContacts(const ContactSolverContext& context) {
+  for (ContactConstraint& c : context.constraints) {
+    SolverState& a = context.states[c.stateA];
+    SolverState& b = context.states[c.stateB];
+    Vec2 tangent = rightPerp(c.normal);
+    for (int j = 0; j < c.pointCount; ++j) {
+      ConstraintPoint& cp = c.points[j];
+      cp.totalNormalImpulse += cp.normalImpulse;
+      applyImpulse(a, b, c, cp.anchorA, cp.anchorB,
+                   cp.normalImpulse * c.normal + cp.tangentImpulse * tangent);
+    }
+    a.angularVelocity -= c.invInertiaA * c.rollingImpulse;
+    b.angularVelocity += c.invInertiaB * c.rollingImpulse;
+  }
+}
+
+void solveContacts(const ContactSolverContext& context, bool useBias) {
+  for (ContactConstraint& c : context.constraints) {
+    SolverState& a = context.states[c.stateA];
+    SolverState& b = context.states[c.stateB];
+    Vec2 deltaPosition = b.deltaPosition - a.deltaPosition;
+    Real totalNormalImpulse = 0;
+    solveNormalRows(c, a, b, deltaPosition, context, useBias, totalNormalImpulse);
+    solveFrictionRows(c, a, b);
+    solveRollingRow(c, a, b, totalNormalImpulse);
+  }
+}
+
+void applyRestitution(const ContactSolverContext& context) {
+  for (ContactConstraint& c : context.constraints) {
+    if (c.restitution == 0) continue;
+    SolverState& a = context.states[c.stateA];
+    SolverState& b = context.states[c.stateB];
+    for (int j = 0; j < c.pointCount; ++j) {
+      ConstraintPoint& cp = c.points[j];
+      // Only points that were approaching fast and actually pushed bounce;
+      // slow ones rest (no jitter on stacks).
+      if (cp.relativeVelocity > -context.restitutionThreshold || cp.totalNormalImpulse == 0) continue;
+      Real vn = (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(c.normal);
+      Real impulse = -cp.normalMass * (vn + c.restitution * cp.relativeVelocity);
+      Real accumulated = std::max(cp.normalImpulse + impulse, Real(0));
+      impulse = accumulated - cp.normalImpulse;
+      cp.normalImpulse = accumulated;
+      cp.totalNormalImpulse += impulse;
+      applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * c.normal);
+    }
+  }
+}
+
+void storeImpulses(std::span<const ContactConstraint> constraints, WorldData& world) {
+  for (const ContactConstraint& c : constraints) {
+    Manifold& manifold = world.contacts[c.contact].manifold;
+    for (int j = 0; j < c.pointCount; ++j) {
+      manifold.points[j].normalImpulse = c.points[j].normalImpulse;
+      manifold.points[j].tangentImpulse = c.points[j].tangentImpulse;
+      manifold.points[j].maxNormalImpulse = c.points[j].totalNormalImpulse;
+      manifold.points[j].relativeNormalVelocity = c.points[j].relativeVelocity;
+    }
+    manifold.rollingImpulse = c.rollingImpulse;
+  }
+}
+
+}  // namespace impulse

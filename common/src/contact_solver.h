@@ -1,0 +1,41 @@
+#pragma once
+// Soft contact constraints (Box2D v3's "soft step"): normal, friction and
+// rolling resistance rows solved with sub-stepping and relaxation.
+
+#include <span>
+
+#include "world_data.h"
+
+namespace impulse {
+
+/// Spring-damper softness for a constraint of stiffness `hertz` and
+/// `dampingRatio`, solved with sub-step h.
+Softness makeSoftness(Real hertz, Real dampingRatio, Real h);
+
+struct ContactSolverContext {
+  std::span<SolverState> states;  // [0] is the static dummy
+  std::span<ContactConstraint> constraints;
+  Real inverseSubStep = 0;
+  Real maxPushSpeed = 0;
+  Real restitutionThreshold = 0;
+};
+
+/// Fills a constraint from a touching contact (velocities read from states).
+void prepareContact(const WorldData& world, const Contact& contact, std::int32_t contactIndex,
+                    Softness contactSoftness, Softness staticSoftness,
+                    std::span<const SolverState> states, ContactConstraint& constraint);
+
+/// Applies the accumulated impulses to the velocities.
+void warmStartContacts(const ContactSolverContext& context);
+
+/// One Gauss-Seidel pass. With useBias the rows also push overlap out
+/// (softly); without it they only remove approach velocity (relaxation).
+void solveContacts(const ContactSolverContext& context, bool useBias);
+
+/// Bounces: adds restitution to contacts that were approaching fast enough.
+void applyRestitution(const ContactSolverContext& context);
+
+/// Writes the impulses back into the manifolds for next step's warm start.
+void storeImpulses(std::span<const ContactConstraint> constraints, WorldData& world);
+
+}  // namespace impulse

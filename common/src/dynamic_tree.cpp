@@ -1,0 +1,288 @@
+#include "impulse/dynamic_tree.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace impulse {
+namespace {
+
+Vec2 center(const AABB& box) { return Real(0.5) * (box.lower + box.upper); }
+
+// What descending into one child of the node being examined could cost.
+struct ChildCost {
+  Real direct = 0;  // perimeter of the child united with the new leaf
+  Real area = 0;    // perimeter of the child itself
+  Real lowerBound = std::numeric_limits<Real>::max();  // max: nothing to descend into
+};
+
+}  // namespace
+
+std::int32_t DynamicTree::createProxy(const AABB& box, std::int32_t userValue) {
+  std::int32_t leaf = allocateNode();
+  nodes_[leaf].box = box;
+  nodes_[leaf].userValue = userValue;
+  insertLeaf(leaf);
+  ++leafCount_;
+  return leaf;
+}
+
+void DynamicTree::destroyProxy(std::int32_t node) {
+  removeLeaf(node);
+  freeNode(node);
+  --leafCount_;
+}
+
+void DynamicTree::moveProxy(std::int32_t node, const AABB& box) {
+  removeLeaf(node);
+  nodes_[node].box = box;
+  insertLeaf(node);
+}
+
+int DynamicTree::height() const { return root_ == kNull ? 0 : nodes_[root_].height; }
+
+bool DynamicTree::isValid() const {
+  const std::int64_t freeCount = freeNodeCount();
+  if (freeCount < 0) return false;
+  if (root_ == kNull) {
+    return leafCount_ == 0 && freeCount == static_cast<std::int64_t>(nodes_.size());
+  }
+  if (root_ < 0 || root_ >= static_cast<std::int32_t>(nodes_.size())) return false;
+  if (nodes_[root_].parent != kNull) return false;
+
+  // A local stack: isValid is for tests and must not disturb query's scratch space.
+  std::vector<std::int32_t> pending{root_};
+  std::int64_t reached = 0;
+  int leaves = 0;
+  while (!pending.empty()) {
+    std::int32_t index = pending.back();
+    pending.pop_back();
+    // More nodes than exist means a cycle or a node linked twice.
+    if (++reached > static_cast<std::int64_t>(nodes_.size())) return false;
+    if (!isValidNode(index)) return false;
+    const Node& node = nodes_[index];
+    if (node.isLeaf()) {
+      ++leaves;
+    } else {
+      pending.push_back(node.child1);
+      pending.push_back(node.child2);
+    }
+  }
+  return leaves == leafCount_ && reached + freeCount == static_cast<std::int64_t>(nodes_.size());
+}
+
+std::int32_t DynamicTree::allocateNode() {
+  if (freeList_ == kNull) {
+    nodes_.emplace_back();
+    return static_cast<std::int32_t>(nodes_.size()) - 1;
+  }
+  std::int32_t index = freeList_;
+  freeList_ = nodes_[index].parent;
+  nodes_[index] = Node{};
+  return index;
+}
+
+void DynamicTree::freeNode(std::int32_t node) {
+  nodes_[node] = Node{};
+  nodes_[node].parent = freeList_;
+  nodes_[node].height = -1;
+  freeList_ = node;
+}
+
+void DynamicTree::insertLeaf(std::int32_t leaf) {
+  if (root_ == kNull) {
+    root_ = leaf;
+    nodes_[leaf].parent = kNull;
+    return;
+  }
+  const AABB leafBox = nodes_[leaf].box;
+  const std::int32_t sibling = findBestSibling(leafBox);
+  const std::int32_t oldParent = nodes_[sibling].parent;
+  // allocateNode may grow nodes_, so no Node reference is held across it.
+  const std::int32_t newParent = allocateNode();
+  Node& parent = nodes_[newParent];
+  parent.parent = oldParent;
+  parent.child1 = sibling;
+  parent.child2 = leaf;
+  nodes_[sibling].parent = newParent;
+  nodes_[leaf].parent = newParent;
+  replaceChild(oldParent, sibling, newParent);
+  refitAncestors(newParent);
+}
+
+void DynamicTree::removeLeaf(std::int32_t leaf) {
+  if (leaf == root_) {
+    root_ = kNull;
+    return;
+  }
+  const std::int32_t parent = nodes_[leaf].parent;
+  const std::int32_t grandParent = nodes_[parent].parent;
+  const std::int32_t sibling =
+      nodes_[parent].child1 == leaf ? nodes_[parent].child2 : nodes_[parent].child1;
+  replaceChild(grandParent, parent, sibling);
+  nodes_[sibling].parent = grandParent;
+  nodes_[leaf].parent = kNull;
+  freeNode(parent);
+  refitAncestors(grandParent);
+}
+
+// Surface area heuristic: the cost of making node S the sibling of the new leaf
+// L is the perimeter of the new parent, perimeter(S u L), plus how much every
+// ancestor of S grows, sum(perimeter(A u L) - perimeter(A)). One greedy path
+// is followed from the root:
+//
+//   best = root, inherited = 0
+//   at each internal node N:
+//     cost(N) = perimeter(N u L) + inherited;  keep it if it beats best
+//     inherited += perimeter(N u L) - perimeter(N)
+//     for each child C:
+//       C is a leaf:  cost(C) = perimeter(C u L) + inherited;  keep if better
+//       C internal:   bound(C) = inherited + perimeter(C u L)
+//                                + min(perimeter(L) - perimeter(C), 0)
+//     stop when no bound can beat best, else descend into the smaller bound
+//
+// The bound covers both C itself as the sibling and any descendant of C, whose
+// new parent is at least as large as L while C then grows by (C u L) - C.
+std::int32_t DynamicTree::findBestSibling(const AABB& leafBox) const {
+  const Real leafArea = leafBox.perimeter();
+  std::int32_t index = root_;
+  Real area = nodes_[index].box.perimeter();
+  Real direct = nodes_[index].box.unite(leafBox).perimeter();
+  Real inherited = 0;
+  std::int32_t best = root_;
+  Real bestCost = direct;
+
+  while (!nodes_[index].isLeaf()) {
+    const Node& node = nodes_[index];
+    if (direct + inherited < bestCost) {
+      best = index;
+      bestCost = direct + inherited;
+    }
+    inherited += direct - area;
+
+    auto examine = [&](std::int32_t child) {
+      ChildCost cost;
+      cost.direct = nodes_[child].box.unite(leafBox).perimeter();
+      if (nodes_[child].isLeaf()) {
+        if (cost.direct + inherited < bestCost) {
+          best = child;
+          bestCost = cost.direct + inherited;
+        }
+      } else {
+        cost.area = nodes_[child].box.perimeter();
+        cost.lowerBound = inherited + cost.direct + std::min(leafArea - cost.area, Real(0));
+      }
+      return cost;
+    };
+    const ChildCost cost1 = examine(node.child1);
+    const ChildCost cost2 = examine(node.child2);
+    if (bestCost <= cost1.lowerBound && bestCost <= cost2.lowerBound) break;
+
+    bool descendFirst = cost1.lowerBound < cost2.lowerBound;
+    if (cost1.lowerBound == cost2.lowerBound) {
+      // Equal bounds happen when both children contain the leaf; the nearer
+      // centre is the better guess, and keeps the choice deterministic.
+      const Vec2 leafCenter = center(leafBox);
+      descendFirst = (center(nodes_[node.child1].box) - leafCenter).squaredNorm() <
+                     (center(nodes_[node.child2].box) - leafCenter).squaredNorm();
+    }
+    const ChildCost& next = descendFirst ? cost1 : cost2;
+    index = descendFirst ? node.child1 : node.child2;
+    area = next.area;
+    direct = next.direct;
+  }
+  return best;
+}
+
+void DynamicTree::replaceChild(std::int32_t parent, std::int32_t oldChild,
+                               std::int32_t newChild) {
+  if (parent == kNull) {
+    root_ = newChild;
+  } else if (nodes_[parent].child1 == oldChild) {
+    nodes_[parent].child1 = newChild;
+  } else {
+    nodes_[parent].child2 = newChild;
+  }
+}
+
+void DynamicTree::refit(std::int32_t node) {
+  Node& n = nodes_[node];
+  const Node& a = nodes_[n.child1];
+  const Node& b = nodes_[n.child2];
+  n.box = a.box.unite(b.box);
+  n.height = static_cast<std::int16_t>(1 + std::max(a.height, b.height));
+}
+
+void DynamicTree::refitAncestors(std::int32_t node) {
+  while (node != kNull) {
+    node = balance(node);
+    refit(node);
+    node = nodes_[node].parent;
+  }
+}
+
+// AVL-style: when one child is more than one level taller than the other, it
+// is rotated up. Heights are read from the children, which are already up to
+// date on the way up, not from the node itself.
+std::int32_t DynamicTree::balance(std::int32_t node) {
+  const Node& n = nodes_[node];
+  if (n.isLeaf()) return node;
+  const int difference = nodes_[n.child2].height - nodes_[n.child1].height;
+  if (difference > 1) return rotateUp(node, n.child2);
+  if (difference < -1) return rotateUp(node, n.child1);
+  return node;
+}
+
+// Rotates the tall child C of A up, with B A's other child (on either side)
+// and F, G C's children:
+//
+//   A(B, C(F, G))  ->  C(A(B, shorter(F, G)), taller(F, G))
+//
+// Keeping the taller grandchild directly under C is what removes the imbalance.
+std::int32_t DynamicTree::rotateUp(std::int32_t node, std::int32_t child) {
+  Node& a = nodes_[node];
+  Node& c = nodes_[child];
+  const bool firstTaller = nodes_[c.child1].height > nodes_[c.child2].height;
+  const std::int32_t taller = firstTaller ? c.child1 : c.child2;
+  const std::int32_t shorter = firstTaller ? c.child2 : c.child1;
+
+  c.parent = a.parent;
+  replaceChild(a.parent, node, child);
+  a.parent = child;
+  c.child1 = node;
+  c.child2 = taller;
+
+  replaceChild(node, child, shorter);
+  nodes_[shorter].parent = node;
+
+  refit(node);
+  refit(child);
+  return child;
+}
+
+bool DynamicTree::isValidNode(std::int32_t index) const {
+  const Node& node = nodes_[index];
+  if (node.isLeaf()) return node.child2 == kNull && node.height == 0;
+  const auto size = static_cast<std::int32_t>(nodes_.size());
+  if (node.child1 < 0 || node.child1 >= size || node.child2 < 0 || node.child2 >= size) {
+    return false;
+  }
+  const Node& a = nodes_[node.child1];
+  const Node& b = nodes_[node.child2];
+  const AABB enclosing = a.box.unite(b.box);
+  return a.parent == index && b.parent == index && a.height >= 0 && b.height >= 0 &&
+         node.height == 1 + std::max(a.height, b.height) && node.box.lower == enclosing.lower &&
+         node.box.upper == enclosing.upper;
+}
+
+// Number of nodes on the free list, or -1 when it is broken (a cycle, an index
+// out of range, or a node in use on it).
+std::int64_t DynamicTree::freeNodeCount() const {
+  const auto size = static_cast<std::int64_t>(nodes_.size());
+  std::int64_t count = 0;
+  for (std::int32_t index = freeList_; index != kNull; index = nodes_[index].parent) {
+    if (index < 0 || index >= size || nodes_[index].height != -1 || ++count > size) return -1;
+  }
+  return count;
+}
+
+}  // namespace impulse

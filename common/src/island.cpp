@@ -1,0 +1,113 @@
+// Islands and sleeping. An island is a set of dynamic bodies linked by
+// touching contacts (static bodies do not link). When every body of an island
+// has been slow for timeToSleep, the whole island sleeps: it leaves the awake
+// list, so it costs nothing per step until something touches or pushes it.
+
+#include <algorithm>
+#include <limits>
+
+#include "world_data.h"
+
+namespace impulse {
+
+namespace {
+
+Real sleepVelocity(const Body& body) {
+  // The fastest point of the body: centre speed or rim speed.
+  return std::max(body.linearVelocity.norm(), body.extent * std::abs(body.angularVelocity));
+}
+
+void updateSleepTimes(WorldData& world, Real dt) {
+  const Real tolerance = world.settings.linearSleepTolerance;
+  for (std::int32_t slot : world.awakeBodies) {
+    Body& body = world.bodies[slot];
+    body.sleepTime = sleepVelocity(body) > tolerance ? Real(0) : body.sleepTime + dt;
+  }
+}
+
+// Collects the island of `seed` (awake dynamic bodies joined by touching
+// contacts) into world.islandBodies and returns its smallest sleep time.
+Real collectIsland(WorldData& world, std::int32_t seed) {
+  world.islandBodies.clear();
+  world.islandStack.clear();
+  world.islandStack.push_back(seed);
+  world.bodies[seed].islandMark = world.islandStamp;
+  Real minSleepTime = std::numeric_limits<Real>::max();
+  while (!world.islandStack.empty()) {
+    std::int32_t slot = world.islandStack.back();
+    world.islandStack.pop_back();
+    world.islandBodies.push_back(slot);
+    minSleepTime = std::min(minSleepTime, world.bodies[slot].sleepTime);
+    for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
+      const Contact& contact = world.contacts[edgeContact(key)];
+      Body& other = world.bodies[otherBody(contact, key)];
+      if (contact.touching && other.awake && other.islandMark != world.islandStamp) {
+        other.islandMark = world.islandStamp;
+        world.islandStack.push_back(otherBody(contact, key));
+      }
+      key = contact.edgeNext[edgeSide(key)];
+    }
+  }
+  return minSleepTime;
+}
+
+void putIslandToSleep(WorldData& world) {
+  for (std::int32_t slot : world.islandBodies) {
+    Body& body = world.bodies[slot];
+    body.awake = false;
+    body.linearVelocity.setZero();
+    body.angularVelocity = 0;
+    world.movedBodies.push_back(world.idOf(slot));
+  }
+}
+
+}  // namespace
+
+void updateSleep(WorldData& world, Real dt) {
+  world.movedBodies.clear();
+  if (!world.settings.enableSleep) {
+    for (std::int32_t slot : world.awakeBodies) world.movedBodies.push_back(world.idOf(slot));
+    return;
+  }
+  updateSleepTimes(world, dt);
+  ++world.islandStamp;
+  world.stillAwake.clear();
+  for (std::int32_t slot : world.awakeBodies) {
+    if (world.bodies[slot].islandMark == world.islandStamp) continue;
+    if (collectIsland(world, slot) >= world.settings.timeToSleep) {
+      putIslandToSleep(world);
+    } else {
+      world.stillAwake.insert(world.stillAwake.end(), world.islandBodies.begin(),
+                              world.islandBodies.end());
+    }
+  }
+  // Keep slot order so the solver's row order does not depend on traversal.
+  std::sort(world.stillAwake.begin(), world.stillAwake.end());
+  world.awakeBodies.swap(world.stillAwake);
+  for (std::int32_t slot : world.awakeBodies) world.movedBodies.push_back(world.idOf(slot));
+}
+
+void wakeIsland(WorldData& world, std::int32_t seed) {
+  const Body& first = world.bodies[seed];
+  if (first.isStatic || first.awake || !first.alive) return;
+  world.islandStack.clear();
+  world.islandStack.push_back(seed);
+  while (!world.islandStack.empty()) {
+    std::int32_t slot = world.islandStack.back();
+    world.islandStack.pop_back();
+    Body& body = world.bodies[slot];
+    if (body.awake) continue;
+    body.awake = true;
+    body.sleepTime = 0;
+    world.awakeBodies.push_back(slot);
+    for (std::int32_t key = body.contactHead; key != kNullIndex;) {
+      const Contact& contact = world.contacts[edgeContact(key)];
+      std::int32_t other = otherBody(contact, key);
+      const Body& neighbour = world.bodies[other];
+      if (contact.touching && !neighbour.isStatic && !neighbour.awake) world.islandStack.push_back(other);
+      key = contact.edgeNext[edgeSide(key)];
+    }
+  }
+}
+
+}  // namespace impulse

@@ -1,0 +1,403 @@
+#include "impulse/manifold.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <span>
+
+namespace impulse {
+namespace {
+
+// Reference face hysteresis: B's face is used only when it separates clearly
+// more than A's, so that two nearly equal faces (a box resting flat on a box)
+// do not swap roles, and contact ids, from one step to the next.
+constexpr Real kFaceTolerance = Real(0.1) * kLinearSlop;
+
+// Below a micrometre, float round-off in scene coordinates of tens of metres
+// dominates a vector, so its direction is noise and normalising it could
+// divide by zero.
+constexpr Real kMinDirectionLength = Real(1e-6);
+
+// A contact point in A's local frame, before conversion to world.
+struct LocalPoint {
+  Vec2 point = Vec2::Zero();
+  Real separation = 0;
+  std::uint16_t id = 0;
+};
+
+// Face of a polygon that separates the other shape the most.
+struct FaceQuery {
+  int index = 0;
+  Real separation = -std::numeric_limits<Real>::max();
+};
+
+// Contacts of a reference face with an incident edge, in A's frame, with the
+// normal pointing out of the reference face and ids in (reference, incident)
+// order.
+struct EdgeContacts {
+  Vec2 normal = Vec2::Zero();
+  std::array<LocalPoint, 2> points{};
+  int count = 0;
+};
+
+int nextIndex(int i, int count) { return i + 1 < count ? i + 1 : 0; }
+
+// B's transform in A's frame. Working there keeps the numbers near the origin
+// even when both bodies are far from the world origin.
+Transform relativeTransform(const Transform& xfA, const Transform& xfB) {
+  return {xfA.q.applyInverse(xfB.p - xfA.p), relativeRotation(xfA.q, xfB.q)};
+}
+
+Polygon transformPolygon(const Polygon& polygon, const Transform& xf) {
+  Polygon result;
+  result.count = polygon.count;
+  for (int i = 0; i < polygon.count; ++i) {
+    result.vertices[i] = xf.apply(polygon.vertices[i]);
+    result.normals[i] = xf.q.apply(polygon.normals[i]);
+  }
+  return result;
+}
+
+Vec2 closestPointOnSegment(const Vec2& p, const Vec2& s1, const Vec2& s2) {
+  Vec2 edge = s2 - s1;
+  Real lengthSquared = edge.squaredNorm();
+  // A zero-length segment is a point: any fraction gives it.
+  Real fraction = lengthSquared > 0
+                      ? std::clamp((p - s1).dot(edge) / lengthSquared, Real(0), Real(1))
+                      : Real(0);
+  return s1 + fraction * edge;
+}
+
+// Distance from a point to the polygon's boundary.
+Real distanceToBoundary(const Polygon& polygon, const Vec2& p) {
+  Real distance = std::numeric_limits<Real>::max();
+  for (int i = 0; i < polygon.count; ++i) {
+    Vec2 closest = closestPointOnSegment(p, polygon.vertices[i],
+                                         polygon.vertices[nextIndex(i, polygon.count)]);
+    distance = std::min(distance, (p - closest).norm());
+  }
+  return distance;
+}
+
+// Face whose plane the point lies furthest in front of (least deep behind,
+// when the point is inside).
+FaceQuery findMaxSeparation(const Polygon& polygon, const Vec2& p) {
+  FaceQuery best;
+  for (int i = 0; i < polygon.count; ++i) {
+    Real separation = polygon.normals[i].dot(p - polygon.vertices[i]);
+    if (separation > best.separation) {
+      best = {i, separation};
+    }
+  }
+  return best;
+}
+
+// Separating axis test over the reference polygon's edge normals: for each
+// face, the deepest vertex of the other polygon; the face where that vertex
+// is least deep is the axis of least penetration (or of largest gap).
+FaceQuery findMaxSeparation(const Polygon& reference, const Polygon& other) {
+  FaceQuery best;
+  for (int i = 0; i < reference.count; ++i) {
+    Real deepest = std::numeric_limits<Real>::max();
+    for (int j = 0; j < other.count; ++j) {
+      deepest =
+          std::min(deepest, reference.normals[i].dot(other.vertices[j] - reference.vertices[i]));
+    }
+    if (deepest > best.separation) {
+      best = {i, deepest};
+    }
+  }
+  return best;
+}
+
+// The incident edge is the one facing the reference face most directly: its
+// normal is the most anti-parallel to the reference normal.
+int findIncidentEdge(const Polygon& incident, const Vec2& referenceNormal) {
+  int best = 0;
+  Real minDot = std::numeric_limits<Real>::max();
+  for (int i = 0; i < incident.count; ++i) {
+    Real dot = referenceNormal.dot(incident.normals[i]);
+    if (dot < minDot) {
+      minDot = dot;
+      best = i;
+    }
+  }
+  return best;
+}
+
+// Contact between point `incidentPoint` and the reference face along normal,
+// placed midway between the two surfaces.
+LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const Vec2& normal,
+                       std::uint16_t id) {
+  Real separation = normal.dot(incidentPoint - faceVertex);
+  return {incidentPoint - Real(0.5) * separation * normal, separation, id};
+}
+
+// The incident edge lies wholly beside the reference face, so the nearest
+// features are the face's end vertex and the incident edge. When apart, the
+// true direction between them is the normal: the face normal would
+// under-report the gap and make a corner sliding past a corner snag on a
+// speculative contact.
+EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
+                           const Vec2& incident1, const Vec2& incident2,
+                           const Vec2& nearestIncidentVertex, std::uint16_t id) {
+  Vec2 closest = closestPointOnSegment(referenceVertex, incident1, incident2);
+  Vec2 gap = closest - referenceVertex;
+  EdgeContacts contacts;
+  contacts.count = 1;
+  if (faceNormal.dot(gap) > kMinDirectionLength) {
+    Real distance = gap.norm();
+    contacts.normal = gap / distance;
+    contacts.points[0] = {referenceVertex + Real(0.5) * gap, distance, id};
+  } else {
+    // Corners touching within round-off: the gap is too short to give a
+    // direction, so push along the face, as clipping would.
+    contacts.normal = faceNormal;
+    contacts.points[0] = faceContact(nearestIncidentVertex, referenceVertex, faceNormal, id);
+  }
+  return contacts;
+}
+
+// Clips the incident edge to the slab between the reference face's side
+// planes. The incident edge runs against the face's tangent (both polygons
+// are anticlockwise), so its second vertex is the lower one along it.
+EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const Polygon& incident,
+                              int incidentEdge) {
+  int i11 = referenceEdge;
+  int i12 = nextIndex(i11, reference.count);
+  int i21 = incidentEdge;
+  int i22 = nextIndex(i21, incident.count);
+  const Vec2& v11 = reference.vertices[i11];
+  const Vec2& v12 = reference.vertices[i12];
+  const Vec2& w1 = incident.vertices[i21];
+  const Vec2& w2 = incident.vertices[i22];
+  const Vec2& normal = reference.normals[i11];
+
+  Vec2 tangent = leftPerp(normal);
+  Real faceLength = tangent.dot(v12 - v11);
+  Real lower = tangent.dot(w2 - v11);
+  Real upper = tangent.dot(w1 - v11);
+  if (upper < 0) {
+    return cornerContact(normal, v11, w1, w2, w1, makeFeatureId(i11, i21));
+  }
+  if (lower > faceLength) {
+    return cornerContact(normal, v12, w1, w2, w2, makeFeatureId(i12, i22));
+  }
+
+  // Each interpolation happens only when the incident edge crosses that side
+  // plane, so upper - lower is then strictly positive.
+  Vec2 pointLower = lower < 0 ? Vec2(w2 + (-lower / (upper - lower)) * (w1 - w2)) : w2;
+  Vec2 pointUpper =
+      upper > faceLength ? Vec2(w2 + ((faceLength - lower) / (upper - lower)) * (w1 - w2)) : w1;
+
+  EdgeContacts contacts;
+  contacts.normal = normal;
+  contacts.count = 2;
+  contacts.points[0] = faceContact(pointLower, v11, normal, makeFeatureId(i11, i22));
+  contacts.points[1] = faceContact(pointUpper, v11, normal, makeFeatureId(i12, i21));
+  return contacts;
+}
+
+std::uint16_t swapFeatures(std::uint16_t id) { return makeFeatureId(id & 0xFF, id >> 8); }
+
+// Converts contacts computed in A's frame to world, keeping only those within
+// the speculative distance.
+Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, const Transform& xfA,
+                 const Transform& xfB) {
+  Manifold manifold;
+  for (const LocalPoint& local : points) {
+    if (local.separation >= kSpeculativeDistance) {
+      continue;
+    }
+    ManifoldPoint& mp = manifold.points[manifold.pointCount++];
+    mp.anchorA = xfA.q.apply(local.point);
+    mp.anchorB = mp.anchorA + (xfA.p - xfB.p);
+    mp.point = xfA.p + mp.anchorA;
+    mp.separation = local.separation;
+    mp.id = local.id;
+  }
+  if (manifold.pointCount > 0) {
+    manifold.normal = xfA.q.apply(localNormal);
+  }
+  return manifold;
+}
+
+// Single-point contact between a point of A's surface and the centre of a
+// circle B along a unit normal (A's frame). Circle contacts keep id 0 whichever
+// feature of A they touch, so a circle rolling over a polygon's vertex keeps
+// its warm-start impulse.
+Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
+                       Real separation, const Transform& xfA, const Transform& xfB) {
+  Vec2 surfaceB = centerB - radiusB * normal;
+  LocalPoint point{Real(0.5) * (surfaceA + surfaceB), separation, makeFeatureId(0, 0)};
+  return toWorld(normal, std::span(&point, 1), xfA, xfB);
+}
+
+// Circle B whose centre lies in the Voronoi region of vertex of A.
+Manifold circleVertexContact(const Vec2& vertex, const Vec2& centerB, Real radiusB,
+                             const Transform& xfA, const Transform& xfB) {
+  Vec2 offset = centerB - vertex;
+  Real distance = offset.norm();
+  return circleContact(vertex, centerB, radiusB, offset / distance, distance - radiusB, xfA, xfB);
+}
+
+Real polygonCircleSeparation(const Polygon& a, const Transform& xfA, const Circle& b,
+                             const Transform& xfB) {
+  Vec2 center = relativeTransform(xfA, xfB).p;
+  Real faceSeparation = findMaxSeparation(a, center).separation;
+  // Inside (or on) the polygon, the nearest face gives the depth; outside,
+  // the nearest edge or vertex gives the exact gap.
+  Real centerDistance = faceSeparation <= 0 ? faceSeparation : distanceToBoundary(a, center);
+  return centerDistance - b.radius;
+}
+
+Real polygonsSeparation(const Polygon& a, const Transform& xfA, const Polygon& b,
+                        const Transform& xfB) {
+  Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
+  Real satSeparation =
+      std::max(findMaxSeparation(a, localB).separation, findMaxSeparation(localB, a).separation);
+  if (satSeparation <= 0) {
+    return satSeparation;
+  }
+  // Separated convex polygons have a closest pair made of a vertex of one and
+  // an edge of the other.
+  Real distance = std::numeric_limits<Real>::max();
+  for (int i = 0; i < a.count; ++i) {
+    distance = std::min(distance, distanceToBoundary(localB, a.vertices[i]));
+  }
+  for (int i = 0; i < localB.count; ++i) {
+    distance = std::min(distance, distanceToBoundary(a, localB.vertices[i]));
+  }
+  return distance;
+}
+
+Manifold collideCircleShapes(const Shape& a, const Transform& xfA, const Shape& b,
+                             const Transform& xfB) {
+  return collideCircles(a.circle, xfA, b.circle, xfB);
+}
+
+Manifold collidePolygonAndCircleShapes(const Shape& a, const Transform& xfA, const Shape& b,
+                                       const Transform& xfB) {
+  return collidePolygonAndCircle(a.polygon, xfA, b.circle, xfB);
+}
+
+Manifold collidePolygonShapes(const Shape& a, const Transform& xfA, const Shape& b,
+                              const Transform& xfB) {
+  return collidePolygons(a.polygon, xfA, b.polygon, xfB);
+}
+
+// Indexed [type of A][type of B]. (Circle, Polygon) stays empty: the caller
+// swaps the pair so that each function handles one order only.
+constexpr std::array<std::array<CollideFunction, kShapeTypeCount>, kShapeTypeCount>
+    kCollideFunctions = {{
+        {collideCircleShapes, nullptr},
+        {collidePolygonAndCircleShapes, collidePolygonShapes},
+    }};
+
+}  // namespace
+
+// In A's frame: the normal is the unit vector from A's centre to B's, the
+// separation is the centre distance minus both radii, and the point lies
+// midway between the two surface points along the normal.
+Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
+                        const Transform& xfB) {
+  Vec2 centerB = relativeTransform(xfA, xfB).p;
+  Real distance = centerB.norm();
+  // Concentric circles have no preferred direction; any unit normal gives a
+  // valid push apart, and A's local up is as good as any.
+  Vec2 normal = distance > kMinDirectionLength ? Vec2(centerB / distance) : Vec2(0, 1);
+  return circleContact(a.radius * normal, centerB, b.radius, normal, distance - a.radius - b.radius,
+                       xfA, xfB);
+}
+
+// In A's frame, with c the circle centre and r its radius:
+//   face i = argmax n_i . (c - v_i)           (max separation s)
+//   if s > r + speculative distance: no contact
+//   if c lies outside the polygon (s > 0) beyond either end of face i:
+//     vertex region: normal = (c - v) / |c - v|, separation = |c - v| - r
+//   else (face region, also when c is inside):
+//     normal = n_i, separation = s - r
+Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB) {
+  Vec2 center = relativeTransform(xfA, xfB).p;
+  FaceQuery face = findMaxSeparation(a, center);
+  if (face.separation - b.radius >= kSpeculativeDistance) {
+    return {};
+  }
+
+  const Vec2& v1 = a.vertices[face.index];
+  const Vec2& v2 = a.vertices[nextIndex(face.index, a.count)];
+  // Only a centre clearly outside gives a well defined vertex direction;
+  // |c - v| >= s then guarantees a length to normalise.
+  if (face.separation > kMinDirectionLength) {
+    if ((center - v1).dot(v2 - v1) < 0) {
+      return circleVertexContact(v1, center, b.radius, xfA, xfB);
+    }
+    if ((center - v2).dot(v1 - v2) < 0) {
+      return circleVertexContact(v2, center, b.radius, xfA, xfB);
+    }
+  }
+
+  const Vec2& normal = a.normals[face.index];
+  Vec2 onFace = center - face.separation * normal;
+  return circleContact(onFace, center, b.radius, normal, face.separation - b.radius, xfA, xfB);
+}
+
+// In A's frame (B transformed into it):
+//   sA, faceA = max separation over A's edge normals (SAT); sB, faceB likewise
+//   if max(sA, sB) > speculative distance: no contact
+//   reference face = faceA unless sB > sA + tolerance (then faceB, flipped)
+//   incident edge = edge of the other polygon most anti-parallel to it
+//   if the incident edge lies wholly beside the reference face:
+//     one point between the face's end vertex and the incident edge
+//   else clip the incident edge to the face's side planes: two points, each
+//     with separation measured along the reference normal
+//   keep the points within the speculative distance
+//   flipped: negate the normal so it points from A to B, swap id features
+Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
+                         const Transform& xfB) {
+  Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
+  FaceQuery faceA = findMaxSeparation(a, localB);
+  FaceQuery faceB = findMaxSeparation(localB, a);
+  if (std::max(faceA.separation, faceB.separation) >= kSpeculativeDistance) {
+    return {};
+  }
+
+  bool flip = faceB.separation > faceA.separation + kFaceTolerance;
+  const Polygon& reference = flip ? localB : a;
+  const Polygon& incident = flip ? a : localB;
+  int referenceEdge = flip ? faceB.index : faceA.index;
+  int incidentEdge = findIncidentEdge(incident, reference.normals[referenceEdge]);
+  EdgeContacts contacts = clipIncidentEdge(reference, referenceEdge, incident, incidentEdge);
+  if (flip) {
+    contacts.normal = -contacts.normal;
+    for (LocalPoint& point : contacts.points) {
+      point.id = swapFeatures(point.id);
+    }
+  }
+  return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB);
+}
+
+CollideFunction collideFunction(ShapeType a, ShapeType b) {
+  auto indexA = static_cast<std::size_t>(a);
+  auto indexB = static_cast<std::size_t>(b);
+  // Types may come from decoded network data: an unknown value has no function.
+  if (indexA >= kCollideFunctions.size() || indexB >= kCollideFunctions[indexA].size()) {
+    return nullptr;
+  }
+  return kCollideFunctions[indexA][indexB];
+}
+
+Real computeSeparation(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB) {
+  if (a.type == ShapeType::Circle && b.type == ShapeType::Circle) {
+    return (xfB.p - xfA.p).norm() - a.circle.radius - b.circle.radius;
+  }
+  if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon) {
+    return polygonsSeparation(a.polygon, xfA, b.polygon, xfB);
+  }
+  // The distance is symmetric, so a circle A is handled as the polygon's partner.
+  return a.type == ShapeType::Polygon ? polygonCircleSeparation(a.polygon, xfA, b.circle, xfB)
+                                      : polygonCircleSeparation(b.polygon, xfB, a.circle, xfA);
+}
+
+}  // namespace impulse

@@ -1,0 +1,29 @@
+#include "impulse/material.h"
+
+#include <array>
+
+namespace impulse {
+
+namespace {
+
+// Index order follows the Material enum.
+constexpr std::array<MaterialProperties, kMaterialCount> kMaterials = {{
+    {"SOLID", 500, Real(0.7), Real(0.40), Real(0.30), Real(0.02)},
+    {"ICE", 100, Real(0.3), Real(0.03), Real(0.01), Real(0.005)},
+    {"WOOD", 700, Real(0.2), Real(0.50), Real(0.40), Real(0.03)},
+    {"METAL", 2000, Real(0.1), Real(0.40), Real(0.30), Real(0.01)},
+    {"RUBBER", 200, Real(0.8), Real(0.90), Real(0.80), Real(0.04)},
+}};
+
+}  // namespace
+
+const MaterialProperties& materialProperties(Material material) {
+  return kMaterials[static_cast<std::size_t>(material)];
+}
+
+std::optional<Material> materialFromIndex(int index) {
+  if (index < 0 || index >= kMaterialCount) return std::nullopt;
+  return static_cast<Material>(index);
+}
+
+}  // namespace impulse

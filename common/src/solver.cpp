@@ -1,0 +1,140 @@
+// The solve phase: soft-step sub-stepping over all awake bodies and their
+// touching contacts, then writing the motion back into the bodies.
+//
+//   prepare contacts (once per step)
+//   for each sub-step:
+//     integrate velocities (gravity, forces, drag)
+//     warm start (apply last impulses)
+//     solve contacts with soft position bias
+//     integrate positions
+//     relax contacts (no bias: removes the velocity the bias added)
+//   restitution, store impulses, finalize bodies
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <span>
+
+#include "contact_solver.h"
+#include "world_data.h"
+
+namespace impulse {
+
+namespace {
+
+// Caps keep a body from crossing more than a fraction of the world or
+// spinning past a quarter turn per sub-step, whatever the input: no
+// infinities can grow from a bad impulse.
+constexpr Real kMaxLinearSpeed = 1000;
+constexpr Real kMaxRotationPerSubStep = Real(0.25) * std::numbers::pi_v<Real>;
+
+void loadStates(WorldData& world, Real h) {
+  const auto count = world.awakeBodies.size();
+  world.solverStates.assign(count + 1, SolverState{});
+  world.solverIntegration.resize(count + 1);
+  for (std::size_t k = 0; k < count; ++k) {
+    std::int32_t slot = world.awakeBodies[k];
+    Body& body = world.bodies[slot];
+    body.solverIndex = static_cast<std::int32_t>(k + 1);
+    body.center0 = body.transform.p;
+    body.rotation0 = body.transform.q;
+    SolverState& state = world.solverStates[k + 1];
+    state.linearVelocity = body.linearVelocity;
+    state.angularVelocity = body.angularVelocity;
+    SolverIntegration& in = world.solverIntegration[k + 1];
+    in.body = slot;
+    in.linearAcceleration = body.invMass * body.force;
+    if (!body.ignoreGravity) in.linearAcceleration += world.settings.gravity;
+    in.angularAcceleration = body.invInertia * body.torque;
+    // Exact exponential decay over h: the same drag whatever the tick rate.
+    in.linearDamping = body.linearDrag > 0 ? std::exp(-body.linearDrag * h) : Real(1);
+    in.angularDamping = body.angularDrag > 0 ? std::exp(-body.angularDrag * h) : Real(1);
+  }
+}
+
+void prepareConstraints(WorldData& world, Real h) {
+  Real hertz = std::min(world.settings.contactHertz, Real(0.25) / h);
+  Softness contactSoftness = makeSoftness(hertz, world.settings.contactDampingRatio, h);
+  Softness staticSoftness = makeSoftness(2 * hertz, world.settings.contactDampingRatio, h);
+  world.constraints.clear();
+  for (std::int32_t slot : world.awakeBodies) {
+    for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
+      std::int32_t index = edgeContact(key);
+      const Contact& contact = world.contacts[index];
+      std::int32_t other = otherBody(contact, key);
+      if (contact.touching && (!world.bodies[other].awake || slot < other)) {
+        world.constraints.emplace_back();
+        prepareContact(world, contact, index, contactSoftness, staticSoftness, world.solverStates,
+                       world.constraints.back());
+      }
+      key = contact.edgeNext[edgeSide(key)];
+    }
+  }
+}
+
+void integrateVelocities(WorldData& world, Real h) {
+  const Real maxAngularSpeed = kMaxRotationPerSubStep / h;
+  for (std::size_t k = 1; k < world.solverStates.size(); ++k) {
+    SolverState& state = world.solverStates[k];
+    const SolverIntegration& in = world.solverIntegration[k];
+    Vec2 v = in.linearDamping * (state.linearVelocity + h * in.linearAcceleration);
+    Real w = in.angularDamping * (state.angularVelocity + h * in.angularAcceleration);
+    Real speedSquared = v.squaredNorm();
+    if (speedSquared > kMaxLinearSpeed * kMaxLinearSpeed) v *= kMaxLinearSpeed / std::sqrt(speedSquared);
+    state.linearVelocity = v;
+    state.angularVelocity = std::clamp(w, -maxAngularSpeed, maxAngularSpeed);
+  }
+}
+
+void integratePositions(WorldData& world, Real h) {
+  for (std::size_t k = 1; k < world.solverStates.size(); ++k) {
+    SolverState& state = world.solverStates[k];
+    state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
+    state.deltaPosition += h * state.linearVelocity;
+  }
+}
+
+Rot compose(const Rot& delta, const Rot& q) {
+  Rot r{delta.c * q.c - delta.s * q.s, delta.s * q.c + delta.c * q.s};
+  Real length = std::sqrt(r.c * r.c + r.s * r.s);
+  return {r.c / length, r.s / length};
+}
+
+void finalizeBodies(WorldData& world) {
+  for (std::size_t k = 1; k < world.solverStates.size(); ++k) {
+    const SolverState& state = world.solverStates[k];
+    Body& body = world.bodies[world.solverIntegration[k].body];
+    body.linearVelocity = state.linearVelocity;
+    body.angularVelocity = state.angularVelocity;
+    body.transform.p = body.center0 + state.deltaPosition;
+    body.transform.q = compose(state.deltaRotation, body.rotation0);
+    body.force.setZero();
+    body.torque = 0;
+  }
+}
+
+}  // namespace
+
+void solve(WorldData& world, Real dt) {
+  if (world.awakeBodies.empty()) return;
+  const int subSteps = std::max(1, world.settings.subSteps);
+  const Real h = dt / Real(subSteps);
+  loadStates(world, h);
+  prepareConstraints(world, h);
+
+  ContactSolverContext context{world.solverStates, world.constraints, 1 / h,
+                               world.settings.maxContactPushSpeed,
+                               world.settings.restitutionThreshold};
+  for (int i = 0; i < subSteps; ++i) {
+    integrateVelocities(world, h);
+    warmStartContacts(context);
+    solveContacts(context, true);
+    integratePositions(world, h);
+    for (int r = 0; r < world.settings.relaxIterations; ++r) solveContacts(context, false);
+  }
+  applyRestitution(context);
+  storeImpulses(world.constraints, world);
+  finalizeBodies(world);
+}
+
+}  // namespace impulse

@@ -1,0 +1,353 @@
+// World API: body lifetime, queries and the step that runs the phases.
+
+#include "impulse/world.h"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cstring>
+#include <string>
+
+#include "world_data.h"
+
+namespace impulse {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+bool contains(const AABB& bounds, const Vec2& p) {
+  return p.x() >= bounds.lower.x() && p.y() >= bounds.lower.y() && p.x() <= bounds.upper.x() &&
+         p.y() <= bounds.upper.y();
+}
+
+std::string validateDef(const WorldData& world, const BodyDef& def) {
+  if (!isFinite(def.position) || !isFinite(def.angle) || !isFinite(def.linearVelocity) ||
+      !isFinite(def.angularVelocity) || !isFinite(def.linearDrag) || !isFinite(def.angularDrag)) {
+    return "body has a non-finite position, angle, velocity or drag (NaN or infinity)";
+  }
+  if (!contains(world.settings.bounds, def.position)) {
+    const AABB& b = world.settings.bounds;
+    return "position is outside the world bounds (" + std::to_string(b.lower.x()) + ", " +
+           std::to_string(b.lower.y()) + ") to (" + std::to_string(b.upper.x()) + ", " +
+           std::to_string(b.upper.y()) + ")";
+  }
+  if (def.linearDrag < 0 || def.angularDrag < 0) return "drag must not be negative";
+  if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
+  if (world.liveBodies >= world.settings.maxBodies) {
+    return "body limit reached (" + std::to_string(world.settings.maxBodies) + " bodies)";
+  }
+  return {};
+}
+
+std::int32_t allocateBody(WorldData& world) {
+  if (world.freeBody != kNullIndex) {
+    std::int32_t slot = world.freeBody;
+    world.freeBody = world.bodies[slot].nextFree;
+    return slot;
+  }
+  world.bodies.emplace_back();
+  world.shapes.emplace_back();
+  return static_cast<std::int32_t>(world.bodies.size() - 1);
+}
+
+void setMass(Body& body, const Shape& shape, Real density) {
+  body.mass = computeMassProperties(shape, density);
+  if (body.isStatic) {
+    body.mass.mass = 0;
+    body.mass.inertia = 0;
+    return;
+  }
+  body.invMass = body.mass.mass > 0 ? 1 / body.mass.mass : 0;
+  body.invInertia = body.mass.inertia > 0 ? 1 / body.mass.inertia : 0;
+}
+
+// A new static body may overlap sleeping bodies that would never look for it
+// (only moving proxies search for pairs): wake them.
+void wakeBodiesUnder(WorldData& world, const AABB& box) {
+  world.broadPhase.query(box, [&](std::int32_t other) {
+    wakeIsland(world, other);
+    return true;
+  });
+}
+
+BodyDef defFromOptions(const Shape& shape, const Vec2& position, const BodyOptions& options) {
+  BodyDef def;
+  def.shape = shape;
+  def.position = position;
+  def.linearVelocity = options.linearVelocity;
+  def.angularVelocity = options.angularVelocity;
+  def.material = options.material;
+  def.isStatic = options.isStatic;
+  def.ignoreGravity = options.ignoreGravity;
+  def.linearDrag = options.linearDrag;
+  def.angularDrag = options.angularDrag;
+  return def;
+}
+
+template <typename T>
+void hashBits(std::uint64_t& hash, const T& value) {
+  unsigned char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  for (unsigned char byte : bytes) {
+    hash ^= byte;
+    hash *= 1099511628211ull;  // FNV-1a 64-bit prime
+  }
+}
+
+}  // namespace
+
+Body* WorldData::find(BodyId id) {
+  std::int32_t slot = id.slot();
+  if (id.isNull() || slot < 0 || slot >= static_cast<std::int32_t>(bodies.size())) return nullptr;
+  Body& body = bodies[slot];
+  if (!body.alive || (body.generation & BodyId::kGenerationMask) != id.generation()) return nullptr;
+  return &body;
+}
+
+const Body* WorldData::find(BodyId id) const { return const_cast<WorldData*>(this)->find(id); }
+
+AABB bodyAABB(const WorldData& world, std::int32_t slot) {
+  return computeAABB(world.shapes[slot], world.bodies[slot].transform);
+}
+
+World::World(const WorldSettings& settings) : impl_(std::make_unique<WorldData>()) {
+  impl_->settings = settings;
+}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+CreateResult World::createBody(const BodyDef& def) {
+  WorldData& w = *impl_;
+  if (std::string error = validateDef(w, def); !error.empty()) return {{}, error};
+
+  std::int32_t slot = allocateBody(w);
+  Body& body = w.bodies[slot];
+  std::uint32_t generation = body.generation;
+  body = Body{};
+  body.generation = generation;
+  body.alive = true;
+  body.isStatic = def.isStatic;
+  body.ignoreGravity = def.ignoreGravity;
+  body.material = def.material;
+  body.transform = {def.position, Rot::fromAngle(def.angle)};
+  body.linearDrag = def.linearDrag;
+  body.angularDrag = def.angularDrag;
+  body.creationOrder = w.nextCreationOrder++;
+  w.shapes[slot] = def.shape;
+  setMass(body, def.shape, materialProperties(def.material).density);
+  body.extent = computeExtent(def.shape);
+  body.innerRadius = computeInnerRadius(def.shape);
+  ++w.liveBodies;
+
+  AABB box = bodyAABB(w, slot);
+  if (def.isStatic) {
+    body.proxyKey = w.broadPhase.createProxy(box, slot, BroadPhase::ProxyKind::Static);
+    wakeBodiesUnder(w, box);
+  } else {
+    body.linearVelocity = def.linearVelocity;
+    body.angularVelocity = def.angularVelocity;
+    body.awake = true;
+    w.awakeBodies.push_back(slot);
+    body.proxyKey = w.broadPhase.createProxy(box, slot, BroadPhase::ProxyKind::Movable);
+  }
+  return {w.idOf(slot), {}};
+}
+
+CreateResult World::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
+  if (ShapeError error = validateCircle(radius, impl_->settings.shapeLimits); error != ShapeError::None) {
+    return {{}, std::string(describe(error))};
+  }
+  return createBody(defFromOptions(Shape::makeCircle(radius), center, options));
+}
+
+CreateResult World::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
+  PolygonBuild build = buildPolygon(points, impl_->settings.shapeLimits);
+  if (build.error != ShapeError::None) return {{}, std::string(describe(build.error))};
+  return createBody(defFromOptions(Shape::makePolygon(build.polygon), build.centroid, options));
+}
+
+bool World::destroyBody(BodyId id) {
+  WorldData& w = *impl_;
+  Body* body = w.find(id);
+  if (body == nullptr) return false;
+  std::int32_t slot = id.slot();
+  destroyBodyContacts(w, slot);
+  w.broadPhase.destroyProxy(body->proxyKey);
+  if (body->awake) std::erase(w.awakeBodies, slot);
+  body->alive = false;
+  body->awake = false;
+  ++body->generation;
+  body->nextFree = w.freeBody;
+  w.freeBody = slot;
+  --w.liveBodies;
+  return true;
+}
+
+void World::clear() {
+  WorldSettings settings = impl_->settings;
+  impl_ = std::make_unique<WorldData>();
+  impl_->settings = settings;
+}
+
+bool World::isValid(BodyId id) const { return impl_->find(id) != nullptr; }
+
+std::optional<BodyState> World::bodyState(BodyId id) const {
+  const Body* body = impl_->find(id);
+  if (body == nullptr) return std::nullopt;
+  return BodyState{id, body->transform.p, body->transform.q.angle(), body->linearVelocity,
+                   body->angularVelocity, body->awake};
+}
+
+std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
+  const Body* body = impl_->find(id);
+  if (body == nullptr) return std::nullopt;
+  const MaterialProperties& material = materialProperties(body->material);
+  return BodyDescription{id,
+                         impl_->shapes[id.slot()],
+                         body->material,
+                         body->isStatic,
+                         body->ignoreGravity,
+                         body->mass,
+                         material.restitution,
+                         material.staticFriction,
+                         material.dynamicFriction};
+}
+
+std::vector<BodyId> World::bodyIds() const {
+  std::vector<BodyId> ids;
+  ids.reserve(impl_->liveBodies);
+  for (std::size_t slot = 0; slot < impl_->bodies.size(); ++slot) {
+    if (impl_->bodies[slot].alive) ids.push_back(impl_->idOf(static_cast<std::int32_t>(slot)));
+  }
+  return ids;
+}
+
+int World::bodyCount() const { return impl_->liveBodies; }
+int World::awakeBodyCount() const { return static_cast<int>(impl_->awakeBodies.size()); }
+int World::contactCount() const { return impl_->liveContacts; }
+std::span<const BodyId> World::movedBodies() const { return impl_->movedBodies; }
+
+void World::setGravity(const Vec2& gravity) {
+  if (!isFinite(gravity)) return;
+  impl_->settings.gravity = gravity;
+  // Resting bodies must feel the new gravity.
+  for (std::size_t slot = 0; slot < impl_->bodies.size(); ++slot) {
+    wakeIsland(*impl_, static_cast<std::int32_t>(slot));
+  }
+}
+
+Vec2 World::gravity() const { return impl_->settings.gravity; }
+
+bool World::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
+  Body* body = impl_->find(id);
+  if (body == nullptr || body->isStatic || !isFinite(impulse) || (point && !isFinite(*point))) {
+    return false;
+  }
+  wakeIsland(*impl_, id.slot());
+  body->linearVelocity += body->invMass * impulse;
+  if (point) body->angularVelocity += body->invInertia * cross(*point - body->transform.p, impulse);
+  return true;
+}
+
+bool World::applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point) {
+  Body* body = impl_->find(id);
+  if (body == nullptr || body->isStatic || !isFinite(force) || (point && !isFinite(*point))) {
+    return false;
+  }
+  wakeIsland(*impl_, id.slot());
+  body->force += force;
+  if (point) body->torque += cross(*point - body->transform.p, force);
+  return true;
+}
+
+bool World::setVelocity(BodyId id, const Vec2& linear, Real angular) {
+  Body* body = impl_->find(id);
+  if (body == nullptr || body->isStatic || !isFinite(linear) || !isFinite(angular)) return false;
+  wakeIsland(*impl_, id.slot());
+  body->linearVelocity = linear;
+  body->angularVelocity = angular;
+  return true;
+}
+
+std::optional<BodyId> World::queryPoint(const Vec2& point) const {
+  if (!isFinite(point)) return std::nullopt;
+  const WorldData& w = *impl_;
+  std::optional<std::int32_t> best;
+  w.broadPhase.query(AABB{point, point}, [&](std::int32_t slot) {
+    bool newer = !best || w.bodies[slot].creationOrder > w.bodies[*best].creationOrder;
+    if (newer && containsPoint(w.shapes[slot], w.bodies[slot].transform, point)) best = slot;
+    return true;
+  });
+  if (!best) return std::nullopt;
+  return w.idOf(*best);
+}
+
+void World::step(Real dt) {
+  WorldData& w = *impl_;
+  if (!(dt > 0) || !isFinite(dt)) return;
+  Clock::time_point start = Clock::now();
+  StepProfile& profile = w.profile;
+
+  Clock::time_point phase = Clock::now();
+  updatePairs(w);
+  profile.pairs = millisecondsSince(phase);
+
+  phase = Clock::now();
+  collideContacts(w);
+  profile.collide = millisecondsSince(phase);
+
+  phase = Clock::now();
+  solve(w, dt);
+  for (std::int32_t slot : w.awakeBodies) w.broadPhase.updateProxy(w.bodies[slot].proxyKey, bodyAABB(w, slot));
+  profile.solve = millisecondsSince(phase);
+
+  phase = Clock::now();
+  solveContinuous(w);
+  profile.continuous = millisecondsSince(phase);
+
+  phase = Clock::now();
+  updateSleep(w, dt);
+  profile.sleep = millisecondsSince(phase);
+
+  profile.total = millisecondsSince(start);
+  ++w.stepCount;
+  w.time += dt;
+}
+
+const WorldSettings& World::settings() const { return impl_->settings; }
+
+void World::setSettings(const WorldSettings& settings) {
+  Vec2 previousGravity = impl_->settings.gravity;
+  impl_->settings = settings;
+  if (settings.gravity != previousGravity) setGravity(settings.gravity);
+}
+
+const StepProfile& World::profile() const { return impl_->profile; }
+std::uint64_t World::stepCount() const { return impl_->stepCount; }
+double World::simulatedTime() const { return impl_->time; }
+
+std::uint64_t World::stateHash() const {
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a offset basis
+  for (std::size_t slot = 0; slot < impl_->bodies.size(); ++slot) {
+    const Body& body = impl_->bodies[slot];
+    if (!body.alive) continue;
+    hashBits(hash, slot);
+    hashBits(hash, body.transform.p.x());
+    hashBits(hash, body.transform.p.y());
+    hashBits(hash, body.transform.q.c);
+    hashBits(hash, body.transform.q.s);
+    hashBits(hash, body.linearVelocity.x());
+    hashBits(hash, body.linearVelocity.y());
+    hashBits(hash, body.angularVelocity);
+    hashBits(hash, body.awake);
+  }
+  return hash;
+}
+
+}  // namespace impulse

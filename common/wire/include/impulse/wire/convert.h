@@ -1,0 +1,71 @@
+#pragma once
+/// Conversion between engine types and wire messages.
+///
+/// The engine computes in float and the wire carries double: engine -> wire is
+/// exact, and wire -> engine checks that every number is finite and fits a
+/// float before anything is converted (a huge finite double would otherwise
+/// become an infinite float inside the engine).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "impulse.pb.h"
+#include "impulse/body.h"
+#include "impulse/material.h"
+#include "impulse/math.h"
+#include "impulse/preset.h"
+#include "impulse/shape.h"
+#include "impulse/world.h"
+
+namespace impulse::wire {
+
+/// A value decoded from the wire, or the reason it was refused.
+template <class T>
+struct Decoded {
+  std::optional<T> value;
+  std::string error;
+
+  static Decoded success(T v) { return {std::move(v), {}}; }
+  static Decoded failure(std::string message) { return {std::nullopt, std::move(message)}; }
+  bool ok() const { return value.has_value(); }
+};
+
+// ------------------------------------------------------------ engine -> wire
+
+void toWire(const Vec2& v, v1::Vec2* out);
+v1::Material toWire(Material material);
+void toWire(const Shape& shape, v1::Shape* out);
+void toWire(const BodyState& state, v1::BodyState* out);
+void toWire(const BodyDescription& description, v1::BodyDescriptor* out);
+void toWire(const PresetInfo& preset, v1::PresetInfo* out);
+/// Everything QueryBody answers about one body.
+void toWire(const BodyDescription& description, const BodyState& state, v1::BodyInfo* out);
+
+// ------------------------------------------------------------ wire -> engine
+
+/// `value` as a Real, or an error naming `what` when it is not finite or does
+/// not fit the engine's float.
+Decoded<Real> realFromWire(double value, std::string_view what);
+/// Both components checked as by realFromWire ("what.x", "what.y").
+Decoded<Vec2> vecFromWire(const v1::Vec2& v, std::string_view what);
+/// MATERIAL_UNSPECIFIED and SOLID give Solid; nothing for a value outside the
+/// enum (proto3 enums carry unknown numbers through).
+std::optional<Material> materialFromWire(int material);
+/// Material, flags and initial velocities, each checked.
+Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options);
+
+/// A shape as described by the server (body-local polygon, anticlockwise).
+/// Checks the vertex count and finiteness only; normals are recomputed.
+Decoded<Shape> shapeFromWire(const v1::Shape& shape);
+/// States come from the server: converted as they are.
+BodyState stateFromWire(const v1::BodyState& state);
+Vec2 vecFromWireUnchecked(const v1::Vec2& v);
+
+/// Upper-case wire name of a material ("SOLID".."RUBBER").
+std::string_view materialName(Material material);
+/// Material from its name, case-insensitive ("ice", "RUBBER").
+std::optional<Material> materialFromName(std::string_view name);
+
+}  // namespace impulse::wire

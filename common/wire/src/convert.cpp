@@ -1,0 +1,193 @@
+#include "impulse/wire/convert.h"
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+namespace impulse::wire {
+
+namespace {
+
+constexpr std::array<std::string_view, kMaterialCount> kMaterialNames = {"SOLID", "ICE", "WOOD",
+                                                                         "METAL", "RUBBER"};
+
+std::string joinName(std::string_view what, std::string_view field) {
+  std::string name(what);
+  name += '.';
+  name += field;
+  return name;
+}
+
+}  // namespace
+
+void toWire(const Vec2& v, v1::Vec2* out) {
+  out->set_x(v.x());
+  out->set_y(v.y());
+}
+
+v1::Material toWire(Material material) {
+  return static_cast<v1::Material>(static_cast<int>(material) + 1);
+}
+
+void toWire(const Shape& shape, v1::Shape* out) {
+  if (shape.type == ShapeType::Circle) {
+    out->mutable_circle()->set_radius(shape.circle.radius);
+    return;
+  }
+  auto* polygon = out->mutable_polygon();
+  polygon->mutable_vertices()->Reserve(shape.polygon.count);
+  for (int i = 0; i < shape.polygon.count; ++i) {
+    toWire(shape.polygon.vertices[std::size_t(i)], polygon->add_vertices());
+  }
+}
+
+void toWire(const BodyState& state, v1::BodyState* out) {
+  out->set_id(state.id.value);
+  toWire(state.position, out->mutable_position());
+  out->set_angle(state.angle);
+  toWire(state.linearVelocity, out->mutable_velocity());
+  out->set_angular_velocity(state.angularVelocity);
+  out->set_awake(state.awake);
+}
+
+void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
+  out->set_id(description.id.value);
+  toWire(description.shape, out->mutable_shape());
+  out->set_material(toWire(description.material));
+  out->set_is_static(description.isStatic);
+  out->set_ignore_gravity(description.ignoreGravity);
+}
+
+void toWire(const PresetInfo& preset, v1::PresetInfo* out) {
+  out->set_id(preset.id);
+  out->set_title(preset.title);
+  for (const auto& line : preset.explanation) out->add_explanation(line);
+  for (const auto& marker : preset.markers) {
+    auto* m = out->add_markers();
+    toWire(marker.center, m->mutable_center());
+    m->set_radius(marker.radius);
+  }
+  out->set_drawing_allowed(preset.drawingAllowed);
+}
+
+void toWire(const BodyDescription& description, const BodyState& state, v1::BodyInfo* out) {
+  toWire(description, out->mutable_descriptor());
+  toWire(state, out->mutable_state());
+  out->set_mass(description.mass.mass);
+  out->set_inertia(description.mass.inertia);
+  out->set_area(description.mass.area);
+  out->set_restitution(description.restitution);
+  out->set_static_friction(description.staticFriction);
+  out->set_dynamic_friction(description.dynamicFriction);
+}
+
+Decoded<Real> realFromWire(double value, std::string_view what) {
+  if (!std::isfinite(value)) {
+    return Decoded<Real>::failure(std::string(what) + " is not a finite number");
+  }
+  if (std::abs(value) > double(std::numeric_limits<Real>::max())) {
+    return Decoded<Real>::failure(std::string(what) + " is too large (" + std::to_string(value) +
+                                  ")");
+  }
+  return Decoded<Real>::success(Real(value));
+}
+
+Decoded<Vec2> vecFromWire(const v1::Vec2& v, std::string_view what) {
+  auto x = realFromWire(v.x(), joinName(what, "x"));
+  if (!x.ok()) return Decoded<Vec2>::failure(std::move(x.error));
+  auto y = realFromWire(v.y(), joinName(what, "y"));
+  if (!y.ok()) return Decoded<Vec2>::failure(std::move(y.error));
+  return Decoded<Vec2>::success(Vec2(*x.value, *y.value));
+}
+
+std::optional<Material> materialFromWire(int material) {
+  if (material == v1::MATERIAL_UNSPECIFIED) return Material::Solid;
+  return materialFromIndex(material - 1);
+}
+
+Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
+  BodyOptions result;
+  const auto material = materialFromWire(options.material());
+  if (!material) {
+    return Decoded<BodyOptions>::failure("options.material " + std::to_string(options.material()) +
+                                         " is not a material (0-5)");
+  }
+  result.material = *material;
+  result.isStatic = options.is_static();
+  result.ignoreGravity = options.ignore_gravity();
+  auto velocity = vecFromWire(options.velocity(), "options.velocity");
+  if (!velocity.ok()) return Decoded<BodyOptions>::failure(std::move(velocity.error));
+  result.linearVelocity = *velocity.value;
+  auto angular = realFromWire(options.angular_velocity(), "options.angular_velocity");
+  if (!angular.ok()) return Decoded<BodyOptions>::failure(std::move(angular.error));
+  result.angularVelocity = *angular.value;
+  return Decoded<BodyOptions>::success(result);
+}
+
+Decoded<Shape> shapeFromWire(const v1::Shape& shape) {
+  switch (shape.kind_case()) {
+    case v1::Shape::kCircle: {
+      auto radius = realFromWire(shape.circle().radius(), "shape.circle.radius");
+      if (!radius.ok()) return Decoded<Shape>::failure(std::move(radius.error));
+      return Decoded<Shape>::success(Shape::makeCircle(*radius.value));
+    }
+    case v1::Shape::kPolygon: {
+      const auto& vertices = shape.polygon().vertices();
+      if (vertices.size() < kMinPolygonVertices || vertices.size() > kMaxPolygonVertices) {
+        return Decoded<Shape>::failure("shape.polygon has " + std::to_string(vertices.size()) +
+                                       " vertices (3-16 allowed)");
+      }
+      Polygon polygon;
+      polygon.count = vertices.size();
+      for (int i = 0; i < polygon.count; ++i) {
+        auto v = vecFromWire(vertices[i], "shape.polygon.vertex");
+        if (!v.ok()) return Decoded<Shape>::failure(std::move(v.error));
+        polygon.vertices[std::size_t(i)] = *v.value;
+      }
+      for (int i = 0; i < polygon.count; ++i) {
+        const Vec2 edge = polygon.vertices[std::size_t((i + 1) % polygon.count)] -
+                          polygon.vertices[std::size_t(i)];
+        const Real length = edge.norm();
+        polygon.normals[std::size_t(i)] =
+            length > 0 ? Vec2(rightPerp(edge) / length) : Vec2(Vec2::Zero());
+      }
+      return Decoded<Shape>::success(Shape::makePolygon(polygon));
+    }
+    case v1::Shape::KIND_NOT_SET:
+      break;
+  }
+  return Decoded<Shape>::failure("shape has neither a circle nor a polygon");
+}
+
+Vec2 vecFromWireUnchecked(const v1::Vec2& v) { return Vec2(Real(v.x()), Real(v.y())); }
+
+BodyState stateFromWire(const v1::BodyState& state) {
+  BodyState result;
+  result.id = BodyId{state.id()};
+  result.position = vecFromWireUnchecked(state.position());
+  result.angle = Real(state.angle());
+  result.linearVelocity = vecFromWireUnchecked(state.velocity());
+  result.angularVelocity = Real(state.angular_velocity());
+  result.awake = state.awake();
+  return result;
+}
+
+std::string_view materialName(Material material) {
+  return kMaterialNames[static_cast<std::size_t>(material)];
+}
+
+std::optional<Material> materialFromName(std::string_view name) {
+  for (std::size_t i = 0; i < kMaterialNames.size(); ++i) {
+    const auto candidate = kMaterialNames[i];
+    if (candidate.size() != name.size()) continue;
+    bool same = true;
+    for (std::size_t c = 0; c < name.size() && same; ++c) {
+      same = std::toupper(static_cast<unsigned char>(name[c])) == candidate[c];
+    }
+    if (same) return materialFromIndex(int(i));
+  }
+  return std::nullopt;
+}
+
+}  // namespace impulse::wire

@@ -1,0 +1,378 @@
+#include "impulse/broad_phase.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "impulse/constants.h"
+
+namespace impulse {
+namespace {
+
+using Kind = BroadPhase::ProxyKind;
+
+AABB makeBox(Real x, Real y, Real halfWidth, Real halfHeight) {
+  return {Vec2(x - halfWidth, y - halfHeight), Vec2(x + halfWidth, y + halfHeight)};
+}
+
+AABB shifted(const AABB& box, Real dx, Real dy) {
+  return {box.lower + Vec2(dx, dy), box.upper + Vec2(dx, dy)};
+}
+
+bool sameBox(const AABB& a, const AABB& b) { return a.lower == b.lower && a.upper == b.upper; }
+
+// std::pair, which gtest prints readably when a comparison fails.
+using Pair = std::pair<std::int32_t, std::int32_t>;
+std::vector<Pair> asPairs(const std::vector<ProxyPair>& pairs) {
+  std::vector<Pair> converted;
+  for (const ProxyPair& pair : pairs) converted.emplace_back(pair.first, pair.second);
+  return converted;
+}
+
+bool containsUser(const std::vector<ProxyPair>& pairs, std::int32_t user) {
+  return std::any_of(pairs.begin(), pairs.end(),
+                     [&](const ProxyPair& p) { return p.first == user || p.second == user; });
+}
+
+// An independent model of what the broad phase should hold: the user value of
+// a proxy is its index here.
+struct ModelProxy {
+  std::int32_t key = -1;
+  Kind kind = Kind::Static;
+  AABB fat;
+  bool alive = true;
+  bool queued = false;
+};
+
+// Drives a BroadPhase and the model through the same random history of
+// creations, moves, touches and destructions, checking each step against a
+// brute-force pair search.
+class Scenario {
+ public:
+  explicit Scenario(unsigned seed) : rng_(seed) {}
+
+  void populate(int movable, int fixed) {
+    for (int i = 0; i < movable; ++i) create(Kind::Movable);
+    for (int i = 0; i < fixed; ++i) create(Kind::Static);
+  }
+
+  // One step of random activity, without the pair search.
+  void step() {
+    std::uniform_real_distribution<Real> small(-kAabbMargin / 2, kAabbMargin / 2);
+    std::uniform_real_distribution<Real> large(-2, 2);
+    std::uniform_int_distribution<int> percent(0, 99);
+    for (ModelProxy& proxy : proxies_) {
+      if (!proxy.alive || proxy.kind != Kind::Movable) continue;
+      const bool jump = percent(rng_) < 30;
+      const Real dx = jump ? large(rng_) : small(rng_);
+      const Real dy = jump ? large(rng_) : small(rng_);
+      move(proxy, shifted(proxy.fat.expanded(-kAabbMargin), dx, dy));
+    }
+    for (ModelProxy& proxy : proxies_) {
+      if (proxy.alive && percent(rng_) < 3) {
+        broadPhase_.touchProxy(proxy.key);
+        proxy.queued = true;
+      }
+    }
+    for (ModelProxy& proxy : proxies_) {
+      if (proxy.alive && percent(rng_) < 2) {
+        broadPhase_.destroyProxy(proxy.key);
+        proxy.alive = false;
+        proxy.queued = false;
+      }
+    }
+    for (int i = 0; i < 5; ++i) create(i < 3 ? Kind::Movable : Kind::Static);
+  }
+
+  std::vector<ProxyPair> findPairs() {
+    std::vector<ProxyPair> pairs;
+    broadPhase_.findNewPairs(pairs);
+    for (ModelProxy& proxy : proxies_) proxy.queued = false;
+    return pairs;
+  }
+
+  // Pairs of live proxies whose fat boxes overlap, involving a queued proxy and
+  // a movable one, in (first, second) order.
+  std::vector<ProxyPair> expectedPairs() const {
+    std::vector<ProxyPair> pairs;
+    for (std::size_t i = 0; i < proxies_.size(); ++i) {
+      for (std::size_t j = i + 1; j < proxies_.size(); ++j) {
+        const ModelProxy& a = proxies_[i];
+        const ModelProxy& b = proxies_[j];
+        if (!a.alive || !b.alive || !(a.queued || b.queued)) continue;
+        if (a.kind == Kind::Static && b.kind == Kind::Static) continue;
+        if (a.fat.overlaps(b.fat)) {
+          pairs.push_back({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+        }
+      }
+    }
+    return pairs;
+  }
+
+  void expectFatBoxesMatch() const {
+    for (const ModelProxy& proxy : proxies_) {
+      if (proxy.alive) {
+        ASSERT_TRUE(sameBox(broadPhase_.fatAABB(proxy.key), proxy.fat));
+      }
+    }
+  }
+
+  int aliveCount() const {
+    return static_cast<int>(std::count_if(proxies_.begin(), proxies_.end(),
+                                          [](const ModelProxy& p) { return p.alive; }));
+  }
+  const std::vector<ModelProxy>& proxies() const { return proxies_; }
+  const BroadPhase& broadPhase() const { return broadPhase_; }
+
+ private:
+  void create(Kind kind) {
+    std::uniform_real_distribution<Real> position(0, 40);
+    std::uniform_real_distribution<Real> half(Real(0.2), Real(1.5));
+    const AABB tight = makeBox(position(rng_), position(rng_), half(rng_), half(rng_));
+    ModelProxy proxy;
+    proxy.kind = kind;
+    proxy.fat = kind == Kind::Movable ? tight.expanded(kAabbMargin) : tight;
+    proxy.queued = kind == Kind::Movable;
+    proxy.key = broadPhase_.createProxy(tight, static_cast<std::int32_t>(proxies_.size()), kind);
+    proxies_.push_back(proxy);
+  }
+
+  void move(ModelProxy& proxy, const AABB& tight) {
+    const bool leaves = !proxy.fat.contains(tight);
+    ASSERT_EQ(broadPhase_.updateProxy(proxy.key, tight), leaves);
+    if (leaves) {
+      proxy.fat = tight.expanded(kAabbMargin);
+      proxy.queued = true;
+    }
+  }
+
+  std::mt19937 rng_;
+  BroadPhase broadPhase_;
+  std::vector<ModelProxy> proxies_;
+};
+
+TEST(BroadPhase, FindsExactlyTheOverlappingPairsInvolvingQueuedProxies) {
+  Scenario scenario(42);
+  scenario.populate(300, 100);
+  std::vector<Pair> expected = asPairs(scenario.expectedPairs());
+  ASSERT_EQ(asPairs(scenario.findPairs()), expected);
+  EXPECT_GT(expected.size(), 100U);
+
+  std::size_t total = 0;
+  for (int step = 0; step < 15; ++step) {
+    scenario.step();
+    expected = asPairs(scenario.expectedPairs());
+    const std::vector<Pair> pairs = asPairs(scenario.findPairs());
+    ASSERT_EQ(pairs, expected) << "step " << step;
+    scenario.expectFatBoxesMatch();
+    EXPECT_EQ(scenario.broadPhase().proxyCount(), scenario.aliveCount());
+    total += pairs.size();
+  }
+  // Moves within the margin must not hide every pair: real work was compared.
+  EXPECT_GT(total, 500U);
+}
+
+TEST(BroadPhase, PairsAreSortedUniqueAndNeverStaticStatic) {
+  Scenario scenario(9);
+  scenario.populate(200, 200);
+  scenario.findPairs();
+  scenario.step();
+  const std::vector<ProxyPair> pairs = scenario.findPairs();
+  ASSERT_FALSE(pairs.empty());
+  const std::vector<ModelProxy>& proxies = scenario.proxies();
+  int withStatic = 0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    EXPECT_LT(pairs[i].first, pairs[i].second);
+    if (i > 0) {
+      const ProxyPair& previous = pairs[i - 1];
+      EXPECT_TRUE(previous.first < pairs[i].first ||
+                  (previous.first == pairs[i].first && previous.second < pairs[i].second));
+    }
+    const bool staticFirst = proxies[pairs[i].first].kind == Kind::Static;
+    const bool staticSecond = proxies[pairs[i].second].kind == Kind::Static;
+    EXPECT_FALSE(staticFirst && staticSecond);
+    withStatic += staticFirst || staticSecond ? 1 : 0;
+  }
+  EXPECT_GT(withStatic, 0);
+}
+
+TEST(BroadPhase, IdenticalCallSequencesProduceIdenticalPairs) {
+  auto history = [] {
+    Scenario scenario(1234);
+    scenario.populate(250, 80);
+    std::vector<std::vector<ProxyPair>> steps{scenario.findPairs()};
+    for (int step = 0; step < 10; ++step) {
+      scenario.step();
+      steps.push_back(scenario.findPairs());
+    }
+    return steps;
+  };
+  const std::vector<std::vector<ProxyPair>> first = history();
+  EXPECT_FALSE(first.front().empty());
+  EXPECT_EQ(first, history());
+}
+
+TEST(BroadPhase, StaticProxiesAreExact_MovableProxiesAreFat) {
+  BroadPhase broadPhase;
+  const AABB tight = makeBox(0, 0, 1, 1);
+  const std::int32_t fixed = broadPhase.createProxy(tight, 1, Kind::Static);
+  const std::int32_t movable = broadPhase.createProxy(tight, 2, Kind::Movable);
+  EXPECT_TRUE(sameBox(broadPhase.fatAABB(fixed), tight));
+  EXPECT_TRUE(sameBox(broadPhase.fatAABB(movable), tight.expanded(kAabbMargin)));
+  EXPECT_EQ(broadPhase.proxyCount(), 2);
+  EXPECT_TRUE(broadPhase.fatAABBsOverlap(fixed, movable));
+  EXPECT_NE(fixed, movable);
+}
+
+TEST(BroadPhase, FatAABBsOverlap_SeesTheMargin) {
+  BroadPhase broadPhase;
+  const std::int32_t a = broadPhase.createProxy(makeBox(0, 0, 1, 1), 1, Kind::Movable);
+  // Tight boxes 0.15 apart: the two 0.1 margins bridge the gap.
+  const std::int32_t b = broadPhase.createProxy(makeBox(Real(2.15), 0, 1, 1), 2, Kind::Movable);
+  const std::int32_t c = broadPhase.createProxy(makeBox(Real(2.15), 0, 1, 1), 3, Kind::Static);
+  EXPECT_TRUE(broadPhase.fatAABBsOverlap(a, b));
+  EXPECT_FALSE(broadPhase.fatAABBsOverlap(a, c));
+}
+
+TEST(BroadPhase, UpdateProxy_FalseInsideMargin_TrueWhenLeavingFatBox) {
+  BroadPhase broadPhase;
+  const AABB tight = makeBox(0, 0, 1, 1);
+  const std::int32_t key = broadPhase.createProxy(tight, 1, Kind::Movable);
+  broadPhase.createProxy(makeBox(Real(2.5), 0, 1, 1), 2, Kind::Static);
+  broadPhase.createProxy(makeBox(0, Real(-1.5), 1, 1), 4, Kind::Static);
+  std::vector<ProxyPair> pairs;
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{1, 4}}));
+  const AABB fat = broadPhase.fatAABB(key);
+
+  // Inside the margin: nothing changes and nothing is queued (a queued proxy
+  // would report its neighbour 4 again).
+  EXPECT_FALSE(broadPhase.updateProxy(key, shifted(tight, Real(0.05), Real(-0.05))));
+  EXPECT_TRUE(sameBox(broadPhase.fatAABB(key), fat));
+  EXPECT_FALSE(broadPhase.updateProxy(key, shifted(tight, kAabbMargin, 0)));
+  broadPhase.findNewPairs(pairs);
+  EXPECT_TRUE(pairs.empty());
+
+  // Out of the fat box: re-fattened around the new box and queued, so the
+  // static neighbour it now reaches is reported.
+  const AABB moved = shifted(tight, Real(0.45), 0);
+  EXPECT_TRUE(broadPhase.updateProxy(key, moved));
+  EXPECT_TRUE(sameBox(broadPhase.fatAABB(key), moved.expanded(kAabbMargin)));
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{1, 2}, {1, 4}}));
+}
+
+TEST(BroadPhase, StaticProxiesPairOnlyWithMovableOnes_EvenWhenTouched) {
+  BroadPhase broadPhase;
+  const std::int32_t wall = broadPhase.createProxy(makeBox(0, 0, 1, 1), 1, Kind::Static);
+  broadPhase.createProxy(makeBox(Real(0.5), 0, 1, 1), 2, Kind::Static);
+  std::vector<ProxyPair> pairs;
+  broadPhase.findNewPairs(pairs);
+  EXPECT_TRUE(pairs.empty());
+
+  broadPhase.touchProxy(wall);
+  broadPhase.findNewPairs(pairs);
+  EXPECT_TRUE(pairs.empty());
+
+  // A movable proxy reaching the wall only: found when created, and found
+  // again through the wall when the wall is touched.
+  broadPhase.createProxy(makeBox(Real(-1.2), 0, Real(0.5), Real(0.5)), 3, Kind::Movable);
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{1, 3}}));
+  broadPhase.touchProxy(wall);
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{1, 3}}));
+}
+
+TEST(BroadPhase, PairOfTwoMovedProxiesIsReportedOnce) {
+  BroadPhase broadPhase;
+  const std::int32_t a = broadPhase.createProxy(makeBox(0, 0, 1, 1), 7, Kind::Movable);
+  broadPhase.createProxy(makeBox(1, 0, 1, 1), 3, Kind::Movable);
+  std::vector<ProxyPair> pairs;
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{3, 7}}));
+
+  // Moved and touched in the same step: still one pair.
+  EXPECT_TRUE(broadPhase.updateProxy(a, makeBox(Real(0.5), 0, 1, 1)));
+  broadPhase.touchProxy(a);
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{3, 7}}));
+}
+
+TEST(BroadPhase, FindNewPairsEmptiesTheQueue) {
+  BroadPhase broadPhase;
+  broadPhase.createProxy(makeBox(0, 0, 1, 1), 1, Kind::Movable);
+  broadPhase.createProxy(makeBox(1, 0, 1, 1), 2, Kind::Movable);
+  std::vector<ProxyPair> pairs;
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs.size(), 1U);
+  broadPhase.findNewPairs(pairs);
+  EXPECT_TRUE(pairs.empty());
+}
+
+TEST(BroadPhase, DestroyedProxiesNeverAppear) {
+  BroadPhase broadPhase;
+  const std::int32_t doomed = broadPhase.createProxy(makeBox(0, 0, 1, 1), 1, Kind::Movable);
+  const std::int32_t other = broadPhase.createProxy(makeBox(1, 0, 1, 1), 2, Kind::Movable);
+  broadPhase.createProxy(makeBox(0, 1, 1, 1), 3, Kind::Static);
+  broadPhase.touchProxy(doomed);
+  broadPhase.destroyProxy(doomed);
+  EXPECT_EQ(broadPhase.proxyCount(), 2);
+
+  std::vector<ProxyPair> pairs;
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{2, 3}}));
+
+  broadPhase.touchProxy(other);
+  broadPhase.findNewPairs(pairs);
+  EXPECT_FALSE(containsUser(pairs, 1));
+
+  std::vector<std::int32_t> visited;
+  broadPhase.query(makeBox(0, 0, 5, 5), [&](std::int32_t user) {
+    visited.push_back(user);
+    return true;
+  });
+  std::sort(visited.begin(), visited.end());
+  EXPECT_EQ(visited, (std::vector<std::int32_t>{2, 3}));
+}
+
+TEST(BroadPhase, ReusedKeyCarriesOnlyTheNewProxy) {
+  BroadPhase broadPhase;
+  broadPhase.createProxy(makeBox(0, 0, 1, 1), 1, Kind::Static);
+  const std::int32_t first = broadPhase.createProxy(makeBox(0, 0, 1, 1), 2, Kind::Movable);
+  broadPhase.destroyProxy(first);
+  // The movable tree's only node is freed and reused, so the key comes back.
+  const std::int32_t second = broadPhase.createProxy(makeBox(0, 0, 1, 1), 3, Kind::Movable);
+  ASSERT_EQ(second, first);
+  std::vector<ProxyPair> pairs;
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{1, 3}}));
+}
+
+TEST(BroadPhase, QueryVisitsBothKindsAndStopsEarly) {
+  BroadPhase broadPhase;
+  broadPhase.createProxy(makeBox(0, 0, 1, 1), 1, Kind::Static);
+  broadPhase.createProxy(makeBox(0, 0, 1, 1), 2, Kind::Movable);
+  broadPhase.createProxy(makeBox(9, 9, 1, 1), 3, Kind::Movable);
+  std::vector<std::int32_t> visited;
+  broadPhase.query(makeBox(0, 0, Real(0.5), Real(0.5)), [&](std::int32_t user) {
+    visited.push_back(user);
+    return true;
+  });
+  std::sort(visited.begin(), visited.end());
+  EXPECT_EQ(visited, (std::vector<std::int32_t>{1, 2}));
+
+  int visits = 0;
+  broadPhase.query(makeBox(0, 0, Real(0.5), Real(0.5)), [&](std::int32_t) {
+    ++visits;
+    return false;
+  });
+  EXPECT_EQ(visits, 1);
+}
+
+}  // namespace
+}  // namespace impulse

@@ -1,0 +1,222 @@
+#include "impulse/dynamic_tree.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace impulse {
+namespace {
+
+AABB makeBox(Real x, Real y, Real halfWidth, Real halfHeight) {
+  return {Vec2(x - halfWidth, y - halfHeight), Vec2(x + halfWidth, y + halfHeight)};
+}
+
+// Random boxes in a 100 m square, from a fixed seed.
+class BoxSource {
+ public:
+  explicit BoxSource(unsigned seed) : rng_(seed) {}
+  AABB box() {
+    std::uniform_real_distribution<Real> position(0, 100);
+    std::uniform_real_distribution<Real> half(Real(0.1), Real(2));
+    return makeBox(position(rng_), position(rng_), half(rng_), half(rng_));
+  }
+  AABB moved(const AABB& box) {
+    std::uniform_real_distribution<Real> step(-3, 3);
+    const Vec2 delta(step(rng_), step(rng_));
+    return {box.lower + delta, box.upper + delta};
+  }
+  std::mt19937& rng() { return rng_; }
+
+ private:
+  std::mt19937 rng_;
+};
+
+struct Leaf {
+  std::int32_t node;
+  AABB box;
+};
+
+int heightLimit(int leafCount) {
+  return static_cast<int>(3 * std::log2(static_cast<double>(leafCount))) + 2;
+}
+
+std::vector<std::int32_t> queried(const DynamicTree& tree, const AABB& box) {
+  std::vector<std::int32_t> found;
+  tree.query(box, [&](std::int32_t node) {
+    found.push_back(node);
+    return true;
+  });
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+std::vector<std::int32_t> bruteForce(const std::vector<Leaf>& leaves, const AABB& box) {
+  std::vector<std::int32_t> found;
+  for (const Leaf& leaf : leaves) {
+    if (leaf.box.overlaps(box)) found.push_back(leaf.node);
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+void expectQueriesMatchBruteForce(const DynamicTree& tree, const std::vector<Leaf>& leaves,
+                                  BoxSource& source) {
+  int nonEmpty = 0;
+  for (int i = 0; i < 200; ++i) {
+    const AABB box = source.box().expanded(3);
+    const std::vector<std::int32_t> expected = bruteForce(leaves, box);
+    ASSERT_EQ(queried(tree, box), expected);
+    nonEmpty += expected.empty() ? 0 : 1;
+  }
+  // The comparison must exercise real hits, not only empty sets.
+  EXPECT_GT(nonEmpty, 100);
+}
+
+TEST(DynamicTree, EmptyTreeIsValidAndQueriesNothing) {
+  DynamicTree tree;
+  EXPECT_TRUE(tree.isValid());
+  EXPECT_EQ(tree.height(), 0);
+  EXPECT_EQ(tree.leafCount(), 0);
+  EXPECT_TRUE(queried(tree, makeBox(0, 0, 1000, 1000)).empty());
+}
+
+TEST(DynamicTree, StaysValidAndShallow_UnderRandomInsertMoveRemove) {
+  DynamicTree tree;
+  BoxSource source(7);
+  std::vector<Leaf> leaves;
+  for (int i = 0; i < 1000; ++i) {
+    const AABB box = source.box();
+    leaves.push_back({tree.createProxy(box, i), box});
+  }
+  ASSERT_TRUE(tree.isValid());
+  EXPECT_EQ(tree.leafCount(), 1000);
+  EXPECT_LE(tree.height(), heightLimit(1000));
+
+  for (int round = 0; round < 20; ++round) {
+    for (Leaf& leaf : leaves) {
+      leaf.box = source.moved(leaf.box);
+      tree.moveProxy(leaf.node, leaf.box);
+    }
+    ASSERT_TRUE(tree.isValid()) << "round " << round;
+    EXPECT_LE(tree.height(), heightLimit(1000)) << "round " << round;
+  }
+
+  std::shuffle(leaves.begin(), leaves.end(), source.rng());
+  for (std::size_t i = 0; i < 500; ++i) tree.destroyProxy(leaves[i].node);
+  leaves.erase(leaves.begin(), leaves.begin() + 500);
+  ASSERT_TRUE(tree.isValid());
+  EXPECT_EQ(tree.leafCount(), 500);
+  EXPECT_LE(tree.height(), heightLimit(500));
+  for (const Leaf& leaf : leaves) {
+    EXPECT_EQ(tree.box(leaf.node).lower, leaf.box.lower);
+    EXPECT_EQ(tree.box(leaf.node).upper, leaf.box.upper);
+  }
+}
+
+TEST(DynamicTree, StaysShallow_WhenBoxesArriveSortedAlongALine) {
+  // Sorted input degrades an unbalanced tree into a list.
+  DynamicTree tree;
+  for (int i = 0; i < 1000; ++i) tree.createProxy(makeBox(Real(i), 0, Real(0.4), Real(0.4)), i);
+  ASSERT_TRUE(tree.isValid());
+  EXPECT_LE(tree.height(), heightLimit(1000));
+}
+
+TEST(DynamicTree, QueryReturnsExactlyTheOverlappingLeaves) {
+  DynamicTree tree;
+  BoxSource source(11);
+  std::vector<Leaf> leaves;
+  for (int i = 0; i < 1000; ++i) {
+    const AABB box = source.box();
+    leaves.push_back({tree.createProxy(box, i), box});
+  }
+  expectQueriesMatchBruteForce(tree, leaves, source);
+
+  for (Leaf& leaf : leaves) {
+    leaf.box = source.moved(leaf.box);
+    tree.moveProxy(leaf.node, leaf.box);
+  }
+  std::vector<Leaf> kept;
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    if (i % 2 == 0) {
+      tree.destroyProxy(leaves[i].node);
+    } else {
+      kept.push_back(leaves[i]);
+    }
+  }
+  expectQueriesMatchBruteForce(tree, kept, source);
+}
+
+TEST(DynamicTree, QueryStopsWhenVisitReturnsFalse) {
+  DynamicTree tree;
+  for (int i = 0; i < 10; ++i) tree.createProxy(makeBox(0, 0, 1, 1), i);
+  int visits = 0;
+  tree.query(makeBox(0, 0, 1, 1), [&](std::int32_t) {
+    ++visits;
+    return visits < 3;
+  });
+  EXPECT_EQ(visits, 3);
+}
+
+TEST(DynamicTree, QueryOrderIsIdenticalForIdenticalHistories) {
+  auto visitOrder = [] {
+    DynamicTree tree;
+    BoxSource source(5);
+    std::vector<std::int32_t> nodes;
+    for (int i = 0; i < 300; ++i) nodes.push_back(tree.createProxy(source.box(), i));
+    for (std::int32_t node : nodes) tree.moveProxy(node, source.moved(tree.box(node)));
+    std::vector<std::int32_t> order;
+    tree.query(makeBox(50, 50, 30, 30), [&](std::int32_t node) {
+      order.push_back(tree.userValue(node));
+      return true;
+    });
+    return order;
+  };
+  const std::vector<std::int32_t> first = visitOrder();
+  EXPECT_GT(first.size(), 10U);
+  EXPECT_EQ(first, visitOrder());
+}
+
+TEST(DynamicTree, NodeIndicesStayStable_AndFreedNodesAreReused) {
+  DynamicTree tree;
+  const std::int32_t a = tree.createProxy(makeBox(0, 0, 1, 1), 10);
+  const std::int32_t b = tree.createProxy(makeBox(5, 0, 1, 1), 20);
+  const std::int32_t c = tree.createProxy(makeBox(10, 0, 1, 1), 30);
+
+  tree.moveProxy(a, makeBox(20, 20, 1, 1));
+  tree.destroyProxy(b);
+  EXPECT_EQ(tree.userValue(a), 10);
+  EXPECT_EQ(tree.userValue(c), 30);
+  EXPECT_EQ(tree.box(a).lower, Vec2(19, 19));
+  EXPECT_EQ(tree.box(c).lower, Vec2(9, -1));
+
+  // Three leaves and two internal nodes were ever live at once: a new leaf and
+  // its parent fit in the freed nodes without growing the array.
+  const std::int32_t d = tree.createProxy(makeBox(5, 0, 1, 1), 40);
+  EXPECT_LT(d, 5);
+  EXPECT_NE(d, a);
+  EXPECT_NE(d, c);
+  EXPECT_EQ(tree.userValue(d), 40);
+  EXPECT_TRUE(tree.isValid());
+  EXPECT_EQ(queried(tree, makeBox(5, 0, 0.5f, 0.5f)), std::vector<std::int32_t>{d});
+}
+
+TEST(DynamicTree, RemovingEveryLeafLeavesAnEmptyValidTree) {
+  DynamicTree tree;
+  BoxSource source(3);
+  std::vector<std::int32_t> nodes;
+  for (int i = 0; i < 100; ++i) nodes.push_back(tree.createProxy(source.box(), i));
+  for (std::int32_t node : nodes) {
+    tree.destroyProxy(node);
+    ASSERT_TRUE(tree.isValid());
+  }
+  EXPECT_EQ(tree.leafCount(), 0);
+  EXPECT_EQ(tree.height(), 0);
+  EXPECT_TRUE(queried(tree, makeBox(50, 50, 100, 100)).empty());
+}
+
+}  // namespace
+}  // namespace impulse
