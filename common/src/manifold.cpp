@@ -233,7 +233,7 @@ Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, 
   return toWorld(normal, std::span(&point, 1), xfA, xfB);
 }
 
-// Circle B whose centre lies in the Voronoi region of vertex of A.
+// Circle B whose centre lies in the Voronoi region of a vertex of A.
 Manifold circleVertexContact(const Vec2& vertex, const Vec2& centerB, Real radiusB,
                              const Transform& xfA, const Transform& xfB) {
   Vec2 offset = centerB - vertex;

@@ -24,8 +24,12 @@ class BoxSource {
     std::uniform_real_distribution<Real> half(Real(0.1), Real(2));
     return makeBox(position(rng_), position(rng_), half(rng_), half(rng_));
   }
+  // Mostly jitter that stays inside the ancestors' boxes, sometimes a jump.
   AABB moved(const AABB& box) {
-    std::uniform_real_distribution<Real> step(-3, 3);
+    std::uniform_real_distribution<Real> jitter(Real(-0.01), Real(0.01));
+    std::uniform_real_distribution<Real> jump(-3, 3);
+    std::bernoulli_distribution jumps(0.3);
+    auto& step = jumps(rng_) ? jump : jitter;
     const Vec2 delta(step(rng_), step(rng_));
     return {box.lower + delta, box.upper + delta};
   }
@@ -123,6 +127,21 @@ TEST(DynamicTree, StaysShallow_WhenBoxesArriveSortedAlongALine) {
   for (int i = 0; i < 1000; ++i) tree.createProxy(makeBox(Real(i), 0, Real(0.4), Real(0.4)), i);
   ASSERT_TRUE(tree.isValid());
   EXPECT_LE(tree.height(), heightLimit(1000));
+}
+
+TEST(DynamicTree, StaysShallow_WhenBoxesAreIdenticalOrNested) {
+  // The area heuristic alone would pair each new box with the root here and
+  // build a list.
+  DynamicTree identical;
+  DynamicTree nested;
+  for (int i = 0; i < 1000; ++i) {
+    identical.createProxy(makeBox(0, 0, 1, 1), i);
+    nested.createProxy(makeBox(0, 0, Real(1 + i), Real(1 + i)), i);
+  }
+  ASSERT_TRUE(identical.isValid());
+  ASSERT_TRUE(nested.isValid());
+  EXPECT_LE(identical.height(), heightLimit(1000));
+  EXPECT_LE(nested.height(), heightLimit(1000));
 }
 
 TEST(DynamicTree, QueryReturnsExactlyTheOverlappingLeaves) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -55,7 +56,10 @@ void expectWellFormed(const Manifold& m, const Transform& xfA, const Transform& 
 
 Manifold collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB) {
   CollideFunction function = collideFunction(a.type, b.type);
-  EXPECT_NE(function, nullptr);
+  if (function == nullptr) {
+    ADD_FAILURE() << "no collide function for this pair";
+    return {};
+  }
   Manifold m = function(a, xfA, b, xfB);
   expectWellFormed(m, xfA, xfB);
   return m;

@@ -29,7 +29,8 @@ class DynamicTree {
 
   int height() const;
   int leafCount() const { return leafCount_; }
-  /// Checks parent links, heights and enclosing boxes (for tests).
+  /// Checks parent links, heights and their balance, enclosing boxes, the leaf
+  /// count and the free list (for tests).
   bool isValid() const;
 
  private:
@@ -50,9 +51,10 @@ class DynamicTree {
   std::int32_t findBestSibling(const AABB& leafBox) const;
   void replaceChild(std::int32_t parent, std::int32_t oldChild, std::int32_t newChild);
   void refit(std::int32_t node);
-  void refitAncestors(std::int32_t node);
-  std::int32_t balance(std::int32_t node);
-  std::int32_t rotateUp(std::int32_t node, std::int32_t child);
+  void refitAncestors(std::int32_t node, bool trySwaps);
+  std::int32_t balance(std::int32_t node, bool trySwaps);
+  std::int32_t rotateUp(std::int32_t node, std::int32_t child, bool trySwaps);
+  void swapForArea(std::int32_t node);
   bool isValidNode(std::int32_t node) const;
   std::int64_t freeNodeCount() const;
 

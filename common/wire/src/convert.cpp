@@ -173,6 +173,18 @@ BodyState stateFromWire(const v1::BodyState& state) {
   return result;
 }
 
+PresetInfo presetFromWire(const v1::PresetInfo& preset) {
+  PresetInfo result;
+  result.id = preset.id();
+  result.title = preset.title();
+  result.explanation.assign(preset.explanation().begin(), preset.explanation().end());
+  for (const auto& marker : preset.markers()) {
+    result.markers.push_back({vecFromWireUnchecked(marker.center()), Real(marker.radius())});
+  }
+  result.drawingAllowed = preset.drawing_allowed();
+  return result;
+}
+
 std::string_view materialName(Material material) {
   return kMaterialNames[static_cast<std::size_t>(material)];
 }

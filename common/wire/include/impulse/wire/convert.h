@@ -62,6 +62,7 @@ Decoded<Shape> shapeFromWire(const v1::Shape& shape);
 /// States come from the server: converted as they are.
 BodyState stateFromWire(const v1::BodyState& state);
 Vec2 vecFromWireUnchecked(const v1::Vec2& v);
+PresetInfo presetFromWire(const v1::PresetInfo& preset);
 
 /// Upper-case wire name of a material ("SOLID".."RUBBER").
 std::string_view materialName(Material material);

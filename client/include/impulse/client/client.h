@@ -1,0 +1,106 @@
+#pragma once
+/// Client library: connects to impulse-server, performs the handshake, sends
+/// commands, awaits their replies and keeps a WorldMirror current from the
+/// snapshot stream. Single-threaded: it does I/O only inside its own calls,
+/// so a game loop can call poll() with a zero timeout once per frame.
+///
+/// Connection-level failures (refused, closed, a server Error, a malformed
+/// frame) throw ConnectionError; after one, the client is unusable. Waiting
+/// calls take a timeout and return nothing when it passes.
+
+#include <asio.hpp>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "impulse.pb.h"
+#include "impulse/client/world_mirror.h"
+#include "impulse/wire/framing.h"
+
+namespace impulse::client {
+
+class ConnectionError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ConnectOptions {
+  std::string host = "127.0.0.1";
+  std::uint16_t port = 7777;
+  std::string name = "impulse-client";
+  bool wantSnapshots = true;
+  std::chrono::milliseconds timeout{5000};
+  /// Largest frame accepted from the server (full snapshots of big worlds).
+  std::size_t maxFrameBytes = std::size_t(256) << 20;
+  /// Sent in Hello; only tests change it.
+  std::uint32_t protocolVersion = wire::kProtocolVersion;
+};
+
+/// "HOST:PORT" (or "[V6]:PORT") split; nothing when malformed.
+std::optional<std::pair<std::string, std::uint16_t>> parseHostPort(std::string_view text);
+
+class Client {
+ public:
+  using Duration = std::chrono::milliseconds;
+
+  /// Connects and completes the handshake (Hello, Welcome, and with
+  /// wantSnapshots the first full snapshot).
+  explicit Client(const ConnectOptions& options);
+  ~Client();
+  Client(const Client&) = delete;
+  Client& operator=(const Client&) = delete;
+
+  const v1::Welcome& welcome() const { return welcome_; }
+  const WorldMirror& mirror() const { return mirror_; }
+
+  /// Sends a command with a fresh request id, which it returns.
+  std::uint64_t send(v1::ClientMessage message);
+  /// Waits for the reply to `requestId` (CommandResult, BodyInfo or Pong).
+  /// Snapshots that arrive meanwhile are applied; other replies are kept for
+  /// their own awaitReply().
+  std::optional<v1::ServerMessage> awaitReply(std::uint64_t requestId, Duration timeout);
+  /// send() then awaitReply(); throws ConnectionError on timeout.
+  v1::ServerMessage request(v1::ClientMessage message, Duration timeout = Duration(10000));
+  /// Waits until a snapshot is applied that was not applied before the call.
+  std::optional<v1::Snapshot> awaitSnapshot(Duration timeout);
+  /// Receives whatever is available within `timeout` and applies snapshots;
+  /// returns how many messages were handled. Replies are kept for awaitReply().
+  std::size_t poll(Duration timeout = Duration(0));
+
+  /// Called for every snapshot after it was applied, with its frame size.
+  void onSnapshot(std::function<void(const v1::Snapshot&, std::size_t frameBytes)> callback) {
+    snapshotCallback_ = std::move(callback);
+  }
+
+  /// Round-trip: a Ping answered after every earlier command was applied.
+  v1::Pong ping(Duration timeout = Duration(10000));
+
+ private:
+  /// Runs the socket until a message is received or the deadline passes.
+  bool receiveOne(std::chrono::steady_clock::time_point deadline);
+  void startRead();
+  void handle(v1::ServerMessage&& message, std::size_t frameBytes);
+  void throwIfFailed() const;
+
+  asio::io_context io_;
+  asio::ip::tcp::socket socket_;
+  wire::FrameReader reader_;
+  std::array<char, 64 * 1024> buffer_{};
+  bool reading_ = false;
+  std::string failure_;
+  std::deque<std::pair<v1::ServerMessage, std::size_t>> inbox_;
+
+  v1::Welcome welcome_;
+  WorldMirror mirror_;
+  std::map<std::uint64_t, v1::ServerMessage> replies_;
+  std::uint64_t nextRequestId_ = 1;
+  std::function<void(const v1::Snapshot&, std::size_t)> snapshotCallback_;
+  std::optional<v1::Snapshot> lastSnapshot_;
+};
+
+}  // namespace impulse::client

@@ -1,0 +1,58 @@
+#pragma once
+/// A client's copy of the server's world, kept current by applying snapshots
+/// in the order they arrive.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "impulse.pb.h"
+#include "impulse/body.h"
+#include "impulse/material.h"
+#include "impulse/preset.h"
+#include "impulse/shape.h"
+
+namespace impulse::client {
+
+/// One body as the server described it, with its latest state.
+struct MirrorBody {
+  BodyId id;
+  Shape shape;  ///< body-local, centroid at the origin
+  Material material = Material::Solid;
+  bool isStatic = false;
+  bool ignoreGravity = false;
+  BodyState state;
+};
+
+class WorldMirror {
+ public:
+  /// Applies one snapshot: a full one replaces everything; a delta removes,
+  /// then adds (or replaces) descriptors, then sets states. On a malformed
+  /// snapshot (a shape that does not decode, a state for an unknown body)
+  /// returns false with the reason; bodies already applied stay applied.
+  bool apply(const v1::Snapshot& snapshot, std::string* error = nullptr);
+
+  /// Bodies by id (ascending).
+  const std::map<std::uint32_t, MirrorBody>& bodies() const { return bodies_; }
+  const MirrorBody* find(BodyId id) const;
+
+  std::uint64_t tick() const { return tick_; }
+  double simTime() const { return simTime_; }
+  Vec2 gravity() const { return gravity_; }
+  bool paused() const { return paused_; }
+  /// The preset of the last full snapshot, once one arrived.
+  const std::optional<PresetInfo>& preset() const { return preset_; }
+  std::uint64_t snapshotsApplied() const { return snapshotsApplied_; }
+
+ private:
+  std::map<std::uint32_t, MirrorBody> bodies_;
+  std::uint64_t tick_ = 0;
+  double simTime_ = 0;
+  Vec2 gravity_ = Vec2::Zero();
+  bool paused_ = false;
+  std::optional<PresetInfo> preset_;
+  std::uint64_t snapshotsApplied_ = 0;
+};
+
+}  // namespace impulse::client

@@ -1,0 +1,222 @@
+#include "impulse/client/client.h"
+
+#include <charconv>
+
+#include "impulse/client/commands.h"
+
+namespace impulse::client {
+
+namespace {
+
+using SteadyClock = std::chrono::steady_clock;
+
+std::uint64_t replyId(const v1::ServerMessage& message) {
+  switch (message.message_case()) {
+    case v1::ServerMessage::kCommandResult: return message.command_result().request_id();
+    case v1::ServerMessage::kBodyInfo: return message.body_info().request_id();
+    case v1::ServerMessage::kPong: return message.pong().request_id();
+    default: return 0;
+  }
+}
+
+}  // namespace
+
+std::optional<std::pair<std::string, std::uint16_t>> parseHostPort(std::string_view text) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string_view::npos || colon == 0) return std::nullopt;
+  std::string_view host = text.substr(0, colon);
+  const std::string_view portText = text.substr(colon + 1);
+  if (host.size() >= 2 && host.front() == '[' && host.back() == ']') {
+    host = host.substr(1, host.size() - 2);
+  }
+  unsigned port = 0;
+  const auto [end, ec] = std::from_chars(portText.data(), portText.data() + portText.size(), port);
+  if (ec != std::errc() || end != portText.data() + portText.size() || port == 0 || port > 65535) {
+    return std::nullopt;
+  }
+  return std::make_pair(std::string(host), std::uint16_t(port));
+}
+
+Client::Client(const ConnectOptions& options)
+    : socket_(io_), reader_(options.maxFrameBytes) {
+  const auto deadline = SteadyClock::now() + options.timeout;
+  asio::error_code ec;
+  asio::ip::tcp::resolver resolver(io_);
+  const auto endpoints = resolver.resolve(options.host, std::to_string(options.port), ec);
+  if (ec) throw ConnectionError("cannot resolve " + options.host + ": " + ec.message());
+
+  bool connected = false;
+  asio::async_connect(socket_, endpoints,
+                      [&](const asio::error_code& error, const asio::ip::tcp::endpoint&) {
+                        ec = error;
+                        connected = true;
+                      });
+  io_.run_until(deadline);
+  const std::string target = options.host + ":" + std::to_string(options.port);
+  if (!connected) throw ConnectionError("connecting to " + target + " timed out");
+  if (ec) throw ConnectionError("cannot connect to " + target + ": " + ec.message());
+  io_.restart();
+  socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+
+  v1::ClientMessage hello;
+  hello.mutable_hello()->set_protocol_version(options.protocolVersion);
+  hello.mutable_hello()->set_client_name(options.name);
+  hello.mutable_hello()->set_want_snapshots(options.wantSnapshots);
+  send(std::move(hello));
+  while (!welcome_.has_world_max()) {
+    if (!receiveOne(deadline)) throw ConnectionError("no Welcome from " + target);
+  }
+  if (options.wantSnapshots) {
+    while (mirror_.snapshotsApplied() == 0) {
+      if (!receiveOne(deadline)) throw ConnectionError("no first snapshot from " + target);
+    }
+  }
+}
+
+Client::~Client() {
+  asio::error_code ignored;
+  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+  socket_.close(ignored);
+}
+
+void Client::throwIfFailed() const {
+  if (!failure_.empty()) throw ConnectionError(failure_);
+}
+
+std::uint64_t Client::send(v1::ClientMessage message) {
+  throwIfFailed();
+  const std::uint64_t id = nextRequestId_++;
+  message.set_request_id(id);
+  const std::string frame = wire::encodeFrame(message);
+  asio::error_code ec;
+  asio::write(socket_, asio::buffer(frame), ec);
+  if (ec) {
+    failure_ = "sending failed: " + ec.message();
+    throwIfFailed();
+  }
+  return id;
+}
+
+void Client::startRead() {
+  if (reading_ || !failure_.empty()) return;
+  reading_ = true;
+  socket_.async_read_some(asio::buffer(buffer_), [this](const asio::error_code& ec,
+                                                        std::size_t n) {
+    reading_ = false;
+    if (ec) {
+      failure_ = ec == asio::error::eof ? "the server closed the connection" : ec.message();
+      return;
+    }
+    std::span<const char> data(buffer_.data(), n);
+    while (!data.empty()) {
+      const auto result = reader_.feed(data);
+      data = data.subspan(result.consumed);
+      if (result.status == wire::FrameReader::Status::Error) {
+        failure_ = "bad frame from the server: " + reader_.error();
+        return;
+      }
+      if (result.status == wire::FrameReader::Status::Frame) {
+        v1::ServerMessage message;
+        if (!wire::parseFrame(reader_.frame(), message)) {
+          failure_ = "a frame from the server does not parse";
+          return;
+        }
+        inbox_.emplace_back(std::move(message), reader_.frame().size());
+      }
+    }
+  });
+}
+
+bool Client::receiveOne(SteadyClock::time_point deadline) {
+  while (inbox_.empty()) {
+    throwIfFailed();
+    startRead();
+    if (io_.stopped()) io_.restart();
+    if (SteadyClock::now() >= deadline) {
+      io_.poll();
+      if (inbox_.empty()) {
+        throwIfFailed();
+        return false;
+      }
+    } else {
+      io_.run_one_until(deadline);
+    }
+  }
+  auto [message, bytes] = std::move(inbox_.front());
+  inbox_.pop_front();
+  handle(std::move(message), bytes);
+  throwIfFailed();
+  return true;
+}
+
+void Client::handle(v1::ServerMessage&& message, std::size_t frameBytes) {
+  switch (message.message_case()) {
+    case v1::ServerMessage::kWelcome:
+      welcome_ = message.welcome();
+      return;
+    case v1::ServerMessage::kSnapshot: {
+      std::string error;
+      if (!mirror_.apply(message.snapshot(), &error)) {
+        failure_ = "malformed snapshot: " + error;
+        return;
+      }
+      if (snapshotCallback_) snapshotCallback_(message.snapshot(), frameBytes);
+      lastSnapshot_ = std::move(*message.mutable_snapshot());
+      return;
+    }
+    case v1::ServerMessage::kError:
+      failure_ = "server error: " + message.error().message();
+      return;
+    default:
+      replies_[replyId(message)] = std::move(message);
+      return;
+  }
+}
+
+std::optional<v1::ServerMessage> Client::awaitReply(std::uint64_t requestId, Duration timeout) {
+  const auto deadline = SteadyClock::now() + timeout;
+  while (true) {
+    if (const auto it = replies_.find(requestId); it != replies_.end()) {
+      auto reply = std::move(it->second);
+      replies_.erase(it);
+      return reply;
+    }
+    if (!receiveOne(deadline)) return std::nullopt;
+  }
+}
+
+v1::ServerMessage Client::request(v1::ClientMessage message, Duration timeout) {
+  const auto id = send(std::move(message));
+  auto reply = awaitReply(id, timeout);
+  if (!reply) {
+    throw ConnectionError("no reply to request " + std::to_string(id) + " within " +
+                          std::to_string(timeout.count()) + " ms");
+  }
+  return std::move(*reply);
+}
+
+std::optional<v1::Snapshot> Client::awaitSnapshot(Duration timeout) {
+  const auto deadline = SteadyClock::now() + timeout;
+  const auto target = mirror_.snapshotsApplied() + 1;
+  while (mirror_.snapshotsApplied() < target) {
+    if (!receiveOne(deadline)) return std::nullopt;
+  }
+  return lastSnapshot_;
+}
+
+std::size_t Client::poll(Duration timeout) {
+  const auto deadline = SteadyClock::now() + timeout;
+  std::size_t handled = 0;
+  while (receiveOne(deadline)) ++handled;
+  return handled;
+}
+
+v1::Pong Client::ping(Duration timeout) {
+  const auto now = std::chrono::duration_cast<std::chrono::microseconds>(
+      std::chrono::system_clock::now().time_since_epoch());
+  auto reply = request(client::ping(std::uint64_t(now.count())), timeout);
+  if (!reply.has_pong()) throw ConnectionError("Ping was not answered by a Pong");
+  return reply.pong();
+}
+
+}  // namespace impulse::client

@@ -1,0 +1,51 @@
+#include "impulse/client/world_mirror.h"
+
+#include "impulse/wire/convert.h"
+
+namespace impulse::client {
+
+bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
+  auto failed = [error](std::string message) {
+    if (error != nullptr) *error = std::move(message);
+    return false;
+  };
+  tick_ = snapshot.tick();
+  simTime_ = snapshot.sim_time();
+  gravity_ = wire::vecFromWireUnchecked(snapshot.gravity());
+  paused_ = snapshot.paused();
+  if (snapshot.has_preset()) preset_ = wire::presetFromWire(snapshot.preset());
+  if (snapshot.full()) bodies_.clear();
+  ++snapshotsApplied_;
+
+  for (const std::uint32_t id : snapshot.removed()) bodies_.erase(id);
+  for (const auto& descriptor : snapshot.added()) {
+    auto shape = wire::shapeFromWire(descriptor.shape());
+    if (!shape.ok()) {
+      return failed("body " + std::to_string(descriptor.id()) + ": " + shape.error);
+    }
+    auto material = wire::materialFromWire(descriptor.material());
+    MirrorBody body;
+    body.id = BodyId{descriptor.id()};
+    body.shape = *shape.value;
+    body.material = material.value_or(Material::Solid);
+    body.isStatic = descriptor.is_static();
+    body.ignoreGravity = descriptor.ignore_gravity();
+    body.state.id = body.id;
+    bodies_[descriptor.id()] = body;
+  }
+  for (const auto& state : snapshot.bodies()) {
+    const auto it = bodies_.find(state.id());
+    if (it == bodies_.end()) {
+      return failed("state for unknown body " + std::to_string(state.id()));
+    }
+    it->second.state = wire::stateFromWire(state);
+  }
+  return true;
+}
+
+const MirrorBody* WorldMirror::find(BodyId id) const {
+  const auto it = bodies_.find(id.value);
+  return it == bodies_.end() ? nullptr : &it->second;
+}
+
+}  // namespace impulse::client

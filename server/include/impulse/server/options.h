@@ -1,0 +1,44 @@
+#pragma once
+/// Command-line options of impulse-server.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace impulse::server {
+
+struct ServerOptions {
+  std::string bind = "127.0.0.1";
+  /// 0 asks the system for a free port.
+  std::uint16_t port = 7777;
+  double tickHz = 60;
+  double snapshotHz = 30;
+  int subSteps = 4;
+  int preset = 0;
+  bool paused = false;
+  int maxClients = 64;
+  int maxBodies = 10000;
+  std::size_t maxFrameBytes = std::size_t(1) << 20;
+  /// A client with unsent data that accepts no byte for this long is
+  /// disconnected; so is one that has not said Hello by then.
+  double stallTimeoutSeconds = 10;
+};
+
+/// Outcome of parsing: options, a request for help, or an error message.
+struct ParsedOptions {
+  std::optional<ServerOptions> options;
+  bool help = false;
+  std::string error;
+};
+
+/// Parses the arguments after the program name. Accepts `--flag value` and
+/// `--flag=value`; every value is range-checked.
+ParsedOptions parseOptions(std::span<const std::string_view> args);
+
+/// The --help text.
+std::string usage();
+
+}  // namespace impulse::server

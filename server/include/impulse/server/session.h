@@ -1,0 +1,135 @@
+#pragma once
+/// One client connection: framed reads, the handshake, and a bounded
+/// outbound queue (Asio chat-server pattern: the session owns itself through
+/// shared_ptr captures; one write in flight at a time).
+///
+/// Memory per session is bounded whatever the peer does: one read buffer, one
+/// frame of at most max-frame-bytes, queued command bytes up to a cap (reading
+/// pauses beyond it), replies up to a cap (the session is dropped beyond it)
+/// and at most one unsent snapshot, which a newer one replaces.
+
+#include <array>
+#include <asio.hpp>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+
+#include "impulse.pb.h"
+#include "impulse/server/snapshot_builder.h"
+#include "impulse/server/tick_schedule.h"
+#include "impulse/wire/framing.h"
+
+namespace impulse::server {
+
+class Session;
+
+/// What a session needs from the server.
+class SessionHost {
+ public:
+  virtual ~SessionHost() = default;
+  /// A valid Hello arrived: answer with Welcome (and subscribe if asked).
+  virtual void onHello(const std::shared_ptr<Session>& session, const v1::Hello& hello) = 0;
+  /// A command to queue for the next tick; `bytes` is its frame size.
+  virtual void onCommand(const std::shared_ptr<Session>& session, v1::ClientMessage&& message,
+                         std::size_t bytes) = 0;
+  virtual void onClosed(Session& session) = 0;
+  /// A full snapshot of the world now, and the sequence number of the last
+  /// broadcast whose changes it includes.
+  virtual std::pair<SharedFrame, std::uint64_t> currentFullSnapshot() = 0;
+};
+
+struct SessionLimits {
+  std::size_t maxFrameBytes = wire::kDefaultMaxFrameBytes;
+  /// Replies waiting to be sent; a client past this is not reading: dropped.
+  std::size_t maxQueuedReplyBytes = std::size_t(1) << 20;
+  /// Commands waiting for the next tick; reading pauses past this.
+  std::size_t maxPendingCommandBytes = std::size_t(1) << 20;
+  Clock::duration stallTimeout = std::chrono::seconds(10);
+};
+
+class Session : public std::enable_shared_from_this<Session> {
+ public:
+  Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t id,
+          const SessionLimits& limits);
+
+  void start();
+  /// Sends Error(message) and closes without reading anything (server full).
+  void reject(const std::string& message);
+
+  void send(const v1::ServerMessage& message);
+  /// Starts the snapshot stream with a full snapshot.
+  void subscribe();
+  bool subscribed() const { return subscribed_; }
+  /// Broadcast `sequence` (delta against broadcast sequence - 1). A session
+  /// that did not get every earlier broadcast gets a full snapshot instead.
+  void offerSnapshot(std::uint64_t sequence, const SharedFrame& delta);
+  /// Commands of `bytes` were applied: reading may resume.
+  void commandsApplied(std::size_t bytes);
+  /// Drops the session if it stalled (see SessionLimits) or never said Hello.
+  void checkTimeouts(Clock::time_point now);
+  void close(const std::string& reason);
+
+  std::uint32_t id() const { return id_; }
+  bool closed() const { return closed_; }
+  bool helloDone() const { return helloDone_; }
+  /// Not closed and not closing after an error.
+  bool acceptingTraffic() const { return !closed_ && !closeAfterFlush_; }
+  const std::string& name() const { return name_; }
+  std::uint64_t snapshotsSkipped() const { return snapshotsSkipped_; }
+
+ private:
+  struct Outgoing {
+    SharedFrame frame;  // null: a full snapshot, built when it is written
+    bool snapshot = false;
+  };
+
+  void readMore();
+  void onRead(const asio::error_code& ec, std::size_t bytes);
+  void processBuffered();
+  void handleFrame(std::string_view payload);
+  /// Protocol violation: Error, then close once it is flushed.
+  void fatal(const std::string& message);
+  /// After the Error is flushed: half-close and drain input until EOF.
+  void startLinger();
+  void push(Outgoing item);
+  void writeMore();
+  void onWritten(std::size_t bytes);
+  std::size_t lockedItems() const;
+  std::string label() const;
+
+  asio::ip::tcp::socket socket_;
+  SessionHost& host_;
+  std::uint32_t id_;
+  SessionLimits limits_;
+  std::string name_;
+  std::string peer_;
+  Clock::time_point connectedAt_;
+
+  std::array<char, 64 * 1024> readBuffer_{};
+  std::size_t readBegin_ = 0;
+  std::size_t readEnd_ = 0;
+  wire::FrameReader reader_;
+  bool reading_ = false;
+  std::size_t pendingCommandBytes_ = 0;
+
+  std::deque<Outgoing> queue_;
+  std::size_t queuedReplyBytes_ = 0;
+  std::size_t inFlight_ = 0;
+  std::size_t writeOffset_ = 0;
+  bool writing_ = false;
+  bool unsentSnapshot_ = false;
+  Clock::time_point lastWriteProgress_;
+
+  bool helloDone_ = false;
+  bool subscribed_ = false;
+  bool closeAfterFlush_ = false;
+  bool lingering_ = false;
+  Clock::time_point lingerSince_;
+  bool closed_ = false;
+  std::uint64_t lastSnapshotSequence_ = 0;
+  bool hasSnapshotSequence_ = false;
+  std::uint64_t snapshotsSkipped_ = 0;
+};
+
+}  // namespace impulse::server

@@ -1,0 +1,55 @@
+#pragma once
+/// The served world: engine world, tick counter, pause state and the snapshot
+/// bookkeeping that every change to the world must go through.
+
+#include <cstdint>
+
+#include "impulse/material.h"
+#include "impulse/preset.h"
+#include "impulse/server/snapshot_builder.h"
+#include "impulse/world.h"
+
+namespace impulse::server {
+
+struct SimulationSettings {
+  double tickHz = 60;
+  int subSteps = 4;
+  int maxBodies = 10000;
+  int preset = 0;
+  bool paused = false;
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const SimulationSettings& settings);
+
+  World& world() { return world_; }
+  const World& world() const { return world_; }
+  SnapshotBuilder& snapshots() { return snapshots_; }
+
+  /// Advances one tick and records what moved.
+  void step();
+  /// Replaces the world with preset `id`; false (world untouched) when out of range.
+  bool loadPreset(int id, Material selected);
+  /// Removes every body.
+  void clear();
+
+  std::uint64_t tick() const { return tick_; }
+  double tickHz() const { return tickHz_; }
+  double simTime() const { return double(tick_) / tickHz_; }
+  bool paused() const { return paused_; }
+  void setPaused(bool paused);
+  SnapshotMeta meta() const { return {tick_, simTime(), paused_}; }
+  /// Wall-clock milliseconds of the last world step.
+  double lastStepMs() const { return lastStepMs_; }
+
+ private:
+  double tickHz_;
+  World world_;
+  SnapshotBuilder snapshots_;
+  std::uint64_t tick_ = 0;
+  bool paused_ = false;
+  double lastStepMs_ = 0;
+};
+
+}  // namespace impulse::server

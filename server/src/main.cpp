@@ -1,0 +1,48 @@
+// impulse-server: the authoritative world served over TCP.
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <string_view>
+#include <vector>
+
+#include "impulse/server/log.h"
+#include "impulse/server/options.h"
+#include "impulse/server/server.h"
+
+int main(int argc, char** argv) {
+  using namespace impulse::server;
+  const std::vector<std::string_view> args(argv + 1, argv + argc);
+  const auto parsed = parseOptions(args);
+  if (parsed.help) {
+    std::fputs(usage().c_str(), stdout);
+    return 0;
+  }
+  if (!parsed.options) {
+    std::fprintf(stderr, "impulse-server: %s\n", parsed.error.c_str());
+    return 2;
+  }
+  try {
+    asio::io_context io(1);
+    Server server(io, *parsed.options);
+    asio::signal_set signals(io, SIGINT, SIGTERM);
+    signals.async_wait([&server](const asio::error_code& ec, int signal) {
+      if (ec) return;
+      logLine(std::string("received ") + (signal == SIGINT ? "SIGINT" : "SIGTERM"));
+      server.stop();
+    });
+    server.start();
+    const auto endpoint = server.endpoint();
+    const auto address = endpoint.address();
+    const std::string host =
+        address.is_v6() ? "[" + address.to_string() + "]" : address.to_string();
+    // Scripts read the port from this line: keep it first and exact.
+    std::printf("listening on %s:%u\n", host.c_str(), unsigned(endpoint.port()));
+    std::fflush(stdout);
+    io.run();
+    logLine("stopped");
+    return 0;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "impulse-server: %s\n", error.what());
+    return 1;
+  }
+}

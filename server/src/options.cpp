@@ -1,0 +1,183 @@
+#include "impulse/server/options.h"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "impulse/preset.h"
+
+namespace impulse::server {
+
+namespace {
+
+template <class T>
+std::optional<T> parseNumber(std::string_view text) {
+  T value{};
+  const auto* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || text.empty()) return std::nullopt;
+  return value;
+}
+
+struct Flag {
+  std::string_view name;
+  bool takesValue;
+  std::string_view help;
+  // Applies the value; returns an error message or "".
+  std::function<std::string(ServerOptions&, std::string_view)> apply;
+};
+
+std::string intFlag(std::string_view name, std::string_view text, long long min, long long max,
+                    long long& out) {
+  const auto value = parseNumber<long long>(text);
+  if (!value || *value < min || *value > max) {
+    return std::string(name) + " expects an integer in " + std::to_string(min) + ".." +
+           std::to_string(max) + ", got '" + std::string(text) + "'";
+  }
+  out = *value;
+  return {};
+}
+
+std::string realFlag(std::string_view name, std::string_view text, double min, double max,
+                     double& out) {
+  const auto value = parseNumber<double>(text);
+  if (!value || !std::isfinite(*value) || *value < min || *value > max) {
+    return std::string(name) + " expects a number in " + std::to_string(min) + ".." +
+           std::to_string(max) + ", got '" + std::string(text) + "'";
+  }
+  out = *value;
+  return {};
+}
+
+const std::vector<Flag>& flags() {
+  static const std::vector<Flag> table = {
+      {"--bind", true, "ADDR  address to listen on (default 127.0.0.1; 0.0.0.0 for all)",
+       [](ServerOptions& o, std::string_view v) {
+         if (v.empty()) return std::string("--bind expects an address");
+         o.bind = std::string(v);
+         return std::string();
+       }},
+      {"--port", true, "N  TCP port (default 7777; 0 picks a free port)",
+       [](ServerOptions& o, std::string_view v) {
+         long long n = 0;
+         auto e = intFlag("--port", v, 0, 65535, n);
+         o.port = std::uint16_t(n);
+         return e;
+       }},
+      {"--tick-hz", true, "HZ  simulation ticks per second (default 60)",
+       [](ServerOptions& o, std::string_view v) {
+         return realFlag("--tick-hz", v, 1, 1000, o.tickHz);
+       }},
+      {"--snapshot-hz", true, "HZ  snapshots per second while running (default 30, at most tick-hz)",
+       [](ServerOptions& o, std::string_view v) {
+         return realFlag("--snapshot-hz", v, 0.1, 1000, o.snapshotHz);
+       }},
+      {"--substeps", true, "N  solver sub-steps per tick (default 4)",
+       [](ServerOptions& o, std::string_view v) {
+         long long n = 0;
+         auto e = intFlag("--substeps", v, 1, 64, n);
+         o.subSteps = int(n);
+         return e;
+       }},
+      {"--preset", true, "N  scene loaded at start, 0-10 (default 0, the sandbox)",
+       [](ServerOptions& o, std::string_view v) {
+         long long n = 0;
+         auto e = intFlag("--preset", v, 0, kPresetCount - 1, n);
+         o.preset = int(n);
+         return e;
+       }},
+      {"--paused", false, "start paused (advance with Step)",
+       [](ServerOptions& o, std::string_view) {
+         o.paused = true;
+         return std::string();
+       }},
+      {"--max-clients", true, "N  simultaneous connections (default 64)",
+       [](ServerOptions& o, std::string_view v) {
+         long long n = 0;
+         auto e = intFlag("--max-clients", v, 1, 10000, n);
+         o.maxClients = int(n);
+         return e;
+       }},
+      {"--max-bodies", true, "N  bodies the world may hold (default 10000)",
+       [](ServerOptions& o, std::string_view v) {
+         long long n = 0;
+         auto e = intFlag("--max-bodies", v, 1, 200000, n);
+         o.maxBodies = int(n);
+         return e;
+       }},
+      {"--max-frame-bytes", true, "N  largest accepted message (default 1048576)",
+       [](ServerOptions& o, std::string_view v) {
+         long long n = 0;
+         auto e = intFlag("--max-frame-bytes", v, 64, 64 << 20, n);
+         o.maxFrameBytes = std::size_t(n);
+         return e;
+       }},
+      {"--stall-timeout", true,
+       "SECONDS  drop a client that accepts no data (or sends no Hello) for this long "
+       "(default 10)",
+       [](ServerOptions& o, std::string_view v) {
+         return realFlag("--stall-timeout", v, 0.1, 3600, o.stallTimeoutSeconds);
+       }},
+  };
+  return table;
+}
+
+}  // namespace
+
+ParsedOptions parseOptions(std::span<const std::string_view> args) {
+  ServerOptions options;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string_view arg = args[i];
+    if (arg == "--help" || arg == "-h") return {std::nullopt, true, {}};
+    std::optional<std::string_view> inlineValue;
+    if (const auto eq = arg.find('='); eq != std::string_view::npos) {
+      inlineValue = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+    }
+    const Flag* flag = nullptr;
+    for (const auto& candidate : flags()) {
+      if (candidate.name == arg) flag = &candidate;
+    }
+    if (flag == nullptr) {
+      return {std::nullopt, false, "unknown option '" + std::string(args[i]) + "' (see --help)"};
+    }
+    std::string_view value;
+    if (flag->takesValue) {
+      if (inlineValue) {
+        value = *inlineValue;
+      } else if (i + 1 < args.size()) {
+        value = args[++i];
+      } else {
+        return {std::nullopt, false, std::string(arg) + " needs a value"};
+      }
+    } else if (inlineValue) {
+      return {std::nullopt, false, std::string(arg) + " takes no value"};
+    }
+    if (auto error = flag->apply(options, value); !error.empty()) {
+      return {std::nullopt, false, error};
+    }
+  }
+  if (options.snapshotHz > options.tickHz) {
+    return {std::nullopt, false, "--snapshot-hz may not exceed --tick-hz"};
+  }
+  return {options, false, {}};
+}
+
+std::string usage() {
+  std::string text =
+      "usage: impulse-server [options]\n"
+      "Serves one Impulse world over TCP (protocol: docs/server.md).\n"
+      "The first line on stdout is 'listening on ADDR:PORT'; logs go to stderr.\n\n";
+  for (const auto& flag : flags()) {
+    text += "  ";
+    text += flag.name;
+    text += ' ';
+    text += flag.help;
+    text += '\n';
+  }
+  text += "  --help  this text\n";
+  return text;
+}
+
+}  // namespace impulse::server

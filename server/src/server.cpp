@@ -1,0 +1,256 @@
+#include "impulse/server/server.h"
+
+#include <cmath>
+#include <vector>
+
+#include "impulse/server/log.h"
+#include "impulse/wire/convert.h"
+
+namespace impulse::server {
+
+namespace {
+
+constexpr auto kHousekeepingInterval = std::chrono::milliseconds(100);
+constexpr auto kStatsLogInterval = std::chrono::seconds(30);
+constexpr auto kAcceptRetryDelay = std::chrono::milliseconds(100);
+
+Clock::duration periodOf(double hz) {
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
+}
+
+SimulationSettings simulationSettings(const ServerOptions& options) {
+  SimulationSettings settings;
+  settings.tickHz = options.tickHz;
+  settings.subSteps = options.subSteps;
+  settings.maxBodies = options.maxBodies;
+  settings.preset = options.preset;
+  settings.paused = options.paused;
+  return settings;
+}
+
+SessionLimits sessionLimits(const ServerOptions& options) {
+  SessionLimits limits;
+  limits.maxFrameBytes = options.maxFrameBytes;
+  limits.maxPendingCommandBytes = std::max<std::size_t>(options.maxFrameBytes, 256 * 1024);
+  limits.stallTimeout = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(options.stallTimeoutSeconds));
+  return limits;
+}
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+Server::Server(asio::io_context& io, const ServerOptions& options)
+    : io_(io),
+      options_(options),
+      acceptor_(io),
+      timer_(io),
+      simulation_(simulationSettings(options)),
+      sessionLimits_(sessionLimits(options)),
+      schedule_(periodOf(options.tickHz), Clock::now()),
+      tickTimes_(std::size_t(std::ceil(options.tickHz))) {
+  const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);
+  acceptor_.open(endpoint.protocol());
+  acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
+  acceptor_.bind(endpoint);
+  acceptor_.listen();
+}
+
+void Server::start() {
+  const auto now = Clock::now();
+  schedule_ = TickSchedule(periodOf(options_.tickHz), now);
+  lastHousekeeping_ = now;
+  lastStatsLog_ = now;
+  lastSnapshotSlot_ = std::int64_t(
+      std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
+  logLine("serving preset " + std::to_string(options_.preset) + " at " +
+          std::to_string(options_.tickHz) + " Hz" + (options_.paused ? ", paused" : ""));
+  accept();
+  scheduleTick();
+}
+
+void Server::stop() {
+  if (stopped_) return;
+  stopped_ = true;
+  logLine("shutting down");
+  asio::error_code ignored;
+  acceptor_.close(ignored);
+  timer_.cancel();
+  commands_.clear();
+  std::vector<std::shared_ptr<Session>> sessions;
+  for (const auto& [id, session] : sessions_) sessions.push_back(session);
+  for (const auto& session : sessions) session->close("server shutting down");
+}
+
+// ------------------------------------------------------------------ clients
+
+void Server::accept() {
+  acceptor_.async_accept([this](const asio::error_code& ec, asio::ip::tcp::socket socket) {
+    if (stopped_) return;
+    if (ec) {
+      // Out of descriptors and the like: retry soon instead of spinning.
+      logLine("accept failed: " + ec.message());
+      auto retry = std::make_shared<asio::steady_timer>(io_, kAcceptRetryDelay);
+      retry->async_wait([this, retry](const asio::error_code&) {
+        if (!stopped_) accept();
+      });
+      return;
+    }
+    std::size_t active = 0;
+    for (const auto& [id, session] : sessions_) active += session->acceptingTraffic() ? 1 : 0;
+    const std::uint32_t id = nextClientId_++;
+    auto session = std::make_shared<Session>(std::move(socket), *this, id, sessionLimits_);
+    sessions_[id] = session;
+    if (active >= std::size_t(options_.maxClients)) {
+      session->reject("server is full (" + std::to_string(options_.maxClients) + " clients)");
+    } else {
+      session->start();
+    }
+    accept();
+  });
+}
+
+void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& hello) {
+  v1::ServerMessage message;
+  auto* welcome = message.mutable_welcome();
+  welcome->set_protocol_version(wire::kProtocolVersion);
+  welcome->set_client_id(session->id());
+  welcome->set_tick_hz(options_.tickHz);
+  welcome->set_snapshot_hz(options_.snapshotHz);
+  welcome->set_tick(simulation_.tick());
+  welcome->set_paused(simulation_.paused());
+  const auto& bounds = simulation_.world().settings().bounds;
+  wire::toWire(bounds.lower, welcome->mutable_world_min());
+  wire::toWire(bounds.upper, welcome->mutable_world_max());
+  welcome->set_max_frame_bytes(std::uint32_t(options_.maxFrameBytes));
+  welcome->set_max_bodies(std::uint32_t(options_.maxBodies));
+  welcome->set_max_step_ticks(limits_.maxStepTicks);
+  session->send(message);
+  if (hello.want_snapshots()) session->subscribe();
+}
+
+void Server::onCommand(const std::shared_ptr<Session>& session, v1::ClientMessage&& message,
+                       std::size_t bytes) {
+  commands_.push_back({session, std::move(message), bytes});
+}
+
+void Server::onClosed(Session& session) {
+  snapshotsSkipped_ += session.snapshotsSkipped();
+  sessions_.erase(session.id());
+}
+
+std::pair<SharedFrame, std::uint64_t> Server::currentFullSnapshot() {
+  return {simulation_.snapshots().full(simulation_.meta()), snapshotSequence_};
+}
+
+// --------------------------------------------------------------------- ticks
+
+void Server::scheduleTick() {
+  timer_.expires_at(schedule_.nextDeadline());
+  timer_.async_wait([this](const asio::error_code& ec) {
+    if (!ec && !stopped_) onTimer();
+  });
+}
+
+void Server::onTimer() {
+  const auto due = schedule_.due(Clock::now());
+  for (int i = 0; i < due.run && !stopped_; ++i) runTick();
+  if (due.skipped > 0) {
+    logLine("overrun: skipped " + std::to_string(due.skipped) + " tick(s) after running " +
+            std::to_string(due.run) + " late");
+  }
+  if (!stopped_) scheduleTick();
+}
+
+void Server::runTick() {
+  const auto start = Clock::now();
+  applyCommands();
+  if (!simulation_.paused()) {
+    simulation_.step();
+    if (snapshotDue()) broadcastSnapshot();
+  }
+  ++ticksRun_;
+  tickTimes_.record(millisecondsSince(start));
+  housekeeping(Clock::now());
+}
+
+void Server::applyCommands() {
+  // Commands that arrive while these are applied wait for the next tick.
+  auto batch = std::move(commands_);
+  commands_.clear();
+  for (auto& queued : batch) {
+    const bool ping = queued.message.has_ping();
+    const auto outcome =
+        applyCommand(simulation_, queued.message, limits_, ping ? stats() : v1::ServerStats());
+    queued.session->send(outcome.reply);
+    queued.session->commandsApplied(queued.bytes);
+    if (outcome.stepped || (outcome.changed && simulation_.paused())) broadcastSnapshot();
+  }
+}
+
+bool Server::snapshotDue() {
+  const auto slot = std::int64_t(
+      std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
+  if (slot == lastSnapshotSlot_) return false;
+  lastSnapshotSlot_ = slot;
+  return true;
+}
+
+void Server::broadcastSnapshot() {
+  std::vector<std::shared_ptr<Session>> subscribers;
+  for (const auto& [id, session] : sessions_) {
+    if (session->subscribed()) subscribers.push_back(session);
+  }
+  ++snapshotSequence_;
+  if (subscribers.empty()) {
+    simulation_.snapshots().discardPending();
+    return;
+  }
+  const auto delta = simulation_.snapshots().takeDelta(simulation_.meta());
+  lastSnapshotBytes_ = delta->size();
+  for (const auto& session : subscribers) session->offerSnapshot(snapshotSequence_, delta);
+}
+
+v1::ServerStats Server::stats() const {
+  v1::ServerStats stats;
+  stats.set_uptime_us(std::uint64_t(
+      std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - schedule_.start())
+          .count()));
+  stats.set_clock_ticks(std::uint64_t(schedule_.slots()));
+  stats.set_ticks_skipped(std::uint64_t(schedule_.skipped()));
+  stats.set_last_tick_ms(tickTimes_.last());
+  stats.set_mean_tick_ms(tickTimes_.mean());
+  stats.set_max_tick_ms(tickTimes_.max());
+  stats.set_last_step_ms(simulation_.lastStepMs());
+  stats.set_bodies(std::uint32_t(simulation_.world().bodyCount()));
+  stats.set_awake_bodies(std::uint32_t(simulation_.world().awakeBodyCount()));
+  stats.set_clients(std::uint32_t(sessions_.size()));
+  stats.set_last_snapshot_bytes(lastSnapshotBytes_);
+  std::uint64_t skipped = snapshotsSkipped_;
+  for (const auto& [id, session] : sessions_) skipped += session->snapshotsSkipped();
+  stats.set_snapshots_skipped(skipped);
+  return stats;
+}
+
+void Server::housekeeping(Clock::time_point now) {
+  if (now - lastHousekeeping_ >= kHousekeepingInterval) {
+    lastHousekeeping_ = now;
+    std::vector<std::shared_ptr<Session>> sessions;
+    for (const auto& [id, session] : sessions_) sessions.push_back(session);
+    for (const auto& session : sessions) session->checkTimeouts(now);
+  }
+  if (now - lastStatsLog_ >= kStatsLogInterval) {
+    lastStatsLog_ = now;
+    const auto s = stats();
+    logLine("tick " + std::to_string(simulation_.tick()) + ": tick " +
+            std::to_string(s.mean_tick_ms()) + " ms mean, " + std::to_string(s.max_tick_ms()) +
+            " ms max; " + std::to_string(s.bodies()) + " bodies (" +
+            std::to_string(s.awake_bodies()) + " awake); " + std::to_string(s.clients()) +
+            " clients; " + std::to_string(s.ticks_skipped()) + " ticks skipped");
+  }
+}
+
+}  // namespace impulse::server

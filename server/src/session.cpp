@@ -1,0 +1,284 @@
+#include "impulse/server/session.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "impulse/server/log.h"
+
+namespace impulse::server {
+
+namespace {
+
+// Frames gathered into one write call.
+constexpr std::size_t kMaxGather = 32;
+// How long a connection closed for an error drains input before it is reset.
+constexpr auto kLingerTimeout = std::chrono::seconds(2);
+
+}  // namespace
+
+Session::Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t id,
+                 const SessionLimits& limits)
+    : socket_(std::move(socket)),
+      host_(host),
+      id_(id),
+      limits_(limits),
+      connectedAt_(Clock::now()),
+      reader_(limits.maxFrameBytes),
+      lastWriteProgress_(connectedAt_) {
+  asio::error_code ec;
+  const auto remote = socket_.remote_endpoint(ec);
+  if (!ec) peer_ = remote.address().to_string() + ":" + std::to_string(remote.port());
+  // Replies are small and latency matters more than packet count.
+  socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+}
+
+std::string Session::label() const {
+  std::string text = "client " + std::to_string(id_);
+  if (!name_.empty()) text += " '" + name_ + "'";
+  if (!peer_.empty()) text += " (" + peer_ + ")";
+  return text;
+}
+
+void Session::start() { readMore(); }
+
+void Session::reject(const std::string& message) { fatal(message); }
+
+// ------------------------------------------------------------------- reading
+
+void Session::readMore() {
+  if (reading_ || closed_) return;
+  if (!lingering_) {
+    if (closeAfterFlush_ || pendingCommandBytes_ >= limits_.maxPendingCommandBytes) return;
+    if (readBegin_ < readEnd_) return processBuffered();
+  }
+  reading_ = true;
+  socket_.async_read_some(asio::buffer(readBuffer_),
+                          [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
+                            self->onRead(ec, n);
+                          });
+}
+
+void Session::onRead(const asio::error_code& ec, std::size_t bytes) {
+  reading_ = false;
+  if (closed_) return;
+  if (lingering_) {
+    // Draining what the peer still sends, so that closing does not reset the
+    // connection before it read our Error.
+    if (ec) return close("closed after error");
+    return readMore();
+  }
+  if (closeAfterFlush_) return;
+  if (ec) {
+    if (ec == asio::error::eof && !reader_.atFrameBoundary()) {
+      return fatal(reader_.truncationMessage());
+    }
+    return close(ec == asio::error::eof ? "disconnected" : ec.message());
+  }
+  readBegin_ = 0;
+  readEnd_ = bytes;
+  processBuffered();
+}
+
+void Session::processBuffered() {
+  // Stops early when the command cap is reached; the rest of the buffer waits
+  // until commandsApplied() resumes reading.
+  while (readBegin_ < readEnd_ && !closed_ && !closeAfterFlush_ &&
+         pendingCommandBytes_ < limits_.maxPendingCommandBytes) {
+    const auto result = reader_.feed(
+        std::span<const char>(readBuffer_.data() + readBegin_, readEnd_ - readBegin_));
+    readBegin_ += result.consumed;
+    if (result.status == wire::FrameReader::Status::Error) return fatal(reader_.error());
+    if (result.status == wire::FrameReader::Status::Frame) handleFrame(reader_.frame());
+  }
+  if (readBegin_ == readEnd_) readMore();
+}
+
+void Session::handleFrame(std::string_view payload) {
+  v1::ClientMessage message;
+  if (!wire::parseFrame(payload, message)) {
+    return fatal("a frame of " + std::to_string(payload.size()) +
+                 " bytes does not parse as a ClientMessage");
+  }
+  if (!helloDone_) {
+    if (!message.has_hello()) return fatal("the first message must be Hello");
+    const auto& hello = message.hello();
+    if (hello.protocol_version() != wire::kProtocolVersion) {
+      return fatal("unsupported protocol version " + std::to_string(hello.protocol_version()) +
+                   " (this server speaks " + std::to_string(wire::kProtocolVersion) + ")");
+    }
+    helloDone_ = true;
+    name_ = hello.client_name().substr(0, 64);
+    logLine(label() + " said hello" + (hello.want_snapshots() ? " (subscribed)" : ""));
+    host_.onHello(shared_from_this(), hello);
+    return;
+  }
+  pendingCommandBytes_ += payload.size();
+  host_.onCommand(shared_from_this(), std::move(message), payload.size());
+}
+
+void Session::commandsApplied(std::size_t bytes) {
+  const bool wasPaused = pendingCommandBytes_ >= limits_.maxPendingCommandBytes;
+  pendingCommandBytes_ -= std::min(bytes, pendingCommandBytes_);
+  if (wasPaused) readMore();
+}
+
+// ------------------------------------------------------------------- writing
+
+void Session::send(const v1::ServerMessage& message) {
+  if (closed_) return;
+  push({wire::encodeSharedFrame(message), false});
+}
+
+void Session::subscribe() {
+  subscribed_ = true;
+  push({nullptr, true});
+}
+
+void Session::offerSnapshot(std::uint64_t sequence, const SharedFrame& delta) {
+  if (closed_ || closeAfterFlush_ || !subscribed_) return;
+  if (unsentSnapshot_) {
+    // The client has not taken the previous snapshot yet: instead of queueing
+    // both, the unsent one becomes a full snapshot built when it is written.
+    for (std::size_t i = queue_.size(); i-- > lockedItems();) {
+      if (queue_[i].snapshot) {
+        queue_[i].frame = nullptr;
+        break;
+      }
+    }
+    ++snapshotsSkipped_;
+    return;
+  }
+  const bool chained = hasSnapshotSequence_ && lastSnapshotSequence_ + 1 == sequence;
+  if (chained) lastSnapshotSequence_ = sequence;
+  push({chained ? delta : nullptr, true});
+}
+
+void Session::push(Outgoing item) {
+  if (closed_ || closeAfterFlush_) return;
+  if (item.snapshot) {
+    unsentSnapshot_ = true;
+  } else {
+    queuedReplyBytes_ += item.frame->size();
+    if (queuedReplyBytes_ > limits_.maxQueuedReplyBytes) {
+      return close("not reading its replies (" + std::to_string(queuedReplyBytes_) +
+                   " bytes queued)");
+    }
+  }
+  queue_.push_back(std::move(item));
+  writeMore();
+}
+
+std::size_t Session::lockedItems() const {
+  if (writing_) return inFlight_;
+  return writeOffset_ > 0 ? 1 : 0;
+}
+
+void Session::writeMore() {
+  if (writing_ || closed_) return;
+  if (queue_.empty()) {
+    if (closeAfterFlush_ && !lingering_) startLinger();
+    return;
+  }
+  std::vector<asio::const_buffer> buffers;
+  const std::size_t count = std::min(queue_.size(), kMaxGather);
+  buffers.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    auto& item = queue_[i];
+    if (item.snapshot) {
+      unsentSnapshot_ = false;
+      if (!item.frame) {
+        auto [frame, sequence] = host_.currentFullSnapshot();
+        item.frame = std::move(frame);
+        lastSnapshotSequence_ = sequence;
+        hasSnapshotSequence_ = true;
+      }
+    }
+    const std::size_t skip = i == 0 ? writeOffset_ : 0;
+    buffers.emplace_back(item.frame->data() + skip, item.frame->size() - skip);
+  }
+  inFlight_ = count;
+  writing_ = true;
+  lastWriteProgress_ = Clock::now();
+  socket_.async_write_some(
+      buffers, [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
+        self->writing_ = false;
+        self->inFlight_ = 0;
+        if (self->closed_) return;
+        if (ec) return self->close(ec.message());
+        self->onWritten(n);
+      });
+}
+
+void Session::onWritten(std::size_t bytes) {
+  lastWriteProgress_ = Clock::now();
+  while (bytes > 0 && !queue_.empty()) {
+    auto& front = queue_.front();
+    const std::size_t remaining = front.frame->size() - writeOffset_;
+    if (bytes < remaining) {
+      writeOffset_ += bytes;
+      break;
+    }
+    bytes -= remaining;
+    writeOffset_ = 0;
+    if (!front.snapshot) queuedReplyBytes_ -= front.frame->size();
+    queue_.pop_front();
+  }
+  writeMore();
+}
+
+// ------------------------------------------------------------------- closing
+
+void Session::fatal(const std::string& message) {
+  if (closed_ || closeAfterFlush_) return;
+  logLine(label() + ": " + message);
+  v1::ServerMessage error;
+  error.mutable_error()->set_message(message);
+  // Nothing else is worth sending: the error goes next, then the socket closes.
+  queue_.erase(queue_.begin() + std::ptrdiff_t(lockedItems()), queue_.end());
+  queuedReplyBytes_ = 0;
+  for (const auto& item : queue_) {
+    if (!item.snapshot) queuedReplyBytes_ += item.frame->size();
+  }
+  unsentSnapshot_ = false;
+  subscribed_ = false;
+  closeAfterFlush_ = true;
+  queue_.push_back({wire::encodeSharedFrame(error), false});
+  queuedReplyBytes_ += queue_.back().frame->size();
+  writeMore();
+}
+
+void Session::startLinger() {
+  lingering_ = true;
+  lingerSince_ = Clock::now();
+  asio::error_code ignored;
+  socket_.shutdown(asio::ip::tcp::socket::shutdown_send, ignored);
+  readMore();
+}
+
+void Session::checkTimeouts(Clock::time_point now) {
+  if (closed_) return;
+  if (lingering_) {
+    if (now - lingerSince_ > kLingerTimeout) close("closed after error");
+    return;
+  }
+  const auto seconds = std::chrono::duration<double>(limits_.stallTimeout).count();
+  if (writing_ && now - lastWriteProgress_ > limits_.stallTimeout) {
+    return close("stalled: accepted no data for " + std::to_string(seconds) + " s");
+  }
+  if (!helloDone_ && !closeAfterFlush_ && now - connectedAt_ > limits_.stallTimeout) {
+    fatal("no Hello within " + std::to_string(seconds) + " s");
+  }
+}
+
+void Session::close(const std::string& reason) {
+  if (closed_) return;
+  closed_ = true;
+  logLine(label() + " closed: " + reason);
+  asio::error_code ignored;
+  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+  socket_.close(ignored);
+  queue_.clear();
+  host_.onClosed(*this);
+}
+
+}  // namespace impulse::server

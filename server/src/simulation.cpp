@@ -1,0 +1,52 @@
+#include "impulse/server/simulation.h"
+
+#include <chrono>
+
+namespace impulse::server {
+
+namespace {
+
+WorldSettings worldSettings(const SimulationSettings& settings) {
+  WorldSettings world;
+  world.subSteps = settings.subSteps;
+  world.maxBodies = settings.maxBodies;
+  return world;
+}
+
+}  // namespace
+
+Simulation::Simulation(const SimulationSettings& settings)
+    : tickHz_(settings.tickHz),
+      world_(worldSettings(settings)),
+      snapshots_(world_),
+      paused_(settings.paused) {
+  loadPreset(settings.preset, Material::Solid);
+}
+
+void Simulation::step() {
+  const auto start = std::chrono::steady_clock::now();
+  world_.step(Real(1.0 / tickHz_));
+  ++tick_;
+  lastStepMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  snapshots_.stepped(world_.movedBodies());
+}
+
+bool Simulation::loadPreset(int id, Material selected) {
+  const auto info = impulse::loadPreset(world_, id, selected);
+  if (!info) return false;
+  snapshots_.worldReplaced(*info);
+  return true;
+}
+
+void Simulation::clear() {
+  world_.clear();
+  snapshots_.worldReplaced(snapshots_.preset());
+}
+
+void Simulation::setPaused(bool paused) {
+  paused_ = paused;
+  snapshots_.worldChanged();
+}
+
+}  // namespace impulse::server

@@ -1,0 +1,263 @@
+// Stacks that must stand, overlaps that must resolve gently, a crowded scene
+// that must stay finite and contained, and sleeping islands.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "impulse/scenes.h"
+#include "impulse/world.h"
+#include "world_test_support.h"
+
+namespace impulse {
+namespace {
+
+using namespace impulse::test;
+
+// ---- Stacks ----
+
+TEST(Stacking, TenBoxTowerStandsTenSeconds_AndFallsAsleep) {
+  World world;
+  std::vector<BodyId> boxes = buildTower(world, 10);
+  const BodyState topStart = stateOf(world, boxes.back());
+  simulate(world, 10);
+
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    SCOPED_TRACE(i);
+    BodyState s = stateOf(world, boxes[i]);
+    // No box leaves the column or tips: 1 cm sideways, 0.01 rad (a 1 m box
+    // tipped by 0.01 rad lifts a corner by 5 mm, the linear slop).
+    EXPECT_NEAR(s.position.x(), 0, 0.01);
+    EXPECT_NEAR(s.angle, 0, 0.01);
+    EXPECT_FALSE(s.awake);
+  }
+  BodyState top = stateOf(world, boxes.back());
+  // 1 cm sideways drift of the top; it may sink by the slop of each of its
+  // 10 contacts (5 mm each).
+  EXPECT_NEAR(top.position.x(), topStart.position.x(), 0.01);
+  EXPECT_NEAR(top.position.y(), topStart.position.y(), 10 * 0.005);
+  EXPECT_EQ(world.awakeBodyCount(), 0);
+}
+
+TEST(Stacking, TwentyRowPyramidStandsTenSeconds_AndFallsAsleep) {
+  World world;
+  Pyramid pyramid = buildPyramid(world, 20);
+  std::vector<Vec2> starts;
+  for (BodyId id : pyramid.boxes) starts.push_back(stateOf(world, id).position);
+  simulate(world, 10);
+
+  // Every box within 2 cm of where it was built, sideways; at most the slop
+  // of its 20 supporting layers (5 mm each) lower.
+  double worstSideways = 0;
+  double worstSink = 0;
+  for (std::size_t i = 0; i < pyramid.boxes.size(); ++i) {
+    BodyState s = stateOf(world, pyramid.boxes[i]);
+    worstSideways = std::max(worstSideways, double(std::abs(s.position.x() - starts[i].x())));
+    worstSink = std::max(worstSink, double(starts[i].y() - s.position.y()));
+    EXPECT_NEAR(s.angle, 0, 0.01) << "box " << i << " tipped";
+  }
+  EXPECT_LT(worstSideways, 0.02);
+  EXPECT_LT(worstSink, 20 * 0.005);
+  BodyState top = stateOf(world, pyramid.top);
+  // 2 cm: 2% of a box width, under a pixel at the viewer's 32 px/m.
+  EXPECT_NEAR(top.position.x(), pyramid.topStart.x(), 0.02);
+  EXPECT_EQ(world.awakeBodyCount(), 0) << "all " << pyramid.boxes.size() << " boxes asleep";
+}
+
+TEST(Stacking, HeavyBoxHoldsOnLightBoxes_AtMassRatioOneToHundred) {
+  // Two 1 m ICE boxes (100 kg each) carry a 2.5 m x 2 m METAL box
+  // (10000 kg): 1:100 per supporting box.
+  World world;
+  addGround(world);
+  std::array<BodyId, 2> light = {
+      addBox(world, {.center = Vec2(Real(-0.75), Real(0.5)), .material = Material::Ice}),
+      addBox(world, {.center = Vec2(Real(0.75), Real(0.5)), .material = Material::Ice})};
+  BodyId heavy = addBox(world, {.center = Vec2(0, 2), .halfWidth = Real(1.25), .halfHeight = 1,
+                                .material = Material::Metal});
+  ASSERT_NEAR(world.bodyDescription(heavy)->mass.mass / world.bodyDescription(light[0])->mass.mass,
+              100, 1e-3);
+  simulate(world, 5);
+
+  BodyState top = stateOf(world, heavy);
+  // A soft contact of stiffness f behaves like a spring scaled by the
+  // lighter body's mass: under a load 100 times that mass it settles about
+  // 100 g / (2 pi 30 Hz)^2 = 2.8 cm deep, plus the 5 mm ground slop. 3 cm;
+  // it must stay level and stop sinking (asleep below).
+  EXPECT_NEAR(top.position.y(), 2, 0.03);
+  EXPECT_NEAR(top.position.x(), 0, 0.005);
+  EXPECT_NEAR(top.angle, 0, 0.005);
+  for (std::size_t i = 0; i < light.size(); ++i) {
+    BodyState s = stateOf(world, light[i]);
+    // ICE has mu 0.03: the light boxes must not be squeezed out sideways.
+    EXPECT_NEAR(s.position.x(), i == 0 ? -0.75 : 0.75, 0.005);
+    EXPECT_NEAR(s.angle, 0, 0.005);
+  }
+  EXPECT_EQ(world.awakeBodyCount(), 0);
+}
+
+TEST(Overlap, HalfOverlappingBoxesSeparate_WithoutLaunching) {
+  World world;
+  addGround(world);
+  // Two 1 m boxes on the ground, spawned half inside each other.
+  BodyId left = addBox(world, {.center = Vec2(0, Real(0.5))});
+  BodyId right = addBox(world, {.center = Vec2(Real(0.5), Real(0.5))});
+  double fastest = 0;
+  simulateUntil(world, 3, [&] {
+    for (BodyId id : {left, right}) {
+      fastest = std::max(fastest, double(stateOf(world, id).linearVelocity.norm()));
+    }
+    return false;
+  });
+  // The solver pushes overlap out at most at maxContactPushSpeed (3 m/s)
+  // relative; 0.5 m/s covers gravity and friction added in the same step.
+  EXPECT_LT(fastest, world.settings().maxContactPushSpeed + 0.5);
+  BodyState a = stateOf(world, left);
+  BodyState b = stateOf(world, right);
+  // Separated: centres at least one box width apart, minus the 5 mm slop.
+  EXPECT_GT(std::abs(b.position.x() - a.position.x()), 1 - 0.005);
+  // Neither launched up nor tipped over: still on the ground.
+  EXPECT_NEAR(a.position.y(), 0.5, 0.01);
+  EXPECT_NEAR(b.position.y(), 0.5, 0.01);
+}
+
+// A closed static container with inner walls at |x| = halfSize and y in
+// [0, 2 halfSize].
+struct Container {
+  Real halfSize;
+
+  Container(World& world, Real half) : halfSize(half) {
+    const Real t = 1;  // wall thickness
+    addBox(world, {.center = Vec2(0, -t), .halfWidth = half + 2 * t, .halfHeight = t, .isStatic = true});
+    addBox(world, {.center = Vec2(0, 2 * half + t), .halfWidth = half + 2 * t, .halfHeight = t,
+                   .isStatic = true});
+    addBox(world, {.center = Vec2(-half - t, half), .halfWidth = t, .halfHeight = half,
+                   .isStatic = true});
+    addBox(world, {.center = Vec2(half + t, half), .halfWidth = t, .halfHeight = half,
+                   .isStatic = true});
+  }
+  bool contains(const Vec2& p) const {
+    return std::abs(p.x()) < halfSize && p.y() > 0 && p.y() < 2 * halfSize;
+  }
+};
+
+TEST(Crowd, ThousandRandomBodiesStayFiniteAndInsideClosedBox_ForSixtySeconds) {
+  World world;
+  Container box(world, 12);
+  std::mt19937 random(20240601);
+  std::uniform_real_distribution<Real> position(-11, 11);
+  std::uniform_real_distribution<Real> size(Real(0.15), Real(0.35));
+  std::uniform_real_distribution<Real> speed(-5, 5);
+  std::uniform_real_distribution<Real> angle(0, Real(kPi));
+  std::uniform_int_distribution<int> material(0, kMaterialCount - 1);
+  // Spawned anywhere inside, overlapping freely, with random velocities.
+  for (int i = 0; i < 1000; ++i) {
+    Vec2 centre(position(random), position(random) + 12);
+    Vec2 velocity(speed(random), speed(random));
+    Material m = *materialFromIndex(material(random));
+    if (i % 2 == 0) {
+      addCircle(world, {.center = centre, .radius = size(random), .material = m, .velocity = velocity});
+    } else {
+      addBox(world, {.center = centre, .halfWidth = size(random), .halfHeight = size(random),
+                     .angle = angle(random), .material = m, .velocity = velocity});
+    }
+  }
+  const std::vector<BodyId> bodies = dynamicBodies(world);
+  ASSERT_EQ(bodies.size(), 1000u);
+
+  int escapedAtStep = -1;
+  int nonFiniteAtStep = -1;
+  simulateUntil(world, 60, [&] {
+    const int step = static_cast<int>(world.stepCount());
+    for (BodyId id : bodies) {
+      BodyState s = stateOf(world, id);
+      if (!isFinite(s.position) || !isFinite(s.linearVelocity) || !isFinite(s.angularVelocity)) {
+        nonFiniteAtStep = step;
+        return true;
+      }
+      if (!box.contains(s.position)) {
+        escapedAtStep = step;
+        return true;
+      }
+    }
+    return false;
+  });
+  EXPECT_EQ(nonFiniteAtStep, -1) << "a state became NaN or infinite";
+  EXPECT_EQ(escapedAtStep, -1) << "a body's centre left the container";
+  EXPECT_EQ(world.stepCount(), static_cast<std::uint64_t>(stepsFor(60)));
+}
+
+// ---- Sleeping ----
+
+// Ground and a two-box stack, run until asleep.
+struct SleepingStack {
+  World world;
+  BodyId lower;
+  BodyId upper;
+
+  SleepingStack() {
+    addGround(world);
+    lower = addBox(world, {.center = Vec2(0, Real(0.5))});
+    upper = addBox(world, {.center = Vec2(0, Real(1.5))});
+    // timeToSleep is 0.5 s; 2 s leaves ample time for the stack to settle.
+    EXPECT_GT(simulateUntilAsleep(world, 2), 0);
+  }
+};
+
+TEST(Sleeping, RestingIslandCostsNothing_OnceAsleep) {
+  SleepingStack stack;
+  World& world = stack.world;
+  ASSERT_EQ(world.awakeBodyCount(), 0);
+  const std::uint64_t hash = world.stateHash();
+  simulate(world, 1);
+  EXPECT_EQ(world.awakeBodyCount(), 0);
+  EXPECT_TRUE(world.movedBodies().empty()) << "sleeping bodies are not reported as moved";
+  EXPECT_EQ(world.stateHash(), hash) << "sleeping bodies do not move by a single bit";
+}
+
+TEST(Sleeping, ApplyImpulseWakesTheIsland) {
+  SleepingStack stack;
+  World& world = stack.world;
+  ASSERT_TRUE(world.applyImpulse(stack.upper, Vec2(50, 0)));
+  // The whole island wakes at once, not only the pushed body.
+  EXPECT_TRUE(stateOf(world, stack.upper).awake);
+  EXPECT_TRUE(stateOf(world, stack.lower).awake);
+  EXPECT_EQ(world.awakeBodyCount(), 2);
+  world.step(kDt);
+  // 50 N s on 500 kg: 0.1 m/s, minus what friction took in one step.
+  EXPECT_GT(stateOf(world, stack.upper).linearVelocity.x(), 0.05);
+}
+
+TEST(Sleeping, BodyDroppedOnSleepingIslandWakesIt) {
+  SleepingStack stack;
+  World& world = stack.world;
+  BodyId ball = addCircle(world, {.center = Vec2(0, 4), .radius = Real(0.3)});
+  bool lowerWoke = false;
+  simulateUntil(world, 2, [&] {
+    lowerWoke = lowerWoke || stateOf(world, stack.lower).awake;
+    return lowerWoke;
+  });
+  EXPECT_TRUE(lowerWoke) << "the impact reaches the bottom of the island";
+  EXPECT_GT(simulateUntilAsleep(world, 10), 0) << "and the island sleeps again";
+  // The ball rolled off or came to rest on top; the stack still stands.
+  EXPECT_NEAR(stateOf(world, stack.upper).position.x(), 0, 0.05);
+  EXPECT_TRUE(world.isValid(ball));
+}
+
+TEST(Sleeping, DestroyingSupportingBodyWakesWhatRestedOnIt) {
+  SleepingStack stack;
+  World& world = stack.world;
+  ASSERT_TRUE(world.destroyBody(stack.lower));
+  EXPECT_TRUE(stateOf(world, stack.upper).awake);
+  EXPECT_EQ(world.awakeBodyCount(), 1);
+  // It falls 1 m onto the ground and rests there (centre 0.5 m up, within
+  // the 5 mm slop).
+  EXPECT_GT(simulateUntilAsleep(world, 5), 0);
+  EXPECT_NEAR(stateOf(world, stack.upper).position.y(), 0.5, 0.005);
+}
+
+}  // namespace
+}  // namespace impulse
