@@ -51,6 +51,15 @@ Timing timeSteps(int steps, Step&& step) {
   return summarise(std::move(samples));
 }
 
+void accumulate(impulse::StepProfile& sum, const impulse::StepProfile& step) {
+  sum.pairs += step.pairs;
+  sum.collide += step.collide;
+  sum.solve += step.solve;
+  sum.continuous += step.continuous;
+  sum.sleep += step.sleep;
+  sum.total += step.total;
+}
+
 impulse::WorldSettings settingsFor(const Options& options, bool sleep) {
   impulse::WorldSettings settings;
   settings.subSteps = options.subSteps;
@@ -62,16 +71,20 @@ impulse::WorldSettings settingsFor(const Options& options, bool sleep) {
 void runPyramid(const Options& options, int rows, int steps) {
   impulse::World world(settingsFor(options, false));
   impulse::Pyramid pyramid = impulse::buildPyramid(world, rows);
-  Timing timing = timeSteps(steps, [&] { world.step(kDt); });
+  impulse::StepProfile sum;
+  Timing timing = timeSteps(steps, [&] {
+    world.step(kDt);
+    accumulate(sum, world.profile());
+  });
   Vec2 top = world.bodyState(pyramid.top)->position;
   std::printf("pyramid %3d rows  %5zu boxes  substeps %d hertz %4.0f  ms/step min %7.3f median %7.3f"
               "  top drift %.4f m  sink %.4f m\n",
               rows, pyramid.boxes.size(), options.subSteps, double(options.hertz), timing.minMs,
               timing.medianMs, double(std::abs(top.x() - pyramid.topStart.x())),
               double(pyramid.topStart.y() - top.y()));
-  const impulse::StepProfile& p = world.profile();
-  std::printf("  last step profile ms: pairs %.3f collide %.3f solve %.3f continuous %.3f sleep %.3f total %.3f\n",
-              p.pairs, p.collide, p.solve, p.continuous, p.sleep, p.total);
+  std::printf("  mean profile ms/step: pairs %.3f collide %.3f solve %.3f continuous %.3f sleep %.3f total %.3f\n",
+              sum.pairs / steps, sum.collide / steps, sum.solve / steps, sum.continuous / steps,
+              sum.sleep / steps, sum.total / steps);
 }
 
 void runRain(const Options& options, int count, int steps) {

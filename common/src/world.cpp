@@ -244,23 +244,32 @@ void World::setGravity(const Vec2& gravity) {
 
 Vec2 World::gravity() const { return impl_->settings.gravity; }
 
-bool World::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
-  Body* body = impl_->find(id);
-  if (body == nullptr || body->isStatic || !isFinite(impulse) || (point && !isFinite(*point))) {
-    return false;
+namespace {
+
+// The awake body a push (impulse or force) may act on, or null for an
+// unknown id, a static body or non-finite input.
+Body* pushableBody(WorldData& w, BodyId id, const Vec2& push, const std::optional<Vec2>& point) {
+  Body* body = w.find(id);
+  if (body == nullptr || body->isStatic || !isFinite(push) || (point && !isFinite(*point))) {
+    return nullptr;
   }
-  wakeIsland(*impl_, id.slot());
+  wakeIsland(w, id.slot());
+  return body;
+}
+
+}  // namespace
+
+bool World::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
+  Body* body = pushableBody(*impl_, id, impulse, point);
+  if (body == nullptr) return false;
   body->linearVelocity += body->invMass * impulse;
   if (point) body->angularVelocity += body->invInertia * cross(*point - body->transform.p, impulse);
   return true;
 }
 
 bool World::applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point) {
-  Body* body = impl_->find(id);
-  if (body == nullptr || body->isStatic || !isFinite(force) || (point && !isFinite(*point))) {
-    return false;
-  }
-  wakeIsland(*impl_, id.slot());
+  Body* body = pushableBody(*impl_, id, force, point);
+  if (body == nullptr) return false;
   body->force += force;
   if (point) body->torque += cross(*point - body->transform.p, force);
   return true;

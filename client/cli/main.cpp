@@ -1,0 +1,217 @@
+// impulse-cli: drives impulse-server from a script (file or stdin), one
+// command per line, and prints each reply as one JSON line on stdout.
+// Exit status: 0 when every line succeeded, 1 when some line failed, 2 when
+// the arguments or the connection failed.
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "impulse/client/client.h"
+#include "report.h"
+#include "script.h"
+
+namespace {
+
+using namespace impulse;
+using Milliseconds = std::chrono::milliseconds;
+
+constexpr const char* kUsage =
+    "usage: impulse-cli [--connect HOST:PORT] [--timeout MS] [SCRIPT]\n"
+    "Runs SCRIPT (or stdin) against impulse-server (default 127.0.0.1:7777), one\n"
+    "command per line; prints one JSON object per line. Commands:\n"
+    "  preset N [MATERIAL] | pause | resume | step N\n"
+    "  circle X Y R [MATERIAL] [static] [nograv]\n"
+    "  polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]\n"
+    "  gravity GX GY | nudge DX DY | reset-gravity\n"
+    "  clear | remove ID | impulse ID JX JY [PX PY]\n"
+    "  query ID | bodies | wait-snapshot | ping\n"
+    "MATERIAL: solid, ice, wood, metal, rubber. '#' starts a comment.\n";
+
+// Script lines. A file is read directly; stdin is read on its own thread so
+// the connection keeps being serviced (snapshots drained) while a person types.
+class LineSource {
+ public:
+  enum class Status { Line, Waiting, End };
+
+  explicit LineSource(std::istream* file) : file_(file) {
+    if (file_ != nullptr) return;
+    // The thread shares only this state, never the LineSource, so leaving it
+    // blocked in getline at exit is harmless.
+    thread_ = std::thread([state = state_] {
+      std::string line;
+      while (std::getline(std::cin, line)) {
+        std::lock_guard lock(state->mutex);
+        state->lines.push_back(std::move(line));
+        state->ready.notify_one();
+      }
+      std::lock_guard lock(state->mutex);
+      state->done = true;
+      state->ready.notify_one();
+    });
+  }
+  ~LineSource() {
+    if (thread_.joinable()) thread_.detach();
+  }
+
+  Status next(std::string& line, Milliseconds wait) {
+    if (file_ != nullptr) return std::getline(*file_, line) ? Status::Line : Status::End;
+    std::unique_lock lock(state_->mutex);
+    state_->ready.wait_for(lock, wait, [&] { return !state_->lines.empty() || state_->done; });
+    if (!state_->lines.empty()) {
+      line = std::move(state_->lines.front());
+      state_->lines.pop_front();
+      return Status::Line;
+    }
+    return state_->done ? Status::End : Status::Waiting;
+  }
+
+ private:
+  struct State {
+    std::mutex mutex;
+    std::condition_variable ready;
+    std::deque<std::string> lines;
+    bool done = false;
+  };
+  std::istream* file_;
+  std::shared_ptr<State> state_ = std::make_shared<State>();
+  std::thread thread_;
+};
+
+void print(const std::string& json) {
+  std::fputs(json.c_str(), stdout);
+  std::fputc('\n', stdout);
+  std::fflush(stdout);
+}
+
+struct Arguments {
+  client::ConnectOptions connect;
+  Milliseconds timeout{10000};
+  std::string script;
+};
+
+int run(const Arguments& arguments) {
+  std::ifstream file;
+  if (!arguments.script.empty()) {
+    file.open(arguments.script);
+    if (!file) {
+      std::fprintf(stderr, "impulse-cli: cannot open %s\n", arguments.script.c_str());
+      return 2;
+    }
+  }
+
+  std::size_t lineNumber = 0;
+  std::string command = "connect";
+  try {
+    client::Client client(arguments.connect);
+    std::size_t lastSnapshotBytes = 0;
+    client.onSnapshot([&](const v1::Snapshot&, std::size_t bytes) { lastSnapshotBytes = bytes; });
+    print(cli::welcomeReport(client.welcome()));
+
+    LineSource lines(arguments.script.empty() ? nullptr : &file);
+    int failures = 0;
+    std::string line;
+    while (true) {
+      const auto status = lines.next(line, Milliseconds(20));
+      if (status == LineSource::Status::End) break;
+      if (status == LineSource::Status::Waiting) {
+        client.poll();
+        continue;
+      }
+      ++lineNumber;
+      const auto parsed = cli::parseScriptLine(line);
+      if (!parsed.error.empty()) {
+        print(cli::errorReport(lineNumber, "parse", parsed.error));
+        ++failures;
+        continue;
+      }
+      if (!parsed.command) continue;
+      command = parsed.command->name;
+      switch (parsed.command->kind) {
+        case cli::ScriptCommand::Kind::Server: {
+          // A long Step takes its time on the server before the reply.
+          const auto& message = parsed.command->message;
+          const auto timeout =
+              arguments.timeout + Milliseconds(message.has_step() ? message.step().ticks() * 10 : 0);
+          const auto reply = client.request(message, timeout);
+          const bool ok = !reply.has_command_result() || reply.command_result().ok();
+          failures += ok ? 0 : 1;
+          print(cli::replyReport(lineNumber, command, reply));
+          break;
+        }
+        case cli::ScriptCommand::Kind::Bodies:
+          // The Pong comes after every snapshot the earlier commands caused.
+          client.ping(arguments.timeout);
+          print(cli::bodiesReport(lineNumber, client.mirror()));
+          break;
+        case cli::ScriptCommand::Kind::WaitSnapshot: {
+          const auto snapshot = client.awaitSnapshot(arguments.timeout);
+          if (!snapshot) {
+            print(cli::errorReport(lineNumber, command,
+                                   "no snapshot within " +
+                                       std::to_string(arguments.timeout.count()) + " ms"));
+            ++failures;
+            break;
+          }
+          print(cli::snapshotReport(lineNumber, *snapshot, lastSnapshotBytes));
+          break;
+        }
+      }
+    }
+    return failures == 0 ? 0 : 1;
+  } catch (const client::ConnectionError& error) {
+    print(cli::errorReport(lineNumber, command, std::string("connection: ") + error.what()));
+    return 2;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Arguments arguments;
+  arguments.connect.name = "impulse-cli";
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    auto value = [&]() -> std::optional<std::string_view> {
+      if (i + 1 >= argc) return std::nullopt;
+      return std::string_view(argv[++i]);
+    };
+    if (arg == "--help" || arg == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (arg == "--connect") {
+      const auto text = value();
+      const auto target = text ? client::parseHostPort(*text) : std::nullopt;
+      if (!target) {
+        std::fprintf(stderr, "impulse-cli: --connect expects HOST:PORT\n");
+        return 2;
+      }
+      arguments.connect.host = target->first;
+      arguments.connect.port = target->second;
+    } else if (arg == "--timeout") {
+      const auto text = value();
+      const long ms = text ? std::atol(std::string(*text).c_str()) : 0;
+      if (ms <= 0) {
+        std::fprintf(stderr, "impulse-cli: --timeout expects milliseconds > 0\n");
+        return 2;
+      }
+      arguments.timeout = Milliseconds(ms);
+    } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
+      std::fprintf(stderr, "impulse-cli: unknown option %s\n%s", argv[i], kUsage);
+      return 2;
+    } else if (arguments.script.empty()) {
+      arguments.script = arg == "-" ? "" : std::string(arg);
+    } else {
+      std::fprintf(stderr, "impulse-cli: only one script\n");
+      return 2;
+    }
+  }
+  arguments.connect.timeout = arguments.timeout;
+  return run(arguments);
+}
