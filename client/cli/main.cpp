@@ -22,6 +22,9 @@ namespace {
 using namespace impulse;
 using Milliseconds = std::chrono::milliseconds;
 
+// Commands in flight at once: well under the server's per-client queue caps.
+constexpr std::size_t kMaxPipelined = 256;
+
 constexpr const char* kUsage =
     "usage: impulse-cli [--connect HOST:PORT] [--timeout MS] [SCRIPT]\n"
     "Runs SCRIPT (or stdin) against impulse-server (default 127.0.0.1:7777), one\n"
@@ -116,54 +119,92 @@ int run(const Arguments& arguments) {
 
     LineSource lines(arguments.script.empty() ? nullptr : &file);
     int failures = 0;
+
+    // Server commands are pipelined (replies come back in order, one tick
+    // apart otherwise); local commands and parse errors first wait for every
+    // earlier reply, so output stays in line order.
+    struct Pending {
+      std::size_t line;
+      std::string command;
+      std::uint64_t requestId;
+      Milliseconds timeout;
+    };
+    std::deque<Pending> pending;
+    auto drainOne = [&] {
+      const Pending next = pending.front();
+      pending.pop_front();
+      lineNumber = next.line;
+      command = next.command;
+      const auto reply = client.awaitReply(next.requestId, next.timeout);
+      if (!reply) {
+        throw client::ConnectionError("no reply within " + std::to_string(next.timeout.count()) +
+                                      " ms");
+      }
+      failures += reply->has_command_result() && !reply->command_result().ok() ? 1 : 0;
+      print(cli::replyReport(next.line, next.command, *reply));
+    };
+    auto drainAll = [&] {
+      while (!pending.empty()) drainOne();
+    };
+
+    std::size_t lineCount = 0;
     std::string line;
     while (true) {
       const auto status = lines.next(line, Milliseconds(20));
       if (status == LineSource::Status::End) break;
       if (status == LineSource::Status::Waiting) {
+        drainAll();
         client.poll();
         continue;
       }
-      ++lineNumber;
+      ++lineCount;
       const auto parsed = cli::parseScriptLine(line);
       if (!parsed.error.empty()) {
-        print(cli::errorReport(lineNumber, "parse", parsed.error));
+        drainAll();
+        print(cli::errorReport(lineCount, "parse", parsed.error));
         ++failures;
         continue;
       }
       if (!parsed.command) continue;
-      command = parsed.command->name;
+      const auto& name = parsed.command->name;
       switch (parsed.command->kind) {
         case cli::ScriptCommand::Kind::Server: {
-          // A long Step takes its time on the server before the reply.
           const auto& message = parsed.command->message;
+          // A long Step takes its time on the server before the reply.
           const auto timeout =
               arguments.timeout + Milliseconds(message.has_step() ? message.step().ticks() * 10 : 0);
-          const auto reply = client.request(message, timeout);
-          const bool ok = !reply.has_command_result() || reply.command_result().ok();
-          failures += ok ? 0 : 1;
-          print(cli::replyReport(lineNumber, command, reply));
+          lineNumber = lineCount;
+          command = name;
+          pending.push_back({lineCount, name, client.send(message), timeout});
+          if (pending.size() >= kMaxPipelined) drainOne();
           break;
         }
         case cli::ScriptCommand::Kind::Bodies:
+          drainAll();
+          lineNumber = lineCount;
+          command = name;
           // The Pong comes after every snapshot the earlier commands caused.
           client.ping(arguments.timeout);
-          print(cli::bodiesReport(lineNumber, client.mirror()));
+          print(cli::bodiesReport(lineCount, client.mirror()));
           break;
         case cli::ScriptCommand::Kind::WaitSnapshot: {
+          drainAll();
+          lineNumber = lineCount;
+          command = name;
           const auto snapshot = client.awaitSnapshot(arguments.timeout);
           if (!snapshot) {
-            print(cli::errorReport(lineNumber, command,
+            print(cli::errorReport(lineCount, name,
                                    "no snapshot within " +
                                        std::to_string(arguments.timeout.count()) + " ms"));
             ++failures;
             break;
           }
-          print(cli::snapshotReport(lineNumber, *snapshot, lastSnapshotBytes));
+          print(cli::snapshotReport(lineCount, *snapshot, lastSnapshotBytes));
           break;
         }
       }
     }
+    drainAll();
     return failures == 0 ? 0 : 1;
   } catch (const client::ConnectionError& error) {
     print(cli::errorReport(lineNumber, command, std::string("connection: ") + error.what()));

@@ -28,6 +28,16 @@ std::vector<std::string_view> splitWords(std::string_view line) {
   return words;
 }
 
+// "'word' rest". Built by append: GCC 12 warns falsely (-Wrestrict) on
+// "'" + std::string(word) + "...".
+std::string quoted(std::string_view word, std::string_view rest) {
+  std::string text(1, '\'');
+  text.append(word);
+  text += '\'';
+  text.append(rest);
+  return text;
+}
+
 std::optional<double> number(std::string_view word) {
   double value = 0;
   const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
@@ -57,7 +67,7 @@ class LineParser {
       Material material = Material::Solid;
       if (words_.size() > 2) {
         const auto m = wire::materialFromName(words_[2]);
-        if (!m) return fail("'" + std::string(words_[2]) + "' is not a material");
+        if (!m) return fail(quoted(words_[2], " is not a material"));
         material = *m;
       }
       if (!maxWords(3)) return fail();
@@ -137,7 +147,7 @@ class LineParser {
       if (!maxWords(1)) return fail();
       command.message = client::ping(0);
     } else {
-      return {std::nullopt, "unknown command '" + std::string(name) + "'"};
+      return {std::nullopt, "unknown command " + quoted(name, "")};
     }
     return {std::move(command), {}};
   }
@@ -163,14 +173,14 @@ class LineParser {
     if (!present(i)) return std::nullopt;
     const auto value = number(words_[i]);
     // Non-finite values are sent as typed: the server's answer is the test.
-    if (!value) note("'" + std::string(words_[i]) + "' is not a number");
+    if (!value) note(quoted(words_[i], " is not a number"));
     return value;
   }
 
   std::optional<long long> integerAt(std::size_t i) {
     if (!present(i)) return std::nullopt;
     const auto value = integer(words_[i]);
-    if (!value) note("'" + std::string(words_[i]) + "' is not an integer");
+    if (!value) note(quoted(words_[i], " is not an integer"));
     return value;
   }
 
@@ -186,7 +196,7 @@ class LineParser {
 
   bool maxWords(std::size_t count) {
     if (words_.size() <= count) return true;
-    note("unexpected '" + std::string(words_[count]) + "'");
+    note("unexpected " + quoted(words_[count], ""));
     return false;
   }
 
@@ -200,7 +210,7 @@ class LineParser {
       } else if (const auto material = wire::materialFromName(word)) {
         options.material = *material;
       } else {
-        note("unexpected '" + std::string(word) + "' (material, static or nograv)");
+        note("unexpected " + quoted(word, " (material, static or nograv)"));
         return false;
       }
     }

@@ -45,15 +45,26 @@ Client::Client(const ConnectOptions& options)
   const auto endpoints = resolver.resolve(options.host, std::to_string(options.port), ec);
   if (ec) throw ConnectionError("cannot resolve " + options.host + ": " + ec.message());
 
-  bool connected = false;
-  asio::async_connect(socket_, endpoints,
-                      [&](const asio::error_code& error, const asio::ip::tcp::endpoint&) {
-                        ec = error;
-                        connected = true;
-                      });
-  io_.run_until(deadline);
   const std::string target = options.host + ":" + std::to_string(options.port);
-  if (!connected) throw ConnectionError("connecting to " + target + " timed out");
+  ec = asio::error::host_not_found;
+  for (const auto& entry : endpoints) {
+    asio::error_code ignored;
+    socket_.close(ignored);
+    socket_.open(entry.endpoint().protocol(), ec);
+    if (ec) continue;
+    if (options.receiveBufferBytes > 0) {
+      socket_.set_option(asio::socket_base::receive_buffer_size(options.receiveBufferBytes), ec);
+    }
+    bool done = false;
+    socket_.async_connect(entry.endpoint(), [&](const asio::error_code& error) {
+      ec = error;
+      done = true;
+    });
+    io_.restart();
+    io_.run_until(deadline);
+    if (!done) throw ConnectionError("connecting to " + target + " timed out");
+    if (!ec) break;
+  }
   if (ec) throw ConnectionError("cannot connect to " + target + ": " + ec.message());
   io_.restart();
   socket_.set_option(asio::ip::tcp::no_delay(true), ec);

@@ -49,9 +49,9 @@ bool isFast(const Body& body) {
   return travel > kFastFraction * body.innerRadius;
 }
 
-// First time in [0, 1] at which the moving shape comes within the target
-// separation of the static one, or 1 when it never does. A shape that starts
-// overlapping is left to the contact solver.
+// First time in (0, 1] at which the moving shape comes within the target
+// separation of the static one; 0 when it starts the step that close
+// already, 1 when it never comes close.
 Real timeOfImpact(const Shape& moving, const Sweep& sweep, Real extent, const Shape& fixed,
                   const Transform& fixedTransform) {
   Real maxApproach = (sweep.c1 - sweep.c0).norm() + std::abs(sweep.a1 - sweep.a0) * extent;
@@ -59,11 +59,25 @@ Real timeOfImpact(const Shape& moving, const Sweep& sweep, Real extent, const Sh
   Real t = 0;
   for (int i = 0; i < kMaxAdvanceIterations; ++i) {
     Real gap = computeSeparation(moving, sweep.at(t), fixed, fixedTransform);
-    if (gap < kTargetSeparation + kSeparationTolerance) return (i == 0 && gap < 0) ? Real(1) : t;
+    if (gap < kTargetSeparation + kSeparationTolerance) return t;
     t += (gap - kTargetSeparation) / maxApproach;
     if (t >= 1) return 1;
   }
   return t;
+}
+
+// A shape that starts the step touching a wall has a speculative contact with
+// it, but a fast spinning body can still rotate through it. Holding the whole
+// shape at its start would freeze a body sliding along the wall, so (as Box2D
+// v3 does) only a small core circle around the centroid is swept: the body
+// may graze, but its centre never crosses.
+Real timeOfImpactWithCore(const Shape& moving, const Sweep& sweep, Real extent, Real innerRadius,
+                          const Shape& fixed, const Transform& fixedTransform) {
+  Real t = timeOfImpact(moving, sweep, extent, fixed, fixedTransform);
+  if (t > 0) return t;
+  Real coreT = timeOfImpact(Shape::makeCircle(Real(0.25) * innerRadius), sweep, 0, fixed,
+                            fixedTransform);
+  return coreT > 0 ? coreT : Real(1);
 }
 
 void sweepAgainstStatics(WorldData& world, std::int32_t slot) {
@@ -76,8 +90,8 @@ void sweepAgainstStatics(WorldData& world, std::int32_t slot) {
   world.broadPhase.query(swept, [&](std::int32_t other) {
     const Body& candidate = world.bodies[other];
     if (candidate.isStatic) {
-      firstHit = std::min(firstHit, timeOfImpact(shape, sweep, body.extent, world.shapes[other],
-                                                 candidate.transform));
+      firstHit = std::min(firstHit, timeOfImpactWithCore(shape, sweep, body.extent, body.innerRadius,
+                                                         world.shapes[other], candidate.transform));
     }
     return true;
   });

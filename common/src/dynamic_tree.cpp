@@ -208,8 +208,7 @@ std::int32_t DynamicTree::findBestSibling(const AABB& leafBox) const {
   return best;
 }
 
-void DynamicTree::replaceChild(std::int32_t parent, std::int32_t oldChild,
-                               std::int32_t newChild) {
+void DynamicTree::replaceChild(std::int32_t parent, std::int32_t oldChild, std::int32_t newChild) {
   if (parent == kNull) {
     root_ = newChild;
   } else if (nodes_[parent].child1 == oldChild) {
@@ -272,10 +271,9 @@ std::int32_t DynamicTree::rotateUp(std::int32_t node, std::int32_t child, bool t
   const Node& f = nodes_[c.child1];
   const Node& g = nodes_[c.child2];
   // With equal heights, the grandchild that packs tighter with B goes down.
-  const bool keepFirst = f.height != g.height
-                             ? f.height > g.height
-                             : nodes_[other].box.unite(g.box).perimeter() <
-                                   nodes_[other].box.unite(f.box).perimeter();
+  const bool keepFirst = f.height != g.height ? f.height > g.height
+                                              : nodes_[other].box.unite(g.box).perimeter() <
+                                                    nodes_[other].box.unite(f.box).perimeter();
   const std::int32_t taller = keepFirst ? c.child1 : c.child2;
   const std::int32_t shorter = keepFirst ? c.child2 : c.child1;
 
@@ -347,9 +345,8 @@ bool DynamicTree::isValidNode(std::int32_t index) const {
   const Node& b = nodes_[node.child2];
   const AABB enclosing = a.box.unite(b.box);
   return a.parent == index && b.parent == index && a.height >= 0 && b.height >= 0 &&
-         heightsBalanced(a.height, b.height) &&
-         node.height == 1 + std::max(a.height, b.height) && node.box.lower == enclosing.lower &&
-         node.box.upper == enclosing.upper;
+         heightsBalanced(a.height, b.height) && node.height == 1 + std::max(a.height, b.height) &&
+         node.box.lower == enclosing.lower && node.box.upper == enclosing.upper;
 }
 
 // Number of nodes on the free list, or -1 when it is broken (a cycle, an index

@@ -16,6 +16,7 @@
 #include <span>
 
 #include "contact_solver.h"
+#include "contact_solver_wide.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -125,14 +126,17 @@ void solve(WorldData& world, Real dt) {
   ContactSolverContext context{world.solverStates, world.constraints, 1 / h,
                                world.settings.maxContactPushSpeed,
                                world.settings.restitutionThreshold};
+  WideContactSet& wide = world.wideContacts;
+  buildWideContacts(world.constraints, world.solverStates.size(), wide);
   for (int i = 0; i < subSteps; ++i) {
     integrateVelocities(world, h);
-    warmStartContacts(context);
-    solveContacts(context, true);
+    warmStartWide(context, wide);
+    solveWide(context, wide, true);
     integratePositions(world, h);
-    for (int r = 0; r < world.settings.relaxIterations; ++r) solveContacts(context, false);
+    for (int r = 0; r < world.settings.relaxIterations; ++r) solveWide(context, wide, false);
   }
-  applyRestitution(context);
+  restitutionWide(context, wide);
+  unpackWideContacts(wide, world.constraints);
   storeImpulses(world.constraints, world);
   finalizeBodies(world);
 }

@@ -9,6 +9,7 @@
 #include "impulse/broad_phase.h"
 #include "impulse/manifold.h"
 #include "impulse/world.h"
+#include "simd.h"
 
 namespace impulse {
 
@@ -124,6 +125,37 @@ struct ContactConstraint {
   ConstraintPoint points[2];
 };
 
+// Four constraints side by side for the SIMD solver (contact_solver_wide.h).
+struct WidePoint {
+  simd::F4 anchorAX, anchorAY, anchorBX, anchorBY;
+  simd::F4 baseSeparation;
+  simd::F4 normalImpulse, tangentImpulse, totalNormalImpulse;
+  simd::F4 normalMass, tangentMass;
+  simd::F4 relativeVelocity, friction;
+};
+
+struct WideConstraint {
+  std::int32_t stateA[4];
+  std::int32_t stateB[4];
+  /// Index into the scalar constraints each lane came from (-1: padding).
+  std::int32_t source[4];
+  simd::F4 normalX, normalY;
+  simd::F4 invMassA, invInertiaA, invMassB, invInertiaB;
+  simd::F4 biasRate, massScale, impulseScale;
+  simd::F4 restitution, rollingResistance, rollingMass, rollingImpulse;
+  WidePoint points[2];
+};
+
+struct WideContactSet {
+  std::vector<WideConstraint> bundles;
+  std::vector<ContactConstraint> overflow;
+  std::vector<std::int32_t> overflowSource;
+  // Scratch for colouring, kept to avoid allocation per step.
+  std::vector<std::uint64_t> usedColors;
+  std::vector<std::int32_t> colorOf;
+  std::vector<std::int32_t> order;
+};
+
 struct WorldData {
   WorldSettings settings;
   std::vector<Body> bodies;
@@ -149,6 +181,7 @@ struct WorldData {
   std::vector<SolverState> solverStates;
   std::vector<SolverIntegration> solverIntegration;
   std::vector<ContactConstraint> constraints;
+  WideContactSet wideContacts;
   std::vector<std::int32_t> islandStack;
   std::vector<std::int32_t> islandBodies;
   std::vector<std::int32_t> stillAwake;

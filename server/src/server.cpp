@@ -232,6 +232,7 @@ v1::ServerStats Server::stats() const {
   std::uint64_t skipped = snapshotsSkipped_;
   for (const auto& [id, session] : sessions_) skipped += session->snapshotsSkipped();
   stats.set_snapshots_skipped(skipped);
+  stats.set_state_hash(simulation_.world().stateHash());
   return stats;
 }
 

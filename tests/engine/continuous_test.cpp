@@ -30,7 +30,9 @@ TEST_P(NoTunnelling, FastSmallBodyNeverEndsBeyondThinStaticWall) {
   const TunnelCase c = GetParam();
   World world;
   const Real thickness = Real(0.2);
-  addBox(world, {.center = Vec2(thickness / 2, 5), .halfWidth = thickness / 2, .halfHeight = 5,
+  addBox(world, {.center = Vec2(thickness / 2, 5),
+                 .halfWidth = thickness / 2,
+                 .halfHeight = 5,
                  .isStatic = true});
   const Real size = Real(0.1);
   const Vec2 start(-5, 5);
@@ -38,8 +40,11 @@ TEST_P(NoTunnelling, FastSmallBodyNeverEndsBeyondThinStaticWall) {
   BodyId projectile =
       c.shape == Projectile::Disc
           ? addCircle(world, {.center = start, .radius = size, .velocity = velocity})
-          : addBox(world, {.center = start, .halfWidth = size, .halfHeight = size,
-                           .velocity = velocity, .angularVelocity = 3});
+          : addBox(world, {.center = start,
+                           .halfWidth = size,
+                           .halfHeight = size,
+                           .velocity = velocity,
+                           .angularVelocity = 3});
   double furthest = start.x();
   bool reboundSeen = false;
   simulateUntil(world, 0.5, [&] {
@@ -56,16 +61,14 @@ TEST_P(NoTunnelling, FastSmallBodyNeverEndsBeyondThinStaticWall) {
   EXPECT_TRUE(allStatesFinite(world));
 }
 
-INSTANTIATE_TEST_SUITE_P(Speeds, NoTunnelling,
-                         ::testing::Values(TunnelCase{Projectile::Disc, 200},
-                                           TunnelCase{Projectile::Disc, 400},
-                                           TunnelCase{Projectile::Box, 200},
-                                           TunnelCase{Projectile::Box, 400}),
-                         [](const ::testing::TestParamInfo<TunnelCase>& param) {
-                           return std::string(param.param.shape == Projectile::Disc ? "Disc"
-                                                                                    : "Box") +
-                                  "_" + std::to_string(static_cast<int>(param.param.speed)) + "mps";
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Speeds, NoTunnelling,
+    ::testing::Values(TunnelCase{Projectile::Disc, 200}, TunnelCase{Projectile::Disc, 400},
+                      TunnelCase{Projectile::Box, 200}, TunnelCase{Projectile::Box, 400}),
+    [](const ::testing::TestParamInfo<TunnelCase>& param) {
+      return std::string(param.param.shape == Projectile::Disc ? "Disc" : "Box") + "_" +
+             std::to_string(static_cast<int>(param.param.speed)) + "mps";
+    });
 
 }  // namespace
 }  // namespace impulse

@@ -28,9 +28,12 @@ RunRecord runChaoticScene(int maxSteps) {
   World world;
   buildPyramid(world, 10);
   for (Real x : {Real(-19), Real(19)}) {
-    addBox(world, {.center = Vec2(x, 9), .halfWidth = Real(0.5), .halfHeight = 9, .isStatic = true});
+    addBox(world,
+           {.center = Vec2(x, 9), .halfWidth = Real(0.5), .halfHeight = 9, .isStatic = true});
   }
-  addCircle(world, {.center = Vec2(-14, Real(1.5)), .radius = Real(0.6), .material = Material::Metal,
+  addCircle(world, {.center = Vec2(-14, Real(1.5)),
+                    .radius = Real(0.6),
+                    .material = Material::Metal,
                     .velocity = Vec2(25, 2)});
   std::mt19937 random(7);
   std::uniform_real_distribution<Real> x(6, 12);
@@ -41,7 +44,9 @@ RunRecord runChaoticScene(int maxSteps) {
     if (i % 2 == 0) {
       addCircle(world, {.center = centre, .radius = size(random), .material = Material::Rubber});
     } else {
-      addBox(world, {.center = centre, .halfWidth = size(random), .halfHeight = size(random),
+      addBox(world, {.center = centre,
+                     .halfWidth = size(random),
+                     .halfHeight = size(random),
                      .material = Material::Wood});
     }
   }

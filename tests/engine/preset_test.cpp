@@ -18,10 +18,10 @@ namespace {
 using namespace impulse::test;
 
 // Layout figures of SPEC.md (the seed's canvas at 32 px/m).
-constexpr double kBorder = 0.78125;                   // wall and floor thickness
+constexpr double kBorder = 0.78125;  // wall and floor thickness
 constexpr double kFloorTop = kBorder;
-constexpr double kRightWallFace = 25 - kBorder;      // inner face of the right wall
-constexpr double kCeilingFace = 18.75 - kBorder;     // inner face of preset 8's ceiling
+constexpr double kRightWallFace = 25 - kBorder;   // inner face of the right wall
+constexpr double kCeilingFace = 18.75 - kBorder;  // inner face of preset 8's ceiling
 constexpr double kSceneMiddle = 12.5;
 // Longest any preset needs to come to rest (the slowest, the valley, takes 15 s).
 constexpr double kSettleSeconds = 40;
@@ -47,7 +47,7 @@ double radiusOf(const World& world, BodyId id) {
 
 // ---- Information ----
 
-TEST(PresetInfo, EveryPresetHasTitleAndExplanation_AndDrawingOnlyInSandboxAndTutorials) {
+TEST(PresetLoading, EveryPresetHasTitleAndExplanation_AndDrawingOnlyInSandboxAndTutorials) {
   for (int id = 0; id < kPresetCount; ++id) {
     SCOPED_TRACE(id);
     World world;
@@ -63,7 +63,7 @@ TEST(PresetInfo, EveryPresetHasTitleAndExplanation_AndDrawingOnlyInSandboxAndTut
   }
 }
 
-TEST(PresetInfo, OutOfRangeIdReturnsNothing_AndLeavesWorldUntouched) {
+TEST(PresetLoading, OutOfRangeIdReturnsNothing_AndLeavesWorldUntouched) {
   World world;
   addCircle(world, {.center = Vec2(3, 3)});
   world.setGravity(Vec2(1, -2));
@@ -79,7 +79,7 @@ TEST(PresetInfo, OutOfRangeIdReturnsNothing_AndLeavesWorldUntouched) {
   EXPECT_EQ(kPresetCount, 11);
 }
 
-TEST(PresetInfo, LoadingAPresetReplacesThePreviousScene_AndResetsGravity) {
+TEST(PresetLoading, LoadingAPresetReplacesThePreviousScene_AndResetsGravity) {
   World world;
   loadPreset(world, 8);
   world.setGravity(Vec2(0, -2));
@@ -149,7 +149,8 @@ TEST(Preset3PolygonTutorial, ShowsThreeMarkers_AndAllowsDrawing) {
   EXPECT_EQ(p.info.markers.size(), 3u);
   for (const Marker& m : p.info.markers) {
     EXPECT_GT(m.radius, 0);
-    EXPECT_TRUE(m.center.x() > kBorder && m.center.x() < kRightWallFace && m.center.y() > kFloorTop);
+    EXPECT_TRUE(m.center.x() > kBorder && m.center.x() < kRightWallFace &&
+                m.center.y() > kFloorTop);
   }
   EXPECT_TRUE(p.info.drawingAllowed);
   EXPECT_TRUE(p.dynamic.empty()) << "the user draws the shapes";

@@ -108,8 +108,9 @@ inline BodyId addCircle(World& world, const CircleSpec& spec) {
 
 /// A static ground slab whose top face is at y = top, spanning |x| <= halfWidth.
 inline BodyId addGround(World& world, Real top = 0, Real halfWidth = 20) {
-  return addBox(world, {.center = Vec2(0, top - 1), .halfWidth = halfWidth, .halfHeight = 1,
-                        .isStatic = true});
+  return addBox(
+      world,
+      {.center = Vec2(0, top - 1), .halfWidth = halfWidth, .halfHeight = 1, .isStatic = true});
 }
 
 /// Pair-mixed coefficients as the engine documents them (mean of the two).

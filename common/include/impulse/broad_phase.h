@@ -35,7 +35,8 @@ class BroadPhase {
   /// when it was re-inserted.
   bool updateProxy(std::int32_t proxyKey, const AABB& tightAABB);
 
-  /// Queues a proxy for pair search without moving it (e.g. a body woke up).
+  /// Queues a proxy for pair search without moving it (e.g. a body woke up). A
+  /// queued static proxy looks for movable partners only.
   void touchProxy(std::int32_t proxyKey);
 
   /// Finds the pairs whose fat AABBs overlap and involve a queued proxy, sorted

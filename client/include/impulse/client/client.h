@@ -37,6 +37,9 @@ struct ConnectOptions {
   std::chrono::milliseconds timeout{5000};
   /// Largest frame accepted from the server (full snapshots of big worlds).
   std::size_t maxFrameBytes = std::size_t(256) << 20;
+  /// SO_RCVBUF in bytes when > 0 (a small one makes a slow reader visible to
+  /// the server sooner; tests use it).
+  int receiveBufferBytes = 0;
   /// Sent in Hello; only tests change it.
   std::uint32_t protocolVersion = wire::kProtocolVersion;
 };

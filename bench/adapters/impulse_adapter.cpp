@@ -1,0 +1,88 @@
+// Impulse: one body per description body, materials as named, the world's
+// bounds widened to hold the scene. Everything else stays at WorldSettings'
+// defaults except sub-steps and sleep.
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "engine_adapter.h"
+#include "impulse/world.h"
+
+namespace bench {
+
+namespace {
+
+using impulse::Real;
+using impulse::Vec2;
+
+Vec2 toVec(const Vec2d& v) { return Vec2(Real(v.x), Real(v.y)); }
+
+impulse::Shape toShape(const ShapeDesc& shape, const impulse::ShapeLimits& limits) {
+  if (shape.kind == ShapeKind::Circle) return impulse::Shape::makeCircle(Real(shape.radius));
+  std::vector<Vec2> points;
+  for (const Vec2d& v : shape.vertices) points.push_back(toVec(v));
+  impulse::PolygonBuild build = impulse::buildPolygon(points, limits);
+  if (build.error != impulse::ShapeError::None) {
+    throw std::runtime_error("impulse: " + std::string(impulse::describe(build.error)));
+  }
+  return impulse::Shape::makePolygon(build.polygon);
+}
+
+impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps) {
+  impulse::WorldSettings settings;
+  settings.gravity = toVec(scene.gravity);
+  settings.subSteps = subSteps;
+  settings.enableSleep = scene.allowSleep;
+  // Bounds only gate creation: fit them around the scene.
+  for (const BodyDesc& body : scene.bodies) {
+    Vec2 p = toVec(body.position);
+    settings.bounds = settings.bounds.unite({p - Vec2(1, 1), p + Vec2(1, 1)});
+  }
+  settings.shapeLimits.maxArea = Real(1e5);
+  settings.shapeLimits.maxRadius = Real(1e3);
+  settings.maxBodies = std::max<int>(settings.maxBodies, static_cast<int>(scene.bodies.size()));
+  return settings;
+}
+
+class ImpulseAdapter final : public EngineAdapter {
+ public:
+  ImpulseAdapter(const SceneDescription& scene, int subSteps) : world_(settingsFor(scene, subSteps)) {
+    ids_.reserve(scene.bodies.size());
+    for (const BodyDesc& body : scene.bodies) {
+      impulse::BodyDef def;
+      def.shape = toShape(body.shape, world_.settings().shapeLimits);
+      def.position = toVec(body.position);
+      def.angle = Real(body.angle);
+      def.linearVelocity = toVec(body.velocity);
+      def.angularVelocity = Real(body.angularVelocity);
+      def.material = body.material;
+      def.isStatic = body.isStatic;
+      impulse::CreateResult created = world_.createBody(def);
+      if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
+      ids_.push_back(created.id);
+    }
+  }
+
+  void step(double dt) override { world_.step(Real(dt)); }
+
+  Pose pose(int index) const override {
+    impulse::BodyState state = *world_.bodyState(ids_[static_cast<std::size_t>(index)]);
+    return {{state.position.x(), state.position.y()},
+            state.angle,
+            {state.linearVelocity.x(), state.linearVelocity.y()},
+            state.angularVelocity,
+            state.awake};
+  }
+
+ private:
+  impulse::World world_;
+  std::vector<impulse::BodyId> ids_;
+};
+
+}  // namespace
+
+std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps) {
+  return std::make_unique<ImpulseAdapter>(scene, subSteps);
+}
+
+}  // namespace bench

@@ -1,0 +1,40 @@
+#include "engine_adapter.h"
+
+namespace bench {
+
+const char* engineName(Engine engine) {
+  switch (engine) {
+    case Engine::Impulse: return "impulse";
+    case Engine::Box2D: return "box2d";
+    case Engine::Chipmunk: return "chipmunk";
+  }
+  return "?";
+}
+
+std::string EngineSetting::label() const {
+  switch (engine) {
+    case Engine::Impulse: return "sub " + std::to_string(iterations);
+    case Engine::Box2D: return "it " + std::to_string(iterations) + "/" + std::to_string(positionIterations);
+    case Engine::Chipmunk: return "it " + std::to_string(iterations);
+  }
+  return "?";
+}
+
+std::vector<EngineSetting> allSettings() {
+  return {{Engine::Impulse, 1, 0},  {Engine::Impulse, 2, 0},  {Engine::Impulse, 4, 0},
+          {Engine::Impulse, 8, 0},  {Engine::Box2D, 8, 3},    {Engine::Box2D, 30, 10},
+          {Engine::Chipmunk, 10, 0}, {Engine::Chipmunk, 30, 0}};
+}
+
+std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting) {
+  switch (setting.engine) {
+    case Engine::Impulse:
+      if (!scene.impulseUnsupported.empty()) return nullptr;
+      return makeImpulseAdapter(scene, setting.iterations);
+    case Engine::Box2D: return makeBox2DAdapter(scene, setting.iterations, setting.positionIterations);
+    case Engine::Chipmunk: return makeChipmunkAdapter(scene, setting.iterations);
+  }
+  return nullptr;
+}
+
+}  // namespace bench

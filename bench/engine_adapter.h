@@ -1,0 +1,54 @@
+#pragma once
+// The common face of the three engines: build from a SceneDescription, step,
+// read poses back in description order.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace bench {
+
+enum class Engine { Impulse, Box2D, Chipmunk };
+
+const char* engineName(Engine engine);
+
+/// One engine at one solver setting: Impulse sub-steps, Box2D velocity and
+/// position iterations, Chipmunk iterations.
+struct EngineSetting {
+  Engine engine = Engine::Impulse;
+  int iterations = 4;
+  int positionIterations = 0;  ///< Box2D only
+  std::string label() const;
+};
+
+/// Impulse at 1, 2, 4 and 8 sub-steps; Box2D at 8/3 (default) and 30/10;
+/// Chipmunk at 10 (default) and 30 iterations.
+std::vector<EngineSetting> allSettings();
+
+struct Pose {
+  Vec2d position;
+  double angle = 0;
+  Vec2d velocity;
+  double angularVelocity = 0;
+  bool awake = true;
+};
+
+class EngineAdapter {
+ public:
+  virtual ~EngineAdapter() = default;
+  virtual void step(double dt) = 0;
+  /// Body `index` in the order of SceneDescription::bodies.
+  virtual Pose pose(int index) const = 0;
+};
+
+/// Nothing when the engine cannot express the scene (see impulseUnsupported).
+std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting);
+
+std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps);
+std::unique_ptr<EngineAdapter> makeBox2DAdapter(const SceneDescription& scene, int velocityIterations,
+                                                int positionIterations);
+std::unique_ptr<EngineAdapter> makeChipmunkAdapter(const SceneDescription& scene, int iterations);
+
+}  // namespace bench

@@ -1,0 +1,16 @@
+#include "scene.h"
+
+namespace bench {
+
+SceneList allScenes(bool quick) {
+  SceneList scenes;
+  addStackingScenes(scenes, quick);
+  addFrictionRampScene(scenes, quick);
+  addCircleScenes(scenes, quick);
+  addBulletScene(scenes, quick);
+  addClosedFormScenes(scenes, quick);
+  addSleepingScenes(scenes, quick);
+  return scenes;
+}
+
+}  // namespace bench

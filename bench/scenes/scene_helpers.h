@@ -1,0 +1,62 @@
+#pragma once
+// Small pieces the scene files share.
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "penetration.h"
+#include "scene.h"
+
+namespace bench {
+
+inline double distance(const Vec2d& a, const Vec2d& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+inline double speed(const Pose& pose) { return std::hypot(pose.velocity.x, pose.velocity.y); }
+
+/// A static ground slab whose top is at y = 0.
+inline int addGround(SceneDescription& scene, double halfWidth,
+                     impulse::Material material = impulse::Material::Solid) {
+  return addBody(scene, makeStaticBox({-halfWidth, -1}, {halfWidth, 0}, material));
+}
+
+/// A unit-box pyramid of `rows` rows standing on y = 0 at `pitch` spacing;
+/// returns the index of its first box (bottom row first, top box last).
+inline int addPyramid(SceneDescription& scene, int rows, double pitch, impulse::Material material) {
+  int first = static_cast<int>(scene.bodies.size());
+  for (int row = 0; row < rows; ++row) {
+    int count = rows - row;
+    for (int i = 0; i < count; ++i) {
+      double x = (i - 0.5 * (count - 1)) * pitch;
+      addBody(scene, makeBody(ShapeDesc::box(0.5, 0.5), {x, 0.5 + row * pitch}, material));
+    }
+  }
+  return first;
+}
+
+/// Every dynamic body's index.
+inline std::vector<int> dynamicBodies(const SceneDescription& scene) {
+  std::vector<int> indices;
+  for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i) {
+    if (!scene.bodies[std::size_t(i)].isStatic) indices.push_back(i);
+  }
+  return indices;
+}
+
+/// Deepest overlap seen over all observations.
+class PeakPenetration {
+ public:
+  explicit PeakPenetration(const SceneDescription& scene) : probe_(scene) {}
+  double observe(const EngineAdapter& engine) {
+    double now = probe_.maxPenetration(engine);
+    peak_ = std::max(peak_, now);
+    return now;
+  }
+  double peak() const { return peak_; }
+
+ private:
+  PenetrationProbe probe_;
+  double peak_ = 0;
+};
+
+}  // namespace bench

@@ -1,0 +1,251 @@
+#include "controls.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "impulse/client/commands.h"
+
+namespace impulse::viewer {
+
+namespace {
+
+client::Point toPoint(const Vec2& v) { return {double(v.x()), double(v.y())}; }
+
+bool repeats(Control control) {
+  switch (control) {
+    case Control::GravityUp:
+    case Control::GravityLeft:
+    case Control::GravityDown:
+    case Control::GravityRight:
+    case Control::PushUp:
+    case Control::PushLeft:
+    case Control::PushDown:
+    case Control::PushRight: return true;
+    default: return false;
+  }
+}
+
+// Unit direction of a gravity or push key.
+Vec2 direction(Control control) {
+  switch (control) {
+    case Control::GravityUp:
+    case Control::PushUp: return Vec2(0, 1);
+    case Control::GravityDown:
+    case Control::PushDown: return Vec2(0, -1);
+    case Control::GravityLeft:
+    case Control::PushLeft: return Vec2(-1, 0);
+    default: return Vec2(1, 0);
+  }
+}
+
+bool isPush(Control control) {
+  return control == Control::PushUp || control == Control::PushLeft ||
+         control == Control::PushDown || control == Control::PushRight;
+}
+
+}  // namespace
+
+std::string materialLabel(Material material) {
+  std::string name(materialProperties(material).name);
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return char(std::toupper(c)); });
+  return name;
+}
+
+Controls::Controls(ControlSettings settings) : settings_(settings) {}
+
+void Controls::send(v1::ClientMessage message, std::string what) {
+  outbox_.push_back({std::move(message), std::move(what)});
+}
+
+std::vector<Outgoing> Controls::takeCommands() { return std::exchange(outbox_, {}); }
+
+void Controls::notify(std::string text, double now) {
+  notice_ = std::move(text);
+  noticeUntil_ = now + settings_.noticeSeconds;
+}
+
+std::optional<std::string> Controls::notice(double now) const {
+  if (now >= noticeUntil_) return std::nullopt;
+  return notice_;
+}
+
+bool Controls::pointerValid() const {
+  if (mode_ != DrawMode::Polygon) return false;
+  std::vector<Vec2> candidate = points_;
+  candidate.push_back(pointer_);
+  return checkPolygonInProgress(candidate) == ShapeError::None;
+}
+
+void Controls::cancelDrawing() {
+  mode_ = DrawMode::None;
+  points_.clear();
+  circleCenter_.reset();
+  circleRadius_ = 0;
+  dragging_ = false;
+}
+
+bool Controls::checkDrawingAllowed(const ControlContext& context, double now) {
+  if (context.drawingAllowed) return true;
+  notify("Drawing is allowed in the sandbox (0) and presets 3 and 4 only", now);
+  return false;
+}
+
+client::SpawnOptions Controls::spawnOptions() const {
+  client::SpawnOptions options;
+  options.material = material_;
+  options.isStatic = nextStatic_;
+  options.ignoreGravity = !nextFeelsGravity_;
+  return options;
+}
+
+void Controls::togglePolygon(const ControlContext& context, double now) {
+  if (mode_ != DrawMode::Polygon) {
+    if (!checkDrawingAllowed(context, now)) return;
+    cancelDrawing();
+    mode_ = DrawMode::Polygon;
+    return;
+  }
+  if (points_.size() >= std::size_t(kMinPolygonVertices)) {
+    std::vector<client::Point> vertices;
+    for (const Vec2& p : points_) vertices.push_back(toPoint(p));
+    send(client::spawnPolygon(vertices, spawnOptions()), "polygon");
+  } else {
+    notify("Polygon cancelled: it needs at least 3 points", now);
+  }
+  cancelDrawing();
+}
+
+void Controls::toggleCircle(const ControlContext& context, double now) {
+  if (mode_ != DrawMode::Circle) {
+    if (!checkDrawingAllowed(context, now)) return;
+    cancelDrawing();
+    mode_ = DrawMode::Circle;
+    return;
+  }
+  if (circleCenter_ && circleRadius_ > 0) {
+    send(client::spawnCircle(toPoint(*circleCenter_), double(circleRadius_), spawnOptions()),
+         "circle");
+  } else {
+    notify("Circle cancelled: drag from its centre to set the radius", now);
+  }
+  cancelDrawing();
+}
+
+bool Controls::repeatAction(ControlKey key, const ControlContext& context, double now) {
+  if (!repeats(key.control)) return false;
+  const Vec2 dir = direction(key.control);
+  if (!isPush(key.control)) {
+    send(client::nudgeGravity(toPoint(dir * Real(settings_.gravityStep))), "gravity");
+    return true;
+  }
+  if (!selected_) {
+    notify("Select a body first: M, then click it", now);
+  } else if (!context.selectedMass) {
+    notify("Waiting for the selected body's details", now);
+  } else if (*context.selectedMass <= 0) {
+    notify("Static bodies do not move", now);
+  } else {
+    const Vec2 impulse = dir * Real(*context.selectedMass * settings_.pushSpeed);
+    send(client::applyImpulse(*selected_, toPoint(impulse)), "push");
+  }
+  return true;
+}
+
+void Controls::keyPressed(ControlKey key, const ControlContext& context, double now) {
+  if (repeatAction(key, context, now)) {
+    const auto it = std::find_if(held_.begin(), held_.end(),
+                                 [&](const Held& h) { return h.key == key; });
+    const double next = now + 1 / settings_.repeatHz;
+    if (it == held_.end()) {
+      held_.push_back({key, next});
+    } else {
+      it->nextRepeat = next;
+    }
+    return;
+  }
+  switch (key.control) {
+    case Control::PolygonMode: togglePolygon(context, now); break;
+    case Control::CircleMode: toggleCircle(context, now); break;
+    case Control::Clear:
+      send(client::clearWorld(), "clear");
+      selected_.reset();
+      break;
+    case Control::TogglePanel: panelVisible_ = !panelVisible_; break;
+    case Control::ToggleInspector:
+      inspectorVisible_ = !inspectorVisible_;
+      if (!inspectorVisible_) selected_.reset();
+      break;
+    case Control::ToggleStatic: nextStatic_ = !nextStatic_; break;
+    case Control::ToggleGravity: nextFeelsGravity_ = !nextFeelsGravity_; break;
+    case Control::ResetGravity: send(client::resetGravity(), "gravity reset"); break;
+    case Control::LoadPreset:
+      send(client::loadPreset(key.index, material_), "preset " + std::to_string(key.index));
+      cancelDrawing();
+      selected_.reset();
+      panelVisible_ = false;
+      break;
+    case Control::SelectMaterial:
+      if (const auto material = materialFromIndex(key.index)) material_ = *material;
+      break;
+    case Control::Quit: quit_ = true; break;
+    default: break;
+  }
+}
+
+void Controls::keyReleased(ControlKey key) {
+  std::erase_if(held_, [&](const Held& h) { return h.key == key; });
+}
+
+void Controls::update(const ControlContext& context, double now) {
+  if (mode_ != DrawMode::None && !context.drawingAllowed) {
+    cancelDrawing();
+    notify("Drawing ended: this scene does not allow it", now);
+  }
+  for (Held& held : held_) {
+    // A steady rate whatever the frame rate; after a long frame, catch up a
+    // little but never flood the server.
+    int burst = 0;
+    while (now >= held.nextRepeat && burst < 3) {
+      repeatAction(held.key, context, now);
+      held.nextRepeat += 1 / settings_.repeatHz;
+      ++burst;
+    }
+    if (now >= held.nextRepeat) held.nextRepeat = now + 1 / settings_.repeatHz;
+  }
+}
+
+void Controls::pointerPressed(const Vec2& at, std::optional<std::uint32_t> bodyUnderPointer,
+                              double now) {
+  pointer_ = at;
+  switch (mode_) {
+    case DrawMode::Polygon:
+      if (pointerValid()) points_.push_back(at);
+      return;
+    case DrawMode::Circle:
+      circleCenter_ = at;
+      circleRadius_ = 0;
+      dragging_ = true;
+      return;
+    case DrawMode::None:
+      if (inspectorVisible_) {
+        selected_ = bodyUnderPointer;
+        if (!selected_) notify("No body there: click inside a body to inspect it", now);
+      }
+      return;
+  }
+}
+
+void Controls::pointerMoved(const Vec2& at) {
+  pointer_ = at;
+  if (mode_ == DrawMode::Circle && dragging_ && circleCenter_) {
+    circleRadius_ = (at - *circleCenter_).norm();
+  }
+}
+
+void Controls::pointerReleased(const Vec2& at) {
+  pointerMoved(at);
+  dragging_ = false;
+}
+
+}  // namespace impulse::viewer

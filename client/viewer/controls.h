@@ -1,0 +1,159 @@
+#pragma once
+/// The viewer's controls (SPEC.md's table) as a state machine without a
+/// window: abstract key and pointer events in, protocol commands and view
+/// state out. key_map.h turns SDL keys into Control values.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "impulse.pb.h"
+#include "impulse/client/commands.h"
+#include "impulse/material.h"
+#include "impulse/math.h"
+#include "impulse/shape.h"
+
+namespace impulse::viewer {
+
+/// What a key does; `index` carries the preset (0-10) or the material (0-4).
+enum class Control {
+  PolygonMode,
+  CircleMode,
+  Clear,
+  TogglePanel,
+  ToggleInspector,
+  ToggleStatic,
+  ToggleGravity,
+  GravityUp,
+  GravityLeft,
+  GravityDown,
+  GravityRight,
+  ResetGravity,
+  PushUp,
+  PushLeft,
+  PushDown,
+  PushRight,
+  LoadPreset,
+  SelectMaterial,
+  Quit,
+};
+
+struct ControlKey {
+  Control control;
+  int index = 0;
+  friend bool operator==(const ControlKey&, const ControlKey&) = default;
+};
+
+enum class DrawMode { None, Polygon, Circle };
+
+/// What the controls need to know about the world when an event happens.
+struct ControlContext {
+  /// The current scene allows drawing (sandbox, presets 3 and 4).
+  bool drawingAllowed = true;
+  /// Mass of the selected body (0 for a static one), once the server told.
+  std::optional<double> selectedMass;
+};
+
+/// A command for the server and what to call it in an error message.
+struct Outgoing {
+  v1::ClientMessage message;
+  std::string what;
+};
+
+struct ControlSettings {
+  /// Held gravity and push keys repeat at this rate (Hz), first at the press.
+  double repeatHz = 20;
+  /// Gravity change per repeat, m/s^2.
+  double gravityStep = 0.25;
+  /// Velocity given to the selected body per push repeat, m/s.
+  double pushSpeed = 0.25;
+  /// How long a notice stays on screen, seconds.
+  double noticeSeconds = 4;
+};
+
+class Controls {
+ public:
+  explicit Controls(ControlSettings settings = {});
+
+  void keyPressed(ControlKey key, const ControlContext& context, double now);
+  void keyReleased(ControlKey key);
+  /// Left button down at world point `at`; `bodyUnderPointer` for selection.
+  void pointerPressed(const Vec2& at, std::optional<std::uint32_t> bodyUnderPointer, double now);
+  void pointerMoved(const Vec2& at);
+  void pointerReleased(const Vec2& at);
+  /// Once per frame: repeats held keys, ends drawing where it is not allowed.
+  void update(const ControlContext& context, double now);
+
+  /// Commands produced since the last call, in order.
+  std::vector<Outgoing> takeCommands();
+  /// Shows `text` for a few seconds (also used for server errors).
+  void notify(std::string text, double now);
+  /// The notice to show at `now`, if any.
+  std::optional<std::string> notice(double now) const;
+
+  // View state.
+  bool quitRequested() const { return quit_; }
+  bool panelVisible() const { return panelVisible_; }
+  bool inspectorVisible() const { return inspectorVisible_; }
+  std::optional<std::uint32_t> selectedBody() const { return selected_; }
+  /// The selected body went away.
+  void deselect() { selected_.reset(); }
+
+  // Next shape.
+  DrawMode mode() const { return mode_; }
+  bool nextStatic() const { return nextStatic_; }
+  bool nextFeelsGravity() const { return nextFeelsGravity_; }
+  Material material() const { return material_; }
+
+  // Drawing previews.
+  const std::vector<Vec2>& polygonPoints() const { return points_; }
+  const Vec2& pointer() const { return pointer_; }
+  /// Polygon mode: a click at the pointer would place a point.
+  bool pointerValid() const;
+  /// Circle mode: the centre pressed, and the radius dragged so far.
+  std::optional<Vec2> circleCenter() const { return circleCenter_; }
+  Real circleRadius() const { return circleRadius_; }
+
+ private:
+  struct Held {
+    ControlKey key;
+    double nextRepeat;
+  };
+
+  void togglePolygon(const ControlContext& context, double now);
+  void toggleCircle(const ControlContext& context, double now);
+  bool checkDrawingAllowed(const ControlContext& context, double now);
+  void cancelDrawing();
+  /// Acts once for a repeating key; false when the key does not repeat.
+  bool repeatAction(ControlKey key, const ControlContext& context, double now);
+  void send(v1::ClientMessage message, std::string what);
+  client::SpawnOptions spawnOptions() const;
+
+  ControlSettings settings_;
+  std::vector<Outgoing> outbox_;
+  std::vector<Held> held_;
+  std::string notice_;
+  double noticeUntil_ = -1;
+
+  bool quit_ = false;
+  bool panelVisible_ = true;
+  bool inspectorVisible_ = false;
+  std::optional<std::uint32_t> selected_;
+
+  DrawMode mode_ = DrawMode::None;
+  bool nextStatic_ = false;
+  bool nextFeelsGravity_ = true;
+  Material material_ = Material::Solid;
+
+  std::vector<Vec2> points_;
+  Vec2 pointer_ = Vec2::Zero();
+  std::optional<Vec2> circleCenter_;
+  Real circleRadius_ = 0;
+  bool dragging_ = false;
+};
+
+/// The material's name as SPEC.md writes it (SOLID, ICE, ...).
+std::string materialLabel(Material material);
+
+}  // namespace impulse::viewer

@@ -1,0 +1,100 @@
+#include "interpolated_world.h"
+
+#include <algorithm>
+
+namespace impulse::viewer {
+
+namespace {
+
+InterpolationSettings interpolationSettings(double interval) {
+  InterpolationSettings settings;
+  settings.snapshotInterval = interval;
+  return settings;
+}
+
+PlayoutSettings playoutSettings(double interval) {
+  PlayoutSettings settings;
+  settings.snapshotInterval = interval;
+  return settings;
+}
+
+}  // namespace
+
+InterpolatedWorld::InterpolatedWorld(double snapshotInterval)
+    : buffer_(interpolationSettings(snapshotInterval)),
+      clock_(playoutSettings(snapshotInterval)) {}
+
+void InterpolatedWorld::reset(double snapshotInterval) {
+  buffer_ = SnapshotBuffer(interpolationSettings(snapshotInterval));
+  clock_ = PlayoutClock(playoutSettings(snapshotInterval));
+  looks_.clear();
+  departed_.clear();
+  drawn_.clear();
+  samples_.clear();
+  mode_ = SampleMode::Empty;
+}
+
+void InterpolatedWorld::seed(const client::WorldMirror& mirror, double now) {
+  for (const auto& [id, body] : mirror.bodies()) {
+    looks_[id] = {body.shape, body.material, body.isStatic, body.ignoreGravity};
+  }
+  record(mirror, mirror.simTime(), true, mirror.paused(), now);
+}
+
+void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
+                                   const v1::Snapshot& snapshot, double now) {
+  const double time = snapshot.sim_time();
+  if (snapshot.full()) {
+    for (const auto& [id, look] : looks_) {
+      if (mirror.bodies().count(id) == 0) departed_.emplace_back(id, time);
+    }
+  }
+  for (const std::uint32_t id : snapshot.removed()) departed_.emplace_back(id, time);
+  for (const auto& descriptor : snapshot.added()) {
+    if (const auto* body = mirror.find(BodyId{descriptor.id()})) {
+      looks_[descriptor.id()] = {body->shape, body->material, body->isStatic,
+                                 body->ignoreGravity};
+    }
+  }
+  record(mirror, time, snapshot.full(), snapshot.paused(), now);
+}
+
+void InterpolatedWorld::record(const client::WorldMirror& mirror, double serverTime, bool full,
+                               bool paused, double now) {
+  SnapshotFrame frame;
+  frame.time = serverTime;
+  frame.full = full;
+  frame.paused = paused;
+  frame.bodies.reserve(mirror.bodies().size());
+  for (const auto& [id, body] : mirror.bodies()) {
+    const BodyState& s = body.state;
+    frame.bodies.push_back(
+        {id, s.position, s.angle, s.linearVelocity, s.angularVelocity, s.awake});
+  }
+  buffer_.push(std::move(frame));
+  clock_.onSnapshot(serverTime, now, paused);
+}
+
+void InterpolatedWorld::update(double now) {
+  renderTime_ = clock_.renderTime(now);
+  buffer_.discardBefore(renderTime_);
+  mode_ = buffer_.sample(renderTime_, samples_);
+
+  // A departed body's look is kept while a buffered frame still shows it
+  // (frames older than its departure).
+  const double oldest = buffer_.oldestTime();
+  std::erase_if(departed_, [&](const std::pair<std::uint32_t, double>& gone) {
+    if (gone.second > oldest) return false;
+    looks_.erase(gone.first);
+    return true;
+  });
+
+  drawn_.clear();
+  drawn_.reserve(samples_.size());
+  for (const BodySample& sample : samples_) {
+    const auto it = looks_.find(sample.id);
+    if (it != looks_.end()) drawn_.push_back({sample, &it->second});
+  }
+}
+
+}  // namespace impulse::viewer

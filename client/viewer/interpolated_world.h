@@ -1,0 +1,67 @@
+#pragma once
+/// The world as the viewer draws it: each snapshot the client applies is
+/// recorded into the snapshot buffer, timed by the playout clock, and each
+/// frame samples the buffer at the playout time. Shapes and materials are
+/// kept for as long as a buffered frame still shows their body.
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "impulse.pb.h"
+#include "impulse/client/world_mirror.h"
+#include "interpolation.h"
+#include "playout_clock.h"
+
+namespace impulse::viewer {
+
+/// How a body looks (what its descriptor said).
+struct BodyLook {
+  Shape shape;
+  Material material = Material::Solid;
+  bool isStatic = false;
+  bool ignoreGravity = false;
+};
+
+/// One body to draw.
+struct DrawnBody {
+  BodySample state;
+  const BodyLook* look = nullptr;
+};
+
+class InterpolatedWorld {
+ public:
+  explicit InterpolatedWorld(double snapshotInterval = 1.0 / 30.0);
+
+  /// `mirror` has just applied `snapshot`, which arrived at local time `now`.
+  void onSnapshot(const client::WorldMirror& mirror, const v1::Snapshot& snapshot, double now);
+  /// The mirror as it stands (the first snapshot, applied during connection).
+  void seed(const client::WorldMirror& mirror, double now);
+  /// A new connection: forgets everything.
+  void reset(double snapshotInterval);
+
+  /// Samples the world for a frame drawn at local time `now`.
+  void update(double now);
+  const std::vector<DrawnBody>& bodies() const { return drawn_; }
+  SampleMode lastMode() const { return mode_; }
+  double renderTime() const { return renderTime_; }
+
+  const SnapshotBuffer& buffer() const { return buffer_; }
+  const PlayoutClock& clock() const { return clock_; }
+
+ private:
+  void record(const client::WorldMirror& mirror, double serverTime, bool full, bool paused,
+              double now);
+
+  SnapshotBuffer buffer_;
+  PlayoutClock clock_;
+  std::unordered_map<std::uint32_t, BodyLook> looks_;
+  /// Bodies gone from the server, with the server time they went at.
+  std::vector<std::pair<std::uint32_t, double>> departed_;
+  std::vector<BodySample> samples_;
+  std::vector<DrawnBody> drawn_;
+  SampleMode mode_ = SampleMode::Empty;
+  double renderTime_ = 0;
+};
+
+}  // namespace impulse::viewer

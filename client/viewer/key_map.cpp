@@ -1,0 +1,37 @@
+#include "key_map.h"
+
+namespace impulse::viewer {
+
+std::optional<ControlKey> controlForKey(SDL_Keycode key) {
+  if (key >= SDLK_0 && key <= SDLK_9) return ControlKey{Control::LoadPreset, int(key - SDLK_0)};
+  if (key >= SDLK_KP_1 && key <= SDLK_KP_5) {
+    return ControlKey{Control::SelectMaterial, int(key - SDLK_KP_1)};
+  }
+  if (key >= SDLK_F5 && key <= SDLK_F9) {
+    return ControlKey{Control::SelectMaterial, int(key - SDLK_F5)};
+  }
+  switch (key) {
+    case SDLK_F1: return ControlKey{Control::LoadPreset, 10};
+    case SDLK_p: return ControlKey{Control::PolygonMode};
+    case SDLK_o: return ControlKey{Control::CircleMode};
+    case SDLK_c: return ControlKey{Control::Clear};
+    case SDLK_x: return ControlKey{Control::TogglePanel};
+    case SDLK_m: return ControlKey{Control::ToggleInspector};
+    case SDLK_q: return ControlKey{Control::ToggleStatic};
+    case SDLK_g: return ControlKey{Control::ToggleGravity};
+    case SDLK_w: return ControlKey{Control::GravityUp};
+    case SDLK_a: return ControlKey{Control::GravityLeft};
+    case SDLK_s: return ControlKey{Control::GravityDown};
+    case SDLK_d: return ControlKey{Control::GravityRight};
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER: return ControlKey{Control::ResetGravity};
+    case SDLK_UP: return ControlKey{Control::PushUp};
+    case SDLK_LEFT: return ControlKey{Control::PushLeft};
+    case SDLK_DOWN: return ControlKey{Control::PushDown};
+    case SDLK_RIGHT: return ControlKey{Control::PushRight};
+    case SDLK_ESCAPE: return ControlKey{Control::Quit};
+    default: return std::nullopt;
+  }
+}
+
+}  // namespace impulse::viewer

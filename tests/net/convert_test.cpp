@@ -1,0 +1,129 @@
+// Engine <-> wire conversion: exact one way, validated the other.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "impulse/wire/convert.h"
+
+namespace impulse::wire {
+namespace {
+
+TEST(Convert, RealFromWireRefusesNonFiniteAndFloatOverflow) {
+  EXPECT_EQ(*realFromWire(1.5, "r").value, 1.5f);
+  const auto nan = realFromWire(std::nan(""), "spawn.radius");
+  ASSERT_FALSE(nan.ok());
+  EXPECT_EQ(nan.error, "spawn.radius is not a finite number");
+  EXPECT_FALSE(realFromWire(-std::numeric_limits<double>::infinity(), "r").ok());
+  // Finite as a double, infinite as the engine's float.
+  const auto huge = realFromWire(1e300, "gravity.x");
+  ASSERT_FALSE(huge.ok());
+  EXPECT_NE(huge.error.find("gravity.x is too large"), std::string::npos) << huge.error;
+}
+
+TEST(Convert, VecFromWireNamesTheComponent) {
+  v1::Vec2 v;
+  v.set_x(1);
+  v.set_y(std::numeric_limits<double>::infinity());
+  const auto decoded = vecFromWire(v, "center");
+  ASSERT_FALSE(decoded.ok());
+  EXPECT_EQ(decoded.error, "center.y is not a finite number");
+}
+
+TEST(Convert, MaterialsMapWithUnspecifiedAsSolid) {
+  EXPECT_EQ(materialFromWire(v1::MATERIAL_UNSPECIFIED), Material::Solid);
+  EXPECT_EQ(materialFromWire(v1::SOLID), Material::Solid);
+  EXPECT_EQ(materialFromWire(v1::RUBBER), Material::Rubber);
+  EXPECT_FALSE(materialFromWire(6).has_value());
+  EXPECT_FALSE(materialFromWire(-1).has_value());
+  for (int i = 0; i < kMaterialCount; ++i) {
+    const auto material = *materialFromIndex(i);
+    EXPECT_EQ(materialFromWire(toWire(material)), material);
+    EXPECT_EQ(materialFromName(materialName(material)), material);
+  }
+  EXPECT_EQ(materialFromName("ice"), Material::Ice);
+  EXPECT_FALSE(materialFromName("glass").has_value());
+}
+
+TEST(Convert, OptionsAreCheckedFieldByField) {
+  v1::BodyOptions options;
+  options.set_material(v1::METAL);
+  options.set_is_static(true);
+  options.mutable_velocity()->set_x(2);
+  const auto decoded = optionsFromWire(options);
+  ASSERT_TRUE(decoded.ok()) << decoded.error;
+  EXPECT_EQ(decoded.value->material, Material::Metal);
+  EXPECT_TRUE(decoded.value->isStatic);
+  EXPECT_EQ(decoded.value->linearVelocity.x(), 2.0f);
+
+  options.set_material(static_cast<v1::Material>(9));
+  EXPECT_NE(optionsFromWire(options).error.find("material 9 is not a material"),
+            std::string::npos);
+  options.set_material(v1::SOLID);
+  options.set_angular_velocity(std::numeric_limits<float>::quiet_NaN());
+  EXPECT_EQ(optionsFromWire(options).error, "options.angular_velocity is not a finite number");
+}
+
+TEST(Convert, StateRoundTripIsExact) {
+  BodyState state;
+  state.id = BodyId{12345};
+  state.position = Vec2(0.1f, -7.3f);
+  state.angle = 2.7182817f;
+  state.linearVelocity = Vec2(1e-7f, 3e5f);
+  state.angularVelocity = -0.333333f;
+  state.awake = true;
+  v1::BodyState message;
+  toWire(state, &message);
+  const BodyState back = stateFromWire(message);
+  EXPECT_EQ(back.id, state.id);
+  EXPECT_EQ(back.position, state.position);
+  EXPECT_EQ(back.angle, state.angle);
+  EXPECT_EQ(back.linearVelocity, state.linearVelocity);
+  EXPECT_EQ(back.angularVelocity, state.angularVelocity);
+  EXPECT_EQ(back.awake, state.awake);
+}
+
+TEST(Convert, PolygonShapeRoundTripKeepsVerticesAndNormals) {
+  const Shape box = Shape::makePolygon(makeRegularPolygon(6, 0.75f));
+  v1::Shape message;
+  toWire(box, &message);
+  ASSERT_EQ(message.polygon().vertices_size(), 6);
+  const auto back = shapeFromWire(message);
+  ASSERT_TRUE(back.ok()) << back.error;
+  ASSERT_EQ(back.value->type, ShapeType::Polygon);
+  ASSERT_EQ(back.value->polygon.count, 6);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(back.value->polygon.vertices[i], box.polygon.vertices[i]);
+    EXPECT_NEAR(back.value->polygon.normals[i].x(), box.polygon.normals[i].x(), 1e-6);
+    EXPECT_NEAR(back.value->polygon.normals[i].y(), box.polygon.normals[i].y(), 1e-6);
+  }
+}
+
+TEST(Convert, ShapeFromWireRefusesBadVertexCountsAndEmptyShapes) {
+  v1::Shape message;
+  EXPECT_FALSE(shapeFromWire(message).ok());
+  for (int i = 0; i < 17; ++i) message.mutable_polygon()->add_vertices();
+  EXPECT_NE(shapeFromWire(message).error.find("17 vertices"), std::string::npos);
+}
+
+TEST(Convert, PresetInfoRoundTrip) {
+  PresetInfo preset;
+  preset.id = 3;
+  preset.title = "Polygon tutorial";
+  preset.explanation = {"Place three points", "then press P"};
+  preset.markers = {{Vec2(1, 2), 0.25f}};
+  preset.drawingAllowed = true;
+  v1::PresetInfo message;
+  toWire(preset, &message);
+  const PresetInfo back = presetFromWire(message);
+  EXPECT_EQ(back.id, 3);
+  EXPECT_EQ(back.title, preset.title);
+  EXPECT_EQ(back.explanation, preset.explanation);
+  ASSERT_EQ(back.markers.size(), 1u);
+  EXPECT_EQ(back.markers[0].center, Vec2(1, 2));
+  EXPECT_EQ(back.markers[0].radius, 0.25f);
+  EXPECT_TRUE(back.drawingAllowed);
+}
+
+}  // namespace
+}  // namespace impulse::wire

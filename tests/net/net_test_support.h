@@ -1,0 +1,61 @@
+#pragma once
+// Shared helpers of the integration tests.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "impulse/client/client.h"
+#include "impulse/client/commands.h"
+#include "server_process.h"
+
+namespace impulse::net_test {
+
+inline client::ConnectOptions localClient(std::uint16_t port, std::string name = "test",
+                                          bool wantSnapshots = true) {
+  client::ConnectOptions options;
+  options.port = port;
+  options.name = std::move(name);
+  options.wantSnapshots = wantSnapshots;
+  options.timeout = milliseconds(10000);
+  return options;
+}
+
+/// Sends every command first, then awaits every reply (one tick in all).
+inline std::vector<v1::ServerMessage> requestAll(client::Client& client,
+                                                 const std::vector<v1::ClientMessage>& commands) {
+  std::vector<std::uint64_t> ids;
+  for (const auto& command : commands) ids.push_back(client.send(command));
+  std::vector<v1::ServerMessage> replies;
+  for (const auto id : ids) {
+    auto reply = client.awaitReply(id, milliseconds(20000));
+    if (!reply) throw client::ConnectionError("no reply to " + std::to_string(id));
+    replies.push_back(std::move(*reply));
+  }
+  return replies;
+}
+
+/// A 50 x 40 grid of small circles (2000 bodies) inside the sandbox. With
+/// `rising`, they ignore gravity and drift upwards together at 1 m/s: awake,
+/// never touching, for as long as a test runs.
+inline std::vector<v1::ClientMessage> circleGrid(bool rising) {
+  std::vector<v1::ClientMessage> commands;
+  client::SpawnOptions options;
+  options.ignoreGravity = rising;
+  options.velocityY = rising ? 1.0 : 0.0;
+  for (int row = 0; row < 40; ++row) {
+    for (int column = 0; column < 50; ++column) {
+      commands.push_back(
+          client::spawnCircle({1.2 + 0.45 * column, 1.5 + 0.42 * row}, 0.18, options));
+    }
+  }
+  return commands;
+}
+
+inline const v1::CommandResult& result(const v1::ServerMessage& reply) {
+  EXPECT_TRUE(reply.has_command_result()) << reply.message_case();
+  return reply.command_result();
+}
+
+}  // namespace impulse::net_test

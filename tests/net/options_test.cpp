@@ -1,0 +1,74 @@
+// impulse-server flags: defaults, both spellings, and range errors.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "impulse/server/options.h"
+
+namespace impulse::server {
+namespace {
+
+ParsedOptions parse(std::vector<std::string_view> args) { return parseOptions(args); }
+
+TEST(ServerOptions, DefaultsMatchTheIssue) {
+  const auto parsed = parse({});
+  ASSERT_TRUE(parsed.options);
+  EXPECT_EQ(parsed.options->bind, "127.0.0.1");
+  EXPECT_EQ(parsed.options->port, 7777);
+  EXPECT_EQ(parsed.options->tickHz, 60);
+  EXPECT_EQ(parsed.options->snapshotHz, 30);
+  EXPECT_EQ(parsed.options->preset, 0);
+  EXPECT_FALSE(parsed.options->paused);
+  EXPECT_EQ(parsed.options->maxFrameBytes, std::size_t(1) << 20);
+}
+
+TEST(ServerOptions, AcceptsSeparateAndInlineValues) {
+  const auto parsed = parse({"--port", "0", "--tick-hz=120", "--snapshot-hz", "20", "--paused",
+                             "--preset=9", "--bind", "0.0.0.0", "--max-clients", "3",
+                             "--max-bodies", "500", "--max-frame-bytes", "4096", "--substeps",
+                             "8", "--stall-timeout", "2.5"});
+  ASSERT_TRUE(parsed.options) << parsed.error;
+  const auto& o = *parsed.options;
+  EXPECT_EQ(o.port, 0);
+  EXPECT_EQ(o.tickHz, 120);
+  EXPECT_EQ(o.snapshotHz, 20);
+  EXPECT_TRUE(o.paused);
+  EXPECT_EQ(o.preset, 9);
+  EXPECT_EQ(o.bind, "0.0.0.0");
+  EXPECT_EQ(o.maxClients, 3);
+  EXPECT_EQ(o.maxBodies, 500);
+  EXPECT_EQ(o.maxFrameBytes, 4096u);
+  EXPECT_EQ(o.subSteps, 8);
+  EXPECT_EQ(o.stallTimeoutSeconds, 2.5);
+}
+
+TEST(ServerOptions, RefusesBadValuesWithTheFlagName) {
+  const std::vector<std::pair<std::vector<std::string_view>, std::string>> cases = {
+      {{"--port", "70000"}, "--port"},
+      {{"--tick-hz", "0"}, "--tick-hz"},
+      {{"--tick-hz", "abc"}, "--tick-hz"},
+      {{"--preset", "11"}, "--preset"},
+      {{"--snapshot-hz", "90"}, "--snapshot-hz may not exceed --tick-hz"},
+      {{"--port"}, "--port needs a value"},
+      {{"--paused=yes"}, "--paused takes no value"},
+      {{"--frobnicate"}, "unknown option '--frobnicate'"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const auto parsed = parse(args);
+    EXPECT_FALSE(parsed.options) << expected;
+    EXPECT_NE(parsed.error.find(expected), std::string::npos) << parsed.error;
+  }
+}
+
+TEST(ServerOptions, HelpListsEveryFlag) {
+  EXPECT_TRUE(parse({"--help"}).help);
+  const std::string text = usage();
+  for (const char* flag : {"--bind", "--port", "--tick-hz", "--snapshot-hz", "--substeps",
+                           "--preset", "--paused", "--max-clients", "--max-bodies",
+                           "--max-frame-bytes", "--help"}) {
+    EXPECT_NE(text.find(flag), std::string::npos) << flag;
+  }
+}
+
+}  // namespace
+}  // namespace impulse::server

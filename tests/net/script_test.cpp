@@ -1,0 +1,97 @@
+// The impulse-cli grammar: each command's message, and errors that say what
+// was expected and what was wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "script.h"
+
+namespace impulse::cli {
+namespace {
+
+ScriptCommand parseOk(std::string_view line) {
+  auto parsed = parseScriptLine(line);
+  EXPECT_TRUE(parsed.error.empty()) << line << ": " << parsed.error;
+  EXPECT_TRUE(parsed.command.has_value()) << line;
+  return parsed.command.value_or(ScriptCommand{});
+}
+
+std::string parseError(std::string_view line) {
+  const auto parsed = parseScriptLine(line);
+  EXPECT_FALSE(parsed.command.has_value()) << line;
+  return parsed.error;
+}
+
+TEST(CliScript, BlankAndCommentLinesAreSkipped) {
+  for (const char* line : {"", "   ", "# a comment", "\t# indented comment", "\r"}) {
+    const auto parsed = parseScriptLine(line);
+    EXPECT_FALSE(parsed.command.has_value()) << line;
+    EXPECT_TRUE(parsed.error.empty()) << line;
+  }
+}
+
+TEST(CliScript, CircleWithFlagsInAnyOrder) {
+  const auto command = parseOk("circle 1.5 -2 0.25 nograv RUBBER static  # trailing comment");
+  const auto& spawn = command.message.spawn_circle();
+  EXPECT_EQ(spawn.center().x(), 1.5);
+  EXPECT_EQ(spawn.center().y(), -2);
+  EXPECT_EQ(spawn.radius(), 0.25);
+  EXPECT_EQ(spawn.options().material(), v1::RUBBER);
+  EXPECT_TRUE(spawn.options().is_static());
+  EXPECT_TRUE(spawn.options().ignore_gravity());
+}
+
+TEST(CliScript, PolygonTakesPairsThenFlags) {
+  const auto command = parseOk("polygon 0 0 1 0 1 1 0 1 ice");
+  const auto& spawn = command.message.spawn_polygon();
+  ASSERT_EQ(spawn.vertices_size(), 4);
+  EXPECT_EQ(spawn.vertices(2).x(), 1);
+  EXPECT_EQ(spawn.vertices(2).y(), 1);
+  EXPECT_EQ(spawn.options().material(), v1::ICE);
+}
+
+TEST(CliScript, EveryCommandBuildsItsMessage) {
+  EXPECT_EQ(parseOk("preset 9 metal").message.load_preset().preset(), 9);
+  EXPECT_EQ(parseOk("preset 9 metal").message.load_preset().material(), v1::METAL);
+  EXPECT_TRUE(parseOk("pause").message.set_paused().paused());
+  EXPECT_FALSE(parseOk("resume").message.set_paused().paused());
+  EXPECT_EQ(parseOk("step 120").message.step().ticks(), 120u);
+  EXPECT_EQ(parseOk("gravity 0 -3.5").message.set_gravity().gravity().y(), -3.5);
+  EXPECT_EQ(parseOk("nudge 1 0").message.nudge_gravity().delta().x(), 1);
+  EXPECT_TRUE(parseOk("reset-gravity").message.has_reset_gravity());
+  EXPECT_TRUE(parseOk("clear").message.has_clear());
+  EXPECT_EQ(parseOk("remove 7").message.remove_body().body_id(), 7u);
+  EXPECT_EQ(parseOk("query 8").message.query_body().body_id(), 8u);
+  const auto impulse = parseOk("impulse 3 1 2 4 5").message.apply_impulse();
+  EXPECT_EQ(impulse.body_id(), 3u);
+  EXPECT_EQ(impulse.point().y(), 5);
+  EXPECT_FALSE(parseOk("impulse 3 1 2").message.apply_impulse().has_point());
+  EXPECT_EQ(parseOk("bodies").kind, ScriptCommand::Kind::Bodies);
+  EXPECT_EQ(parseOk("wait-snapshot").kind, ScriptCommand::Kind::WaitSnapshot);
+  EXPECT_TRUE(parseOk("ping").message.has_ping());
+}
+
+TEST(CliScript, NonFiniteNumbersAreSentForTheServerToRefuse) {
+  EXPECT_TRUE(std::isnan(parseOk("circle nan 1 1").message.spawn_circle().center().x()));
+  EXPECT_TRUE(std::isinf(parseOk("gravity inf 0").message.set_gravity().gravity().x()));
+}
+
+TEST(CliScript, ErrorsNameTheUsageAndTheProblem) {
+  EXPECT_EQ(parseError("circle 1 2"),
+            "circle X Y R [MATERIAL] [static] [nograv]: missing argument 3");
+  EXPECT_EQ(parseError("circle 1 x 3"),
+            "circle X Y R [MATERIAL] [static] [nograv]: 'x' is not a number");
+  EXPECT_EQ(parseError("circle 1 2 3 glass"),
+            "circle X Y R [MATERIAL] [static] [nograv]: unexpected 'glass' (material, static or "
+            "nograv)");
+  EXPECT_EQ(parseError("step"), "step N (1 or more ticks): missing argument 1");
+  EXPECT_EQ(parseError("step 0"), "step N (1 or more ticks): tick count out of range");
+  EXPECT_EQ(parseError("polygon 1 2 3"),
+            "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]: vertex 2 has no y");
+  EXPECT_EQ(parseError("query -1"), "query ID: body id -1 out of range");
+  EXPECT_EQ(parseError("pause now"), "pause: unexpected 'now'");
+  EXPECT_EQ(parseError("jump 3"), "unknown command 'jump'");
+}
+
+}  // namespace
+}  // namespace impulse::cli

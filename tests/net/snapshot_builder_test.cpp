@@ -1,0 +1,144 @@
+// Snapshots: deltas leave out what did not change, and a mirror that applies
+// them in order (from the start, or from a full snapshot taken at any time)
+// always equals the world exactly.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "impulse/client/world_mirror.h"
+#include "impulse/server/simulation.h"
+#include "impulse/wire/framing.h"
+
+namespace impulse::server {
+namespace {
+
+v1::Snapshot decode(const SharedFrame& frame) {
+  wire::FrameReader reader(std::size_t(64) << 20);
+  const auto result = reader.feed(std::span<const char>(frame->data(), frame->size()));
+  EXPECT_EQ(result.status, wire::FrameReader::Status::Frame);
+  EXPECT_EQ(result.consumed, frame->size());
+  v1::ServerMessage message;
+  EXPECT_TRUE(wire::parseFrame(reader.frame(), message));
+  EXPECT_TRUE(message.has_snapshot());
+  return message.snapshot();
+}
+
+void expectMirrorEqualsWorld(const client::WorldMirror& mirror, const World& world) {
+  const auto ids = world.bodyIds();
+  ASSERT_EQ(mirror.bodies().size(), ids.size());
+  for (const BodyId id : ids) {
+    const auto* body = mirror.find(id);
+    ASSERT_NE(body, nullptr) << id.value;
+    const auto state = *world.bodyState(id);
+    EXPECT_EQ(body->state.position, state.position) << id.value;
+    EXPECT_EQ(body->state.angle, state.angle) << id.value;
+    EXPECT_EQ(body->state.linearVelocity, state.linearVelocity) << id.value;
+    EXPECT_EQ(body->state.angularVelocity, state.angularVelocity) << id.value;
+    EXPECT_EQ(body->state.awake, state.awake) << id.value;
+    EXPECT_EQ(body->shape.type, world.bodyDescription(id)->shape.type);
+  }
+}
+
+SimulationSettings pausedSandbox() {
+  SimulationSettings settings;
+  settings.paused = true;
+  return settings;
+}
+
+TEST(SnapshotBuilder, FullSnapshotListsEveryBodyWithThePreset) {
+  Simulation sim(pausedSandbox());
+  const auto snapshot = decode(sim.snapshots().full(sim.meta()));
+  EXPECT_TRUE(snapshot.full());
+  EXPECT_EQ(snapshot.preset().id(), 0);
+  EXPECT_FALSE(snapshot.preset().title().empty());
+  EXPECT_EQ(snapshot.added_size(), sim.world().bodyCount());
+  EXPECT_EQ(snapshot.bodies_size(), sim.world().bodyCount());
+}
+
+TEST(SnapshotBuilder, DeltaLeavesOutSleepingAndUnchangedBodies) {
+  Simulation sim(pausedSandbox());
+  sim.snapshots().takeDelta(sim.meta());  // the preset's full snapshot
+  const auto ball = sim.world().createCircle(Vec2(5, 5), 0.5f);
+  ASSERT_TRUE(ball.ok()) << ball.error;
+  sim.snapshots().bodyAdded(ball.id);
+  sim.step();
+  auto delta = decode(sim.snapshots().takeDelta(sim.meta()));
+  EXPECT_FALSE(delta.full());
+  ASSERT_EQ(delta.added_size(), 1);
+  EXPECT_EQ(delta.added(0).id(), ball.id.value);
+  // The static walls never appear; the falling ball does.
+  ASSERT_EQ(delta.bodies_size(), 1);
+  EXPECT_EQ(delta.bodies(0).id(), ball.id.value);
+
+  // Once everything sleeps, a step sends no body at all.
+  for (int i = 0; i < 600 && sim.world().awakeBodyCount() > 0; ++i) sim.step();
+  ASSERT_EQ(sim.world().awakeBodyCount(), 0);
+  sim.snapshots().takeDelta(sim.meta());
+  sim.step();
+  delta = decode(sim.snapshots().takeDelta(sim.meta()));
+  EXPECT_EQ(delta.bodies_size(), 0);
+  EXPECT_EQ(delta.added_size(), 0);
+}
+
+TEST(SnapshotBuilder, ReplacedWorldGivesAFullSnapshotWithTheNewPreset) {
+  Simulation sim(pausedSandbox());
+  sim.snapshots().takeDelta(sim.meta());
+  ASSERT_TRUE(sim.loadPreset(3, Material::Solid));
+  const auto snapshot = decode(sim.snapshots().takeDelta(sim.meta()));
+  EXPECT_TRUE(snapshot.full());
+  EXPECT_EQ(snapshot.preset().id(), 3);
+  EXPECT_GT(snapshot.preset().markers_size(), 0);
+}
+
+TEST(SnapshotBuilder, MirrorsFollowTheWorldExactlyThroughRandomChanges) {
+  Simulation sim(pausedSandbox());
+  client::WorldMirror fromStart;
+  ASSERT_TRUE(fromStart.apply(decode(sim.snapshots().takeDelta(sim.meta()))));
+  client::WorldMirror lateJoiner;
+  bool joined = false;
+  std::mt19937 random(11);
+  std::vector<BodyId> live;
+  for (int round = 0; round < 120; ++round) {
+    const int action = int(random() % 10);
+    if (action < 4) {
+      const auto created = sim.world().createCircle(
+          Vec2(2 + float(random() % 20), 3 + float(random() % 12)), 0.3f + 0.1f * (random() % 4));
+      if (created.ok()) {
+        sim.snapshots().bodyAdded(created.id);
+        live.push_back(created.id);
+      }
+    } else if (action == 4 && !live.empty()) {
+      const std::size_t index = random() % live.size();
+      ASSERT_TRUE(sim.world().destroyBody(live[index]));
+      sim.snapshots().bodyRemoved(live[index]);
+      live.erase(live.begin() + std::ptrdiff_t(index));
+    } else if (action == 5 && !live.empty()) {
+      const BodyId id = live[random() % live.size()];
+      ASSERT_TRUE(sim.world().applyImpulse(id, Vec2(50, 80)));
+      sim.snapshots().bodyChanged(id);
+    } else if (action == 6 && round % 40 == 6) {
+      sim.clear();
+      live.clear();
+    } else {
+      sim.step();
+    }
+    // Between broadcasts, a client joins with a full snapshot of "now".
+    if (!joined && round == 37) {
+      ASSERT_TRUE(lateJoiner.apply(decode(sim.snapshots().full(sim.meta()))));
+      joined = true;
+    }
+    if (round % 3 == 2) {
+      const auto delta = decode(sim.snapshots().takeDelta(sim.meta()));
+      std::string error;
+      ASSERT_TRUE(fromStart.apply(delta, &error)) << error;
+      expectMirrorEqualsWorld(fromStart, sim.world());
+      if (joined) {
+        ASSERT_TRUE(lateJoiner.apply(delta, &error)) << error;
+        expectMirrorEqualsWorld(lateJoiner, sim.world());
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace impulse::server
