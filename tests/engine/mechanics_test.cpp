@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <ostream>
 #include <string>
 
 #include "impulse/world.h"
@@ -199,6 +200,10 @@ struct HeadOnCase {
   Material moving;
   Material resting;
 };
+
+void PrintTo(const HeadOnCase& c, std::ostream* os) {
+  *os << materialProperties(c.moving).name << " onto " << materialProperties(c.resting).name;
+}
 
 class HeadOnCollision : public ::testing::TestWithParam<HeadOnCase> {};
 
