@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <type_traits>
 
 namespace impulse {
 
@@ -79,33 +80,36 @@ struct WideBody {
   F4 dpx, dpy, dqc, dqs;
 };
 
-WideBody gather(std::span<const SolverState> states, const std::int32_t index[kLanes]) {
-  const SolverState& s0 = states[index[0]];
-  const SolverState& s1 = states[index[1]];
-  const SolverState& s2 = states[index[2]];
-  const SolverState& s3 = states[index[3]];
-  auto lanes = [&](auto field) { return simd::set(field(s0), field(s1), field(s2), field(s3)); };
-  return {lanes([](const SolverState& s) { return s.linearVelocity.x(); }),
-          lanes([](const SolverState& s) { return s.linearVelocity.y(); }),
-          lanes([](const SolverState& s) { return s.angularVelocity; }),
-          lanes([](const SolverState& s) { return s.deltaPosition.x(); }),
-          lanes([](const SolverState& s) { return s.deltaPosition.y(); }),
-          lanes([](const SolverState& s) { return s.deltaRotation.c; }),
-          lanes([](const SolverState& s) { return s.deltaRotation.s; })};
+// SolverState is eight floats: (vx, vy, w, dpx) then (dpy, dqc, dqs, pad).
+// Four bodies' halves are loaded as rows and transposed into lanes.
+static_assert(sizeof(SolverState) == 8 * sizeof(float) && std::is_standard_layout_v<SolverState>);
+
+const float* floatsOf(const SolverState& state) { return reinterpret_cast<const float*>(&state); }
+float* floatsOf(SolverState& state) { return reinterpret_cast<float*>(&state); }
+
+[[gnu::always_inline]] inline WideBody gather(std::span<const SolverState> states, const std::int32_t index[kLanes]) {
+  const float* s0 = floatsOf(states[index[0]]);
+  const float* s1 = floatsOf(states[index[1]]);
+  const float* s2 = floatsOf(states[index[2]]);
+  const float* s3 = floatsOf(states[index[3]]);
+  __m128 a0 = _mm_loadu_ps(s0), a1 = _mm_loadu_ps(s1), a2 = _mm_loadu_ps(s2), a3 = _mm_loadu_ps(s3);
+  __m128 b0 = _mm_loadu_ps(s0 + 4), b1 = _mm_loadu_ps(s1 + 4), b2 = _mm_loadu_ps(s2 + 4),
+         b3 = _mm_loadu_ps(s3 + 4);
+  _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+  _MM_TRANSPOSE4_PS(b0, b1, b2, b3);
+  return {{a0}, {a1}, {a2}, {a3}, {b0}, {b1}, {b2}};
 }
 
-// Writes velocities back. Lanes on the static dummy write the zero they read
-// (their inverse mass is zero), so repeated writes to state 0 are harmless.
-void scatter(std::span<SolverState> states, const std::int32_t index[kLanes], const WideBody& body) {
-  alignas(16) float vx[kLanes], vy[kLanes], w[kLanes];
-  simd::store(vx, body.vx);
-  simd::store(vy, body.vy);
-  simd::store(w, body.w);
-  for (int lane = 0; lane < kLanes; ++lane) {
-    SolverState& state = states[index[lane]];
-    state.linearVelocity = Vec2(vx[lane], vy[lane]);
-    state.angularVelocity = w[lane];
-  }
+// Writes velocities back (the first four floats, delta position unchanged).
+// Lanes on the static dummy write the zeros they read (their inverse mass is
+// zero), so repeated writes to state 0 are harmless.
+[[gnu::always_inline]] inline void scatter(std::span<SolverState> states, const std::int32_t index[kLanes], const WideBody& body) {
+  __m128 r0 = body.vx.v, r1 = body.vy.v, r2 = body.w.v, r3 = body.dpx.v;
+  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+  _mm_storeu_ps(floatsOf(states[index[0]]), r0);
+  _mm_storeu_ps(floatsOf(states[index[1]]), r1);
+  _mm_storeu_ps(floatsOf(states[index[2]]), r2);
+  _mm_storeu_ps(floatsOf(states[index[3]]), r3);
 }
 
 // ---- rows --------------------------------------------------------------------
@@ -271,15 +275,20 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
 
 void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   const F4 threshold = simd::splat(-context.restitutionThreshold);
+  // Same rule as the scalar pass: only points that approached fast and
+  // pushed, on contacts that bounce at all.
+  auto bouncing = [&](const WideConstraint& c, const WidePoint& p) {
+    return simd::both(simd::less(p.relativeVelocity, threshold),
+                      simd::both(simd::notEqual(p.totalNormalImpulse, simd::zero()),
+                                 simd::notEqual(c.restitution, simd::zero())));
+  };
   for (WideConstraint& c : set.bundles) {
+    // Resting contacts never bounce: skip their bodies entirely.
+    if (!simd::any(bouncing(c, c.points[0])) && !simd::any(bouncing(c, c.points[1]))) continue;
     WideBody a = gather(context.states, c.stateA);
     WideBody b = gather(context.states, c.stateB);
     for (WidePoint& p : c.points) {
-      // Same rule as the scalar pass: only points that approached fast and
-      // pushed, on contacts that bounce at all.
-      F4 bounces = simd::both(simd::less(p.relativeVelocity, threshold),
-                              simd::both(simd::notEqual(p.totalNormalImpulse, simd::zero()),
-                                         simd::notEqual(c.restitution, simd::zero())));
+      F4 bounces = bouncing(c, p);
       Relative dv = relativeVelocity(a, b, p);
       F4 vn = dv.vx * c.normalX + dv.vy * c.normalY;
       F4 impulse = -(p.normalMass * (vn + c.restitution * p.relativeVelocity));

@@ -6,6 +6,7 @@
 // deterministic.
 
 #include <emmintrin.h>
+#include <xmmintrin.h>
 
 namespace impulse::simd {
 
@@ -33,6 +34,8 @@ inline F4 both(F4 a, F4 b) { return {_mm_and_ps(a.v, b.v)}; }
 inline F4 select(F4 mask, F4 a, F4 b) {
   return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
 }
+/// True when any lane of a mask is set.
+inline bool any(F4 mask) { return _mm_movemask_ps(mask.v) != 0; }
 inline F4 load(const float* p) { return {_mm_loadu_ps(p)}; }
 inline void store(float* p, F4 a) { _mm_storeu_ps(p, a.v); }
 inline F4 set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
