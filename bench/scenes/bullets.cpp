@@ -1,6 +1,8 @@
 // Small fast discs (0.1 m across) shot at a 0.2 m wall at 50, 200 and
 // 400 m/s, five at each speed, no gravity: how many end up beyond the wall.
 
+#include <cstdio>
+
 #include "scene_helpers.h"
 
 namespace bench {
@@ -53,7 +55,9 @@ class BulletScene final : public Scene {
         int count = 0;
         for (int i = 0; i < kPerSpeed; ++i) count += through_[1 + s * kPerSpeed + std::size_t(i)] ? 1 : 0;
         metrics[0].value += count;
-        metrics.push_back({"@" + std::to_string(int(kSpeeds[s])) + " m/s", double(count)});
+        char label[24];
+        std::snprintf(label, sizeof label, "@%d m/s", int(kSpeeds[s]));
+        metrics.push_back({label, double(count)});
       }
       return metrics;
     }

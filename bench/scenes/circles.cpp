@@ -46,7 +46,7 @@ class ConfinedScene final : public Scene {
     }
     return scene;
   }
-  RunLength length() const override { return quick_ ? RunLength{0, 5, 1, 5} : RunLength{0, 300, 3, 10}; }
+  RunLength length() const override { return quick_ ? RunLength{0, 5, 1, 5} : RunLength{0, 300, 3, 5}; }
   std::unique_ptr<Measure> measure(const SceneDescription& scene, Engine) const override {
     return std::make_unique<Watch>(scene);
   }
@@ -59,9 +59,10 @@ class ConfinedScene final : public Scene {
     void observe(const EngineAdapter& engine, int) override {
       last_ = penetration_.observe(engine);
       maxEnergy_ = std::max(maxEnergy_, kineticEnergy(scene_, engine, bodies_));
+      for (int i : bodies_) maxSpeed_ = std::max(maxSpeed_, speed(engine.pose(i)));
     }
     std::vector<Metric> results(const EngineAdapter&) override {
-      return {{"end pen m", last_}, {"max KE J", maxEnergy_}};
+      return {{"end pen m", last_}, {"max KE J", maxEnergy_}, {"max speed m/s", maxSpeed_}};
     }
 
    private:
@@ -70,6 +71,7 @@ class ConfinedScene final : public Scene {
     PeakPenetration penetration_;
     double last_ = 0;
     double maxEnergy_ = 0;
+    double maxSpeed_ = 0;
   };
   bool quick_;
 };

@@ -221,8 +221,8 @@ TEST(ServerSession, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
       {"impulse on static", client::applyImpulse(wall, {1, 0}), "is static"},
       {"preset too high", client::loadPreset(11), "preset 11 does not exist"},
       {"preset negative", client::loadPreset(-1), "preset -1 does not exist"},
-      {"step zero", client::step(0), "ticks must be 1..3600"},
-      {"step too long", client::step(100000), "ticks must be 1..3600"},
+      {"step zero", client::step(0), "ticks must be 1..600"},
+      {"step too long", client::step(100000), "ticks must be 1..600"},
       {"second hello", hello, "hello was already received"},
       {"no command", empty, "carries no command"},
   };

@@ -13,6 +13,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -85,7 +86,9 @@ ServerProcess::ServerProcess(std::vector<std::string> args) {
 
 ServerProcess::~ServerProcess() {
   stop();
-  if (::testing::Test::HasFailure()) {
+  // Also while an exception from the test body unwinds (gtest records that
+  // failure only afterwards).
+  if (::testing::Test::HasFailure() || std::uncaught_exceptions() > 0) {
     std::fprintf(stderr, "---- impulse-server log ----\n%s----\n", log().c_str());
   }
   unlink(logPath_.c_str());

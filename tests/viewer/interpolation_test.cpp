@@ -60,9 +60,9 @@ TEST(SnapshotBuffer, SteadyStream_InterpolatesPositionsLinearly) {
 TEST(SnapshotBuffer, UnevenSpacing_InterpolatesByServerTime) {
   // Jitter in arrival does not matter; uneven server times (skipped ticks) do.
   SnapshotBuffer buffer({kInterval});
-  buffer.push(frame(0.0, {moving(1, 0)}));
-  buffer.push(frame(0.1, {moving(1, 1)}));
-  buffer.push(frame(0.125, {moving(1, 2)}));
+  buffer.push(frame(0.0, {moving(1, 0, 10)}));
+  buffer.push(frame(0.1, {moving(1, 1, 10)}));
+  buffer.push(frame(0.125, {moving(1, 2, 40)}));
   std::vector<BodySample> out;
   buffer.sample(0.075, out);
   EXPECT_NEAR(out[0].position.x(), 0.75, 1e-6);

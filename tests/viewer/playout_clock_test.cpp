@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 
 namespace impulse::viewer {
@@ -9,11 +10,10 @@ namespace {
 
 constexpr double kInterval = 1.0 / 30.0;
 
-// Feeds snapshots produced every interval, each arriving `latency` plus a
-// delay from `jitter` later, and renders at 120 Hz in between. Returns the
-// smallest step of the rendered time between frames and checks it never
-// goes backwards.
-struct Run {
+// Feeds snapshots produced every interval, each arriving 2 ms plus a delay
+// from `jitter` later, in order as TCP delivers, and renders at 120 Hz in
+// between, recording the smallest and largest step of the rendered time.
+struct PlayoutRun {
   double minStep = 1e9;
   double maxStep = 0;
   double lastRender = 0;
@@ -21,10 +21,10 @@ struct Run {
 };
 
 template <class Jitter>
-Run simulate(PlayoutClock& clock, double seconds, Jitter jitter, double start = 0) {
-  Run run;
+PlayoutRun simulate(PlayoutClock& clock, double seconds, Jitter jitter, double start = 0) {
+  PlayoutRun run;
   double nextSnapshot = start;
-  double previous = -1;
+  std::optional<double> previous;
   std::vector<std::pair<double, double>> inFlight;  // arrival, server time
   for (double now = start; now < start + seconds; now += 1.0 / 120) {
     while (nextSnapshot <= now) {
@@ -41,8 +41,9 @@ Run simulate(PlayoutClock& clock, double seconds, Jitter jitter, double start = 
       return true;
     });
     const double rendered = clock.renderTime(now);
-    if (previous >= 0) {
-      const double step = rendered - previous;
+    if (!clock.started()) continue;
+    if (previous) {
+      const double step = rendered - *previous;
       run.minStep = std::min(run.minStep, step);
       run.maxStep = std::max(run.maxStep, step);
     }
@@ -54,7 +55,7 @@ Run simulate(PlayoutClock& clock, double seconds, Jitter jitter, double start = 
 
 TEST(PlayoutClock, SteadyStream_DelayIsThreeIntervals_AndTimeAdvancesSmoothly) {
   PlayoutClock clock({kInterval});
-  const Run run = simulate(clock, 5, [] { return 0.0; });
+  const PlayoutRun run = simulate(clock, 5, [] { return 0.0; });
   EXPECT_NEAR(clock.delay(), 3 * kInterval, 1e-9);
   EXPECT_NEAR(run.minStep, 1.0 / 120, 1e-3);
   EXPECT_NEAR(run.maxStep, 1.0 / 120, 1e-3);
@@ -67,7 +68,7 @@ TEST(PlayoutClock, Jitter_GrowsTheDelay_AndRenderedTimeStaysMonotonic) {
   PlayoutClock clock({kInterval});
   std::mt19937 random(7);
   std::uniform_real_distribution<double> late(0, 0.120);
-  const Run run = simulate(clock, 6, [&] { return late(random); });
+  const PlayoutRun run = simulate(clock, 6, [&] { return late(random); });
   EXPECT_GT(clock.delay(), 0.120);
   EXPECT_LE(clock.delay(), 12 * kInterval);
   EXPECT_GT(run.minStep, 0.0);
@@ -82,7 +83,7 @@ TEST(PlayoutClock, Stall_DoesNotFreezeOrJumpTheClock) {
   // A 250 ms stall every two seconds: the clock keeps running at about real
   // speed (steering is bounded), it never stops or runs backwards.
   int count = 0;
-  const Run run = simulate(
+  const PlayoutRun run = simulate(
       clock, 4, [&] { return (count++ % 60) == 0 ? 0.25 : 0.0; }, 3);
   EXPECT_GT(run.minStep, (1.0 / 120) * 0.9);
   EXPECT_LT(run.maxStep, (1.0 / 120) * 1.1);

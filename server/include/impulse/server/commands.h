@@ -8,9 +8,9 @@
 namespace impulse::server {
 
 struct CommandLimits {
-  /// Step.ticks range: one minute of simulated time at 60 Hz keeps a Step
-  /// from stalling every other client for long.
-  std::uint32_t maxStepTicks = 3600;
+  /// Step.ticks range: ten seconds of simulated time at 60 Hz, so one Step
+  /// holds the server's thread for at most a second or two.
+  std::uint32_t maxStepTicks = 600;
   /// Largest gravity component, m/s^2.
   double maxGravity = 1000;
 };

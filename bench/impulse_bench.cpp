@@ -1,0 +1,97 @@
+// Speed against error, Impulse side by side with Box2D 2.4.1 and Chipmunk 7:
+// every scene in every engine setting, a table per scene, ratio lines, and
+// optionally a CSV file and an SVG plot per scene.
+//
+//   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART] [--engine NAME]
+//
+// --scene and --engine narrow the run (for profiling one engine on one scene).
+
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "report.h"
+#include "svg_plot.h"
+
+namespace {
+
+struct Options {
+  bool quick = false;
+  std::string csv;
+  std::string plotDirectory;
+  std::string sceneFilter;
+  std::string engineFilter;
+};
+
+[[noreturn]] void usage(const char* program) {
+  std::fprintf(stderr, "usage: %s [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART] [--engine NAME]\n", program);
+  std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) usage(argv[0]);
+      return argv[++i];
+    };
+    if (std::strcmp(argv[i], "--quick") == 0) options.quick = true;
+    else if (std::strcmp(argv[i], "--csv") == 0) options.csv = value();
+    else if (std::strcmp(argv[i], "--plot") == 0) options.plotDirectory = value();
+    else if (std::strcmp(argv[i], "--scene") == 0) options.sceneFilter = value();
+    else if (std::strcmp(argv[i], "--engine") == 0) options.engineFilter = value();
+    else usage(argv[0]);
+  }
+  return options;
+}
+
+std::string cpuModel() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options = parse(argc, argv);
+  std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  std::printf("impulse-bench%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "", date, cpuModel().c_str());
+  if (!options.plotDirectory.empty()) std::filesystem::create_directories(options.plotDirectory);
+
+  std::vector<bench::RunResult> all;
+  int failures = 0;
+  for (const auto& scene : bench::allScenes(options.quick)) {
+    if (scene->name().find(options.sceneFilter) == std::string::npos) continue;
+    const bench::SceneDescription description = scene->describe();
+    std::vector<bench::RunResult> results;
+    for (const bench::EngineSetting& setting : bench::allSettings()) {
+      if (!options.engineFilter.empty() && options.engineFilter != bench::engineName(setting.engine)) continue;
+      results.push_back(bench::runScene(*scene, description, setting));
+      if (results.back().failed) ++failures;
+    }
+    bench::printTable(stdout, results);
+    bench::printRatios(stdout, results);
+    std::fflush(stdout);
+    if (!options.plotDirectory.empty() && !bench::writeSvgPlot(options.plotDirectory, results)) {
+      std::fprintf(stderr, "cannot write a plot in %s\n", options.plotDirectory.c_str());
+      ++failures;
+    }
+    all.insert(all.end(), results.begin(), results.end());
+  }
+  bench::printDerived(stdout, all);
+  if (!options.csv.empty() && !bench::writeCsv(options.csv, all)) {
+    std::fprintf(stderr, "cannot write %s\n", options.csv.c_str());
+    ++failures;
+  }
+  if (failures > 0) std::fprintf(stderr, "%d run(s) failed\n", failures);
+  return failures > 0 ? 1 : 0;
+}

@@ -1,0 +1,15 @@
+#pragma once
+// One SVG per scene: ms/step (median) against the headline error, a point
+// per engine setting, so the speed-versus-error front shows at a glance.
+
+#include <string>
+#include <vector>
+
+#include "runner.h"
+
+namespace bench {
+
+/// Writes DIR/<scene>.svg; false when the file cannot be written.
+bool writeSvgPlot(const std::string& directory, const std::vector<RunResult>& results);
+
+}  // namespace bench

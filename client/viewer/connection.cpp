@@ -1,0 +1,141 @@
+#include "connection.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace impulse::viewer {
+
+namespace {
+
+constexpr double kPingInterval = 1.0;
+constexpr double kMaxBackoff = 2.0;
+// Connecting gives up after this; a dead host must not delay the retry loop.
+constexpr std::chrono::milliseconds kConnectTimeout{3000};
+
+}  // namespace
+
+Connection::Connection(client::ConnectOptions options, InterpolatedWorld& world,
+                       std::function<double()> now)
+    : options_(std::move(options)), world_(world), now_(std::move(now)) {
+  options_.wantSnapshots = true;
+  options_.timeout = std::min(options_.timeout, kConnectTimeout);
+  startConnecting();
+}
+
+// The pending future's destructor waits for a connection attempt in flight
+// (bounded by kConnectTimeout).
+Connection::~Connection() = default;
+
+void Connection::startConnecting() {
+  state_ = LinkState::Connecting;
+  pending_ = std::async(std::launch::async, [options = options_] {
+    return std::make_unique<client::Client>(options);
+  });
+}
+
+std::string Connection::describe() const {
+  if (state_ == LinkState::Lost) return lostReason_;
+  return options_.host + ":" + std::to_string(options_.port);
+}
+
+double Connection::retryIn() const { return std::max(0.0, retryAt_ - now_()); }
+
+void Connection::adopt(std::unique_ptr<client::Client> client) {
+  client_ = std::move(client);
+  state_ = LinkState::Connected;
+  backoff_ = 0.25;
+  ++connections_;
+  const double hz = client_->welcome().snapshot_hz();
+  world_.reset(hz > 0 ? 1.0 / hz : 1.0 / 30.0);
+  world_.seed(client_->mirror(), now_());
+  client_->onSnapshot([this](const v1::Snapshot& snapshot, std::size_t) {
+    world_.onSnapshot(client_->mirror(), snapshot, now_());
+    ++rateCount_;
+  });
+  nextPing_ = now_();
+  rateWindowStart_ = now_();
+  rateCount_ = 0;
+}
+
+void Connection::lose(const std::string& reason) {
+  std::fprintf(stderr, "impulse-viewer: %s\n", reason.c_str());
+  client_.reset();
+  awaiting_.clear();
+  pingId_.reset();
+  roundTripMs_ = -1;
+  snapshotRate_ = 0;
+  lostReason_ = reason;
+  state_ = LinkState::Lost;
+  retryAt_ = now_() + backoff_;
+  backoff_ = std::min(kMaxBackoff, backoff_ * 2);
+}
+
+void Connection::update() {
+  if (state_ == LinkState::Connecting) {
+    if (pending_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    try {
+      adopt(pending_.get());
+    } catch (const std::exception& error) {
+      lose(error.what());
+    }
+  }
+  if (state_ == LinkState::Lost) {
+    if (now_() >= retryAt_) startConnecting();
+    return;
+  }
+  try {
+    receive();
+    pingIfDue();
+  } catch (const client::ConnectionError& error) {
+    lose(error.what());
+  }
+}
+
+void Connection::receive() {
+  client_->poll();
+  for (auto it = awaiting_.begin(); it != awaiting_.end();) {
+    auto reply = client_->awaitReply(it->first, std::chrono::milliseconds(0));
+    if (!reply) {
+      ++it;
+      continue;
+    }
+    replies_.push_back({std::move(it->second), std::move(*reply)});
+    it = awaiting_.erase(it);
+  }
+  if (pingId_) {
+    if (auto pong = client_->awaitReply(*pingId_, std::chrono::milliseconds(0))) {
+      roundTripMs_ = (now_() - pingSentAt_) * 1000;
+      pingId_.reset();
+    }
+  }
+  const double now = now_();
+  if (now - rateWindowStart_ >= 1.0) {
+    snapshotRate_ = rateCount_ / (now - rateWindowStart_);
+    rateCount_ = 0;
+    rateWindowStart_ = now;
+  }
+}
+
+void Connection::pingIfDue() {
+  const double now = now_();
+  if (pingId_ || now < nextPing_) return;
+  pingSentAt_ = now;
+  pingId_ = client_->send(client::ping(std::uint64_t(now * 1e6)));
+  nextPing_ = now + kPingInterval;
+}
+
+bool Connection::send(v1::ClientMessage message, std::string what) {
+  if (state_ != LinkState::Connected) return false;
+  try {
+    const std::uint64_t id = client_->send(std::move(message));
+    awaiting_.emplace(id, std::move(what));
+    return true;
+  } catch (const client::ConnectionError& error) {
+    lose(error.what());
+    return false;
+  }
+}
+
+std::vector<Reply> Connection::takeReplies() { return std::exchange(replies_, {}); }
+
+}  // namespace impulse::viewer

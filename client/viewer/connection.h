@@ -1,0 +1,87 @@
+#pragma once
+/// The viewer's link to impulse-server: connects in the background (the
+/// window keeps drawing), reconnects after a loss with a growing pause, feeds
+/// every applied snapshot to the interpolated world, pings for latency and
+/// hands command replies back. Never blocks the frame loop.
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hud.h"
+#include "impulse/client/client.h"
+#include "interpolated_world.h"
+
+namespace impulse::viewer {
+
+/// A reply to a command the viewer sent, with what the command was.
+struct Reply {
+  std::string what;
+  v1::ServerMessage message;
+};
+
+class Connection {
+ public:
+  /// `now` gives local seconds (the frame loop's clock).
+  Connection(client::ConnectOptions options, InterpolatedWorld& world,
+             std::function<double()> now);
+  ~Connection();
+  Connection(const Connection&) = delete;
+  Connection& operator=(const Connection&) = delete;
+
+  /// Once per frame: progresses connecting, receives everything available.
+  void update();
+  /// Sends a command when connected; false (nothing sent) otherwise.
+  bool send(v1::ClientMessage message, std::string what);
+  /// Replies received since the last call.
+  std::vector<Reply> takeReplies();
+
+  LinkState state() const { return state_; }
+  bool connected() const { return state_ == LinkState::Connected; }
+  /// The connected client (its mirror holds the latest world), or null.
+  const client::Client* client() const { return client_.get(); }
+  /// Target address, or the reason the link was lost.
+  std::string describe() const;
+  double retryIn() const;
+  double roundTripMs() const { return roundTripMs_; }
+  double snapshotsPerSecond() const { return snapshotRate_; }
+  /// Connections made so far (reconnects included).
+  int connections() const { return connections_; }
+
+ private:
+  void startConnecting();
+  void adopt(std::unique_ptr<client::Client> client);
+  void lose(const std::string& reason);
+  void receive();
+  void pingIfDue();
+
+  client::ConnectOptions options_;
+  InterpolatedWorld& world_;
+  std::function<double()> now_;
+
+  LinkState state_ = LinkState::Connecting;
+  std::future<std::unique_ptr<client::Client>> pending_;
+  std::unique_ptr<client::Client> client_;
+  std::string lostReason_;
+  double retryAt_ = 0;
+  double backoff_ = 0.25;
+  int connections_ = 0;
+
+  std::map<std::uint64_t, std::string> awaiting_;
+  std::vector<Reply> replies_;
+  std::optional<std::uint64_t> pingId_;
+  double pingSentAt_ = 0;
+  double nextPing_ = 0;
+  double roundTripMs_ = -1;
+  double rateWindowStart_ = 0;
+  int rateCount_ = 0;
+  double snapshotRate_ = 0;
+};
+
+}  // namespace impulse::viewer

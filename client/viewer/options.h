@@ -1,0 +1,39 @@
+#pragma once
+/// Command line of impulse-viewer.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "impulse/client/client.h"
+
+namespace impulse::viewer {
+
+struct ViewerOptions {
+  client::ConnectOptions connect;
+  int width = 800;
+  int height = 600;
+  /// HUD font; IMPULSE_FONT in the environment overrides the built-in path.
+  std::string fontPath;
+  /// Load this preset once connected (scripts and screenshots).
+  std::optional<int> preset;
+  /// Save the window as a BMP after `frames` frames, then quit.
+  std::optional<std::string> screenshot;
+  /// Quit after this many frames (0: run until Esc or the window closes).
+  int frames = 0;
+  bool vsync = true;
+};
+
+struct ParsedViewerOptions {
+  std::optional<ViewerOptions> options;
+  bool help = false;
+  std::string error;
+};
+
+ParsedViewerOptions parseViewerOptions(std::span<const std::string_view> args);
+std::string viewerUsage();
+/// The font used when none is given: IMPULSE_FONT, else the built-in path.
+std::string defaultFontPath();
+
+}  // namespace impulse::viewer

@@ -1,0 +1,47 @@
+#include "options.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace impulse::viewer {
+namespace {
+
+ParsedViewerOptions parse(std::vector<std::string_view> args) { return parseViewerOptions(args); }
+
+TEST(ViewerOptions, DefaultsConnectToLocalPort7777InAn800x600Window) {
+  const auto parsed = parse({});
+  ASSERT_TRUE(parsed.options);
+  EXPECT_EQ(parsed.options->connect.host, "127.0.0.1");
+  EXPECT_EQ(parsed.options->connect.port, 7777);
+  EXPECT_EQ(parsed.options->width, 800);
+  EXPECT_EQ(parsed.options->height, 600);
+  EXPECT_EQ(parsed.options->frames, 0);
+}
+
+TEST(ViewerOptions, ParsesEveryFlag) {
+  const auto parsed = parse({"--connect", "10.0.0.2:9000", "--size=1024x768", "--preset", "4",
+                             "--screenshot", "a.bmp", "--no-vsync"});
+  ASSERT_TRUE(parsed.options) << parsed.error;
+  EXPECT_EQ(parsed.options->connect.host, "10.0.0.2");
+  EXPECT_EQ(parsed.options->connect.port, 9000);
+  EXPECT_EQ(parsed.options->width, 1024);
+  EXPECT_EQ(parsed.options->preset, 4);
+  EXPECT_EQ(parsed.options->screenshot, "a.bmp");
+  EXPECT_EQ(parsed.options->frames, 60);  // a screenshot needs frames to settle
+  EXPECT_FALSE(parsed.options->vsync);
+}
+
+TEST(ViewerOptions, RefusesBadValuesWithAMessage) {
+  for (const auto& args : std::vector<std::vector<std::string_view>>{
+           {"--connect", "nohost"}, {"--size", "80x60"}, {"--preset", "11"}, {"--frames"},
+           {"--bogus", "1"}}) {
+    const auto parsed = parse(args);
+    EXPECT_FALSE(parsed.options) << args[0];
+    EXPECT_FALSE(parsed.error.empty()) << args[0];
+  }
+  EXPECT_TRUE(parse({"--help"}).help);
+}
+
+}  // namespace
+}  // namespace impulse::viewer

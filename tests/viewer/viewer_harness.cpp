@@ -1,0 +1,127 @@
+#include "viewer_harness.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <thread>
+
+namespace impulse::viewer_test {
+
+std::string screenshotPath(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(IMPULSE_SCREENSHOT_DIR);
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+client::ConnectOptions observerOptions(std::uint16_t port) {
+  client::ConnectOptions options;
+  options.port = port;
+  options.name = "viewer-test-observer";
+  return options;
+}
+
+ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height) {
+  // No display in CI: SDL's offscreen driver and its software renderer.
+  setenv("SDL_VIDEODRIVER", "offscreen", 1);
+  setenv("SDL_RENDER_DRIVER", "software", 1);
+  viewer::ViewerOptions options;
+  options.connect.port = port;
+  options.connect.name = "viewer-under-test";
+  options.width = width;
+  options.height = height;
+  options.fontPath = viewer::defaultFontPath();
+  options.vsync = false;
+  app_ = std::make_unique<viewer::App>(options);
+}
+
+bool ViewerHarness::runUntil(const std::function<bool()>& done,
+                             std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (std::chrono::steady_clock::now() < deadline) {
+    app_->frame();
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(16));
+  }
+  return false;
+}
+
+void ViewerHarness::runFrames(int count) {
+  for (int i = 0; i < count; ++i) {
+    app_->frame();
+    std::this_thread::sleep_for(std::chrono::milliseconds(16));
+  }
+}
+
+std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> ViewerHarness::capture(
+    const std::string& path) {
+  app_->captureNextFrame(path);
+  app_->frame();
+  SDL_Surface* loaded = SDL_LoadBMP(path.c_str());
+  SDL_Surface* converted = nullptr;
+  if (loaded != nullptr) {
+    converted = SDL_ConvertSurfaceFormat(loaded, SDL_PIXELFORMAT_ARGB8888, 0);
+    SDL_FreeSurface(loaded);
+  }
+  return {converted, SDL_FreeSurface};
+}
+
+void ViewerHarness::key(SDL_Keycode key, bool down) {
+  SDL_Event event{};
+  event.type = down ? SDL_KEYDOWN : SDL_KEYUP;
+  event.key.state = down ? SDL_PRESSED : SDL_RELEASED;
+  event.key.keysym.sym = key;
+  event.key.keysym.scancode = SDL_GetScancodeFromKey(key);
+  event.key.windowID = SDL_GetWindowID(app_->window());
+  SDL_PushEvent(&event);
+}
+
+void ViewerHarness::tap(SDL_Keycode k) {
+  key(k, true);
+  app_->frame();
+  key(k, false);
+  app_->frame();
+}
+
+void ViewerHarness::mouseMove(float px, float py) {
+  SDL_Event event{};
+  event.type = SDL_MOUSEMOTION;
+  event.motion.windowID = SDL_GetWindowID(app_->window());
+  event.motion.x = int(px);
+  event.motion.y = int(py);
+  SDL_PushEvent(&event);
+}
+
+void ViewerHarness::mouseButton(float px, float py, bool down) {
+  SDL_Event event{};
+  event.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+  event.button.windowID = SDL_GetWindowID(app_->window());
+  event.button.button = SDL_BUTTON_LEFT;
+  event.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+  event.button.clicks = 1;
+  event.button.x = int(px);
+  event.button.y = int(py);
+  SDL_PushEvent(&event);
+}
+
+void ViewerHarness::click(const Vec2& world) {
+  const auto p = pixel(world);
+  mouseMove(p.x, p.y);
+  mouseButton(p.x, p.y, true);
+  app_->frame();
+  mouseButton(p.x, p.y, false);
+  app_->frame();
+}
+
+viewer::Colour pixelAt(SDL_Surface* surface, int x, int y) {
+  const auto* row = static_cast<const std::uint8_t*>(surface->pixels) + y * surface->pitch;
+  const std::uint32_t argb = reinterpret_cast<const std::uint32_t*>(row)[x];
+  return {std::uint8_t(argb >> 16), std::uint8_t(argb >> 8), std::uint8_t(argb), 255};
+}
+
+int colourDistance(viewer::Colour a, viewer::Colour b) {
+  return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+}  // namespace impulse::viewer_test

@@ -1,0 +1,54 @@
+#pragma once
+// Test harness: the real viewer App under SDL's offscreen video driver with
+// the software renderer (no display needed), driven frame by frame, with
+// synthetic SDL input and screenshots written into the build tree.
+
+#include <SDL.h>
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "app.h"
+#include "impulse/client/client.h"
+
+namespace impulse::viewer_test {
+
+/// Where screenshots go: <build>/viewer-screenshots (kept as CI artifacts).
+std::string screenshotPath(const std::string& name);
+
+/// A connected test client that sees the world as the server has it.
+client::ConnectOptions observerOptions(std::uint16_t port);
+
+class ViewerHarness {
+ public:
+  explicit ViewerHarness(std::uint16_t port, int width = 800, int height = 600);
+
+  viewer::App& app() { return *app_; }
+  /// Runs frames (about 60 per second) until `done` or `timeout`; true if done.
+  bool runUntil(const std::function<bool()>& done,
+                std::chrono::milliseconds timeout = std::chrono::milliseconds(8000));
+  void runFrames(int count);
+  /// Saves the next frame as BMP at `path` and returns it loaded (ARGB8888).
+  std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> capture(const std::string& path);
+
+  // Synthetic input, as SDL would deliver it from a window.
+  void key(SDL_Keycode key, bool down);
+  void tap(SDL_Keycode key);
+  void mouseMove(float px, float py);
+  void mouseButton(float px, float py, bool down);
+  void click(const Vec2& world);
+  /// Pixel of a world point in the current window.
+  viewer::PixelPoint pixel(const Vec2& world) const { return app_->view().toPixels(world); }
+
+ private:
+  std::unique_ptr<viewer::App> app_;
+};
+
+/// The colour of a pixel of an ARGB8888 surface.
+viewer::Colour pixelAt(SDL_Surface* surface, int x, int y);
+/// Largest per-channel difference.
+int colourDistance(viewer::Colour a, viewer::Colour b);
+
+}  // namespace impulse::viewer_test
