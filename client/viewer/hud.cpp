@@ -12,7 +12,9 @@ namespace impulse::viewer {
 
 namespace {
 
-constexpr int kMargin = 10;
+// Inside the scene's 25 px walls and floor at the default size, so text never
+// sits on the grey boundary.
+constexpr int kMargin = 32;
 constexpr int kPad = 8;
 
 std::string format(const char* pattern, auto... values) {

@@ -89,7 +89,7 @@ TEST_P(PausedRampScreenshot, BallColourAppearsWhereItsBodyIs) {
   EXPECT_GT(filled, 0.8f * area);
   EXPECT_LT(filled, 1.1f * area);
   // The preset title is written in the top-left corner.
-  EXPECT_GT(countNear(shot.get(), {0, 0, 200, 40}, viewer::palette::kText, 40), 30);
+  EXPECT_GT(countNear(shot.get(), {0, 0, 260, 70}, viewer::palette::kText, 40), 30);
 }
 
 INSTANTIATE_TEST_SUITE_P(WindowSizes, PausedRampScreenshot,
