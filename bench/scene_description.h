@@ -67,12 +67,6 @@ BodyDesc makeBody(ShapeDesc shape, Vec2d position, impulse::Material material, b
 /// A static axis-aligned box from lower to upper corner.
 BodyDesc makeStaticBox(Vec2d lower, Vec2d upper, impulse::Material material = impulse::Material::Solid);
 
-/// Index range of the bodies a scene adds, so measurements can find them.
-struct BodyRange {
-  int first = 0;
-  int count = 0;
-};
-
 /// Appends bodies and returns the index of the first.
 int addBody(SceneDescription& scene, const BodyDesc& body);
 

@@ -3,11 +3,11 @@
 // Exit status: 0 when every line succeeded, 1 when some line failed, 2 when
 // the arguments or the connection failed.
 #include <condition_variable>
-#include <deque>
-#include <memory>
 #include <cstdio>
+#include <deque>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -171,8 +171,8 @@ int run(const Arguments& arguments) {
         case cli::ScriptCommand::Kind::Server: {
           const auto& message = parsed.command->message;
           // A long Step takes its time on the server before the reply.
-          const auto timeout =
-              arguments.timeout + Milliseconds(message.has_step() ? message.step().ticks() * 10 : 0);
+          const auto timeout = arguments.timeout +
+                               Milliseconds(message.has_step() ? message.step().ticks() * 10 : 0);
           lineNumber = lineCount;
           command = name;
           pending.push_back({lineCount, name, client.send(message), timeout});
@@ -193,9 +193,9 @@ int run(const Arguments& arguments) {
           command = name;
           const auto snapshot = client.awaitSnapshot(arguments.timeout);
           if (!snapshot) {
-            print(cli::errorReport(lineCount, name,
-                                   "no snapshot within " +
-                                       std::to_string(arguments.timeout.count()) + " ms"));
+            print(cli::errorReport(
+                lineCount, name,
+                "no snapshot within " + std::to_string(arguments.timeout.count()) + " ms"));
             ++failures;
             break;
           }

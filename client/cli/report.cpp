@@ -103,13 +103,16 @@ std::string replyReport(std::size_t line, std::string_view command,
         .member("mean_tick_ms", s.mean_tick_ms())
         .member("max_tick_ms", s.max_tick_ms())
         .member("last_step_ms", s.last_step_ms())
+        .member("mean_step_ms", s.mean_step_ms())
         .member("bodies", s.bodies())
         .member("awake_bodies", s.awake_bodies())
         .member("clients", s.clients())
         .member("last_snapshot_bytes", s.last_snapshot_bytes())
         .member("snapshots_skipped", s.snapshots_skipped());
-    report.member("ok", true).member("server_tick", pong.server_tick()).key("stats").raw(
-        stats.close());
+    report.member("ok", true)
+        .member("server_tick", pong.server_tick())
+        .key("stats")
+        .raw(stats.close());
   } else {
     report.member("ok", false).member("error", "unexpected reply");
   }
@@ -140,8 +143,7 @@ std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror) {
   return report.close().str();
 }
 
-std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot,
-                           std::size_t frameBytes) {
+std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot, std::size_t frameBytes) {
   Json report = lineReport(line, "wait-snapshot");
   report.member("ok", true)
       .member("tick", snapshot.tick())

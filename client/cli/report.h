@@ -17,10 +17,8 @@ Json lineReport(std::size_t line, std::string_view command);
 std::string errorReport(std::size_t line, std::string_view command, std::string_view problem);
 std::string welcomeReport(const v1::Welcome& welcome);
 /// CommandResult, BodyInfo or Pong.
-std::string replyReport(std::size_t line, std::string_view command,
-                        const v1::ServerMessage& reply);
+std::string replyReport(std::size_t line, std::string_view command, const v1::ServerMessage& reply);
 std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror);
-std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot,
-                           std::size_t frameBytes);
+std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot, std::size_t frameBytes);
 
 }  // namespace impulse::cli

@@ -12,10 +12,14 @@ using SteadyClock = std::chrono::steady_clock;
 
 std::uint64_t replyId(const v1::ServerMessage& message) {
   switch (message.message_case()) {
-    case v1::ServerMessage::kCommandResult: return message.command_result().request_id();
-    case v1::ServerMessage::kBodyInfo: return message.body_info().request_id();
-    case v1::ServerMessage::kPong: return message.pong().request_id();
-    default: return 0;
+    case v1::ServerMessage::kCommandResult:
+      return message.command_result().request_id();
+    case v1::ServerMessage::kBodyInfo:
+      return message.body_info().request_id();
+    case v1::ServerMessage::kPong:
+      return message.pong().request_id();
+    default:
+      return 0;
   }
 }
 
@@ -37,8 +41,7 @@ std::optional<std::pair<std::string, std::uint16_t>> parseHostPort(std::string_v
   return std::make_pair(std::string(host), std::uint16_t(port));
 }
 
-Client::Client(const ConnectOptions& options)
-    : socket_(io_), reader_(options.maxFrameBytes) {
+Client::Client(const ConnectOptions& options) : socket_(io_), reader_(options.maxFrameBytes) {
   const auto deadline = SteadyClock::now() + options.timeout;
   asio::error_code ec;
   asio::ip::tcp::resolver resolver(io_);
@@ -111,8 +114,7 @@ std::uint64_t Client::send(v1::ClientMessage message) {
 void Client::startRead() {
   if (reading_ || !failure_.empty()) return;
   reading_ = true;
-  socket_.async_read_some(asio::buffer(buffer_), [this](const asio::error_code& ec,
-                                                        std::size_t n) {
+  socket_.async_read_some(asio::buffer(buffer_), [this](const asio::error_code& ec, std::size_t n) {
     reading_ = false;
     if (ec) {
       failure_ = ec == asio::error::eof ? "the server closed the connection" : ec.message();

@@ -61,8 +61,8 @@ std::int32_t allocateContact(WorldData& world) {
 void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
   // The collide table is filled for shape A's type >= shape B's type.
   if (collideFunction(world.shapes[a].type, world.shapes[b].type) == nullptr) std::swap(a, b);
-  const MaterialProperties& ma = materialProperties(world.bodies[a].material);
-  const MaterialProperties& mb = materialProperties(world.bodies[b].material);
+  const MaterialProperties& ma = world.bodies[a].coefficients;
+  const MaterialProperties& mb = world.bodies[b].coefficients;
 
   std::int32_t index = allocateContact(world);
   Contact& contact = world.contacts[index];

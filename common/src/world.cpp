@@ -25,6 +25,30 @@ bool contains(const AABB& bounds, const Vec2& p) {
          p.y() <= bounds.upper.y();
 }
 
+// Empty when every given coefficient is finite and in its range.
+std::string validateOverride(const MaterialOverride& o) {
+  auto outside = [](const std::optional<Real>& value, Real lo, Real hi) {
+    return value && !(isFinite(*value) && *value >= lo && *value <= hi);
+  };
+  if (outside(o.density, Real(1e-3), Real(1e6))) return "density must be in (0.001, 1e6] kg/m^2";
+  if (outside(o.restitution, 0, 1)) return "restitution must be in [0, 1]";
+  if (outside(o.staticFriction, 0, 10) || outside(o.dynamicFriction, 0, 10)) {
+    return "friction coefficients must be in [0, 10]";
+  }
+  if (outside(o.rollingResistance, 0, 1)) return "rolling resistance must be in [0, 1]";
+  return {};
+}
+
+MaterialProperties resolveCoefficients(Material material, const MaterialOverride& o) {
+  MaterialProperties resolved = materialProperties(material);
+  resolved.density = o.density.value_or(resolved.density);
+  resolved.restitution = o.restitution.value_or(resolved.restitution);
+  resolved.staticFriction = o.staticFriction.value_or(resolved.staticFriction);
+  resolved.dynamicFriction = o.dynamicFriction.value_or(resolved.dynamicFriction);
+  resolved.rollingResistance = o.rollingResistance.value_or(resolved.rollingResistance);
+  return resolved;
+}
+
 std::string validateDef(const WorldData& world, const BodyDef& def) {
   if (!isFinite(def.position) || !isFinite(def.angle) || !isFinite(def.linearVelocity) ||
       !isFinite(def.angularVelocity) || !isFinite(def.linearDrag) || !isFinite(def.angularDrag)) {
@@ -38,6 +62,7 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
   }
   if (def.linearDrag < 0 || def.angularDrag < 0) return "drag must not be negative";
   if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
+  if (std::string error = validateOverride(def.materialOverride); !error.empty()) return error;
   if (world.liveBodies >= world.settings.maxBodies) {
     return "body limit reached (" + std::to_string(world.settings.maxBodies) + " bodies)";
   }
@@ -135,12 +160,13 @@ CreateResult World::createBody(const BodyDef& def) {
   body.isStatic = def.isStatic;
   body.ignoreGravity = def.ignoreGravity;
   body.material = def.material;
+  body.coefficients = resolveCoefficients(def.material, def.materialOverride);
   body.transform = {def.position, Rot::fromAngle(def.angle)};
   body.linearDrag = def.linearDrag;
   body.angularDrag = def.angularDrag;
   body.creationOrder = w.nextCreationOrder++;
   w.shapes[slot] = def.shape;
-  setMass(body, def.shape, materialProperties(def.material).density);
+  setMass(body, def.shape, body.coefficients.density);
   body.extent = computeExtent(def.shape);
   body.innerRadius = computeInnerRadius(def.shape);
   ++w.liveBodies;
@@ -207,16 +233,17 @@ std::optional<BodyState> World::bodyState(BodyId id) const {
 std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
   const Body* body = impl_->find(id);
   if (body == nullptr) return std::nullopt;
-  const MaterialProperties& material = materialProperties(body->material);
+  const MaterialProperties& c = body->coefficients;
   return BodyDescription{id,
                          impl_->shapes[id.slot()],
                          body->material,
                          body->isStatic,
                          body->ignoreGravity,
                          body->mass,
-                         material.restitution,
-                         material.staticFriction,
-                         material.dynamicFriction};
+                         c.restitution,
+                         c.staticFriction,
+                         c.dynamicFriction,
+                         c.rollingResistance};
 }
 
 std::vector<BodyId> World::bodyIds() const {

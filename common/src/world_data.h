@@ -44,6 +44,8 @@ struct Body {
   std::uint32_t generation = 0;
   std::int32_t nextFree = kNullIndex;
   Material material = Material::Solid;
+  /// The material's coefficients with any per-body override applied.
+  MaterialProperties coefficients{};
   bool alive = false;
   bool isStatic = false;
   bool ignoreGravity = false;

@@ -25,21 +25,51 @@ class Applier {
   CommandOutcome apply(const v1::ServerStats& stats) {
     using C = v1::ClientMessage;
     switch (message_.command_case()) {
-      case C::kSpawnCircle: spawnCircle(message_.spawn_circle()); break;
-      case C::kSpawnPolygon: spawnPolygon(message_.spawn_polygon()); break;
-      case C::kLoadPreset: loadPreset(message_.load_preset()); break;
-      case C::kSetGravity: setGravity(message_.set_gravity()); break;
-      case C::kNudgeGravity: nudgeGravity(message_.nudge_gravity()); break;
-      case C::kResetGravity: changeGravity(kDefaultGravity); break;
-      case C::kClear: clear(); break;
-      case C::kRemoveBody: removeBody(message_.remove_body()); break;
-      case C::kApplyImpulse: applyImpulse(message_.apply_impulse()); break;
-      case C::kSetPaused: setPaused(message_.set_paused()); break;
-      case C::kStep: step(message_.step()); break;
-      case C::kQueryBody: queryBody(message_.query_body()); break;
-      case C::kPing: ping(message_.ping(), stats); break;
-      case C::kHello: fail("hello was already received"); break;
-      case C::COMMAND_NOT_SET: fail("message carries no command (unknown or missing)"); break;
+      case C::kSpawnCircle:
+        spawnCircle(message_.spawn_circle());
+        break;
+      case C::kSpawnPolygon:
+        spawnPolygon(message_.spawn_polygon());
+        break;
+      case C::kLoadPreset:
+        loadPreset(message_.load_preset());
+        break;
+      case C::kSetGravity:
+        setGravity(message_.set_gravity());
+        break;
+      case C::kNudgeGravity:
+        nudgeGravity(message_.nudge_gravity());
+        break;
+      case C::kResetGravity:
+        changeGravity(kDefaultGravity);
+        break;
+      case C::kClear:
+        clear();
+        break;
+      case C::kRemoveBody:
+        removeBody(message_.remove_body());
+        break;
+      case C::kApplyImpulse:
+        applyImpulse(message_.apply_impulse());
+        break;
+      case C::kSetPaused:
+        setPaused(message_.set_paused());
+        break;
+      case C::kStep:
+        step(message_.step());
+        break;
+      case C::kQueryBody:
+        queryBody(message_.query_body());
+        break;
+      case C::kPing:
+        ping(message_.ping(), stats);
+        break;
+      case C::kHello:
+        fail("hello was already received");
+        break;
+      case C::COMMAND_NOT_SET:
+        fail("message carries no command (unknown or missing)");
+        break;
     }
     if (outcome_.reply.has_command_result()) result_->set_tick(sim_.tick());
     return std::move(outcome_);
@@ -128,7 +158,8 @@ class Applier {
     if (!command.has_gravity()) return fail("set_gravity: gravity is missing");
     const auto gravity = wire::vecFromWire(command.gravity(), "set_gravity.gravity");
     if (!gravity.ok()) return fail(gravity.error);
-    if (auto error = checkGravity(*gravity.value); !error.empty()) return fail("set_gravity: " + error);
+    if (auto error = checkGravity(*gravity.value); !error.empty())
+      return fail("set_gravity: " + error);
     changeGravity(*gravity.value);
   }
 

@@ -69,7 +69,8 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view v) {
          return realFlag("--tick-hz", v, 1, 1000, o.tickHz);
        }},
-      {"--snapshot-hz", true, "HZ  snapshots per second while running (default 30, at most tick-hz)",
+      {"--snapshot-hz", true,
+       "HZ  snapshots per second while running (default 30, at most tick-hz)",
        [](ServerOptions& o, std::string_view v) {
          return realFlag("--snapshot-hz", v, 0.1, 1000, o.snapshotHz);
        }},

@@ -64,8 +64,8 @@ void Server::start() {
   schedule_ = TickSchedule(periodOf(options_.tickHz), now);
   lastHousekeeping_ = now;
   lastStatsLog_ = now;
-  lastSnapshotSlot_ = std::int64_t(
-      std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
+  lastSnapshotSlot_ =
+      std::int64_t(std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
   logLine("serving preset " + std::to_string(options_.preset) + " at " +
           std::to_string(options_.tickHz) + " Hz" + (options_.paused ? ", paused" : ""));
   accept();
@@ -199,8 +199,8 @@ void Server::applyCommands() {
 }
 
 bool Server::snapshotDue() {
-  const auto slot = std::int64_t(
-      std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
+  const auto slot =
+      std::int64_t(std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
   if (slot == lastSnapshotSlot_) return false;
   lastSnapshotSlot_ = slot;
   return true;
@@ -231,7 +231,8 @@ v1::ServerStats Server::stats() const {
   stats.set_last_tick_ms(tickTimes_.last());
   stats.set_mean_tick_ms(tickTimes_.mean());
   stats.set_max_tick_ms(tickTimes_.max());
-  stats.set_last_step_ms(simulation_.lastStepMs());
+  stats.set_last_step_ms(simulation_.stepTimes().last());
+  stats.set_mean_step_ms(simulation_.stepTimes().mean());
   stats.set_bodies(std::uint32_t(simulation_.world().bodyCount()));
   stats.set_awake_bodies(std::uint32_t(simulation_.world().awakeBodyCount()));
   stats.set_clients(std::uint32_t(sessions_.size()));

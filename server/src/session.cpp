@@ -91,8 +91,8 @@ void Session::processBuffered() {
   // until commandsApplied() resumes reading.
   while (readBegin_ < readEnd_ && !closed_ && !closeAfterFlush_ &&
          pendingCommandBytes_ < limits_.maxPendingCommandBytes) {
-    const auto result = reader_.feed(
-        std::span<const char>(readBuffer_.data() + readBegin_, readEnd_ - readBegin_));
+    const auto result =
+        reader_.feed(std::span<const char>(readBuffer_.data() + readBegin_, readEnd_ - readBegin_));
     readBegin_ += result.consumed;
     if (result.status == wire::FrameReader::Status::Error) return fatal(reader_.error());
     if (result.status == wire::FrameReader::Status::Frame) handleFrame(reader_.frame());
@@ -207,14 +207,14 @@ void Session::writeMore() {
   inFlight_ = count;
   writing_ = true;
   lastWriteProgress_ = Clock::now();
-  socket_.async_write_some(
-      buffers, [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
-        self->writing_ = false;
-        self->inFlight_ = 0;
-        if (self->closed_) return;
-        if (ec) return self->close(ec.message());
-        self->onWritten(n);
-      });
+  socket_.async_write_some(buffers,
+                           [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
+                             self->writing_ = false;
+                             self->inFlight_ = 0;
+                             if (self->closed_) return;
+                             if (ec) return self->close(ec.message());
+                             self->onWritten(n);
+                           });
 }
 
 void Session::onWritten(std::size_t bytes) {

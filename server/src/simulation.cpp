@@ -19,7 +19,8 @@ Simulation::Simulation(const SimulationSettings& settings)
     : tickHz_(settings.tickHz),
       world_(worldSettings(settings)),
       snapshots_(world_),
-      paused_(settings.paused) {
+      paused_(settings.paused),
+      stepTimes_(std::size_t(settings.tickHz + 0.5)) {
   loadPreset(settings.preset, Material::Solid);
 }
 
@@ -27,8 +28,8 @@ void Simulation::step() {
   const auto start = std::chrono::steady_clock::now();
   world_.step(Real(1.0 / tickHz_));
   ++tick_;
-  lastStepMs_ =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  stepTimes_.record(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   snapshots_.stepped(world_.movedBodies());
 }
 

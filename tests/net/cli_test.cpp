@@ -66,13 +66,18 @@ TEST(Cli, ErrorsNameTheLineAndTheProblem) {
   const auto run = runCli(server.port(), script);
   EXPECT_EQ(run.exitCode, 1);
   ASSERT_EQ(run.lines.size(), 7u);
-  EXPECT_TRUE(contains(run.lines[1], R"("error":"line 1: circle X Y R [MATERIAL] [static] [nograv]: missing argument 3")"))
+  EXPECT_TRUE(contains(
+      run.lines[1],
+      R"("error":"line 1: circle X Y R [MATERIAL] [static] [nograv]: missing argument 3")"))
       << run.lines[1];
-  EXPECT_TRUE(contains(run.lines[2], R"({"line":3,"command":"polygon","ok":false,"error":"line 3: spawn_polygon: 2 vertices given)"))
+  EXPECT_TRUE(contains(
+      run.lines[2],
+      R"({"line":3,"command":"polygon","ok":false,"error":"line 3: spawn_polygon: 2 vertices given)"))
       << run.lines[2];
   EXPECT_TRUE(contains(run.lines[3], R"("error":"line 4: query_body: unknown body id 999")"))
       << run.lines[3];
-  EXPECT_TRUE(contains(run.lines[4], R"("error":"line 5: spawn_circle.center.x is not a finite number")"))
+  EXPECT_TRUE(
+      contains(run.lines[4], R"("error":"line 5: spawn_circle.center.x is not a finite number")"))
       << run.lines[4];
   EXPECT_TRUE(contains(run.lines[5], R"("error":"line 6: unknown command 'fly'")")) << run.lines[5];
   // Later lines still run.

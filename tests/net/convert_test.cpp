@@ -1,10 +1,10 @@
 // Engine <-> wire conversion: exact one way, validated the other.
+#include "impulse/wire/convert.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
-
-#include "impulse/wire/convert.h"
 
 namespace impulse::wire {
 namespace {
@@ -57,8 +57,7 @@ TEST(Convert, OptionsAreCheckedFieldByField) {
   EXPECT_EQ(decoded.value->linearVelocity.x(), 2.0f);
 
   options.set_material(static_cast<v1::Material>(9));
-  EXPECT_NE(optionsFromWire(options).error.find("material 9 is not a material"),
-            std::string::npos);
+  EXPECT_NE(optionsFromWire(options).error.find("material 9 is not a material"), std::string::npos);
   options.set_material(v1::SOLID);
   options.set_angular_velocity(std::numeric_limits<float>::quiet_NaN());
   EXPECT_EQ(optionsFromWire(options).error, "options.angular_velocity is not a finite number");

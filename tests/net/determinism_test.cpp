@@ -28,8 +28,8 @@ RunResult runScript(std::uint16_t port) {
   const auto wedge = client.request(client::spawnPolygon(triangle, {Material::Wood}));
   EXPECT_TRUE(result(ball).ok() && result(wedge).ok());
   step(30);
-  EXPECT_TRUE(result(client.request(
-                         client::applyImpulse(result(ball).body_id(), {400, 250}, client::Point{6.1, 12})))
+  EXPECT_TRUE(result(client.request(client::applyImpulse(result(ball).body_id(), {400, 250},
+                                                         client::Point{6.1, 12})))
                   .ok());
   EXPECT_TRUE(result(client.request(client::nudgeGravity({1.5, 0}))).ok());
   step(120);

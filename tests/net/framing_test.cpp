@@ -1,6 +1,8 @@
 // Delimited framing: compatible with protobuf's own delimited format, split
 // anywhere, and refusing oversized or malformed length headers before
 // allocating anything.
+#include "impulse/wire/framing.h"
+
 #include <google/protobuf/io/zero_copy_stream_impl_lite.h>
 #include <google/protobuf/util/delimited_message_util.h>
 #include <gtest/gtest.h>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "impulse.pb.h"
-#include "impulse/wire/framing.h"
 
 namespace impulse::wire {
 namespace {

@@ -88,8 +88,7 @@ TEST_F(MalformedInput, UnsupportedVersionThroughTheClientLibrary) {
     Client client(options);
     FAIL() << "connected with protocol version 7";
   } catch (const client::ConnectionError& error) {
-    EXPECT_NE(std::string(error.what()).find("unsupported protocol version 7"),
-              std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("unsupported protocol version 7"), std::string::npos)
         << error.what();
   }
   expectObserverAnswered();
@@ -135,8 +134,7 @@ TEST_F(MalformedInput, ManyAbusersAtOnce) {
   std::vector<std::unique_ptr<RawConnection>> abusers;
   for (int i = 0; i < 20; ++i) {
     abusers.push_back(std::make_unique<RawConnection>(server_.port()));
-    abusers.back()->send(i % 2 == 0 ? wire::encodeVarint(1) + "\xff"
-                                    : std::string(12, char(0x80)));
+    abusers.back()->send(i % 2 == 0 ? wire::encodeVarint(1) + "\xff" : std::string(12, char(0x80)));
   }
   expectObserverAnswered();
   for (auto& abuser : abusers) {

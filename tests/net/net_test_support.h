@@ -12,6 +12,21 @@
 
 namespace impulse::net_test {
 
+/// Sanitizer builds run the engine several times slower: timing-bound tests
+/// run the server at half the tick rate there and check that rate instead.
+#ifdef IMPULSE_TESTS_SANITIZED
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+inline constexpr double kTestTickHz = kSanitized ? 30 : 60;
+
+/// --tick-hz and --snapshot-hz for timing-bound tests.
+inline std::vector<std::string> timedRates() {
+  return {"--tick-hz", std::to_string(int(kTestTickHz)), "--snapshot-hz",
+          std::to_string(int(kTestTickHz / 2))};
+}
+
 inline client::ConnectOptions localClient(std::uint16_t port, std::string name = "test",
                                           bool wantSnapshots = true) {
   client::ConnectOptions options;

@@ -1,9 +1,9 @@
 // impulse-server flags: defaults, both spellings, and range errors.
+#include "impulse/server/options.h"
+
 #include <gtest/gtest.h>
 
 #include <vector>
-
-#include "impulse/server/options.h"
 
 namespace impulse::server {
 namespace {
@@ -23,10 +23,10 @@ TEST(ServerOptions, DefaultsMatchTheIssue) {
 }
 
 TEST(ServerOptions, AcceptsSeparateAndInlineValues) {
-  const auto parsed = parse({"--port", "0", "--tick-hz=120", "--snapshot-hz", "20", "--paused",
-                             "--preset=9", "--bind", "0.0.0.0", "--max-clients", "3",
-                             "--max-bodies", "500", "--max-frame-bytes", "4096", "--substeps",
-                             "8", "--stall-timeout", "2.5"});
+  const auto parsed =
+      parse({"--port", "0", "--tick-hz=120", "--snapshot-hz", "20", "--paused", "--preset=9",
+             "--bind", "0.0.0.0", "--max-clients", "3", "--max-bodies", "500", "--max-frame-bytes",
+             "4096", "--substeps", "8", "--stall-timeout", "2.5"});
   ASSERT_TRUE(parsed.options) << parsed.error;
   const auto& o = *parsed.options;
   EXPECT_EQ(o.port, 0);
@@ -63,9 +63,9 @@ TEST(ServerOptions, RefusesBadValuesWithTheFlagName) {
 TEST(ServerOptions, HelpListsEveryFlag) {
   EXPECT_TRUE(parse({"--help"}).help);
   const std::string text = usage();
-  for (const char* flag : {"--bind", "--port", "--tick-hz", "--snapshot-hz", "--substeps",
-                           "--preset", "--paused", "--max-clients", "--max-bodies",
-                           "--max-frame-bytes", "--help"}) {
+  for (const char* flag :
+       {"--bind", "--port", "--tick-hz", "--snapshot-hz", "--substeps", "--preset", "--paused",
+        "--max-clients", "--max-bodies", "--max-frame-bytes", "--help"}) {
     EXPECT_NE(text.find(flag), std::string::npos) << flag;
   }
 }

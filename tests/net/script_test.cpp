@@ -1,10 +1,10 @@
 // The impulse-cli grammar: each command's message, and errors that say what
 // was expected and what was wrong.
+#include "script.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "script.h"
 
 namespace impulse::cli {
 namespace {

@@ -54,6 +54,12 @@ ServerProcess::ServerProcess(std::vector<std::string> args) {
   if (pid_ == 0) {
     // The server dies with the test process, whatever happens to it.
     prctl(PR_SET_PDEATHSIG, SIGKILL);
+    // Under AddressSanitizer freed memory sits in a quarantine (256 MiB by
+    // default) that would swamp the memory-bound checks; keep it small.
+    // Other builds ignore the variable.
+    std::string asan = "quarantine_size_mb=4";
+    if (const char* existing = getenv("ASAN_OPTIONS")) asan = std::string(existing) + ":" + asan;
+    setenv("ASAN_OPTIONS", asan.c_str(), 1);
     const int log = open(logPath_.c_str(), O_WRONLY | O_TRUNC);
     dup2(out[1], STDOUT_FILENO);
     dup2(log, STDERR_FILENO);
@@ -235,8 +241,9 @@ CliRun runCli(std::uint16_t port, const std::string& script, bool viaStdin) {
     std::ofstream file(path);
     file << script;
   }
-  const std::string command = std::string(IMPULSE_CLI_BINARY) + " --connect 127.0.0.1:" +
-                              std::to_string(port) + (viaStdin ? " < " : " ") + path;
+  const std::string command = std::string(IMPULSE_CLI_BINARY) +
+                              " --connect 127.0.0.1:" + std::to_string(port) +
+                              (viaStdin ? " < " : " ") + path;
   CliRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return run;

@@ -20,7 +20,9 @@ void spawnRisingGrid(Client& driver) {
 }
 
 TEST(SlowClients, NeverReadingSubscriberDoesNotSlowTheTickAndIsDropped) {
-  ServerProcess server({"--stall-timeout", "3"});
+  auto args = timedRates();
+  args.insert(args.end(), {"--stall-timeout", "3"});
+  ServerProcess server(args);
   Client driver(localClient(server.port(), "driver", false));
   spawnRisingGrid(driver);
   ASSERT_EQ(driver.ping().stats().awake_bodies(), 2000u);
@@ -51,12 +53,12 @@ TEST(SlowClients, NeverReadingSubscriberDoesNotSlowTheTickAndIsDropped) {
   ASSERT_GT(baselineKb, 0);
 
   // The tick rate held: ticks advanced with the wall clock (within 3 %) and
-  // none was skipped; the mean tick stayed far inside the 16.7 ms budget.
+  // none was skipped; the mean tick stayed well inside its period.
   const double seconds = double(last.stats().uptime_us() - first.stats().uptime_us()) / 1e6;
   const double ticks = double(last.server_tick() - first.server_tick());
-  EXPECT_NEAR(ticks / seconds, 60.0, 60.0 * 0.03);
+  EXPECT_NEAR(ticks / seconds, kTestTickHz, kTestTickHz * 0.03);
   EXPECT_EQ(last.stats().ticks_skipped(), 0u);
-  EXPECT_LT(last.stats().mean_tick_ms(), 12.0);
+  EXPECT_LT(last.stats().mean_tick_ms(), 0.75 * 1000 / kTestTickHz);
   EXPECT_EQ(last.stats().awake_bodies(), 2000u);
 
   // Snapshots for the silent client were skipped, not queued: memory flat.

@@ -21,7 +21,7 @@ struct Sample {
 };
 
 TEST(SnapshotCost, TwoThousandBodiesAwakeThenAsleep) {
-  ServerProcess server;
+  ServerProcess server(timedRates());
   Client driver(localClient(server.port(), "driver", false));
   std::vector<v1::ClientMessage> commands = {client::setPaused(true)};
   const auto grid = circleGrid(false);
@@ -47,7 +47,7 @@ TEST(SnapshotCost, TwoThousandBodiesAwakeThenAsleep) {
   EXPECT_EQ(pong.stats().awake_bodies(), 2000u);
   awake.meanTickMs = pong.stats().mean_tick_ms();
   awake.maxTickMs = pong.stats().max_tick_ms();
-  awake.stepMs = pong.stats().last_step_ms();
+  awake.stepMs = pong.stats().mean_step_ms();
   counting = false;
 
   // Asleep: wait for the pile to settle (the engine's sleep), then measure.
@@ -63,10 +63,10 @@ TEST(SnapshotCost, TwoThousandBodiesAwakeThenAsleep) {
   pong = driver.ping();
   asleep.meanTickMs = pong.stats().mean_tick_ms();
   asleep.maxTickMs = pong.stats().max_tick_ms();
-  asleep.stepMs = pong.stats().last_step_ms();
+  asleep.stepMs = pong.stats().mean_step_ms();
 
   for (Sample* s : {&awake, &asleep}) {
-    ASSERT_GT(s->snapshots, 20);
+    ASSERT_GT(s->snapshots, 5);
     s->snapshotBytes /= s->snapshots;
     s->bytesPerBody = s->snapshotBytes / 2000;
   }
@@ -82,10 +82,12 @@ TEST(SnapshotCost, TwoThousandBodiesAwakeThenAsleep) {
   // Awake: every body's state in each delta, a few dozen bytes each.
   EXPECT_GT(awake.bytesPerBody, 15);
   EXPECT_LT(awake.bytesPerBody, 80);
-  EXPECT_LT(awake.meanTickMs, 16.7);
   // Asleep: deltas carry no body at all, and the tick is nearly free.
   EXPECT_LT(asleep.snapshotBytes, 64);
-  EXPECT_LT(asleep.meanTickMs, awake.meanTickMs / 5);
+  if (!kSanitized) {
+    EXPECT_LT(awake.meanTickMs, 1000 / kTestTickHz);
+    EXPECT_LT(asleep.meanTickMs, awake.meanTickMs / 5);
+  }
 }
 
 }  // namespace

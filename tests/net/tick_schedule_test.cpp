@@ -1,10 +1,10 @@
 // The tick schedule: deadlines on a fixed grid (no drift whatever the timer
 // latency) and bounded catch-up after an overrun.
+#include "impulse/server/tick_schedule.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
-
-#include "impulse/server/tick_schedule.h"
 
 namespace impulse::server {
 namespace {
@@ -14,8 +14,8 @@ using std::chrono::milliseconds;
 
 TEST(TickSchedule, NoDriftOverAnHourOfLateWakeups) {
   const Clock::time_point start{};
-  const auto period = std::chrono::duration_cast<Clock::duration>(
-      std::chrono::duration<double>(1.0 / 60));
+  const auto period =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / 60));
   TickSchedule schedule(period, start);
   std::mt19937 random(7);
   std::int64_t ran = 0;

@@ -2,6 +2,7 @@
 /// Public description of bodies: handles, creation definitions, state.
 
 #include <cstdint>
+#include <optional>
 
 #include "impulse/material.h"
 #include "impulse/math.h"
@@ -30,6 +31,17 @@ struct BodyId {
   friend auto operator<=>(BodyId, BodyId) = default;
 };
 
+/// Coefficients that replace the material's for one body, for scenes that
+/// need values outside the material table (tools, benchmarks). Unset fields
+/// keep the material's value.
+struct MaterialOverride {
+  std::optional<Real> density = std::nullopt;            ///< kg/m^2, > 0
+  std::optional<Real> restitution = std::nullopt;        ///< 0..1
+  std::optional<Real> staticFriction = std::nullopt;     ///< >= 0
+  std::optional<Real> dynamicFriction = std::nullopt;    ///< >= 0
+  std::optional<Real> rollingResistance = std::nullopt;  ///< >= 0
+};
+
 /// Everything needed to create a body. The shape is local to the centroid,
 /// and `position` is where the centroid goes.
 struct BodyDef {
@@ -39,6 +51,7 @@ struct BodyDef {
   Vec2 linearVelocity = Vec2::Zero();
   Real angularVelocity = 0;
   Material material = Material::Solid;
+  MaterialOverride materialOverride;
   bool isStatic = false;
   bool ignoreGravity = false;
   /// Air drag rates in 1/s: dv/dt = -linearDrag * v, exact over any dt.
@@ -67,6 +80,7 @@ struct BodyDescription {
   Real restitution = 0;
   Real staticFriction = 0;
   Real dynamicFriction = 0;
+  Real rollingResistance = 0;
 };
 
 }  // namespace impulse

@@ -107,8 +107,7 @@ std::string encodeFrame(const google::protobuf::MessageLite& message) {
   return out;
 }
 
-std::shared_ptr<const std::string> encodeSharedFrame(
-    const google::protobuf::MessageLite& message) {
+std::shared_ptr<const std::string> encodeSharedFrame(const google::protobuf::MessageLite& message) {
   return std::make_shared<const std::string>(encodeFrame(message));
 }
 

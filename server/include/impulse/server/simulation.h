@@ -7,6 +7,7 @@
 #include "impulse/material.h"
 #include "impulse/preset.h"
 #include "impulse/server/snapshot_builder.h"
+#include "impulse/server/tick_schedule.h"
 #include "impulse/world.h"
 
 namespace impulse::server {
@@ -40,8 +41,8 @@ class Simulation {
   bool paused() const { return paused_; }
   void setPaused(bool paused);
   SnapshotMeta meta() const { return {tick_, simTime(), paused_}; }
-  /// Wall-clock milliseconds of the last world step.
-  double lastStepMs() const { return lastStepMs_; }
+  /// Wall-clock milliseconds of the world steps over the last second.
+  const TickTimes& stepTimes() const { return stepTimes_; }
 
  private:
   double tickHz_;
@@ -49,7 +50,7 @@ class Simulation {
   SnapshotBuilder snapshots_;
   std::uint64_t tick_ = 0;
   bool paused_ = false;
-  double lastStepMs_ = 0;
+  TickTimes stepTimes_;
 };
 
 }  // namespace impulse::server
