@@ -29,7 +29,6 @@ std::vector<EngineSetting> allSettings() {
 std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting) {
   switch (setting.engine) {
     case Engine::Impulse:
-      if (!scene.impulseUnsupported.empty()) return nullptr;
       return makeImpulseAdapter(scene, setting.iterations);
     case Engine::Box2D: return makeBox2DAdapter(scene, setting.iterations, setting.positionIterations);
     case Engine::Chipmunk: return makeChipmunkAdapter(scene, setting.iterations);

@@ -43,7 +43,7 @@ class EngineAdapter {
   virtual Pose pose(int index) const = 0;
 };
 
-/// Nothing when the engine cannot express the scene (see impulseUnsupported).
+/// The scene built in the given engine at the given setting.
 std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting);
 
 std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps);

@@ -29,10 +29,6 @@ RunResult runScene(const Scene& scene, const SceneDescription& description, cons
   try {
     for (int repeat = 0; repeat < length.repeats; ++repeat) {
       std::unique_ptr<EngineAdapter> engine = makeAdapter(description, setting);
-      if (!engine) {
-        result.problem = "n/a: " + description.impulseUnsupported;
-        return result;
-      }
       for (int i = 0; i < length.warmupSteps; ++i) engine->step(kDt);
       // The scene's behaviour is deterministic in every engine: measure the
       // first repeat only, time them all.

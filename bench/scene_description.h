@@ -43,8 +43,8 @@ struct BodyDesc {
   Vec2d velocity;
   double angularVelocity = 0;
   impulse::Material material = impulse::Material::Solid;
-  /// Derived from material by makeBody(); a scene may override them for the
-  /// peers only, and must then mark the scene impulseUnsupported.
+  /// Derived from material by makeBody(); a scene may set its own values
+  /// (Impulse then applies them as a per-body MaterialOverride).
   double density = 0;
   double friction = 0;  ///< peers' single coefficient (Impulse's static one)
   double restitution = 0;
@@ -55,8 +55,6 @@ struct SceneDescription {
   Vec2d gravity{0, -9.81};
   bool allowSleep = false;
   std::vector<BodyDesc> bodies;
-  /// Non-empty when Impulse's public API cannot express the scene: says why.
-  std::string impulseUnsupported;
 
   /// True when every body has the same friction and restitution, so an
   /// engine's own mixing rule already yields the mean.

@@ -1,6 +1,7 @@
-// Impulse: one body per description body, materials as named, the world's
-// bounds widened to hold the scene. Everything else stays at WorldSettings'
-// defaults except sub-steps and sleep.
+// Impulse: one body per description body, materials as named (with a
+// per-body override wherever a scene sets a coefficient the material does not
+// have), the world's bounds widened to hold the scene. Everything else stays
+// at WorldSettings' defaults except sub-steps and sleep.
 
 #include <algorithm>
 #include <stdexcept>
@@ -44,6 +45,21 @@ impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps) 
   return settings;
 }
 
+// A scene's own density, friction or restitution, where it departs from the
+// material's. A single friction coefficient (the peers' model) sets both of
+// Impulse's coefficients, so every engine slides by the same closed form.
+impulse::MaterialOverride overrideFor(const BodyDesc& body) {
+  const impulse::MaterialProperties& material = impulse::materialProperties(body.material);
+  impulse::MaterialOverride o;
+  if (body.density != material.density) o.density = Real(body.density);
+  if (body.restitution != material.restitution) o.restitution = Real(body.restitution);
+  if (body.friction != material.staticFriction) {
+    o.staticFriction = Real(body.friction);
+    o.dynamicFriction = Real(body.friction);
+  }
+  return o;
+}
+
 class ImpulseAdapter final : public EngineAdapter {
  public:
   ImpulseAdapter(const SceneDescription& scene, int subSteps) : world_(settingsFor(scene, subSteps)) {
@@ -56,6 +72,7 @@ class ImpulseAdapter final : public EngineAdapter {
       def.linearVelocity = toVec(body.velocity);
       def.angularVelocity = Real(body.angularVelocity);
       def.material = body.material;
+      def.materialOverride = overrideFor(body);
       def.isStatic = body.isStatic;
       impulse::CreateResult created = world_.createBody(def);
       if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
