@@ -2,6 +2,7 @@
 // command per line, and prints each reply as one JSON line on stdout.
 // Exit status: 0 when every line succeeded, 1 when some line failed, 2 when
 // the arguments or the connection failed.
+#include <algorithm>
 #include <condition_variable>
 #include <cstdio>
 #include <deque>
@@ -148,6 +149,10 @@ int run(const Arguments& arguments) {
     };
 
     std::size_t lineCount = 0;
+    // Snapshot counts when the last command was sent and at the last
+    // wait-snapshot report.
+    std::uint64_t sentMark = client.mirror().snapshotsApplied();
+    std::uint64_t reportedMark = sentMark;
     std::string line;
     while (true) {
       const auto status = lines.next(line, Milliseconds(20));
@@ -175,6 +180,7 @@ int run(const Arguments& arguments) {
                                Milliseconds(message.has_step() ? message.step().ticks() * 10 : 0);
           lineNumber = lineCount;
           command = name;
+          sentMark = client.mirror().snapshotsApplied();
           pending.push_back({lineCount, name, client.send(message), timeout});
           if (pending.size() >= kMaxPipelined) drainOne();
           break;
@@ -191,7 +197,11 @@ int run(const Arguments& arguments) {
           drainAll();
           lineNumber = lineCount;
           command = name;
-          const auto snapshot = client.awaitSnapshot(arguments.timeout);
+          // The newest snapshot that came after the last command was sent
+          // (and was not reported yet); otherwise the next one to arrive.
+          const bool fresh = client.mirror().snapshotsApplied() > std::max(sentMark, reportedMark);
+          const auto snapshot =
+              fresh ? client.lastSnapshot() : client.awaitSnapshot(arguments.timeout);
           if (!snapshot) {
             print(cli::errorReport(
                 lineCount, name,
@@ -199,6 +209,7 @@ int run(const Arguments& arguments) {
             ++failures;
             break;
           }
+          reportedMark = client.mirror().snapshotsApplied();
           print(cli::snapshotReport(lineCount, *snapshot, lastSnapshotBytes));
           break;
         }

@@ -10,7 +10,8 @@
 //   clear | remove ID | impulse ID JX JY [PX PY]
 //   query ID                     body description, state and mass properties
 //   bodies                       the client's mirror of every body
-//   wait-snapshot                wait for the next snapshot and summarise it
+//   wait-snapshot                the newest snapshot since the last command (or the
+//                                next one to arrive), summarised
 //   ping                         round trip and server statistics
 //
 // MATERIAL is solid, ice, wood, metal or rubber (any case).

@@ -64,8 +64,7 @@ void Server::start() {
   schedule_ = TickSchedule(periodOf(options_.tickHz), now);
   lastHousekeeping_ = now;
   lastStatsLog_ = now;
-  lastSnapshotSlot_ =
-      std::int64_t(std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
+  lastSnapshotSlot_ = snapshotSlot();
   logLine("serving preset " + std::to_string(options_.preset) + " at " +
           std::to_string(options_.tickHz) + " Hz" + (options_.paused ? ", paused" : ""));
   accept();
@@ -198,15 +197,17 @@ void Server::applyCommands() {
   }
 }
 
-bool Server::snapshotDue() {
-  const auto slot =
-      std::int64_t(std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
-  if (slot == lastSnapshotSlot_) return false;
-  lastSnapshotSlot_ = slot;
-  return true;
+std::int64_t Server::snapshotSlot() const {
+  return std::int64_t(
+      std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
 }
 
+bool Server::snapshotDue() const { return snapshotSlot() != lastSnapshotSlot_; }
+
 void Server::broadcastSnapshot() {
+  // Snapshots stay on the tick grid (every second tick at 60/30 Hz) even
+  // after paused steps broadcast on other ticks.
+  lastSnapshotSlot_ = snapshotSlot();
   std::vector<std::shared_ptr<Session>> subscribers;
   for (const auto& [id, session] : sessions_) {
     if (session->subscribed()) subscribers.push_back(session);

@@ -114,7 +114,11 @@ void Session::handleFrame(std::string_view payload) {
                    " (this server speaks " + std::to_string(wire::kProtocolVersion) + ")");
     }
     helloDone_ = true;
+    // The name only labels log lines: short and printable.
     name_ = hello.client_name().substr(0, 64);
+    for (char& c : name_) {
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    }
     logLine(label() + " said hello" + (hello.want_snapshots() ? " (subscribed)" : ""));
     host_.onHello(shared_from_this(), hello);
     return;

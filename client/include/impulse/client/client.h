@@ -60,6 +60,8 @@ class Client {
 
   const v1::Welcome& welcome() const { return welcome_; }
   const WorldMirror& mirror() const { return mirror_; }
+  /// The last snapshot applied.
+  const std::optional<v1::Snapshot>& lastSnapshot() const { return lastSnapshot_; }
 
   /// Sends a command with a fresh request id, which it returns.
   std::uint64_t send(v1::ClientMessage message);

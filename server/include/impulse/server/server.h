@@ -48,7 +48,9 @@ class Server final : public SessionHost {
   void runTick();
   void applyCommands();
   void broadcastSnapshot();
-  bool snapshotDue();
+  /// Snapshots are due when floor(tick * snapshot_hz / tick_hz) changes.
+  std::int64_t snapshotSlot() const;
+  bool snapshotDue() const;
   v1::ServerStats stats() const;
   void housekeeping(Clock::time_point now);
 
