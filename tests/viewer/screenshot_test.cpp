@@ -140,7 +140,8 @@ TEST(ViewerBinary, ConnectsLoadsAPresetAndSavesAScreenshot) {
   net_test::ServerProcess server;
   const std::string path = screenshotPath("binary_preset4.bmp");
   std::remove(path.c_str());
-  const std::string command = "SDL_VIDEODRIVER=offscreen SDL_RENDER_DRIVER=software " +
+  const std::string command =
+      "SDL_VIDEODRIVER=offscreen SDL_RENDER_DRIVER=software SDL_FRAMEBUFFER_ACCELERATION=0 " +
                               std::string(IMPULSE_VIEWER_BINARY) + " --connect 127.0.0.1:" +
                               std::to_string(server.port()) + " --preset 4 --frames 45" +
                               " --screenshot " + path;

@@ -23,9 +23,13 @@ client::ConnectOptions observerOptions(std::uint16_t port) {
 }
 
 ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height) {
-  // No display in CI: SDL's offscreen driver and its software renderer.
+  // No display in CI: SDL's offscreen driver and its software renderer,
+  // drawing straight into the window surface (without framebuffer
+  // acceleration SDL never loads Mesa through EGL, whose unloaded drivers
+  // LeakSanitizer would report in sanitizer builds).
   setenv("SDL_VIDEODRIVER", "offscreen", 1);
   setenv("SDL_RENDER_DRIVER", "software", 1);
+  setenv("SDL_FRAMEBUFFER_ACCELERATION", "0", 1);
   viewer::ViewerOptions options;
   options.connect.port = port;
   options.connect.name = "viewer-under-test";
