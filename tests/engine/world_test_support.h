@@ -55,6 +55,24 @@ inline BodyState stateOf(const World& world, BodyId id) {
   return state.value_or(BodyState{});
 }
 
+/// Creates a body from the fields box and circle specs share; the body must
+/// be accepted (a refusal fails the test).
+template <typename Spec>
+BodyId addBody(World& world, const Shape& shape, const Spec& spec, Real angle = 0) {
+  BodyDef def;
+  def.shape = shape;
+  def.position = spec.center;
+  def.angle = angle;
+  def.material = spec.material;
+  def.isStatic = spec.isStatic;
+  def.ignoreGravity = spec.ignoreGravity;
+  def.linearVelocity = spec.velocity;
+  def.angularVelocity = spec.angularVelocity;
+  CreateResult result = world.createBody(def);
+  EXPECT_TRUE(result.ok()) << result.error;
+  return result.id;
+}
+
 struct BoxSpec {
   Vec2 center = Vec2::Zero();
   Real halfWidth = Real(0.5);
@@ -68,18 +86,7 @@ struct BoxSpec {
 };
 
 inline BodyId addBox(World& world, const BoxSpec& spec) {
-  BodyDef def;
-  def.shape = Shape::makePolygon(makeBox(spec.halfWidth, spec.halfHeight));
-  def.position = spec.center;
-  def.angle = spec.angle;
-  def.material = spec.material;
-  def.isStatic = spec.isStatic;
-  def.ignoreGravity = spec.ignoreGravity;
-  def.linearVelocity = spec.velocity;
-  def.angularVelocity = spec.angularVelocity;
-  CreateResult result = world.createBody(def);
-  EXPECT_TRUE(result.ok()) << result.error;
-  return result.id;
+  return addBody(world, Shape::makePolygon(makeBox(spec.halfWidth, spec.halfHeight)), spec, spec.angle);
 }
 
 struct CircleSpec {
@@ -93,17 +100,7 @@ struct CircleSpec {
 };
 
 inline BodyId addCircle(World& world, const CircleSpec& spec) {
-  BodyDef def;
-  def.shape = Shape::makeCircle(spec.radius);
-  def.position = spec.center;
-  def.material = spec.material;
-  def.isStatic = spec.isStatic;
-  def.ignoreGravity = spec.ignoreGravity;
-  def.linearVelocity = spec.velocity;
-  def.angularVelocity = spec.angularVelocity;
-  CreateResult result = world.createBody(def);
-  EXPECT_TRUE(result.ok()) << result.error;
-  return result.id;
+  return addBody(world, Shape::makeCircle(spec.radius), spec);
 }
 
 /// A static ground slab whose top face is at y = top, spanning |x| <= halfWidth.
