@@ -77,11 +77,9 @@ void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
       mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
       std::max(rollingRadius(world.shapes[a]), rollingRadius(world.shapes[b]));
   contact.pairKey = pairKey(a, b);
-  contact.alive = true;
   linkEdge(world, index, 0);
   linkEdge(world, index, 1);
   world.contactByPair.emplace(contact.pairKey, index);
-  ++world.liveContacts;
 }
 
 // Carries impulses of points that persist (same feature id) into the new
@@ -94,7 +92,6 @@ void matchWarmStart(const Manifold& previous, Manifold& next) {
       if (old.id != point.id) continue;
       point.normalImpulse = old.normalImpulse;
       point.tangentImpulse = old.tangentImpulse;
-      point.persisted = true;
       break;
     }
   }
@@ -164,10 +161,8 @@ void destroyContact(WorldData& world, std::int32_t index) {
   unlinkEdge(world, index, 0);
   unlinkEdge(world, index, 1);
   world.contactByPair.erase(contact.pairKey);
-  contact.alive = false;
   contact.nextFree = world.freeContact;
   world.freeContact = index;
-  --world.liveContacts;
 }
 
 void destroyBodyContacts(WorldData& world, std::int32_t body) {

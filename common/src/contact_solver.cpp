@@ -199,8 +199,6 @@ void storeImpulses(std::span<const ContactConstraint> constraints, WorldData& wo
     for (int j = 0; j < c.pointCount; ++j) {
       manifold.points[j].normalImpulse = c.points[j].normalImpulse;
       manifold.points[j].tangentImpulse = c.points[j].tangentImpulse;
-      manifold.points[j].maxNormalImpulse = c.points[j].totalNormalImpulse;
-      manifold.points[j].relativeNormalVelocity = c.points[j].relativeVelocity;
     }
     manifold.rollingImpulse = c.rollingImpulse;
   }

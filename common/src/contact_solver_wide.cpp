@@ -1,6 +1,7 @@
 #include "contact_solver_wide.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <type_traits>
 
@@ -208,31 +209,35 @@ void buildWideContacts(std::span<const ContactConstraint> constraints, std::size
                        WideContactSet& set) {
   set.usedColors.assign(stateCount, 0);
   set.colorOf.resize(constraints.size());
-  int colorsInUse = 0;
+  // Counting sort by colour (overflow last), stable within a colour so the
+  // row order stays deterministic; one pass to count, one to place.
+  std::array<std::int32_t, kColorCount + 2> start{};
   for (std::size_t i = 0; i < constraints.size(); ++i) {
-    set.colorOf[i] = pickColor(set.usedColors, constraints[i].stateA, constraints[i].stateB);
-    colorsInUse = std::max(colorsInUse, set.colorOf[i] + 1);
+    int color = pickColor(set.usedColors, constraints[i].stateA, constraints[i].stateB);
+    set.colorOf[i] = color < 0 ? kColorCount : color;
+    ++start[set.colorOf[i] + 1];
+  }
+  for (int color = 0; color <= kColorCount; ++color) start[color + 1] += start[color];
+  set.order.resize(constraints.size());
+  std::array<std::int32_t, kColorCount + 1> next{};
+  std::copy(start.begin(), start.end() - 1, next.begin());
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    set.order[next[set.colorOf[i]]++] = static_cast<std::int32_t>(i);
   }
 
   set.bundles.clear();
+  for (int color = 0; color < kColorCount; ++color) {
+    for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
+      int lane = (k - start[color]) % kLanes;
+      if (lane == 0) set.bundles.push_back(emptyBundle());
+      packLane(set.bundles.back(), lane, constraints[set.order[k]], set.order[k]);
+    }
+  }
   set.overflow.clear();
   set.overflowSource.clear();
-  for (std::size_t i = 0; i < constraints.size(); ++i) {
-    if (set.colorOf[i] >= 0) continue;
-    set.overflow.push_back(constraints[i]);
-    set.overflowSource.push_back(static_cast<std::int32_t>(i));
-  }
-  // Colour by colour, in constraint order within a colour: deterministic.
-  for (int color = 0; color < colorsInUse; ++color) {
-    int lane = kLanes;
-    for (std::size_t i = 0; i < constraints.size(); ++i) {
-      if (set.colorOf[i] != color) continue;
-      if (lane == kLanes) {
-        set.bundles.push_back(emptyBundle());
-        lane = 0;
-      }
-      packLane(set.bundles.back(), lane++, constraints[i], static_cast<std::int32_t>(i));
-    }
+  for (std::int32_t k = start[kColorCount]; k < start[kColorCount + 1]; ++k) {
+    set.overflow.push_back(constraints[set.order[k]]);
+    set.overflowSource.push_back(set.order[k]);
   }
 }
 

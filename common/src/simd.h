@@ -5,8 +5,7 @@
 // hence this small type. Operation order is fixed, so results stay
 // deterministic.
 
-#include <emmintrin.h>
-#include <xmmintrin.h>
+#include <emmintrin.h>  // includes xmmintrin.h (_MM_TRANSPOSE4_PS)
 
 namespace impulse::simd {
 

@@ -257,7 +257,7 @@ std::vector<BodyId> World::bodyIds() const {
 
 int World::bodyCount() const { return impl_->liveBodies; }
 int World::awakeBodyCount() const { return static_cast<int>(impl_->awakeBodies.size()); }
-int World::contactCount() const { return impl_->liveContacts; }
+int World::contactCount() const { return static_cast<int>(impl_->contactByPair.size()); }
 std::span<const BodyId> World::movedBodies() const { return impl_->movedBodies; }
 
 void World::setGravity(const Vec2& gravity) {

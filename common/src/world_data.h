@@ -67,7 +67,6 @@ struct Contact {
   std::int32_t edgeNext[2] = {kNullIndex, kNullIndex};
   std::int32_t nextFree = kNullIndex;
   std::uint64_t pairKey = 0;
-  bool alive = false;
   bool touching = false;
 };
 
@@ -168,7 +167,6 @@ struct WorldData {
 
   std::vector<Contact> contacts;
   std::int32_t freeContact = kNullIndex;
-  int liveContacts = 0;
   // Lookup only (never iterated), so its order cannot leak into the step.
   std::unordered_map<std::uint64_t, std::int32_t> contactByPair;
 

@@ -26,12 +26,6 @@ struct ManifoldPoint {
 
   Real normalImpulse = 0;
   Real tangentImpulse = 0;
-  /// Largest normal impulse applied in the last step (for restitution and events).
-  Real maxNormalImpulse = 0;
-  /// Relative normal velocity before the solve (restitution uses it).
-  Real relativeNormalVelocity = 0;
-  /// True when the id matched a point of the previous step.
-  bool persisted = false;
 };
 
 /// Up to two contact points sharing one normal, which points from A to B.
