@@ -24,18 +24,21 @@ struct Flag {
   std::string_view name;
   bool takesValue;
   std::string_view help;
-  // Applies the value; returns an error message or "".
-  std::function<std::string(ServerOptions&, std::string_view)> apply;
+  // Applies the value (the flag's own name is passed for messages); returns
+  // an error message or "".
+  std::function<std::string(ServerOptions&, std::string_view name, std::string_view value)> apply;
 };
 
+// Parses an integer in [min, max] into `out`, whatever its integer type.
+template <class Int>
 std::string intFlag(std::string_view name, std::string_view text, long long min, long long max,
-                    long long& out) {
+                    Int& out) {
   const auto value = parseNumber<long long>(text);
   if (!value || *value < min || *value > max) {
     return std::string(name) + " expects an integer in " + std::to_string(min) + ".." +
            std::to_string(max) + ", got '" + std::string(text) + "'";
   }
-  out = *value;
+  out = static_cast<Int>(*value);
   return {};
 }
 
@@ -53,72 +56,54 @@ std::string realFlag(std::string_view name, std::string_view text, double min, d
 const std::vector<Flag>& flags() {
   static const std::vector<Flag> table = {
       {"--bind", true, "ADDR  address to listen on (default 127.0.0.1; 0.0.0.0 for all)",
-       [](ServerOptions& o, std::string_view v) {
-         if (v.empty()) return std::string("--bind expects an address");
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         if (v.empty()) return std::string(f) + " expects an address";
          o.bind = std::string(v);
          return std::string();
        }},
       {"--port", true, "N  TCP port (default 7777; 0 picks a free port)",
-       [](ServerOptions& o, std::string_view v) {
-         long long n = 0;
-         auto e = intFlag("--port", v, 0, 65535, n);
-         o.port = std::uint16_t(n);
-         return e;
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 0, 65535, o.port);
        }},
       {"--tick-hz", true, "HZ  simulation ticks per second (default 60)",
-       [](ServerOptions& o, std::string_view v) {
-         return realFlag("--tick-hz", v, 1, 1000, o.tickHz);
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return realFlag(f, v, 1, 1000, o.tickHz);
        }},
       {"--snapshot-hz", true,
        "HZ  snapshots per second while running (default 30, at most tick-hz)",
-       [](ServerOptions& o, std::string_view v) {
-         return realFlag("--snapshot-hz", v, 0.1, 1000, o.snapshotHz);
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return realFlag(f, v, 0.1, 1000, o.snapshotHz);
        }},
       {"--substeps", true, "N  solver sub-steps per tick (default 4)",
-       [](ServerOptions& o, std::string_view v) {
-         long long n = 0;
-         auto e = intFlag("--substeps", v, 1, 64, n);
-         o.subSteps = int(n);
-         return e;
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 64, o.subSteps);
        }},
       {"--preset", true, "N  scene loaded at start, 0-10 (default 0, the sandbox)",
-       [](ServerOptions& o, std::string_view v) {
-         long long n = 0;
-         auto e = intFlag("--preset", v, 0, kPresetCount - 1, n);
-         o.preset = int(n);
-         return e;
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 0, kPresetCount - 1, o.preset);
        }},
       {"--paused", false, "start paused (advance with Step)",
-       [](ServerOptions& o, std::string_view) {
+       [](ServerOptions& o, std::string_view, std::string_view) {
          o.paused = true;
          return std::string();
        }},
       {"--max-clients", true, "N  simultaneous connections (default 64)",
-       [](ServerOptions& o, std::string_view v) {
-         long long n = 0;
-         auto e = intFlag("--max-clients", v, 1, 10000, n);
-         o.maxClients = int(n);
-         return e;
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 10000, o.maxClients);
        }},
       {"--max-bodies", true, "N  bodies the world may hold (default 10000)",
-       [](ServerOptions& o, std::string_view v) {
-         long long n = 0;
-         auto e = intFlag("--max-bodies", v, 1, 200000, n);
-         o.maxBodies = int(n);
-         return e;
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 200000, o.maxBodies);
        }},
       {"--max-frame-bytes", true, "N  largest accepted message (default 1048576)",
-       [](ServerOptions& o, std::string_view v) {
-         long long n = 0;
-         auto e = intFlag("--max-frame-bytes", v, 64, 64 << 20, n);
-         o.maxFrameBytes = std::size_t(n);
-         return e;
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 64, 64 << 20, o.maxFrameBytes);
        }},
       {"--stall-timeout", true,
        "SECONDS  drop a client that accepts no data (or sends no Hello) for this long "
        "(default 10)",
-       [](ServerOptions& o, std::string_view v) {
-         return realFlag("--stall-timeout", v, 0.1, 3600, o.stallTimeoutSeconds);
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return realFlag(f, v, 0.1, 3600, o.stallTimeoutSeconds);
        }},
   };
   return table;
@@ -155,7 +140,7 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
     } else if (inlineValue) {
       return {std::nullopt, false, std::string(arg) + " takes no value"};
     }
-    if (auto error = flag->apply(options, value); !error.empty()) {
+    if (auto error = flag->apply(options, flag->name, value); !error.empty()) {
       return {std::nullopt, false, error};
     }
   }
