@@ -51,7 +51,6 @@ struct BodyDesc {
 };
 
 struct SceneDescription {
-  std::string name;
   Vec2d gravity{0, -9.81};
   bool allowSleep = false;
   std::vector<BodyDesc> bodies;

@@ -22,7 +22,6 @@ class BulletScene final : public Scene {
   std::string name() const override { return "bullets"; }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     scene.gravity = {0, 0};
     addBody(scene, makeStaticBox({kWallX, -1}, {kWallX + kWallThickness, 16}));
     int shot = 0;

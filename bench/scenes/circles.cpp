@@ -32,7 +32,6 @@ class ConfinedScene final : public Scene {
   std::string name() const override { return "confined"; }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     scene.gravity = {0, 0};
     addBody(scene, makeStaticBox({-11, -1}, {11, 0}, Material::Metal));
     addBody(scene, makeStaticBox({-11, 20}, {11, 21}, Material::Metal));
@@ -78,10 +77,9 @@ class ConfinedScene final : public Scene {
 
 // impulse::buildRain's layout: an open box about square in what it must hold,
 // circles in a staggered grid above it.
-SceneDescription rainScene(const std::string& name, int count) {
+SceneDescription rainScene(int count) {
   const double radius = 0.25;
   SceneDescription scene;
-  scene.name = name;
   scene.allowSleep = true;
   const double width = std::max(10.0, std::sqrt(double(count)) * radius * 3);
   addBody(scene, makeStaticBox({-width / 2 - 1, -1}, {width / 2 + 1, 0}, Material::Metal));
@@ -102,7 +100,7 @@ class RainScene final : public Scene {
  public:
   RainScene(std::string name, int count, RunLength length) : name_(std::move(name)), count_(count), length_(length) {}
   std::string name() const override { return name_; }
-  SceneDescription describe() const override { return rainScene(name_, count_); }
+  SceneDescription describe() const override { return rainScene(count_); }
   RunLength length() const override { return length_; }
   std::unique_ptr<Measure> measure(const SceneDescription& scene, Engine) const override {
     return std::make_unique<Watch>(scene);

@@ -55,7 +55,6 @@ class ClosedFormScene final : public Scene {
   std::string name() const override { return case_.name; }
   SceneDescription describe() const override {
     SceneDescription scene = case_.build();
-    scene.name = case_.name;
     return scene;
   }
   RunLength length() const override {

@@ -31,7 +31,6 @@ class FrictionRampScene final : public Scene {
   std::string name() const override { return "friction-ramp"; }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     const Vec2d up{std::cos(kAngle), std::sin(kAngle)};
     const Vec2d normal{-std::sin(kAngle), std::cos(kAngle)};
     for (int i = 0; i < kRampCount; ++i) {

@@ -21,7 +21,6 @@ class SleepingScene final : public Scene {
   std::string name() const override { return withResting_ ? "sleeping-5050" : "sleeping-awake-50"; }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     scene.allowSleep = true;
     // The awake circles' box, away from the shelves.
     addBody(scene, makeStaticBox({69, -1}, {81, 0}));

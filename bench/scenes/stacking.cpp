@@ -16,7 +16,6 @@ class PyramidScene final : public Scene {
   std::string name() const override { return "pyramid-" + std::to_string(rows_); }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     addGround(scene, rows_ + 10.0);
     addPyramid(scene, rows_, 1.0, Material::Solid);
     return scene;
@@ -57,7 +56,6 @@ class TowerScene final : public Scene {
   std::string name() const override { return "tower-15"; }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     addGround(scene, 20);
     for (int i = 0; i < kCount; ++i) {
       double shift = i % 2 == 0 ? 0.01 : -0.01;
@@ -98,7 +96,6 @@ class MassRatioScene final : public Scene {
   std::string name() const override { return "mass-ratio-400"; }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     addGround(scene, 20);
     addBody(scene, makeBody(ShapeDesc::box(0.25, 0.25), {-4, 0.25}, Material::Solid));
     addBody(scene, makeBody(ShapeDesc::box(0.25, 0.25), {4, 0.25}, Material::Solid));
@@ -138,7 +135,6 @@ class HeavyTopScene final : public Scene {
   std::string name() const override { return "heavy-top-" + std::to_string(int(ratio_)); }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     addGround(scene, 20, Material::Rubber);
     addPyramid(scene, 10, 1.0, Material::Rubber);
     BodyDesc heavy = makeBody(ShapeDesc::box(0.5, 0.5), {0, 10.5}, Material::Metal);
@@ -182,7 +178,6 @@ class OverlapRecoveryScene final : public Scene {
   std::string name() const override { return "overlap-recovery"; }
   SceneDescription describe() const override {
     SceneDescription scene;
-    scene.name = name();
     addGround(scene, 20);
     addPyramid(scene, 4, 0.75, Material::Solid);
     return scene;
