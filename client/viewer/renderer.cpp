@@ -130,7 +130,8 @@ void WorldRenderer::drawMarkers(const ViewTransform& view, std::span<const Marke
 void WorldRenderer::drawPreview(const ViewTransform& view, const Controls& controls) {
   if (controls.mode() == DrawMode::Polygon) {
     const auto& points = controls.polygonPoints();
-    std::vector<SDL_FPoint> line;
+    std::vector<SDL_FPoint>& line = previewLine_;
+    line.clear();
     for (const Vec2& p : points) line.push_back(point(view.toPixels(p)));
     if (line.size() >= 3) {
       Colour translucent = palette::kPreview;

@@ -43,6 +43,7 @@ class WorldRenderer {
   std::vector<SDL_Vertex> vertices_;
   std::vector<int> indices_;
   std::vector<SDL_FPoint> outline_;
+  std::vector<SDL_FPoint> previewLine_;  // the polygon being drawn, in pixels
   std::vector<std::vector<SDL_FPoint>> outlines_;
   std::vector<Colour> outlineColours_;
 };
