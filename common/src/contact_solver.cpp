@@ -20,6 +20,26 @@ void applyImpulse(SolverState& a, SolverState& b, const ContactConstraint& c, co
   b.angularVelocity += c.invInertiaB * cross(anchorB, impulse);
 }
 
+// A soft contact carries a steady impulse L per sub-step at the overlap where
+// its spring pushes L back: impulseScale * L = normalMass * massScale *
+// biasRate * overlap. That overlap is the contact's load, not an intrusion.
+Real overlapForLoad(const Softness& softness, Real normalMass, Real impulse) {
+  Real stiffness = normalMass * softness.massScale * softness.biasRate;
+  return stiffness > 0 ? softness.impulseScale * impulse / stiffness : Real(0);
+}
+
+// The soft push may reach the speed that carries last step's load with a
+// margin, and no more: pushing harder turns overlap into velocity, and
+// along a chain of contacts such pushes add up (a packed crowd flew apart at
+// 22 m/s). Deeper overlap is pushed out by the push pass instead.
+constexpr Real kLoadPushMargin = Real(1.5);
+constexpr Real kMinPushSpeed = Real(0.02);
+
+Real pushCapForLoad(const Softness& softness, Real loadOverlap, Real maxPushSpeed) {
+  return std::clamp(kLoadPushMargin * softness.biasRate * loadOverlap, kMinPushSpeed,
+                    std::max(maxPushSpeed, kMinPushSpeed));
+}
+
 Real effectiveMass(const ContactConstraint& c, const Vec2& anchorA, const Vec2& anchorB,
                    const Vec2& direction) {
   Real ra = cross(anchorA, direction);
@@ -43,7 +63,7 @@ void solveNormalRows(ContactConstraint& c, SolverState& a, SolverState& b, const
     if (separation > 0) {
       bias = separation * context.inverseSubStep;  // speculative: close the gap exactly
     } else if (useBias) {
-      bias = std::max(c.softness.biasRate * separation, -context.maxPushSpeed);
+      bias = std::max(c.softness.biasRate * separation, -cp.pushCap);
       massScale = c.softness.massScale;
       impulseScale = c.softness.impulseScale;
     }
@@ -137,6 +157,8 @@ void prepareContact(const WorldData& world, const Contact& contact, std::int32_t
     cp.tangentMass = effectiveMass(c, cp.anchorA, cp.anchorB, tangent);
     Vec2 relative = pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA);
     cp.relativeVelocity = relative.dot(c.normal);
+    cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, mp.normalImpulse);
+    cp.pushCap = pushCapForLoad(c.softness, cp.loadOverlap, world.settings.maxContactPushSpeed);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.
     cp.friction = std::abs(relative.dot(tangent)) < stickSpeed ? contact.staticFriction
@@ -169,6 +191,31 @@ void solveContacts(const ContactSolverContext& context, bool useBias) {
     solveNormalRows(c, a, b, deltaPosition, context, useBias, totalNormalImpulse);
     solveFrictionRows(c, a, b);
     solveRollingRow(c, a, b, totalNormalImpulse);
+  }
+}
+
+bool hasIntrusion(const ContactConstraint& c, const Manifold& manifold) {
+  for (int j = 0; j < c.pointCount; ++j) {
+    if (manifold.points[j].separation + c.points[j].loadOverlap < -kIntrusionSlop) return true;
+  }
+  return false;
+}
+
+void pushOverlap(const ContactSolverContext& context) {
+  for (ContactConstraint& c : context.constraints) {
+    SolverState& a = context.states[c.stateA];
+    SolverState& b = context.states[c.stateB];
+    Vec2 deltaPosition = b.deltaPosition - a.deltaPosition;
+    for (int j = 0; j < c.pointCount; ++j) {
+      ConstraintPoint& cp = c.points[j];
+      Vec2 moved = deltaPosition + b.deltaRotation.apply(cp.anchorB) - a.deltaRotation.apply(cp.anchorA);
+      Real intrusion = cp.baseSeparation + moved.dot(c.normal) + cp.loadOverlap;
+      if (intrusion >= 0) continue;
+      Real bias = std::max(c.softness.biasRate * intrusion, -context.maxPushSpeed);
+      Real vn = (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(c.normal);
+      Real impulse = std::max(-cp.normalMass * c.softness.massScale * (vn + bias), Real(0));
+      applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * c.normal);
+    }
   }
 }
 

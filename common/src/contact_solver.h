@@ -29,8 +29,22 @@ void prepareContact(const WorldData& world, const Contact& contact, std::int32_t
 void warmStartContacts(const ContactSolverContext& context);
 
 /// One Gauss-Seidel pass. With useBias the rows also push overlap out
-/// (softly); without it they only remove approach velocity (relaxation).
+/// (softly, no faster than the load needs); without it they only remove
+/// approach velocity (relaxation).
 void solveContacts(const ContactSolverContext& context, bool useBias);
+
+/// Overlap deeper than a contact's load explains (bodies created or
+/// pushed into each other) beyond this is pushed out by the push pass.
+inline constexpr Real kIntrusionSlop = Real(0.005);
+
+/// True when a point of the prepared constraint overlaps deeper than its
+/// load explains by more than kIntrusionSlop.
+bool hasIntrusion(const ContactConstraint& constraint, const Manifold& manifold);
+
+/// Split-impulse push: moves overlapping bodies apart through the velocities
+/// in the states, which the caller has swapped for zeroed pseudo velocities;
+/// only positions keep the result, so pushing adds no energy.
+void pushOverlap(const ContactSolverContext& context);
 
 /// Bounces: adds restitution to contacts that were approaching fast enough.
 void applyRestitution(const ContactSolverContext& context);

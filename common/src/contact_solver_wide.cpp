@@ -43,6 +43,8 @@ void packPoint(WidePoint& w, int lane, const ConstraintPoint& p) {
   setLane(w.tangentMass, lane, p.tangentMass);
   setLane(w.relativeVelocity, lane, p.relativeVelocity);
   setLane(w.friction, lane, p.friction);
+  setLane(w.loadOverlap, lane, p.loadOverlap);
+  setLane(w.pushCap, lane, p.pushCap);
 }
 
 void packLane(WideConstraint& w, int lane, const ContactConstraint& c, std::int32_t source) {
@@ -140,12 +142,12 @@ struct Bias {
 
 // Speculative points close their gap exactly; overlapping ones are pushed
 // out softly (with bias) or not at all (relaxation).
-Bias contactBias(const WideConstraint& c, F4 separation, const ContactSolverContext& context,
-                 bool useBias) {
+Bias contactBias(const WideConstraint& c, const WidePoint& p, F4 separation,
+                 const ContactSolverContext& context, bool useBias) {
   F4 speculative = simd::greater(separation, simd::zero());
   F4 closeGap = separation * simd::splat(context.inverseSubStep);
   if (!useBias) return {simd::select(speculative, closeGap, simd::zero()), simd::splat(1), simd::zero()};
-  F4 push = simd::max(c.biasRate * separation, simd::splat(-context.maxPushSpeed));
+  F4 push = simd::max(c.biasRate * separation, -p.pushCap);
   return {simd::select(speculative, closeGap, push),
           simd::select(speculative, simd::splat(1), c.massScale),
           simd::select(speculative, simd::zero(), c.impulseScale)};
@@ -164,7 +166,7 @@ F4 currentSeparation(const WideBody& a, const WideBody& b, const WidePoint& p, F
 
 F4 solveNormal(WideConstraint& c, WidePoint& p, WideBody& a, WideBody& b, F4 dpx, F4 dpy,
                const ContactSolverContext& context, bool useBias) {
-  Bias bias = contactBias(c, currentSeparation(a, b, p, dpx, dpy, c), context, useBias);
+  Bias bias = contactBias(c, p, currentSeparation(a, b, p, dpx, dpy, c), context, useBias);
   Relative dv = relativeVelocity(a, b, p);
   F4 vn = dv.vx * c.normalX + dv.vy * c.normalY;
   F4 impulse = -(p.normalMass * bias.massScale * (vn + bias.bias)) - bias.impulseScale * p.normalImpulse;
@@ -276,6 +278,28 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
     scatter(context.states, c.stateB, b);
   }
   solveContacts(overflowContext(context, set), useBias);
+}
+
+void pushWide(const ContactSolverContext& context, WideContactSet& set) {
+  const F4 maxPush = simd::splat(-context.maxPushSpeed);
+  for (WideConstraint& c : set.bundles) {
+    WideBody a = gather(context.states, c.stateA);
+    WideBody b = gather(context.states, c.stateB);
+    F4 dpx = b.dpx - a.dpx;
+    F4 dpy = b.dpy - a.dpy;
+    for (WidePoint& p : c.points) {
+      F4 intrusion = currentSeparation(a, b, p, dpx, dpy, c) + p.loadOverlap;
+      F4 bias = simd::max(c.biasRate * intrusion, maxPush);
+      Relative dv = relativeVelocity(a, b, p);
+      F4 vn = dv.vx * c.normalX + dv.vy * c.normalY;
+      F4 impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::zero());
+      impulse = simd::select(simd::less(intrusion, simd::zero()), impulse, simd::zero());
+      applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
+    }
+    scatter(context.states, c.stateA, a);
+    scatter(context.states, c.stateB, b);
+  }
+  pushOverlap(overflowContext(context, set));
 }
 
 void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {

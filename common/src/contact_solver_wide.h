@@ -15,6 +15,8 @@ void buildWideContacts(std::span<const ContactConstraint> constraints, std::size
 
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set);
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias);
+/// The push pass (pushOverlap) four constraints at a time.
+void pushWide(const ContactSolverContext& context, WideContactSet& set);
 void restitutionWide(const ContactSolverContext& context, WideContactSet& set);
 
 /// Copies the lanes' impulses back into the scalar constraints.

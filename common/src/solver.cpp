@@ -5,7 +5,8 @@
 //   for each sub-step:
 //     integrate velocities (gravity, forces, drag)
 //     warm start (apply last impulses)
-//     solve contacts with soft position bias
+//     solve contacts with soft position bias (no faster than loads need)
+//     push intrusions out through pseudo velocities (split impulse), if any
 //     integrate positions
 //     relax contacts (no bias: removes the velocity the bias added)
 //   restitution, store impulses, finalize bodies
@@ -54,11 +55,14 @@ void loadStates(WorldData& world, Real h) {
   }
 }
 
-void prepareConstraints(WorldData& world, Real h) {
+// Returns whether any contact overlaps deeper than its load explains, which
+// needs the push pass this step.
+bool prepareConstraints(WorldData& world, Real h) {
   Real hertz = std::min(world.settings.contactHertz, Real(0.25) / h);
   Softness contactSoftness = makeSoftness(hertz, world.settings.contactDampingRatio, h);
   Softness staticSoftness = makeSoftness(2 * hertz, world.settings.contactDampingRatio, h);
   world.constraints.clear();
+  bool intrusion = false;
   for (std::int32_t slot : world.awakeBodies) {
     for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
       std::int32_t index = edgeContact(key);
@@ -68,10 +72,12 @@ void prepareConstraints(WorldData& world, Real h) {
         world.constraints.emplace_back();
         prepareContact(world, contact, index, contactSoftness, staticSoftness, world.solverStates,
                        world.constraints.back());
+        intrusion = intrusion || hasIntrusion(world.constraints.back(), contact.manifold);
       }
       key = contact.edgeNext[edgeSide(key)];
     }
   }
+  return intrusion;
 }
 
 void integrateVelocities(WorldData& world, Real h) {
@@ -93,6 +99,42 @@ void integratePositions(WorldData& world, Real h) {
     SolverState& state = world.solverStates[k];
     state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
     state.deltaPosition += h * state.linearVelocity;
+  }
+}
+
+// A body being pushed out of an overlap moves without velocity; it must not
+// fall asleep halfway out.
+void keepAwakeWhilePushed(Body& body, const SolverState& pseudo, const WorldSettings& settings) {
+  Real pushSpeed = std::max(pseudo.linearVelocity.norm(), body.extent * std::abs(pseudo.angularVelocity));
+  if (pushSpeed > settings.linearSleepTolerance) body.sleepTime = 0;
+}
+
+// Split impulse for intrusions: the push pass runs on pseudo velocities that
+// move the bodies this sub-step and are then dropped, so pushing overlap out
+// never becomes real velocity. The real velocities are parked meanwhile.
+void pushThenIntegratePositions(WorldData& world, const ContactSolverContext& context,
+                                WideContactSet& wide, Real h) {
+  const std::size_t count = world.solverStates.size();
+  world.parkedVelocities.resize(count);
+  for (std::size_t k = 1; k < count; ++k) {
+    SolverState& state = world.solverStates[k];
+    world.parkedVelocities[k] = {state.linearVelocity, state.angularVelocity};
+    state.linearVelocity.setZero();
+    state.angularVelocity = 0;
+  }
+  pushWide(context, wide);
+  for (std::size_t k = 1; k < count; ++k) {
+    SolverState& state = world.solverStates[k];
+    keepAwakeWhilePushed(world.bodies[world.solverIntegration[k].body], state, world.settings);
+    const ParkedVelocity& real = world.parkedVelocities[k];
+    state.linearVelocity += real.linear;
+    state.angularVelocity += real.angular;
+  }
+  integratePositions(world, h);
+  for (std::size_t k = 1; k < count; ++k) {
+    SolverState& state = world.solverStates[k];
+    state.linearVelocity = world.parkedVelocities[k].linear;
+    state.angularVelocity = world.parkedVelocities[k].angular;
   }
 }
 
@@ -122,7 +164,7 @@ void solve(WorldData& world, Real dt) {
   const int subSteps = std::max(1, world.settings.subSteps);
   const Real h = dt / Real(subSteps);
   loadStates(world, h);
-  prepareConstraints(world, h);
+  const bool intrusion = prepareConstraints(world, h);
 
   ContactSolverContext context{world.solverStates, world.constraints, 1 / h,
                                world.settings.maxContactPushSpeed,
@@ -133,7 +175,11 @@ void solve(WorldData& world, Real dt) {
     integrateVelocities(world, h);
     warmStartWide(context, wide);
     solveWide(context, wide, true);
-    integratePositions(world, h);
+    if (intrusion) {
+      pushThenIntegratePositions(world, context, wide, h);
+    } else {
+      integratePositions(world, h);
+    }
     for (int r = 0; r < world.settings.relaxIterations; ++r) solveWide(context, wide, false);
   }
   // A flat face meeting a wall bounces on two points; one pass solves them

@@ -80,6 +80,13 @@ struct SolverState {
   Real padding = 0;
 };
 
+/// A body's real velocity, set aside while the push pass borrows the state's
+/// velocity slots for pseudo velocities.
+struct ParkedVelocity {
+  Vec2 linear = Vec2::Zero();
+  Real angular = 0;
+};
+
 /// Per-body integration inputs, read once per sub-step.
 struct SolverIntegration {
   Vec2 linearAcceleration = Vec2::Zero();  ///< gravity plus force / mass
@@ -106,6 +113,10 @@ struct ConstraintPoint {
   Real tangentMass = 0;
   Real relativeVelocity = 0;
   Real friction = 0;
+  /// Overlap at which the soft contact holds the load it carried last step.
+  Real loadOverlap = 0;
+  /// Fastest the soft contact may push (m/s): enough to carry that load.
+  Real pushCap = 0;
 };
 
 struct ContactConstraint {
@@ -133,6 +144,7 @@ struct WidePoint {
   simd::F4 normalImpulse, tangentImpulse, totalNormalImpulse;
   simd::F4 normalMass, tangentMass;
   simd::F4 relativeVelocity, friction;
+  simd::F4 loadOverlap, pushCap;
 };
 
 struct WideConstraint {
@@ -180,6 +192,7 @@ struct WorldData {
   std::vector<std::int32_t> activeContacts;
   std::vector<SolverState> solverStates;
   std::vector<SolverIntegration> solverIntegration;
+  std::vector<ParkedVelocity> parkedVelocities;
   std::vector<ContactConstraint> constraints;
   WideContactSet wideContacts;
   std::vector<std::int32_t> islandStack;

@@ -115,9 +115,10 @@ TEST(Overlap, HalfOverlappingBoxesSeparate_WithoutLaunching) {
     }
     return false;
   });
-  // The solver pushes overlap out at most at maxContactPushSpeed (3 m/s)
-  // relative; 0.5 m/s covers gravity and friction added in the same step.
-  EXPECT_LT(fastest, world.settings().maxContactPushSpeed + 0.5);
+  // Overlap no load explains is pushed out through positions, not
+  // velocities: what remains is the small soft push a fresh contact may use
+  // (measured 0.03 m/s). The issue's bound for overlap recovery: 1 m/s.
+  EXPECT_LT(fastest, 1.0);
   BodyState a = stateOf(world, left);
   BodyState b = stateOf(world, right);
   // Separated: centres at least one box width apart, minus the 5 mm slop.
@@ -125,6 +126,33 @@ TEST(Overlap, HalfOverlappingBoxesSeparate_WithoutLaunching) {
   // Neither launched up nor tipped over: still on the ground.
   EXPECT_NEAR(a.position.y(), 0.5, 0.01);
   EXPECT_NEAR(b.position.y(), 0.5, 0.01);
+}
+
+// The bench's overlap-recovery scene: a base-4 pyramid built at 0.75 m pitch,
+// every box a quarter inside its neighbours.
+TEST(Overlap, PyramidBuiltAtQuarterOverlap_SeparatesWithoutThrowingBoxes) {
+  World world;
+  addGround(world);
+  std::vector<BodyId> boxes;
+  for (int row = 0; row < 4; ++row) {
+    const int count = 4 - row;
+    for (int i = 0; i < count; ++i) {
+      Real x = Real(0.75) * (Real(i) - Real(0.5) * Real(count - 1));
+      boxes.push_back(addBox(world, {.center = Vec2(x, Real(0.5) + Real(0.75) * Real(row))}));
+    }
+  }
+  double fastest = 0;
+  simulateUntil(world, 3, [&] {
+    for (BodyId id : boxes) fastest = std::max(fastest, double(stateOf(world, id).linearVelocity.norm()));
+    return false;
+  });
+  // Issue target: below 1 m/s (was 3.5 m/s with the push in velocities;
+  // measured 0.04 m/s now).
+  EXPECT_LT(fastest, 1.0);
+  // Separated within 3 s: every box of the bottom row on the ground, and
+  // the rows a full box height apart (5 mm slop).
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(stateOf(world, boxes[std::size_t(i)]).position.y(), 0.5, 0.005);
+  EXPECT_GT(stateOf(world, boxes.back()).position.y(), 3.5 - 0.02);
 }
 
 // A closed static container with inner walls at |x| = halfSize and y in
@@ -201,6 +229,32 @@ TEST(Crowd, ThousandRandomBodiesStayFiniteAndInsideClosedBox_ForSixtySeconds) {
   EXPECT_EQ(world.stepCount(), static_cast<std::uint64_t>(stepsFor(60)));
   // The pile settles in about 10 s; after 60 s every body sleeps.
   EXPECT_EQ(world.awakeBodyCount(), 0);
+}
+
+// Box2D v3's "confined" benchmark: 625 unit circles at 0.72 m pitch (28 %
+// overlap) in a closed 20 m box without gravity. They cannot all fit, so
+// the overlap stays; what matters is that pushing it does not throw them.
+TEST(Crowd, ConfinedOverlappingCircles_AreNotThrownApart) {
+  WorldSettings settings;
+  settings.gravity = Vec2::Zero();
+  settings.enableSleep = false;
+  World world(settings);
+  Container box(world, 10);
+  std::vector<BodyId> circles;
+  for (int row = 0; row < 25; ++row) {
+    for (int column = 0; column < 25; ++column) {
+      Vec2 centre(Real(-8.75 + 0.72 * column), Real(1.25 + 0.72 * row));
+      circles.push_back(addCircle(world, {.center = centre, .radius = Real(0.5), .material = Material::Metal}));
+    }
+  }
+  double fastest = 0;
+  simulateUntil(world, 5, [&] {
+    for (BodyId id : circles) fastest = std::max(fastest, double(stateOf(world, id).linearVelocity.norm()));
+    return false;
+  });
+  // Was 22 m/s (Box2D v3: 15.5 m/s); measured 0.90 m/s now. The issue asks
+  // for 0.5 m/s: not met yet, so the bound here guards the gain.
+  EXPECT_LT(fastest, 1.5);
 }
 
 // ---- Sleeping ----

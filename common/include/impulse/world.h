@@ -34,8 +34,10 @@ struct WorldSettings {
   /// the stiffness is capped at a quarter of the sub-step rate for stability.
   Real contactHertz = 30;
   Real contactDampingRatio = 10;
-  /// Fastest speed (m/s) at which overlap is pushed out: deep overlaps resolve
-  /// gently instead of launching bodies.
+  /// Fastest speed (m/s) at which overlap is pushed out. A contact's soft
+  /// push is further held to what its load needs; overlap beyond that is
+  /// pushed out through positions only (no velocity), so deep overlaps
+  /// resolve without launching bodies.
   Real maxContactPushSpeed = 3;
   /// Approach speeds below this (m/s) do not bounce, so resting stacks stay put.
   Real restitutionThreshold = 1;
