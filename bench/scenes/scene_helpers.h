@@ -13,6 +13,14 @@ namespace bench {
 
 inline double distance(const Vec2d& a, const Vec2d& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 inline double speed(const Pose& pose) { return std::hypot(pose.velocity.x, pose.velocity.y); }
+inline double mass(const BodyDesc& body) { return body.density * body.shape.area(); }
+
+/// The largest speed among `bodies`.
+inline double fastest(const EngineAdapter& engine, const std::vector<int>& bodies) {
+  double most = 0;
+  for (int i : bodies) most = std::max(most, speed(engine.pose(i)));
+  return most;
+}
 
 /// A static ground slab whose top is at y = 0.
 inline int addGround(SceneDescription& scene, double halfWidth,
