@@ -29,7 +29,6 @@ function(add_box2d_v3_build bench_target flavour use_avx2)
     CMAKE_ARGS -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF -DBOX2D_AVX2=${use_avx2}
                -DBOX2D_VALIDATE=OFF -DBOX2D_SAMPLES=OFF -DBOX2D_UNIT_TESTS=OFF -DBOX2D_BENCHMARKS=OFF
                -DBOX2D_DOCS=OFF
-    BUILD_COMMAND ${CMAKE_COMMAND} --build . --target box2d
     INSTALL_COMMAND ""
     BUILD_BYPRODUCTS ${v3_lib})
 

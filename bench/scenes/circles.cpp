@@ -44,8 +44,10 @@ double restingEnergy(const SceneDescription& scene, const std::vector<int>& bodi
   return potential;
 }
 
-// Box2D v3's "confined": a 25x25 grid of 1 m circles at 0.72 m pitch (0.28 m
-// overlap) in a closed 20x20 m box that cannot hold them without overlap.
+// Box2D v3's "confined" sample (samples/sample_stacking.cpp): a 25x25 grid of
+// 1 m circles at 0.72 m pitch (0.28 m overlap), first at (-8.75, 1.5), in a
+// closed box whose inside is x in [-10, 10], y in [0.5, 20] (v3 walls it with
+// capsules; boxes here), which cannot hold them without overlap.
 class ConfinedScene final : public Scene {
  public:
   explicit ConfinedScene(bool quick) : quick_(quick) {}
@@ -53,14 +55,14 @@ class ConfinedScene final : public Scene {
   SceneDescription describe() const override {
     SceneDescription scene;
     scene.gravity = {0, 0};
-    addBody(scene, makeStaticBox({-11, -1}, {11, 0}, Material::Metal));
+    addBody(scene, makeStaticBox({-11, -0.5}, {11, 0.5}, Material::Metal));
     addBody(scene, makeStaticBox({-11, 20}, {11, 21}, Material::Metal));
-    addBody(scene, makeStaticBox({-11, 0}, {-10, 20}, Material::Metal));
-    addBody(scene, makeStaticBox({10, 0}, {11, 20}, Material::Metal));
+    addBody(scene, makeStaticBox({-11, 0.5}, {-10, 20}, Material::Metal));
+    addBody(scene, makeStaticBox({10, 0.5}, {11, 20}, Material::Metal));
     const int grid = 25;
     for (int row = 0; row < grid; ++row) {
       for (int column = 0; column < grid; ++column) {
-        addBody(scene, makeBody(ShapeDesc::circle(0.5), {-8.75 + column * 0.72, 1.25 + row * 0.72}, Material::Metal));
+        addBody(scene, makeBody(ShapeDesc::circle(0.5), {-8.75 + column * 0.72, 1.5 + row * 0.72}, Material::Metal));
       }
     }
     return scene;
