@@ -157,52 +157,46 @@ class HeavyBoxWatch final : public Measure {
 // A heavy unit box on top of a base-10 pyramid of RUBBER boxes (density 200)
 // at 10:1 (METAL's 2000), and at the 300:1 and 1000:1 given as
 // explicit densities.
-class HeavyTopScene final : public Scene {
- public:
-  HeavyTopScene(double ratio, bool quick) : ratio_(ratio), quick_(quick) {}
-  std::string name() const override { return "heavy-top-" + std::to_string(int(ratio_)); }
-  SceneDescription describe() const override {
-    SceneDescription scene;
-    addGround(scene, 20, Material::Rubber);
-    addPyramid(scene, 10, 1.0, Material::Rubber);
-    BodyDesc heavy = makeBody(ShapeDesc::box(0.5, 0.5), {0, 10.5}, Material::Metal);
-    double pyramidDensity = impulse::materialProperties(Material::Rubber).density;
-    heavy.density = ratio_ * pyramidDensity;
-    addBody(scene, heavy);
-    return scene;
-  }
-  RunLength length() const override { return quick_ ? RunLength{0, 5, 1, 5} : RunLength{0, 600, 3, 10}; }
-  std::unique_ptr<Measure> measure(const SceneDescription& scene, Engine) const override {
-    return std::make_unique<HeavyBoxWatch>(scene);
-  }
-
- private:
-  double ratio_;
-  bool quick_;
-};
+SceneDescription heavyTop(double ratio) {
+  SceneDescription scene;
+  addGround(scene, 20, Material::Rubber);
+  addPyramid(scene, 10, 1.0, Material::Rubber);
+  BodyDesc heavy = makeBody(ShapeDesc::box(0.5, 0.5), {0, 10.5}, Material::Metal);
+  heavy.density = ratio * impulse::materialProperties(Material::Rubber).density;
+  addBody(scene, heavy);
+  return scene;
+}
 
 // A 1 m box resting centred on one 0.5 m box on the ground, `ratio` times its
-// mass (SOLID boxes, the heavy one's density set for the ratio), for 10 s.
-class HeavyOnOneBoxScene final : public Scene {
+// mass (SOLID boxes, the heavy one's density set for the ratio).
+SceneDescription heavyOnOneBox(double ratio) {
+  SceneDescription scene;
+  addGround(scene, 20);
+  BodyDesc small = makeBody(ShapeDesc::box(0.25, 0.25), {0, 0.25}, Material::Solid);
+  BodyDesc heavy = makeBody(ShapeDesc::box(0.5, 0.5), {0, 0.5 + 0.5}, Material::Solid);
+  heavy.density = ratio * small.density * small.shape.area() / heavy.shape.area();
+  addBody(scene, small);
+  addBody(scene, heavy);
+  return scene;
+}
+
+// A heavy box (the last body) resting on lighter ones for 10 s, at a mass
+// ratio; `layout` places the bodies, the name is `family` + the ratio.
+class HeavyBoxScene final : public Scene {
  public:
-  HeavyOnOneBoxScene(double ratio, bool quick) : ratio_(ratio), quick_(quick) {}
-  std::string name() const override { return "heavy-on-box-" + std::to_string(int(ratio_)); }
-  SceneDescription describe() const override {
-    SceneDescription scene;
-    addGround(scene, 20);
-    BodyDesc small = makeBody(ShapeDesc::box(0.25, 0.25), {0, 0.25}, Material::Solid);
-    BodyDesc heavy = makeBody(ShapeDesc::box(0.5, 0.5), {0, 0.5 + 0.5}, Material::Solid);
-    heavy.density = ratio_ * small.density * small.shape.area() / heavy.shape.area();
-    addBody(scene, small);
-    addBody(scene, heavy);
-    return scene;
-  }
+  using Layout = SceneDescription (*)(double ratio);
+  HeavyBoxScene(std::string family, Layout layout, double ratio, bool quick)
+      : family_(std::move(family)), layout_(layout), ratio_(ratio), quick_(quick) {}
+  std::string name() const override { return family_ + std::to_string(int(ratio_)); }
+  SceneDescription describe() const override { return layout_(ratio_); }
   RunLength length() const override { return quick_ ? RunLength{0, 5, 1, 5} : RunLength{0, 600, 3, 10}; }
   std::unique_ptr<Measure> measure(const SceneDescription& scene, Engine) const override {
     return std::make_unique<HeavyBoxWatch>(scene);
   }
 
  private:
+  std::string family_;
+  Layout layout_;
   double ratio_;
   bool quick_;
 };
@@ -253,8 +247,12 @@ void addStackingScenes(SceneList& scenes, bool quick) {
   for (int rows : {20, 60, 100}) scenes.push_back(std::make_unique<PyramidScene>(rows, quick));
   scenes.push_back(std::make_unique<TowerScene>(quick));
   scenes.push_back(std::make_unique<MassRatioScene>(quick));
-  for (double ratio : {10, 300, 1000}) scenes.push_back(std::make_unique<HeavyTopScene>(ratio, quick));
-  for (double ratio : {180, 1000}) scenes.push_back(std::make_unique<HeavyOnOneBoxScene>(ratio, quick));
+  for (double ratio : {10, 300, 1000}) {
+    scenes.push_back(std::make_unique<HeavyBoxScene>("heavy-top-", heavyTop, ratio, quick));
+  }
+  for (double ratio : {180, 1000}) {
+    scenes.push_back(std::make_unique<HeavyBoxScene>("heavy-on-box-", heavyOnOneBox, ratio, quick));
+  }
   scenes.push_back(std::make_unique<OverlapRecoveryScene>(quick));
 }
 
