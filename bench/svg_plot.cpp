@@ -61,7 +61,8 @@ void drawEngineLines(std::FILE* f, const std::vector<const RunResult*>& points, 
   std::map<Engine, std::vector<const RunResult*>> byEngine;
   for (const RunResult* r : points) byEngine[r->setting.engine].push_back(r);
   for (auto& [engine, runs] : byEngine) {
-    std::sort(runs.begin(), runs.end(), [](const RunResult* a, const RunResult* b) { return a->medianMs < b->medianMs; });
+    std::sort(runs.begin(), runs.end(),
+              [](const RunResult* a, const RunResult* b) { return a->medianMs < b->medianMs; });
     std::fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-opacity=\"0.5\" points=\"", colour(engine));
     for (const RunResult* r : runs) std::fprintf(f, "%.1f,%.1f ", px(r->error()), py(r->medianMs));
     std::fprintf(f, "\"/>\n");
