@@ -7,13 +7,17 @@ const char* engineName(Engine engine) {
     case Engine::Impulse: return "impulse";
     case Engine::Box2D: return "box2d";
     case Engine::Chipmunk: return "chipmunk";
+    case Engine::Box2DV3Sse2: return "box2d-v3-sse2";
+    case Engine::Box2DV3Avx2: return "box2d-v3-avx2";
   }
   return "?";
 }
 
 std::string EngineSetting::label() const {
   switch (engine) {
-    case Engine::Impulse: return "sub " + std::to_string(iterations);
+    case Engine::Impulse:
+    case Engine::Box2DV3Sse2:
+    case Engine::Box2DV3Avx2: return "sub " + std::to_string(iterations);
     case Engine::Box2D: return "it " + std::to_string(iterations) + "/" + std::to_string(positionIterations);
     case Engine::Chipmunk: return "it " + std::to_string(iterations);
   }
@@ -21,17 +25,28 @@ std::string EngineSetting::label() const {
 }
 
 std::vector<EngineSetting> allSettings() {
-  return {{Engine::Impulse, 1, 0},  {Engine::Impulse, 2, 0},  {Engine::Impulse, 4, 0},
-          {Engine::Impulse, 8, 0},  {Engine::Box2D, 8, 3},    {Engine::Box2D, 30, 10},
-          {Engine::Chipmunk, 10, 0}, {Engine::Chipmunk, 30, 0}};
+  return {{Engine::Impulse, 1, 0},     {Engine::Impulse, 2, 0},     {Engine::Impulse, 4, 0},
+          {Engine::Impulse, 8, 0},     {Engine::Box2D, 8, 3},       {Engine::Box2D, 30, 10},
+          {Engine::Chipmunk, 10, 0},   {Engine::Chipmunk, 30, 0},
+#ifdef IMPULSE_BENCH_BOX2D_V3
+          {Engine::Box2DV3Sse2, 4, 0}, {Engine::Box2DV3Sse2, 8, 0}, {Engine::Box2DV3Avx2, 4, 0},
+          {Engine::Box2DV3Avx2, 8, 0},
+#endif
+  };
 }
 
 std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting) {
   switch (setting.engine) {
-    case Engine::Impulse:
-      return makeImpulseAdapter(scene, setting.iterations);
+    case Engine::Impulse: return makeImpulseAdapter(scene, setting.iterations);
     case Engine::Box2D: return makeBox2DAdapter(scene, setting.iterations, setting.positionIterations);
     case Engine::Chipmunk: return makeChipmunkAdapter(scene, setting.iterations);
+#ifdef IMPULSE_BENCH_BOX2D_V3
+    case Engine::Box2DV3Sse2: return box2d_v3_sse2::makeAdapter(scene, setting.iterations);
+    case Engine::Box2DV3Avx2: return box2d_v3_avx2::makeAdapter(scene, setting.iterations);
+#else
+    case Engine::Box2DV3Sse2:
+    case Engine::Box2DV3Avx2: break;  // not built: allSettings() never lists them
+#endif
   }
   return nullptr;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The common face of the three engines: build from a SceneDescription, step,
+// The common face of the engines: build from a SceneDescription, step,
 // read poses back in description order.
 
 #include <memory>
@@ -10,12 +10,14 @@
 
 namespace bench {
 
-enum class Engine { Impulse, Box2D, Chipmunk };
+/// Box2DV3Sse2/Avx2: Box2D v3 built twice from one source tree, present only
+/// when CMake was given IMPULSE_BOX2D_V3_SOURCE (IMPULSE_BENCH_BOX2D_V3).
+enum class Engine { Impulse, Box2D, Chipmunk, Box2DV3Sse2, Box2DV3Avx2 };
 
 const char* engineName(Engine engine);
 
-/// One engine at one solver setting: Impulse sub-steps, Box2D velocity and
-/// position iterations, Chipmunk iterations.
+/// One engine at one solver setting: Impulse and Box2D v3 sub-steps, Box2D
+/// 2.4.1 velocity and position iterations, Chipmunk iterations.
 struct EngineSetting {
   Engine engine = Engine::Impulse;
   int iterations = 4;
@@ -24,7 +26,8 @@ struct EngineSetting {
 };
 
 /// Impulse at 1, 2, 4 and 8 sub-steps; Box2D at 8/3 (default) and 30/10;
-/// Chipmunk at 10 (default) and 30 iterations.
+/// Chipmunk at 10 (default) and 30 iterations; Box2D v3 (when built) at 4
+/// (default) and 8 sub-steps in each of its builds.
 std::vector<EngineSetting> allSettings();
 
 struct Pose {
@@ -50,5 +53,12 @@ std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene,
 std::unique_ptr<EngineAdapter> makeBox2DAdapter(const SceneDescription& scene, int velocityIterations,
                                                 int positionIterations);
 std::unique_ptr<EngineAdapter> makeChipmunkAdapter(const SceneDescription& scene, int iterations);
+// One per v3 build; adapters/box2d_v3_adapter.cpp compiled into each namespace.
+namespace box2d_v3_sse2 {
+std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps);
+}
+namespace box2d_v3_avx2 {
+std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps);
+}
 
 }  // namespace bench

@@ -1,6 +1,7 @@
-// Speed against error, Impulse side by side with Box2D 2.4.1 and Chipmunk 7:
-// every scene in every engine setting, a table per scene, ratio lines, and
-// optionally a CSV file and an SVG plot per scene.
+// Speed against error, Impulse side by side with Box2D 2.4.1, Chipmunk 7 and,
+// when built with it, Box2D v3: every scene in every engine setting, a table
+// per scene, ratio and front lines, and optionally a CSV file and an SVG plot
+// per scene.
 //
 //   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART] [--engine NAME]
 //
@@ -80,6 +81,7 @@ int main(int argc, char** argv) {
     }
     bench::printTable(stdout, results);
     bench::printRatios(stdout, results);
+    bench::printFront(stdout, results);
     std::fflush(stdout);
     if (!options.plotDirectory.empty() && !bench::writeSvgPlot(options.plotDirectory, results)) {
       std::fprintf(stderr, "cannot write a plot in %s\n", options.plotDirectory.c_str());

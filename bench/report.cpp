@@ -5,6 +5,8 @@
 #include <map>
 #include <optional>
 
+#include "front.h"
+
 namespace bench {
 
 namespace {
@@ -72,6 +74,16 @@ void printRatios(std::FILE* out, const std::vector<RunResult>& results) {
       std::fprintf(out, "  | vs %s: x%.2f (%s)", engineSetting(peer).c_str(), best->medianMs / peer.medianMs,
                    best->setting.label().c_str());
     }
+  }
+  std::fprintf(out, "\n");
+}
+
+void printFront(std::FILE* out, const std::vector<RunResult>& results) {
+  const RunResult* reference = firstOk(results);
+  if (reference == nullptr || reference->metrics.empty()) return;
+  std::fprintf(out, "front (ms med against %s, fastest first):", reference->metrics.front().name.c_str());
+  for (const RunResult* r : paretoFront(results)) {
+    std::fprintf(out, "  | %s (%.3f ms, %.4g)", engineSetting(*r).c_str(), r->medianMs, r->error());
   }
   std::fprintf(out, "\n");
 }

@@ -17,6 +17,10 @@ void printTable(std::FILE* out, const std::vector<RunResult>& results);
 /// error over the peer's time ("x0.5" = we take half the time).
 void printRatios(std::FILE* out, const std::vector<RunResult>& results);
 
+/// The speed-against-error front: the engine settings no other setting beats
+/// on both median ms/step and headline error, fastest first.
+void printFront(std::FILE* out, const std::vector<RunResult>& results);
+
 /// Lines computed across scenes: ms/step-vs-n slope of the scaling-* scenes
 /// (log-log least squares) and sleeping-5050 minus sleeping-awake-50.
 void printDerived(std::FILE* out, const std::vector<RunResult>& all);

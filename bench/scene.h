@@ -53,7 +53,7 @@ using SceneList = std::vector<std::unique_ptr<Scene>>;
 // runs (scenes keep their full size so each still builds in every engine).
 void addStackingScenes(SceneList& scenes, bool quick);    // pyramids, tower, mass ratios, overlap
 void addFrictionRampScene(SceneList& scenes, bool quick);
-void addCircleScenes(SceneList& scenes, bool quick);      // confined, rain, scaling
+void addCircleScenes(SceneList& scenes, bool quick);      // confined, squeeze, rain, scaling
 void addBulletScene(SceneList& scenes, bool quick);
 void addClosedFormScenes(SceneList& scenes, bool quick);  // free fall, incline, rolling, bounce
 void addSleepingScenes(SceneList& scenes, bool quick);

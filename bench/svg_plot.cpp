@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+
+#include "front.h"
 
 namespace bench {
 
@@ -16,6 +19,8 @@ const char* colour(Engine engine) {
     case Engine::Impulse: return "#d62728";
     case Engine::Box2D: return "#1f77b4";
     case Engine::Chipmunk: return "#2ca02c";
+    case Engine::Box2DV3Sse2: return "#9467bd";
+    case Engine::Box2DV3Avx2: return "#ff7f0e";
   }
   return "#000";
 }
@@ -50,6 +55,31 @@ struct Axis {
   }
 };
 
+// Each engine's settings joined in order of cost, so its own speed-error
+// curve shows.
+void drawEngineLines(std::FILE* f, const std::vector<const RunResult*>& points, const auto& px, const auto& py) {
+  std::map<Engine, std::vector<const RunResult*>> byEngine;
+  for (const RunResult* r : points) byEngine[r->setting.engine].push_back(r);
+  for (auto& [engine, runs] : byEngine) {
+    std::sort(runs.begin(), runs.end(),
+              [](const RunResult* a, const RunResult* b) { return a->medianMs < b->medianMs; });
+    std::fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-opacity=\"0.5\" points=\"", colour(engine));
+    for (const RunResult* r : runs) std::fprintf(f, "%.1f,%.1f ", px(r->error()), py(r->medianMs));
+    std::fprintf(f, "\"/>\n");
+  }
+}
+
+// The Pareto front as a grey staircase: nothing below and left of it exists.
+void drawFront(std::FILE* f, const std::vector<RunResult>& results, const auto& px, const auto& py) {
+  std::vector<const RunResult*> front = paretoFront(results);
+  std::fprintf(f, "<polyline fill=\"none\" stroke=\"#444\" stroke-width=\"2\" stroke-dasharray=\"6 3\" points=\"");
+  for (std::size_t i = 0; i < front.size(); ++i) {
+    if (i > 0) std::fprintf(f, "%.1f,%.1f ", px(front[i - 1]->error()), py(front[i]->medianMs));
+    std::fprintf(f, "%.1f,%.1f ", px(front[i]->error()), py(front[i]->medianMs));
+  }
+  std::fprintf(f, "\"/>\n");
+}
+
 }  // namespace
 
 bool writeSvgPlot(const std::string& directory, const std::vector<RunResult>& results) {
@@ -75,7 +105,7 @@ bool writeSvgPlot(const std::string& directory, const std::vector<RunResult>& re
   std::fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" font-size=\"11\">\n",
                kWidth, kHeight);
   std::fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
-  std::fprintf(f, "<text x=\"%.0f\" y=\"20\" font-size=\"14\">%s: ms/step against %s (lower left is better)</text>\n",
+  std::fprintf(f, "<text x=\"%.0f\" y=\"20\" font-size=\"14\">%s: ms/step against %s (lower left is better; dashed: the front)</text>\n",
                kLeft, points.front()->scene.c_str(), points.front()->metrics.front().name.c_str());
   std::fprintf(f, "<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" fill=\"none\" stroke=\"#888\"/>\n", kLeft,
                kTop, plotW, plotH);
@@ -89,6 +119,8 @@ bool writeSvgPlot(const std::string& directory, const std::vector<RunResult>& re
                points.front()->metrics.front().name.c_str(), x.log ? " (log)" : "");
   std::fprintf(f, "<text x=\"15\" y=\"%.0f\" transform=\"rotate(-90 15 %.0f)\" text-anchor=\"middle\">ms/step median%s</text>\n",
                kTop + plotH / 2, kTop + plotH / 2, y.log ? " (log)" : "");
+  drawEngineLines(f, points, px, py);
+  drawFront(f, results, px, py);
   for (const RunResult* r : points) {
     double cx = px(r->error()), cy = py(r->medianMs);
     std::fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n", cx, cy, colour(r->setting.engine));

@@ -1,6 +1,7 @@
 #pragma once
 // One SVG per scene: ms/step (median) against the headline error, a point
-// per engine setting, so the speed-versus-error front shows at a glance.
+// per engine setting, each engine's settings joined by a line, and the
+// Pareto front (front.h) dashed, so who dominates shows at a glance.
 
 #include <string>
 #include <vector>

@@ -25,76 +25,65 @@ BodyDesc withFriction(BodyDesc body, double friction) {
   return body;
 }
 
-class FrictionRampScene final : public Scene {
- public:
-  explicit FrictionRampScene(bool quick) : quick_(quick) {}
-  std::string name() const override { return "friction-ramp"; }
-  SceneDescription describe() const override {
-    SceneDescription scene;
-    const Vec2d up{std::cos(kAngle), std::sin(kAngle)};
-    const Vec2d normal{-std::sin(kAngle), std::cos(kAngle)};
-    for (int i = 0; i < kRampCount; ++i) {
-      Vec2d centre{0, 10.0 * i};
-      BodyDesc ramp = withFriction(
-          makeBody(ShapeDesc::box(kHalfLength, kHalfThickness), centre, impulse::Material::Wood, true),
-          kFrictions[i]);
-      ramp.angle = kAngle;
-      addBody(scene, ramp);
-      double along = kHalfLength - 1.5, off = kHalfThickness + 0.5;
-      BodyDesc box = withFriction(
-          makeBody(ShapeDesc::box(0.5, 0.5),
-                   {centre.x + along * up.x + off * normal.x, centre.y + along * up.y + off * normal.y},
-                   impulse::Material::Wood),
-          kFrictions[i]);
-      box.angle = kAngle;
-      addBody(scene, box);
-    }
-    return scene;
+SceneDescription frictionRamps() {
+  SceneDescription scene;
+  const Vec2d up{std::cos(kAngle), std::sin(kAngle)};
+  const Vec2d normal{-std::sin(kAngle), std::cos(kAngle)};
+  for (int i = 0; i < kRampCount; ++i) {
+    Vec2d centre{0, 10.0 * i};
+    BodyDesc ramp = withFriction(
+        makeBody(ShapeDesc::box(kHalfLength, kHalfThickness), centre, impulse::Material::Wood, true),
+        kFrictions[i]);
+    ramp.angle = kAngle;
+    addBody(scene, ramp);
+    double along = kHalfLength - 1.5, off = kHalfThickness + 0.5;
+    BodyDesc box = withFriction(
+        makeBody(ShapeDesc::box(0.5, 0.5),
+                 {centre.x + along * up.x + off * normal.x, centre.y + along * up.y + off * normal.y},
+                 impulse::Material::Wood),
+        kFrictions[i]);
+    box.angle = kAngle;
+    addBody(scene, box);
   }
-  RunLength length() const override { return quick_ ? RunLength{0, 5, 1, 5} : RunLength{0, 120, 3, 120}; }
-  std::unique_ptr<Measure> measure(const SceneDescription& scene, Engine) const override {
-    return std::make_unique<Watch>(scene);
+  return scene;
+}
+
+class RampWatch final : public Measure {
+ public:
+  explicit RampWatch(const SceneDescription& scene) : scene_(scene) {}
+  void observe(const EngineAdapter&, int step) override { time_ = (step + 1) * kDt; }
+  std::vector<Metric> results(const EngineAdapter& engine) override {
+    const Vec2d up{std::cos(kAngle), std::sin(kAngle)};
+    double worst = 0;
+    int matches = 0;
+    std::vector<Metric> slides;
+    for (int i = 0; i < kRampCount; ++i) {
+      const double mu = kFrictions[i];
+      bool holds = mu >= std::tan(kAngle);
+      double expected = holds ? 0 : 0.5 * kGravity * (std::sin(kAngle) - mu * std::cos(kAngle)) * time_ * time_;
+      const Vec2d& start = scene_.bodies[std::size_t(2 * i + 1)].position;
+      Vec2d now = engine.pose(2 * i + 1).position;
+      double slid = -((now.x - start.x) * up.x + (now.y - start.y) * up.y);
+      worst = std::max(worst, std::abs(slid - expected));
+      if ((slid < 0.05) == holds) ++matches;
+      char label[32];
+      std::snprintf(label, sizeof label, "slid@%.3g m", mu);
+      slides.push_back({label, slid});
+    }
+    std::vector<Metric> metrics = {{"slide err m", worst}, {"right stick/slide", double(matches)}};
+    metrics.insert(metrics.end(), slides.begin(), slides.end());
+    return metrics;
   }
 
  private:
-  class Watch final : public Measure {
-   public:
-    explicit Watch(const SceneDescription& scene) : scene_(scene) {}
-    void observe(const EngineAdapter&, int step) override { time_ = (step + 1) * kDt; }
-    std::vector<Metric> results(const EngineAdapter& engine) override {
-      const Vec2d up{std::cos(kAngle), std::sin(kAngle)};
-      double worst = 0;
-      int matches = 0;
-      std::vector<Metric> slides;
-      for (int i = 0; i < kRampCount; ++i) {
-        const double mu = kFrictions[i];
-        bool holds = mu >= std::tan(kAngle);
-        double expected = holds ? 0 : 0.5 * kGravity * (std::sin(kAngle) - mu * std::cos(kAngle)) * time_ * time_;
-        const Vec2d& start = scene_.bodies[std::size_t(2 * i + 1)].position;
-        Vec2d now = engine.pose(2 * i + 1).position;
-        double slid = -((now.x - start.x) * up.x + (now.y - start.y) * up.y);
-        worst = std::max(worst, std::abs(slid - expected));
-        if ((slid < 0.05) == holds) ++matches;
-        char label[32];
-        std::snprintf(label, sizeof label, "slid@%.3g m", mu);
-        slides.push_back({label, slid});
-      }
-      std::vector<Metric> metrics = {{"slide err m", worst}, {"right stick/slide", double(matches)}};
-      metrics.insert(metrics.end(), slides.begin(), slides.end());
-      return metrics;
-    }
-
-   private:
-    const SceneDescription& scene_;
-    double time_ = 0;
-  };
-  bool quick_;
+  const SceneDescription& scene_;
+  double time_ = 0;
 };
 
 }  // namespace
 
 void addFrictionRampScene(SceneList& scenes, bool quick) {
-  scenes.push_back(std::make_unique<FrictionRampScene>(quick));
+  addListedScene<RampWatch>(scenes, quick, "friction-ramp", frictionRamps, {0, 120, 3, 120}, {0, 5, 1, 5});
 }
 
 }  // namespace bench

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "penetration.h"
@@ -13,6 +16,14 @@ namespace bench {
 
 inline double distance(const Vec2d& a, const Vec2d& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 inline double speed(const Pose& pose) { return std::hypot(pose.velocity.x, pose.velocity.y); }
+inline double mass(const BodyDesc& body) { return body.density * body.shape.area(); }
+
+/// The largest speed among `bodies`.
+inline double fastest(const EngineAdapter& engine, const std::vector<int>& bodies) {
+  double most = 0;
+  for (int i : bodies) most = std::max(most, speed(engine.pose(i)));
+  return most;
+}
 
 /// A static ground slab whose top is at y = 0.
 inline int addGround(SceneDescription& scene, double halfWidth,
@@ -58,5 +69,33 @@ class PeakPenetration {
   PenetrationProbe probe_;
   double peak_ = 0;
 };
+
+/// A scene as data: its name, a function that lays it out, its run length,
+/// and the Measure type that watches it (built from the description alone).
+template <class Watch>
+class ListedScene final : public Scene {
+ public:
+  ListedScene(std::string name, std::function<SceneDescription()> layout, RunLength length)
+      : name_(std::move(name)), layout_(std::move(layout)), length_(length) {}
+  std::string name() const override { return name_; }
+  SceneDescription describe() const override { return layout_(); }
+  RunLength length() const override { return length_; }
+  std::unique_ptr<Measure> measure(const SceneDescription& scene, Engine) const override {
+    return std::make_unique<Watch>(scene);
+  }
+
+ private:
+  std::string name_;
+  std::function<SceneDescription()> layout_;
+  RunLength length_;
+};
+
+/// Appends a ListedScene run for `full`, or for `quickLength` in --quick runs.
+template <class Watch>
+void addListedScene(SceneList& scenes, bool quick, std::string name, std::function<SceneDescription()> layout,
+                    RunLength full, RunLength quickLength) {
+  scenes.push_back(
+      std::make_unique<ListedScene<Watch>>(std::move(name), std::move(layout), quick ? quickLength : full));
+}
 
 }  // namespace bench

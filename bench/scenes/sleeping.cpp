@@ -15,60 +15,52 @@ constexpr int kShelves = 50;
 constexpr int kPerShelf = 100;
 constexpr int kAwake = 50;
 
-class SleepingScene final : public Scene {
- public:
-  SleepingScene(bool withResting, bool quick) : withResting_(withResting), quick_(quick) {}
-  std::string name() const override { return withResting_ ? "sleeping-5050" : "sleeping-awake-50"; }
-  SceneDescription describe() const override {
-    SceneDescription scene;
-    scene.allowSleep = true;
-    // The awake circles' box, away from the shelves.
-    addBody(scene, makeStaticBox({69, -1}, {81, 0}));
-    addBody(scene, makeStaticBox({69, 0}, {70, 5}));
-    addBody(scene, makeStaticBox({80, 0}, {81, 5}));
-    for (int i = 0; i < kAwake; ++i) {
-      addBody(scene, makeBody(ShapeDesc::circle(0.25), {71 + (i % 10) * 0.8, 25 + (i / 10) * 0.8}, Material::Solid));
-    }
-    if (!withResting_) return scene;
-    for (int shelf = 0; shelf < kShelves; ++shelf) {
-      double top = 3.0 * shelf;
-      addBody(scene, makeStaticBox({-60, top - 1}, {60, top}));
-      for (int i = 0; i < kPerShelf; ++i) {
-        addBody(scene, makeBody(ShapeDesc::box(0.5, 0.5), {-55 + 1.1 * i, top + 0.5}, Material::Solid));
-      }
-    }
-    return scene;
+// The awake circles in their box, and with `withResting` the shelves of boxes.
+SceneDescription shelves(bool withResting) {
+  SceneDescription scene;
+  scene.allowSleep = true;
+  // The awake circles' box, away from the shelves.
+  addBody(scene, makeStaticBox({69, -1}, {81, 0}));
+  addBody(scene, makeStaticBox({69, 0}, {70, 5}));
+  addBody(scene, makeStaticBox({80, 0}, {81, 5}));
+  for (int i = 0; i < kAwake; ++i) {
+    addBody(scene, makeBody(ShapeDesc::circle(0.25), {71 + (i % 10) * 0.8, 25 + (i / 10) * 0.8}, Material::Solid));
   }
-  RunLength length() const override { return quick_ ? RunLength{5, 5, 1, 5} : RunLength{90, 120, 3, 120}; }
-  std::unique_ptr<Measure> measure(const SceneDescription& scene, Engine) const override {
-    return std::make_unique<Watch>(scene);
+  if (!withResting) return scene;
+  for (int shelf = 0; shelf < kShelves; ++shelf) {
+    double top = 3.0 * shelf;
+    addBody(scene, makeStaticBox({-60, top - 1}, {60, top}));
+    for (int i = 0; i < kPerShelf; ++i) {
+      addBody(scene, makeBody(ShapeDesc::box(0.5, 0.5), {-55 + 1.1 * i, top + 0.5}, Material::Solid));
+    }
+  }
+  return scene;
+}
+
+class RestingAwakeWatch final : public Measure {
+ public:
+  explicit RestingAwakeWatch(const SceneDescription& scene) : scene_(scene) {}
+  void observe(const EngineAdapter&, int) override {}
+  std::vector<Metric> results(const EngineAdapter& engine) override {
+    int awake = 0;
+    for (int i = 3 + kAwake; i < static_cast<int>(scene_.bodies.size()); ++i) {
+      if (!scene_.bodies[std::size_t(i)].isStatic && engine.pose(i).awake) ++awake;
+    }
+    return {{"resting awake", double(awake)}};
   }
 
  private:
-  class Watch final : public Measure {
-   public:
-    explicit Watch(const SceneDescription& scene) : scene_(scene) {}
-    void observe(const EngineAdapter&, int) override {}
-    std::vector<Metric> results(const EngineAdapter& engine) override {
-      int awake = 0;
-      for (int i = 3 + kAwake; i < static_cast<int>(scene_.bodies.size()); ++i) {
-        if (!scene_.bodies[std::size_t(i)].isStatic && engine.pose(i).awake) ++awake;
-      }
-      return {{"resting awake", double(awake)}};
-    }
-
-   private:
-    const SceneDescription& scene_;
-  };
-  bool withResting_;
-  bool quick_;
+  const SceneDescription& scene_;
 };
 
 }  // namespace
 
 void addSleepingScenes(SceneList& scenes, bool quick) {
-  scenes.push_back(std::make_unique<SleepingScene>(true, quick));
-  scenes.push_back(std::make_unique<SleepingScene>(false, quick));
+  for (bool withResting : {true, false}) {
+    addListedScene<RestingAwakeWatch>(scenes, quick, withResting ? "sleeping-5050" : "sleeping-awake-50",
+                                      [withResting] { return shelves(withResting); }, {90, 120, 3, 120},
+                                      {5, 5, 1, 5});
+  }
 }
 
 }  // namespace bench
