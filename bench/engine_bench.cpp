@@ -58,6 +58,7 @@ void accumulate(impulse::StepProfile& sum, const impulse::StepProfile& step) {
   sum.continuous += step.continuous;
   sum.sleep += step.sleep;
   sum.total += step.total;
+  sum.manifoldUpdates += step.manifoldUpdates;
 }
 
 impulse::WorldSettings settingsFor(const Options& options, bool sleep) {
@@ -82,9 +83,10 @@ void runPyramid(const Options& options, int rows, int steps) {
               rows, pyramid.boxes.size(), options.subSteps, double(options.hertz), timing.minMs,
               timing.medianMs, double(std::abs(top.x() - pyramid.topStart.x())),
               double(pyramid.topStart.y() - top.y()));
-  std::printf("  mean profile ms/step: pairs %.3f collide %.3f solve %.3f continuous %.3f sleep %.3f total %.3f\n",
+  std::printf("  mean profile ms/step: pairs %.3f collide %.3f solve %.3f continuous %.3f sleep %.3f total %.3f"
+              "  manifolds recomputed %.0f of %d contacts\n",
               sum.pairs / steps, sum.collide / steps, sum.solve / steps, sum.continuous / steps,
-              sum.sleep / steps, sum.total / steps);
+              sum.sleep / steps, sum.total / steps, double(sum.manifoldUpdates) / steps, world.contactCount());
 }
 
 void runRain(const Options& options, int count, int steps) {

@@ -113,15 +113,78 @@ void gatherActiveContacts(WorldData& world) {
   }
 }
 
+// A contact's manifold is recomputed only once one of its bodies has moved
+// (any point of it within `extent` of its centre) this far from the pose it
+// was computed at. Until then its points are carried along with the bodies
+// (refreshManifold), which is exact to first order in the motion: a resting
+// stack skips the narrow phase without its contacts going stale.
+constexpr Real kPoseTolerance = Real(5e-4);
+
+void refreshCollisionPoses(WorldData& world) {
+  for (std::int32_t slot : world.awakeBodies) {
+    Body& body = world.bodies[slot];
+    const Transform& last = body.collisionPose;
+    // Chord a point at distance `extent` sweeps under the rotation since.
+    Real cosine = body.transform.q.c * last.q.c + body.transform.q.s * last.q.s;
+    Real rimShift = body.extent * std::sqrt(std::max(2 - 2 * cosine, Real(0)));
+    if ((body.transform.p - last.p).norm() + rimShift > kPoseTolerance) {
+      body.collisionPose = body.transform;
+      ++body.poseVersion;
+    }
+  }
+}
+
+bool manifoldIsCurrent(const Contact& contact, const Body& a, const Body& b) {
+  return contact.poseVersionA == a.poseVersion && contact.poseVersionB == b.poseVersion;
+}
+
+void recordFrame(Contact& contact, const Body& a, const Body& b) {
+  const Manifold& manifold = contact.manifold;
+  ManifoldFrame& frame = contact.frame;
+  frame.localNormal = a.transform.q.applyInverse(manifold.normal);
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    const ManifoldPoint& point = manifold.points[i];
+    frame.localPointA[i] = a.transform.q.applyInverse(point.anchorA);
+    frame.localPointB[i] = b.transform.q.applyInverse(point.anchorB);
+    Vec2 gap = (b.transform.p + point.anchorB) - (a.transform.p + point.anchorA);
+    frame.offset[i] = point.separation - gap.dot(manifold.normal);
+  }
+}
+
+// Moves the manifold's points with the bodies: each point's material points
+// on A and B, their gap along A's rotated normal, the contact point midway.
+void refreshManifold(Contact& contact, const Body& a, const Body& b) {
+  Manifold& manifold = contact.manifold;
+  const ManifoldFrame& frame = contact.frame;
+  manifold.normal = a.transform.q.apply(frame.localNormal);
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    ManifoldPoint& point = manifold.points[i];
+    Vec2 onA = a.transform.p + a.transform.q.apply(frame.localPointA[i]);
+    Vec2 onB = b.transform.p + b.transform.q.apply(frame.localPointB[i]);
+    point.separation = (onB - onA).dot(manifold.normal) + frame.offset[i];
+    point.point = Real(0.5) * (onA + onB);
+    point.anchorA = point.point - a.transform.p;
+    point.anchorB = point.point - b.transform.p;
+  }
+}
+
 void updateManifold(WorldData& world, std::int32_t index) {
   Contact& contact = world.contacts[index];
   const Body& a = world.bodies[contact.bodyA];
   const Body& b = world.bodies[contact.bodyB];
+  if (manifoldIsCurrent(contact, a, b)) {
+    refreshManifold(contact, a, b);
+    return;
+  }
+  ++world.profile.manifoldUpdates;
+  contact.poseVersionA = a.poseVersion;
+  contact.poseVersionB = b.poseVersion;
   Manifold next = contact.collide(world.shapes[contact.bodyA], a.transform,
                                   world.shapes[contact.bodyB], b.transform);
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
   contact.touching = next.pointCount > 0;
+  recordFrame(contact, a, b);
 }
 
 }  // namespace
@@ -138,6 +201,8 @@ void updatePairs(WorldData& world) {
 }
 
 void collideContacts(WorldData& world) {
+  refreshCollisionPoses(world);
+  world.profile.manifoldUpdates = 0;
   gatherActiveContacts(world);
   for (std::int32_t index : world.activeContacts) {
     Contact& contact = world.contacts[index];

@@ -14,6 +14,7 @@
 namespace impulse {
 
 inline constexpr std::int32_t kNullIndex = -1;
+inline constexpr std::uint32_t kNeverCollided = ~std::uint32_t(0);
 
 struct Body {
   Transform transform;
@@ -31,6 +32,10 @@ struct Body {
   Real extent = 0;
   Real innerRadius = 0;
   Real sleepTime = 0;
+  // Pose this body's manifolds were last computed at, and a version that
+  // changes each time it moves on (contact.cpp: manifold reuse).
+  Transform collisionPose;
+  std::uint32_t poseVersion = 0;
   // Centre at the start of the step (continuous collision sweeps from it).
   Vec2 center0 = Vec2::Zero();
   Rot rotation0;
@@ -52,10 +57,20 @@ struct Body {
   bool awake = false;
 };
 
+/// A manifold's geometry in the bodies' own frames, for updating it cheaply
+/// while the bodies move only a little (contact.cpp).
+struct ManifoldFrame {
+  Vec2 localNormal = Vec2::Zero();  ///< in A's frame
+  Vec2 localPointA[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on A
+  Vec2 localPointB[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on B
+  Real offset[2] = {0, 0};  ///< separation minus the points' gap along the normal
+};
+
 struct Contact {
   std::int32_t bodyA = kNullIndex;
   std::int32_t bodyB = kNullIndex;
   Manifold manifold;
+  ManifoldFrame frame;
   CollideFunction collide = nullptr;
   Real staticFriction = 0;
   Real dynamicFriction = 0;
@@ -67,6 +82,9 @@ struct Contact {
   std::int32_t edgeNext[2] = {kNullIndex, kNullIndex};
   std::int32_t nextFree = kNullIndex;
   std::uint64_t pairKey = 0;
+  // The bodies' pose versions when the manifold was computed.
+  std::uint32_t poseVersionA = kNeverCollided;
+  std::uint32_t poseVersionB = kNeverCollided;
   bool touching = false;
 };
 

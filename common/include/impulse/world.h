@@ -65,6 +65,9 @@ struct StepProfile {
   double continuous = 0;  ///< time of impact for fast bodies
   double sleep = 0;       ///< islands and sleeping
   double total = 0;
+  /// Manifolds the narrow phase recomputed; contacts whose bodies have not
+  /// moved keep theirs.
+  int manifoldUpdates = 0;
 };
 
 /// Outcome of a body creation: an id, or a message that says what was wrong.

@@ -1,0 +1,61 @@
+// The narrow phase reuses a contact's manifold while neither body has moved
+// beyond a quarter millimetre from the pose it was computed at.
+
+#include "world_test_support.h"
+
+namespace impulse::test {
+namespace {
+
+WorldSettings awakeSettings() {
+  WorldSettings settings;
+  settings.enableSleep = false;  // keep the stack in the step
+  return settings;
+}
+
+int manifoldUpdatesOver(World& world, int steps) {
+  int updates = 0;
+  for (int i = 0; i < steps; ++i) {
+    world.step(kDt);
+    updates += world.profile().manifoldUpdates;
+  }
+  return updates;
+}
+
+TEST(NarrowPhaseReuse, RestingStackRecomputesNoManifold_OnceSettled) {
+  World world(awakeSettings());
+  addGround(world);
+  for (int i = 0; i < 5; ++i) addBox(world, {.center = Vec2(0, Real(0.5) + Real(i))});
+  simulate(world, 3);
+  ASSERT_EQ(world.contactCount(), 5);
+  // One second of rest: 300 contact-steps, none of which needs the narrow phase.
+  EXPECT_EQ(manifoldUpdatesOver(world, 60), 0);
+}
+
+TEST(NarrowPhaseReuse, PushedBodyRecomputesItsManifolds) {
+  World world(awakeSettings());
+  addGround(world);
+  BodyId lower = addBox(world, {.center = Vec2(0, Real(0.5))});
+  BodyId upper = addBox(world, {.center = Vec2(0, Real(1.5))});
+  simulate(world, 3);
+  ASSERT_EQ(manifoldUpdatesOver(world, 1), 0);
+  // A sideways shove moves the top box in the next step; the step after
+  // recomputes its contact with the lower box (manifolds follow the poses
+  // at the start of a step), and the ground contact if the lower box moved.
+  ASSERT_TRUE(world.applyImpulse(upper, Vec2(500, 0)));
+  world.step(kDt);
+  world.step(kDt);
+  EXPECT_GE(world.profile().manifoldUpdates, 1);
+  EXPECT_LE(world.profile().manifoldUpdates, 2);
+  EXPECT_GT(stateOf(world, upper).position.x(), stateOf(world, lower).position.x());
+}
+
+TEST(NarrowPhaseReuse, SlidingBoxRecomputesEveryStep) {
+  World world(awakeSettings());
+  addGround(world);
+  addBox(world, {.center = Vec2(0, Real(0.5)), .material = Material::Ice, .velocity = Vec2(3, 0)});
+  world.step(kDt);
+  EXPECT_EQ(manifoldUpdatesOver(world, 30), 30);
+}
+
+}  // namespace
+}  // namespace impulse::test
