@@ -1,25 +1,38 @@
 #pragma once
-// The contact solver four constraints at a time. Constraints are coloured so
-// that no two of one colour share a dynamic body; each colour is cut into
-// bundles of four, whose lanes can then be solved together without one lane
-// overwriting another's body. Constraints that find no free colour stay in
+// The contact solver four (SSE2) or eight (AVX2) constraints at a time.
+// Constraints are coloured so that no two of one colour share a dynamic body;
+// each colour is cut into bundles of four or eight, whose lanes can then be
+// solved together without one lane overwriting another's body. Constraints that find no free colour stay in
 // an overflow list solved one by one (contact_solver.h).
 
 #include "contact_solver.h"
 
 namespace impulse {
 
-/// Colours `constraints` and packs them into bundles plus overflow.
-void buildWideContacts(std::span<const ContactConstraint> constraints, std::size_t stateCount,
-                       WideContactSet& set);
+/// The passes at one lane width. Every width gives bit-identical results:
+/// lanes of one colour share no body, and each lane's arithmetic is the same.
+struct WideContactKernels {
+  int lanes;
+  /// Colours `constraints` and packs them into bundles plus overflow.
+  void (*build)(std::span<const ContactConstraint> constraints, std::size_t stateCount,
+                WideContactSet& set);
+  void (*warmStart)(const ContactSolverContext& context, WideContactSet& set);
+  void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
+  /// The push pass (pushOverlap).
+  void (*push)(const ContactSolverContext& context, WideContactSet& set);
+  void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
+  /// Copies the lanes' impulses back into the scalar constraints.
+  void (*unpack)(const WideContactSet& set, std::span<ContactConstraint> constraints);
+};
 
-void warmStartWide(const ContactSolverContext& context, WideContactSet& set);
-void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias);
-/// The push pass (pushOverlap) four constraints at a time.
-void pushWide(const ContactSolverContext& context, WideContactSet& set);
-void restitutionWide(const ContactSolverContext& context, WideContactSet& set);
+/// The bundle list of width F in a set (defined by the file of that width).
+template <class F>
+std::vector<WideConstraint<F>>& bundlesOf(WideContactSet& set);
 
-/// Copies the lanes' impulses back into the scalar constraints.
-void unpackWideContacts(const WideContactSet& set, std::span<ContactConstraint> constraints);
+const WideContactKernels& sse2WideContactKernels();  // contact_solver_wide_sse2.cpp
+const WideContactKernels& avx2WideContactKernels();  // contact_solver_wide_avx2.cpp
+
+/// The widest kernels the CPU runs, no wider than `requested`.
+const WideContactKernels& wideContactKernels(SimdWidth requested);
 
 }  // namespace impulse

@@ -1,15 +1,17 @@
 #pragma once
 // Four float lanes on SSE2 (part of every x86-64 CPU, so no build flag is
-// needed). The contact solver works on four independent constraints at once;
-// Eigen's fixed-size types cover one vector, not lanes of unrelated rows,
-// hence this small type. Operation order is fixed, so results stay
-// deterministic.
+// needed); eight on AVX2 live in simd_avx2.h. The
+// contact solver works on independent constraints side by side; Eigen's
+// fixed-size types cover one vector, not lanes of unrelated rows, hence
+// these small types. Operation order is fixed and the same at both widths
+// (no fused multiply-add), so results stay deterministic and identical.
 
 #include <emmintrin.h>  // includes xmmintrin.h (_MM_TRANSPOSE4_PS)
 
 namespace impulse::simd {
 
 struct F4 {
+  static constexpr int kLanes = 4;
   __m128 v;
 };
 
@@ -38,5 +40,35 @@ inline bool any(F4 mask) { return _mm_movemask_ps(mask.v) != 0; }
 inline F4 load(const float* p) { return {_mm_loadu_ps(p)}; }
 inline void store(float* p, F4 a) { _mm_storeu_ps(p, a.v); }
 inline F4 set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
+
+/// x in every lane of F (width-generic code).
+template <class F>
+F broadcast(float x);
+template <>
+inline F4 broadcast<F4>(float x) {
+  return splat(x);
+}
+
+/// Reads the first eight floats of four rows as eight four-lane columns.
+inline void loadColumns(const float* const rows[4], F4 columns[8]) {
+  __m128 a0 = _mm_loadu_ps(rows[0]), a1 = _mm_loadu_ps(rows[1]), a2 = _mm_loadu_ps(rows[2]),
+         a3 = _mm_loadu_ps(rows[3]);
+  __m128 b0 = _mm_loadu_ps(rows[0] + 4), b1 = _mm_loadu_ps(rows[1] + 4),
+         b2 = _mm_loadu_ps(rows[2] + 4), b3 = _mm_loadu_ps(rows[3] + 4);
+  _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+  _MM_TRANSPOSE4_PS(b0, b1, b2, b3);
+  columns[0] = {a0}, columns[1] = {a1}, columns[2] = {a2}, columns[3] = {a3};
+  columns[4] = {b0}, columns[5] = {b1}, columns[6] = {b2}, columns[7] = {b3};
+}
+
+/// Writes four columns back as the first four floats of four rows.
+inline void storeColumns(const F4 columns[4], float* const rows[4]) {
+  __m128 r0 = columns[0].v, r1 = columns[1].v, r2 = columns[2].v, r3 = columns[3].v;
+  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+  _mm_storeu_ps(rows[0], r0);
+  _mm_storeu_ps(rows[1], r1);
+  _mm_storeu_ps(rows[2], r2);
+  _mm_storeu_ps(rows[3], r3);
+}
 
 }  // namespace impulse::simd

@@ -112,8 +112,8 @@ void keepAwakeWhilePushed(Body& body, const SolverState& pseudo, const WorldSett
 // Split impulse for intrusions: the push pass runs on pseudo velocities that
 // move the bodies this sub-step and are then dropped, so pushing overlap out
 // never becomes real velocity. The real velocities are parked meanwhile.
-void pushThenIntegratePositions(WorldData& world, const ContactSolverContext& context,
-                                WideContactSet& wide, Real h) {
+void pushThenIntegratePositions(WorldData& world, const WideContactKernels& kernels,
+                                const ContactSolverContext& context, WideContactSet& wide, Real h) {
   const std::size_t count = world.solverStates.size();
   world.parkedVelocities.resize(count);
   for (std::size_t k = 1; k < count; ++k) {
@@ -122,7 +122,7 @@ void pushThenIntegratePositions(WorldData& world, const ContactSolverContext& co
     state.linearVelocity.setZero();
     state.angularVelocity = 0;
   }
-  pushWide(context, wide);
+  kernels.push(context, wide);
   for (std::size_t k = 1; k < count; ++k) {
     SolverState& state = world.solverStates[k];
     keepAwakeWhilePushed(world.bodies[world.solverIntegration[k].body], state, world.settings);
@@ -170,22 +170,23 @@ void solve(WorldData& world, Real dt) {
                                world.settings.maxContactPushSpeed,
                                world.settings.restitutionThreshold};
   WideContactSet& wide = world.wideContacts;
-  buildWideContacts(world.constraints, world.solverStates.size(), wide);
+  const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
+  kernels.build(world.constraints, world.solverStates.size(), wide);
   for (int i = 0; i < subSteps; ++i) {
     integrateVelocities(world, h);
-    warmStartWide(context, wide);
-    solveWide(context, wide, true);
+    kernels.warmStart(context, wide);
+    kernels.solve(context, wide, true);
     if (intrusion) {
-      pushThenIntegratePositions(world, context, wide, h);
+      pushThenIntegratePositions(world, kernels, context, wide, h);
     } else {
       integratePositions(world, h);
     }
-    for (int r = 0; r < world.settings.relaxIterations; ++r) solveWide(context, wide, false);
+    for (int r = 0; r < world.settings.relaxIterations; ++r) kernels.solve(context, wide, false);
   }
   // A flat face meeting a wall bounces on two points; one pass solves them
   // one after the other and leaves a spurious spin, a few converge.
-  for (int i = 0; i < kRestitutionIterations; ++i) restitutionWide(context, wide);
-  unpackWideContacts(wide, world.constraints);
+  for (int i = 0; i < kRestitutionIterations; ++i) kernels.restitution(context, wide);
+  kernels.unpack(wide, world.constraints);
   storeImpulses(world.constraints, world);
   finalizeBodies(world);
 }

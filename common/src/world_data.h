@@ -3,6 +3,7 @@
 // phases (contacts, solver, islands, continuous). Not a public header.
 
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -155,30 +156,42 @@ struct ContactConstraint {
   ConstraintPoint points[2];
 };
 
-// Four constraints side by side for the SIMD solver (contact_solver_wide.h).
+// Constraints side by side for the SIMD solver (contact_solver_wide.h), as
+// many as the lane type F holds: four on SSE2, eight on AVX2.
+template <class F>
 struct WidePoint {
-  simd::F4 anchorAX, anchorAY, anchorBX, anchorBY;
-  simd::F4 baseSeparation;
-  simd::F4 normalImpulse, tangentImpulse, totalNormalImpulse;
-  simd::F4 normalMass, tangentMass;
-  simd::F4 relativeVelocity, friction;
-  simd::F4 loadOverlap, pushCap;
+  F anchorAX, anchorAY, anchorBX, anchorBY;
+  F baseSeparation;
+  F normalImpulse, tangentImpulse, totalNormalImpulse;
+  F normalMass, tangentMass;
+  F relativeVelocity, friction;
+  F loadOverlap, pushCap;
 };
 
+template <class F>
 struct WideConstraint {
-  std::int32_t stateA[4];
-  std::int32_t stateB[4];
+  std::int32_t stateA[F::kLanes];
+  std::int32_t stateB[F::kLanes];
   /// Index into the scalar constraints each lane came from (-1: padding).
-  std::int32_t source[4];
-  simd::F4 normalX, normalY;
-  simd::F4 invMassA, invInertiaA, invMassB, invInertiaB;
-  simd::F4 biasRate, massScale, impulseScale;
-  simd::F4 restitution, rollingResistance, rollingMass, rollingImpulse;
-  WidePoint points[2];
+  std::int32_t source[F::kLanes];
+  F normalX, normalY;
+  F invMassA, invInertiaA, invMassB, invInertiaB;
+  F biasRate, massScale, impulseScale;
+  F restitution, rollingResistance, rollingMass, rollingImpulse;
+  WidePoint<F> points[2];
+};
+
+// Eight-lane bundles: a type only the AVX2 file completes (see simd_avx2.h
+// on why no other file may lay them out).
+struct Avx2Bundles;
+struct Avx2BundlesDeleter {
+  void operator()(Avx2Bundles* bundles) const;  // contact_solver_wide_avx2.cpp
 };
 
 struct WideContactSet {
-  std::vector<WideConstraint> bundles;
+  /// Bundles of the width in use (the other stays empty).
+  std::vector<WideConstraint<simd::F4>> bundles4;
+  std::unique_ptr<Avx2Bundles, Avx2BundlesDeleter> bundles8;
   std::vector<ContactConstraint> overflow;
   std::vector<std::int32_t> overflowSource;
   // Scratch for colouring, kept to avoid allocation per step.

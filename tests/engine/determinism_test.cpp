@@ -24,8 +24,10 @@ struct RunRecord {
 // random pile of circles and boxes dropped on the far side, between two
 // walls that keep the debris on the ground: chaotic enough that any
 // difference in operation order shows up in the bits.
-RunRecord runChaoticScene(int maxSteps) {
-  World world;
+RunRecord runChaoticScene(int maxSteps, SimdWidth width = SimdWidth::Best) {
+  WorldSettings settings;
+  settings.simdWidth = width;
+  World world(settings);
   buildPyramid(world, 10);
   for (Real x : {Real(-19), Real(19)}) {
     addBox(world,
@@ -72,6 +74,18 @@ TEST(Determinism, ChaoticSceneRunTwice_GivesIdenticalHashesAndSleepStep) {
   EXPECT_EQ(first.asleepAtStep, second.asleepAtStep);
   // The hit really disturbed the scene: states changed after the first step.
   EXPECT_NE(first.hashes.front(), first.hashes.back());
+}
+
+// The contact solver runs four lanes on SSE2 or eight on AVX2 (when the CPU
+// has it); the bits must not depend on which.
+TEST(Determinism, Sse2AndWidestSimd_GiveIdenticalHashes) {
+  const int steps = stepsFor(10);
+  RunRecord sse2 = runChaoticScene(steps, SimdWidth::Sse2);
+  RunRecord widest = runChaoticScene(steps, SimdWidth::Best);
+  ASSERT_EQ(sse2.hashes.size(), widest.hashes.size());
+  for (std::size_t i = 0; i < sse2.hashes.size(); ++i) {
+    ASSERT_EQ(sse2.hashes[i], widest.hashes[i]) << "widths diverge after step " << i + 1;
+  }
 }
 
 TEST(Determinism, SameCommandsAtSameTicks_GiveIdenticalStates) {

@@ -23,6 +23,10 @@ struct WorldData;  // private state, defined in common/src/world_data.h
 
 inline const Vec2 kDefaultGravity = Vec2(0, Real(-9.81));
 
+/// Lane width of the contact solver. Best takes AVX2 when the CPU has it;
+/// every width gives bit-identical results.
+enum class SimdWidth : std::uint8_t { Best, Sse2, Avx2 };
+
 /// Solver and world parameters. The benchmark sweeps them.
 struct WorldSettings {
   Vec2 gravity = kDefaultGravity;
@@ -43,6 +47,7 @@ struct WorldSettings {
   Real restitutionThreshold = 1;
   /// Contacts slower than this (m/s) in the tangent direction use static friction.
   Real stickSpeed = Real(0.02);
+  SimdWidth simdWidth = SimdWidth::Best;
   bool enableWarmStarting = true;
   bool enableSleep = true;
   /// A body whose fastest point (centre or rim) stays slower than this (m/s)

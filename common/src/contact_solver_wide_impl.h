@@ -1,20 +1,22 @@
-#include "contact_solver_wide.h"
+#pragma once
+// The contact solver's passes, several constraints at a time, written once
+// for any lane type F (simd::F4 on SSE2, simd::F8 on AVX2). Included by
+// exactly two files, each instantiating it for its width in its own
+// anonymous namespace (contact_solver_wide_sse2.cpp, _avx2.cpp), after the
+// lane operations for F.
 
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <span>
 #include <type_traits>
 
-namespace impulse {
+#include "contact_solver_wide.h"
 
+namespace impulse {
 namespace {
 
-using simd::F4;
-
-constexpr int kLanes = 4;
 constexpr int kColorCount = 64;  // one bit each in a per-body mask
-
-// ---- colouring and packing -------------------------------------------------
 
 // Lowest colour used by neither body; static bodies (state 0) never block.
 int pickColor(std::vector<std::uint64_t>& used, std::int32_t a, std::int32_t b) {
@@ -26,11 +28,13 @@ int pickColor(std::vector<std::uint64_t>& used, std::int32_t a, std::int32_t b) 
   return color;
 }
 
-void setLane(F4& wide, int lane, float value) {
+template <class F>
+void setLane(F& wide, int lane, float value) {
   wide.v[lane] = value;  // GCC/Clang vector subscript
 }
 
-void packPoint(WidePoint& w, int lane, const ConstraintPoint& p) {
+template <class F>
+void packPoint(WidePoint<F>& w, int lane, const ConstraintPoint& p) {
   setLane(w.anchorAX, lane, p.anchorA.x());
   setLane(w.anchorAY, lane, p.anchorA.y());
   setLane(w.anchorBX, lane, p.anchorB.x());
@@ -47,7 +51,8 @@ void packPoint(WidePoint& w, int lane, const ConstraintPoint& p) {
   setLane(w.pushCap, lane, p.pushCap);
 }
 
-void packLane(WideConstraint& w, int lane, const ContactConstraint& c, std::int32_t source) {
+template <class F>
+void packLane(WideConstraint<F>& w, int lane, const ContactConstraint& c, std::int32_t source) {
   w.stateA[lane] = c.stateA;
   w.stateB[lane] = c.stateB;
   w.source[lane] = source;
@@ -69,65 +74,65 @@ void packLane(WideConstraint& w, int lane, const ContactConstraint& c, std::int3
 }
 
 // An all-zero bundle: padding lanes point at the static dummy with zero mass.
-WideConstraint emptyBundle() {
-  WideConstraint w{};
+template <class F>
+WideConstraint<F> emptyBundle() {
+  WideConstraint<F> w{};
   std::fill(std::begin(w.source), std::end(w.source), -1);
-  w.massScale = simd::splat(1);
+  w.massScale = simd::broadcast<F>(1);
   return w;
 }
 
 // ---- body gather and scatter -----------------------------------------------
 
+template <class F>
 struct WideBody {
-  F4 vx, vy, w;
-  F4 dpx, dpy, dqc, dqs;
+  F vx, vy, w;
+  F dpx, dpy, dqc, dqs;
 };
 
-// SolverState is eight floats: (vx, vy, w, dpx) then (dpy, dqc, dqs, pad).
-// Four bodies' halves are loaded as rows and transposed into lanes.
+// SolverState is eight floats: (vx, vy, w, dpx, dpy, dqc, dqs, pad). The
+// lanes' bodies are loaded as rows and transposed into columns.
 static_assert(sizeof(SolverState) == 8 * sizeof(float) && std::is_standard_layout_v<SolverState>);
 
 const float* floatsOf(const SolverState& state) { return reinterpret_cast<const float*>(&state); }
 float* floatsOf(SolverState& state) { return reinterpret_cast<float*>(&state); }
 
-[[gnu::always_inline]] inline WideBody gather(std::span<const SolverState> states, const std::int32_t index[kLanes]) {
-  const float* s0 = floatsOf(states[index[0]]);
-  const float* s1 = floatsOf(states[index[1]]);
-  const float* s2 = floatsOf(states[index[2]]);
-  const float* s3 = floatsOf(states[index[3]]);
-  __m128 a0 = _mm_loadu_ps(s0), a1 = _mm_loadu_ps(s1), a2 = _mm_loadu_ps(s2), a3 = _mm_loadu_ps(s3);
-  __m128 b0 = _mm_loadu_ps(s0 + 4), b1 = _mm_loadu_ps(s1 + 4), b2 = _mm_loadu_ps(s2 + 4),
-         b3 = _mm_loadu_ps(s3 + 4);
-  _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
-  _MM_TRANSPOSE4_PS(b0, b1, b2, b3);
-  return {{a0}, {a1}, {a2}, {a3}, {b0}, {b1}, {b2}};
+template <class F>
+[[gnu::always_inline]] inline WideBody<F> gather(std::span<const SolverState> states,
+                                                 const std::int32_t index[F::kLanes]) {
+  const float* rows[F::kLanes];
+  for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = floatsOf(states[index[lane]]);
+  F columns[8];
+  simd::loadColumns(rows, columns);
+  return {columns[0], columns[1], columns[2], columns[3], columns[4], columns[5], columns[6]};
 }
 
 // Writes velocities back (the first four floats, delta position unchanged).
 // Lanes on the static dummy write the zeros they read (their inverse mass is
 // zero), so repeated writes to state 0 are harmless.
-[[gnu::always_inline]] inline void scatter(std::span<SolverState> states, const std::int32_t index[kLanes], const WideBody& body) {
-  __m128 r0 = body.vx.v, r1 = body.vy.v, r2 = body.w.v, r3 = body.dpx.v;
-  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-  _mm_storeu_ps(floatsOf(states[index[0]]), r0);
-  _mm_storeu_ps(floatsOf(states[index[1]]), r1);
-  _mm_storeu_ps(floatsOf(states[index[2]]), r2);
-  _mm_storeu_ps(floatsOf(states[index[3]]), r3);
+template <class F>
+[[gnu::always_inline]] inline void scatter(std::span<SolverState> states, const std::int32_t index[F::kLanes],
+                                           const WideBody<F>& body) {
+  float* rows[F::kLanes];
+  for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = floatsOf(states[index[lane]]);
+  const F columns[4] = {body.vx, body.vy, body.w, body.dpx};
+  simd::storeColumns(columns, rows);
 }
 
-// ---- rows --------------------------------------------------------------------
-
+template <class F>
 struct Relative {
-  F4 vx, vy;
+  F vx, vy;
 };
 
 // Velocity of B's anchor relative to A's anchor.
-Relative relativeVelocity(const WideBody& a, const WideBody& b, const WidePoint& p) {
+template <class F>
+Relative<F> relativeVelocity(const WideBody<F>& a, const WideBody<F>& b, const WidePoint<F>& p) {
   return {(b.vx - b.w * p.anchorBY) - (a.vx - a.w * p.anchorAY),
           (b.vy + b.w * p.anchorBX) - (a.vy + a.w * p.anchorAX)};
 }
 
-void applyWide(WideBody& a, WideBody& b, const WideConstraint& c, const WidePoint& p, F4 px, F4 py) {
+template <class F>
+void applyWide(WideBody<F>& a, WideBody<F>& b, const WideConstraint<F>& c, const WidePoint<F>& p, F px, F py) {
   a.vx -= c.invMassA * px;
   a.vy -= c.invMassA * py;
   a.w -= c.invInertiaA * (p.anchorAX * py - p.anchorAY * px);
@@ -136,41 +141,45 @@ void applyWide(WideBody& a, WideBody& b, const WideConstraint& c, const WidePoin
   b.w += c.invInertiaB * (p.anchorBX * py - p.anchorBY * px);
 }
 
+template <class F>
 struct Bias {
-  F4 bias, massScale, impulseScale;
+  F bias, massScale, impulseScale;
 };
 
 // Speculative points close their gap exactly; overlapping ones are pushed
 // out softly (with bias) or not at all (relaxation).
-Bias contactBias(const WideConstraint& c, const WidePoint& p, F4 separation,
+template <class F>
+Bias<F> contactBias(const WideConstraint<F>& c, const WidePoint<F>& p, F separation,
                  const ContactSolverContext& context, bool useBias) {
-  F4 speculative = simd::greater(separation, simd::zero());
-  F4 closeGap = separation * simd::splat(context.inverseSubStep);
-  if (!useBias) return {simd::select(speculative, closeGap, simd::zero()), simd::splat(1), simd::zero()};
-  F4 push = simd::max(c.biasRate * separation, -p.pushCap);
+  F speculative = simd::greater(separation, simd::broadcast<F>(0));
+  F closeGap = separation * simd::broadcast<F>(context.inverseSubStep);
+  if (!useBias) return {simd::select(speculative, closeGap, simd::broadcast<F>(0)), simd::broadcast<F>(1), simd::broadcast<F>(0)};
+  F push = simd::max(c.biasRate * separation, -p.pushCap);
   return {simd::select(speculative, closeGap, push),
-          simd::select(speculative, simd::splat(1), c.massScale),
-          simd::select(speculative, simd::zero(), c.impulseScale)};
+          simd::select(speculative, simd::broadcast<F>(1), c.massScale),
+          simd::select(speculative, simd::broadcast<F>(0), c.impulseScale)};
 }
 
-F4 currentSeparation(const WideBody& a, const WideBody& b, const WidePoint& p, F4 dpx, F4 dpy,
-                     const WideConstraint& c) {
-  F4 rotatedAX = a.dqc * p.anchorAX - a.dqs * p.anchorAY;
-  F4 rotatedAY = a.dqs * p.anchorAX + a.dqc * p.anchorAY;
-  F4 rotatedBX = b.dqc * p.anchorBX - b.dqs * p.anchorBY;
-  F4 rotatedBY = b.dqs * p.anchorBX + b.dqc * p.anchorBY;
-  F4 dx = dpx + rotatedBX - rotatedAX;
-  F4 dy = dpy + rotatedBY - rotatedAY;
+template <class F>
+F currentSeparation(const WideBody<F>& a, const WideBody<F>& b, const WidePoint<F>& p, F dpx, F dpy,
+                     const WideConstraint<F>& c) {
+  F rotatedAX = a.dqc * p.anchorAX - a.dqs * p.anchorAY;
+  F rotatedAY = a.dqs * p.anchorAX + a.dqc * p.anchorAY;
+  F rotatedBX = b.dqc * p.anchorBX - b.dqs * p.anchorBY;
+  F rotatedBY = b.dqs * p.anchorBX + b.dqc * p.anchorBY;
+  F dx = dpx + rotatedBX - rotatedAX;
+  F dy = dpy + rotatedBY - rotatedAY;
   return p.baseSeparation + dx * c.normalX + dy * c.normalY;
 }
 
-F4 solveNormal(WideConstraint& c, WidePoint& p, WideBody& a, WideBody& b, F4 dpx, F4 dpy,
+template <class F>
+F solveNormal(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy,
                const ContactSolverContext& context, bool useBias) {
-  Bias bias = contactBias(c, p, currentSeparation(a, b, p, dpx, dpy, c), context, useBias);
-  Relative dv = relativeVelocity(a, b, p);
-  F4 vn = dv.vx * c.normalX + dv.vy * c.normalY;
-  F4 impulse = -(p.normalMass * bias.massScale * (vn + bias.bias)) - bias.impulseScale * p.normalImpulse;
-  F4 accumulated = simd::max(p.normalImpulse + impulse, simd::zero());
+  Bias<F> bias = contactBias(c, p, currentSeparation(a, b, p, dpx, dpy, c), context, useBias);
+  Relative<F> dv = relativeVelocity(a, b, p);
+  F vn = dv.vx * c.normalX + dv.vy * c.normalY;
+  F impulse = -(p.normalMass * bias.massScale * (vn + bias.bias)) - bias.impulseScale * p.normalImpulse;
+  F accumulated = simd::max(p.normalImpulse + impulse, simd::broadcast<F>(0));
   impulse = accumulated - p.normalImpulse;
   p.normalImpulse = accumulated;
   p.totalNormalImpulse += impulse;
@@ -178,23 +187,25 @@ F4 solveNormal(WideConstraint& c, WidePoint& p, WideBody& a, WideBody& b, F4 dpx
   return accumulated;
 }
 
-void solveFriction(WideConstraint& c, WidePoint& p, WideBody& a, WideBody& b) {
-  F4 tx = c.normalY;  // right perpendicular of the normal
-  F4 ty = -c.normalX;
-  Relative dv = relativeVelocity(a, b, p);
-  F4 vt = dv.vx * tx + dv.vy * ty;
-  F4 limit = p.friction * p.normalImpulse;
-  F4 accumulated = simd::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
-  F4 impulse = accumulated - p.tangentImpulse;
+template <class F>
+void solveFriction(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b) {
+  F tx = c.normalY;  // right perpendicular of the normal
+  F ty = -c.normalX;
+  Relative<F> dv = relativeVelocity(a, b, p);
+  F vt = dv.vx * tx + dv.vy * ty;
+  F limit = p.friction * p.normalImpulse;
+  F accumulated = simd::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
+  F impulse = accumulated - p.tangentImpulse;
   p.tangentImpulse = accumulated;
   applyWide(a, b, c, p, impulse * tx, impulse * ty);
 }
 
-void solveRolling(WideConstraint& c, WideBody& a, WideBody& b, F4 totalNormalImpulse) {
-  F4 limit = c.rollingResistance * totalNormalImpulse;
-  F4 previous = c.rollingImpulse;
+template <class F>
+void solveRolling(WideConstraint<F>& c, WideBody<F>& a, WideBody<F>& b, F totalNormalImpulse) {
+  F limit = c.rollingResistance * totalNormalImpulse;
+  F previous = c.rollingImpulse;
   c.rollingImpulse = simd::clamp(previous - c.rollingMass * (b.w - a.w), -limit, limit);
-  F4 impulse = c.rollingImpulse - previous;
+  F impulse = c.rollingImpulse - previous;
   a.w -= c.invInertiaA * impulse;
   b.w += c.invInertiaB * impulse;
 }
@@ -205,8 +216,9 @@ ContactSolverContext overflowContext(const ContactSolverContext& context, WideCo
   return overflow;
 }
 
-}  // namespace
+// ---- passes ------------------------------------------------------------------
 
+template <class F>
 void buildWideContacts(std::span<const ContactConstraint> constraints, std::size_t stateCount,
                        WideContactSet& set) {
   set.usedColors.assign(stateCount, 0);
@@ -227,12 +239,12 @@ void buildWideContacts(std::span<const ContactConstraint> constraints, std::size
     set.order[next[set.colorOf[i]]++] = static_cast<std::int32_t>(i);
   }
 
-  set.bundles.clear();
+  bundlesOf<F>(set).clear();
   for (int color = 0; color < kColorCount; ++color) {
     for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
-      int lane = (k - start[color]) % kLanes;
-      if (lane == 0) set.bundles.push_back(emptyBundle());
-      packLane(set.bundles.back(), lane, constraints[set.order[k]], set.order[k]);
+      int lane = (k - start[color]) % F::kLanes;
+      if (lane == 0) bundlesOf<F>(set).push_back(emptyBundle<F>());
+      packLane(bundlesOf<F>(set).back(), lane, constraints[set.order[k]], set.order[k]);
     }
   }
   set.overflow.clear();
@@ -243,107 +255,112 @@ void buildWideContacts(std::span<const ContactConstraint> constraints, std::size
   }
 }
 
+template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
-  for (WideConstraint& c : set.bundles) {
-    WideBody a = gather(context.states, c.stateA);
-    WideBody b = gather(context.states, c.stateB);
-    F4 tx = c.normalY;
-    F4 ty = -c.normalX;
-    for (WidePoint& p : c.points) {
+  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+    WideBody<F> a = gather<F>(context.states, c.stateA);
+    WideBody<F> b = gather<F>(context.states, c.stateB);
+    F tx = c.normalY;
+    F ty = -c.normalX;
+    for (WidePoint<F>& p : c.points) {
       p.totalNormalImpulse += p.normalImpulse;
       applyWide(a, b, c, p, p.normalImpulse * c.normalX + p.tangentImpulse * tx,
                 p.normalImpulse * c.normalY + p.tangentImpulse * ty);
     }
     a.w -= c.invInertiaA * c.rollingImpulse;
     b.w += c.invInertiaB * c.rollingImpulse;
-    scatter(context.states, c.stateA, a);
-    scatter(context.states, c.stateB, b);
+    scatter<F>(context.states, c.stateA, a);
+    scatter<F>(context.states, c.stateB, b);
   }
   warmStartContacts(overflowContext(context, set));
 }
 
+template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
-  for (WideConstraint& c : set.bundles) {
-    WideBody a = gather(context.states, c.stateA);
-    WideBody b = gather(context.states, c.stateB);
-    F4 dpx = b.dpx - a.dpx;
-    F4 dpy = b.dpy - a.dpy;
-    F4 totalNormalImpulse = simd::zero();
-    for (WidePoint& p : c.points) {
+  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+    WideBody<F> a = gather<F>(context.states, c.stateA);
+    WideBody<F> b = gather<F>(context.states, c.stateB);
+    F dpx = b.dpx - a.dpx;
+    F dpy = b.dpy - a.dpy;
+    F totalNormalImpulse = simd::broadcast<F>(0);
+    for (WidePoint<F>& p : c.points) {
       totalNormalImpulse += solveNormal(c, p, a, b, dpx, dpy, context, useBias);
     }
-    for (WidePoint& p : c.points) solveFriction(c, p, a, b);
+    for (WidePoint<F>& p : c.points) solveFriction(c, p, a, b);
     solveRolling(c, a, b, totalNormalImpulse);
-    scatter(context.states, c.stateA, a);
-    scatter(context.states, c.stateB, b);
+    scatter<F>(context.states, c.stateA, a);
+    scatter<F>(context.states, c.stateB, b);
   }
   solveContacts(overflowContext(context, set), useBias);
 }
 
+template <class F>
 void pushWide(const ContactSolverContext& context, WideContactSet& set) {
-  const F4 maxPush = simd::splat(-context.maxPushSpeed);
-  for (WideConstraint& c : set.bundles) {
-    WideBody a = gather(context.states, c.stateA);
-    WideBody b = gather(context.states, c.stateB);
-    F4 dpx = b.dpx - a.dpx;
-    F4 dpy = b.dpy - a.dpy;
-    for (WidePoint& p : c.points) {
-      F4 intrusion = currentSeparation(a, b, p, dpx, dpy, c) + p.loadOverlap;
-      F4 bias = simd::max(c.biasRate * intrusion, maxPush);
-      Relative dv = relativeVelocity(a, b, p);
-      F4 vn = dv.vx * c.normalX + dv.vy * c.normalY;
-      F4 impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::zero());
-      impulse = simd::select(simd::less(intrusion, simd::zero()), impulse, simd::zero());
+  const F maxPush = simd::broadcast<F>(-context.maxPushSpeed);
+  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+    WideBody<F> a = gather<F>(context.states, c.stateA);
+    WideBody<F> b = gather<F>(context.states, c.stateB);
+    F dpx = b.dpx - a.dpx;
+    F dpy = b.dpy - a.dpy;
+    for (WidePoint<F>& p : c.points) {
+      F intrusion = currentSeparation(a, b, p, dpx, dpy, c) + p.loadOverlap;
+      F bias = simd::max(c.biasRate * intrusion, maxPush);
+      Relative<F> dv = relativeVelocity(a, b, p);
+      F vn = dv.vx * c.normalX + dv.vy * c.normalY;
+      F impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::broadcast<F>(0));
+      impulse = simd::select(simd::less(intrusion, simd::broadcast<F>(0)), impulse, simd::broadcast<F>(0));
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
-    scatter(context.states, c.stateA, a);
-    scatter(context.states, c.stateB, b);
+    scatter<F>(context.states, c.stateA, a);
+    scatter<F>(context.states, c.stateB, b);
   }
   pushOverlap(overflowContext(context, set));
 }
 
+template <class F>
 void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
-  const F4 threshold = simd::splat(-context.restitutionThreshold);
+  const F threshold = simd::broadcast<F>(-context.restitutionThreshold);
   // Same rule as the scalar pass: only points that approached fast and
   // pushed, on contacts that bounce at all.
-  auto bouncing = [&](const WideConstraint& c, const WidePoint& p) {
+  auto bouncing = [&](const WideConstraint<F>& c, const WidePoint<F>& p) {
     return simd::both(simd::less(p.relativeVelocity, threshold),
-                      simd::both(simd::notEqual(p.totalNormalImpulse, simd::zero()),
-                                 simd::notEqual(c.restitution, simd::zero())));
+                      simd::both(simd::notEqual(p.totalNormalImpulse, simd::broadcast<F>(0)),
+                                 simd::notEqual(c.restitution, simd::broadcast<F>(0))));
   };
-  for (WideConstraint& c : set.bundles) {
+  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
     // Resting contacts never bounce: skip their bodies entirely.
     if (!simd::any(bouncing(c, c.points[0])) && !simd::any(bouncing(c, c.points[1]))) continue;
-    WideBody a = gather(context.states, c.stateA);
-    WideBody b = gather(context.states, c.stateB);
-    for (WidePoint& p : c.points) {
-      F4 bounces = bouncing(c, p);
-      Relative dv = relativeVelocity(a, b, p);
-      F4 vn = dv.vx * c.normalX + dv.vy * c.normalY;
-      F4 impulse = -(p.normalMass * (vn + c.restitution * p.relativeVelocity));
-      F4 accumulated = simd::max(p.normalImpulse + impulse, simd::zero());
-      impulse = simd::select(bounces, accumulated - p.normalImpulse, simd::zero());
+    WideBody<F> a = gather<F>(context.states, c.stateA);
+    WideBody<F> b = gather<F>(context.states, c.stateB);
+    for (WidePoint<F>& p : c.points) {
+      F bounces = bouncing(c, p);
+      Relative<F> dv = relativeVelocity(a, b, p);
+      F vn = dv.vx * c.normalX + dv.vy * c.normalY;
+      F impulse = -(p.normalMass * (vn + c.restitution * p.relativeVelocity));
+      F accumulated = simd::max(p.normalImpulse + impulse, simd::broadcast<F>(0));
+      impulse = simd::select(bounces, accumulated - p.normalImpulse, simd::broadcast<F>(0));
       p.normalImpulse += impulse;
       p.totalNormalImpulse += impulse;
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
-    scatter(context.states, c.stateA, a);
-    scatter(context.states, c.stateB, b);
+    scatter<F>(context.states, c.stateA, a);
+    scatter<F>(context.states, c.stateB, b);
   }
   applyRestitution(overflowContext(context, set));
 }
 
+template <class F>
 void unpackWideContacts(const WideContactSet& set, std::span<ContactConstraint> constraints) {
-  for (const WideConstraint& w : set.bundles) {
-    alignas(16) float rolling[kLanes];
-    alignas(16) float normal[2][kLanes], tangent[2][kLanes], total[2][kLanes];
+  for (const WideConstraint<F>& w : bundlesOf<F>(const_cast<WideContactSet&>(set))) {
+    alignas(16) float rolling[F::kLanes];
+    alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], total[2][F::kLanes];
     simd::store(rolling, w.rollingImpulse);
     for (int j = 0; j < 2; ++j) {
       simd::store(normal[j], w.points[j].normalImpulse);
       simd::store(tangent[j], w.points[j].tangentImpulse);
       simd::store(total[j], w.points[j].totalNormalImpulse);
     }
-    for (int lane = 0; lane < kLanes; ++lane) {
+    for (int lane = 0; lane < F::kLanes; ++lane) {
       if (w.source[lane] < 0) continue;
       ContactConstraint& c = constraints[w.source[lane]];
       c.rollingImpulse = rolling[lane];
@@ -359,4 +376,12 @@ void unpackWideContacts(const WideContactSet& set, std::span<ContactConstraint> 
   }
 }
 
+/// This width's passes as a table (contact_solver_wide.h).
+template <class F>
+WideContactKernels makeWideContactKernels() {
+  return {F::kLanes,           &buildWideContacts<F>, &warmStartWide<F>,          &solveWide<F>,
+          &pushWide<F>,        &restitutionWide<F>,   &unpackWideContacts<F>};
+}
+
+}  // namespace
 }  // namespace impulse
