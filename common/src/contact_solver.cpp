@@ -50,8 +50,8 @@ Real effectiveMass(const ContactConstraint& c, const Vec2& anchorA, const Vec2& 
 
 void solveNormalRows(ContactConstraint& c, SolverState& a, SolverState& b, const Vec2& deltaPosition,
                      const ContactSolverContext& context, bool useBias, Real& totalNormalImpulse) {
-  for (int j = 0; j < c.pointCount; ++j) {
-    ConstraintPoint& cp = c.points[j];
+  for (int k = 0; k < c.pointCount; ++k) {
+    ConstraintPoint& cp = c.points[context.reversePointOrder ? c.pointCount - 1 - k : k];
     // Current separation from the start-of-step value and the motion since:
     // anchors are fixed in the bodies, rotated by the accumulated rotation.
     Vec2 moved = deltaPosition + b.deltaRotation.apply(cp.anchorB) - a.deltaRotation.apply(cp.anchorA);

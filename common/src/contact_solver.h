@@ -18,6 +18,10 @@ struct ContactSolverContext {
   Real inverseSubStep = 0;
   Real maxPushSpeed = 0;
   Real restitutionThreshold = 0;
+  /// Solve each manifold's second normal point first. Solving two points one
+  /// after the other favours one side, and a tall stack leans that way; the
+  /// solver alternates the order every sub-step so the favour cancels.
+  bool reversePointOrder = false;
 };
 
 /// Fills a constraint from a touching contact (velocities read from states).

@@ -283,7 +283,8 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
     F totalNormalImpulse = simd::broadcast<F>(0);
-    for (WidePoint<F>& p : c.points) {
+    for (int k = 0; k < 2; ++k) {
+      WidePoint<F>& p = c.points[context.reversePointOrder ? 1 - k : k];
       totalNormalImpulse += solveNormal(c, p, a, b, dpx, dpy, context, useBias);
     }
     for (WidePoint<F>& p : c.points) solveFriction(c, p, a, b);

@@ -173,6 +173,7 @@ void solve(WorldData& world, Real dt) {
   const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
   kernels.build(world.constraints, world.solverStates.size(), wide);
   for (int i = 0; i < subSteps; ++i) {
+    context.reversePointOrder = i % 2 == 1;
     integrateVelocities(world, h);
     kernels.warmStart(context, wide);
     kernels.solve(context, wide, true);
