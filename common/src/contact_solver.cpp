@@ -114,17 +114,15 @@ Softness makeSoftness(Real hertz, Real dampingRatio, Real h) {
   return {omega / a1, a2 * a3, a3};
 }
 
-void prepareContact(const WorldData& world, const Contact& contact, std::int32_t contactIndex,
-                    Softness contactSoftness, Softness staticSoftness,
-                    std::span<const SolverState> states, ContactConstraint& c) {
+void prepareContact(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
+                    ContactConstraint& c) {
+  const Contact& contact = world.contacts[ref.contact];
   const Body& bodyA = world.bodies[contact.bodyA];
   const Body& bodyB = world.bodies[contact.bodyB];
   const Manifold& manifold = contact.manifold;
-  // Anything not awake (static) shares the dummy state 0 and gets zero
-  // inverse mass, so the dummy's velocity stays zero without checks per row.
-  c.stateA = bodyA.awake ? bodyA.solverIndex : 0;
-  c.stateB = bodyB.awake ? bodyB.solverIndex : 0;
-  c.contact = contactIndex;
+  c.stateA = ref.stateA;
+  c.stateB = ref.stateB;
+  c.contact = ref.contact;
   c.pointCount = manifold.pointCount;
   c.normal = manifold.normal;
   c.invMassA = bodyA.awake ? bodyA.invMass : 0;
@@ -136,12 +134,10 @@ void prepareContact(const WorldData& world, const Contact& contact, std::int32_t
   c.rollingImpulse = manifold.rollingImpulse;
   Real rollingK = c.invInertiaA + c.invInertiaB;
   c.rollingMass = rollingK > 0 ? Real(1) / rollingK : Real(0);
-  // Contacts against static bodies are stiffer so stacks are not pushed
-  // into the ground.
-  c.softness = (c.stateA == 0 || c.stateB == 0) ? staticSoftness : contactSoftness;
+  c.softness = (c.stateA == 0 || c.stateB == 0) ? softness.statics : softness.dynamic;
 
-  const SolverState& a = states[c.stateA];
-  const SolverState& b = states[c.stateB];
+  const SolverState& a = world.solverStates[c.stateA];
+  const SolverState& b = world.solverStates[c.stateB];
   Vec2 tangent = rightPerp(c.normal);
   Real stickSpeed = world.settings.stickSpeed;
   for (int j = 0; j < c.pointCount; ++j) {

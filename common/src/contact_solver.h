@@ -24,10 +24,17 @@ struct ContactSolverContext {
   bool reversePointOrder = false;
 };
 
-/// Fills a constraint from a touching contact (velocities read from states).
-void prepareContact(const WorldData& world, const Contact& contact, std::int32_t contactIndex,
-                    Softness contactSoftness, Softness staticSoftness,
-                    std::span<const SolverState> states, ContactConstraint& constraint);
+/// The step's contact softness: between dynamic bodies, and against static
+/// ones (stiffer, so stacks are not pushed into the ground).
+struct ContactSoftness {
+  Softness dynamic;
+  Softness statics;
+};
+
+/// Fills a constraint from a touching contact (velocities read from the
+/// world's solver states).
+void prepareContact(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
+                    ContactConstraint& constraint);
 
 /// Applies the accumulated impulses to the velocities.
 void warmStartContacts(const ContactSolverContext& context);

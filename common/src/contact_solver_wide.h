@@ -13,16 +13,17 @@ namespace impulse {
 /// lanes of one colour share no body, and each lane's arithmetic is the same.
 struct WideContactKernels {
   int lanes;
-  /// Colours `constraints` and packs them into bundles plus overflow.
-  void (*build)(std::span<const ContactConstraint> constraints, std::size_t stateCount,
-                WideContactSet& set);
+  /// Colours the world's constraint refs and prepares each straight into
+  /// its bundle lane (or the overflow list). Returns whether any contact
+  /// overlaps deeper than its load explains (the push pass is needed).
+  bool (*build)(const WorldData& world, const ContactSoftness& softness, WideContactSet& set);
   void (*warmStart)(const ContactSolverContext& context, WideContactSet& set);
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
   /// The push pass (pushOverlap).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
-  /// Copies the lanes' impulses back into the scalar constraints.
-  void (*unpack)(const WideContactSet& set, std::span<ContactConstraint> constraints);
+  /// Writes the impulses back into the manifolds for next step's warm start.
+  void (*store)(const WideContactSet& set, WorldData& world);
 };
 
 /// The bundle list of width F in a set (defined by the file of that width).

@@ -219,40 +219,49 @@ ContactSolverContext overflowContext(const ContactSolverContext& context, WideCo
 // ---- passes ------------------------------------------------------------------
 
 template <class F>
-void buildWideContacts(std::span<const ContactConstraint> constraints, std::size_t stateCount,
-                       WideContactSet& set) {
-  set.usedColors.assign(stateCount, 0);
-  set.colorOf.resize(constraints.size());
+bool buildWideContacts(const WorldData& world, const ContactSoftness& softness, WideContactSet& set) {
+  const std::vector<ConstraintRef>& refs = world.constraintRefs;
+  set.usedColors.assign(world.solverStates.size(), 0);
+  set.colorOf.resize(refs.size());
   // Counting sort by colour (overflow last), stable within a colour so the
   // row order stays deterministic; one pass to count, one to place.
   std::array<std::int32_t, kColorCount + 2> start{};
-  for (std::size_t i = 0; i < constraints.size(); ++i) {
-    int color = pickColor(set.usedColors, constraints[i].stateA, constraints[i].stateB);
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    int color = pickColor(set.usedColors, refs[i].stateA, refs[i].stateB);
     set.colorOf[i] = color < 0 ? kColorCount : color;
     ++start[set.colorOf[i] + 1];
   }
   for (int color = 0; color <= kColorCount; ++color) start[color + 1] += start[color];
-  set.order.resize(constraints.size());
+  set.order.resize(refs.size());
   std::array<std::int32_t, kColorCount + 1> next{};
   std::copy(start.begin(), start.end() - 1, next.begin());
-  for (std::size_t i = 0; i < constraints.size(); ++i) {
+  for (std::size_t i = 0; i < refs.size(); ++i) {
     set.order[next[set.colorOf[i]]++] = static_cast<std::int32_t>(i);
   }
 
-  bundlesOf<F>(set).clear();
+  bool intrusion = false;
+  auto prepare = [&](std::int32_t k, ContactConstraint& into) {
+    const ConstraintRef& ref = refs[std::size_t(set.order[k])];
+    prepareContact(world, ref, softness, into);
+    intrusion = intrusion || hasIntrusion(into, world.contacts[ref.contact].manifold);
+  };
+  auto& bundles = bundlesOf<F>(set);
+  bundles.clear();
+  ContactConstraint prepared;
   for (int color = 0; color < kColorCount; ++color) {
     for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
       int lane = (k - start[color]) % F::kLanes;
-      if (lane == 0) bundlesOf<F>(set).push_back(emptyBundle<F>());
-      packLane(bundlesOf<F>(set).back(), lane, constraints[set.order[k]], set.order[k]);
+      if (lane == 0) bundles.push_back(emptyBundle<F>());
+      prepare(k, prepared);
+      packLane(bundles.back(), lane, prepared, prepared.contact);
     }
   }
   set.overflow.clear();
-  set.overflowSource.clear();
   for (std::int32_t k = start[kColorCount]; k < start[kColorCount + 1]; ++k) {
-    set.overflow.push_back(constraints[set.order[k]]);
-    set.overflowSource.push_back(set.order[k]);
+    set.overflow.emplace_back();
+    prepare(k, set.overflow.back());
   }
+  return intrusion;
 }
 
 template <class F>
@@ -351,37 +360,33 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
 }
 
 template <class F>
-void unpackWideContacts(const WideContactSet& set, std::span<ContactConstraint> constraints) {
+void storeWideImpulses(const WideContactSet& set, WorldData& world) {
   for (const WideConstraint<F>& w : bundlesOf<F>(const_cast<WideContactSet&>(set))) {
     alignas(16) float rolling[F::kLanes];
-    alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], total[2][F::kLanes];
+    alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes];
     simd::store(rolling, w.rollingImpulse);
     for (int j = 0; j < 2; ++j) {
       simd::store(normal[j], w.points[j].normalImpulse);
       simd::store(tangent[j], w.points[j].tangentImpulse);
-      simd::store(total[j], w.points[j].totalNormalImpulse);
     }
     for (int lane = 0; lane < F::kLanes; ++lane) {
       if (w.source[lane] < 0) continue;
-      ContactConstraint& c = constraints[w.source[lane]];
-      c.rollingImpulse = rolling[lane];
-      for (int j = 0; j < c.pointCount; ++j) {
-        c.points[j].normalImpulse = normal[j][lane];
-        c.points[j].tangentImpulse = tangent[j][lane];
-        c.points[j].totalNormalImpulse = total[j][lane];
+      Manifold& manifold = world.contacts[w.source[lane]].manifold;
+      manifold.rollingImpulse = rolling[lane];
+      for (int j = 0; j < manifold.pointCount; ++j) {
+        manifold.points[j].normalImpulse = normal[j][lane];
+        manifold.points[j].tangentImpulse = tangent[j][lane];
       }
     }
   }
-  for (std::size_t k = 0; k < set.overflow.size(); ++k) {
-    constraints[set.overflowSource[k]] = set.overflow[k];
-  }
+  storeImpulses(set.overflow, world);
 }
 
 /// This width's passes as a table (contact_solver_wide.h).
 template <class F>
 WideContactKernels makeWideContactKernels() {
   return {F::kLanes,           &buildWideContacts<F>, &warmStartWide<F>,          &solveWide<F>,
-          &pushWide<F>,        &restitutionWide<F>,   &unpackWideContacts<F>};
+          &pushWide<F>,        &restitutionWide<F>,   &storeWideImpulses<F>};
 }
 
 }  // namespace

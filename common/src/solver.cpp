@@ -55,29 +55,31 @@ void loadStates(WorldData& world, Real h) {
   }
 }
 
-// Returns whether any contact overlaps deeper than its load explains, which
-// needs the push pass this step.
-bool prepareConstraints(WorldData& world, Real h) {
-  Real hertz = std::min(world.settings.contactHertz, Real(0.25) / h);
-  Softness contactSoftness = makeSoftness(hertz, world.settings.contactDampingRatio, h);
-  Softness staticSoftness = makeSoftness(2 * hertz, world.settings.contactDampingRatio, h);
-  world.constraints.clear();
-  bool intrusion = false;
+// The touching contacts the step solves, each once: those of awake bodies
+// (a pair of awake bodies taken by the lower slot), in awake-list order.
+void collectConstraints(WorldData& world) {
+  world.constraintRefs.clear();
   for (std::int32_t slot : world.awakeBodies) {
     for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
-      std::int32_t index = edgeContact(key);
-      const Contact& contact = world.contacts[index];
+      const Contact& contact = world.contacts[edgeContact(key)];
       std::int32_t other = otherBody(contact, key);
       if (contact.touching && (!world.bodies[other].awake || slot < other)) {
-        world.constraints.emplace_back();
-        prepareContact(world, contact, index, contactSoftness, staticSoftness, world.solverStates,
-                       world.constraints.back());
-        intrusion = intrusion || hasIntrusion(world.constraints.back(), contact.manifold);
+        // Anything not awake (static) shares the dummy state 0 and gets zero
+        // inverse mass, so the dummy's velocity stays zero without checks.
+        const Body& a = world.bodies[contact.bodyA];
+        const Body& b = world.bodies[contact.bodyB];
+        world.constraintRefs.push_back(
+            {edgeContact(key), a.awake ? a.solverIndex : 0, b.awake ? b.solverIndex : 0});
       }
       key = contact.edgeNext[edgeSide(key)];
     }
   }
-  return intrusion;
+}
+
+ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
+  Real hertz = std::min(settings.contactHertz, Real(0.25) / h);
+  return {makeSoftness(hertz, settings.contactDampingRatio, h),
+          makeSoftness(2 * hertz, settings.contactDampingRatio, h)};
 }
 
 void integrateVelocities(WorldData& world, Real h) {
@@ -164,14 +166,14 @@ void solve(WorldData& world, Real dt) {
   const int subSteps = std::max(1, world.settings.subSteps);
   const Real h = dt / Real(subSteps);
   loadStates(world, h);
-  const bool intrusion = prepareConstraints(world, h);
+  collectConstraints(world);
 
-  ContactSolverContext context{world.solverStates, world.constraints, 1 / h,
+  ContactSolverContext context{world.solverStates, {}, 1 / h,
                                world.settings.maxContactPushSpeed,
                                world.settings.restitutionThreshold};
   WideContactSet& wide = world.wideContacts;
   const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
-  kernels.build(world.constraints, world.solverStates.size(), wide);
+  const bool intrusion = kernels.build(world, contactSoftness(world.settings, h), wide);
   for (int i = 0; i < subSteps; ++i) {
     context.reversePointOrder = i % 2 == 1;
     integrateVelocities(world, h);
@@ -187,8 +189,7 @@ void solve(WorldData& world, Real dt) {
   // A flat face meeting a wall bounces on two points; one pass solves them
   // one after the other and leaves a spurious spin, a few converge.
   for (int i = 0; i < kRestitutionIterations; ++i) kernels.restitution(context, wide);
-  kernels.unpack(wide, world.constraints);
-  storeImpulses(world.constraints, world);
+  kernels.store(wide, world);
   finalizeBodies(world);
 }
 

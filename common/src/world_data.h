@@ -99,6 +99,14 @@ struct SolverState {
   Real padding = 0;
 };
 
+/// A touching contact the solver takes this step, with its bodies' solver
+/// states (0: the static dummy, for anything not awake).
+struct ConstraintRef {
+  std::int32_t contact = kNullIndex;
+  std::int32_t stateA = 0;
+  std::int32_t stateB = 0;
+};
+
 /// A body's real velocity, set aside while the push pass borrows the state's
 /// velocity slots for pseudo velocities.
 struct ParkedVelocity {
@@ -172,7 +180,7 @@ template <class F>
 struct WideConstraint {
   std::int32_t stateA[F::kLanes];
   std::int32_t stateB[F::kLanes];
-  /// Index into the scalar constraints each lane came from (-1: padding).
+  /// The contact each lane came from (-1: padding).
   std::int32_t source[F::kLanes];
   F normalX, normalY;
   F invMassA, invInertiaA, invMassB, invInertiaB;
@@ -193,7 +201,6 @@ struct WideContactSet {
   std::vector<WideConstraint<simd::F4>> bundles4;
   std::unique_ptr<Avx2Bundles, Avx2BundlesDeleter> bundles8;
   std::vector<ContactConstraint> overflow;
-  std::vector<std::int32_t> overflowSource;
   // Scratch for colouring, kept to avoid allocation per step.
   std::vector<std::uint64_t> usedColors;
   std::vector<std::int32_t> colorOf;
@@ -224,7 +231,7 @@ struct WorldData {
   std::vector<SolverState> solverStates;
   std::vector<SolverIntegration> solverIntegration;
   std::vector<ParkedVelocity> parkedVelocities;
-  std::vector<ContactConstraint> constraints;
+  std::vector<ConstraintRef> constraintRefs;
   WideContactSet wideContacts;
   std::vector<std::int32_t> islandStack;
   std::vector<std::int32_t> islandBodies;
