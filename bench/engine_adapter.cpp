@@ -5,6 +5,7 @@ namespace bench {
 const char* engineName(Engine engine) {
   switch (engine) {
     case Engine::Impulse: return "impulse";
+    case Engine::ImpulseSse2: return "impulse-sse2";
     case Engine::Box2D: return "box2d";
     case Engine::Chipmunk: return "chipmunk";
     case Engine::Box2DV3Sse2: return "box2d-v3-sse2";
@@ -16,6 +17,7 @@ const char* engineName(Engine engine) {
 std::string EngineSetting::label() const {
   switch (engine) {
     case Engine::Impulse:
+    case Engine::ImpulseSse2:
     case Engine::Box2DV3Sse2:
     case Engine::Box2DV3Avx2: return "sub " + std::to_string(iterations);
     case Engine::Box2D: return "it " + std::to_string(iterations) + "/" + std::to_string(positionIterations);
@@ -26,7 +28,8 @@ std::string EngineSetting::label() const {
 
 std::vector<EngineSetting> allSettings() {
   return {{Engine::Impulse, 1, 0},     {Engine::Impulse, 2, 0},     {Engine::Impulse, 4, 0},
-          {Engine::Impulse, 8, 0},     {Engine::Box2D, 8, 3},       {Engine::Box2D, 30, 10},
+          {Engine::Impulse, 8, 0},     {Engine::ImpulseSse2, 4, 0}, {Engine::Box2D, 8, 3},
+          {Engine::Box2D, 30, 10},
           {Engine::Chipmunk, 10, 0},   {Engine::Chipmunk, 30, 0},
 #ifdef IMPULSE_BENCH_BOX2D_V3
           {Engine::Box2DV3Sse2, 4, 0}, {Engine::Box2DV3Sse2, 8, 0}, {Engine::Box2DV3Avx2, 4, 0},
@@ -38,6 +41,7 @@ std::vector<EngineSetting> allSettings() {
 std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting) {
   switch (setting.engine) {
     case Engine::Impulse: return makeImpulseAdapter(scene, setting.iterations);
+    case Engine::ImpulseSse2: return makeImpulseAdapter(scene, setting.iterations, true);
     case Engine::Box2D: return makeBox2DAdapter(scene, setting.iterations, setting.positionIterations);
     case Engine::Chipmunk: return makeChipmunkAdapter(scene, setting.iterations);
 #ifdef IMPULSE_BENCH_BOX2D_V3

@@ -12,7 +12,9 @@ namespace bench {
 
 /// Box2DV3Sse2/Avx2: Box2D v3 built twice from one source tree, present only
 /// when CMake was given IMPULSE_BOX2D_V3_SOURCE (IMPULSE_BENCH_BOX2D_V3).
-enum class Engine { Impulse, Box2D, Chipmunk, Box2DV3Sse2, Box2DV3Avx2 };
+/// ImpulseSse2: Impulse with its contact solver held to SSE2 (the plain
+/// Impulse rows take AVX2 when the CPU has it); results are bit-identical.
+enum class Engine { Impulse, ImpulseSse2, Box2D, Chipmunk, Box2DV3Sse2, Box2DV3Avx2 };
 
 const char* engineName(Engine engine);
 
@@ -25,7 +27,8 @@ struct EngineSetting {
   std::string label() const;
 };
 
-/// Impulse at 1, 2, 4 and 8 sub-steps; Box2D at 8/3 (default) and 30/10;
+/// Impulse at 1, 2, 4 and 8 sub-steps (and 4 held to SSE2); Box2D at 8/3
+/// (default) and 30/10;
 /// Chipmunk at 10 (default) and 30 iterations; Box2D v3 (when built) at 4
 /// (default) and 8 sub-steps in each of its builds.
 std::vector<EngineSetting> allSettings();
@@ -49,7 +52,8 @@ class EngineAdapter {
 /// The scene built in the given engine at the given setting.
 std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting);
 
-std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps);
+std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps,
+                                                  bool sse2Only = false);
 std::unique_ptr<EngineAdapter> makeBox2DAdapter(const SceneDescription& scene, int velocityIterations,
                                                 int positionIterations);
 std::unique_ptr<EngineAdapter> makeChipmunkAdapter(const SceneDescription& scene, int iterations);

@@ -17,6 +17,7 @@ constexpr double kWidth = 640, kHeight = 420, kLeft = 70, kRight = 20, kTop = 40
 const char* colour(Engine engine) {
   switch (engine) {
     case Engine::Impulse: return "#d62728";
+    case Engine::ImpulseSse2: return "#e377c2";
     case Engine::Box2D: return "#1f77b4";
     case Engine::Chipmunk: return "#2ca02c";
     case Engine::Box2DV3Sse2: return "#9467bd";

@@ -29,8 +29,9 @@ impulse::Shape toShape(const ShapeDesc& shape, const impulse::ShapeLimits& limit
   return impulse::Shape::makePolygon(build.polygon);
 }
 
-impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps) {
+impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, bool sse2Only) {
   impulse::WorldSettings settings;
+  if (sse2Only) settings.simdWidth = impulse::SimdWidth::Sse2;
   settings.gravity = toVec(scene.gravity);
   settings.subSteps = subSteps;
   settings.enableSleep = scene.allowSleep;
@@ -62,7 +63,8 @@ impulse::MaterialOverride overrideFor(const BodyDesc& body) {
 
 class ImpulseAdapter final : public EngineAdapter {
  public:
-  ImpulseAdapter(const SceneDescription& scene, int subSteps) : world_(settingsFor(scene, subSteps)) {
+  ImpulseAdapter(const SceneDescription& scene, int subSteps, bool sse2Only)
+      : world_(settingsFor(scene, subSteps, sse2Only)) {
     ids_.reserve(scene.bodies.size());
     for (const BodyDesc& body : scene.bodies) {
       impulse::BodyDef def;
@@ -98,8 +100,9 @@ class ImpulseAdapter final : public EngineAdapter {
 
 }  // namespace
 
-std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps) {
-  return std::make_unique<ImpulseAdapter>(scene, subSteps);
+std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps,
+                                                  bool sse2Only) {
+  return std::make_unique<ImpulseAdapter>(scene, subSteps, sse2Only);
 }
 
 }  // namespace bench
