@@ -18,6 +18,9 @@ enum class Engine { Impulse, ImpulseSse2, Box2D, Chipmunk, Box2DV3Sse2, Box2DV3A
 
 const char* engineName(Engine engine);
 
+/// Impulse at either solver width: the same model, so the same closed forms.
+inline bool isImpulse(Engine engine) { return engine == Engine::Impulse || engine == Engine::ImpulseSse2; }
+
 /// One engine at one solver setting: Impulse and Box2D v3 sub-steps, Box2D
 /// 2.4.1 velocity and position iterations, Chipmunk iterations.
 struct EngineSetting {

@@ -114,7 +114,7 @@ ClosedFormCase inclineSlide() {
             return scene;
           },
           [](const SceneDescription& scene, const EngineAdapter& engine, Engine e, double t, double) {
-            double mu = e == Engine::Impulse ? props(Material::Wood).dynamicFriction : props(Material::Wood).staticFriction;
+            double mu = isImpulse(e) ? props(Material::Wood).dynamicFriction : props(Material::Wood).staticFriction;
             double expected = 0.5 * kGravity * (std::sin(angle) - mu * std::cos(angle)) * t * t;
             double d = slid(scene, engine, angle);
             return std::vector<Metric>{{"slide err m", std::abs(d - expected)}, {"slid m", d}};
@@ -134,7 +134,7 @@ ClosedFormCase rollingBall() {
             return scene;
           },
           [](const SceneDescription& scene, const EngineAdapter& engine, Engine e, double t, double) {
-            double rolling = e == Engine::Impulse ? props(Material::Rubber).rollingResistance : 0;
+            double rolling = isImpulse(e) ? props(Material::Rubber).rollingResistance : 0;
             double a = kGravity * (std::sin(angle) - rolling * std::cos(angle)) / 1.5;
             double d = slid(scene, engine, angle);
             // Rolling without slipping: the spin matches the speed.
