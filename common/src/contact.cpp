@@ -113,34 +113,39 @@ void gatherActiveContacts(WorldData& world) {
   }
 }
 
-// A contact's manifold is recomputed only once one of its bodies has moved
-// (any point of it within `extent` of its centre) this far from the pose it
-// was computed at. Until then its points are carried along with the bodies
-// (refreshManifold), which is exact to first order in the motion: a resting
-// stack skips the narrow phase without its contacts going stale.
-constexpr Real kPoseTolerance = Real(5e-4);
-
-void refreshCollisionPoses(WorldData& world) {
-  for (std::int32_t slot : world.awakeBodies) {
-    Body& body = world.bodies[slot];
-    const Transform& last = body.collisionPose;
-    // Chord a point at distance `extent` sweeps under the rotation since.
-    Real cosine = body.transform.q.c * last.q.c + body.transform.q.s * last.q.s;
-    Real rimShift = body.extent * std::sqrt(std::max(2 - 2 * cosine, Real(0)));
-    if ((body.transform.p - last.p).norm() + rimShift > kPoseTolerance) {
-      body.collisionPose = body.transform;
-      ++body.poseVersion;
-    }
-  }
+// B's pose in A's frame.
+Transform relativePose(const Body& a, const Body& b) {
+  return {a.transform.q.applyInverse(b.transform.p - a.transform.p), relativeRotation(a.transform.q, b.transform.q)};
 }
 
+// A contact's manifold is recomputed only once its bodies have moved relative
+// to each other since it was computed: slid along the contact or turned by
+// more than half a millimetre (at B's rim), or closed or opened by more than
+// 5 mm (which stays well inside the 2 cm speculative band the narrow phase
+// keeps points for). Until then the manifold's points are carried along with
+// the bodies (refreshManifold), exact to first order: a resting or sinking
+// stack, or bodies falling together, skip the narrow phase.
+constexpr Real kSlideTolerance = Real(5e-4);
+constexpr Real kApproachTolerance = Real(5e-3);
+
 bool manifoldIsCurrent(const Contact& contact, const Body& a, const Body& b) {
-  return contact.poseVersionA == a.poseVersion && contact.poseVersionB == b.poseVersion;
+  const ManifoldFrame& frame = contact.frame;
+  if (!frame.computed) return false;
+  Transform now = relativePose(a, b);
+  Vec2 shift = now.p - frame.relative.p;
+  Real approach = shift.dot(frame.localNormal);
+  Real slide = (shift - approach * frame.localNormal).norm();
+  // Chord a point of B at distance `extent` sweeps under the turn since.
+  Real cosine = now.q.c * frame.relative.q.c + now.q.s * frame.relative.q.s;
+  Real rimShift = b.extent * std::sqrt(std::max(2 - 2 * cosine, Real(0)));
+  return std::abs(approach) <= kApproachTolerance && slide + rimShift <= kSlideTolerance;
 }
 
 void recordFrame(Contact& contact, const Body& a, const Body& b) {
   const Manifold& manifold = contact.manifold;
   ManifoldFrame& frame = contact.frame;
+  frame.computed = true;
+  frame.relative = relativePose(a, b);
   frame.localNormal = a.transform.q.applyInverse(manifold.normal);
   for (int i = 0; i < manifold.pointCount; ++i) {
     const ManifoldPoint& point = manifold.points[i];
@@ -177,8 +182,6 @@ void updateManifold(WorldData& world, std::int32_t index) {
     return;
   }
   ++world.profile.manifoldUpdates;
-  contact.poseVersionA = a.poseVersion;
-  contact.poseVersionB = b.poseVersion;
   Manifold next = contact.collide(world.shapes[contact.bodyA], a.transform,
                                   world.shapes[contact.bodyB], b.transform);
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
@@ -201,7 +204,6 @@ void updatePairs(WorldData& world) {
 }
 
 void collideContacts(WorldData& world) {
-  refreshCollisionPoses(world);
   world.profile.manifoldUpdates = 0;
   gatherActiveContacts(world);
   for (std::int32_t index : world.activeContacts) {

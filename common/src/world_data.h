@@ -15,7 +15,6 @@
 namespace impulse {
 
 inline constexpr std::int32_t kNullIndex = -1;
-inline constexpr std::uint32_t kNeverCollided = ~std::uint32_t(0);
 
 struct Body {
   Transform transform;
@@ -33,10 +32,6 @@ struct Body {
   Real extent = 0;
   Real innerRadius = 0;
   Real sleepTime = 0;
-  // Pose this body's manifolds were last computed at, and a version that
-  // changes each time it moves on (contact.cpp: manifold reuse).
-  Transform collisionPose;
-  std::uint32_t poseVersion = 0;
   // Centre at the start of the step (continuous collision sweeps from it).
   Vec2 center0 = Vec2::Zero();
   Rot rotation0;
@@ -61,6 +56,8 @@ struct Body {
 /// A manifold's geometry in the bodies' own frames, for updating it cheaply
 /// while the bodies move only a little (contact.cpp).
 struct ManifoldFrame {
+  bool computed = false;  ///< false until the narrow phase first ran
+  Transform relative;     ///< B's pose in A's frame when it ran
   Vec2 localNormal = Vec2::Zero();  ///< in A's frame
   Vec2 localPointA[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on A
   Vec2 localPointB[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on B
@@ -83,9 +80,6 @@ struct Contact {
   std::int32_t edgeNext[2] = {kNullIndex, kNullIndex};
   std::int32_t nextFree = kNullIndex;
   std::uint64_t pairKey = 0;
-  // The bodies' pose versions when the manifold was computed.
-  std::uint32_t poseVersionA = kNeverCollided;
-  std::uint32_t poseVersionB = kNeverCollided;
   bool touching = false;
 };
 

@@ -1,5 +1,5 @@
-// The narrow phase reuses a contact's manifold while neither body has moved
-// beyond a quarter millimetre from the pose it was computed at.
+// The narrow phase reuses a contact's manifold while its bodies have not
+// moved relative to each other (0.5 mm sideways or 5 mm along the normal).
 
 #include "world_test_support.h"
 
