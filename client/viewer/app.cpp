@@ -258,6 +258,12 @@ void App::drawScene(ImDrawList& list, const ViewTransform& view) {
     scene_.drawMarkers(list, view, client->mirror().preset()->markers);
   }
   overlays_.draw(list, view, world_.bodies(), controls_.overlays());
+  if (const auto grabbed = controls_.grabbedBody()) {
+    for (const DrawnBody& body : world_.bodies()) {
+      if (body.state.id != *grabbed) continue;
+      scene_.drawGrab(list, view, body.state.position + *controls_.grabOffset(), controls_.pointer());
+    }
+  }
   scene_.drawPreview(list, view, controls_);
   scene_.end(list);
 }

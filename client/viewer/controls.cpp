@@ -298,6 +298,11 @@ std::optional<std::uint32_t> Controls::grabbedBody() const {
   return grab_->body;
 }
 
+std::optional<Vec2> Controls::grabOffset() const {
+  if (!grab_) return std::nullopt;
+  return grab_->offset;
+}
+
 void Controls::zoomAt(float factor, float px, float py, const PixelRect& viewport) {
   camera_ = viewer::zoomAt(camera_, viewport, kSceneSize, factor, px, py);
 }

@@ -151,6 +151,8 @@ class Controls {
   void pan(float dx, float dy);
   /// The body being dragged by hand, if any.
   std::optional<std::uint32_t> grabbedBody() const;
+  /// Where on the grabbed body it is held, from its centre (world axes).
+  std::optional<Vec2> grabOffset() const;
 
   // Next shape.
   DrawMode mode() const { return mode_; }

@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // SPEC.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 23> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
@@ -21,7 +21,7 @@ constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
     {"Space", "pause or resume the server"},
     {".", "step one tick while paused"},
     {"wheel", "zoom at the cursor"},
-    {"right/middle drag", "pan"},
+    {"right drag", "pan (middle drag too)"},
     {"F, Home", "fit the scene to the window"},
     {"K B V", "contacts, bounding boxes, velocities"},
     {"X", "show or hide these controls"},
@@ -32,21 +32,24 @@ constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
     {"W A S D", "nudge gravity while held"},
     {"Enter", "reset gravity"},
     {"", "drawing: sandbox and presets 3, 4"},
-    {"", "zoom and pan: the scene stays fitted"},
-    {"", "to the window until you zoom or pan"},
 }};
 
 }  // namespace
 
 void drawControlsTable() {
-  if (!ImGui::BeginTable("controls", 2, ImGuiTableFlags_SizingFixedFit)) return;
+  if (!ImGui::BeginTable("controls", 2)) return;
+  ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+  const ImVec4 keyColour = ImGui::GetStyleColorVec4(ImGuiCol_Text);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   for (const auto& [key, action] : kControlRows) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(key);
+    ImGui::TextColored(keyColour, "%s", key);
     ImGui::TableNextColumn();
-    ImGui::TextDisabled("%s", action);
+    ImGui::TextWrapped("%s", action);
   }
+  ImGui::PopStyleColor();
   ImGui::EndTable();
 }
 

@@ -168,6 +168,13 @@ void WorldRenderer::drawMarkers(ImDrawList& list, const ViewTransform& view,
   }
 }
 
+void WorldRenderer::drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held,
+                             const Vec2& cursor) {
+  const ImU32 colour = packed(palette::kSelection);
+  list.AddLine(pixel(view, held), pixel(view, cursor), colour, kOutline);
+  list.AddCircleFilled(pixel(view, held), 3.5f, colour);
+}
+
 void WorldRenderer::drawPreview(ImDrawList& list, const ViewTransform& view,
                                 const Controls& controls) {
   if (controls.mode() == DrawMode::Polygon) drawPolygonPreview(list, view, controls);

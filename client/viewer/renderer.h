@@ -31,6 +31,8 @@ class WorldRenderer {
   void drawBodies(ImDrawList& list, const ViewTransform& view, std::span<const DrawnBody> bodies,
                   std::optional<std::uint32_t> selected, std::optional<std::uint32_t> grabbed);
   void drawMarkers(ImDrawList& list, const ViewTransform& view, std::span<const Marker> markers);
+  /// The hand: a line from the held point of a grabbed body to the cursor.
+  void drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held, const Vec2& cursor);
   /// The polygon or circle being drawn, and the polygon cursor dot.
   void drawPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 

@@ -161,13 +161,9 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   ImGui::SetNextWindowSize({rect.w, rect.h});
   ImGui::Begin("##side panel", nullptr, kPanelFlags);
   drawTitle(fonts, input);
+  // Most looked-at first: time, the selected body, the live figures.
   if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) drawTime(input, act);
-  if (ImGui::CollapsingHeader("Next shape and materials", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawNextShape(controls, act);
-  }
-  if (ImGui::CollapsingHeader("Gravity", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawGravityDial(input.gravity);
-  }
+  drawControlsSection(controls, act);
   if (controls.inspectorVisible() &&
       ImGui::CollapsingHeader("Inspector (M)", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawInspectorSection(controls, input);
@@ -178,7 +174,12 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   if (ImGui::CollapsingHeader("Debug overlays", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawOverlayToggles(controls);
   }
-  drawControlsSection(controls, act);
+  if (ImGui::CollapsingHeader("Next shape and materials", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawNextShape(controls, act);
+  }
+  if (ImGui::CollapsingHeader("Gravity", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawGravityDial(input.gravity);
+  }
   ImGui::End();
 }
 
