@@ -1,6 +1,7 @@
 #include "server_wording.h"
 
 #include <array>
+#include <functional>
 #include <regex>
 #include <utility>
 
@@ -45,35 +46,35 @@ std::string replaceAll(std::string text, std::string_view from, std::string_view
   return text;
 }
 
-// "spawn_polygon.vertices[2].y" -> "polygon Y3": the script counts from 1.
-std::string polygonVertices(const std::string& text) {
-  static const std::regex vertex(R"(spawn_polygon\.vertices\[(\d+)\]\.([xy]))");
+// `text` with every match of `pattern` replaced by what `replacement` makes of it.
+std::string replaceMatches(const std::string& text, const std::regex& pattern,
+                           const std::function<std::string(const std::smatch&)>& replacement) {
   std::string out;
   auto last = text.cbegin();
-  for (std::sregex_iterator it(text.begin(), text.end(), vertex), end; it != end; ++it) {
-    const auto& match = *it;
-    out.append(last, match[0].first);
-    out += "polygon ";
-    out += match[2].str() == "x" ? 'X' : 'Y';
-    out += std::to_string(std::stoul(match[1].str()) + 1);
-    last = match[0].second;
+  for (std::sregex_iterator it(text.begin(), text.end(), pattern), end; it != end; ++it) {
+    out.append(last, (*it)[0].first);
+    out += replacement(*it);
+    last = (*it)[0].second;
   }
   out.append(last, text.cend());
   return out;
 }
 
+// "spawn_polygon.vertices[2].y" -> "polygon Y3": the script counts from 1.
+std::string polygonVertices(const std::string& text) {
+  static const std::regex vertex(R"(spawn_polygon\.vertices\[(\d+)\]\.([xy]))");
+  return replaceMatches(text, vertex, [](const std::smatch& match) {
+    return std::string("polygon ") + (match[2].str() == "x" ? 'X' : 'Y') +
+           std::to_string(std::stoul(match[1].str()) + 1);
+  });
+}
+
 // std::to_string's six fixed decimals ("-25.000000", "0.100000").
 std::string tidyNumbers(const std::string& text) {
-  static const std::regex fixed(R"(-?\d+\.\d{6}(?![\d]))");
-  std::string out;
-  auto last = text.cbegin();
-  for (std::sregex_iterator it(text.begin(), text.end(), fixed), end; it != end; ++it) {
-    out.append(last, (*it)[0].first);
-    out += client::formatNumber(std::stod((*it)[0].str()));
-    last = (*it)[0].second;
-  }
-  out.append(last, text.cend());
-  return out;
+  static const std::regex fixed(R"(-?\d+\.\d{6}(?!\d))");
+  return replaceMatches(text, fixed, [](const std::smatch& match) {
+    return client::formatNumber(std::stod(match[0].str()));
+  });
 }
 
 }  // namespace

@@ -97,6 +97,18 @@ TEST(Cli, ErrorsNameTheLineAndTheProblem) {
       << run.lines[6];
 }
 
+TEST(Cli, ServerErrorsUseTheScriptsWordsAndPlainNumbers) {
+  ServerProcess server({"--paused"});
+  const auto run = runCli(server.port(), "polygon 1 1 2 nan 3 1\ncircle 100 5 1\n");
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 3u);
+  EXPECT_TRUE(contains(run.lines[1], R"("error":"line 1: polygon Y2 is not a finite number")"))
+      << run.lines[1];
+  // The server writes the bounds with six decimals; the report as people do.
+  EXPECT_TRUE(contains(run.lines[2], "(-25, -25) to (50, 45)")) << run.lines[2];
+  EXPECT_FALSE(contains(run.lines[2], ".000000")) << run.lines[2];
+}
+
 TEST(Cli, ReadsStdin) {
   ServerProcess server({"--paused"});
   const auto run = runCli(server.port(), "circle 4 4 0.25\nstep 2\n", true);
