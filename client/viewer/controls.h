@@ -159,7 +159,6 @@ class Controls {
   bool nextStatic() const { return nextStatic_; }
   bool nextFeelsGravity() const { return nextFeelsGravity_; }
   Material material() const { return material_; }
-  void selectMaterial(Material material) { material_ = material; }
 
   // Drawing previews.
   const std::vector<Vec2>& polygonPoints() const { return points_; }

@@ -44,8 +44,7 @@ Gui::Gui(SDL_Window* window, SDL_Renderer* renderer, const std::string& fontPath
     text_ = io.Fonts->AddFontFromFileTTF(fontPath.c_str(), kFontPixels);
     title_ = io.Fonts->AddFontFromFileTTF(fontPath.c_str(), kTitlePixels);
   }
-  hasFont_ = text_ != nullptr && title_ != nullptr;
-  if (!hasFont_) text_ = title_ = io.Fonts->AddFontDefault();
+  if (text_ == nullptr || title_ == nullptr) text_ = title_ = io.Fonts->AddFontDefault();
   ImGui_ImplSDL2_InitForSDLRenderer(window);
   renderer_ = std::make_unique<ImGuiRenderer>(renderer);
 }

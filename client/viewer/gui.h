@@ -27,13 +27,10 @@ class Gui {
   /// render(). The scene goes into ImGui's background list, shapes only.
   void beginFrame();
   void render();
-  /// The TrueType font was loaded.
-  bool hasFont() const { return hasFont_; }
   ImFont* textFont() const { return text_; }
   ImFont* titleFont() const { return title_; }
 
  private:
-  bool hasFont_ = false;
   ImFont* text_ = nullptr;
   ImFont* title_ = nullptr;
   std::unique_ptr<ImGuiRenderer> renderer_;

@@ -16,7 +16,6 @@ class History {
     if (values_.size() == capacity_) values_.erase(values_.begin());
     values_.push_back(value);
   }
-  void clear() { values_.clear(); }
   const std::vector<float>& values() const { return values_; }
   float latest() const { return values_.empty() ? 0.0f : values_.back(); }
   float max() const {
