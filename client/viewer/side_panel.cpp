@@ -30,6 +30,15 @@ std::string modeName(DrawMode mode) {
   return "none (P polygon, O circle)";
 }
 
+ImVec4 linkColour(LinkState link) {
+  switch (link) {
+    case LinkState::Connected: return colourOf(palette::kValid);
+    case LinkState::Connecting: return colourOf(palette::kWarning);
+    case LinkState::Lost: break;
+  }
+  return colourOf(palette::kInvalid);
+}
+
 void drawTitle(const PanelFonts& fonts, const PanelInput& input) {
   ImGui::PushFont(fonts.title);
   ImGui::TextWrapped("%s", input.preset != nullptr ? input.preset->title.c_str() : "Impulse");
@@ -39,6 +48,10 @@ void drawTitle(const PanelFonts& fonts, const PanelInput& input) {
     for (const std::string& line : input.preset->explanation) ImGui::TextWrapped("%s", line.c_str());
     ImGui::PopStyleColor();
   }
+  // The link first: without it nothing else on the panel means anything.
+  ImGui::PushStyleColor(ImGuiCol_Text, linkColour(input.link));
+  ImGui::TextWrapped("%s", input.linkText.c_str());
+  ImGui::PopStyleColor();
   if (input.notice) {
     ImGui::PushStyleColor(ImGuiCol_Text, colourOf(palette::kWarning));
     ImGui::TextWrapped("%s", input.notice->c_str());
@@ -47,6 +60,10 @@ void drawTitle(const PanelFonts& fonts, const PanelInput& input) {
 }
 
 void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& act) {
+  if (input.link != LinkState::Connected) {
+    ImGui::TextDisabled("not connected: the clock is the server's");
+    return;
+  }
   if (input.serverPaused) {
     ImGui::TextColored(colourOf(palette::kWarning), "PAUSED");
   } else {

@@ -1,8 +1,6 @@
 #include <cstdio>
 
 #include "impulse/client/number_format.h"
-#include "palette.h"
-#include "renderer.h"
 #include "side_panel.h"
 
 namespace impulse::viewer {
@@ -10,15 +8,6 @@ namespace impulse::viewer {
 namespace {
 
 using client::formatNumber;
-
-ImVec4 linkColour(LinkState link) {
-  switch (link) {
-    case LinkState::Connected: return ImGui::ColorConvertU32ToFloat4(packed(palette::kValid));
-    case LinkState::Connecting: return ImGui::ColorConvertU32ToFloat4(packed(palette::kWarning));
-    case LinkState::Lost: break;
-  }
-  return ImGui::ColorConvertU32ToFloat4(packed(palette::kInvalid));
-}
 
 void plot(const char* label, const History& history, const std::string& caption) {
   const auto& values = history.values();
@@ -31,9 +20,6 @@ void plot(const char* label, const History& history, const std::string& caption)
 }  // namespace
 
 void drawStatsSection(const PanelInput& input) {
-  ImGui::PushStyleColor(ImGuiCol_Text, linkColour(input.link));
-  ImGui::TextWrapped("%s", input.linkText.c_str());
-  ImGui::PopStyleColor();
   if (const v1::ServerStats* stats = input.stats) {
     ImGui::Text("step %s ms (mean %s), tick %s ms", formatNumber(stats->last_step_ms(), 3).c_str(),
                 formatNumber(stats->mean_step_ms(), 3).c_str(),
