@@ -1,8 +1,7 @@
 #include "server_wording.h"
 
+#include <algorithm>
 #include <array>
-#include <functional>
-#include <regex>
 #include <utility>
 
 #include "impulse/client/number_format.h"
@@ -46,35 +45,51 @@ std::string replaceAll(std::string text, std::string_view from, std::string_view
   return text;
 }
 
-// `text` with every match of `pattern` replaced by what `replacement` makes of it.
-std::string replaceMatches(const std::string& text, const std::regex& pattern,
-                           const std::function<std::string(const std::smatch&)>& replacement) {
-  std::string out;
-  auto last = text.cbegin();
-  for (std::sregex_iterator it(text.begin(), text.end(), pattern), end; it != end; ++it) {
-    out.append(last, (*it)[0].first);
-    out += replacement(*it);
-    last = (*it)[0].second;
-  }
-  out.append(last, text.cend());
-  return out;
-}
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
 // "spawn_polygon.vertices[2].y" -> "polygon Y3": the script counts from 1.
-std::string polygonVertices(const std::string& text) {
-  static const std::regex vertex(R"(spawn_polygon\.vertices\[(\d+)\]\.([xy]))");
-  return replaceMatches(text, vertex, [](const std::smatch& match) {
-    return std::string("polygon ") + (match[2].str() == "x" ? 'X' : 'Y') +
-           std::to_string(std::stoul(match[1].str()) + 1);
-  });
+std::string polygonVertices(std::string text) {
+  constexpr std::string_view kPrefix = "spawn_polygon.vertices[";
+  for (auto at = text.find(kPrefix); at != std::string::npos; at = text.find(kPrefix, at + 1)) {
+    std::size_t digits = at + kPrefix.size();
+    std::size_t end = digits;
+    while (end < text.size() && isDigit(text[end])) ++end;
+    // "]." and the axis must follow the index.
+    if (end == digits || end + 2 >= text.size() || text[end] != ']' || text[end + 1] != '.' ||
+        (text[end + 2] != 'x' && text[end + 2] != 'y')) {
+      continue;
+    }
+    const std::string words = std::string("polygon ") + (text[end + 2] == 'x' ? 'X' : 'Y') +
+                              std::to_string(std::stoul(text.substr(digits, end - digits)) + 1);
+    text.replace(at, end + 3 - at, words);
+  }
+  return text;
 }
 
 // std::to_string's six fixed decimals ("-25.000000", "0.100000").
 std::string tidyNumbers(const std::string& text) {
-  static const std::regex fixed(R"(-?\d+\.\d{6}(?!\d))");
-  return replaceMatches(text, fixed, [](const std::smatch& match) {
-    return client::formatNumber(std::stod(match[0].str()));
-  });
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t start = i;
+    std::size_t end = i + (text[i] == '-' ? 1 : 0);
+    const std::size_t integer = end;
+    while (end < text.size() && isDigit(text[end])) ++end;
+    const bool fixedSix = end > integer && end + 7 <= text.size() && text[end] == '.' &&
+                          std::all_of(text.begin() + std::ptrdiff_t(end) + 1,
+                                      text.begin() + std::ptrdiff_t(end) + 7, isDigit) &&
+                          (end + 7 == text.size() || !isDigit(text[end + 7]));
+    if (fixedSix) {
+      out += client::formatNumber(std::stod(text.substr(start, end + 7 - start)));
+      i = end + 7;
+    } else {
+      // Copy through the whole run of digits, so no number is cut in two.
+      const std::size_t stop = std::max(end, start + 1);
+      out.append(text, start, stop - start);
+      i = stop;
+    }
+  }
+  return out;
 }
 
 }  // namespace

@@ -15,6 +15,14 @@
 namespace impulse::viewer_test {
 namespace {
 
+// Sanitizer builds check memory, not speed: they run the viewer's own code
+// several times slower, so the frame budget is wider there.
+#ifdef IMPULSE_TESTS_SANITIZED
+constexpr double kFrameBudgetMs = 150;
+#else
+constexpr double kFrameBudgetMs = 33.3;
+#endif
+
 // CPU time this thread has used, milliseconds.
 double threadCpuMs() {
   timespec t{};
@@ -85,7 +93,7 @@ TEST(FrameTime, TwoThousandBodies_StaysWellUnderAFrame) {
   // Software rasterising (anti-aliased) on a shared CI machine: at least 30
   // frames per second of the frame thread's own CPU time, so other builds
   // on the same two cores do not count (a GPU renderer does far better).
-  EXPECT_LT(cpuMs, 33.3);
+  EXPECT_LT(cpuMs, kFrameBudgetMs);
 }
 
 }  // namespace
