@@ -14,6 +14,8 @@
 #include <thread>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "impulse/client/client.h"
 #include "report.h"
 #include "script.h"
@@ -26,17 +28,18 @@ using Milliseconds = std::chrono::milliseconds;
 // Commands in flight at once: well under the server's per-client queue caps.
 constexpr std::size_t kMaxPipelined = 256;
 
-constexpr const char* kUsage =
-    "usage: impulse-cli [--connect HOST:PORT] [--timeout MS] [SCRIPT]\n"
-    "Runs SCRIPT (or stdin) against impulse-server (default 127.0.0.1:7777), one\n"
-    "command per line; prints one JSON object per line. Commands:\n"
-    "  preset N [MATERIAL] | pause | resume | step N\n"
+constexpr const char* kScriptHelp =
+    "Script commands, one per line ('#' starts a comment):\n"
+    "  preset N [MATERIAL]       load preset 0-10\n"
+    "  pause | resume            stop or restart the tick clock\n"
+    "  step N                    while paused: advance exactly N ticks\n"
     "  circle X Y R [MATERIAL] [static] [nograv]\n"
     "  polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]\n"
     "  gravity GX GY | nudge DX DY | reset-gravity\n"
     "  clear | remove ID | impulse ID JX JY [PX PY]\n"
     "  query ID | bodies | wait-snapshot | ping\n"
-    "MATERIAL: solid, ice, wood, metal, rubber. '#' starts a comment.\n";
+    "MATERIAL: solid, ice, wood, metal, rubber.\n"
+    "Exit status: 0 every line succeeded, 1 some line failed, 2 arguments or connection failed.";
 
 // Script lines. A file is read directly; stdin is read on its own thread so
 // the connection keeps being serviced (snapshots drained) while a person types.
@@ -166,7 +169,7 @@ int run(const Arguments& arguments) {
       const auto parsed = cli::parseScriptLine(line);
       if (!parsed.error.empty()) {
         drainAll();
-        print(cli::errorReport(lineCount, "parse", parsed.error));
+        print(cli::errorReport(lineCount, parsed.name, parsed.error));
         ++failures;
         continue;
       }
@@ -228,42 +231,33 @@ int run(const Arguments& arguments) {
 int main(int argc, char** argv) {
   Arguments arguments;
   arguments.connect.name = "impulse-cli";
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    auto value = [&]() -> std::optional<std::string_view> {
-      if (i + 1 >= argc) return std::nullopt;
-      return std::string_view(argv[++i]);
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (arg == "--connect") {
-      const auto text = value();
-      const auto target = text ? client::parseHostPort(*text) : std::nullopt;
-      if (!target) {
-        std::fprintf(stderr, "impulse-cli: --connect expects HOST:PORT\n");
-        return 2;
-      }
-      arguments.connect.host = target->first;
-      arguments.connect.port = target->second;
-    } else if (arg == "--timeout") {
-      const auto text = value();
-      const long ms = text ? std::atol(std::string(*text).c_str()) : 0;
-      if (ms <= 0) {
-        std::fprintf(stderr, "impulse-cli: --timeout expects milliseconds > 0\n");
-        return 2;
-      }
-      arguments.timeout = Milliseconds(ms);
-    } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
-      std::fprintf(stderr, "impulse-cli: unknown option %s\n%s", argv[i], kUsage);
-      return 2;
-    } else if (arguments.script.empty()) {
-      arguments.script = arg == "-" ? "" : std::string(arg);
-    } else {
-      std::fprintf(stderr, "impulse-cli: only one script\n");
-      return 2;
-    }
+  std::string connect = "127.0.0.1:7777";
+  long timeoutMs = 10000;
+  CLI::App app("Runs SCRIPT (or stdin) against impulse-server, one command per line, and "
+               "prints one JSON object per line.",
+               "impulse-cli");
+  app.add_option("--connect", connect, "server, HOST:PORT (default 127.0.0.1:7777)")
+      ->option_text("HOST:PORT");
+  app.add_option("--timeout", timeoutMs, "wait at most this long for a reply, 1-3600000 (default 10000)")
+      ->check(CLI::Range(1L, 3600000L))
+      ->option_text("MS");
+  app.add_option("script", arguments.script, "script file; '-' or none: stdin")
+      ->option_text("SCRIPT");
+  app.footer(kScriptHelp);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? 0 : 2;
   }
+  const auto target = client::parseHostPort(connect);
+  if (!target) {
+    std::fprintf(stderr, "impulse-cli: --connect wants HOST:PORT, not '%s'\n", connect.c_str());
+    return 2;
+  }
+  arguments.connect.host = target->first;
+  arguments.connect.port = target->second;
+  if (arguments.script == "-") arguments.script.clear();
+  arguments.timeout = Milliseconds(timeoutMs);
   arguments.connect.timeout = arguments.timeout;
   return run(arguments);
 }

@@ -1,9 +1,11 @@
 #include "report.h"
 
-#include <chrono>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 
 #include "impulse/wire/convert.h"
+#include "server_wording.h"
 
 namespace impulse::cli {
 
@@ -14,23 +16,27 @@ std::string_view materialText(int material) {
   return m ? wire::materialName(*m) : std::string_view("UNKNOWN");
 }
 
+Json pair(const v1::Vec2& v) { return Json::array({number(v.x()), number(v.y())}); }
+
 Json bodyJson(const v1::BodyDescriptor& descriptor, const v1::BodyState& state) {
-  Json body = Json::object();
-  body.member("id", descriptor.id());
+  Json body = {{"id", descriptor.id()}};
   if (descriptor.shape().has_circle()) {
-    body.member("shape", "circle").member("radius", descriptor.shape().circle().radius());
+    body["shape"] = "circle";
+    body["radius"] = number(descriptor.shape().circle().radius());
   } else {
     Json vertices = Json::array();
-    for (const auto& v : descriptor.shape().polygon().vertices()) vertices.pair(v.x(), v.y());
-    body.member("shape", "polygon").key("vertices").raw(vertices.close());
+    for (const auto& v : descriptor.shape().polygon().vertices()) vertices.push_back(pair(v));
+    body["shape"] = "polygon";
+    body["vertices"] = std::move(vertices);
   }
-  body.member("material", materialText(descriptor.material()))
-      .member("static", descriptor.is_static())
-      .member("ignore_gravity", descriptor.ignore_gravity());
-  body.key("position").pair(state.position().x(), state.position().y());
-  body.member("angle", state.angle());
-  body.key("velocity").pair(state.velocity().x(), state.velocity().y());
-  body.member("angular_velocity", state.angular_velocity()).member("awake", state.awake());
+  body["material"] = materialText(descriptor.material());
+  body["static"] = descriptor.is_static();
+  body["ignore_gravity"] = descriptor.ignore_gravity();
+  body["position"] = pair(state.position());
+  body["angle"] = number(state.angle());
+  body["velocity"] = pair(state.velocity());
+  body["angular_velocity"] = number(state.angular_velocity());
+  body["awake"] = state.awake();
   return body;
 }
 
@@ -42,32 +48,46 @@ std::string hex(std::uint64_t value) {
 
 }  // namespace
 
+Json number(double value) {
+  if (!std::isfinite(value)) return nullptr;
+  // Integral values below 2^53 are exact as integers.
+  if (std::trunc(value) == value && std::abs(value) < 9007199254740992.0) {
+    return std::int64_t(value);
+  }
+  const float single = float(value);
+  if (double(single) != value) return value;
+  // The float's shortest decimal, read back as the double nearest to it: a
+  // reader gets the same float, a person reads what the engine meant.
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, single).ptr;
+  double readable = value;
+  std::from_chars(text, end, readable);
+  return readable;
+}
+
 Json lineReport(std::size_t line, std::string_view command) {
-  Json report = Json::object();
-  report.member("line", std::uint64_t(line)).member("command", command);
-  return report;
+  return {{"line", line}, {"command", command}};
 }
 
 std::string errorReport(std::size_t line, std::string_view command, std::string_view problem) {
-  return lineReport(line, command)
-      .member("ok", false)
-      .member("error", "line " + std::to_string(line) + ": " + std::string(problem))
-      .close()
-      .str();
+  Json report = lineReport(line, command);
+  report["ok"] = false;
+  report["error"] = "line " + std::to_string(line) + ": " + std::string(problem);
+  return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 std::string welcomeReport(const v1::Welcome& welcome) {
   Json report = lineReport(0, "connect");
-  report.member("ok", true)
-      .member("client_id", welcome.client_id())
-      .member("protocol_version", welcome.protocol_version())
-      .member("tick", welcome.tick())
-      .member("paused", welcome.paused())
-      .member("tick_hz", welcome.tick_hz())
-      .member("snapshot_hz", welcome.snapshot_hz());
-  report.key("world_min").pair(welcome.world_min().x(), welcome.world_min().y());
-  report.key("world_max").pair(welcome.world_max().x(), welcome.world_max().y());
-  return report.close().str();
+  report["ok"] = true;
+  report["client_id"] = welcome.client_id();
+  report["protocol_version"] = welcome.protocol_version();
+  report["tick"] = welcome.tick();
+  report["paused"] = welcome.paused();
+  report["tick_hz"] = number(welcome.tick_hz());
+  report["snapshot_hz"] = number(welcome.snapshot_hz());
+  report["world_min"] = pair(welcome.world_min());
+  report["world_max"] = pair(welcome.world_max());
+  return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 std::string replyReport(std::size_t line, std::string_view command,
@@ -75,48 +95,49 @@ std::string replyReport(std::size_t line, std::string_view command,
   Json report = lineReport(line, command);
   if (reply.has_command_result()) {
     const auto& result = reply.command_result();
-    report.member("ok", result.ok());
+    report["ok"] = result.ok();
     if (!result.ok()) {
-      report.member("error", "line " + std::to_string(line) + ": " + result.error());
+      report["error"] = "line " + std::to_string(line) + ": " + scriptWording(result.error());
     }
-    if (result.body_id() != 0) report.member("body_id", result.body_id());
-    report.member("tick", result.tick());
-    if (result.state_hash() != 0) report.member("state_hash", hex(result.state_hash()));
+    if (result.body_id() != 0) report["body_id"] = result.body_id();
+    report["tick"] = result.tick();
+    if (result.state_hash() != 0) report["state_hash"] = hex(result.state_hash());
   } else if (reply.has_body_info()) {
     const auto& info = reply.body_info();
     Json body = bodyJson(info.descriptor(), info.state());
-    body.member("mass", info.mass())
-        .member("inertia", info.inertia())
-        .member("area", info.area())
-        .member("restitution", info.restitution())
-        .member("static_friction", info.static_friction())
-        .member("dynamic_friction", info.dynamic_friction());
-    report.member("ok", true).key("body").raw(body.close());
+    body["mass"] = number(info.mass());
+    body["inertia"] = number(info.inertia());
+    body["area"] = number(info.area());
+    body["restitution"] = number(info.restitution());
+    body["static_friction"] = number(info.static_friction());
+    body["dynamic_friction"] = number(info.dynamic_friction());
+    report["ok"] = true;
+    report["body"] = std::move(body);
   } else if (reply.has_pong()) {
     const auto& pong = reply.pong();
     const auto& s = pong.stats();
-    Json stats = Json::object();
-    stats.member("uptime_s", double(s.uptime_us()) / 1e6)
-        .member("clock_ticks", s.clock_ticks())
-        .member("ticks_skipped", s.ticks_skipped())
-        .member("last_tick_ms", s.last_tick_ms())
-        .member("mean_tick_ms", s.mean_tick_ms())
-        .member("max_tick_ms", s.max_tick_ms())
-        .member("last_step_ms", s.last_step_ms())
-        .member("mean_step_ms", s.mean_step_ms())
-        .member("bodies", s.bodies())
-        .member("awake_bodies", s.awake_bodies())
-        .member("clients", s.clients())
-        .member("last_snapshot_bytes", s.last_snapshot_bytes())
-        .member("snapshots_skipped", s.snapshots_skipped());
-    report.member("ok", true)
-        .member("server_tick", pong.server_tick())
-        .key("stats")
-        .raw(stats.close());
+    // Timings to the microsecond: more digits are noise.
+    auto ms = [](double value) { return number(std::round(value * 1000) / 1000); };
+    report["ok"] = true;
+    report["server_tick"] = pong.server_tick();
+    report["stats"] = {{"uptime_s", number(std::round(double(s.uptime_us()) / 1e3) / 1e3)},
+                       {"clock_ticks", s.clock_ticks()},
+                       {"ticks_skipped", s.ticks_skipped()},
+                       {"last_tick_ms", ms(s.last_tick_ms())},
+                       {"mean_tick_ms", ms(s.mean_tick_ms())},
+                       {"max_tick_ms", ms(s.max_tick_ms())},
+                       {"last_step_ms", ms(s.last_step_ms())},
+                       {"mean_step_ms", ms(s.mean_step_ms())},
+                       {"bodies", s.bodies()},
+                       {"awake_bodies", s.awake_bodies()},
+                       {"clients", s.clients()},
+                       {"last_snapshot_bytes", s.last_snapshot_bytes()},
+                       {"snapshots_skipped", s.snapshots_skipped()}};
   } else {
-    report.member("ok", false).member("error", "unexpected reply");
+    report["ok"] = false;
+    report["error"] = "unexpected reply";
   }
-  return report.close().str();
+  return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror) {
@@ -132,31 +153,31 @@ std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror) {
     wire::toWire(description, &descriptor);
     v1::BodyState state;
     wire::toWire(body.state, &state);
-    bodies.raw(bodyJson(descriptor, state).close());
+    bodies.push_back(bodyJson(descriptor, state));
   }
   Json report = lineReport(line, "bodies");
-  report.member("ok", true)
-      .member("tick", mirror.tick())
-      .member("count", std::uint64_t(mirror.bodies().size()))
-      .key("bodies")
-      .raw(bodies.close());
-  return report.close().str();
+  report["ok"] = true;
+  report["tick"] = mirror.tick();
+  report["count"] = mirror.bodies().size();
+  report["bodies"] = std::move(bodies);
+  return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot, std::size_t frameBytes) {
   Json report = lineReport(line, "wait-snapshot");
-  report.member("ok", true)
-      .member("tick", snapshot.tick())
-      .member("full", snapshot.full())
-      .member("added", snapshot.added_size())
-      .member("removed", snapshot.removed_size())
-      .member("states", snapshot.bodies_size())
-      .member("bytes", std::uint64_t(frameBytes));
-  report.key("gravity").pair(snapshot.gravity().x(), snapshot.gravity().y());
+  report["ok"] = true;
+  report["tick"] = snapshot.tick();
+  report["full"] = snapshot.full();
+  report["added"] = snapshot.added_size();
+  report["removed"] = snapshot.removed_size();
+  report["states"] = snapshot.bodies_size();
+  report["bytes"] = frameBytes;
+  report["gravity"] = pair(snapshot.gravity());
   if (snapshot.has_preset()) {
-    report.member("preset", snapshot.preset().id()).member("title", snapshot.preset().title());
+    report["preset"] = snapshot.preset().id();
+    report["title"] = snapshot.preset().title();
   }
-  return report.close().str();
+  return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 }  // namespace impulse::cli

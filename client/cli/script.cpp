@@ -227,7 +227,10 @@ class LineParser {
 ParsedLine parseScriptLine(std::string_view line) {
   auto words = splitWords(line);
   if (words.empty()) return {};
-  return LineParser(std::move(words)).parse();
+  const std::string name(words.front());
+  ParsedLine parsed = LineParser(std::move(words)).parse();
+  parsed.name = name;
+  return parsed;
 }
 
 }  // namespace impulse::cli

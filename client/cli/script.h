@@ -33,8 +33,9 @@ struct ScriptCommand {
 };
 
 struct ParsedLine {
-  std::optional<ScriptCommand> command;  // nothing for blank and comment lines
-  std::string error;                     // set when the line is invalid
+  std::optional<ScriptCommand> command{};  // nothing for blank and comment lines
+  std::string error{};                     // set when the line is invalid
+  std::string name{};                      // the line's first word, also when invalid
 };
 
 /// Parses one line. Errors say what was expected and what was wrong.

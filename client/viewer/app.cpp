@@ -1,12 +1,15 @@
 #include "app.h"
 
-#include <SDL_ttf.h>
+#include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
+#include "body_metrics.h"
 #include "impulse/client/commands.h"
 #include "key_map.h"
+#include "side_panel.h"
 
 namespace impulse::viewer {
 
@@ -14,6 +17,10 @@ namespace {
 
 // The inspector refreshes the selected body's details this often (seconds).
 constexpr double kInspectInterval = 0.2;
+// One wheel notch zooms by this factor.
+constexpr float kWheelZoom = 1.15f;
+// A right press that moves less than this (pixels) is a click, not a pan.
+constexpr int kClickSlop = 4;
 
 std::runtime_error sdlError(const std::string& what) {
   return std::runtime_error(what + ": " + SDL_GetError());
@@ -23,16 +30,12 @@ std::runtime_error sdlError(const std::string& what) {
 
 App::App(ViewerOptions options) : options_(std::move(options)) {
   if (SDL_Init(SDL_INIT_VIDEO) != 0) throw sdlError("SDL_Init");
-  if (TTF_Init() != 0) {
-    SDL_Quit();
-    throw std::runtime_error(std::string("TTF_Init: ") + TTF_GetError());
-  }
   const std::string title = "Impulse - " + options_.connect.host + ":" +
                             std::to_string(options_.connect.port);
   window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                              options_.width, options_.height, SDL_WINDOW_RESIZABLE);
   if (window_ == nullptr) throw sdlError("SDL_CreateWindow");
-  SDL_SetWindowMinimumSize(window_, 320, 240);
+  SDL_SetWindowMinimumSize(window_, 480, 320);
   const Uint32 flags = options_.vsync ? SDL_RENDERER_PRESENTVSYNC : 0;
   renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_ACCELERATED | flags);
   if (renderer_ == nullptr) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
@@ -40,18 +43,15 @@ App::App(ViewerOptions options) : options_(std::move(options)) {
   SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
 
   start_ = SDL_GetPerformanceCounter();
-  scene_ = std::make_unique<WorldRenderer>(renderer_);
-  hud_ = std::make_unique<Hud>(renderer_, options_.fontPath);
+  gui_ = std::make_unique<Gui>(window_, renderer_, options_.fontPath);
   connection_ = std::make_unique<Connection>(options_.connect, world_, [this] { return now(); });
 }
 
 App::~App() {
   connection_.reset();
-  hud_.reset();
-  scene_.reset();
+  gui_.reset();
   if (renderer_ != nullptr) SDL_DestroyRenderer(renderer_);
   if (window_ != nullptr) SDL_DestroyWindow(window_);
-  TTF_Quit();
   SDL_Quit();
 }
 
@@ -59,11 +59,20 @@ double App::now() const {
   return double(SDL_GetPerformanceCounter() - start_) / double(SDL_GetPerformanceFrequency());
 }
 
-ViewTransform App::view() const {
+WindowLayout App::layout() const {
   int w = 0;
   int h = 0;
   SDL_GetRendererOutputSize(renderer_, &w, &h);
-  return ViewTransform(w, h, kSceneSize);
+  return layoutWindow(w, h);
+}
+
+ViewTransform App::view() const {
+  return ViewTransform(layout().scene, kSceneSize, controls_.camera());
+}
+
+const client::MirrorBody* App::mirrored(std::uint32_t id) const {
+  const client::Client* client = connection_->client();
+  return client != nullptr ? client->mirror().find(BodyId{id}) : nullptr;
 }
 
 ControlContext App::context() const {
@@ -73,53 +82,117 @@ ControlContext App::context() const {
                            ? &*client->mirror().preset()
                            : nullptr;
   context.drawingAllowed = preset != nullptr && preset->drawingAllowed;
+  if (client != nullptr) {
+    context.serverPaused = client->mirror().paused();
+    context.gravity = client->mirror().gravity();
+  }
   if (inspected_ && controls_.selectedBody() &&
       inspected_->descriptor().id() == *controls_.selectedBody()) {
     context.selectedMass = inspected_->descriptor().is_static() ? 0.0 : inspected_->mass();
   }
+  if (const auto hit = bodyAt(controls_.pointer())) context.bodyUnderPointer = hit->id;
+  context.userBodies = userBodies();
+  // The newest state, not the interpolated one: steering reacts sooner.
+  if (const auto grabbed = controls_.grabbedBody()) {
+    if (const client::MirrorBody* body = mirrored(*grabbed)) {
+      BodyLook look{body->shape, body->material, body->isStatic, body->ignoreGravity};
+      context.grabbed = GrabbedMotion{body->state.position, body->state.linearVelocity,
+                                      double(massOf(look).mass)};
+    }
+  }
   return context;
 }
 
-std::optional<std::uint32_t> App::bodyAt(const Vec2& point) const {
+std::vector<std::uint32_t> App::userBodies() const {
+  std::vector<std::uint32_t> ids;
+  for (const DrawnBody& body : world_.bodies()) {
+    if (!body.look->isStatic || spawned_.contains(body.state.id)) ids.push_back(body.state.id);
+  }
+  return ids;
+}
+
+std::optional<BodyHit> App::bodyAt(const Vec2& point) const {
   // Moving bodies before scenery: a ball resting on the floor is what a click
   // on it means.
-  std::optional<std::uint32_t> staticHit;
+  std::optional<BodyHit> staticHit;
   for (auto it = world_.bodies().rbegin(); it != world_.bodies().rend(); ++it) {
     const Transform xf{it->state.position, Rot::fromAngle(it->state.angle)};
     if (!containsPoint(it->look->shape, xf, point)) continue;
-    if (!it->look->isStatic) return it->state.id;
-    if (!staticHit) staticHit = it->state.id;
+    const BodyHit hit{it->state.id, it->look->isStatic, it->state.position};
+    if (!hit.isStatic) return hit;
+    if (!staticHit) staticHit = hit;
   }
   return staticHit;
 }
 
+void App::act(ControlKey key) { controls_.keyPressed(key, context(), now()); }
+
+void App::handleKey(const SDL_KeyboardEvent& key) {
+  // Held keys repeat at the controls' own steady rate, not the OS's.
+  if (key.repeat != 0) return;
+  const auto control = controlForKey(key.keysym.sym, key.keysym.mod);
+  if (!control) return;
+  if (key.type == SDL_KEYDOWN) {
+    act(*control);
+  } else {
+    controls_.keyReleased(*control);
+  }
+}
+
+void App::handleButton(const SDL_MouseButtonEvent& button) {
+  const bool down = button.type == SDL_MOUSEBUTTONDOWN;
+  const Vec2 at = view().toWorld(float(button.x), float(button.y));
+  if (button.button == SDL_BUTTON_LEFT) {
+    // Presses on the panel belong to its widgets; a release always ends a drag.
+    if (!down) {
+      controls_.pointerReleased(at);
+    } else if (layout().scene.contains(float(button.x), float(button.y))) {
+      controls_.pointerPressed(at, bodyAt(at), now());
+    }
+    return;
+  }
+  if (button.button != SDL_BUTTON_RIGHT && button.button != SDL_BUTTON_MIDDLE) return;
+  if (down && layout().scene.contains(float(button.x), float(button.y))) {
+    altPressedAt_ = SDL_Point{button.x, button.y};
+    altDragged_ = false;
+  } else if (!down && altPressedAt_) {
+    // A right click that did not pan removes the body under it.
+    if (button.button == SDL_BUTTON_RIGHT && !altDragged_) {
+      const auto hit = bodyAt(at);
+      controls_.removeClicked(hit ? std::optional(hit->id) : std::nullopt, now());
+    }
+    altPressedAt_.reset();
+  }
+}
+
+void App::handleMotion(const SDL_MouseMotionEvent& motion) {
+  const float dx = float(motion.x) - pointerX_;
+  const float dy = float(motion.y) - pointerY_;
+  pointerX_ = float(motion.x);
+  pointerY_ = float(motion.y);
+  if (altPressedAt_) {
+    if (std::abs(motion.x - altPressedAt_->x) + std::abs(motion.y - altPressedAt_->y) > kClickSlop) {
+      altDragged_ = true;
+    }
+    if (altDragged_) controls_.pan(dx, dy);
+  }
+  controls_.pointerMoved(view().toWorld(pointerX_, pointerY_));
+}
+
 void App::handleEvent(const SDL_Event& event) {
-  const double t = now();
+  gui_->processEvent(event);
   switch (event.type) {
     case SDL_QUIT: quit_ = true; break;
     case SDL_KEYDOWN:
-      // Held keys repeat at the controls' own steady rate, not the OS's.
-      if (event.key.repeat != 0) break;
-      if (const auto key = controlForKey(event.key.keysym.sym)) {
-        controls_.keyPressed(*key, context(), t);
-      }
-      break;
-    case SDL_KEYUP:
-      if (const auto key = controlForKey(event.key.keysym.sym)) controls_.keyReleased(*key);
-      break;
+    case SDL_KEYUP: handleKey(event.key); break;
     case SDL_MOUSEBUTTONDOWN:
-      if (event.button.button == SDL_BUTTON_LEFT) {
-        const Vec2 at = view().toWorld(float(event.button.x), float(event.button.y));
-        controls_.pointerPressed(at, bodyAt(at), t);
+    case SDL_MOUSEBUTTONUP: handleButton(event.button); break;
+    case SDL_MOUSEMOTION: handleMotion(event.motion); break;
+    case SDL_MOUSEWHEEL:
+      if (event.wheel.y != 0 && layout().scene.contains(pointerX_, pointerY_)) {
+        controls_.zoomAt(std::pow(kWheelZoom, float(event.wheel.y)), pointerX_, pointerY_,
+                         layout().scene);
       }
-      break;
-    case SDL_MOUSEBUTTONUP:
-      if (event.button.button == SDL_BUTTON_LEFT) {
-        controls_.pointerReleased(view().toWorld(float(event.button.x), float(event.button.y)));
-      }
-      break;
-    case SDL_MOUSEMOTION:
-      controls_.pointerMoved(view().toWorld(float(event.motion.x), float(event.motion.y)));
       break;
     default: break;
   }
@@ -129,7 +202,7 @@ void App::exchange() {
   const double t = now();
   connection_->update();
   if (connection_->connected() && options_.preset && !presetRequested_) {
-    controls_.keyPressed({Control::LoadPreset, *options_.preset}, context(), t);
+    act({Control::LoadPreset, *options_.preset});
     presetRequested_ = true;
   }
   controls_.update(context(), t);
@@ -143,57 +216,92 @@ void App::exchange() {
     nextInspect_ = t + kInspectInterval;
   }
   if (!controls_.selectedBody()) inspected_.reset();
+  handleReplies();
+  recordFigures();
+}
+
+void App::handleReplies() {
   for (Reply& reply : connection_->takeReplies()) {
     if (reply.message.has_body_info()) {
       if (controls_.selectedBody() == reply.message.body_info().descriptor().id()) {
         inspected_ = reply.message.body_info();
       }
-    } else if (reply.message.has_command_result() && !reply.message.command_result().ok()) {
-      if (reply.what == "inspect") {
-        // The selected body is gone (cleared, preset loaded).
-        controls_.deselect();
-        inspected_.reset();
-      } else {
-        controls_.notify("Server refused " + reply.what + ": " +
-                             reply.message.command_result().error(),
-                         t);
-      }
+      continue;
+    }
+    if (!reply.message.has_command_result()) continue;
+    const v1::CommandResult& result = reply.message.command_result();
+    if (result.ok()) {
+      if (reply.what == "polygon" || reply.what == "circle") spawned_.insert(result.body_id());
+    } else if (reply.what == "inspect") {
+      // The selected body is gone (cleared, preset loaded).
+      controls_.deselect();
+      inspected_.reset();
+    } else {
+      controls_.notify("Server refused " + reply.what + ": " + result.error(), now());
     }
   }
 }
 
-void App::draw() {
-  const ViewTransform v = view();
-  int w = 0;
-  int h = 0;
-  SDL_GetRendererOutputSize(renderer_, &w, &h);
-  scene_->drawBackground(v);
-  scene_->drawBodies(v, world_.bodies(), controls_.selectedBody());
+void App::recordFigures() {
+  // Both plots advance with the server's Pongs, so they share a time axis.
+  auto stats = connection_->takeStats();
+  if (!stats) return;
+  stats_ = std::move(stats);
+  stepMs_.add(float(stats_->last_step_ms()));
+  energy_.add(float(kineticEnergy(world_.bodies())));
+}
 
-  HudInput input;
+void App::drawScene(ImDrawList& list, const ViewTransform& view) {
+  scene_.begin(list, view);
+  scene_.drawBodies(list, view, world_.bodies(), controls_.selectedBody(), controls_.grabbedBody());
+  if (const client::Client* client = connection_->client(); client && client->mirror().preset()) {
+    scene_.drawMarkers(list, view, client->mirror().preset()->markers);
+  }
+  overlays_.draw(list, view, world_.bodies(), controls_.overlays());
+  if (const auto grabbed = controls_.grabbedBody()) {
+    for (const DrawnBody& body : world_.bodies()) {
+      if (body.state.id != *grabbed) continue;
+      scene_.drawGrab(list, view, body.state.position + *controls_.grabOffset(), controls_.pointer());
+    }
+  }
+  scene_.drawPreview(list, view, controls_);
+  scene_.end(list);
+}
+
+void App::draw() {
+  gui_->beginFrame();
+  const ViewTransform v = view();
+  drawScene(*ImGui::GetBackgroundDrawList(), v);
+
+  PanelInput input;
   input.link = connection_->state();
   input.linkText = connection_->describe();
-  input.retryInSeconds = connection_->retryIn();
   input.roundTripMs = connection_->roundTripMs();
   input.snapshotsPerSecond = connection_->snapshotsPerSecond();
   input.playoutDelayMs = world_.clock().delay() * 1000;
   input.frameMs = frameMs_;
+  input.zoom = controls_.camera().zoom;
   input.bodies = world_.bodies().size();
   input.notice = controls_.notice(now());
+  input.stats = stats_ ? &*stats_ : nullptr;
+  input.stepMs = &stepMs_;
+  input.kineticEnergy = &energy_;
   if (const client::Client* client = connection_->client()) {
     const auto& mirror = client->mirror();
-    if (mirror.preset()) {
-      input.preset = &*mirror.preset();
-      scene_->drawMarkers(v, mirror.preset()->markers);
-    }
+    if (mirror.preset()) input.preset = &*mirror.preset();
     input.gravity = mirror.gravity();
     input.serverPaused = mirror.paused();
     input.tick = mirror.tick();
+    input.simTime = mirror.simTime();
   }
   if (inspected_) input.inspected = &*inspected_;
-  scene_->drawPreview(v, controls_);
-  hud_->draw(controls_, input, w, h);
-  hud_->endFrame();
+  drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input,
+                [this](ControlKey key) { act(key); });
+
+  SDL_SetRenderDrawColor(renderer_, palette::kBackground.r, palette::kBackground.g,
+                         palette::kBackground.b, 255);
+  SDL_RenderClear(renderer_);
+  gui_->render();
 }
 
 bool App::saveCapture(const std::string& path) {
@@ -226,7 +334,7 @@ bool App::frame() {
   SDL_RenderPresent(renderer_);
   const double end = now();
   timing_ = {(drawn - begin) * 1000, (beforePresent - drawn) * 1000, (end - beforePresent) * 1000};
-  // The HUD shows the work of a frame, without the wait for vsync.
+  // The panel shows the work of a frame, without the wait for vsync.
   frameMs_ = timing_.update + timing_.draw;
   ++frames_;
   return !quit_ && !controls_.quitRequested();

@@ -1,19 +1,24 @@
 #pragma once
 /// The viewer application: one window, one frame loop. Each frame handles
 /// input, exchanges messages with the server without blocking, samples the
-/// interpolated world at the playout time and draws it with the HUD.
+/// interpolated world at the playout time and draws the scene beside the
+/// side panel.
 
 #include <SDL.h>
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_set>
 
 #include "connection.h"
 #include "controls.h"
-#include "hud.h"
+#include "gui.h"
+#include "history.h"
 #include "interpolated_world.h"
+#include "layout.h"
 #include "options.h"
+#include "overlays.h"
 #include "renderer.h"
 #include "view_transform.h"
 
@@ -22,7 +27,7 @@ namespace impulse::viewer {
 /// Timing of the last frame, milliseconds.
 struct FrameTiming {
   double update = 0;   ///< events, network, interpolation
-  double draw = 0;     ///< scene and HUD into the back buffer
+  double draw = 0;     ///< scene and panel into the back buffer
   double present = 0;  ///< SDL_RenderPresent (waits for vsync when on)
 };
 
@@ -46,20 +51,35 @@ class App {
   const Controls& controls() const { return controls_; }
   const Connection& connection() const { return *connection_; }
   const InterpolatedWorld& world() const { return world_; }
+  /// The scene viewport and the side panel in the current window.
+  WindowLayout layout() const;
   ViewTransform view() const;
   SDL_Window* window() const { return window_; }
   const FrameTiming& timing() const { return timing_; }
   std::uint64_t frames() const { return frames_; }
+  /// Contacts of the last frame drawn with the contact overlay on.
+  const std::vector<ShownContact>& shownContacts() const { return overlays_.contacts(); }
+  const History& stepTimeHistory() const { return stepMs_; }
+  const History& energyHistory() const { return energy_; }
   /// Seconds since the app started (the clock of every component).
   double now() const;
 
  private:
   void handleEvent(const SDL_Event& event);
+  void handleKey(const SDL_KeyboardEvent& key);
+  void handleButton(const SDL_MouseButtonEvent& button);
+  void handleMotion(const SDL_MouseMotionEvent& motion);
+  void act(ControlKey key);
   ControlContext context() const;
   void exchange();
+  void handleReplies();
+  void recordFigures();
   void draw();
+  void drawScene(ImDrawList& list, const ViewTransform& view);
   bool saveCapture(const std::string& path);
-  std::optional<std::uint32_t> bodyAt(const Vec2& point) const;
+  const client::MirrorBody* mirrored(std::uint32_t id) const;
+  std::optional<BodyHit> bodyAt(const Vec2& point) const;
+  std::vector<std::uint32_t> userBodies() const;
 
   ViewerOptions options_;
   SDL_Window* window_ = nullptr;
@@ -68,11 +88,22 @@ class App {
   InterpolatedWorld world_;
   Controls controls_;
   std::unique_ptr<Connection> connection_;
-  std::unique_ptr<WorldRenderer> scene_;
-  std::unique_ptr<Hud> hud_;
+  std::unique_ptr<Gui> gui_;
+  WorldRenderer scene_;
+  OverlayRenderer overlays_;
   std::optional<v1::BodyInfo> inspected_;
   double nextInspect_ = 0;
   bool presetRequested_ = false;
+  /// Bodies this viewer spawned: C removes them even when static.
+  std::unordered_set<std::uint32_t> spawned_;
+  std::optional<v1::ServerStats> stats_;
+  History stepMs_{240};
+  History energy_{240};
+  // The pointer in window pixels, and the right or middle button drag.
+  float pointerX_ = 0;
+  float pointerY_ = 0;
+  std::optional<SDL_Point> altPressedAt_;
+  bool altDragged_ = false;
   std::optional<std::string> capturePath_;
   FrameTiming timing_;
   double frameMs_ = 0;

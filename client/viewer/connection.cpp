@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "impulse/client/commands.h"
+#include "impulse/client/number_format.h"
+
 namespace impulse::viewer {
 
 namespace {
 
-constexpr double kPingInterval = 1.0;
+// Often enough for the live step-time plot.
+constexpr double kPingInterval = 0.25;
 constexpr double kMaxBackoff = 2.0;
 // Connecting gives up after this; a dead host must not delay the retry loop.
 constexpr std::chrono::milliseconds kConnectTimeout{3000};
@@ -34,9 +38,21 @@ void Connection::startConnecting() {
 }
 
 std::string Connection::describe() const {
-  if (state_ == LinkState::Lost) return lostReason_;
-  return options_.host + ":" + std::to_string(options_.port);
+  const std::string target = options_.host + ":" + std::to_string(options_.port);
+  const std::string retry = client::formatNumber(retryIn(), 1) + " s";
+  switch (state_) {
+    case LinkState::Connected: return "connected to " + target;
+    case LinkState::Connecting:
+      return (connections_ == 0 ? "connecting to " : "reconnecting to ") + target + "...";
+    case LinkState::Lost: break;
+  }
+  if (connections_ == 0) {
+    return "cannot connect to " + target + " (" + lostReason_ + "), retrying in " + retry;
+  }
+  return "connection to " + target + " lost (" + lostReason_ + "), reconnecting in " + retry;
 }
+
+std::optional<v1::ServerStats> Connection::takeStats() { return std::exchange(stats_, {}); }
 
 double Connection::retryIn() const { return std::max(0.0, retryAt_ - now_()); }
 
@@ -64,7 +80,10 @@ void Connection::lose(const std::string& reason) {
   pingId_.reset();
   roundTripMs_ = -1;
   snapshotRate_ = 0;
-  lostReason_ = reason;
+  // The client's messages name the address ("cannot connect to H:P: reason");
+  // the line shown names it already, so only the reason after it is kept.
+  const auto colon = reason.rfind(": ");
+  lostReason_ = colon == std::string::npos ? reason : reason.substr(colon + 2);
   state_ = LinkState::Lost;
   retryAt_ = now_() + backoff_;
   backoff_ = std::min(kMaxBackoff, backoff_ * 2);
@@ -105,6 +124,7 @@ void Connection::receive() {
   if (pingId_) {
     if (auto pong = client_->awaitReply(*pingId_, std::chrono::milliseconds(0))) {
       roundTripMs_ = (now_() - pingSentAt_) * 1000;
+      if (pong->has_pong() && pong->pong().has_stats()) stats_ = pong->pong().stats();
       pingId_.reset();
     }
   }

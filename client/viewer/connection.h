@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "hud.h"
 #include "impulse/client/client.h"
 #include "interpolated_world.h"
+#include "link_state.h"
 
 namespace impulse::viewer {
 
@@ -46,9 +46,13 @@ class Connection {
   bool connected() const { return state_ == LinkState::Connected; }
   /// The connected client (its mirror holds the latest world), or null.
   const client::Client* client() const { return client_.get(); }
-  /// Target address, or the reason the link was lost.
+  /// The link in words: "connected to HOST:PORT", "cannot connect to
+  /// HOST:PORT (reason), retrying in 1 s" for a server never reached,
+  /// "connection to HOST:PORT lost (reason), reconnecting in 1 s".
   std::string describe() const;
   double retryIn() const;
+  /// The server's figures from a Pong that arrived since the last call.
+  std::optional<v1::ServerStats> takeStats();
   double roundTripMs() const { return roundTripMs_; }
   double snapshotsPerSecond() const { return snapshotRate_; }
   /// Connections made so far (reconnects included).
@@ -82,6 +86,7 @@ class Connection {
   double rateWindowStart_ = 0;
   int rateCount_ = 0;
   double snapshotRate_ = 0;
+  std::optional<v1::ServerStats> stats_;
 };
 
 }  // namespace impulse::viewer

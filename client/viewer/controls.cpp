@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "impulse/preset.h"
+
 #include "impulse/client/commands.h"
 
 namespace impulse::viewer {
@@ -167,9 +169,11 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
   switch (key.control) {
     case Control::PolygonMode: togglePolygon(context, now); break;
     case Control::CircleMode: toggleCircle(context, now); break;
-    case Control::Clear:
+    case Control::ClearUserBodies: clearUserBodies(context, now); break;
+    case Control::ClearAll:
       send(client::clearWorld(), "clear");
       selected_.reset();
+      grab_.reset();
       break;
     case Control::TogglePanel: panelVisible_ = !panelVisible_; break;
     case Control::ToggleInspector:
@@ -183,14 +187,74 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
       send(client::loadPreset(key.index, material_), "preset " + std::to_string(key.index));
       cancelDrawing();
       selected_.reset();
+      grab_.reset();
       panelVisible_ = false;
+      camera_ = {};
       break;
     case Control::SelectMaterial:
       if (const auto material = materialFromIndex(key.index)) material_ = *material;
       break;
-    case Control::Quit: quit_ = true; break;
+    case Control::TogglePause: togglePause(context); break;
+    case Control::StepOnce: stepOnce(context, now); break;
+    case Control::RemoveBody: removeBody(selected_ ? selected_ : context.bodyUnderPointer, now); break;
+    case Control::FitView: camera_ = {}; break;
+    case Control::ToggleContacts: overlays_.contacts = !overlays_.contacts; break;
+    case Control::ToggleBounds: overlays_.bounds = !overlays_.bounds; break;
+    case Control::ToggleVelocities: overlays_.velocities = !overlays_.velocities; break;
+    case Control::CancelOrQuit: cancelOrQuit(now); break;
     default: break;
   }
+}
+
+void Controls::cancelOrQuit(double now) {
+  // Esc undoes the innermost thing in progress; it quits only when idle.
+  if (mode_ != DrawMode::None) {
+    cancelDrawing();
+    notify("Drawing cancelled (Esc again quits)", now);
+  } else if (grab_) {
+    grab_.reset();
+  } else if (selected_) {
+    selected_.reset();
+  } else {
+    quit_ = true;
+  }
+}
+
+void Controls::clearUserBodies(const ControlContext& context, double now) {
+  if (context.userBodies.empty()) {
+    notify("Nothing to clear: the scenery stays (Shift+C clears everything)", now);
+    return;
+  }
+  for (const std::uint32_t id : context.userBodies) send(client::removeBody(id), "clear");
+  selected_.reset();
+  grab_.reset();
+}
+
+void Controls::togglePause(const ControlContext& context) {
+  send(client::setPaused(!context.serverPaused), context.serverPaused ? "resume" : "pause");
+}
+
+void Controls::stepOnce(const ControlContext& context, double now) {
+  if (!context.serverPaused) {
+    notify("'.' steps one tick while paused: Space pauses", now);
+    return;
+  }
+  send(client::step(1), "step");
+}
+
+void Controls::removeBody(std::optional<std::uint32_t> body, double now) {
+  if (!body) {
+    notify("No body there: point at a body to remove it", now);
+    return;
+  }
+  send(client::removeBody(*body), "remove");
+  if (selected_ == body) selected_.reset();
+  if (grabbedBody() == body) grab_.reset();
+}
+
+void Controls::removeClicked(std::optional<std::uint32_t> body, double now) {
+  if (mode_ != DrawMode::None) return;
+  removeBody(body, now);
 }
 
 void Controls::keyReleased(ControlKey key) {
@@ -202,6 +266,11 @@ void Controls::update(const ControlContext& context, double now) {
     cancelDrawing();
     notify("Drawing ended: this scene does not allow it", now);
   }
+  repeatHeldKeys(context, now);
+  steerGrabbed(context, now);
+}
+
+void Controls::repeatHeldKeys(const ControlContext& context, double now) {
   for (Held& held : held_) {
     // A steady rate whatever the frame rate; after a long frame, catch up a
     // little but never flood the server.
@@ -215,8 +284,35 @@ void Controls::update(const ControlContext& context, double now) {
   }
 }
 
-void Controls::pointerPressed(const Vec2& at, std::optional<std::uint32_t> bodyUnderPointer,
-                              double now) {
+void Controls::steerGrabbed(const ControlContext& context, double now) {
+  if (!grab_ || !grab_->dragging || !context.grabbed || now < grab_->nextImpulse) return;
+  const double interval = 1 / settings_.grabHz;
+  const Vec2 impulse = grabImpulse(*context.grabbed, grab_->offset, pointer_, context.gravity,
+                                   interval, settings_.grab);
+  send(client::applyImpulse(grab_->body, toPoint(impulse)), "drag");
+  grab_->nextImpulse = now + interval;
+}
+
+std::optional<std::uint32_t> Controls::grabbedBody() const {
+  if (!grab_) return std::nullopt;
+  return grab_->body;
+}
+
+std::optional<Vec2> Controls::grabOffset() const {
+  if (!grab_) return std::nullopt;
+  return grab_->offset;
+}
+
+void Controls::zoomAt(float factor, float px, float py, const PixelRect& viewport) {
+  camera_ = viewer::zoomAt(camera_, viewport, kSceneSize, factor, px, py);
+}
+
+void Controls::pan(float dx, float dy) {
+  camera_.panX += dx;
+  camera_.panY += dy;
+}
+
+void Controls::pointerPressed(const Vec2& at, std::optional<BodyHit> hit, double now) {
   pointer_ = at;
   switch (mode_) {
     case DrawMode::Polygon:
@@ -229,9 +325,10 @@ void Controls::pointerPressed(const Vec2& at, std::optional<std::uint32_t> bodyU
       return;
     case DrawMode::None:
       if (inspectorVisible_) {
-        selected_ = bodyUnderPointer;
+        selected_ = hit ? std::optional(hit->id) : std::nullopt;
         if (!selected_) notify("No body there: click inside a body to inspect it", now);
       }
+      if (hit && !hit->isStatic) grab_ = Grab{hit->id, at - hit->position, at};
       return;
   }
 }
@@ -241,11 +338,16 @@ void Controls::pointerMoved(const Vec2& at) {
   if (mode_ == DrawMode::Circle && dragging_ && circleCenter_) {
     circleRadius_ = (at - *circleCenter_).norm();
   }
+  if (grab_ && (at - grab_->pressedAt).norm() > Real(settings_.dragThreshold)) {
+    grab_->dragging = true;
+  }
 }
 
 void Controls::pointerReleased(const Vec2& at) {
   pointerMoved(at);
   dragging_ = false;
+  // Letting go is the throw: the body keeps the velocity it was given.
+  grab_.reset();
 }
 
 }  // namespace impulse::viewer

@@ -1,18 +1,21 @@
 #pragma once
-/// The viewer's controls (SPEC.md's table) as a state machine without a
-/// window: abstract key and pointer events in, protocol commands and view
-/// state out. key_map.h turns SDL keys into Control values.
+/// The viewer's controls (SPEC.md's table plus time, hands, view and debug
+/// keys) as a state machine without a window: abstract key and pointer
+/// events in, protocol commands and view state out. key_map.h turns SDL keys
+/// into Control values.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "grab.h"
 #include "impulse.pb.h"
 #include "impulse/client/commands.h"
 #include "impulse/material.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
+#include "view_transform.h"
 
 namespace impulse::viewer {
 
@@ -20,7 +23,8 @@ namespace impulse::viewer {
 enum class Control {
   PolygonMode,
   CircleMode,
-  Clear,
+  ClearUserBodies,
+  ClearAll,
   TogglePanel,
   ToggleInspector,
   ToggleStatic,
@@ -36,7 +40,14 @@ enum class Control {
   PushRight,
   LoadPreset,
   SelectMaterial,
-  Quit,
+  TogglePause,
+  StepOnce,
+  RemoveBody,
+  FitView,
+  ToggleContacts,
+  ToggleBounds,
+  ToggleVelocities,
+  CancelOrQuit,
 };
 
 struct ControlKey {
@@ -52,7 +63,23 @@ struct ControlContext {
   /// The current scene allows drawing (sandbox, presets 3 and 4).
   bool drawingAllowed = true;
   /// Mass of the selected body (0 for a static one), once the server told.
-  std::optional<double> selectedMass;
+  std::optional<double> selectedMass{};
+  bool serverPaused = false;
+  Vec2 gravity = Vec2(0, Real(-9.81));
+  /// The body under the cursor (Delete removes it).
+  std::optional<std::uint32_t> bodyUnderPointer{};
+  /// What C removes: every moving body and every body this viewer made;
+  /// the scene's static scenery stays.
+  std::vector<std::uint32_t> userBodies{};
+  /// The newest motion of the grabbed body, while one is grabbed.
+  std::optional<GrabbedMotion> grabbed{};
+};
+
+/// A body under the cursor when the left button went down.
+struct BodyHit {
+  std::uint32_t id = 0;
+  bool isStatic = false;
+  Vec2 position = Vec2::Zero();  ///< its centre of mass
 };
 
 /// A command for the server and what to call it in an error message.
@@ -70,6 +97,19 @@ struct ControlSettings {
   double pushSpeed = 0.25;
   /// How long a notice stays on screen, seconds.
   double noticeSeconds = 4;
+  /// A grabbed body is steered this often (Hz): about the snapshot rate.
+  double grabHz = 30;
+  /// The cursor must move this far (m) before a press becomes a drag, so a
+  /// click that selects a body does not disturb it.
+  double dragThreshold = 0.1;
+  GrabSettings grab;
+};
+
+/// Debug overlays drawn over the scene.
+struct Overlays {
+  bool contacts = false;
+  bool bounds = false;
+  bool velocities = false;
 };
 
 class Controls {
@@ -78,11 +118,14 @@ class Controls {
 
   void keyPressed(ControlKey key, const ControlContext& context, double now);
   void keyReleased(ControlKey key);
-  /// Left button down at world point `at`; `bodyUnderPointer` for selection.
-  void pointerPressed(const Vec2& at, std::optional<std::uint32_t> bodyUnderPointer, double now);
+  /// Left button down at world point `at` over `hit` (if any).
+  void pointerPressed(const Vec2& at, std::optional<BodyHit> hit, double now);
   void pointerMoved(const Vec2& at);
   void pointerReleased(const Vec2& at);
-  /// Once per frame: repeats held keys, ends drawing where it is not allowed.
+  /// A right click (not a drag) on `body`, or on empty space: removes it.
+  void removeClicked(std::optional<std::uint32_t> body, double now);
+  /// Once per frame: repeats held keys, steers a grabbed body, ends drawing
+  /// where it is not allowed.
   void update(const ControlContext& context, double now);
 
   /// Commands produced since the last call, in order.
@@ -99,6 +142,17 @@ class Controls {
   std::optional<std::uint32_t> selectedBody() const { return selected_; }
   /// The selected body went away.
   void deselect() { selected_.reset(); }
+  Overlays& overlays() { return overlays_; }
+  const Overlays& overlays() const { return overlays_; }
+  const Camera& camera() const { return camera_; }
+  /// Mouse wheel: zoom by `factor` about the window pixel (px, py).
+  void zoomAt(float factor, float px, float py, const PixelRect& viewport);
+  /// Right or middle drag: moves the view by pixels.
+  void pan(float dx, float dy);
+  /// The body being dragged by hand, if any.
+  std::optional<std::uint32_t> grabbedBody() const;
+  /// Where on the grabbed body it is held, from its centre (world axes).
+  std::optional<Vec2> grabOffset() const;
 
   // Next shape.
   DrawMode mode() const { return mode_; }
@@ -120,13 +174,27 @@ class Controls {
     ControlKey key;
     double nextRepeat;
   };
+  struct Grab {
+    std::uint32_t body;
+    Vec2 offset;     ///< grabbed point minus the body's centre at the press
+    Vec2 pressedAt;  ///< where the press was, world
+    bool dragging = false;
+    double nextImpulse = 0;
+  };
 
   void togglePolygon(const ControlContext& context, double now);
   void toggleCircle(const ControlContext& context, double now);
   bool checkDrawingAllowed(const ControlContext& context, double now);
   void cancelDrawing();
+  void cancelOrQuit(double now);
+  void clearUserBodies(const ControlContext& context, double now);
+  void togglePause(const ControlContext& context);
+  void stepOnce(const ControlContext& context, double now);
+  void removeBody(std::optional<std::uint32_t> body, double now);
+  void steerGrabbed(const ControlContext& context, double now);
   /// Acts once for a repeating key; false when the key does not repeat.
   bool repeatAction(ControlKey key, const ControlContext& context, double now);
+  void repeatHeldKeys(const ControlContext& context, double now);
   void send(v1::ClientMessage message, std::string what);
   client::SpawnOptions spawnOptions() const;
 
@@ -140,6 +208,9 @@ class Controls {
   bool panelVisible_ = true;
   bool inspectorVisible_ = false;
   std::optional<std::uint32_t> selected_;
+  std::optional<Grab> grab_;
+  Overlays overlays_;
+  Camera camera_;
 
   DrawMode mode_ = DrawMode::None;
   bool nextStatic_ = false;

@@ -2,7 +2,7 @@
 
 namespace impulse::viewer {
 
-std::optional<ControlKey> controlForKey(SDL_Keycode key) {
+std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
   if (key >= SDLK_0 && key <= SDLK_9) return ControlKey{Control::LoadPreset, int(key - SDLK_0)};
   if (key >= SDLK_KP_1 && key <= SDLK_KP_5) {
     return ControlKey{Control::SelectMaterial, int(key - SDLK_KP_1)};
@@ -10,11 +10,12 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key) {
   if (key >= SDLK_F5 && key <= SDLK_F9) {
     return ControlKey{Control::SelectMaterial, int(key - SDLK_F5)};
   }
+  const bool shift = (modifiers & KMOD_SHIFT) != 0;
   switch (key) {
     case SDLK_F1: return ControlKey{Control::LoadPreset, 10};
     case SDLK_p: return ControlKey{Control::PolygonMode};
     case SDLK_o: return ControlKey{Control::CircleMode};
-    case SDLK_c: return ControlKey{Control::Clear};
+    case SDLK_c: return ControlKey{shift ? Control::ClearAll : Control::ClearUserBodies};
     case SDLK_x: return ControlKey{Control::TogglePanel};
     case SDLK_m: return ControlKey{Control::ToggleInspector};
     case SDLK_q: return ControlKey{Control::ToggleStatic};
@@ -29,7 +30,16 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key) {
     case SDLK_LEFT: return ControlKey{Control::PushLeft};
     case SDLK_DOWN: return ControlKey{Control::PushDown};
     case SDLK_RIGHT: return ControlKey{Control::PushRight};
-    case SDLK_ESCAPE: return ControlKey{Control::Quit};
+    case SDLK_SPACE: return ControlKey{Control::TogglePause};
+    case SDLK_PERIOD: return ControlKey{Control::StepOnce};
+    case SDLK_DELETE:
+    case SDLK_BACKSPACE: return ControlKey{Control::RemoveBody};
+    case SDLK_f:
+    case SDLK_HOME: return ControlKey{Control::FitView};
+    case SDLK_k: return ControlKey{Control::ToggleContacts};
+    case SDLK_b: return ControlKey{Control::ToggleBounds};
+    case SDLK_v: return ControlKey{Control::ToggleVelocities};
+    case SDLK_ESCAPE: return ControlKey{Control::CancelOrQuit};
     default: return std::nullopt;
   }
 }

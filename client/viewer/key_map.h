@@ -10,6 +10,6 @@
 namespace impulse::viewer {
 
 /// The control a key stands for, or nothing for a key without one.
-std::optional<ControlKey> controlForKey(SDL_Keycode key);
+std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers = KMOD_NONE);
 
 }  // namespace impulse::viewer

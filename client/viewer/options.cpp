@@ -1,20 +1,63 @@
 #include "options.h"
 
-#include <charconv>
+#include <CLI/CLI.hpp>
+
 #include <cstdlib>
+#include <vector>
 
 namespace impulse::viewer {
 
 namespace {
 
-bool parseInt(std::string_view text, int low, int high, int& out) {
-  int value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || value < low || value > high) {
-    return false;
+// The command line's text values, converted once CLI11 has them.
+struct TextValues {
+  std::string connect = "127.0.0.1:7777";
+  std::string size = "1280x720";
+  int preset = -1;
+  std::string screenshot;
+};
+
+// Flags, descriptions and ranges in one place, for parsing and for --help.
+void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
+  app.description("The SDL2 viewer of an impulse-server world.");
+  app.add_option("--connect", text.connect, "server to view (default " + text.connect + ")")
+      ->option_text("HOST:PORT");
+  app.add_option("--size", text.size, "window size in pixels (default " + text.size + ")")
+      ->option_text("WxH");
+  app.add_option("--preset", text.preset, "load preset N (0-10) once connected")
+      ->check(CLI::Range(0, 10))
+      ->option_text("N");
+  app.add_option("--screenshot", text.screenshot,
+                 "save the window as BMP after --frames frames (default 60), then quit")
+      ->option_text("FILE.bmp");
+  app.add_option("--frames", options.frames, "quit after N frames")
+      ->check(CLI::Range(1, 100000000))
+      ->option_text("N");
+  app.add_flag("--no-vsync", [&options](std::int64_t) { options.vsync = false; },
+               "do not wait for the display's refresh");
+  app.footer(
+      "Environment: IMPULSE_FONT overrides the panel font; SDL_VIDEODRIVER=offscreen runs "
+      "without a display.");
+}
+
+std::optional<std::string> applyText(const TextValues& text, ViewerOptions& options) {
+  const auto hostPort = client::parseHostPort(text.connect);
+  if (!hostPort) return "--connect wants HOST:PORT, not '" + text.connect + "'";
+  options.connect.host = hostPort->first;
+  options.connect.port = hostPort->second;
+  int width = 0;
+  int height = 0;
+  char x = 0;
+  char rest = 0;
+  if (std::sscanf(text.size.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 || x != 'x' ||
+      width < 100 || width > 10000 || height < 100 || height > 10000) {
+    return "--size wants WxH (100-10000 each), not '" + text.size + "'";
   }
-  out = value;
-  return true;
+  options.width = width;
+  options.height = height;
+  if (text.preset >= 0) options.preset = text.preset;
+  if (!text.screenshot.empty()) options.screenshot = text.screenshot;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -25,17 +68,11 @@ std::string defaultFontPath() {
 }
 
 std::string viewerUsage() {
-  return "usage: impulse-viewer [--connect HOST:PORT] [--size WxH] [--preset N]\n"
-         "                      [--screenshot FILE.bmp] [--frames N] [--no-vsync]\n"
-         "  --connect HOST:PORT  server to view (default 127.0.0.1:7777)\n"
-         "  --size WxH           window size in pixels (default 800x600)\n"
-         "  --preset N           load preset N (0-10) once connected\n"
-         "  --screenshot FILE    save the window as BMP after --frames frames (default 60),\n"
-         "                       then quit\n"
-         "  --frames N           quit after N frames\n"
-         "  --no-vsync           do not wait for the display's refresh\n"
-         "Environment: IMPULSE_FONT overrides the HUD font; SDL_VIDEODRIVER=offscreen\n"
-         "runs without a display.\n";
+  CLI::App app("", "impulse-viewer");
+  ViewerOptions options;
+  TextValues text;
+  describe(app, options, text);
+  return app.help();
 }
 
 ParsedViewerOptions parseViewerOptions(std::span<const std::string_view> args) {
@@ -43,56 +80,23 @@ ParsedViewerOptions parseViewerOptions(std::span<const std::string_view> args) {
   ViewerOptions options;
   options.connect.name = "impulse-viewer";
   options.fontPath = defaultFontPath();
-  auto fail = [&](std::string message) {
-    parsed.error = std::move(message);
+  TextValues text;
+  CLI::App app("", "impulse-viewer");
+  describe(app, options, text);
+  // CLI11 takes the arguments last first.
+  std::vector<std::string> reversed(args.rbegin(), args.rend());
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    parsed.help = true;
     return parsed;
-  };
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string_view flag = args[i];
-    std::string_view value;
-    bool inlineValue = false;
-    if (const auto eq = flag.find('='); flag.starts_with("--") && eq != std::string_view::npos) {
-      value = flag.substr(eq + 1);
-      flag = flag.substr(0, eq);
-      inlineValue = true;
-    }
-    auto next = [&]() -> bool {
-      if (inlineValue) return true;
-      if (i + 1 >= args.size()) return false;
-      value = args[++i];
-      return true;
-    };
-    if (flag == "--help" || flag == "-h") {
-      parsed.help = true;
-      return parsed;
-    }
-    if (flag == "--no-vsync") {
-      options.vsync = false;
-      continue;
-    }
-    if (!next()) return fail(std::string(flag) + " needs a value");
-    if (flag == "--connect") {
-      const auto hostPort = client::parseHostPort(value);
-      if (!hostPort) return fail("--connect wants HOST:PORT, not '" + std::string(value) + "'");
-      options.connect.host = hostPort->first;
-      options.connect.port = hostPort->second;
-    } else if (flag == "--size") {
-      const auto x = value.find('x');
-      if (x == std::string_view::npos || !parseInt(value.substr(0, x), 100, 10000, options.width) ||
-          !parseInt(value.substr(x + 1), 100, 10000, options.height)) {
-        return fail("--size wants WxH (100-10000 each), not '" + std::string(value) + "'");
-      }
-    } else if (flag == "--preset") {
-      int preset = 0;
-      if (!parseInt(value, 0, 10, preset)) return fail("--preset wants 0-10");
-      options.preset = preset;
-    } else if (flag == "--screenshot") {
-      options.screenshot = std::string(value);
-    } else if (flag == "--frames") {
-      if (!parseInt(value, 1, 100000000, options.frames)) return fail("--frames wants a count");
-    } else {
-      return fail("unknown option " + std::string(flag));
-    }
+  } catch (const CLI::ParseError& error) {
+    parsed.error = error.what();
+    return parsed;
+  }
+  if (auto problem = applyText(text, options)) {
+    parsed.error = std::move(*problem);
+    return parsed;
   }
   if (options.screenshot && options.frames == 0) options.frames = 60;
   parsed.options = std::move(options);

@@ -12,9 +12,9 @@ namespace impulse::viewer {
 
 struct ViewerOptions {
   client::ConnectOptions connect;
-  int width = 800;
-  int height = 600;
-  /// HUD font; IMPULSE_FONT in the environment overrides the built-in path.
+  int width = 1280;
+  int height = 720;
+  /// panel font; IMPULSE_FONT in the environment overrides the built-in path.
   std::string fontPath;
   /// Load this preset once connected (scripts and screenshots).
   std::optional<int> preset;

@@ -13,31 +13,30 @@ Colour scaled(Colour c, float factor) {
 
 Colour materialColour(Material material) {
   switch (material) {
-    case Material::Solid: return {255, 255, 255};
-    case Material::Ice: return {173, 216, 230};
-    case Material::Wood: return {139, 90, 43};
-    case Material::Metal: return {150, 150, 150};
+    case Material::Solid: return {245, 245, 245};
+    case Material::Ice: return {140, 205, 250};
+    case Material::Wood: return {166, 108, 56};
+    case Material::Metal: return {128, 132, 140};
     case Material::Rubber: return {255, 140, 0};
   }
   return {255, 0, 255};
 }
 
-Colour bodyFill(Material material, bool isStatic, bool asleep) {
+Colour bodyFill(Material material, bool isStatic) {
   const Colour base = materialColour(material);
-  if (isStatic) {
-    // Static bodies read as scenery: darker, pulled towards slate blue.
-    const Colour dark = scaled(base, 0.35f);
-    return {std::uint8_t(dark.r + 30), std::uint8_t(dark.g + 36), std::uint8_t(dark.b + 52)};
-  }
-  return asleep ? scaled(base, 0.72f) : base;
+  if (!isStatic) return base;
+  // Static bodies read as scenery: dark, pulled towards slate blue, well
+  // apart from METAL's grey.
+  const Colour dark = scaled(base, 0.2f);
+  return {std::uint8_t(dark.r + 22), std::uint8_t(dark.g + 30), std::uint8_t(dark.b + 48)};
 }
 
 Colour bodyOutline(Material material, bool isStatic, bool asleep) {
-  if (isStatic) return scaled(materialColour(material), 0.7f);
-  const Colour fill = bodyFill(material, isStatic, asleep);
-  // Light fills get a dark edge, dark fills a light one.
+  if (asleep && !isStatic) return palette::kSleep;
+  const Colour fill = bodyFill(material, isStatic);
+  if (isStatic) return scaled(materialColour(material), 0.55f);
   const int brightness = fill.r + fill.g + fill.b;
-  return brightness > 450 ? scaled(fill, 0.45f) : Colour{235, 235, 235};
+  return brightness > 400 ? scaled(fill, 0.3f) : Colour{240, 240, 240};
 }
 
 }  // namespace impulse::viewer

@@ -1,6 +1,6 @@
 #pragma once
 /// Colours of the viewer: SPEC.md's material colours and how static and
-/// sleeping bodies are shaded. Tests use the same functions to find bodies in
+/// sleeping bodies are shown. Tests use the same functions to find bodies in
 /// screenshots.
 
 #include <cstdint>
@@ -20,25 +20,34 @@ struct Colour {
 /// SPEC.md: SOLID white, ICE light blue, WOOD brown, METAL grey, RUBBER orange.
 Colour materialColour(Material material);
 
-/// Fill of a body: its material colour; static bodies darker and cooler;
-/// sleeping bodies dimmed a little.
-Colour bodyFill(Material material, bool isStatic, bool asleep);
-/// Outline of a body (brighter than its fill, so shapes stay readable).
+/// Fill of a body: its material colour, whether awake or asleep (sleep shows
+/// in the outline, so a sleeping body never looks like another material);
+/// static bodies darker and cooler, as scenery.
+Colour bodyFill(Material material, bool isStatic);
+/// Outline of a body: the sleep colour when asleep, else a contrast edge
+/// (dark on light fills, light on dark ones).
 Colour bodyOutline(Material material, bool isStatic, bool asleep);
 
 namespace palette {
 inline constexpr Colour kBackground{22, 24, 30};
 inline constexpr Colour kSceneBackground{30, 33, 41};
+inline constexpr Colour kPanelBackground{16, 18, 24};
 inline constexpr Colour kMarker{255, 221, 0};
 inline constexpr Colour kText{230, 232, 238};
 inline constexpr Colour kDimText{160, 166, 180};
-inline constexpr Colour kPanel{12, 14, 20, 200};
 inline constexpr Colour kValid{60, 220, 90};
 inline constexpr Colour kInvalid{235, 60, 60};
 inline constexpr Colour kPreview{120, 200, 255};
 inline constexpr Colour kSelection{255, 221, 0};
 inline constexpr Colour kGravity{255, 120, 200};
 inline constexpr Colour kWarning{255, 180, 60};
+/// Outline of sleeping bodies: a violet no material uses.
+inline constexpr Colour kSleep{176, 112, 255};
+// Debug overlays.
+inline constexpr Colour kContact{255, 64, 64};
+inline constexpr Colour kNormal{255, 160, 64};
+inline constexpr Colour kBounds{80, 220, 120};
+inline constexpr Colour kVelocity{80, 200, 255};
 }  // namespace palette
 
 }  // namespace impulse::viewer

@@ -2,172 +2,225 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 namespace impulse::viewer {
 
 namespace {
 
-SDL_Color sdl(Colour c) { return {c.r, c.g, c.b, c.a}; }
+ImVec2 pixel(const ViewTransform& view, const Vec2& world) {
+  const PixelPoint p = view.toPixels(world);
+  return {p.x, p.y};
+}
 
-SDL_FPoint point(PixelPoint p) { return {p.x, p.y}; }
+Vec2 unit(Real angle) { return Vec2(std::cos(angle), std::sin(angle)); }
 
-// Segments for a circle of `pixels` radius: smooth at any size, cheap when small.
+// Outlines thinner than this vanish against the fill; thicker ones swallow
+// small bodies.
+constexpr float kOutline = 1.6f;
+constexpr float kEmphasis = 2.6f;
+// Bodies smaller than this (pixels across) are outlined by an underlay: the
+// shape in the outline colour with the fill inset over it. SDL's software
+// renderer pays for thin triangles (lines) far more than for fills, and a
+// scene of thousands of bodies is mostly small ones.
+constexpr float kSmallBody = 16;
+
+// Segments for a circle of `pixels` radius: the chords stray less than half a
+// pixel from the circle, so it looks round at any size, and small circles
+// (most of a large scene) take few triangles.
 int circleSegments(float pixels) {
-  return std::clamp(int(pixels * 0.6f), 10, 64);
+  constexpr float kMaxError = 0.45f;
+  if (pixels <= kMaxError) return 8;
+  const float segments = std::numbers::pi_v<float> / std::acos(1 - kMaxError / pixels);
+  return std::clamp(int(std::ceil(segments)), 8, 96);
+}
+
+// `points` (a convex polygon on screen) moved inwards by `inset` pixels.
+void insetConvex(const std::vector<ImVec2>& points, float inset, std::vector<ImVec2>& out) {
+  ImVec2 centre{0, 0};
+  for (const ImVec2& p : points) centre = {centre.x + p.x, centre.y + p.y};
+  centre = {centre.x / float(points.size()), centre.y / float(points.size())};
+  // Inward unit normal of the edge from a to b.
+  auto inward = [&](ImVec2 a, ImVec2 b) {
+    ImVec2 n{a.y - b.y, b.x - a.x};
+    const float length = std::max(std::sqrt(n.x * n.x + n.y * n.y), 1e-6f);
+    n = {n.x / length, n.y / length};
+    const bool outward = (centre.x - a.x) * n.x + (centre.y - a.y) * n.y < 0;
+    return outward ? ImVec2{-n.x, -n.y} : n;
+  };
+  out.clear();
+  const std::size_t count = points.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const ImVec2 before = inward(points[(i + count - 1) % count], points[i]);
+    const ImVec2 after = inward(points[i], points[(i + 1) % count]);
+    // Along the corner's bisector, far enough that both edges move by `inset`.
+    const float scale = inset / std::max(1 + before.x * after.x + before.y * after.y, 0.1f);
+    out.push_back({points[i].x + scale * (before.x + after.x),
+                   points[i].y + scale * (before.y + after.y)});
+  }
+}
+
+// Draws with some of ImGui's anti-aliasing switched off.
+void without(ImDrawList& list, ImDrawListFlags off, const std::function<void()>& draw) {
+  const ImDrawListFlags flags = list.Flags;
+  list.Flags &= ~off;
+  draw();
+  list.Flags = flags;
 }
 
 }  // namespace
 
-void WorldRenderer::setColour(Colour c) { SDL_SetRenderDrawColor(renderer_, c.r, c.g, c.b, c.a); }
+ImU32 packed(Colour c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 
-void WorldRenderer::drawBackground(const ViewTransform& view) {
-  setColour(palette::kBackground);
-  SDL_RenderClear(renderer_);
-  setColour(palette::kSceneBackground);
-  const SDL_FRect scene{view.left(), view.top(), view.width(), view.height()};
-  SDL_RenderFillRectF(renderer_, &scene);
+void WorldRenderer::begin(ImDrawList& list, const ViewTransform& view) {
+  const PixelRect& v = view.viewport();
+  list.PushClipRect({v.x, v.y}, {v.x + v.w, v.y + v.h}, false);
+  // The scene's list is drawn without the font texture (see ImGuiRenderer):
+  // its lines must be anti-aliased by geometry, not by texture.
+  list.Flags &= ~ImDrawListFlags_AntiAliasedLinesUseTex;
+  list.AddRectFilled({v.x, v.y}, {v.x + v.w, v.y + v.h}, packed(palette::kBackground));
+  list.AddRectFilled({view.left(), view.top()},
+                     {view.left() + view.width(), view.top() + view.height()},
+                     packed(palette::kSceneBackground));
 }
 
-void WorldRenderer::fillFan(std::span<const SDL_FPoint> points, Colour colour) {
-  if (points.size() < 3) return;
-  const int base = int(vertices_.size());
-  for (const SDL_FPoint& p : points) vertices_.push_back({p, sdl(colour), {0, 0}});
-  for (int i = 1; i + 1 < int(points.size()); ++i) {
-    indices_.insert(indices_.end(), {base, base + i, base + i + 1});
+void WorldRenderer::end(ImDrawList& list) { list.PopClipRect(); }
+
+void WorldRenderer::drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
+                             Colour outline, float thickness) {
+  const BodyLook& look = *body.look;
+  const ImU32 fill = packed(bodyFill(look.material, look.isStatic));
+  const ImU32 edge = packed(outline);
+  const Transform xf{body.state.position, Rot::fromAngle(body.state.angle)};
+  const ImVec2 centre = pixel(view, xf.p);
+  Vec2 mark;  // the rotation mark runs from the centre to here
+  const bool small = 2 * computeExtent(look.shape) * view.scale() < kSmallBody;
+  if (look.shape.type == ShapeType::Circle) {
+    const float pixels = look.shape.circle.radius * view.scale();
+    const int segments = circleSegments(pixels);
+    mark = xf.p + look.shape.circle.radius * unit(body.state.angle);
+    if (small) {
+      without(list, ImDrawListFlags_AntiAliasedFill, [&] {
+        list.AddCircleFilled(centre, pixels, edge, segments);
+        list.AddCircleFilled(centre, pixels - std::min(thickness, 1.5f), fill, segments);
+      });
+    } else {
+      // Fills go without ImGui's anti-aliased fringe: the anti-aliased
+      // outline covers every edge, and the fringe would double the triangles.
+      without(list, ImDrawListFlags_AntiAliasedFill,
+              [&] { list.AddCircleFilled(centre, pixels, fill, segments); });
+      list.AddCircle(centre, pixels, edge, segments, thickness);
+    }
+  } else {
+    const Polygon& polygon = look.shape.polygon;
+    points_.clear();
+    for (int i = 0; i < polygon.count; ++i) points_.push_back(pixel(view, xf.apply(polygon.vertices[i])));
+    mark = xf.apply(Real(0.5) * (polygon.vertices[0] + polygon.vertices[1]));
+    if (small) {
+      insetConvex(points_, std::min(thickness, 1.5f), inset_);
+      without(list, ImDrawListFlags_AntiAliasedFill, [&] {
+        list.AddConvexPolyFilled(points_.data(), int(points_.size()), edge);
+        list.AddConvexPolyFilled(inset_.data(), int(inset_.size()), fill);
+      });
+    } else {
+      without(list, ImDrawListFlags_AntiAliasedFill, [&] {
+        list.AddConvexPolyFilled(points_.data(), int(points_.size()), fill);
+      });
+      list.AddPolyline(points_.data(), int(points_.size()), edge, ImDrawFlags_Closed, thickness);
+    }
   }
+  if (!look.isStatic) list.AddLine(centre, pixel(view, mark), edge, small ? 1.0f : thickness);
 }
 
-void WorldRenderer::fillDisc(SDL_FPoint centre, float radius, Colour colour) {
-  const int n = circleSegments(radius);
-  outline_.clear();
-  for (int i = 0; i < n; ++i) {
-    const float a = float(i) * 2 * std::numbers::pi_v<float> / float(n);
-    outline_.push_back({centre.x + radius * std::cos(a), centre.y + radius * std::sin(a)});
-  }
-  fillFan(outline_, colour);
-}
-
-void WorldRenderer::flushFills() {
-  if (!indices_.empty()) {
-    SDL_RenderGeometry(renderer_, nullptr, vertices_.data(), int(vertices_.size()),
-                       indices_.data(), int(indices_.size()));
-  }
-  vertices_.clear();
-  indices_.clear();
-}
-
-void WorldRenderer::circleOutline(const ViewTransform& view, const Vec2& centre, Real radius,
-                                  Real startAngle, std::vector<SDL_FPoint>& out) const {
-  const int n = circleSegments(radius * view.scale());
-  out.clear();
-  for (int i = 0; i <= n; ++i) {
-    const Real a = startAngle + Real(i) * 2 * std::numbers::pi_v<Real> / Real(n);
-    out.push_back(point(view.toPixels(centre + radius * Vec2(std::cos(a), std::sin(a)))));
-  }
-}
-
-void WorldRenderer::drawBodies(const ViewTransform& view, std::span<const DrawnBody> bodies,
-                               std::optional<std::uint32_t> selected) {
+void WorldRenderer::drawBodies(ImDrawList& list, const ViewTransform& view,
+                               std::span<const DrawnBody> bodies,
+                               std::optional<std::uint32_t> selected,
+                               std::optional<std::uint32_t> grabbed) {
   // Static scenery first, so moving bodies are drawn over it.
-  outlines_.resize(std::max(outlines_.size(), bodies.size()));
-  outlineColours_.clear();
-  std::size_t count = 0;
   for (const bool statics : {true, false}) {
     for (const DrawnBody& body : bodies) {
       const BodyLook& look = *body.look;
       if (look.isStatic != statics) continue;
       const bool asleep = !look.isStatic && !body.state.awake;
-      const Colour fill = bodyFill(look.material, look.isStatic, asleep);
-      Colour edge = bodyOutline(look.material, look.isStatic, asleep);
-      if (selected && *selected == body.state.id) edge = palette::kSelection;
-      std::vector<SDL_FPoint>& line = outlines_[count++];
-      const Transform xf{body.state.position, Rot::fromAngle(body.state.angle)};
-      if (look.shape.type == ShapeType::Circle) {
-        const Real r = look.shape.circle.radius;
-        // The outline starts and ends at the body's angle, so one more point
-        // at the centre draws the radius line that shows rotation.
-        circleOutline(view, xf.p, r, body.state.angle, line);
-        fillFan(std::span(line).first(line.size() - 1), fill);
-        line.push_back(point(view.toPixels(xf.p)));
-      } else {
-        const Polygon& polygon = look.shape.polygon;
-        line.clear();
-        for (int i = 0; i < polygon.count; ++i) {
-          line.push_back(point(view.toPixels(xf.apply(polygon.vertices[i]))));
-        }
-        fillFan(line, fill);
-        line.push_back(line.front());
-      }
-      outlineColours_.push_back(edge);
+      const bool marked = body.state.id == selected || body.state.id == grabbed;
+      const Colour outline =
+          marked ? palette::kSelection : bodyOutline(look.material, look.isStatic, asleep);
+      drawBody(list, view, body, outline, marked || asleep ? kEmphasis : kOutline);
     }
-  }
-  flushFills();
-  for (std::size_t i = 0; i < count; ++i) {
-    setColour(outlineColours_[i]);
-    SDL_RenderDrawLinesF(renderer_, outlines_[i].data(), int(outlines_[i].size()));
   }
 }
 
-void WorldRenderer::drawMarkers(const ViewTransform& view, std::span<const Marker> markers) {
+void WorldRenderer::drawMarkers(ImDrawList& list, const ViewTransform& view,
+                                std::span<const Marker> markers) {
   // Markers under a few centimetres are points (the polygon tutorial's
   // corners); larger ones are rings (the circle tutorial's radius).
   constexpr Real kPointMarker = Real(0.15);
-  setColour(palette::kMarker);
+  const ImU32 colour = packed(palette::kMarker);
   for (const Marker& marker : markers) {
-    const SDL_FPoint centre = point(view.toPixels(marker.center));
+    const ImVec2 centre = pixel(view, marker.center);
     if (marker.radius > kPointMarker) {
-      circleOutline(view, marker.center, marker.radius, 0, outline_);
-      SDL_RenderDrawLinesF(renderer_, outline_.data(), int(outline_.size()));
-      fillDisc(centre, 2.5f, palette::kMarker);
+      list.AddCircle(centre, marker.radius * view.scale(), colour, 0, kOutline);
+      list.AddCircleFilled(centre, 2.5f, colour);
     } else {
-      fillDisc(centre, std::max(5.0f, marker.radius * view.scale()), palette::kMarker);
+      list.AddCircleFilled(centre, std::max(5.0f, marker.radius * view.scale()), colour);
     }
   }
-  flushFills();
 }
 
-void WorldRenderer::drawPreview(const ViewTransform& view, const Controls& controls) {
-  if (controls.mode() == DrawMode::Polygon) {
-    const auto& points = controls.polygonPoints();
-    std::vector<SDL_FPoint>& line = previewLine_;
-    line.clear();
-    for (const Vec2& p : points) line.push_back(point(view.toPixels(p)));
-    if (line.size() >= 3) {
-      Colour translucent = palette::kPreview;
-      translucent.a = 70;
-      fillFan(line, translucent);
-      flushFills();
-    }
-    setColour(palette::kPreview);
-    SDL_RenderDrawLinesF(renderer_, line.data(), int(line.size()));
-    for (const SDL_FPoint& p : line) fillDisc(p, 3, palette::kPreview);
-    const SDL_FPoint cursor = point(view.toPixels(controls.pointer()));
-    const bool valid = controls.pointerValid();
-    if (!line.empty() && valid) {
-      // Guides from the last point to the cursor and on to the first.
-      setColour(palette::kDimText);
-      SDL_RenderDrawLineF(renderer_, line.back().x, line.back().y, cursor.x, cursor.y);
-      SDL_RenderDrawLineF(renderer_, cursor.x, cursor.y, line.front().x, line.front().y);
-    }
-    fillDisc(cursor, 5, valid ? palette::kValid : palette::kInvalid);
-    flushFills();
-  } else if (controls.mode() == DrawMode::Circle && controls.circleCenter()) {
-    const Vec2 centre = *controls.circleCenter();
-    const Real r = controls.circleRadius();
-    setColour(palette::kPreview);
-    if (r > 0) {
-      circleOutline(view, centre, r, 0, outline_);
-      SDL_RenderDrawLinesF(renderer_, outline_.data(), int(outline_.size()));
-      const Vec2 toPointer = controls.pointer() - centre;
-      const Vec2 direction = toPointer.norm() > 0 ? Vec2(toPointer.normalized()) : Vec2(1, 0);
-      const SDL_FPoint c = point(view.toPixels(centre));
-      const SDL_FPoint rim = point(view.toPixels(centre + r * direction));
-      SDL_RenderDrawLineF(renderer_, c.x, c.y, rim.x, rim.y);
-    }
-    fillDisc(point(view.toPixels(centre)), 3, palette::kPreview);
-    flushFills();
+void WorldRenderer::drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held,
+                             const Vec2& cursor) {
+  const ImU32 colour = packed(palette::kSelection);
+  list.AddLine(pixel(view, held), pixel(view, cursor), colour, kOutline);
+  list.AddCircleFilled(pixel(view, held), 3.5f, colour);
+}
+
+void WorldRenderer::drawPreview(ImDrawList& list, const ViewTransform& view,
+                                const Controls& controls) {
+  if (controls.mode() == DrawMode::Polygon) drawPolygonPreview(list, view, controls);
+  if (controls.mode() == DrawMode::Circle) drawCirclePreview(list, view, controls);
+}
+
+void WorldRenderer::drawPolygonPreview(ImDrawList& list, const ViewTransform& view,
+                                       const Controls& controls) {
+  const ImU32 preview = packed(palette::kPreview);
+  points_.clear();
+  for (const Vec2& p : controls.polygonPoints()) points_.push_back(pixel(view, p));
+  if (points_.size() >= 3) {
+    Colour translucent = palette::kPreview;
+    translucent.a = 70;
+    // Either winding may be drawn; the fringe would assume one.
+    without(list, ImDrawListFlags_AntiAliasedFill, [&] {
+      list.AddConvexPolyFilled(points_.data(), int(points_.size()), packed(translucent));
+    });
   }
+  list.AddPolyline(points_.data(), int(points_.size()), preview, ImDrawFlags_None, kOutline);
+  for (const ImVec2& p : points_) list.AddCircleFilled(p, 3, preview);
+  const ImVec2 cursor = pixel(view, controls.pointer());
+  const bool valid = controls.pointerValid();
+  if (!points_.empty() && valid) {
+    // Guides from the last point to the cursor and on to the first.
+    const ImU32 guide = packed(palette::kDimText);
+    list.AddLine(points_.back(), cursor, guide);
+    list.AddLine(cursor, points_.front(), guide);
+  }
+  list.AddCircleFilled(cursor, 5, packed(valid ? palette::kValid : palette::kInvalid));
+}
+
+void WorldRenderer::drawCirclePreview(ImDrawList& list, const ViewTransform& view,
+                                      const Controls& controls) {
+  if (!controls.circleCenter()) return;
+  const ImU32 preview = packed(palette::kPreview);
+  const Vec2 centre = *controls.circleCenter();
+  const Real r = controls.circleRadius();
+  const ImVec2 c = pixel(view, centre);
+  if (r > 0) {
+    list.AddCircle(c, r * view.scale(), preview, 0, kOutline);
+    const Vec2 toPointer = controls.pointer() - centre;
+    const Vec2 direction = toPointer.norm() > 0 ? Vec2(toPointer.normalized()) : Vec2(1, 0);
+    list.AddLine(c, pixel(view, centre + r * direction), preview, kOutline);
+  }
+  list.AddCircleFilled(c, 3, preview);
 }
 
 }  // namespace impulse::viewer

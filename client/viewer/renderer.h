@@ -1,10 +1,11 @@
 #pragma once
-/// Draws the scene: bodies (filled and outlined, circles with a radius line
-/// that shows rotation), preset markers, the selection and drawing previews.
-/// All fills of a frame go to the GPU (or software rasteriser) in one
-/// SDL_RenderGeometry batch.
+/// Draws the scene into an ImGui draw list (anti-aliased fills and lines):
+/// bodies filled in their material colour with a contrasting outline and a
+/// rotation mark, sleeping bodies outlined in the sleep colour, preset
+/// markers, the selection and the drawing previews. Everything is clipped
+/// to the scene viewport.
 
-#include <SDL.h>
+#include <imgui.h>
 
 #include <optional>
 #include <span>
@@ -18,34 +19,31 @@
 
 namespace impulse::viewer {
 
+/// ImGui's packed colour of a palette colour.
+ImU32 packed(Colour colour);
+
 class WorldRenderer {
  public:
-  explicit WorldRenderer(SDL_Renderer* renderer) : renderer_(renderer) {}
-
-  /// Background of the window and of the scene rectangle.
-  void drawBackground(const ViewTransform& view);
-  void drawBodies(const ViewTransform& view, std::span<const DrawnBody> bodies,
-                  std::optional<std::uint32_t> selected);
-  void drawMarkers(const ViewTransform& view, std::span<const Marker> markers);
+  /// Fills the viewport and the scene rectangle, and clips what follows to
+  /// the viewport until end().
+  void begin(ImDrawList& list, const ViewTransform& view);
+  void end(ImDrawList& list);
+  void drawBodies(ImDrawList& list, const ViewTransform& view, std::span<const DrawnBody> bodies,
+                  std::optional<std::uint32_t> selected, std::optional<std::uint32_t> grabbed);
+  void drawMarkers(ImDrawList& list, const ViewTransform& view, std::span<const Marker> markers);
+  /// The hand: a line from the held point of a grabbed body to the cursor.
+  void drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held, const Vec2& cursor);
   /// The polygon or circle being drawn, and the polygon cursor dot.
-  void drawPreview(const ViewTransform& view, const Controls& controls);
+  void drawPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 
  private:
-  void setColour(Colour c);
-  /// Appends a filled convex fan (first point is a vertex) to the batch.
-  void fillFan(std::span<const SDL_FPoint> points, Colour colour);
-  void flushFills();
-  void circleOutline(const ViewTransform& view, const Vec2& centre, Real radius, Real startAngle,
-                     std::vector<SDL_FPoint>& out) const;
-  void fillDisc(SDL_FPoint centre, float radius, Colour colour);
+  void drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
+                Colour outline, float thickness);
+  void drawPolygonPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
+  void drawCirclePreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 
-  SDL_Renderer* renderer_;
-  std::vector<SDL_Vertex> vertices_;
-  std::vector<int> indices_;
-  std::vector<SDL_FPoint> outline_;
-  std::vector<SDL_FPoint> previewLine_;  // the polygon being drawn, in pixels
-  std::vector<std::vector<SDL_FPoint>> outlines_;
-  std::vector<Colour> outlineColours_;
+  std::vector<ImVec2> points_;
+  std::vector<ImVec2> inset_;
 };
 
 }  // namespace impulse::viewer

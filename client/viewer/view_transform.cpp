@@ -4,13 +4,22 @@
 
 namespace impulse::viewer {
 
-ViewTransform::ViewTransform(int windowWidth, int windowHeight, Vec2 sceneSize)
-    : sceneWidth_(sceneSize.x()), sceneHeight_(sceneSize.y()) {
-  const float w = float(std::max(windowWidth, 1));
-  const float h = float(std::max(windowHeight, 1));
-  scale_ = std::min(w / sceneWidth_, h / sceneHeight_);
-  offsetX_ = (w - sceneWidth_ * scale_) / 2;
-  offsetY_ = (h - sceneHeight_ * scale_) / 2;
+namespace {
+
+constexpr float kMinZoom = 0.25f;
+constexpr float kMaxZoom = 40.0f;
+
+}  // namespace
+
+ViewTransform::ViewTransform(PixelRect viewport, Vec2 sceneSize, Camera camera)
+    : viewport_(viewport), sceneWidth_(sceneSize.x()), sceneHeight_(sceneSize.y()) {
+  const float w = std::max(viewport.w, 1.0f);
+  const float h = std::max(viewport.h, 1.0f);
+  const float fitted = std::min(w / sceneWidth_, h / sceneHeight_);
+  scale_ = fitted * camera.zoom;
+  // Zoom about the viewport's centre, then pan.
+  offsetX_ = viewport.x + (w - sceneWidth_ * scale_) / 2 + camera.panX;
+  offsetY_ = viewport.y + (h - sceneHeight_ * scale_) / 2 + camera.panY;
 }
 
 PixelPoint ViewTransform::toPixels(const Vec2& world) const {
@@ -19,6 +28,19 @@ PixelPoint ViewTransform::toPixels(const Vec2& world) const {
 
 Vec2 ViewTransform::toWorld(float px, float py) const {
   return Vec2((px - offsetX_) / scale_, sceneHeight_ - (py - offsetY_) / scale_);
+}
+
+Camera zoomAt(const Camera& camera, PixelRect viewport, Vec2 sceneSize, float factor, float px,
+              float py) {
+  const ViewTransform before(viewport, sceneSize, camera);
+  const Vec2 anchor = before.toWorld(px, py);
+  Camera zoomed = camera;
+  zoomed.zoom = std::clamp(camera.zoom * factor, kMinZoom, kMaxZoom);
+  // Pan so that the anchor lands back under the cursor.
+  const PixelPoint moved = ViewTransform(viewport, sceneSize, zoomed).toPixels(anchor);
+  zoomed.panX += px - moved.x;
+  zoomed.panY += py - moved.y;
+  return zoomed;
 }
 
 }  // namespace impulse::viewer

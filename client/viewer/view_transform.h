@@ -1,7 +1,8 @@
 #pragma once
-/// World metres <-> window pixels: the 25 m x 18.75 m scene scaled to fit the
-/// window (32 px/m in the default 800x600 window, so the seed's pixel layout
-/// maps 1:1), centred, y up, origin at the scene's bottom-left.
+/// World metres <-> window pixels. The 25 m x 18.75 m scene is fitted into
+/// the scene viewport (the window minus the side panel), centred, y up,
+/// origin at the scene's bottom-left; the camera then zooms and pans that
+/// fitted view.
 
 #include "impulse/math.h"
 
@@ -12,27 +13,53 @@ struct PixelPoint {
   float y = 0;
 };
 
+/// A rectangle of the window, pixels.
+struct PixelRect {
+  float x = 0;
+  float y = 0;
+  float w = 0;
+  float h = 0;
+  bool contains(float px, float py) const { return px >= x && px < x + w && py >= y && py < y + h; }
+};
+
+/// How far the user zoomed and panned away from the fitted view.
+struct Camera {
+  /// 1 = the scene fits the viewport.
+  float zoom = 1;
+  /// Pan of the view, pixels (added after fitting and zooming).
+  float panX = 0;
+  float panY = 0;
+};
+
 class ViewTransform {
  public:
-  /// Scene of `sceneSize` metres fitted into a window of the given pixels.
-  ViewTransform(int windowWidth, int windowHeight, Vec2 sceneSize);
+  /// Scene of `sceneSize` metres fitted into `viewport`, then `camera` applied.
+  ViewTransform(PixelRect viewport, Vec2 sceneSize, Camera camera = {});
 
   PixelPoint toPixels(const Vec2& world) const;
   Vec2 toWorld(float px, float py) const;
   /// Pixels per metre.
   float scale() const { return scale_; }
-  /// The scene's rectangle on screen.
+  /// The scene's rectangle on screen (may extend past the viewport when zoomed).
   float left() const { return offsetX_; }
   float top() const { return offsetY_; }
   float width() const { return sceneWidth_ * scale_; }
   float height() const { return sceneHeight_ * scale_; }
+  /// Where the scene is drawn: nothing of the scene goes outside it.
+  const PixelRect& viewport() const { return viewport_; }
 
  private:
+  PixelRect viewport_;
   float scale_;
   float offsetX_;
   float offsetY_;
   float sceneWidth_;
   float sceneHeight_;
 };
+
+/// Zooms by `factor` about the window pixel (px, py): the world point under
+/// it stays under it. Zoom is kept within [0.25, 40].
+Camera zoomAt(const Camera& camera, PixelRect viewport, Vec2 sceneSize, float factor, float px,
+              float py);
 
 }  // namespace impulse::viewer

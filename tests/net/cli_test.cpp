@@ -1,5 +1,10 @@
 // impulse-cli against the real server: one JSON line per command, errors
 // that name the line, and exit codes.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <regex>
+
 #include "net_test_support.h"
 
 namespace impulse::net_test {
@@ -51,6 +56,11 @@ TEST(Cli, RunsEveryCommandAndPrintsOneJsonLineEach) {
   EXPECT_TRUE(contains(run.lines[14], R"("command":"wait-snapshot","ok":true)")) << run.lines[14];
   EXPECT_TRUE(contains(run.lines[16], R"("server_tick":)")) << run.lines[16];
   EXPECT_TRUE(contains(run.lines[18], R"("count":0,"bodies":[])")) << run.lines[18];
+  // Numbers as people write them: integral values without ".0", single
+  // precision state without the digits of its double widening.
+  EXPECT_TRUE(contains(run.lines[0], R"("tick_hz":60,"snapshot_hz":30)")) << run.lines[0];
+  const std::regex longFraction(R"(\.\d{10,})");
+  for (const auto& line : run.lines) EXPECT_FALSE(std::regex_search(line, longFraction)) << line;
 }
 
 TEST(Cli, ErrorsNameTheLineAndTheProblem) {
@@ -66,23 +76,37 @@ TEST(Cli, ErrorsNameTheLineAndTheProblem) {
   const auto run = runCli(server.port(), script);
   EXPECT_EQ(run.exitCode, 1);
   ASSERT_EQ(run.lines.size(), 7u);
+  // A line that does not parse is reported under the command it names.
   EXPECT_TRUE(contains(
       run.lines[1],
-      R"("error":"line 1: circle X Y R [MATERIAL] [static] [nograv]: missing argument 3")"))
+      R"({"line":1,"command":"circle","ok":false,"error":"line 1: circle X Y R [MATERIAL] [static] [nograv]: missing argument 3")"))
       << run.lines[1];
+  // The server's refusals name the fields as the script writes them.
   EXPECT_TRUE(contains(
       run.lines[2],
-      R"({"line":3,"command":"polygon","ok":false,"error":"line 3: spawn_polygon: 2 vertices given)"))
+      R"({"line":3,"command":"polygon","ok":false,"error":"line 3: polygon: 2 vertices given)"))
       << run.lines[2];
-  EXPECT_TRUE(contains(run.lines[3], R"("error":"line 4: query_body: unknown body id 999")"))
+  EXPECT_TRUE(contains(run.lines[3], R"("error":"line 4: query: unknown body id 999")"))
       << run.lines[3];
-  EXPECT_TRUE(
-      contains(run.lines[4], R"("error":"line 5: spawn_circle.center.x is not a finite number")"))
+  EXPECT_TRUE(contains(run.lines[4], R"("error":"line 5: circle X is not a finite number")"))
       << run.lines[4];
-  EXPECT_TRUE(contains(run.lines[5], R"("error":"line 6: unknown command 'fly'")")) << run.lines[5];
+  EXPECT_TRUE(contains(run.lines[5], R"({"line":6,"command":"fly","ok":false,"error":"line 6: unknown command 'fly'")"))
+      << run.lines[5];
   // Later lines still run.
   EXPECT_TRUE(contains(run.lines[6], R"({"line":7,"command":"step","ok":true,"tick":5)"))
       << run.lines[6];
+}
+
+TEST(Cli, ServerErrorsUseTheScriptsWordsAndPlainNumbers) {
+  ServerProcess server({"--paused"});
+  const auto run = runCli(server.port(), "polygon 1 1 2 nan 3 1\ncircle 100 5 1\n");
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 3u);
+  EXPECT_TRUE(contains(run.lines[1], R"("error":"line 1: polygon Y2 is not a finite number")"))
+      << run.lines[1];
+  // The server writes the bounds with six decimals; the report as people do.
+  EXPECT_TRUE(contains(run.lines[2], "(-25, -25) to (50, 45)")) << run.lines[2];
+  EXPECT_FALSE(contains(run.lines[2], ".000000")) << run.lines[2];
 }
 
 TEST(Cli, ReadsStdin) {
@@ -91,6 +115,36 @@ TEST(Cli, ReadsStdin) {
   EXPECT_EQ(run.exitCode, 0);
   ASSERT_EQ(run.lines.size(), 3u);
   EXPECT_TRUE(contains(run.lines[2], R"("tick":2)")) << run.lines[2];
+}
+
+TEST(Cli, HelpListsTheFlagsInAlignedColumnsAndTheScriptGrammar) {
+  FILE* pipe = popen((std::string(IMPULSE_CLI_BINARY) + " --help").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string help;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) help += buffer;
+  EXPECT_EQ(pclose(pipe), 0);
+  std::size_t column = std::string::npos;
+  for (const std::string flag : {"  --connect HOST:PORT", "  --timeout MS", "  -h,--help"}) {
+    const auto at = help.find(flag);
+    ASSERT_NE(at, std::string::npos) << flag << " in\n" << help;
+    const auto lineStart = help.rfind('\n', at) + 1;
+    const auto description = help.find_first_not_of(' ', at + flag.size()) - lineStart;
+    if (column == std::string::npos) column = description;
+    EXPECT_EQ(description, column) << flag;
+  }
+  EXPECT_TRUE(contains(help, "polygon X1 Y1 X2 Y2 X3 Y3")) << help;
+}
+
+TEST(Cli, BadFlagValuesNameTheFlag) {
+  const std::string command = std::string(IMPULSE_CLI_BINARY) + " --timeout -5 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+  EXPECT_EQ(WEXITSTATUS(pclose(pipe)), 2);
+  EXPECT_TRUE(contains(output, "--timeout")) << output;
 }
 
 TEST(Cli, UnreachableServerExitsWithTwo) {

@@ -7,8 +7,8 @@
 namespace impulse::viewer {
 namespace {
 
-const ControlContext kSandbox{true, std::nullopt};
-const ControlContext kLocked{false, std::nullopt};
+const ControlContext kSandbox{.drawingAllowed = true};
+const ControlContext kLocked{.drawingAllowed = false};
 
 ControlKey key(Control control, int index = 0) { return {control, index}; }
 
@@ -166,7 +166,7 @@ TEST_F(ControlsTest, GravityKeys_RepeatAtASteadyRateWhileHeld) {
 }
 
 TEST_F(ControlsTest, SimpleKeys_SendTheirCommands) {
-  press(Control::Clear);
+  press(Control::ClearAll);
   press(Control::ResetGravity);
   press(Control::GravityUp);
   controls.keyReleased(key(Control::GravityUp));
@@ -188,19 +188,19 @@ TEST_F(ControlsTest, ToggleKeys_FlipNextShapeFlagsAndQuit) {
   EXPECT_EQ(controls.material(), Material::Ice);
   EXPECT_EQ(materialLabel(controls.material()), "ICE");
   EXPECT_FALSE(controls.quitRequested());
-  press(Control::Quit);
+  press(Control::CancelOrQuit);
   EXPECT_TRUE(controls.quitRequested());
 }
 
 TEST_F(ControlsTest, Inspector_ClickSelects_ArrowsPushWithMassScaledImpulse) {
   press(Control::ToggleInspector);
-  controls.pointerPressed(Vec2(1, 1), 42u, now);
+  controls.pointerPressed(Vec2(1, 1), BodyHit{42}, now);
   EXPECT_EQ(controls.selectedBody(), 42u);
   // Before the body's mass is known nothing is sent.
   press(Control::PushRight);
   controls.keyReleased(key(Control::PushRight));
   EXPECT_TRUE(sent().empty());
-  const ControlContext known{true, 8.0};
+  const ControlContext known{.selectedMass = 8.0};
   press(Control::PushUp, known);
   controls.keyReleased(key(Control::PushUp));
   const auto commands = sent();
@@ -209,12 +209,12 @@ TEST_F(ControlsTest, Inspector_ClickSelects_ArrowsPushWithMassScaledImpulse) {
   EXPECT_EQ(impulse.body_id(), 42u);
   EXPECT_DOUBLE_EQ(impulse.impulse().y(), 8.0 * 0.25);
   // Static bodies (mass 0) are not pushed.
-  press(Control::PushUp, ControlContext{true, 0.0});
+  press(Control::PushUp, ControlContext{.selectedMass = 0.0});
   EXPECT_TRUE(sent().empty());
   // A click on empty space deselects; M off deselects too.
   controls.pointerPressed(Vec2(1, 1), std::nullopt, now);
   EXPECT_FALSE(controls.selectedBody());
-  controls.pointerPressed(Vec2(1, 1), 7u, now);
+  controls.pointerPressed(Vec2(1, 1), BodyHit{7}, now);
   press(Control::ToggleInspector);
   EXPECT_FALSE(controls.selectedBody());
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 #include <vector>
 
 #include "impulse/client/commands.h"
@@ -13,6 +14,21 @@
 
 namespace impulse::viewer_test {
 namespace {
+
+// Sanitizer builds check memory, not speed: they run the viewer's own code
+// several times slower, so the frame budget is wider there.
+#ifdef IMPULSE_TESTS_SANITIZED
+constexpr double kFrameBudgetMs = 150;
+#else
+constexpr double kFrameBudgetMs = 33.3;
+#endif
+
+// CPU time this thread has used, milliseconds.
+double threadCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
+}
 
 using std::chrono::milliseconds;
 
@@ -47,8 +63,11 @@ TEST(FrameTime, TwoThousandBodies_StaysWellUnderAFrame) {
   viewer.runFrames(20);
   std::vector<double> work;
   viewer::FrameTiming sum;
+  double cpuMs = 0;
   for (int i = 0; i < 120; ++i) {
+    const double cpuBefore = threadCpuMs();
     viewer.app().frame();
+    cpuMs += threadCpuMs() - cpuBefore;
     const auto& t = viewer.app().timing();
     work.push_back(t.update + t.draw + t.present);
     sum.update += t.update;
@@ -65,12 +84,16 @@ TEST(FrameTime, TwoThousandBodies_StaysWellUnderAFrame) {
               viewer.app().world().bodies().size(), mean, work[work.size() / 2], p95);
   std::printf("  of which update %.2f ms, draw %.2f ms, present %.2f ms\n", sum.update / 120,
               sum.draw / 120, sum.present / 120);
+  cpuMs /= 120;
+  std::printf("  CPU time of the frame thread: mean %.2f ms\n", cpuMs);
   RecordProperty("mean_frame_ms", std::to_string(mean));
+  RecordProperty("mean_frame_cpu_ms", std::to_string(cpuMs));
   RecordProperty("p95_frame_ms", std::to_string(p95));
   viewer.capture(screenshotPath("bodies_2000.bmp"));
-  // Software rasterising on a shared CI machine: at least 30 frames per
-  // second (measured about 10-15 ms; a GPU renderer does far better).
-  EXPECT_LT(mean, 33.3);
+  // Software rasterising (anti-aliased) on a shared CI machine: at least 30
+  // frames per second of the frame thread's own CPU time, so other builds
+  // on the same two cores do not count (a GPU renderer does far better).
+  EXPECT_LT(cpuMs, kFrameBudgetMs);
 }
 
 }  // namespace

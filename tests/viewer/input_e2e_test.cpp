@@ -23,13 +23,7 @@ class InputEndToEnd : public ::testing::Test {
 
   // Lets the observer catch up with the server until `done` holds.
   bool observe(const std::function<bool()>& done, milliseconds timeout = milliseconds(5000)) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (std::chrono::steady_clock::now() < deadline) {
-      observer.poll(milliseconds(10));
-      viewer.app().frame();
-      if (done()) return true;
-    }
-    return false;
+    return observeUntil(viewer, observer, done, timeout);
   }
 
   const client::MirrorBody* find(ShapeType type, bool isStatic) {
@@ -133,7 +127,7 @@ TEST_F(InputEndToEnd, GravityKeysNudgeWhileHeld_EnterResets) {
   }));
 }
 
-TEST_F(InputEndToEnd, PresetKeysLoadScenes_ClearEmptiesTheWorld_DrawingLockedElsewhere) {
+TEST_F(InputEndToEnd, PresetKeysLoadScenes_ShiftClearEmptiesTheWorld_DrawingLockedElsewhere) {
   viewer.tap(SDLK_3);
   ASSERT_TRUE(observe([&] { return observer.mirror().preset()->id == 3; }));
   EXPECT_FALSE(viewer.app().controls().panelVisible());
@@ -149,7 +143,7 @@ TEST_F(InputEndToEnd, PresetKeysLoadScenes_ClearEmptiesTheWorld_DrawingLockedEls
   viewer.tap(SDLK_p);
   EXPECT_EQ(viewer.app().controls().mode(), viewer::DrawMode::None);
   EXPECT_TRUE(viewer.app().controls().notice(viewer.app().now()).has_value());
-  viewer.tap(SDLK_c);
+  viewer.tap(SDLK_c, KMOD_LSHIFT);
   ASSERT_TRUE(observe([&] { return observer.mirror().bodies().empty(); }));
   viewer.tap(SDLK_0);
   ASSERT_TRUE(observe([&] { return observer.mirror().preset()->id == 0; }));

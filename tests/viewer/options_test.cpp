@@ -9,13 +9,13 @@ namespace {
 
 ParsedViewerOptions parse(std::vector<std::string_view> args) { return parseViewerOptions(args); }
 
-TEST(ViewerOptions, DefaultsConnectToLocalPort7777InAn800x600Window) {
+TEST(ViewerOptions, DefaultsConnectToLocalPort7777InA1280x720Window) {
   const auto parsed = parse({});
   ASSERT_TRUE(parsed.options);
   EXPECT_EQ(parsed.options->connect.host, "127.0.0.1");
   EXPECT_EQ(parsed.options->connect.port, 7777);
-  EXPECT_EQ(parsed.options->width, 800);
-  EXPECT_EQ(parsed.options->height, 600);
+  EXPECT_EQ(parsed.options->width, 1280);
+  EXPECT_EQ(parsed.options->height, 720);
   EXPECT_EQ(parsed.options->frames, 0);
 }
 
@@ -41,6 +41,27 @@ TEST(ViewerOptions, RefusesBadValuesWithAMessage) {
     EXPECT_FALSE(parsed.error.empty()) << args[0];
   }
   EXPECT_TRUE(parse({"--help"}).help);
+  // The message names the flag as the user wrote it.
+  EXPECT_NE(parse({"--preset", "11"}).error.find("--preset"), std::string::npos);
+}
+
+TEST(ViewerOptions, UsageListsEveryFlagInAlignedColumns) {
+  const std::string usage = viewerUsage();
+  std::size_t column = std::string::npos;
+  for (const char* flag : {"--connect", "--size", "--preset", "--screenshot", "--frames",
+                           "--no-vsync", "-h,--help"}) {
+    const auto at = usage.find(std::string("  ") + flag) + 2;
+    ASSERT_NE(at, std::string::npos + 2) << flag;
+    // Each description starts in the same column as the others.
+    const auto lineStart = usage.rfind('\n', at) + 1;
+    const auto lineEnd = usage.find('\n', at);
+    const std::string line = usage.substr(lineStart, lineEnd - lineStart);
+    const auto gap = line.find("  ", at - lineStart + std::string(flag).size());
+    ASSERT_NE(gap, std::string::npos) << line;
+    const auto text = line.find_first_not_of(' ', gap);
+    if (column == std::string::npos) column = text;
+    EXPECT_EQ(text, column) << line;
+  }
 }
 
 }  // namespace

@@ -71,20 +71,21 @@ std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> ViewerHarness::capture(
   return {converted, SDL_FreeSurface};
 }
 
-void ViewerHarness::key(SDL_Keycode key, bool down) {
+void ViewerHarness::key(SDL_Keycode key, bool down, Uint16 modifiers) {
   SDL_Event event{};
   event.type = down ? SDL_KEYDOWN : SDL_KEYUP;
   event.key.state = down ? SDL_PRESSED : SDL_RELEASED;
   event.key.keysym.sym = key;
   event.key.keysym.scancode = SDL_GetScancodeFromKey(key);
+  event.key.keysym.mod = modifiers;
   event.key.windowID = SDL_GetWindowID(app_->window());
   SDL_PushEvent(&event);
 }
 
-void ViewerHarness::tap(SDL_Keycode k) {
-  key(k, true);
+void ViewerHarness::tap(SDL_Keycode k, Uint16 modifiers) {
+  key(k, true, modifiers);
   app_->frame();
-  key(k, false);
+  key(k, false, modifiers);
   app_->frame();
 }
 
@@ -97,15 +98,23 @@ void ViewerHarness::mouseMove(float px, float py) {
   SDL_PushEvent(&event);
 }
 
-void ViewerHarness::mouseButton(float px, float py, bool down) {
+void ViewerHarness::mouseButton(float px, float py, bool down, Uint8 button) {
   SDL_Event event{};
   event.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
   event.button.windowID = SDL_GetWindowID(app_->window());
-  event.button.button = SDL_BUTTON_LEFT;
+  event.button.button = button;
   event.button.state = down ? SDL_PRESSED : SDL_RELEASED;
   event.button.clicks = 1;
   event.button.x = int(px);
   event.button.y = int(py);
+  SDL_PushEvent(&event);
+}
+
+void ViewerHarness::wheel(int notches) {
+  SDL_Event event{};
+  event.type = SDL_MOUSEWHEEL;
+  event.wheel.windowID = SDL_GetWindowID(app_->window());
+  event.wheel.y = notches;
   SDL_PushEvent(&event);
 }
 
@@ -118,6 +127,17 @@ void ViewerHarness::click(const Vec2& world) {
   app_->frame();
 }
 
+bool observeUntil(ViewerHarness& viewer, client::Client& observer,
+                  const std::function<bool()>& done, std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (std::chrono::steady_clock::now() < deadline) {
+    observer.poll(std::chrono::milliseconds(10));
+    viewer.app().frame();
+    if (done()) return true;
+  }
+  return false;
+}
+
 viewer::Colour pixelAt(SDL_Surface* surface, int x, int y) {
   const auto* row = static_cast<const std::uint8_t*>(surface->pixels) + y * surface->pitch;
   const std::uint32_t argb = reinterpret_cast<const std::uint32_t*>(row)[x];
@@ -126,6 +146,16 @@ viewer::Colour pixelAt(SDL_Surface* surface, int x, int y) {
 
 int colourDistance(viewer::Colour a, viewer::Colour b) {
   return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+int countNear(SDL_Surface* surface, SDL_Rect area, viewer::Colour colour, int tolerance) {
+  int count = 0;
+  for (int y = area.y; y < area.y + area.h; ++y) {
+    for (int x = area.x; x < area.x + area.w; ++x) {
+      if (colourDistance(pixelAt(surface, x, y), colour) <= tolerance) ++count;
+    }
+  }
+  return count;
 }
 
 }  // namespace impulse::viewer_test

@@ -23,7 +23,7 @@ client::ConnectOptions observerOptions(std::uint16_t port);
 
 class ViewerHarness {
  public:
-  explicit ViewerHarness(std::uint16_t port, int width = 800, int height = 600);
+  explicit ViewerHarness(std::uint16_t port, int width = 1280, int height = 720);
 
   viewer::App& app() { return *app_; }
   /// Runs frames (about 60 per second) until `done` or `timeout`; true if done.
@@ -34,10 +34,11 @@ class ViewerHarness {
   std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> capture(const std::string& path);
 
   // Synthetic input, as SDL would deliver it from a window.
-  void key(SDL_Keycode key, bool down);
-  void tap(SDL_Keycode key);
+  void key(SDL_Keycode key, bool down, Uint16 modifiers = KMOD_NONE);
+  void tap(SDL_Keycode key, Uint16 modifiers = KMOD_NONE);
   void mouseMove(float px, float py);
-  void mouseButton(float px, float py, bool down);
+  void mouseButton(float px, float py, bool down, Uint8 button = SDL_BUTTON_LEFT);
+  void wheel(int notches);
   void click(const Vec2& world);
   /// Pixel of a world point in the current window.
   viewer::PixelPoint pixel(const Vec2& world) const { return app_->view().toPixels(world); }
@@ -46,9 +47,17 @@ class ViewerHarness {
   std::unique_ptr<viewer::App> app_;
 };
 
+/// Runs viewer frames while `observer` catches up with the server, until
+/// `done` holds or `timeout` passes; true if done.
+bool observeUntil(ViewerHarness& viewer, client::Client& observer,
+                  const std::function<bool()>& done,
+                  std::chrono::milliseconds timeout = std::chrono::milliseconds(5000));
+
 /// The colour of a pixel of an ARGB8888 surface.
 viewer::Colour pixelAt(SDL_Surface* surface, int x, int y);
 /// Largest per-channel difference.
 int colourDistance(viewer::Colour a, viewer::Colour b);
+/// Pixels of `area` within `tolerance` of `colour`.
+int countNear(SDL_Surface* surface, SDL_Rect area, viewer::Colour colour, int tolerance);
 
 }  // namespace impulse::viewer_test

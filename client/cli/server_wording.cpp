@@ -1,0 +1,103 @@
+#include "server_wording.h"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+#include "impulse/client/number_format.h"
+
+namespace impulse::cli {
+
+namespace {
+
+// Protocol field paths and the script words for them; longer paths first,
+// so a path is replaced before its command's prefix.
+constexpr std::array<std::pair<const char*, const char*>, 23> kFieldWords{{
+    {"spawn_circle.center.x", "circle X"},
+    {"spawn_circle.center.y", "circle Y"},
+    {"spawn_circle.center", "circle X Y"},
+    {"spawn_circle.radius", "circle R"},
+    {"spawn_circle.options.material", "circle MATERIAL"},
+    {"spawn_circle", "circle"},
+    {"spawn_polygon.options.material", "polygon MATERIAL"},
+    {"spawn_polygon", "polygon"},
+    {"load_preset.material", "preset MATERIAL"},
+    {"load_preset", "preset"},
+    {"set_gravity.gravity.x", "gravity GX"},
+    {"set_gravity.gravity.y", "gravity GY"},
+    {"set_gravity", "gravity"},
+    {"nudge_gravity.delta.x", "nudge DX"},
+    {"nudge_gravity.delta.y", "nudge DY"},
+    {"nudge_gravity", "nudge"},
+    {"apply_impulse.impulse.x", "impulse JX"},
+    {"apply_impulse.impulse.y", "impulse JY"},
+    {"apply_impulse.point.x", "impulse PX"},
+    {"apply_impulse.point.y", "impulse PY"},
+    {"apply_impulse", "impulse"},
+    {"remove_body", "remove"},
+    {"query_body", "query"},
+}};
+
+std::string replaceAll(std::string text, std::string_view from, std::string_view to) {
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// "spawn_polygon.vertices[2].y" -> "polygon Y3": the script counts from 1.
+std::string polygonVertices(std::string text) {
+  constexpr std::string_view kPrefix = "spawn_polygon.vertices[";
+  for (auto at = text.find(kPrefix); at != std::string::npos; at = text.find(kPrefix, at + 1)) {
+    std::size_t digits = at + kPrefix.size();
+    std::size_t end = digits;
+    while (end < text.size() && isDigit(text[end])) ++end;
+    // "]." and the axis must follow the index.
+    if (end == digits || end + 2 >= text.size() || text[end] != ']' || text[end + 1] != '.' ||
+        (text[end + 2] != 'x' && text[end + 2] != 'y')) {
+      continue;
+    }
+    const std::string words = std::string("polygon ") + (text[end + 2] == 'x' ? 'X' : 'Y') +
+                              std::to_string(std::stoul(text.substr(digits, end - digits)) + 1);
+    text.replace(at, end + 3 - at, words);
+  }
+  return text;
+}
+
+// std::to_string's six fixed decimals ("-25.000000", "0.100000").
+std::string tidyNumbers(const std::string& text) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t start = i;
+    std::size_t end = i + (text[i] == '-' ? 1 : 0);
+    const std::size_t integer = end;
+    while (end < text.size() && isDigit(text[end])) ++end;
+    const bool fixedSix = end > integer && end + 7 <= text.size() && text[end] == '.' &&
+                          std::all_of(text.begin() + std::ptrdiff_t(end) + 1,
+                                      text.begin() + std::ptrdiff_t(end) + 7, isDigit) &&
+                          (end + 7 == text.size() || !isDigit(text[end + 7]));
+    if (fixedSix) {
+      out += client::formatNumber(std::stod(text.substr(start, end + 7 - start)));
+      i = end + 7;
+    } else {
+      // Copy through the whole run of digits, so no number is cut in two.
+      const std::size_t stop = std::max(end, start + 1);
+      out.append(text, start, stop - start);
+      i = stop;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string scriptWording(std::string_view serverError) {
+  std::string text = polygonVertices(std::string(serverError));
+  for (const auto& [field, words] : kFieldWords) text = replaceAll(std::move(text), field, words);
+  return tidyNumbers(text);
+}
+
+}  // namespace impulse::cli

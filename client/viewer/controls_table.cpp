@@ -1,0 +1,56 @@
+#include <array>
+#include <utility>
+
+#include "side_panel.h"
+
+namespace impulse::viewer {
+
+namespace {
+
+// SPEC.md's control table and the viewer's own keys, as the panel shows them.
+constexpr std::array<std::pair<const char*, const char*>, 23> kControlRows{{
+    {"P", "polygon mode; again: create (3+ points)"},
+    {"click", "place a point where the cursor is green"},
+    {"O", "circle mode; again: create (if dragged)"},
+    {"drag", "circle: centre at press, radius to cursor"},
+    {"Esc", "cancel drawing, grab or selection; else quit"},
+    {"left drag", "grab a body; release throws it"},
+    {"right click, Del", "remove the body under the cursor"},
+    {"C", "clear what was made; scenery stays"},
+    {"Shift+C", "clear everything"},
+    {"Space", "pause or resume the server"},
+    {".", "step one tick while paused"},
+    {"wheel", "zoom at the cursor"},
+    {"right drag", "pan (middle drag too)"},
+    {"F, Home", "fit the scene to the window"},
+    {"K B V", "contacts, bounding boxes, velocities"},
+    {"X", "show or hide these controls"},
+    {"M", "inspector: click a body, arrows push it"},
+    {"Q / G", "next shapes static / feel gravity"},
+    {"KP 1-5, F5-F9", "SOLID ICE WOOD METAL RUBBER"},
+    {"1-9, F1, 0", "preset 1-9, 10, sandbox"},
+    {"W A S D", "nudge gravity while held"},
+    {"Enter", "reset gravity"},
+    {"", "drawing: sandbox and presets 3, 4"},
+}};
+
+}  // namespace
+
+void drawControlsTable() {
+  if (!ImGui::BeginTable("controls", 2)) return;
+  ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+  const ImVec4 keyColour = ImGui::GetStyleColorVec4(ImGuiCol_Text);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  for (const auto& [key, action] : kControlRows) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextColored(keyColour, "%s", key);
+    ImGui::TableNextColumn();
+    ImGui::TextWrapped("%s", action);
+  }
+  ImGui::PopStyleColor();
+  ImGui::EndTable();
+}
+
+}  // namespace impulse::viewer

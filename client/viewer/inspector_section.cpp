@@ -1,0 +1,77 @@
+#include <numbers>
+
+#include "body_metrics.h"
+#include "impulse/client/number_format.h"
+#include "impulse/wire/convert.h"
+#include "side_panel.h"
+
+namespace impulse::viewer {
+
+namespace {
+
+using client::formatNumber;
+
+std::string vec(const v1::Vec2& v, int decimals) {
+  std::string text = "(";
+  text += formatNumber(v.x(), decimals);
+  text += ", ";
+  text += formatNumber(v.y(), decimals);
+  return text += ")";
+}
+
+std::string yesNo(bool value) { return value ? "yes" : "no"; }
+
+std::string shapeText(const v1::Shape& shape) {
+  const auto decoded = wire::shapeFromWire(shape);
+  return decoded.ok() ? describeShape(*decoded.value) : "unreadable: " + decoded.error;
+}
+
+void row(const char* name, const std::string& value) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextDisabled("%s", name);
+  ImGui::TableNextColumn();
+  ImGui::TextWrapped("%s", value.c_str());
+}
+
+void drawBodyTable(const v1::BodyInfo& info) {
+  const auto& d = info.descriptor();
+  const auto& s = info.state();
+  const auto material = wire::materialFromWire(d.material()).value_or(Material::Solid);
+  const double degrees = s.angle() * 180 / std::numbers::pi;
+  if (!ImGui::BeginTable("body", 2, ImGuiTableFlags_SizingStretchProp)) return;
+  row("id", std::to_string(d.id()));
+  row("shape", shapeText(d.shape()));
+  row("material", materialLabel(material));
+  row("static", yesNo(d.is_static()));
+  row("awake", yesNo(s.awake()));
+  row("gravity", d.ignore_gravity() ? "ignored" : "felt");
+  row("position", vec(s.position(), 3) + " m");
+  row("angle", formatNumber(degrees, 1) + " deg (" + formatNumber(s.angle(), 3) + " rad)");
+  row("velocity", vec(s.velocity(), 3) + " m/s");
+  row("angular vel.", formatNumber(s.angular_velocity(), 3) + " rad/s");
+  row("mass", formatNumber(info.mass(), 3) + " kg");
+  row("inertia", formatNumber(info.inertia(), 4) + " kg m2");
+  row("area", formatNumber(info.area(), 4) + " m2");
+  row("restitution", formatNumber(info.restitution(), 3));
+  row("friction", "static " + formatNumber(info.static_friction(), 3) + ", dynamic " +
+                      formatNumber(info.dynamic_friction(), 3));
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void drawInspectorSection(const Controls& controls, const PanelInput& input) {
+  if (!controls.selectedBody()) {
+    ImGui::TextDisabled("click a body to select it");
+    return;
+  }
+  if (input.inspected == nullptr) {
+    ImGui::Text("body %u: waiting for the server...", *controls.selectedBody());
+    return;
+  }
+  drawBodyTable(*input.inspected);
+  ImGui::TextDisabled("arrows push it, Delete removes it");
+}
+
+}  // namespace impulse::viewer

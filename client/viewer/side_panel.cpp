@@ -1,0 +1,203 @@
+#include "side_panel.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "impulse/client/number_format.h"
+#include "palette.h"
+#include "renderer.h"
+
+namespace impulse::viewer {
+
+namespace {
+
+using client::formatNumber;
+
+constexpr ImGuiWindowFlags kPanelFlags =
+    ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+    ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+ImVec4 colourOf(Colour c) { return ImGui::ColorConvertU32ToFloat4(packed(c)); }
+
+std::string modeName(DrawMode mode) {
+  switch (mode) {
+    case DrawMode::Polygon: return "polygon (P to finish, Esc cancels)";
+    case DrawMode::Circle: return "circle (O to finish, Esc cancels)";
+    case DrawMode::None: break;
+  }
+  return "none (P polygon, O circle)";
+}
+
+ImVec4 linkColour(LinkState link) {
+  switch (link) {
+    case LinkState::Connected: return colourOf(palette::kValid);
+    case LinkState::Connecting: return colourOf(palette::kWarning);
+    case LinkState::Lost: break;
+  }
+  return colourOf(palette::kInvalid);
+}
+
+void drawTitle(const PanelFonts& fonts, const PanelInput& input) {
+  ImGui::PushFont(fonts.title);
+  ImGui::TextWrapped("%s", input.preset != nullptr ? input.preset->title.c_str() : "Impulse");
+  ImGui::PopFont();
+  if (input.preset != nullptr) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colourOf(palette::kDimText));
+    for (const std::string& line : input.preset->explanation) ImGui::TextWrapped("%s", line.c_str());
+    ImGui::PopStyleColor();
+  }
+  // The link first: without it nothing else on the panel means anything.
+  ImGui::PushStyleColor(ImGuiCol_Text, linkColour(input.link));
+  ImGui::TextWrapped("%s", input.linkText.c_str());
+  ImGui::PopStyleColor();
+  if (input.notice) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colourOf(palette::kWarning));
+    ImGui::TextWrapped("%s", input.notice->c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& act) {
+  if (input.link != LinkState::Connected) {
+    ImGui::TextDisabled("not connected: the clock is the server's");
+    return;
+  }
+  if (input.serverPaused) {
+    ImGui::TextColored(colourOf(palette::kWarning), "PAUSED");
+  } else {
+    ImGui::TextColored(colourOf(palette::kValid), "RUNNING");
+  }
+  ImGui::SameLine();
+  ImGui::Text("tick %llu, t = %s s", static_cast<unsigned long long>(input.tick),
+              formatNumber(input.simTime, 2).c_str());
+  if (ImGui::Button(input.serverPaused ? "Resume (Space)" : "Pause (Space)")) {
+    act({Control::TogglePause});
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!input.serverPaused);
+  if (ImGui::Button("Step (.)")) act({Control::StepOnce});
+  ImGui::EndDisabled();
+}
+
+void swatch(Colour fill, Colour outline, float thickness) {
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float size = ImGui::GetTextLineHeight();
+  ImDrawList& list = *ImGui::GetWindowDrawList();
+  list.AddRectFilled(at, {at.x + size, at.y + size}, packed(fill), 3);
+  list.AddRect(at, {at.x + size, at.y + size}, packed(outline), 3, 0, thickness);
+  ImGui::Dummy({size, size});
+  ImGui::SameLine();
+}
+
+void drawLegend(const Controls& controls, const std::function<void(ControlKey)>& act) {
+  for (int index = 0; index < kMaterialCount; ++index) {
+    const Material material = *materialFromIndex(index);
+    swatch(bodyFill(material, false), bodyOutline(material, false, false), 1.5f);
+    const MaterialProperties& p = materialProperties(material);
+    const std::string label = materialLabel(material) + "  " + formatNumber(p.density) +
+                              " kg/m2, e " + formatNumber(p.restitution);
+    ImGui::PushID(index);
+    if (ImGui::Selectable(label.c_str(), controls.material() == material)) {
+      act({Control::SelectMaterial, index});
+    }
+    ImGui::PopID();
+  }
+  swatch(bodyFill(Material::Solid, true), bodyOutline(Material::Solid, true, false), 1.5f);
+  ImGui::TextUnformatted("static scenery");
+  swatch(bodyFill(Material::Solid, false), palette::kSleep, 2.5f);
+  ImGui::TextUnformatted("asleep (violet outline)");
+  swatch(palette::kSceneBackground, palette::kSelection, 2.5f);
+  ImGui::TextUnformatted("selected or grabbed");
+}
+
+void drawNextShape(const Controls& controls, const std::function<void(ControlKey)>& act) {
+  ImGui::Text("Mode: %s", modeName(controls.mode()).c_str());
+  bool isStatic = controls.nextStatic();
+  if (ImGui::Checkbox("Static (Q)", &isStatic)) act({Control::ToggleStatic});
+  ImGui::SameLine();
+  bool gravity = controls.nextFeelsGravity();
+  if (ImGui::Checkbox("Gravity (G)", &gravity)) act({Control::ToggleGravity});
+  ImGui::TextUnformatted("Material (KP 1-5, F5-F9):");
+  drawLegend(controls, act);
+}
+
+void drawGravityDial(const Vec2& gravity) {
+  // The arrow reaches the rim at 12 m/s^2, so Earth's gravity fills most of
+  // the dial and any nudge shows.
+  constexpr float kFullScale = 12;
+  const float radius = 34;
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const ImVec2 centre{at.x + radius + 2, at.y + radius + 2};
+  ImDrawList& list = *ImGui::GetWindowDrawList();
+  list.AddCircle(centre, radius, packed(palette::kDimText), 0, 1.5f);
+  const float g = gravity.norm();
+  if (g > 1e-3f) {
+    const float length = radius * std::min(1.0f, g / kFullScale);
+    const ImVec2 tip{centre.x + gravity.x() / g * length, centre.y - gravity.y() / g * length};
+    const float ux = (tip.x - centre.x) / length;
+    const float uy = (tip.y - centre.y) / length;
+    const ImU32 colour = packed(palette::kGravity);
+    list.AddLine(centre, tip, colour, 3);
+    const float head = 10;
+    list.AddTriangleFilled(tip, {tip.x - head * (ux + 0.5f * uy), tip.y - head * (uy - 0.5f * ux)},
+                           {tip.x - head * (ux - 0.5f * uy), tip.y - head * (uy + 0.5f * ux)},
+                           colour);
+  }
+  ImGui::Dummy({2 * radius + 4, 2 * radius + 4});
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  ImGui::Text("g = (%s, %s) m/s2", formatNumber(gravity.x(), 2).c_str(),
+              formatNumber(gravity.y(), 2).c_str());
+  ImGui::TextDisabled("W A S D nudge");
+  ImGui::TextDisabled("Enter resets");
+  ImGui::EndGroup();
+}
+
+void drawOverlayToggles(Controls& controls) {
+  Overlays& overlays = controls.overlays();
+  ImGui::Checkbox("contacts and normals (K)", &overlays.contacts);
+  ImGui::Checkbox("bounding boxes (B)", &overlays.bounds);
+  ImGui::Checkbox("velocities (V)", &overlays.velocities);
+}
+
+void drawControlsSection(Controls& controls, const std::function<void(ControlKey)>& act) {
+  // X opens and closes this section; clicking its header does the same.
+  ImGui::SetNextItemOpen(controls.panelVisible(), ImGuiCond_Always);
+  const bool open = ImGui::CollapsingHeader("Controls (X)");
+  if (open != controls.panelVisible()) act({Control::TogglePanel});
+  if (open) drawControlsTable();
+}
+
+}  // namespace
+
+void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
+                   const PanelInput& input, const std::function<void(ControlKey)>& act) {
+  ImGui::SetNextWindowPos({rect.x, rect.y});
+  ImGui::SetNextWindowSize({rect.w, rect.h});
+  ImGui::Begin("##side panel", nullptr, kPanelFlags);
+  drawTitle(fonts, input);
+  // Most looked-at first: time, the selected body, the live figures.
+  if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) drawTime(input, act);
+  drawControlsSection(controls, act);
+  if (controls.inspectorVisible() &&
+      ImGui::CollapsingHeader("Inspector (M)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawInspectorSection(controls, input);
+  }
+  if (ImGui::CollapsingHeader("Server and viewer", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawStatsSection(input);
+  }
+  if (ImGui::CollapsingHeader("Debug overlays", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawOverlayToggles(controls);
+  }
+  if (ImGui::CollapsingHeader("Next shape and materials", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawNextShape(controls, act);
+  }
+  if (ImGui::CollapsingHeader("Gravity", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawGravityDial(input.gravity);
+  }
+  ImGui::End();
+}
+
+}  // namespace impulse::viewer
