@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <fstream>
 #include <iostream>
@@ -27,7 +28,7 @@ using Milliseconds = std::chrono::milliseconds;
 constexpr std::size_t kMaxPipelined = 256;
 
 constexpr const char* kUsage =
-    "usage: impulse-cli [--connect HOST:PORT] [--timeout MS] [SCRIPT]\n"
+    "usage: impulse-cli [--connect HOST:PORT] [--timeout MS] [--token T] [SCRIPT]\n"
     "Runs SCRIPT (or stdin) against impulse-server (default 127.0.0.1:7777), one\n"
     "command per line; prints one JSON object per line. Commands:\n"
     "  preset N [MATERIAL] | pause | resume | step N\n"
@@ -36,7 +37,8 @@ constexpr const char* kUsage =
     "  gravity GX GY | nudge DX DY | reset-gravity\n"
     "  clear | remove ID | impulse ID JX JY [PX PY]\n"
     "  query ID | bodies | wait-snapshot | ping\n"
-    "MATERIAL: solid, ice, wood, metal, rubber. '#' starts a comment.\n";
+    "MATERIAL: solid, ice, wood, metal, rubber. '#' starts a comment.\n"
+    "--token (default: the environment's IMPULSE_TOKEN) is sent in Hello.\n";
 
 // Script lines. A file is read directly; stdin is read on its own thread so
 // the connection keeps being serviced (snapshots drained) while a person types.
@@ -228,6 +230,7 @@ int run(const Arguments& arguments) {
 int main(int argc, char** argv) {
   Arguments arguments;
   arguments.connect.name = "impulse-cli";
+  if (const char* token = std::getenv("IMPULSE_TOKEN")) arguments.connect.token = token;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     auto value = [&]() -> std::optional<std::string_view> {
@@ -246,6 +249,13 @@ int main(int argc, char** argv) {
       }
       arguments.connect.host = target->first;
       arguments.connect.port = target->second;
+    } else if (arg == "--token") {
+      const auto text = value();
+      if (!text) {
+        std::fprintf(stderr, "impulse-cli: --token expects a token\n");
+        return 2;
+      }
+      arguments.connect.token = std::string(*text);
     } else if (arg == "--timeout") {
       const auto text = value();
       const long ms = text ? std::atol(std::string(*text).c_str()) : 0;

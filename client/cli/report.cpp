@@ -108,7 +108,10 @@ std::string replyReport(std::size_t line, std::string_view command,
         .member("awake_bodies", s.awake_bodies())
         .member("clients", s.clients())
         .member("last_snapshot_bytes", s.last_snapshot_bytes())
-        .member("snapshots_skipped", s.snapshots_skipped());
+        .member("snapshots_skipped", s.snapshots_skipped())
+        .member("bodies_left_world", s.bodies_left_world())
+        .member("guard_repairs", s.guard_repairs())
+        .member("commands_rate_limited", s.commands_rate_limited());
     report.member("ok", true)
         .member("server_tick", pong.server_tick())
         .key("stats")
