@@ -9,6 +9,7 @@
 #include <span>
 
 #include "fuzz_check.h"
+#include "quiet_protobuf.h"
 #include "impulse.pb.h"
 #include "impulse/server/access.h"
 #include "impulse/server/commands.h"

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "fuzz_check.h"
+#include "quiet_protobuf.h"
 #include "impulse.pb.h"
 #include "impulse/wire/framing.h"
 

@@ -152,6 +152,20 @@ void Session::handleFrame(std::string_view payload) {
   host_.onCommand(shared_from_this(), std::move(message), payload.size());
 }
 
+bool Session::withinRate() {
+  if (rate_.take(Clock::now())) {
+    refusedInARow_ = 0;
+    return true;
+  }
+  // Answering a flood with errors costs the server as much as serving it.
+  if (++refusedInARow_ > 4 * std::size_t(limits_.commandsPerSecond)) {
+    fatal("closed: " + std::to_string(refusedInARow_) +
+          " commands in a row past the rate limit of " +
+          std::to_string(std::size_t(limits_.commandsPerSecond)) + " per second");
+  }
+  return false;
+}
+
 void Session::commandsApplied(std::size_t bytes) {
   const bool wasPaused = pendingCommandBytes_ >= limits_.maxPendingCommandBytes;
   pendingCommandBytes_ -= std::min(bytes, pendingCommandBytes_);

@@ -130,7 +130,7 @@ TEST(HostileClients, RateLimitAnswersEveryCommandOnce_ExcessWithAClearError) {
   ServerProcess server({"--paused", "--max-commands-per-second", "50"});
   Client client(localClient(server.port(), "flooder", false));
   std::vector<v1::ClientMessage> pings;
-  for (int i = 0; i < 300; ++i) pings.push_back(client::ping(std::uint64_t(i)));
+  for (int i = 0; i < 250; ++i) pings.push_back(client::ping(std::uint64_t(i)));
   const auto replies = requestAll(client, pings);
   int answered = 0;
   int limited = 0;
@@ -143,11 +143,27 @@ TEST(HostileClients, RateLimitAnswersEveryCommandOnce_ExcessWithAClearError) {
           << result(reply).error();
     }
   }
-  EXPECT_EQ(answered + limited, 300);
+  EXPECT_EQ(answered + limited, 250);
   // A burst of two seconds' worth (100), plus what refilled meanwhile.
   EXPECT_GE(answered, 100);
   EXPECT_LT(answered, 150);
   EXPECT_EQ(client.poll(milliseconds(100)), 0u);  // nothing answered twice
+}
+
+TEST(HostileClients, ClientThatKeepsFloodingPastTheRateLimitIsClosed) {
+  ServerProcess server({"--max-commands-per-second", "50"});
+  Client observer(localClient(server.port(), "observer", false));
+  RawConnection flooder(server.port());
+  flooder.sendHello();
+  std::string burst;
+  for (int i = 0; i < 1000; ++i) burst += wire::encodeFrame(client::ping(std::uint64_t(i)));
+  flooder.send(burst);
+  const auto error = flooder.receiveError(milliseconds(5000));
+  ASSERT_TRUE(error.has_value());
+  EXPECT_TRUE(mentions(*error, "201 commands in a row past the rate limit of 50 per second"))
+      << *error;
+  EXPECT_TRUE(flooder.waitClosed(milliseconds(5000)));
+  EXPECT_EQ(clientsOnceSettled(observer, 1), 1u);
 }
 
 // Steps of 600 ticks on 600 awake bodies: seconds of work queued by one

@@ -83,7 +83,9 @@ class Session : public std::enable_shared_from_this<Session> {
   bool admin() const { return admin_; }
   void setAdmin(bool admin) { admin_ = admin; }
   /// Takes one command from the client's rate budget: false when over it.
-  bool withinRate() { return rate_.take(Clock::now()); }
+  /// A client refused four seconds' worth of commands in a row is not
+  /// slowing down: it is closed with an Error.
+  bool withinRate();
   /// The peer's IP address ("" when unknown).
   const std::string& address() const { return address_; }
   /// Not closed and not closing after an error.
@@ -122,6 +124,7 @@ class Session : public std::enable_shared_from_this<Session> {
   Clock::time_point connectedAt_;
   Clock::time_point lastReceived_;
   RateLimiter rate_;
+  std::size_t refusedInARow_ = 0;
   bool admin_ = false;
 
   /// Starts small; doubles while reads fill it, shrinks back once they do not.
