@@ -21,8 +21,9 @@ using impulse::Real;
 using impulse::Vec2;
 using impulse::World;
 
-constexpr int kMaxCalls = 48;
-constexpr int kMaxBodies = 24;
+// Small enough for millions of runs, large enough for piles and contacts.
+constexpr int kMaxCalls = 32;
+constexpr int kMaxBodies = 16;
 constexpr Real kDt = Real(1) / Real(60);
 
 // Numbers an attacker would try, besides arbitrary ones.
@@ -128,7 +129,7 @@ bool applyCall(World& world, Calls& calls, std::vector<BodyId>& ids) {
       world.queryPoint(calls.position());
       return true;
     default:
-      for (int i = 1 + calls.pick() % 8; i > 0; --i) {
+      for (int i = 1 + calls.pick() % 4; i > 0; --i) {
         world.step(kDt);
         checkAfterStep(world);
       }

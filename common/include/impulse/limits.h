@@ -4,10 +4,11 @@
 ///
 /// With every accepted input inside these ranges (and shapes inside
 /// ShapeLimits) no product the engine forms can overflow float: positions
-/// stay within a few thousand metres (bodies further out are removed), speeds
-/// within maxSpeed, masses below 1e9 kg, so momenta, energies and squared
-/// distances stay below 1e25. The step guard (World::step) enforces the speed
-/// limits after every step as well, so they hold for the world's whole life.
+/// stay within about 1100 m of the origin (bodies further out are removed),
+/// speeds within maxSpeed, masses below 1e9 kg, so momenta stay below 1e12
+/// and angular momenta and energies below 1e18. The step guard (World::step)
+/// enforces the speed limits after every step as well, so they hold for the
+/// world's whole life.
 
 #include <cstdint>
 #include <optional>
