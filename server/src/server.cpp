@@ -120,21 +120,40 @@ void Server::accept() {
   });
 }
 
-std::string Server::admissionRefusal(const Session& session) const {
+std::string Server::admissionRefusal(const Session& newcomer) {
+  const auto now = Clock::now();
   std::size_t active = 0;
   std::size_t fromAddress = 0;
+  Session* idlest = nullptr;
+  Session* idlestFromAddress = nullptr;
+  auto idler = [](Session* a, Session& b) {
+    return a == nullptr || b.lastReceived() < a->lastReceived() ? &b : a;
+  };
   for (const auto& [id, other] : sessions_) {
     if (!other->acceptingTraffic()) continue;
     ++active;
-    if (other->address() == session.address()) ++fromAddress;
+    const bool sameAddress = other->address() == newcomer.address();
+    fromAddress += sameAddress ? 1 : 0;
+    if (!other->evictable(now)) continue;
+    idlest = idler(idlest, *other);
+    if (sameAddress) idlestFromAddress = idler(idlestFromAddress, *other);
   }
-  if (active >= std::size_t(options_.maxClients)) {
-    return "server is full (" + std::to_string(options_.maxClients) + " clients)";
-  }
+  // A full server (or address) makes room by closing its idlest silent
+  // connection, so clients that say nothing cannot keep anyone out.
+  Session* victim = nullptr;
   if (fromAddress >= std::size_t(options_.maxClientsPerAddress)) {
-    return "too many connections from " + session.address() + " (at most " +
-           std::to_string(options_.maxClientsPerAddress) + " per address)";
+    if (idlestFromAddress == nullptr) {
+      return "too many connections from " + newcomer.address() + " (at most " +
+             std::to_string(options_.maxClientsPerAddress) + " per address)";
+    }
+    victim = idlestFromAddress;
+  } else if (active >= std::size_t(options_.maxClients)) {
+    if (idlest == nullptr) {
+      return "server is full (" + std::to_string(options_.maxClients) + " clients)";
+    }
+    victim = idlest;
   }
+  if (victim != nullptr) victim->evict(now);
   return {};
 }
 

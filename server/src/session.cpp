@@ -21,6 +21,9 @@ constexpr auto kLingerTimeout = std::chrono::seconds(2);
 constexpr std::size_t kMinReadBuffer = 2 * 1024;
 constexpr std::size_t kMaxReadBuffer = 64 * 1024;
 
+// How long a connection must have been silent before a newcomer may evict it.
+constexpr auto kEvictableAfter = std::chrono::seconds(2);
+
 std::string seconds(Clock::duration duration) {
   return std::to_string(std::chrono::duration<double>(duration).count()) + " s";
 }
@@ -324,6 +327,16 @@ void Session::checkTimeouts(Clock::time_point now) {
   if (helloDone_ && !subscribed_ && now - lastReceived_ > limits_.idleTimeout) {
     fatal("idle: sent nothing for " + seconds(limits_.idleTimeout) + " and subscribes to nothing");
   }
+}
+
+bool Session::evictable(Clock::time_point now) const {
+  return acceptingTraffic() && !subscribed_ && queue_.empty() && pendingCommandBytes_ == 0 &&
+         now - lastReceived_ >= kEvictableAfter;
+}
+
+void Session::evict(Clock::time_point now) {
+  fatal("closed to make room for a new connection: sent nothing for " +
+        seconds(now - lastReceived_) + " while the server or this address was full");
 }
 
 void Session::close(const std::string& reason) {

@@ -126,6 +126,23 @@ TEST(HostileClients, ConnectionsPerAddressAreCapped) {
   EXPECT_EQ(clientsOnceSettled(first, 2), 2u);
 }
 
+TEST(HostileClients, SilentClientsCannotKeepANewcomerOut_TheIdlestIsEvicted) {
+  ServerProcess server({"--max-clients-per-address", "2"});
+  RawConnection first(server.port());
+  first.sendHello();
+  std::this_thread::sleep_for(milliseconds(200));
+  RawConnection second(server.port());
+  second.sendHello();
+  std::this_thread::sleep_for(milliseconds(2500));  // both silent for over 2 s
+  Client newcomer(localClient(server.port(), "newcomer", false));
+  EXPECT_GT(newcomer.welcome().client_id(), 0u);
+  // The one silent the longest made room.
+  const auto error = first.receiveError(milliseconds(5000));
+  ASSERT_TRUE(error.has_value());
+  EXPECT_TRUE(mentions(*error, "closed to make room for a new connection")) << *error;
+  EXPECT_EQ(clientsOnceSettled(newcomer, 2), 2u);
+}
+
 TEST(HostileClients, RateLimitAnswersEveryCommandOnce_ExcessWithAClearError) {
   ServerProcess server({"--paused", "--max-commands-per-second", "50"});
   Client client(localClient(server.port(), "flooder", false));

@@ -38,8 +38,9 @@ class Server final : public SessionHost {
 
  private:
   void accept();
-  /// Why a new connection may not be served ("" when it may).
-  std::string admissionRefusal(const Session& session) const;
+  /// Why a new connection may not be served ("" when it may); makes room
+  /// by evicting an idle connection when it can.
+  std::string admissionRefusal(const Session& newcomer);
   /// Applies one queued command for its client, roles checked, and replies.
   void applyQueued(QueuedCommand& queued, Session& session);
   void scheduleTick();

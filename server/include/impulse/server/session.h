@@ -86,6 +86,13 @@ class Session : public std::enable_shared_from_this<Session> {
   /// A client refused four seconds' worth of commands in a row is not
   /// slowing down: it is closed with an Error.
   bool withinRate();
+  /// When the peer last sent bytes (or connected).
+  Clock::time_point lastReceived() const { return lastReceived_; }
+  /// Silent for a while, not subscribed, nothing queued either way: may be
+  /// closed to make room for a new connection.
+  bool evictable(Clock::time_point now) const;
+  /// Closes with an Error saying room was needed.
+  void evict(Clock::time_point now);
   /// The peer's IP address ("" when unknown).
   const std::string& address() const { return address_; }
   /// Not closed and not closing after an error.
