@@ -64,9 +64,12 @@ std::string checkBodyMotion(const InputLimits& limits, const Vec2& linearVelocit
                             Real angularVelocity) {
   if (std::string error = checkFinite(linearVelocity, "velocity"); !error.empty()) return error;
   if (!isFinite(angularVelocity)) return "angular velocity is not a finite number (NaN or infinity)";
-  const MotionCheck motion{length(linearVelocity.x(), linearVelocity.y()),
-                           std::abs(double(angularVelocity))};
-  return checkResultingMotion(limits, motion, "velocity");
+  const MotionCheck linear{length(linearVelocity.x(), linearVelocity.y()), 0};
+  if (std::string error = checkResultingMotion(limits, linear, "velocity"); !error.empty()) {
+    return error;
+  }
+  const MotionCheck angular{0, std::abs(double(angularVelocity))};
+  return checkResultingMotion(limits, angular, "angular velocity");
 }
 
 std::string checkGravity(const InputLimits& limits, const Vec2& gravity) {

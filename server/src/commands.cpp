@@ -85,8 +85,8 @@ class Applier {
     outcome_.changed = true;
   }
 
-  void created(const CreateResult& created) {
-    if (!created.ok()) return fail(created.error);
+  void created(const CreateResult& created, const char* command) {
+    if (!created.ok()) return fail(std::string(command) + ": " + created.error);
     sim_.snapshots().bodyAdded(created.id);
     result_->set_body_id(created.id.value);
     succeed();
@@ -100,7 +100,7 @@ class Applier {
     if (!radius.ok()) return fail(radius.error);
     const auto options = wire::optionsFromWire(command.options());
     if (!options.ok()) return fail("spawn_circle." + options.error);
-    created(world_.createCircle(*center.value, *radius.value, *options.value));
+    created(world_.createCircle(*center.value, *radius.value, *options.value), "spawn_circle");
   }
 
   void spawnPolygon(const v1::SpawnPolygon& command) {
@@ -121,7 +121,7 @@ class Applier {
     }
     const auto options = wire::optionsFromWire(command.options());
     if (!options.ok()) return fail("spawn_polygon." + options.error);
-    created(world_.createPolygon(points, *options.value));
+    created(world_.createPolygon(points, *options.value), "spawn_polygon");
   }
 
   void loadPreset(const v1::LoadPreset& command) {
