@@ -10,6 +10,7 @@
 
 #include "fuzz_check.h"
 #include "quiet_protobuf.h"
+#include "world_invariants.h"
 #include "impulse.pb.h"
 #include "impulse/server/access.h"
 #include "impulse/server/commands.h"
@@ -29,19 +30,6 @@ Simulation makeSimulation() {
   settings.paused = true;
   settings.maxBodies = 64;
   return Simulation(settings);
-}
-
-void checkWorldSane(const impulse::World& world) {
-  const impulse::InputLimits& limits = world.settings().inputLimits;
-  for (const impulse::BodyId id : world.bodyIds()) {
-    const auto state = world.bodyState(id);
-    FUZZ_CHECK(state.has_value());
-    FUZZ_CHECK(impulse::isFinite(state->position) && impulse::isFinite(state->angle));
-    FUZZ_CHECK(impulse::isFinite(state->linearVelocity));
-    FUZZ_CHECK(impulse::isFinite(state->angularVelocity));
-    FUZZ_CHECK(state->linearVelocity.norm() <= limits.maxSpeed * 1.0001f);
-    FUZZ_CHECK(std::abs(state->angularVelocity) <= limits.maxAngularSpeed);
-  }
 }
 
 std::uint64_t replyRequestId(const impulse::v1::ServerMessage& reply) {

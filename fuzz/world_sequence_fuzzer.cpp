@@ -11,7 +11,7 @@
 #include <limits>
 #include <vector>
 
-#include "fuzz_check.h"
+#include "world_invariants.h"
 #include "impulse/world.h"
 
 namespace {
@@ -81,16 +81,8 @@ class Calls {
 };
 
 void checkAfterStep(const World& world) {
-  const impulse::InputLimits& limits = world.settings().inputLimits;
   FUZZ_CHECK(world.bodyCount() <= kMaxBodies);
-  for (const BodyId id : world.bodyIds()) {
-    const auto s = world.bodyState(id);
-    FUZZ_CHECK(s.has_value());
-    FUZZ_CHECK(impulse::isFinite(s->position) && impulse::isFinite(s->angle));
-    FUZZ_CHECK(impulse::isFinite(s->linearVelocity) && impulse::isFinite(s->angularVelocity));
-    FUZZ_CHECK(s->linearVelocity.norm() <= limits.maxSpeed * 1.0001f);
-    FUZZ_CHECK(std::abs(s->angularVelocity) <= limits.maxAngularSpeed);
-  }
+  checkWorldSane(world);
 }
 
 // Applies one call; returns false when the world refused it.

@@ -44,6 +44,18 @@ SessionLimits sessionLimits(const ServerOptions& options) {
   return limits;
 }
 
+// A CommandResult refusing a command before it reached the world.
+v1::ServerMessage refusal(const v1::ClientMessage& message, std::string error,
+                          std::uint64_t tick) {
+  v1::ServerMessage reply;
+  auto* result = reply.mutable_command_result();
+  result->set_request_id(message.request_id());
+  result->set_ok(false);
+  result->set_error(std::move(error));
+  result->set_tick(tick);
+  return reply;
+}
+
 double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -187,15 +199,11 @@ void Server::onCommand(const std::shared_ptr<Session>& session, v1::ClientMessag
   if (!session->withinRate()) {
     // Answered at once and never queued, so a flood costs the tick nothing.
     ++commandsRateLimited_;
-    v1::ServerMessage reply;
-    auto* result = reply.mutable_command_result();
-    result->set_request_id(message.request_id());
-    result->set_ok(false);
-    result->set_error(std::string(commandName(message)) + ": rate limit exceeded (at most " +
-                      std::to_string(options_.maxCommandsPerSecond) +
-                      " commands per second per client); not applied");
-    result->set_tick(simulation_.tick());
-    session->send(reply);
+    session->send(refusal(message,
+                          std::string(commandName(message)) + ": rate limit exceeded (at most " +
+                              std::to_string(options_.maxCommandsPerSecond) +
+                              " commands per second per client); not applied",
+                          simulation_.tick()));
     session->commandsApplied(bytes);
     return;
   }
@@ -264,14 +272,9 @@ void Server::applyCommands() {
 
 void Server::applyQueued(QueuedCommand& queued, Session& session) {
   if (!session.admin()) {
-    if (std::string refusal = ownership_.playerRefusal(queued.message, session.id());
-        !refusal.empty()) {
-      v1::ServerMessage reply;
-      auto* result = reply.mutable_command_result();
-      result->set_request_id(queued.message.request_id());
-      result->set_error(std::move(refusal));
-      result->set_tick(simulation_.tick());
-      session.send(reply);
+    if (std::string error = ownership_.playerRefusal(queued.message, session.id());
+        !error.empty()) {
+      session.send(refusal(queued.message, std::move(error), simulation_.tick()));
       return session.commandsApplied(queued.bytes);
     }
   }
