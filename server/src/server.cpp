@@ -139,7 +139,7 @@ std::string Server::admissionRefusal(const Session& newcomer) {
   Session* idlest = nullptr;
   Session* idlestFromAddress = nullptr;
   auto idler = [](Session* a, Session& b) {
-    return a == nullptr || b.lastReceived() < a->lastReceived() ? &b : a;
+    return a == nullptr || b.lastActive() < a->lastActive() ? &b : a;
   };
   for (const auto& [id, other] : sessions_) {
     if (!other->acceptingTraffic()) continue;

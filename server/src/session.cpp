@@ -37,7 +37,7 @@ Session::Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t 
       id_(id),
       limits_(limits),
       connectedAt_(Clock::now()),
-      lastReceived_(connectedAt_),
+      lastActive_(connectedAt_),
       rate_(limits.commandsPerSecond, 2 * limits.commandsPerSecond, connectedAt_),
       readBuffer_(kMinReadBuffer),
       reader_(limits.maxFrameBytes),
@@ -110,7 +110,7 @@ void Session::onRead(const asio::error_code& ec, std::size_t bytes) {
   readBegin_ = 0;
   readEnd_ = bytes;
   lastReadBytes_ = bytes;
-  lastReceived_ = Clock::now();
+  lastActive_ = Clock::now();
   processBuffered();
 }
 
@@ -170,6 +170,8 @@ bool Session::withinRate() {
 }
 
 void Session::commandsApplied(std::size_t bytes) {
+  // A client waiting for the replies to a backlog is busy, not idle.
+  lastActive_ = Clock::now();
   const bool wasPaused = pendingCommandBytes_ >= limits_.maxPendingCommandBytes;
   pendingCommandBytes_ -= std::min(bytes, pendingCommandBytes_);
   if (wasPaused) readMore();
@@ -324,19 +326,20 @@ void Session::checkTimeouts(Clock::time_point now) {
   }
   // Subscribers are exempt: reading snapshots is their business, and the
   // stall timeout drops them when they stop.
-  if (helloDone_ && !subscribed_ && now - lastReceived_ > limits_.idleTimeout) {
+  if (helloDone_ && !subscribed_ && pendingCommandBytes_ == 0 &&
+      now - lastActive_ > limits_.idleTimeout) {
     fatal("idle: sent nothing for " + seconds(limits_.idleTimeout) + " and subscribes to nothing");
   }
 }
 
 bool Session::evictable(Clock::time_point now) const {
   return acceptingTraffic() && !subscribed_ && queue_.empty() && pendingCommandBytes_ == 0 &&
-         now - lastReceived_ >= kEvictableAfter;
+         now - lastActive_ >= kEvictableAfter;
 }
 
 void Session::evict(Clock::time_point now) {
   fatal("closed to make room for a new connection: sent nothing for " +
-        seconds(now - lastReceived_) + " while the server or this address was full");
+        seconds(now - lastActive_) + " while the server or this address was full");
 }
 
 void Session::close(const std::string& reason) {

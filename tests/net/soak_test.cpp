@@ -186,8 +186,9 @@ TEST(Soak, ManyClientsChurnFloodsAndASlowReader_TickRateHeldEveryCommandAnswered
   EXPECT_GT(churned.load(), 10u);
   EXPECT_GT(floods.load(), 0u);
   EXPECT_GT(slowSnapshots.load(), 0u);
-  EXPECT_LT(rssPeak - rssStart, 32 * 1024);
-  EXPECT_LT(rssAfter - rssStart, 8 * 1024);
+  // AddressSanitizer keeps freed memory in quarantine: looser there.
+  EXPECT_LT(rssPeak - rssStart, (kSanitized ? 128 : 32) * 1024);
+  EXPECT_LT(rssAfter - rssStart, (kSanitized ? 64 : 8) * 1024);
   EXPECT_EQ(clientsOnceSettled(observer, 1), 1u);
 }
 

@@ -86,8 +86,8 @@ class Session : public std::enable_shared_from_this<Session> {
   /// A client refused four seconds' worth of commands in a row is not
   /// slowing down: it is closed with an Error.
   bool withinRate();
-  /// When the peer last sent bytes (or connected).
-  Clock::time_point lastReceived() const { return lastReceived_; }
+  /// When the peer last sent bytes or had a command applied (or connected).
+  Clock::time_point lastActive() const { return lastActive_; }
   /// Silent for a while, not subscribed, nothing queued either way: may be
   /// closed to make room for a new connection.
   bool evictable(Clock::time_point now) const;
@@ -129,7 +129,7 @@ class Session : public std::enable_shared_from_this<Session> {
   std::string peer_;
   std::string address_;
   Clock::time_point connectedAt_;
-  Clock::time_point lastReceived_;
+  Clock::time_point lastActive_;
   RateLimiter rate_;
   std::size_t refusedInARow_ = 0;
   bool admin_ = false;
