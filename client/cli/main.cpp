@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <fstream>
 #include <iostream>
@@ -39,6 +40,7 @@ constexpr const char* kScriptHelp =
     "  clear | remove ID | impulse ID JX JY [PX PY]\n"
     "  query ID | bodies | wait-snapshot | ping\n"
     "MATERIAL: solid, ice, wood, metal, rubber.\n"
+    "--token defaults to the environment's IMPULSE_TOKEN; it is sent in Hello.\n"
     "Exit status: 0 every line succeeded, 1 some line failed, 2 arguments or connection failed.";
 
 // Script lines. A file is read directly; stdin is read on its own thread so
@@ -241,6 +243,9 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", timeoutMs, "wait at most this long for a reply, 1-3600000 (default 10000)")
       ->check(CLI::Range(1L, 3600000L))
       ->option_text("MS");
+  if (const char* token = std::getenv("IMPULSE_TOKEN")) arguments.connect.token = token;
+  app.add_option("--token", arguments.connect.token, "access token sent in Hello (see docs/server.md)")
+      ->option_text("T");
   app.add_option("script", arguments.script, "script file; '-' or none: stdin")
       ->option_text("SCRIPT");
   app.footer(kScriptHelp);

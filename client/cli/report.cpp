@@ -132,7 +132,10 @@ std::string replyReport(std::size_t line, std::string_view command,
                        {"awake_bodies", s.awake_bodies()},
                        {"clients", s.clients()},
                        {"last_snapshot_bytes", s.last_snapshot_bytes()},
-                       {"snapshots_skipped", s.snapshots_skipped()}};
+                       {"snapshots_skipped", s.snapshots_skipped()},
+                       {"bodies_left_world", s.bodies_left_world()},
+                       {"guard_repairs", s.guard_repairs()},
+                       {"commands_rate_limited", s.commands_rate_limited()}};
   } else {
     report["ok"] = false;
     report["error"] = "unexpected reply";

@@ -76,6 +76,7 @@ Client::Client(const ConnectOptions& options) : socket_(io_), reader_(options.ma
   hello.mutable_hello()->set_protocol_version(options.protocolVersion);
   hello.mutable_hello()->set_client_name(options.name);
   hello.mutable_hello()->set_want_snapshots(options.wantSnapshots);
+  hello.mutable_hello()->set_token(options.token);
   send(std::move(hello));
   while (!welcome_.has_world_max()) {
     if (!receiveOne(deadline)) throw ConnectionError("no Welcome from " + target);
@@ -224,10 +225,10 @@ std::size_t Client::poll(Duration timeout) {
   return handled;
 }
 
-v1::Pong Client::ping(Duration timeout) {
+v1::Pong Client::ping(Duration timeout, bool wantStateHash) {
   const auto now = std::chrono::duration_cast<std::chrono::microseconds>(
       std::chrono::system_clock::now().time_since_epoch());
-  auto reply = request(client::ping(std::uint64_t(now.count())), timeout);
+  auto reply = request(client::ping(std::uint64_t(now.count()), wantStateHash), timeout);
   if (!reply.has_pong()) throw ConnectionError("Ping was not answered by a Pong");
   return reply.pong();
 }

@@ -102,9 +102,10 @@ v1::ClientMessage queryBody(std::uint32_t id) {
   return message;
 }
 
-v1::ClientMessage ping(std::uint64_t clientTimeUs) {
+v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash) {
   v1::ClientMessage message;
   message.mutable_ping()->set_client_time_us(clientTimeUs);
+  message.mutable_ping()->set_want_state_hash(wantStateHash);
   return message;
 }
 

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <string>
 
+#include "input_limits.h"
+#include "step_guard.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -59,6 +61,11 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
     return "position is outside the world bounds (" + std::to_string(b.lower.x()) + ", " +
            std::to_string(b.lower.y()) + ") to (" + std::to_string(b.upper.x()) + ", " +
            std::to_string(b.upper.y()) + ")";
+  }
+  if (std::string error = checkBodyMotion(world.settings.inputLimits, def.linearVelocity,
+                                          def.angularVelocity);
+      !error.empty()) {
+    return error;
   }
   if (def.linearDrag < 0 || def.angularDrag < 0) return "drag must not be negative";
   if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
@@ -219,6 +226,7 @@ void World::clear() {
   WorldSettings settings = impl_->settings;
   impl_ = std::make_unique<WorldData>();
   impl_->settings = settings;
+  guard_.escaped.clear();
 }
 
 bool World::isValid(BodyId id) const { return impl_->find(id) != nullptr; }
@@ -260,55 +268,47 @@ int World::awakeBodyCount() const { return static_cast<int>(impl_->awakeBodies.s
 int World::contactCount() const { return static_cast<int>(impl_->contactByPair.size()); }
 std::span<const BodyId> World::movedBodies() const { return impl_->movedBodies; }
 
-void World::setGravity(const Vec2& gravity) {
-  if (!isFinite(gravity)) return;
+InputResult World::setGravity(const Vec2& gravity) {
+  if (std::string error = checkGravity(impl_->settings.inputLimits, gravity); !error.empty()) {
+    return {error};
+  }
   impl_->settings.gravity = gravity;
   // Resting bodies must feel the new gravity.
   for (std::size_t slot = 0; slot < impl_->bodies.size(); ++slot) {
     wakeIsland(*impl_, static_cast<std::int32_t>(slot));
   }
+  return {};
 }
 
 Vec2 World::gravity() const { return impl_->settings.gravity; }
 
-namespace {
-
-// The awake body a push (impulse or force) may act on, or null for an
-// unknown id, a static body or non-finite input.
-Body* pushableBody(WorldData& w, BodyId id, const Vec2& push, const std::optional<Vec2>& point) {
-  Body* body = w.find(id);
-  if (body == nullptr || body->isStatic || !isFinite(push) || (point && !isFinite(*point))) {
-    return nullptr;
-  }
-  wakeIsland(w, id.slot());
-  return body;
-}
-
-}  // namespace
-
-bool World::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
-  Body* body = pushableBody(*impl_, id, impulse, point);
-  if (body == nullptr) return false;
+InputResult World::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
+  if (std::string error = checkImpulse(*impl_, id, impulse, point); !error.empty()) return {error};
+  Body* body = impl_->find(id);
+  wakeIsland(*impl_, id.slot());
   body->linearVelocity += body->invMass * impulse;
   if (point) body->angularVelocity += body->invInertia * cross(*point - body->transform.p, impulse);
-  return true;
+  return {};
 }
 
-bool World::applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point) {
-  Body* body = pushableBody(*impl_, id, force, point);
-  if (body == nullptr) return false;
+InputResult World::applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point) {
+  if (std::string error = checkForce(*impl_, id, force, point); !error.empty()) return {error};
+  Body* body = impl_->find(id);
+  wakeIsland(*impl_, id.slot());
   body->force += force;
   if (point) body->torque += cross(*point - body->transform.p, force);
-  return true;
+  return {};
 }
 
-bool World::setVelocity(BodyId id, const Vec2& linear, Real angular) {
+InputResult World::setVelocity(BodyId id, const Vec2& linear, Real angular) {
+  if (std::string error = checkSetVelocity(*impl_, id, linear, angular); !error.empty()) {
+    return {error};
+  }
   Body* body = impl_->find(id);
-  if (body == nullptr || body->isStatic || !isFinite(linear) || !isFinite(angular)) return false;
   wakeIsland(*impl_, id.slot());
   body->linearVelocity = linear;
   body->angularVelocity = angular;
-  return true;
+  return {};
 }
 
 std::optional<BodyId> World::queryPoint(const Vec2& point) const {
@@ -351,10 +351,16 @@ void World::step(Real dt) {
   updateSleep(w, dt);
   profile.sleep = millisecondsSince(phase);
 
+  guardStep(w, guard_);
+  for (BodyId id : guard_.escaped) destroyBody(id);
+
   profile.total = millisecondsSince(start);
   ++w.stepCount;
   w.time += dt;
 }
+
+std::span<const BodyId> World::escapedBodies() const { return guard_.escaped; }
+const StepGuardReport& World::guardReport() const { return guard_; }
 
 const WorldSettings& World::settings() const { return impl_->settings; }
 

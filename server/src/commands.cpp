@@ -41,7 +41,7 @@ class Applier {
         nudgeGravity(message_.nudge_gravity());
         break;
       case C::kResetGravity:
-        changeGravity(kDefaultGravity);
+        changeGravity(kDefaultGravity, "reset_gravity");
         break;
       case C::kClear:
         clear();
@@ -85,8 +85,8 @@ class Applier {
     outcome_.changed = true;
   }
 
-  void created(const CreateResult& created) {
-    if (!created.ok()) return fail(created.error);
+  void created(const CreateResult& created, const char* command) {
+    if (!created.ok()) return fail(std::string(command) + ": " + created.error);
     sim_.snapshots().bodyAdded(created.id);
     result_->set_body_id(created.id.value);
     succeed();
@@ -100,7 +100,7 @@ class Applier {
     if (!radius.ok()) return fail(radius.error);
     const auto options = wire::optionsFromWire(command.options());
     if (!options.ok()) return fail("spawn_circle." + options.error);
-    created(world_.createCircle(*center.value, *radius.value, *options.value));
+    created(world_.createCircle(*center.value, *radius.value, *options.value), "spawn_circle");
   }
 
   void spawnPolygon(const v1::SpawnPolygon& command) {
@@ -121,7 +121,7 @@ class Applier {
     }
     const auto options = wire::optionsFromWire(command.options());
     if (!options.ok()) return fail("spawn_polygon." + options.error);
-    created(world_.createPolygon(points, *options.value));
+    created(world_.createPolygon(points, *options.value), "spawn_polygon");
   }
 
   void loadPreset(const v1::LoadPreset& command) {
@@ -140,36 +140,26 @@ class Applier {
     succeed();
   }
 
-  void changeGravity(const Vec2& gravity) {
-    world_.setGravity(gravity);
+  void changeGravity(const Vec2& gravity, const char* command) {
+    if (InputResult changed = world_.setGravity(gravity); !changed) {
+      return fail(std::string(command) + ": " + changed.error);
+    }
     sim_.snapshots().worldChanged();
     succeed();
-  }
-
-  std::string checkGravity(const Vec2& gravity) const {
-    if (std::abs(gravity.x()) > limits_.maxGravity || std::abs(gravity.y()) > limits_.maxGravity) {
-      return "gravity components must lie within +-" + std::to_string(int(limits_.maxGravity)) +
-             " m/s^2";
-    }
-    return {};
   }
 
   void setGravity(const v1::SetGravity& command) {
     if (!command.has_gravity()) return fail("set_gravity: gravity is missing");
     const auto gravity = wire::vecFromWire(command.gravity(), "set_gravity.gravity");
     if (!gravity.ok()) return fail(gravity.error);
-    if (auto error = checkGravity(*gravity.value); !error.empty())
-      return fail("set_gravity: " + error);
-    changeGravity(*gravity.value);
+    changeGravity(*gravity.value, "set_gravity");
   }
 
   void nudgeGravity(const v1::NudgeGravity& command) {
     if (!command.has_delta()) return fail("nudge_gravity: delta is missing");
     const auto delta = wire::vecFromWire(command.delta(), "nudge_gravity.delta");
     if (!delta.ok()) return fail(delta.error);
-    const Vec2 gravity = world_.gravity() + *delta.value;
-    if (auto error = checkGravity(gravity); !error.empty()) return fail("nudge_gravity: " + error);
-    changeGravity(gravity);
+    changeGravity(world_.gravity() + *delta.value, "nudge_gravity");
   }
 
   void clear() {
@@ -186,11 +176,6 @@ class Applier {
 
   void applyImpulse(const v1::ApplyImpulse& command) {
     const BodyId id{command.body_id()};
-    const auto description = world_.bodyDescription(id);
-    if (!description) return fail("apply_impulse: " + unknownBody(id.value));
-    if (description->isStatic) {
-      return fail("apply_impulse: body " + std::to_string(id.value) + " is static");
-    }
     if (!command.has_impulse()) return fail("apply_impulse: impulse is missing");
     const auto impulse = wire::vecFromWire(command.impulse(), "apply_impulse.impulse");
     if (!impulse.ok()) return fail(impulse.error);
@@ -200,9 +185,8 @@ class Applier {
       if (!p.ok()) return fail(p.error);
       point = *p.value;
     }
-    if (!world_.applyImpulse(id, *impulse.value, point)) {
-      return fail("apply_impulse: the engine refused the impulse on body " +
-                  std::to_string(id.value));
+    if (InputResult applied = world_.applyImpulse(id, *impulse.value, point); !applied) {
+      return fail("apply_impulse: " + applied.error);
     }
     sim_.snapshots().bodyChanged(id);
     succeed();

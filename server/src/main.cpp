@@ -12,7 +12,7 @@
 int main(int argc, char** argv) {
   using namespace impulse::server;
   const std::vector<std::string_view> args(argv + 1, argv + argc);
-  const auto parsed = parseOptions(args);
+  const auto parsed = parseOptions(args, optionsFromEnvironment());
   if (parsed.help) {
     std::fputs(usage().c_str(), stdout);
     return 0;

@@ -2,10 +2,12 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <vector>
 
 #include "impulse/preset.h"
+#include "impulse/server/access.h"
 
 namespace impulse::server {
 
@@ -50,6 +52,21 @@ std::string realFlag(std::string_view name, std::string_view text, double min, d
            std::to_string(max) + ", got '" + std::string(text) + "'";
   }
   out = *value;
+  return {};
+}
+
+std::string secretFlag(std::string_view name, std::string_view text, std::string& out) {
+  if (text.empty()) return std::string(name) + " expects a non-empty token";
+  out = std::string(text);
+  return {};
+}
+
+// Empty when the access settings are consistent (PROTOCOL.md, Access).
+std::string checkAccess(const ServerOptions& options) {
+  if (!isLoopbackAddress(options.bind) && options.token.empty()) {
+    return "refusing to bind " + options.bind +
+           " without a token: give --token (or IMPULSE_TOKEN), or bind 127.0.0.1";
+  }
   return {};
 }
 
@@ -99,6 +116,30 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 64, 64 << 20, o.maxFrameBytes);
        }},
+      {"--idle-timeout", true,
+       "SECONDS  drop a client that sends nothing and subscribes to nothing for this long "
+       "(default 30)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return realFlag(f, v, 0.1, 86400, o.idleTimeoutSeconds);
+       }},
+      {"--max-clients-per-address", true, "N  simultaneous connections from one address (default 16)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 10000, o.maxClientsPerAddress);
+       }},
+      {"--max-commands-per-second", true,
+       "N  commands per second per client, after a burst of 2 s worth (default 2000)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 1000000, o.maxCommandsPerSecond);
+       }},
+      {"--token", true, "T  clients must send Hello.token = T (or the admin token); env IMPULSE_TOKEN",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return secretFlag(f, v, o.token);
+       }},
+      {"--admin-token", true,
+       "A  Hello.token = A gives the admin role, other clients are players; env IMPULSE_ADMIN_TOKEN",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return secretFlag(f, v, o.adminToken);
+       }},
       {"--stall-timeout", true,
        "SECONDS  drop a client that accepts no data (or sends no Hello) for this long "
        "(default 10)",
@@ -111,8 +152,8 @@ const std::vector<Flag>& flags() {
 
 }  // namespace
 
-ParsedOptions parseOptions(std::span<const std::string_view> args) {
-  ServerOptions options;
+ParsedOptions parseOptions(std::span<const std::string_view> args, const ServerOptions& defaults) {
+  ServerOptions options = defaults;
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string_view arg = args[i];
     if (arg == "--help" || arg == "-h") return {std::nullopt, true, {}};
@@ -147,7 +188,15 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
   if (options.snapshotHz > options.tickHz) {
     return {std::nullopt, false, "--snapshot-hz may not exceed --tick-hz"};
   }
+  if (std::string error = checkAccess(options); !error.empty()) return {std::nullopt, false, error};
   return {options, false, {}};
+}
+
+ServerOptions optionsFromEnvironment() {
+  ServerOptions options;
+  if (const char* token = std::getenv("IMPULSE_TOKEN")) options.token = token;
+  if (const char* admin = std::getenv("IMPULSE_ADMIN_TOKEN")) options.adminToken = admin;
+  return options;
 }
 
 std::string usage() {

@@ -1,5 +1,7 @@
 #include "impulse/server/server.h"
 
+#include <malloc.h>
+
 #include <cmath>
 #include <vector>
 
@@ -13,6 +15,8 @@ namespace {
 constexpr auto kHousekeepingInterval = std::chrono::milliseconds(100);
 constexpr auto kStatsLogInterval = std::chrono::seconds(30);
 constexpr auto kAcceptRetryDelay = std::chrono::milliseconds(100);
+// malloc_trim walks the heap: at most this often, and only after closes.
+constexpr auto kTrimInterval = std::chrono::seconds(2);
 
 Clock::duration periodOf(double hz) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
@@ -34,7 +38,22 @@ SessionLimits sessionLimits(const ServerOptions& options) {
   limits.maxPendingCommandBytes = std::max<std::size_t>(options.maxFrameBytes, 256 * 1024);
   limits.stallTimeout = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(options.stallTimeoutSeconds));
+  limits.idleTimeout = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(options.idleTimeoutSeconds));
+  limits.commandsPerSecond = options.maxCommandsPerSecond;
   return limits;
+}
+
+// A CommandResult refusing a command before it reached the world.
+v1::ServerMessage refusal(const v1::ClientMessage& message, std::string error,
+                          std::uint64_t tick) {
+  v1::ServerMessage reply;
+  auto* result = reply.mutable_command_result();
+  result->set_request_id(message.request_id());
+  result->set_ok(false);
+  result->set_error(std::move(error));
+  result->set_tick(tick);
+  return reply;
 }
 
 double millisecondsSince(Clock::time_point start) {
@@ -51,7 +70,8 @@ Server::Server(asio::io_context& io, const ServerOptions& options)
       simulation_(simulationSettings(options)),
       sessionLimits_(sessionLimits(options)),
       schedule_(periodOf(options.tickHz), Clock::now()),
-      tickTimes_(std::size_t(std::ceil(options.tickHz))) {
+      tickTimes_(std::size_t(std::ceil(options.tickHz))),
+      tokens_{options.token, options.adminToken} {
   const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
@@ -64,6 +84,7 @@ void Server::start() {
   schedule_ = TickSchedule(periodOf(options_.tickHz), now);
   lastHousekeeping_ = now;
   lastStatsLog_ = now;
+  lastTrim_ = now;
   lastSnapshotSlot_ = snapshotSlot();
   logLine("serving preset " + std::to_string(options_.preset) + " at " +
           std::to_string(options_.tickHz) + " Hz" + (options_.paused ? ", paused" : ""));
@@ -78,7 +99,7 @@ void Server::stop() {
   asio::error_code ignored;
   acceptor_.close(ignored);
   timer_.cancel();
-  commands_.clear();
+  commands_ = FairQueue();
   std::vector<std::shared_ptr<Session>> sessions;
   for (const auto& [id, session] : sessions_) sessions.push_back(session);
   for (const auto& session : sessions) session->close("server shutting down");
@@ -98,13 +119,12 @@ void Server::accept() {
       });
       return;
     }
-    std::size_t active = 0;
-    for (const auto& [id, session] : sessions_) active += session->acceptingTraffic() ? 1 : 0;
     const std::uint32_t id = nextClientId_++;
     auto session = std::make_shared<Session>(std::move(socket), *this, id, sessionLimits_);
+    const std::string refusal = admissionRefusal(*session);
     sessions_[id] = session;
-    if (active >= std::size_t(options_.maxClients)) {
-      session->reject("server is full (" + std::to_string(options_.maxClients) + " clients)");
+    if (!refusal.empty()) {
+      session->reject(refusal);
     } else {
       session->start();
     }
@@ -112,7 +132,47 @@ void Server::accept() {
   });
 }
 
+std::string Server::admissionRefusal(const Session& newcomer) {
+  const auto now = Clock::now();
+  std::size_t active = 0;
+  std::size_t fromAddress = 0;
+  Session* idlest = nullptr;
+  Session* idlestFromAddress = nullptr;
+  auto idler = [](Session* a, Session& b) {
+    return a == nullptr || b.lastActive() < a->lastActive() ? &b : a;
+  };
+  for (const auto& [id, other] : sessions_) {
+    if (!other->acceptingTraffic()) continue;
+    ++active;
+    const bool sameAddress = other->address() == newcomer.address();
+    fromAddress += sameAddress ? 1 : 0;
+    if (!other->evictable(now)) continue;
+    idlest = idler(idlest, *other);
+    if (sameAddress) idlestFromAddress = idler(idlestFromAddress, *other);
+  }
+  // A full server (or address) makes room by closing its idlest silent
+  // connection, so clients that say nothing cannot keep anyone out.
+  Session* victim = nullptr;
+  if (fromAddress >= std::size_t(options_.maxClientsPerAddress)) {
+    if (idlestFromAddress == nullptr) {
+      return "too many connections from " + newcomer.address() + " (at most " +
+             std::to_string(options_.maxClientsPerAddress) + " per address)";
+    }
+    victim = idlestFromAddress;
+  } else if (active >= std::size_t(options_.maxClients)) {
+    if (idlest == nullptr) {
+      return "server is full (" + std::to_string(options_.maxClients) + " clients)";
+    }
+    victim = idlest;
+  }
+  if (victim != nullptr) victim->evict(now);
+  return {};
+}
+
 void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& hello) {
+  const Admission admission = admit(tokens_, hello.token());
+  if (!admission.error.empty()) return session->reject(admission.error);
+  session->setAdmin(admission.admin);
   v1::ServerMessage message;
   auto* welcome = message.mutable_welcome();
   welcome->set_protocol_version(wire::kProtocolVersion);
@@ -127,17 +187,33 @@ void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& h
   welcome->set_max_frame_bytes(std::uint32_t(options_.maxFrameBytes));
   welcome->set_max_bodies(std::uint32_t(options_.maxBodies));
   welcome->set_max_step_ticks(limits_.maxStepTicks);
+  welcome->set_admin(admission.admin);
+  welcome->set_max_commands_per_second(std::uint32_t(options_.maxCommandsPerSecond));
+  welcome->set_idle_timeout(options_.idleTimeoutSeconds);
   session->send(message);
   if (hello.want_snapshots()) session->subscribe();
 }
 
 void Server::onCommand(const std::shared_ptr<Session>& session, v1::ClientMessage&& message,
                        std::size_t bytes) {
-  commands_.push_back({session, std::move(message), bytes});
+  if (!session->withinRate()) {
+    // Answered at once and never queued, so a flood costs the tick nothing.
+    ++commandsRateLimited_;
+    session->send(refusal(message,
+                          std::string(commandName(message)) + ": rate limit exceeded (at most " +
+                              std::to_string(options_.maxCommandsPerSecond) +
+                              " commands per second per client); not applied",
+                          simulation_.tick()));
+    session->commandsApplied(bytes);
+    return;
+  }
+  commands_.push(session->id(), std::move(message), bytes);
 }
 
 void Server::onClosed(Session& session) {
   snapshotsSkipped_ += session.snapshotsSkipped();
+  commands_.dropClient(session.id());
+  ++closedSinceTrim_;
   sessions_.erase(session.id());
 }
 
@@ -177,24 +253,39 @@ void Server::runTick() {
 }
 
 void Server::applyCommands() {
-  // In arrival order, within a time budget: commands left over (behind a long
-  // Step or a burst of preset loads) wait for the next tick, still in order,
-  // so sockets keep being serviced in between.
+  // Round-robin over the clients' queues (each client's own commands in
+  // arrival order), within a time budget: commands left over (behind a long
+  // Step or a burst of preset loads) wait for the next tick, so sockets keep
+  // being serviced in between.
   const auto start = Clock::now();
   const auto budget = schedule_.period() / 2;
   std::size_t applied = 0;
   const std::size_t available = commands_.size();
   while (applied < available && Clock::now() - start < budget) {
-    QueuedCommand queued = std::move(commands_.front());
-    commands_.pop_front();
+    auto queued = commands_.pop();
     ++applied;
-    const bool ping = queued.message.has_ping();
-    const auto outcome =
-        applyCommand(simulation_, queued.message, limits_, ping ? stats() : v1::ServerStats());
-    queued.session->send(outcome.reply);
-    queued.session->commandsApplied(queued.bytes);
-    if (outcome.stepped || (outcome.changed && simulation_.paused())) broadcastSnapshot();
+    // Closed clients' queues are dropped, so the session is always there.
+    const auto session = sessions_.find(queued->client);
+    if (session != sessions_.end()) applyQueued(*queued, *session->second);
   }
+}
+
+void Server::applyQueued(QueuedCommand& queued, Session& session) {
+  if (!session.admin()) {
+    if (std::string error = ownership_.playerRefusal(queued.message, session.id());
+        !error.empty()) {
+      session.send(refusal(queued.message, std::move(error), simulation_.tick()));
+      return session.commandsApplied(queued.bytes);
+    }
+  }
+  const bool ping = queued.message.has_ping();
+  const bool withHash = ping && queued.message.ping().want_state_hash();
+  const auto outcome = applyCommand(simulation_, queued.message, limits_,
+                                    ping ? stats(withHash) : v1::ServerStats());
+  ownership_.recordOutcome(queued.message, outcome.reply, session.id(), simulation_.world());
+  session.send(outcome.reply);
+  session.commandsApplied(queued.bytes);
+  if (outcome.stepped || (outcome.changed && simulation_.paused())) broadcastSnapshot();
 }
 
 std::int64_t Server::snapshotSlot() const {
@@ -222,7 +313,7 @@ void Server::broadcastSnapshot() {
   for (const auto& session : subscribers) session->offerSnapshot(snapshotSequence_, delta);
 }
 
-v1::ServerStats Server::stats() const {
+v1::ServerStats Server::stats(bool withStateHash) {
   v1::ServerStats stats;
   stats.set_uptime_us(std::uint64_t(
       std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - schedule_.start())
@@ -241,11 +332,23 @@ v1::ServerStats Server::stats() const {
   std::uint64_t skipped = snapshotsSkipped_;
   for (const auto& [id, session] : sessions_) skipped += session->snapshotsSkipped();
   stats.set_snapshots_skipped(skipped);
-  stats.set_state_hash(simulation_.world().stateHash());
+  if (withStateHash) stats.set_state_hash(simulation_.stateHash());
+  stats.set_bodies_left_world(simulation_.bodiesLeftWorld());
+  stats.set_guard_repairs(simulation_.world().guardReport().repairedBodies);
+  stats.set_commands_rate_limited(commandsRateLimited_);
+  stats.set_commands_queued(commands_.size());
   return stats;
 }
 
+void Server::releaseMemory(Clock::time_point now) {
+  if (closedSinceTrim_ == 0 || now - lastTrim_ < kTrimInterval) return;
+  closedSinceTrim_ = 0;
+  lastTrim_ = now;
+  malloc_trim(0);
+}
+
 void Server::housekeeping(Clock::time_point now) {
+  releaseMemory(now);
   if (now - lastHousekeeping_ >= kHousekeepingInterval) {
     lastHousekeeping_ = now;
     std::vector<std::shared_ptr<Session>> sessions;
@@ -254,7 +357,7 @@ void Server::housekeeping(Clock::time_point now) {
   }
   if (now - lastStatsLog_ >= kStatsLogInterval) {
     lastStatsLog_ = now;
-    const auto s = stats();
+    const auto s = stats(false);
     logLine("tick " + std::to_string(simulation_.tick()) + ": tick " +
             std::to_string(s.mean_tick_ms()) + " ms mean, " + std::to_string(s.max_tick_ms()) +
             " ms max; " + std::to_string(s.bodies()) + " bodies (" +

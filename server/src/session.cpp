@@ -16,6 +16,17 @@ constexpr std::size_t kMaxGather = 32;
 constexpr int kSendBufferBytes = 512 * 1024;
 // How long a connection closed for an error drains input before it is reset.
 constexpr auto kLingerTimeout = std::chrono::seconds(2);
+// Read buffer range: most clients send a few small commands per tick, and a
+// thousand idle connections should cost little; a flood earns the large one.
+constexpr std::size_t kMinReadBuffer = 2 * 1024;
+constexpr std::size_t kMaxReadBuffer = 64 * 1024;
+
+// How long a connection must have been silent before a newcomer may evict it.
+constexpr auto kEvictableAfter = std::chrono::seconds(2);
+
+std::string seconds(Clock::duration duration) {
+  return std::to_string(std::chrono::duration<double>(duration).count()) + " s";
+}
 
 }  // namespace
 
@@ -26,11 +37,17 @@ Session::Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t 
       id_(id),
       limits_(limits),
       connectedAt_(Clock::now()),
+      lastActive_(connectedAt_),
+      rate_(limits.commandsPerSecond, 2 * limits.commandsPerSecond, connectedAt_),
+      readBuffer_(kMinReadBuffer),
       reader_(limits.maxFrameBytes),
       lastWriteProgress_(connectedAt_) {
   asio::error_code ec;
   const auto remote = socket_.remote_endpoint(ec);
-  if (!ec) peer_ = remote.address().to_string() + ":" + std::to_string(remote.port());
+  if (!ec) {
+    address_ = remote.address().to_string();
+    peer_ = address_ + ":" + std::to_string(remote.port());
+  }
   // Replies are small and latency matters more than packet count.
   socket_.set_option(asio::ip::tcp::no_delay(true), ec);
   // A fixed kernel send buffer (instead of autotuning up to several MiB)
@@ -58,11 +75,20 @@ void Session::readMore() {
     if (closeAfterFlush_ || pendingCommandBytes_ >= limits_.maxPendingCommandBytes) return;
     if (readBegin_ < readEnd_) return processBuffered();
   }
+  sizeReadBuffer();
   reading_ = true;
   socket_.async_read_some(asio::buffer(readBuffer_),
                           [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
                             self->onRead(ec, n);
                           });
+}
+
+void Session::sizeReadBuffer() {
+  std::size_t wanted = readBuffer_.size();
+  if (lastReadBytes_ == readBuffer_.size()) wanted = std::min(wanted * 2, kMaxReadBuffer);
+  if (lastReadBytes_ < kMinReadBuffer) wanted = kMinReadBuffer;
+  // A new vector, not resize(): shrinking must give the memory back.
+  if (wanted != readBuffer_.size()) readBuffer_ = std::vector<char>(wanted);
 }
 
 void Session::onRead(const asio::error_code& ec, std::size_t bytes) {
@@ -83,6 +109,8 @@ void Session::onRead(const asio::error_code& ec, std::size_t bytes) {
   }
   readBegin_ = 0;
   readEnd_ = bytes;
+  lastReadBytes_ = bytes;
+  lastActive_ = Clock::now();
   processBuffered();
 }
 
@@ -127,7 +155,23 @@ void Session::handleFrame(std::string_view payload) {
   host_.onCommand(shared_from_this(), std::move(message), payload.size());
 }
 
+bool Session::withinRate() {
+  if (rate_.take(Clock::now())) {
+    refusedInARow_ = 0;
+    return true;
+  }
+  // Answering a flood with errors costs the server as much as serving it.
+  if (++refusedInARow_ > 4 * std::size_t(limits_.commandsPerSecond)) {
+    fatal("closed: " + std::to_string(refusedInARow_) +
+          " commands in a row past the rate limit of " +
+          std::to_string(std::size_t(limits_.commandsPerSecond)) + " per second");
+  }
+  return false;
+}
+
 void Session::commandsApplied(std::size_t bytes) {
+  // A client waiting for the replies to a backlog is busy, not idle.
+  lastActive_ = Clock::now();
   const bool wasPaused = pendingCommandBytes_ >= limits_.maxPendingCommandBytes;
   pendingCommandBytes_ -= std::min(bytes, pendingCommandBytes_);
   if (wasPaused) readMore();
@@ -273,13 +317,29 @@ void Session::checkTimeouts(Clock::time_point now) {
     if (now - lingerSince_ > kLingerTimeout) close("closed after error");
     return;
   }
-  const auto seconds = std::chrono::duration<double>(limits_.stallTimeout).count();
   if (writing_ && now - lastWriteProgress_ > limits_.stallTimeout) {
-    return close("stalled: accepted no data for " + std::to_string(seconds) + " s");
+    return close("stalled: accepted no data for " + seconds(limits_.stallTimeout));
   }
-  if (!helloDone_ && !closeAfterFlush_ && now - connectedAt_ > limits_.stallTimeout) {
-    fatal("no Hello within " + std::to_string(seconds) + " s");
+  if (closeAfterFlush_) return;
+  if (!helloDone_ && now - connectedAt_ > limits_.stallTimeout) {
+    return fatal("no Hello within " + seconds(limits_.stallTimeout));
   }
+  // Subscribers are exempt: reading snapshots is their business, and the
+  // stall timeout drops them when they stop.
+  if (helloDone_ && !subscribed_ && pendingCommandBytes_ == 0 &&
+      now - lastActive_ > limits_.idleTimeout) {
+    fatal("idle: sent nothing for " + seconds(limits_.idleTimeout) + " and subscribes to nothing");
+  }
+}
+
+bool Session::evictable(Clock::time_point now) const {
+  return acceptingTraffic() && !subscribed_ && queue_.empty() && pendingCommandBytes_ == 0 &&
+         now - lastActive_ >= kEvictableAfter;
+}
+
+void Session::evict(Clock::time_point now) {
+  fatal("closed to make room for a new connection: sent nothing for " +
+        seconds(now - lastActive_) + " while the server or this address was full");
 }
 
 void Session::close(const std::string& reason) {

@@ -31,6 +31,18 @@ void Simulation::step() {
   stepTimes_.record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   snapshots_.stepped(world_.movedBodies());
+  for (const BodyId id : world_.escapedBodies()) snapshots_.bodyLeftWorld(id);
+  bodiesLeftWorld_ += world_.escapedBodies().size();
+}
+
+std::uint64_t Simulation::stateHash() {
+  // Every change to the world goes through the snapshot builder, whose
+  // version therefore names the world's state.
+  if (hashVersion_ != snapshots_.version()) {
+    hash_ = world_.stateHash();
+    hashVersion_ = snapshots_.version();
+  }
+  return hash_;
 }
 
 bool Simulation::loadPreset(int id, Material selected) {

@@ -57,6 +57,11 @@ void SnapshotBuilder::bodyRemoved(BodyId id) {
   markDirty();
 }
 
+void SnapshotBuilder::bodyLeftWorld(BodyId id) {
+  leftWorld_.push_back(id);
+  bodyRemoved(id);
+}
+
 void SnapshotBuilder::bodyChanged(BodyId id) {
   changed_.push_back(id);
   compactChanged();
@@ -83,6 +88,7 @@ void SnapshotBuilder::worldReplaced(const PresetInfo& preset) {
   replaced_ = true;
   added_.clear();
   removed_.clear();
+  leftWorld_.clear();
   changed_.clear();
   markDirty();
 }
@@ -90,6 +96,7 @@ void SnapshotBuilder::worldReplaced(const PresetInfo& preset) {
 void SnapshotBuilder::discardPending() {
   added_.clear();
   removed_.clear();
+  leftWorld_.clear();
   changed_.clear();
   replaced_ = false;
   pending_ = false;
@@ -108,6 +115,7 @@ SharedFrame SnapshotBuilder::takeDelta(const SnapshotMeta& meta) {
 
   sortUnique(removed_);
   for (const BodyId id : removed_) snapshot->add_removed(id.value);
+  for (const BodyId id : leftWorld_) snapshot->add_left_world(id.value);
 
   sortUnique(added_);
   for (const BodyId id : added_) {

@@ -8,17 +8,6 @@ namespace {
 using client::Client;
 using Clock = std::chrono::steady_clock;
 
-std::uint32_t clientsOnceSettled(Client& observer, std::uint32_t expected) {
-  const auto deadline = Clock::now() + milliseconds(3000);
-  std::uint32_t clients = 0;
-  while (Clock::now() < deadline) {
-    clients = observer.ping().stats().clients();
-    if (clients == expected) break;
-    std::this_thread::sleep_for(milliseconds(20));
-  }
-  return clients;
-}
-
 TEST(Churn, HundredClientsConnectAndDisconnectInALoop) {
   ServerProcess server({"--preset", "8"});
   Client observer(localClient(server.port(), "observer", false));

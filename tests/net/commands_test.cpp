@@ -226,7 +226,7 @@ TEST(ServerSession, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
       {"second hello", hello, "hello was already received"},
       {"no command", empty, "carries no command"},
   };
-  const auto statsBefore = client.ping().stats();
+  const auto statsBefore = client.ping(milliseconds(10000), true).stats();
   for (const auto& refusal : refusals) {
     const auto reply = client.request(refusal.command);
     ASSERT_TRUE(reply.has_command_result()) << refusal.what;
@@ -236,7 +236,8 @@ TEST(ServerSession, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
         << refusal.what << ": " << reply.command_result().error();
   }
   // Nothing changed: the same bodies in bit-identical states, same gravity.
-  const auto statsAfter = client.ping().stats();
+  const auto statsAfter = client.ping(milliseconds(10000), true).stats();
+  ASSERT_NE(statsBefore.state_hash(), 0u);
   EXPECT_EQ(statsAfter.bodies(), statsBefore.bodies());
   EXPECT_EQ(statsAfter.state_hash(), statsBefore.state_hash());
   EXPECT_EQ(client.mirror().gravity(), Vec2(0, -9.81f));

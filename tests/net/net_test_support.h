@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "impulse/client/client.h"
@@ -66,6 +68,19 @@ inline std::vector<v1::ClientMessage> circleGrid(bool rising) {
     }
   }
   return commands;
+}
+
+/// The server's client count once it equals `expected` (connections closed
+/// for an error linger a moment), or the last count after three seconds.
+inline std::uint32_t clientsOnceSettled(client::Client& observer, std::uint32_t expected) {
+  const auto deadline = std::chrono::steady_clock::now() + milliseconds(3000);
+  std::uint32_t clients = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    clients = observer.ping().stats().clients();
+    if (clients == expected) break;
+    std::this_thread::sleep_for(milliseconds(20));
+  }
+  return clients;
 }
 
 inline const v1::CommandResult& result(const v1::ServerMessage& reply) {

@@ -26,7 +26,9 @@ TEST(ServerOptions, AcceptsSeparateAndInlineValues) {
   const auto parsed =
       parse({"--port", "0", "--tick-hz=120", "--snapshot-hz", "20", "--paused", "--preset=9",
              "--bind", "0.0.0.0", "--max-clients", "3", "--max-bodies", "500", "--max-frame-bytes",
-             "4096", "--substeps", "8", "--stall-timeout", "2.5"});
+             "4096", "--substeps", "8", "--stall-timeout", "2.5", "--token", "t0k3n",
+             "--admin-token=adm1n", "--idle-timeout", "7", "--max-clients-per-address", "5",
+             "--max-commands-per-second", "300"});
   ASSERT_TRUE(parsed.options) << parsed.error;
   const auto& o = *parsed.options;
   EXPECT_EQ(o.port, 0);
@@ -40,6 +42,25 @@ TEST(ServerOptions, AcceptsSeparateAndInlineValues) {
   EXPECT_EQ(o.maxFrameBytes, 4096u);
   EXPECT_EQ(o.subSteps, 8);
   EXPECT_EQ(o.stallTimeoutSeconds, 2.5);
+  EXPECT_EQ(o.token, "t0k3n");
+  EXPECT_EQ(o.adminToken, "adm1n");
+  EXPECT_EQ(o.idleTimeoutSeconds, 7);
+  EXPECT_EQ(o.maxClientsPerAddress, 5);
+  EXPECT_EQ(o.maxCommandsPerSecond, 300);
+}
+
+TEST(ServerOptions, RefusesToBindBeyondLoopbackWithoutAToken) {
+  const auto open = parse({"--bind", "0.0.0.0"});
+  EXPECT_FALSE(open.options);
+  EXPECT_NE(open.error.find("refusing to bind 0.0.0.0 without a token"), std::string::npos)
+      << open.error;
+  EXPECT_TRUE(parse({"--bind", "127.0.0.2"}).options);
+  EXPECT_TRUE(parse({"--bind", "::1"}).options);
+  // The token may come from the environment (main passes it as a default).
+  ServerOptions fromEnvironment;
+  fromEnvironment.token = "secret";
+  const std::vector<std::string_view> args = {"--bind", "0.0.0.0"};
+  EXPECT_TRUE(parseOptions(args, fromEnvironment).options);
 }
 
 TEST(ServerOptions, RefusesBadValuesWithTheFlagName) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impulse/body.h"
+#include "impulse/limits.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
 
@@ -60,6 +61,8 @@ struct WorldSettings {
   /// Hard cap on live bodies (the server lowers it).
   int maxBodies = 200000;
   ShapeLimits shapeLimits;
+  /// Speeds, spins, gravity, forces and how far out bodies may go.
+  InputLimits inputLimits;
 };
 
 /// Wall-clock milliseconds spent in each phase of the last step.
@@ -127,21 +130,31 @@ class World {
   /// that fell asleep in it (a client needs their final rest state).
   std::span<const BodyId> movedBodies() const;
 
-  void setGravity(const Vec2& gravity);
+  /// Refused (world unchanged) outside InputLimits::maxGravity.
+  InputResult setGravity(const Vec2& gravity);
   Vec2 gravity() const;
 
-  /// Wakes the body. The point defaults to the centre of mass. False for an
-  /// unknown id, a static body or a non-finite vector.
-  bool applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point = std::nullopt);
-  /// Force applied over the next step only.
-  bool applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point = std::nullopt);
-  bool setVelocity(BodyId id, const Vec2& linear, Real angular);
+  /// Wakes the body. The point defaults to the centre of mass. Refused, with
+  /// the reason, for an unknown id, a static body, a non-finite vector, a
+  /// point outside the bounds grown by the escape margin, or a push that
+  /// would take the body past the speed limits (InputLimits).
+  InputResult applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point = std::nullopt);
+  /// Force applied over the next step only; refused when the forces pending
+  /// on the body would exceed InputLimits' accelerations.
+  InputResult applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point = std::nullopt);
+  InputResult setVelocity(BodyId id, const Vec2& linear, Real angular);
 
   /// The body whose shape contains the point (the topmost-created if several).
   std::optional<BodyId> queryPoint(const Vec2& point) const;
 
-  /// Advances the world by dt seconds (sub-stepped internally).
+  /// Advances the world by dt seconds (sub-stepped internally). Ends with the
+  /// step guard: no non-finite number and no speed past the limits leaves a
+  /// step, and bodies far outside the bounds are removed.
   void step(Real dt);
+  /// Bodies the last step removed for leaving the bounds far behind.
+  std::span<const BodyId> escapedBodies() const;
+  /// What the step guard did (repairs and clamps since creation).
+  const StepGuardReport& guardReport() const;
 
   const WorldSettings& settings() const;
   /// Changes solver parameters between steps (gravity and bounds included).
@@ -156,6 +169,7 @@ class World {
 
  private:
   std::unique_ptr<WorldData> impl_;
+  StepGuardReport guard_;
 };
 
 }  // namespace impulse

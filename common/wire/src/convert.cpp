@@ -103,6 +103,9 @@ Decoded<Vec2> vecFromWire(const v1::Vec2& v, std::string_view what) {
 
 std::optional<Material> materialFromWire(int material) {
   if (material == v1::MATERIAL_UNSPECIFIED) return Material::Solid;
+  // Checked before subtracting: the wire may carry INT_MIN, and INT_MIN - 1
+  // overflows.
+  if (material < 0) return std::nullopt;
   return materialFromIndex(material - 1);
 }
 

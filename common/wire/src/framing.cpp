@@ -61,12 +61,14 @@ FrameReader::Result FrameReader::feed(std::span<const char> bytes) {
     if ((byte & 0x80) == 0) {
       inBody_ = true;
       received_ = 0;
-      body_.resize(std::size_t(length_));
+      // Grown as bytes arrive, not sized from the header: a peer that
+      // announces a large frame and sends little holds little memory.
+      body_.clear();
     }
   }
 
   const std::size_t take = std::min(bytes.size() - used, std::size_t(length_) - received_);
-  std::copy_n(bytes.data() + used, take, body_.data() + received_);
+  body_.append(bytes.data() + used, take);
   received_ += take;
   used += take;
   if (received_ < length_) return {Status::NeedMore, used};

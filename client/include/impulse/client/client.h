@@ -42,6 +42,8 @@ struct ConnectOptions {
   int receiveBufferBytes = 0;
   /// Sent in Hello; only tests change it.
   std::uint32_t protocolVersion = wire::kProtocolVersion;
+  /// Hello.token: the server's token, or its admin token for the admin role.
+  std::string token;
 };
 
 /// "HOST:PORT" (or "[V6]:PORT") split; nothing when malformed.
@@ -83,7 +85,8 @@ class Client {
   }
 
   /// Round-trip: a Ping answered after every earlier command was applied.
-  v1::Pong ping(Duration timeout = Duration(10000));
+  /// With `wantStateHash` the stats carry the world's state hash.
+  v1::Pong ping(Duration timeout = Duration(10000), bool wantStateHash = false);
 
  private:
   /// Runs the socket until a message is received or the deadline passes.

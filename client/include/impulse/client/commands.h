@@ -40,6 +40,7 @@ v1::ClientMessage applyImpulse(std::uint32_t id, Point impulse,
 v1::ClientMessage setPaused(bool paused);
 v1::ClientMessage step(std::uint32_t ticks);
 v1::ClientMessage queryBody(std::uint32_t id);
-v1::ClientMessage ping(std::uint64_t clientTimeUs);
+/// With `wantStateHash` the Pong's stats carry the world's state hash.
+v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
 
 }  // namespace impulse::client

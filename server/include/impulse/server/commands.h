@@ -11,8 +11,6 @@ struct CommandLimits {
   /// Step.ticks range: ten seconds of simulated time at 60 Hz, so one Step
   /// holds the server's thread for at most a second or two.
   std::uint32_t maxStepTicks = 600;
-  /// Largest gravity component, m/s^2.
-  double maxGravity = 1000;
 };
 
 struct CommandOutcome {

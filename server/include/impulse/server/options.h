@@ -25,6 +25,20 @@ struct ServerOptions {
   /// A client with unsent data that accepts no byte for this long is
   /// disconnected; so is one that has not said Hello by then.
   double stallTimeoutSeconds = 10;
+  /// A client past Hello that sends nothing and subscribes to nothing for
+  /// this long is disconnected (subscribers are covered by the stall timeout).
+  double idleTimeoutSeconds = 30;
+  /// Simultaneous connections from one IP address.
+  int maxClientsPerAddress = 16;
+  /// Per-client command rate; a burst of two seconds' worth is allowed (a
+  /// tool spawning a few thousand bodies at once). Past it a command is
+  /// answered with an error at once and not applied.
+  int maxCommandsPerSecond = 2000;
+  /// Access (PROTOCOL.md): required in Hello when set; required to bind
+  /// anything but loopback.
+  std::string token;
+  /// Grants the admin role; without it every client is admin.
+  std::string adminToken;
 };
 
 /// Outcome of parsing: options, a request for help, or an error message.
@@ -34,9 +48,14 @@ struct ParsedOptions {
   std::string error;
 };
 
-/// Parses the arguments after the program name. Accepts `--flag value` and
-/// `--flag=value`; every value is range-checked.
-ParsedOptions parseOptions(std::span<const std::string_view> args);
+/// Parses the arguments after the program name over `defaults`. Accepts
+/// `--flag value` and `--flag=value`; every value is range-checked. A bind
+/// address other than loopback without a token is refused.
+ParsedOptions parseOptions(std::span<const std::string_view> args,
+                           const ServerOptions& defaults = {});
+
+/// Defaults taken from the environment: IMPULSE_TOKEN, IMPULSE_ADMIN_TOKEN.
+ServerOptions optionsFromEnvironment();
 
 /// The --help text.
 std::string usage();

@@ -6,11 +6,12 @@
 
 #include <asio.hpp>
 #include <cstdint>
-#include <deque>
 #include <map>
 #include <memory>
 
+#include "impulse/server/access.h"
 #include "impulse/server/commands.h"
+#include "impulse/server/fair_queue.h"
 #include "impulse/server/options.h"
 #include "impulse/server/session.h"
 #include "impulse/server/simulation.h"
@@ -36,13 +37,12 @@ class Server final : public SessionHost {
   std::pair<SharedFrame, std::uint64_t> currentFullSnapshot() override;
 
  private:
-  struct QueuedCommand {
-    std::shared_ptr<Session> session;
-    v1::ClientMessage message;
-    std::size_t bytes = 0;
-  };
-
   void accept();
+  /// Why a new connection may not be served ("" when it may); makes room
+  /// by evicting an idle connection when it can.
+  std::string admissionRefusal(const Session& newcomer);
+  /// Applies one queued command for its client, roles checked, and replies.
+  void applyQueued(QueuedCommand& queued, Session& session);
   void scheduleTick();
   void onTimer();
   void runTick();
@@ -51,7 +51,10 @@ class Server final : public SessionHost {
   /// Snapshots are due when floor(tick * snapshot_hz / tick_hz) changes.
   std::int64_t snapshotSlot() const;
   bool snapshotDue() const;
-  v1::ServerStats stats() const;
+  v1::ServerStats stats(bool withStateHash);
+  /// Gives freed heap back to the system after connections closed (a flood
+  /// of them would otherwise leave the process large).
+  void releaseMemory(Clock::time_point now);
   void housekeeping(Clock::time_point now);
 
   asio::io_context& io_;
@@ -66,7 +69,12 @@ class Server final : public SessionHost {
 
   std::map<std::uint32_t, std::shared_ptr<Session>> sessions_;
   std::uint32_t nextClientId_ = 1;
-  std::deque<QueuedCommand> commands_;
+  FairQueue commands_;
+  AccessTokens tokens_;
+  Ownership ownership_;
+  std::uint64_t commandsRateLimited_ = 0;
+  std::uint64_t closedSinceTrim_ = 0;
+  Clock::time_point lastTrim_;
 
   std::uint64_t snapshotSequence_ = 0;
   std::int64_t lastSnapshotSlot_ = 0;

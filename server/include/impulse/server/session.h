@@ -8,14 +8,15 @@
 /// pauses beyond it), replies up to a cap (the session is dropped beyond it)
 /// and at most one unsent snapshot, which a newer one replaces.
 
-#include <array>
 #include <asio.hpp>
 #include <cstdint>
 #include <deque>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "impulse.pb.h"
+#include "impulse/server/rate_limiter.h"
 #include "impulse/server/snapshot_builder.h"
 #include "impulse/server/tick_schedule.h"
 #include "impulse/wire/framing.h"
@@ -46,6 +47,11 @@ struct SessionLimits {
   /// Commands waiting for the next tick; reading pauses past this.
   std::size_t maxPendingCommandBytes = std::size_t(1) << 20;
   Clock::duration stallTimeout = std::chrono::seconds(10);
+  /// A client past Hello that neither sends nor subscribes for this long is dropped.
+  Clock::duration idleTimeout = std::chrono::seconds(30);
+  /// Commands per second before commands are refused, after a burst of
+  /// two seconds' worth.
+  double commandsPerSecond = 2000;
 };
 
 class Session : public std::enable_shared_from_this<Session> {
@@ -73,6 +79,22 @@ class Session : public std::enable_shared_from_this<Session> {
   std::uint32_t id() const { return id_; }
   bool closed() const { return closed_; }
   bool helloDone() const { return helloDone_; }
+  /// The role granted at Hello (PROTOCOL.md, Access).
+  bool admin() const { return admin_; }
+  void setAdmin(bool admin) { admin_ = admin; }
+  /// Takes one command from the client's rate budget: false when over it.
+  /// A client refused four seconds' worth of commands in a row is not
+  /// slowing down: it is closed with an Error.
+  bool withinRate();
+  /// When the peer last sent bytes or had a command applied (or connected).
+  Clock::time_point lastActive() const { return lastActive_; }
+  /// Silent for a while, not subscribed, nothing queued either way: may be
+  /// closed to make room for a new connection.
+  bool evictable(Clock::time_point now) const;
+  /// Closes with an Error saying room was needed.
+  void evict(Clock::time_point now);
+  /// The peer's IP address ("" when unknown).
+  const std::string& address() const { return address_; }
   /// Not closed and not closing after an error.
   bool acceptingTraffic() const { return !closed_ && !closeAfterFlush_; }
   const std::string& name() const { return name_; }
@@ -85,6 +107,7 @@ class Session : public std::enable_shared_from_this<Session> {
   };
 
   void readMore();
+  void sizeReadBuffer();
   void onRead(const asio::error_code& ec, std::size_t bytes);
   void processBuffered();
   void handleFrame(std::string_view payload);
@@ -104,9 +127,16 @@ class Session : public std::enable_shared_from_this<Session> {
   SessionLimits limits_;
   std::string name_;
   std::string peer_;
+  std::string address_;
   Clock::time_point connectedAt_;
+  Clock::time_point lastActive_;
+  RateLimiter rate_;
+  std::size_t refusedInARow_ = 0;
+  bool admin_ = false;
 
-  std::array<char, 64 * 1024> readBuffer_{};
+  /// Starts small; doubles while reads fill it, shrinks back once they do not.
+  std::vector<char> readBuffer_;
+  std::size_t lastReadBytes_ = 0;
   std::size_t readBegin_ = 0;
   std::size_t readEnd_ = 0;
   wire::FrameReader reader_;

@@ -43,6 +43,10 @@ class Simulation {
   SnapshotMeta meta() const { return {tick_, simTime(), paused_}; }
   /// Wall-clock milliseconds of the world steps over the last second.
   const TickTimes& stepTimes() const { return stepTimes_; }
+  /// World::stateHash(), computed at most once per change of the world.
+  std::uint64_t stateHash();
+  /// Bodies removed so far for leaving the world bounds far behind.
+  std::uint64_t bodiesLeftWorld() const { return bodiesLeftWorld_; }
 
  private:
   double tickHz_;
@@ -51,6 +55,9 @@ class Simulation {
   std::uint64_t tick_ = 0;
   bool paused_ = false;
   TickTimes stepTimes_;
+  std::uint64_t bodiesLeftWorld_ = 0;
+  std::uint64_t hash_ = 0;
+  std::uint64_t hashVersion_ = ~std::uint64_t(0);
 };
 
 }  // namespace impulse::server

@@ -33,6 +33,9 @@ class SnapshotBuilder {
 
   void bodyAdded(BodyId id);
   void bodyRemoved(BodyId id);
+  /// The step removed a body for leaving the world bounds far behind: listed
+  /// in the next delta's `removed` and `left_world`.
+  void bodyLeftWorld(BodyId id);
   /// A state changed outside a step (an impulse while paused).
   void bodyChanged(BodyId id);
   /// After each step: the world's moved bodies.
@@ -53,6 +56,8 @@ class SnapshotBuilder {
   /// Every body now, as a ServerMessage frame.
   SharedFrame full(const SnapshotMeta& meta);
   const PresetInfo& preset() const { return preset_; }
+  /// Changes with every change noted (step, command, replacement).
+  std::uint64_t version() const { return version_; }
 
  private:
   void markDirty();
@@ -62,6 +67,7 @@ class SnapshotBuilder {
   PresetInfo preset_;
   std::vector<BodyId> added_;
   std::vector<BodyId> removed_;
+  std::vector<BodyId> leftWorld_;
   std::vector<BodyId> changed_;
   bool pending_ = false;
   bool replaced_ = false;

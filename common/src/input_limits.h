@@ -1,0 +1,23 @@
+#pragma once
+// Checks of pushes on existing bodies against InputLimits (input_limits.cpp).
+// They read the body's mass and motion, so they live beside the private
+// world state. Each returns an empty string when the push is accepted.
+
+#include <optional>
+#include <string>
+
+#include "impulse/limits.h"
+#include "world_data.h"
+
+namespace impulse {
+
+/// An impulse (N*s) at `point` (default: the centre of mass).
+std::string checkImpulse(const WorldData& world, BodyId id, const Vec2& impulse,
+                         const std::optional<Vec2>& point);
+/// A force (N) at `point`, added to the forces already pending for the step.
+std::string checkForce(const WorldData& world, BodyId id, const Vec2& force,
+                       const std::optional<Vec2>& point);
+/// New velocities of a body.
+std::string checkSetVelocity(const WorldData& world, BodyId id, const Vec2& linear, Real angular);
+
+}  // namespace impulse

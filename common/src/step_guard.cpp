@@ -1,0 +1,93 @@
+// The step guard. Input limits keep every accepted number in a range where
+// float cannot overflow, so this should never repair anything; it exists so
+// that a solver bug or an input path nobody thought of still cannot let NaN
+// or infinity out of a step (SPEC: "no NaN or infinite state, ever").
+
+#include "step_guard.h"
+
+#include <algorithm>
+
+namespace impulse {
+
+namespace {
+
+bool stateIsFinite(const Body& body) {
+  return isFinite(body.transform.p) && isFinite(body.transform.q.c) &&
+         isFinite(body.transform.q.s) && isFinite(body.linearVelocity) &&
+         isFinite(body.angularVelocity);
+}
+
+// Warm-start impulses computed from a broken state would carry it into the
+// next step through every neighbour.
+void forgetContactImpulses(WorldData& world, const Body& body) {
+  for (std::int32_t key = body.contactHead; key != kNullIndex;) {
+    Contact& contact = world.contacts[edgeContact(key)];
+    for (ManifoldPoint& point : contact.manifold.points) {
+      point.normalImpulse = 0;
+      point.tangentImpulse = 0;
+    }
+    contact.manifold.rollingImpulse = 0;
+    key = contact.edgeNext[edgeSide(key)];
+  }
+}
+
+void repair(WorldData& world, std::int32_t slot) {
+  Body& body = world.bodies[slot];
+  body.transform = {body.center0, body.rotation0};
+  // center0 came out of the previous (guarded) step or a validated creation;
+  // the world origin is the fallback should even that be broken.
+  if (!isFinite(body.transform.p)) body.transform.p.setZero();
+  if (!isFinite(body.transform.q.c) || !isFinite(body.transform.q.s)) body.transform.q = Rot{};
+  body.linearVelocity.setZero();
+  body.angularVelocity = 0;
+  body.force.setZero();
+  body.torque = 0;
+  forgetContactImpulses(world, body);
+  world.broadPhase.updateProxy(body.proxyKey, bodyAABB(world, slot));
+}
+
+// True when the body was slowed.
+bool clampSpeeds(Body& body, const InputLimits& limits) {
+  bool clamped = false;
+  const Real speed = body.linearVelocity.norm();
+  if (speed > limits.maxSpeed) {
+    body.linearVelocity *= limits.maxSpeed / speed;
+    clamped = true;
+  }
+  if (std::abs(body.angularVelocity) > limits.maxAngularSpeed) {
+    body.angularVelocity = std::copysign(limits.maxAngularSpeed, body.angularVelocity);
+    clamped = true;
+  }
+  return clamped;
+}
+
+bool farOutside(const AABB& bounds, Real margin, const Vec2& p) {
+  return p.x() < bounds.lower.x() - margin || p.y() < bounds.lower.y() - margin ||
+         p.x() > bounds.upper.x() + margin || p.y() > bounds.upper.y() + margin;
+}
+
+}  // namespace
+
+void guardStep(WorldData& world, StepGuardReport& report) {
+  report.escaped.clear();
+  const InputLimits& limits = world.settings.inputLimits;
+  for (BodyId id : world.movedBodies) {
+    const std::int32_t slot = id.slot();
+    Body& body = world.bodies[slot];
+    if (!stateIsFinite(body)) {
+      repair(world, slot);
+      ++report.repairedBodies;
+    }
+    if (clampSpeeds(body, limits)) ++report.clampedBodies;
+    if (farOutside(world.settings.bounds, limits.escapeMargin, body.transform.p)) {
+      report.escaped.push_back(id);
+    }
+  }
+  if (report.escaped.empty()) return;
+  std::sort(report.escaped.begin(), report.escaped.end());
+  std::erase_if(world.movedBodies, [&](BodyId id) {
+    return std::binary_search(report.escaped.begin(), report.escaped.end(), id);
+  });
+}
+
+}  // namespace impulse

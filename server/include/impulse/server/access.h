@@ -1,0 +1,58 @@
+#pragma once
+/// Access (PROTOCOL.md): tokens at Hello, the admin and player roles, and
+/// which bodies a player created.
+///
+/// Without tokens every client is admin (the loopback default). With an admin
+/// token configured, clients that did not present it are players: they may
+/// spawn, push and remove only the bodies they created, query and ping;
+/// world-wide commands (clear, presets, pause, step, gravity) are refused.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+#include "impulse.pb.h"
+#include "impulse/world.h"
+
+namespace impulse::server {
+
+struct AccessTokens {
+  /// Required in every Hello when not empty.
+  std::string token;
+  /// Grants the admin role when not empty; without it every client is admin.
+  std::string adminToken;
+};
+
+/// A Hello's outcome: an error to close the connection with, or the role.
+struct Admission {
+  std::string error;
+  bool admin = false;
+};
+
+Admission admit(const AccessTokens& tokens, std::string_view offered);
+
+/// True for an address the loopback default may bind ("127.x", "::1", "localhost").
+bool isLoopbackAddress(std::string_view address);
+
+/// The wire name of a command ("spawn_circle", "clear", ...).
+std::string_view commandName(const v1::ClientMessage& message);
+
+/// Bodies created by player clients, by body id.
+class Ownership {
+ public:
+  /// Why a player may not run this command (empty when it may).
+  std::string playerRefusal(const v1::ClientMessage& message, std::uint32_t client) const;
+  /// After a command was applied: remembers what a client spawned and
+  /// forgets what a command removed. Bounded by the world's body limit.
+  void recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
+                     std::uint32_t client, const World& world);
+
+ private:
+  std::string ownershipRefusal(std::string_view command, std::uint32_t body,
+                               std::uint32_t client) const;
+
+  std::unordered_map<std::uint32_t, std::uint32_t> ownerOf_;
+};
+
+}  // namespace impulse::server

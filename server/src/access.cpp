@@ -1,0 +1,120 @@
+#include "impulse/server/access.h"
+
+#include <algorithm>
+
+namespace impulse::server {
+
+namespace {
+
+// Compares without returning early, so the time taken does not tell an
+// attacker how many leading characters of a guess were right.
+bool sameSecret(std::string_view a, std::string_view b) {
+  unsigned char difference = a.size() == b.size() ? 0 : 1;
+  const std::size_t n = std::max(a.size(), b.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const unsigned char x = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+    const unsigned char y = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+    difference |= static_cast<unsigned char>(x ^ y);
+  }
+  return difference == 0;
+}
+
+bool worldWide(v1::ClientMessage::CommandCase command) {
+  using C = v1::ClientMessage;
+  switch (command) {
+    case C::kLoadPreset:
+    case C::kSetGravity:
+    case C::kNudgeGravity:
+    case C::kResetGravity:
+    case C::kClear:
+    case C::kSetPaused:
+    case C::kStep:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// The body a remove_body or apply_impulse acts on.
+std::uint32_t targetBody(const v1::ClientMessage& message) {
+  return message.has_remove_body() ? message.remove_body().body_id()
+                                   : message.apply_impulse().body_id();
+}
+
+}  // namespace
+
+Admission admit(const AccessTokens& tokens, std::string_view offered) {
+  const bool isAdmin = !tokens.adminToken.empty() && sameSecret(offered, tokens.adminToken);
+  if (!tokens.token.empty() && !isAdmin && !sameSecret(offered, tokens.token)) {
+    return {offered.empty() ? "this server requires a token (Hello.token)"
+                            : "Hello.token is not valid for this server",
+            false};
+  }
+  return {{}, tokens.adminToken.empty() || isAdmin};
+}
+
+bool isLoopbackAddress(std::string_view address) {
+  return address == "localhost" || address == "::1" || address.starts_with("127.");
+}
+
+std::string_view commandName(const v1::ClientMessage& message) {
+  using C = v1::ClientMessage;
+  switch (message.command_case()) {
+    case C::kHello: return "hello";
+    case C::kSpawnCircle: return "spawn_circle";
+    case C::kSpawnPolygon: return "spawn_polygon";
+    case C::kLoadPreset: return "load_preset";
+    case C::kSetGravity: return "set_gravity";
+    case C::kNudgeGravity: return "nudge_gravity";
+    case C::kResetGravity: return "reset_gravity";
+    case C::kClear: return "clear";
+    case C::kRemoveBody: return "remove_body";
+    case C::kApplyImpulse: return "apply_impulse";
+    case C::kSetPaused: return "set_paused";
+    case C::kStep: return "step";
+    case C::kQueryBody: return "query_body";
+    case C::kPing: return "ping";
+    case C::COMMAND_NOT_SET: break;
+  }
+  return "(no command)";
+}
+
+std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint32_t client) const {
+  const std::string_view command = commandName(message);
+  if (worldWide(message.command_case())) {
+    return std::string(command) +
+           ": refused for the player role (it changes everyone's world: the admin role, "
+           "Hello.token = the admin token, is needed)";
+  }
+  if (message.has_remove_body() || message.has_apply_impulse()) {
+    return ownershipRefusal(command, targetBody(message), client);
+  }
+  return {};
+}
+
+std::string Ownership::ownershipRefusal(std::string_view command, std::uint32_t body,
+                                        std::uint32_t client) const {
+  const auto it = ownerOf_.find(body);
+  if (it != ownerOf_.end() && it->second == client) return {};
+  return std::string(command) + ": refused for the player role: body " + std::to_string(body) +
+         " was not created by this client (players act on their own bodies only)";
+}
+
+void Ownership::recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
+                              std::uint32_t client, const World& world) {
+  if (!reply.has_command_result() || !reply.command_result().ok()) return;
+  if (message.has_spawn_circle() || message.has_spawn_polygon()) {
+    ownerOf_[reply.command_result().body_id()] = client;
+  } else if (message.has_remove_body()) {
+    ownerOf_.erase(message.remove_body().body_id());
+  } else if (message.has_clear() || message.has_load_preset()) {
+    ownerOf_.clear();
+  }
+  // Bodies also leave by falling out of the world: forget them in one sweep
+  // once the map could outgrow the body limit.
+  if (ownerOf_.size() > 2 * std::size_t(world.settings().maxBodies)) {
+    std::erase_if(ownerOf_, [&](const auto& entry) { return !world.isValid(BodyId{entry.first}); });
+  }
+}
+
+}  // namespace impulse::server

@@ -1,0 +1,19 @@
+#include "impulse/server/rate_limiter.h"
+
+#include <algorithm>
+
+namespace impulse::server {
+
+RateLimiter::RateLimiter(double rate, double burst, Clock::time_point now)
+    : rate_(rate), burst_(burst), tokens_(burst), last_(now) {}
+
+bool RateLimiter::take(Clock::time_point now) {
+  const double elapsed = std::chrono::duration<double>(now - last_).count();
+  last_ = now;
+  tokens_ = std::min(burst_, tokens_ + std::max(0.0, elapsed) * rate_);
+  if (tokens_ < 1) return false;
+  tokens_ -= 1;
+  return true;
+}
+
+}  // namespace impulse::server
