@@ -1,6 +1,7 @@
 // The contact solver's passes eight constraints at a time on AVX2. Only the
-// code below the pragma is compiled for AVX2, and it runs only after
-// wideContactKernels() found the CPU able to; the headers above it (the
+// code below the pragma (GCC's target pragma, clang's attribute region) is
+// compiled for AVX2, and it runs only after wideContactKernels() found the
+// CPU able to; the headers above it (the
 // standard library's included) stay plain x86-64, so nothing this file
 // shares with others by name carries AVX2 instructions.
 
@@ -15,7 +16,11 @@
 #include "contact_solver_wide.h"
 #include "world_data.h"
 
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC target("avx2")
+#endif
 
 #include "simd_avx2.h"
 
@@ -47,3 +52,7 @@ const WideContactKernels& avx2WideContactKernels() {
 }
 
 }  // namespace impulse
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#endif
