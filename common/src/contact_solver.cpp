@@ -12,6 +12,13 @@ Vec2 pointVelocity(const SolverState& state, const Vec2& anchor) {
   return state.linearVelocity + cross(state.angularVelocity, anchor);
 }
 
+// Relative velocity of B's anchor over A's along the normal (positive:
+// separating).
+Real normalVelocity(const SolverState& a, const SolverState& b, const ContactConstraint& c,
+                    const ConstraintPoint& cp) {
+  return (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(c.normal);
+}
+
 void applyImpulse(SolverState& a, SolverState& b, const ContactConstraint& c, const Vec2& anchorA,
                   const Vec2& anchorB, const Vec2& impulse) {
   a.linearVelocity -= c.invMassA * impulse;
@@ -68,7 +75,7 @@ void solveNormalRows(ContactConstraint& c, SolverState& a, SolverState& b, const
       impulseScale = c.softness.impulseScale;
     }
 
-    Real vn = (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(c.normal);
+    Real vn = normalVelocity(a, b, c, cp);
     Real impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
     Real accumulated = std::max(cp.normalImpulse + impulse, Real(0));
     impulse = accumulated - cp.normalImpulse;
@@ -208,7 +215,7 @@ void pushOverlap(const ContactSolverContext& context) {
       Real intrusion = cp.baseSeparation + moved.dot(c.normal) + cp.loadOverlap;
       if (intrusion >= 0) continue;
       Real bias = std::max(c.softness.biasRate * intrusion, -context.maxPushSpeed);
-      Real vn = (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(c.normal);
+      Real vn = normalVelocity(a, b, c, cp);
       Real impulse = std::max(-cp.normalMass * c.softness.massScale * (vn + bias), Real(0));
       applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * c.normal);
     }
@@ -225,7 +232,7 @@ void applyRestitution(const ContactSolverContext& context) {
       // Only points that were approaching fast and actually pushed bounce;
       // slow ones rest (no jitter on stacks).
       if (cp.relativeVelocity > -context.restitutionThreshold || cp.totalNormalImpulse == 0) continue;
-      Real vn = (pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA)).dot(c.normal);
+      Real vn = normalVelocity(a, b, c, cp);
       Real impulse = -cp.normalMass * (vn + c.restitution * cp.relativeVelocity);
       Real accumulated = std::max(cp.normalImpulse + impulse, Real(0));
       impulse = accumulated - cp.normalImpulse;

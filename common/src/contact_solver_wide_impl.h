@@ -131,6 +131,13 @@ Relative<F> relativeVelocity(const WideBody<F>& a, const WideBody<F>& b, const W
           (b.vy + b.w * p.anchorBX) - (a.vy + a.w * p.anchorAX)};
 }
 
+// The part of that velocity along the contact normal (positive: separating).
+template <class F>
+F normalVelocity(const WideBody<F>& a, const WideBody<F>& b, const WideConstraint<F>& c, const WidePoint<F>& p) {
+  Relative<F> dv = relativeVelocity(a, b, p);
+  return dv.vx * c.normalX + dv.vy * c.normalY;
+}
+
 template <class F>
 void applyWide(WideBody<F>& a, WideBody<F>& b, const WideConstraint<F>& c, const WidePoint<F>& p, F px, F py) {
   a.vx -= c.invMassA * px;
@@ -176,8 +183,7 @@ template <class F>
 F solveNormal(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy,
                const ContactSolverContext& context, bool useBias) {
   Bias<F> bias = contactBias(c, p, currentSeparation(a, b, p, dpx, dpy, c), context, useBias);
-  Relative<F> dv = relativeVelocity(a, b, p);
-  F vn = dv.vx * c.normalX + dv.vy * c.normalY;
+  F vn = normalVelocity(a, b, c, p);
   F impulse = -(p.normalMass * bias.massScale * (vn + bias.bias)) - bias.impulseScale * p.normalImpulse;
   F accumulated = simd::max(p.normalImpulse + impulse, simd::broadcast<F>(0));
   impulse = accumulated - p.normalImpulse;
@@ -315,8 +321,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     for (WidePoint<F>& p : c.points) {
       F intrusion = currentSeparation(a, b, p, dpx, dpy, c) + p.loadOverlap;
       F bias = simd::max(c.biasRate * intrusion, maxPush);
-      Relative<F> dv = relativeVelocity(a, b, p);
-      F vn = dv.vx * c.normalX + dv.vy * c.normalY;
+      F vn = normalVelocity(a, b, c, p);
       F impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::broadcast<F>(0));
       impulse = simd::select(simd::less(intrusion, simd::broadcast<F>(0)), impulse, simd::broadcast<F>(0));
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
@@ -344,8 +349,7 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
     WideBody<F> b = gather<F>(context.states, c.stateB);
     for (WidePoint<F>& p : c.points) {
       F bounces = bouncing(c, p);
-      Relative<F> dv = relativeVelocity(a, b, p);
-      F vn = dv.vx * c.normalX + dv.vy * c.normalY;
+      F vn = normalVelocity(a, b, c, p);
       F impulse = -(p.normalMass * (vn + c.restitution * p.relativeVelocity));
       F accumulated = simd::max(p.normalImpulse + impulse, simd::broadcast<F>(0));
       impulse = simd::select(bounces, accumulated - p.normalImpulse, simd::broadcast<F>(0));
