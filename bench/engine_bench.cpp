@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "impulse/scenes.h"
+#include "impulse/scenes/stress.h"
 #include "impulse/world.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 
 #include "impulse/client/commands.h"
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "controls.h"
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 #include "interpolated_world.h"
 #include "palette.h"
 #include "view_transform.h"

@@ -13,7 +13,7 @@
 #include "controls.h"
 #include "history.h"
 #include "impulse.pb.h"
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 #include "link_state.h"
 #include "view_transform.h"
 

@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 #include "impulse/server/access.h"
 
 namespace impulse::server {

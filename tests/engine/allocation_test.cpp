@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "impulse/scenes.h"
+#include "impulse/scenes/stress.h"
 #include "impulse/world.h"
 
 namespace {

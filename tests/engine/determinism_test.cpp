@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "impulse/scenes.h"
+#include "impulse/scenes/stress.h"
 #include "impulse/world.h"
 #include "world_test_support.h"
 

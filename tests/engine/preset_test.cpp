@@ -1,6 +1,6 @@
 // Every preset's outcome in SPEC.md, asserted from body states.
 
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 
 #include <gtest/gtest.h>
 

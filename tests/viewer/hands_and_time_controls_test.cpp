@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "controls.h"
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 
 namespace impulse::viewer {
 namespace {

@@ -10,7 +10,7 @@
 #include "impulse.pb.h"
 #include "impulse/body.h"
 #include "impulse/material.h"
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 #include "impulse/shape.h"
 
 namespace impulse::client {

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "impulse/material.h"
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 #include "impulse/server/snapshot_builder.h"
 #include "impulse/server/tick_schedule.h"
 #include "impulse/world.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 #include "impulse/world.h"
 
 namespace impulse::server {

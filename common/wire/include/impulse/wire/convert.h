@@ -15,7 +15,7 @@
 #include "impulse/body.h"
 #include "impulse/material.h"
 #include "impulse/math.h"
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 #include "impulse/shape.h"
 #include "impulse/world.h"
 

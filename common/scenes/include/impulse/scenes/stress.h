@@ -1,5 +1,6 @@
 #pragma once
-/// Stress scenes shared by tests and the benchmark (presets live in preset.h).
+/// Stress scenes shared by tests and the benchmark (the SPEC.md presets are in
+/// presets.h).
 
 #include <vector>
 

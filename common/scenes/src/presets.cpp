@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "impulse/preset.h"
+#include "impulse/scenes/presets.h"
 
 namespace impulse {
 

@@ -1,4 +1,4 @@
-#include "impulse/scenes.h"
+#include "impulse/scenes/stress.h"
 
 #include <algorithm>
 #include <array>
