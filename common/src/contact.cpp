@@ -22,40 +22,18 @@ Real rollingRadius(const Shape& shape) {
   return shape.type == ShapeType::Circle ? shape.circle.radius : Real(0);
 }
 
-void linkEdge(WorldData& world, std::int32_t contactIndex, int side) {
-  Contact& contact = world.contacts[contactIndex];
-  Body& body = world.bodies[side == 0 ? contact.bodyA : contact.bodyB];
-  std::int32_t key = edgeKey(contactIndex, side);
-  contact.edgePrev[side] = kNullIndex;
-  contact.edgeNext[side] = body.contactHead;
-  if (body.contactHead != kNullIndex) {
-    Contact& next = world.contacts[edgeContact(body.contactHead)];
-    next.edgePrev[edgeSide(body.contactHead)] = key;
-  }
-  body.contactHead = key;
-}
-
-void unlinkEdge(WorldData& world, std::int32_t contactIndex, int side) {
-  Contact& contact = world.contacts[contactIndex];
-  Body& body = world.bodies[side == 0 ? contact.bodyA : contact.bodyB];
-  std::int32_t prev = contact.edgePrev[side];
-  std::int32_t next = contact.edgeNext[side];
-  if (prev != kNullIndex) {
-    world.contacts[edgeContact(prev)].edgeNext[edgeSide(prev)] = next;
-  } else {
-    body.contactHead = next;
-  }
-  if (next != kNullIndex) world.contacts[edgeContact(next)].edgePrev[edgeSide(next)] = prev;
-}
-
 std::int32_t allocateContact(WorldData& world) {
-  if (world.freeContact != kNullIndex) {
-    std::int32_t index = world.freeContact;
-    world.freeContact = world.contacts[index].nextFree;
-    return index;
+  std::int32_t index = world.freeContacts.acquire(world.contacts.size());
+  if (index == static_cast<std::int32_t>(world.contacts.size())) world.contacts.emplace_back();
+  return index;
+}
+
+// Threads the contact through both bodies' contact lists.
+void linkContact(WorldData& world, std::int32_t index) {
+  for (int side = 0; side < 2; ++side) {
+    Body& body = world.bodies[world.contacts[index].edges.body(side)];
+    linkEdge(world.contacts, body.contactHead, index, side);
   }
-  world.contacts.emplace_back();
-  return static_cast<std::int32_t>(world.contacts.size() - 1);
 }
 
 void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
@@ -67,8 +45,8 @@ void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
   std::int32_t index = allocateContact(world);
   Contact& contact = world.contacts[index];
   contact = Contact{};
-  contact.bodyA = a;
-  contact.bodyB = b;
+  contact.edges.bodyA = a;
+  contact.edges.bodyB = b;
   contact.collide = collideFunction(world.shapes[a].type, world.shapes[b].type);
   contact.staticFriction = mixCoefficient(ma.staticFriction, mb.staticFriction);
   contact.dynamicFriction = mixCoefficient(ma.dynamicFriction, mb.dynamicFriction);
@@ -77,8 +55,7 @@ void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
       mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
       std::max(rollingRadius(world.shapes[a]), rollingRadius(world.shapes[b]));
   contact.pairKey = pairKey(a, b);
-  linkEdge(world, index, 0);
-  linkEdge(world, index, 1);
+  linkContact(world, index);
   world.contactByPair.emplace(contact.pairKey, index);
 }
 
@@ -103,13 +80,11 @@ void matchWarmStart(const Manifold& previous, Manifold& next) {
 void gatherActiveContacts(WorldData& world) {
   world.activeContacts.clear();
   for (std::int32_t slot : world.awakeBodies) {
-    for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
-      const Contact& contact = world.contacts[edgeContact(key)];
-      std::int32_t other = otherBody(contact, key);
+    forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
+      std::int32_t other = contact.edges.otherBody(key);
       // A contact between two awake bodies is taken by the lower slot.
-      if (!world.bodies[other].awake || slot < other) world.activeContacts.push_back(edgeContact(key));
-      key = contact.edgeNext[edgeSide(key)];
-    }
+      if (!world.bodies[other].awake || slot < other) world.activeContacts.push_back(edgeElement(key));
+    });
   }
 }
 
@@ -175,15 +150,15 @@ void refreshManifold(Contact& contact, const Body& a, const Body& b) {
 
 void updateManifold(WorldData& world, std::int32_t index) {
   Contact& contact = world.contacts[index];
-  const Body& a = world.bodies[contact.bodyA];
-  const Body& b = world.bodies[contact.bodyB];
+  const Body& a = world.bodies[contact.edges.bodyA];
+  const Body& b = world.bodies[contact.edges.bodyB];
   if (manifoldIsCurrent(contact, a, b)) {
     refreshManifold(contact, a, b);
     return;
   }
   ++world.profile.manifoldUpdates;
-  Manifold next = contact.collide(world.shapes[contact.bodyA], a.transform,
-                                  world.shapes[contact.bodyB], b.transform);
+  Manifold next = contact.collide(world.shapes[contact.edges.bodyA], a.transform,
+                                  world.shapes[contact.edges.bodyB], b.transform);
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
   contact.touching = next.pointCount > 0;
@@ -192,7 +167,7 @@ void updateManifold(WorldData& world, std::int32_t index) {
 
 }  // namespace
 
-void updatePairs(WorldData& world) {
+void updatePairs(WorldData& world, Real /*dt*/) {
   world.broadPhase.findNewPairs(world.newPairs);
   for (const ProxyPair& pair : world.newPairs) {
     const Body& a = world.bodies[pair.first];
@@ -203,13 +178,13 @@ void updatePairs(WorldData& world) {
   }
 }
 
-void collideContacts(WorldData& world) {
+void collideContacts(WorldData& world, Real /*dt*/) {
   world.profile.manifoldUpdates = 0;
   gatherActiveContacts(world);
   for (std::int32_t index : world.activeContacts) {
     Contact& contact = world.contacts[index];
-    const Body& a = world.bodies[contact.bodyA];
-    const Body& b = world.bodies[contact.bodyB];
+    const Body& a = world.bodies[contact.edges.bodyA];
+    const Body& b = world.bodies[contact.edges.bodyB];
     if (!world.broadPhase.fatAABBsOverlap(a.proxyKey, b.proxyKey)) {
       destroyContact(world, index);
       continue;
@@ -217,28 +192,27 @@ void collideContacts(WorldData& world) {
     updateManifold(world, index);
     // A touch from an awake body wakes a sleeping one, with its island.
     if (contact.touching) {
-      wakeIsland(world, contact.bodyA);
-      wakeIsland(world, contact.bodyB);
+      wakeIsland(world, contact.edges.bodyA);
+      wakeIsland(world, contact.edges.bodyB);
     }
   }
 }
 
 void destroyContact(WorldData& world, std::int32_t index) {
-  Contact& contact = world.contacts[index];
-  unlinkEdge(world, index, 0);
-  unlinkEdge(world, index, 1);
-  world.contactByPair.erase(contact.pairKey);
-  contact.nextFree = world.freeContact;
-  world.freeContact = index;
+  for (int side = 0; side < 2; ++side) {
+    Body& body = world.bodies[world.contacts[index].edges.body(side)];
+    unlinkEdge(world.contacts, body.contactHead, index, side);
+  }
+  world.contactByPair.erase(world.contacts[index].pairKey);
+  world.freeContacts.release(index);
 }
 
 void destroyBodyContacts(WorldData& world, std::int32_t body) {
   while (world.bodies[body].contactHead != kNullIndex) {
     std::int32_t key = world.bodies[body].contactHead;
-    const Contact& contact = world.contacts[edgeContact(key)];
-    std::int32_t other = otherBody(contact, key);
-    if (contact.touching) wakeIsland(world, other);
-    destroyContact(world, edgeContact(key));
+    const Contact& contact = world.contacts[edgeElement(key)];
+    if (contact.touching) wakeIsland(world, contact.edges.otherBody(key));
+    destroyContact(world, edgeElement(key));
   }
 }
 

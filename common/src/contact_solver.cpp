@@ -112,20 +112,11 @@ void solveRollingRow(ContactConstraint& c, SolverState& a, SolverState& b, Real 
 
 }  // namespace
 
-Softness makeSoftness(Real hertz, Real dampingRatio, Real h) {
-  if (hertz == 0) return {0, 1, 0};
-  Real omega = 2 * std::numbers::pi_v<Real> * hertz;
-  Real a1 = 2 * dampingRatio + h * omega;
-  Real a2 = h * omega * a1;
-  Real a3 = 1 / (1 + a2);
-  return {omega / a1, a2 * a3, a3};
-}
-
 void prepareContact(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
                     ContactConstraint& c) {
   const Contact& contact = world.contacts[ref.contact];
-  const Body& bodyA = world.bodies[contact.bodyA];
-  const Body& bodyB = world.bodies[contact.bodyB];
+  const Body& bodyA = world.bodies[contact.edges.bodyA];
+  const Body& bodyB = world.bodies[contact.edges.bodyB];
   const Manifold& manifold = contact.manifold;
   c.stateA = ref.stateA;
   c.stateB = ref.stateB;

@@ -4,32 +4,10 @@
 
 #include <span>
 
+#include "contact_constraint.h"
 #include "world_data.h"
 
 namespace impulse {
-
-/// Spring-damper softness for a constraint of stiffness `hertz` and
-/// `dampingRatio`, solved with sub-step h.
-Softness makeSoftness(Real hertz, Real dampingRatio, Real h);
-
-struct ContactSolverContext {
-  std::span<SolverState> states;  // [0] is the static dummy
-  std::span<ContactConstraint> constraints;
-  Real inverseSubStep = 0;
-  Real maxPushSpeed = 0;
-  Real restitutionThreshold = 0;
-  /// Solve each manifold's second normal point first. Solving two points one
-  /// after the other favours one side, and a tall stack leans that way; the
-  /// solver alternates the order every sub-step so the favour cancels.
-  bool reversePointOrder = false;
-};
-
-/// The step's contact softness: between dynamic bodies, and against static
-/// ones (stiffer, so stacks are not pushed into the ground).
-struct ContactSoftness {
-  Softness dynamic;
-  Softness statics;
-};
 
 /// Fills a constraint from a touching contact (velocities read from the
 /// world's solver states).

@@ -5,7 +5,10 @@
 // solved together without one lane overwriting another's body. Constraints that find no free colour stay in
 // an overflow list solved one by one (contact_solver.h).
 
+#include <span>
+
 #include "contact_solver.h"
+#include "graph_coloring.h"
 
 namespace impulse {
 
@@ -13,10 +16,12 @@ namespace impulse {
 /// lanes of one colour share no body, and each lane's arithmetic is the same.
 struct WideContactKernels {
   int lanes;
-  /// Colours the world's constraint refs and prepares each straight into
-  /// its bundle lane (or the overflow list). Returns whether any contact
-  /// overlaps deeper than its load explains (the push pass is needed).
-  bool (*build)(const WorldData& world, const ContactSoftness& softness, WideContactSet& set);
+  /// Colours the touching contacts `refs` (taking colours from the step's
+  /// shared colouring) and prepares each straight into its bundle lane (or
+  /// the overflow list). Returns whether any contact overlaps deeper than
+  /// its load explains (the push pass is needed).
+  bool (*build)(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
+                GraphColoring& coloring, WideContactSet& set);
   void (*warmStart)(const ContactSolverContext& context, WideContactSet& set);
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
   /// The push pass (pushOverlap).

@@ -16,18 +16,6 @@
 namespace impulse {
 namespace {
 
-constexpr int kColorCount = 64;  // one bit each in a per-body mask
-
-// Lowest colour used by neither body; static bodies (state 0) never block.
-int pickColor(std::vector<std::uint64_t>& used, std::int32_t a, std::int32_t b) {
-  std::uint64_t taken = (a != 0 ? used[a] : 0) | (b != 0 ? used[b] : 0);
-  if (taken == ~std::uint64_t(0)) return -1;
-  int color = std::countr_one(taken);
-  if (a != 0) used[a] |= std::uint64_t(1) << color;
-  if (b != 0) used[b] |= std::uint64_t(1) << color;
-  return color;
-}
-
 template <class F>
 void setLane(F& wide, int lane, float value) {
   wide.v[lane] = value;  // GCC/Clang vector subscript
@@ -225,25 +213,11 @@ ContactSolverContext overflowContext(const ContactSolverContext& context, WideCo
 // ---- passes ------------------------------------------------------------------
 
 template <class F>
-bool buildWideContacts(const WorldData& world, const ContactSoftness& softness, WideContactSet& set) {
-  const std::vector<ConstraintRef>& refs = world.constraintRefs;
-  set.usedColors.assign(world.solverStates.size(), 0);
+bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
+                       const ContactSoftness& softness, GraphColoring& coloring, WideContactSet& set) {
   set.colorOf.resize(refs.size());
-  // Counting sort by colour (overflow last), stable within a colour so the
-  // row order stays deterministic; one pass to count, one to place.
-  std::array<std::int32_t, kColorCount + 2> start{};
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    int color = pickColor(set.usedColors, refs[i].stateA, refs[i].stateB);
-    set.colorOf[i] = color < 0 ? kColorCount : color;
-    ++start[set.colorOf[i] + 1];
-  }
-  for (int color = 0; color <= kColorCount; ++color) start[color + 1] += start[color];
-  set.order.resize(refs.size());
-  std::array<std::int32_t, kColorCount + 1> next{};
-  std::copy(start.begin(), start.end() - 1, next.begin());
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    set.order[next[set.colorOf[i]]++] = static_cast<std::int32_t>(i);
-  }
+  for (std::size_t i = 0; i < refs.size(); ++i) set.colorOf[i] = coloring.take(refs[i].stateA, refs[i].stateB);
+  const ColorStarts start = sortByColor(set.colorOf, set.order);
 
   bool intrusion = false;
   auto prepare = [&](std::int32_t k, ContactConstraint& into) {
@@ -254,7 +228,7 @@ bool buildWideContacts(const WorldData& world, const ContactSoftness& softness, 
   auto& bundles = bundlesOf<F>(set);
   bundles.clear();
   ContactConstraint prepared;
-  for (int color = 0; color < kColorCount; ++color) {
+  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
     for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
       int lane = (k - start[color]) % F::kLanes;
       if (lane == 0) bundles.push_back(emptyBundle<F>());
@@ -263,7 +237,7 @@ bool buildWideContacts(const WorldData& world, const ContactSoftness& softness, 
     }
   }
   set.overflow.clear();
-  for (std::int32_t k = start[kColorCount]; k < start[kColorCount + 1]; ++k) {
+  for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     set.overflow.emplace_back();
     prepare(k, set.overflow.back());
   }

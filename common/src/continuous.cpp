@@ -102,7 +102,7 @@ void sweepAgainstStatics(WorldData& world, std::int32_t slot) {
 
 }  // namespace
 
-void solveContinuous(WorldData& world) {
+void solveContinuous(WorldData& world, Real /*dt*/) {
   if (!world.settings.enableContinuous) return;
   for (std::int32_t slot : world.awakeBodies) {
     if (isFast(world.bodies[slot])) sweepAgainstStatics(world, slot);

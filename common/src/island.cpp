@@ -1,5 +1,5 @@
 // Islands and sleeping. An island is a set of dynamic bodies linked by
-// touching contacts (static bodies do not link). When every body of an island
+// constraints (static bodies do not link). When every body of an island
 // has been slow for timeToSleep, the whole island sleeps: it leaves the awake
 // list, so it costs nothing per step until something touches or pushes it.
 
@@ -11,6 +11,16 @@
 namespace impulse {
 
 namespace {
+
+// The island graph: calls visit(other) for every body joined to `slot` by a
+// constraint that links islands. Touching contacts today; a new constraint
+// kind adds its edge list here.
+template <class Visit>
+void forEachLinkedBody(const WorldData& world, std::int32_t slot, Visit&& visit) {
+  forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
+    if (contact.touching) visit(contact.edges.otherBody(key));
+  });
+}
 
 Real sleepVelocity(const Body& body) {
   // The fastest point of the body: centre speed or rim speed.
@@ -26,7 +36,7 @@ void updateSleepTimes(WorldData& world, Real dt) {
 }
 
 // Collects the island of `seed` (awake dynamic bodies joined by touching
-// contacts) into world.islandBodies and returns its smallest sleep time.
+// constraints) into world.islandBodies and returns its smallest sleep time.
 Real collectIsland(WorldData& world, std::int32_t seed) {
   world.islandBodies.clear();
   world.islandStack.clear();
@@ -38,15 +48,13 @@ Real collectIsland(WorldData& world, std::int32_t seed) {
     world.islandStack.pop_back();
     world.islandBodies.push_back(slot);
     minSleepTime = std::min(minSleepTime, world.bodies[slot].sleepTime);
-    for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
-      const Contact& contact = world.contacts[edgeContact(key)];
-      Body& other = world.bodies[otherBody(contact, key)];
-      if (contact.touching && other.awake && other.islandMark != world.islandStamp) {
+    forEachLinkedBody(world, slot, [&](std::int32_t linked) {
+      Body& other = world.bodies[linked];
+      if (other.awake && other.islandMark != world.islandStamp) {
         other.islandMark = world.islandStamp;
-        world.islandStack.push_back(otherBody(contact, key));
+        world.islandStack.push_back(linked);
       }
-      key = contact.edgeNext[edgeSide(key)];
-    }
+    });
   }
   return minSleepTime;
 }
@@ -100,13 +108,10 @@ void wakeIsland(WorldData& world, std::int32_t seed) {
     body.awake = true;
     body.sleepTime = 0;
     world.awakeBodies.push_back(slot);
-    for (std::int32_t key = body.contactHead; key != kNullIndex;) {
-      const Contact& contact = world.contacts[edgeContact(key)];
-      std::int32_t other = otherBody(contact, key);
-      const Body& neighbour = world.bodies[other];
-      if (contact.touching && !neighbour.isStatic && !neighbour.awake) world.islandStack.push_back(other);
-      key = contact.edgeNext[edgeSide(key)];
-    }
+    forEachLinkedBody(world, slot, [&](std::int32_t linked) {
+      const Body& neighbour = world.bodies[linked];
+      if (!neighbour.isStatic && !neighbour.awake) world.islandStack.push_back(linked);
+    });
   }
 }
 

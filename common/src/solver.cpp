@@ -1,23 +1,24 @@
-// The solve phase: soft-step sub-stepping over all awake bodies and their
-// touching contacts, then writing the motion back into the bodies.
+// The solve stage: soft-step sub-stepping over all awake bodies and the
+// constraints between them, every kind in turn (constraint_kind.h), then
+// writing the motion back into the bodies.
 //
-//   prepare contacts (once per step)
+//   prepare constraints (once per step, coloured together)
 //   for each sub-step:
 //     integrate velocities (gravity, forces, drag)
 //     warm start (apply last impulses)
-//     solve contacts with soft position bias (no faster than loads need)
-//     push intrusions out through pseudo velocities (split impulse), if any
+//     solve with soft position correction (contacts: no faster than loads need)
+//     push position error out through pseudo velocities (split impulse), if any
 //     integrate positions
-//     relax contacts (no bias: removes the velocity the bias added)
+//     relax (no correction: removes the velocity the correction added)
 //   restitution, store impulses, finalize bodies
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <span>
 
-#include "contact_solver.h"
-#include "contact_solver_wide.h"
+#include "constraint_kind.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -55,32 +56,9 @@ void loadStates(WorldData& world, Real h) {
   }
 }
 
-// The touching contacts the step solves, each once: those of awake bodies
-// (a pair of awake bodies taken by the lower slot), in awake-list order.
-void collectConstraints(WorldData& world) {
-  world.constraintRefs.clear();
-  for (std::int32_t slot : world.awakeBodies) {
-    for (std::int32_t key = world.bodies[slot].contactHead; key != kNullIndex;) {
-      const Contact& contact = world.contacts[edgeContact(key)];
-      std::int32_t other = otherBody(contact, key);
-      if (contact.touching && (!world.bodies[other].awake || slot < other)) {
-        // Anything not awake (static) shares the dummy state 0 and gets zero
-        // inverse mass, so the dummy's velocity stays zero without checks.
-        const Body& a = world.bodies[contact.bodyA];
-        const Body& b = world.bodies[contact.bodyB];
-        world.constraintRefs.push_back(
-            {edgeContact(key), a.awake ? a.solverIndex : 0, b.awake ? b.solverIndex : 0});
-      }
-      key = contact.edgeNext[edgeSide(key)];
-    }
-  }
-}
-
-ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
-  Real hertz = std::min(settings.contactHertz, Real(0.25) / h);
-  return {makeSoftness(hertz, settings.contactDampingRatio, h),
-          makeSoftness(2 * hertz, settings.contactDampingRatio, h)};
-}
+// Every kind of constraint the solver runs, in the order each stage visits
+// them. A new kind adds itself here.
+std::array<ConstraintKind*, 1> constraintKinds(WorldData& world) { return {&world.contactConstraints}; }
 
 void integrateVelocities(WorldData& world, Real h) {
   const Real maxAngularSpeed = kMaxRotationPerSubStep / h;
@@ -114,8 +92,8 @@ void keepAwakeWhilePushed(Body& body, const SolverState& pseudo, const WorldSett
 // Split impulse for intrusions: the push pass runs on pseudo velocities that
 // move the bodies this sub-step and are then dropped, so pushing overlap out
 // never becomes real velocity. The real velocities are parked meanwhile.
-void pushThenIntegratePositions(WorldData& world, const WideContactKernels& kernels,
-                                const ContactSolverContext& context, WideContactSet& wide, Real h) {
+void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* const> kinds,
+                                const SubStep& sub, Real h) {
   const std::size_t count = world.solverStates.size();
   world.parkedVelocities.resize(count);
   for (std::size_t k = 1; k < count; ++k) {
@@ -124,7 +102,7 @@ void pushThenIntegratePositions(WorldData& world, const WideContactKernels& kern
     state.linearVelocity.setZero();
     state.angularVelocity = 0;
   }
-  kernels.push(context, wide);
+  for (ConstraintKind* kind : kinds) kind->push(sub);
   for (std::size_t k = 1; k < count; ++k) {
     SolverState& state = world.solverStates[k];
     keepAwakeWhilePushed(world.bodies[world.solverIntegration[k].body], state, world.settings);
@@ -161,35 +139,47 @@ void finalizeBodies(WorldData& world) {
 
 }  // namespace
 
+Softness makeSoftness(Real hertz, Real dampingRatio, Real h) {
+  if (hertz == 0) return {0, 1, 0};
+  Real omega = 2 * std::numbers::pi_v<Real> * hertz;
+  Real a1 = 2 * dampingRatio + h * omega;
+  Real a2 = h * omega * a1;
+  Real a3 = 1 / (1 + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
 void solve(WorldData& world, Real dt) {
   if (world.awakeBodies.empty()) return;
   const int subSteps = std::max(1, world.settings.subSteps);
-  const Real h = dt / Real(subSteps);
+  const SolveStep step{dt / Real(subSteps), subSteps};
+  const Real h = step.h;
   loadStates(world, h);
-  collectConstraints(world);
 
-  ContactSolverContext context{world.solverStates, {}, 1 / h,
-                               world.settings.maxContactPushSpeed,
-                               world.settings.restitutionThreshold};
-  WideContactSet& wide = world.wideContacts;
-  const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
-  const bool intrusion = kernels.build(world, contactSoftness(world.settings, h), wide);
-  for (int i = 0; i < subSteps; ++i) {
-    context.reversePointOrder = i % 2 == 1;
+  const auto kinds = constraintKinds(world);
+  world.coloring.reset(world.solverStates.size());
+  bool needsPush = false;
+  for (ConstraintKind* kind : kinds) needsPush = kind->prepare(world, step, world.coloring) || needsPush;
+  for (int i = 0; i < step.subSteps; ++i) {
+    const SubStep sub{world.solverStates, i};
     integrateVelocities(world, h);
-    kernels.warmStart(context, wide);
-    kernels.solve(context, wide, true);
-    if (intrusion) {
-      pushThenIntegratePositions(world, kernels, context, wide, h);
+    for (ConstraintKind* kind : kinds) kind->warmStart(sub);
+    for (ConstraintKind* kind : kinds) kind->solve(sub);
+    if (needsPush) {
+      pushThenIntegratePositions(world, kinds, sub, h);
     } else {
       integratePositions(world, h);
     }
-    for (int r = 0; r < world.settings.relaxIterations; ++r) kernels.solve(context, wide, false);
+    for (int r = 0; r < world.settings.relaxIterations; ++r) {
+      for (ConstraintKind* kind : kinds) kind->relax(sub);
+    }
   }
   // A flat face meeting a wall bounces on two points; one pass solves them
   // one after the other and leaves a spurious spin, a few converge.
-  for (int i = 0; i < kRestitutionIterations; ++i) kernels.restitution(context, wide);
-  kernels.store(wide, world);
+  const SubStep last{world.solverStates, step.subSteps - 1};
+  for (int i = 0; i < kRestitutionIterations; ++i) {
+    for (ConstraintKind* kind : kinds) kind->restitution(last);
+  }
+  for (ConstraintKind* kind : kinds) kind->store(world);
   finalizeBodies(world);
 }
 

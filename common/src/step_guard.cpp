@@ -20,15 +20,13 @@ bool stateIsFinite(const Body& body) {
 // Warm-start impulses computed from a broken state would carry it into the
 // next step through every neighbour.
 void forgetContactImpulses(WorldData& world, const Body& body) {
-  for (std::int32_t key = body.contactHead; key != kNullIndex;) {
-    Contact& contact = world.contacts[edgeContact(key)];
+  forEachEdge(world.contacts, body.contactHead, [](std::int32_t, Contact& contact) {
     for (ManifoldPoint& point : contact.manifold.points) {
       point.normalImpulse = 0;
       point.tangentImpulse = 0;
     }
     contact.manifold.rollingImpulse = 0;
-    key = contact.edgeNext[edgeSide(key)];
-  }
+  });
 }
 
 void repair(WorldData& world, std::int32_t slot) {

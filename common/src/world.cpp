@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "input_limits.h"
 #include "step_guard.h"
@@ -27,30 +28,6 @@ bool contains(const AABB& bounds, const Vec2& p) {
          p.y() <= bounds.upper.y();
 }
 
-// Empty when every given coefficient is finite and in its range.
-std::string validateOverride(const MaterialOverride& o) {
-  auto outside = [](const std::optional<Real>& value, Real lo, Real hi) {
-    return value && !(isFinite(*value) && *value >= lo && *value <= hi);
-  };
-  if (outside(o.density, Real(1e-3), Real(1e6))) return "density must be in (0.001, 1e6] kg/m^2";
-  if (outside(o.restitution, 0, 1)) return "restitution must be in [0, 1]";
-  if (outside(o.staticFriction, 0, 10) || outside(o.dynamicFriction, 0, 10)) {
-    return "friction coefficients must be in [0, 10]";
-  }
-  if (outside(o.rollingResistance, 0, 1)) return "rolling resistance must be in [0, 1]";
-  return {};
-}
-
-MaterialProperties resolveCoefficients(Material material, const MaterialOverride& o) {
-  MaterialProperties resolved = materialProperties(material);
-  resolved.density = o.density.value_or(resolved.density);
-  resolved.restitution = o.restitution.value_or(resolved.restitution);
-  resolved.staticFriction = o.staticFriction.value_or(resolved.staticFriction);
-  resolved.dynamicFriction = o.dynamicFriction.value_or(resolved.dynamicFriction);
-  resolved.rollingResistance = o.rollingResistance.value_or(resolved.rollingResistance);
-  return resolved;
-}
-
 std::string validateDef(const WorldData& world, const BodyDef& def) {
   if (!isFinite(def.position) || !isFinite(def.angle) || !isFinite(def.linearVelocity) ||
       !isFinite(def.angularVelocity) || !isFinite(def.linearDrag) || !isFinite(def.angularDrag)) {
@@ -69,7 +46,7 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
   }
   if (def.linearDrag < 0 || def.angularDrag < 0) return "drag must not be negative";
   if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
-  if (std::string error = validateOverride(def.materialOverride); !error.empty()) return error;
+  if (std::string error = validateMaterialOverride(def.materialOverride); !error.empty()) return error;
   if (world.liveBodies >= world.settings.maxBodies) {
     return "body limit reached (" + std::to_string(world.settings.maxBodies) + " bodies)";
   }
@@ -77,14 +54,12 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
 }
 
 std::int32_t allocateBody(WorldData& world) {
-  if (world.freeBody != kNullIndex) {
-    std::int32_t slot = world.freeBody;
-    world.freeBody = world.bodies[slot].nextFree;
-    return slot;
+  std::int32_t slot = world.freeBodies.acquire(world.bodies.size());
+  if (slot == static_cast<std::int32_t>(world.bodies.size())) {
+    world.bodies.emplace_back();
+    world.shapes.emplace_back();
   }
-  world.bodies.emplace_back();
-  world.shapes.emplace_back();
-  return static_cast<std::int32_t>(world.bodies.size() - 1);
+  return slot;
 }
 
 void setMass(Body& body, const Shape& shape, Real density) {
@@ -107,19 +82,33 @@ void wakeBodiesUnder(WorldData& world, const AABB& box) {
   });
 }
 
-BodyDef defFromOptions(const Shape& shape, const Vec2& position, const BodyOptions& options) {
-  BodyDef def;
-  def.shape = shape;
-  def.position = position;
-  def.linearVelocity = options.linearVelocity;
-  def.angularVelocity = options.angularVelocity;
-  def.material = options.material;
-  def.isStatic = options.isStatic;
-  def.ignoreGravity = options.ignoreGravity;
-  def.linearDrag = options.linearDrag;
-  def.angularDrag = options.angularDrag;
-  return def;
+void wakeAll(WorldData& world) {
+  for (std::size_t slot = 0; slot < world.bodies.size(); ++slot) wakeIsland(world, static_cast<std::int32_t>(slot));
 }
+
+// The solve stage; then the broad phase learns where the bodies went.
+void solveAndMoveProxies(WorldData& world, Real dt) {
+  solve(world, dt);
+  for (std::int32_t slot : world.awakeBodies) {
+    world.broadPhase.updateProxy(world.bodies[slot].proxyKey, bodyAABB(world, slot));
+  }
+}
+
+/// One stage of the step: what it runs and where its time is recorded.
+struct StepStage {
+  void (*run)(WorldData& world, Real dt);
+  double StepProfile::*time;
+};
+
+// The step, in order.
+constexpr StepStage kStepStages[] = {
+    {updatePairs, &StepProfile::pairs},          // broad phase: new pairs become contacts
+    {collideContacts, &StepProfile::collide},    // narrow phase: manifolds
+    {applyFields, &StepProfile::fields},         // force fields
+    {solveAndMoveProxies, &StepProfile::solve},  // constraints and integration
+    {solveContinuous, &StepProfile::continuous}, // fast bodies against thin statics
+    {updateSleep, &StepProfile::sleep},          // islands and sleeping
+};
 
 template <typename T>
 void hashBits(std::uint64_t& hash, const T& value) {
@@ -196,13 +185,13 @@ CreateResult World::createCircle(const Vec2& center, Real radius, const BodyOpti
   if (ShapeError error = validateCircle(radius, impl_->settings.shapeLimits); error != ShapeError::None) {
     return {{}, std::string(describe(error))};
   }
-  return createBody(defFromOptions(Shape::makeCircle(radius), center, options));
+  return createBody(makeBodyDef(Shape::makeCircle(radius), center, options));
 }
 
 CreateResult World::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
   PolygonBuild build = buildPolygon(points, impl_->settings.shapeLimits);
   if (build.error != ShapeError::None) return {{}, std::string(describe(build.error))};
-  return createBody(defFromOptions(Shape::makePolygon(build.polygon), build.centroid, options));
+  return createBody(makeBodyDef(Shape::makePolygon(build.polygon), build.centroid, options));
 }
 
 bool World::destroyBody(BodyId id) {
@@ -216,8 +205,7 @@ bool World::destroyBody(BodyId id) {
   body->alive = false;
   body->awake = false;
   ++body->generation;
-  body->nextFree = w.freeBody;
-  w.freeBody = slot;
+  w.freeBodies.release(slot);
   --w.liveBodies;
   return true;
 }
@@ -274,9 +262,7 @@ InputResult World::setGravity(const Vec2& gravity) {
   }
   impl_->settings.gravity = gravity;
   // Resting bodies must feel the new gravity.
-  for (std::size_t slot = 0; slot < impl_->bodies.size(); ++slot) {
-    wakeIsland(*impl_, static_cast<std::int32_t>(slot));
-  }
+  wakeAll(*impl_);
   return {};
 }
 
@@ -328,36 +314,32 @@ void World::step(Real dt) {
   WorldData& w = *impl_;
   if (!(dt > 0) || !isFinite(dt)) return;
   Clock::time_point start = Clock::now();
-  StepProfile& profile = w.profile;
-
-  Clock::time_point phase = Clock::now();
-  updatePairs(w);
-  profile.pairs = millisecondsSince(phase);
-
-  phase = Clock::now();
-  collideContacts(w);
-  profile.collide = millisecondsSince(phase);
-
-  phase = Clock::now();
-  solve(w, dt);
-  for (std::int32_t slot : w.awakeBodies) w.broadPhase.updateProxy(w.bodies[slot].proxyKey, bodyAABB(w, slot));
-  profile.solve = millisecondsSince(phase);
-
-  phase = Clock::now();
-  solveContinuous(w);
-  profile.continuous = millisecondsSince(phase);
-
-  phase = Clock::now();
-  updateSleep(w, dt);
-  profile.sleep = millisecondsSince(phase);
-
+  for (const StepStage& stage : kStepStages) {
+    Clock::time_point stageStart = Clock::now();
+    stage.run(w, dt);
+    w.profile.*stage.time = millisecondsSince(stageStart);
+  }
   guardStep(w, guard_);
   for (BodyId id : guard_.escaped) destroyBody(id);
 
-  profile.total = millisecondsSince(start);
+  w.profile.total = millisecondsSince(start);
   ++w.stepCount;
   w.time += dt;
 }
+
+FieldId World::addField(std::shared_ptr<const ForceField> field) {
+  if (!field) return {};
+  FieldId id{impl_->nextFieldId++};
+  impl_->fields.push_back({id, std::move(field)});
+  wakeAll(*impl_);
+  return id;
+}
+
+bool World::removeField(FieldId id) {
+  return std::erase_if(impl_->fields, [&](const FieldSlot& slot) { return slot.id == id; }) > 0;
+}
+
+int World::fieldCount() const { return static_cast<int>(impl_->fields.size()); }
 
 std::span<const BodyId> World::escapedBodies() const { return guard_.escaped; }
 const StepGuardReport& World::guardReport() const { return guard_; }

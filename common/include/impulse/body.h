@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "impulse/material.h"
 #include "impulse/math.h"
@@ -58,6 +59,29 @@ struct BodyDef {
   Real linearDrag = 0;
   Real angularDrag = 0;
 };
+
+/// A body created from user-facing input (wire commands, tools): validated
+/// fully before anything changes.
+struct BodyOptions {
+  Material material = Material::Solid;
+  bool isStatic = false;
+  bool ignoreGravity = false;
+  Vec2 linearVelocity = Vec2::Zero();
+  Real angularVelocity = 0;
+  Real linearDrag = 0;
+  Real angularDrag = 0;
+};
+
+/// The definition of a body of `shape` (local to its centroid) whose
+/// centroid goes to `position`, with the options' material and motion.
+BodyDef makeBodyDef(const Shape& shape, const Vec2& position, const BodyOptions& options);
+
+/// Empty when every coefficient given is finite and in its range, else what
+/// is wrong.
+std::string validateMaterialOverride(const MaterialOverride& materialOverride);
+
+/// The material's coefficients with the override's given ones in their place.
+MaterialProperties resolveCoefficients(Material material, const MaterialOverride& materialOverride);
 
 /// Snapshot of one body's motion.
 struct BodyState {

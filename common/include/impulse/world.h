@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impulse/body.h"
+#include "impulse/field.h"
 #include "impulse/limits.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
@@ -69,6 +70,7 @@ struct WorldSettings {
 struct StepProfile {
   double pairs = 0;       ///< broad phase: new pairs
   double collide = 0;     ///< narrow phase: manifolds
+  double fields = 0;      ///< force fields
   double solve = 0;       ///< contact solver and integration
   double continuous = 0;  ///< time of impact for fast bodies
   double sleep = 0;       ///< islands and sleeping
@@ -83,18 +85,6 @@ struct CreateResult {
   BodyId id;
   std::string error;
   bool ok() const { return error.empty(); }
-};
-
-/// A body created from user-facing input (wire commands, tools): validated
-/// fully before anything changes.
-struct BodyOptions {
-  Material material = Material::Solid;
-  bool isStatic = false;
-  bool ignoreGravity = false;
-  Vec2 linearVelocity = Vec2::Zero();
-  Real angularVelocity = 0;
-  Real linearDrag = 0;
-  Real angularDrag = 0;
 };
 
 class World {
@@ -143,6 +133,13 @@ class World {
   /// on the body would exceed InputLimits' accelerations.
   InputResult applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point = std::nullopt);
   InputResult setVelocity(BodyId id, const Vec2& linear, Real angular);
+
+  /// Adds a force field; it acts from the next step on, after the fields
+  /// added before it. Wakes every body, as a change of gravity does.
+  FieldId addField(std::shared_ptr<const ForceField> field);
+  /// False for an unknown id.
+  bool removeField(FieldId id);
+  int fieldCount() const;
 
   /// The body whose shape contains the point (the topmost-created if several).
   std::optional<BodyId> queryPoint(const Vec2& point) const;

@@ -1,0 +1,49 @@
+#pragma once
+// A body as the step sees it (the public face is body.h and World).
+
+#include <cstdint>
+
+#include "edge_list.h"
+#include "impulse/material.h"
+#include "impulse/math.h"
+#include "impulse/shape.h"
+
+namespace impulse {
+
+struct Body {
+  Transform transform;
+  Vec2 linearVelocity = Vec2::Zero();
+  Real angularVelocity = 0;
+  Vec2 force = Vec2::Zero();
+  Real torque = 0;
+  Real invMass = 0;
+  Real invInertia = 0;
+  MassProperties mass;
+  Real linearDrag = 0;
+  Real angularDrag = 0;
+  // Sizes used by sleeping (how fast the rim moves) and continuous collision
+  // (how far a body may move in a step before it could skip a thin wall).
+  Real extent = 0;
+  Real innerRadius = 0;
+  Real sleepTime = 0;
+  // Centre at the start of the step (continuous collision sweeps from it).
+  Vec2 center0 = Vec2::Zero();
+  Rot rotation0;
+  std::int32_t proxyKey = kNullIndex;
+  // Head of this body's contact edge list (edge_list.h).
+  std::int32_t contactHead = kNullIndex;
+  // Index into the solver's state array during a step (0 = static dummy).
+  std::int32_t solverIndex = 0;
+  std::uint64_t islandMark = 0;
+  std::uint64_t creationOrder = 0;
+  std::uint32_t generation = 0;
+  Material material = Material::Solid;
+  /// The material's coefficients with any per-body override applied.
+  MaterialProperties coefficients{};
+  bool alive = false;
+  bool isStatic = false;
+  bool ignoreGravity = false;
+  bool awake = false;
+};
+
+}  // namespace impulse

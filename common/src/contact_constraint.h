@@ -1,0 +1,120 @@
+#pragma once
+// The contact solver's data: one touching contact as a constraint, and the
+// same side by side in SIMD bundles (contact_solver_wide.h).
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "simd.h"
+#include "solver_data.h"
+
+namespace impulse {
+
+/// A touching contact the solver takes this step, with its bodies' solver
+/// states (0: the static dummy, for anything not awake).
+struct ConstraintRef {
+  std::int32_t contact = kNullIndex;
+  std::int32_t stateA = 0;
+  std::int32_t stateB = 0;
+};
+
+struct ConstraintPoint {
+  Vec2 anchorA = Vec2::Zero();
+  Vec2 anchorB = Vec2::Zero();
+  Real baseSeparation = 0;
+  Real normalImpulse = 0;
+  Real tangentImpulse = 0;
+  Real totalNormalImpulse = 0;
+  Real normalMass = 0;
+  Real tangentMass = 0;
+  Real relativeVelocity = 0;
+  Real friction = 0;
+  /// Overlap at which the soft contact holds the load it carried last step.
+  Real loadOverlap = 0;
+  /// Fastest the soft contact may push (m/s): enough to carry that load.
+  Real pushCap = 0;
+};
+
+struct ContactConstraint {
+  std::int32_t stateA = 0;
+  std::int32_t stateB = 0;
+  std::int32_t contact = kNullIndex;
+  int pointCount = 0;
+  Vec2 normal = Vec2::Zero();
+  Real invMassA = 0;
+  Real invInertiaA = 0;
+  Real invMassB = 0;
+  Real invInertiaB = 0;
+  Real restitution = 0;
+  Real rollingResistance = 0;
+  Real rollingImpulse = 0;
+  Real rollingMass = 0;
+  Softness softness;
+  ConstraintPoint points[2];
+};
+
+// Constraints side by side for the SIMD solver (contact_solver_wide.h), as
+// many as the lane type F holds: four on SSE2, eight on AVX2.
+template <class F>
+struct WidePoint {
+  F anchorAX, anchorAY, anchorBX, anchorBY;
+  F baseSeparation;
+  F normalImpulse, tangentImpulse, totalNormalImpulse;
+  F normalMass, tangentMass;
+  F relativeVelocity, friction;
+  F loadOverlap, pushCap;
+};
+
+template <class F>
+struct WideConstraint {
+  std::int32_t stateA[F::kLanes];
+  std::int32_t stateB[F::kLanes];
+  /// The contact each lane came from (-1: padding).
+  std::int32_t source[F::kLanes];
+  F normalX, normalY;
+  F invMassA, invInertiaA, invMassB, invInertiaB;
+  F biasRate, massScale, impulseScale;
+  F restitution, rollingResistance, rollingMass, rollingImpulse;
+  WidePoint<F> points[2];
+};
+
+// Eight-lane bundles: a type only the AVX2 file completes (see simd_avx2.h
+// on why no other file may lay them out).
+struct Avx2Bundles;
+struct Avx2BundlesDeleter {
+  void operator()(Avx2Bundles* bundles) const;  // contact_solver_wide_avx2.cpp
+};
+
+struct WideContactSet {
+  /// Bundles of the width in use (the other stays empty).
+  std::vector<WideConstraint<simd::F4>> bundles4;
+  std::unique_ptr<Avx2Bundles, Avx2BundlesDeleter> bundles8;
+  std::vector<ContactConstraint> overflow;
+  // Scratch for sorting by colour, kept to avoid allocation per step.
+  std::vector<std::int32_t> colorOf;
+  std::vector<std::int32_t> order;
+};
+
+/// What the contact passes of one sub-step read besides the constraints.
+struct ContactSolverContext {
+  std::span<SolverState> states;  // [0] is the static dummy
+  std::span<ContactConstraint> constraints;
+  Real inverseSubStep = 0;
+  Real maxPushSpeed = 0;
+  Real restitutionThreshold = 0;
+  /// Solve each manifold's second normal point first. Solving two points one
+  /// after the other favours one side, and a tall stack leans that way; the
+  /// solver alternates the order every sub-step so the favour cancels.
+  bool reversePointOrder = false;
+};
+
+/// The step's contact softness: between dynamic bodies, and against static
+/// ones (stiffer, so stacks are not pushed into the ground).
+struct ContactSoftness {
+  Softness dynamic;
+  Softness statics;
+};
+
+}  // namespace impulse

@@ -1,0 +1,58 @@
+#include "contact_constraints.h"
+
+#include <algorithm>
+
+#include "contact_solver_wide.h"
+#include "world_data.h"
+
+namespace impulse {
+
+namespace {
+
+// The touching contacts the step solves, each once: those of awake bodies
+// (a pair of awake bodies taken by the lower slot), in awake-list order.
+void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs) {
+  refs.clear();
+  for (std::int32_t slot : world.awakeBodies) {
+    forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
+      std::int32_t other = contact.edges.otherBody(key);
+      if (!contact.touching || (world.bodies[other].awake && other < slot)) return;
+      // Anything not awake (static) shares the dummy state 0 and gets zero
+      // inverse mass, so the dummy's velocity stays zero without checks.
+      const Body& a = world.bodies[contact.edges.bodyA];
+      const Body& b = world.bodies[contact.edges.bodyB];
+      refs.push_back({edgeElement(key), a.awake ? a.solverIndex : 0, b.awake ? b.solverIndex : 0});
+    });
+  }
+}
+
+ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
+  Real hertz = std::min(settings.contactHertz, Real(0.25) / h);
+  return {makeSoftness(hertz, settings.contactDampingRatio, h),
+          makeSoftness(2 * hertz, settings.contactDampingRatio, h)};
+}
+
+}  // namespace
+
+bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
+  collectTouching(world, refs_);
+  kernels_ = &wideContactKernels(world.settings.simdWidth);
+  context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
+  return kernels_->build(world, refs_, contactSoftness(world.settings, step.h), coloring, wide_);
+}
+
+ContactSolverContext ContactConstraints::contextFor(const SubStep& sub) const {
+  ContactSolverContext context = context_;
+  context.states = sub.states;
+  context.reversePointOrder = sub.index % 2 == 1;
+  return context;
+}
+
+void ContactConstraints::warmStart(const SubStep& sub) { kernels_->warmStart(contextFor(sub), wide_); }
+void ContactConstraints::solve(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, true); }
+void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }
+void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }
+void ContactConstraints::restitution(const SubStep& sub) { kernels_->restitution(contextFor(sub), wide_); }
+void ContactConstraints::store(WorldData& world) { kernels_->store(wide_, world); }
+
+}  // namespace impulse

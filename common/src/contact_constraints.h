@@ -1,0 +1,34 @@
+#pragma once
+// Contacts as a constraint kind: each step takes the touching contacts of
+// awake bodies, colours them and packs them into SIMD bundles
+// (contact_solver_wide.h), and runs the soft contact passes over them.
+
+#include <vector>
+
+#include "constraint_kind.h"
+#include "contact_constraint.h"
+
+namespace impulse {
+
+struct WideContactKernels;
+
+class ContactConstraints final : public ConstraintKind {
+ public:
+  bool prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) override;
+  void warmStart(const SubStep& sub) override;
+  void solve(const SubStep& sub) override;
+  void relax(const SubStep& sub) override;
+  void push(const SubStep& sub) override;
+  void restitution(const SubStep& sub) override;
+  void store(WorldData& world) override;
+
+ private:
+  ContactSolverContext contextFor(const SubStep& sub) const;
+
+  std::vector<ConstraintRef> refs_;
+  WideContactSet wide_;
+  const WideContactKernels* kernels_ = nullptr;
+  ContactSolverContext context_;
+};
+
+}  // namespace impulse
