@@ -9,20 +9,17 @@ namespace impulse::server {
 
 CommandContext::CommandContext(Simulation& simulation_, const v1::ClientMessage& message_,
                                const CommandLimits& limits_)
-    : simulation(simulation_),
-      message(message_),
-      limits(limits_),
-      result_(outcome.reply.mutable_command_result()) {
-  result_->set_request_id(message.request_id());
+    : simulation(simulation_), message(message_), limits(limits_) {
+  result().set_request_id(message.request_id());
 }
 
 void CommandContext::fail(std::string error) {
-  result_->set_ok(false);
-  result_->set_error(std::move(error));
+  result().set_ok(false);
+  result().set_error(std::move(error));
 }
 
 void CommandContext::succeed() {
-  result_->set_ok(true);
+  result().set_ok(true);
   outcome.changed = true;
 }
 

@@ -19,13 +19,11 @@ Clock::duration periodOf(double hz) {
 }
 
 SimulationSettings simulationSettings(const ServerOptions& options) {
-  SimulationSettings settings;
-  settings.tickHz = options.tickHz;
-  settings.subSteps = options.subSteps;
-  settings.maxBodies = options.maxBodies;
-  settings.preset = options.preset;
-  settings.paused = options.paused;
-  return settings;
+  return {.tickHz = options.tickHz,
+          .subSteps = options.subSteps,
+          .maxBodies = options.maxBodies,
+          .preset = options.preset,
+          .paused = options.paused};
 }
 
 // A CommandResult refusing a command before it reached the world.

@@ -15,8 +15,7 @@ namespace impulse::server {
 
 /// What a handler works with: the world to change, the limits, and the reply
 /// it fills in (a CommandResult unless it answers with another message).
-class CommandContext {
- public:
+struct CommandContext {
   CommandContext(Simulation& simulation, const v1::ClientMessage& message,
                  const CommandLimits& limits);
 
@@ -28,10 +27,8 @@ class CommandContext {
   void fail(std::string error);
   /// The command changed the world or its meta.
   void succeed();
-  v1::CommandResult& result() { return *result_; }
-
- private:
-  v1::CommandResult* result_;
+  /// The reply as a CommandResult (the request id is already set).
+  v1::CommandResult& result() { return *outcome.reply.mutable_command_result(); }
 };
 
 /// The message type of a ClientMessage field (`clear` is a ClearWorld).
