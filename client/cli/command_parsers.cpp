@@ -16,108 +16,109 @@ namespace {
 // Each parser turns a line's words into its builder's arguments, or nothing
 // with the problem noted.
 
-std::optional<std::tuple<int, Material>> parsePreset(Arguments& a) {
-  const auto id = a.integerAt(1);
+std::optional<std::tuple<int, Material>> parsePreset(Arguments& line) {
+  const auto id = line.integerAt(1);
   if (!id) return std::nullopt;
   Material material = Material::Solid;
-  if (a.size() > 2) {
-    const auto named = wire::materialFromName(a.word(2));
+  if (line.size() > 2) {
+    const auto named = wire::materialFromName(line.word(2));
     if (!named) {
-      a.refuse(quoted(a.word(2), " is not a material"));
+      line.refuse(quoted(line.word(2), " is not a material"));
       return std::nullopt;
     }
     material = *named;
   }
-  if (!a.maxWords(3)) return std::nullopt;
+  if (!line.maxWords(3)) return std::nullopt;
   return std::tuple{int(*id), material};
 }
 
-std::optional<std::tuple<>> parseNoArguments(Arguments& a) {
-  if (!a.maxWords(1)) return std::nullopt;
+std::optional<std::tuple<>> parseNoArguments(Arguments& line) {
+  if (!line.maxWords(1)) return std::nullopt;
   return std::tuple{};
 }
 
-std::optional<std::tuple<bool>> parsePause(Arguments& a) {
-  if (!parseNoArguments(a)) return std::nullopt;
+std::optional<std::tuple<bool>> parsePause(Arguments& line) {
+  if (!parseNoArguments(line)) return std::nullopt;
   return std::tuple{true};
 }
 
-std::optional<std::tuple<bool>> parseResume(Arguments& a) {
-  if (!parseNoArguments(a)) return std::nullopt;
+std::optional<std::tuple<bool>> parseResume(Arguments& line) {
+  if (!parseNoArguments(line)) return std::nullopt;
   return std::tuple{false};
 }
 
-std::optional<std::tuple<std::uint32_t>> parseStep(Arguments& a) {
-  const auto ticks = a.integerAt(1);
-  if (!ticks || !a.maxWords(2)) return std::nullopt;
+std::optional<std::tuple<std::uint32_t>> parseStep(Arguments& line) {
+  const auto ticks = line.integerAt(1);
+  if (!ticks || !line.maxWords(2)) return std::nullopt;
   if (*ticks < 1 || *ticks > 0xffffffffLL) {
-    a.refuse("tick count out of range");
+    line.refuse("tick count out of range");
     return std::nullopt;
   }
   return std::tuple{std::uint32_t(*ticks)};
 }
 
-std::optional<std::tuple<client::Point, double, client::SpawnOptions>> parseCircle(Arguments& a) {
-  const auto x = a.numberAt(1), y = a.numberAt(2), r = a.numberAt(3);
+std::optional<std::tuple<client::Point, double, client::SpawnOptions>> parseCircle(
+    Arguments& line) {
+  const auto x = line.numberAt(1), y = line.numberAt(2), r = line.numberAt(3);
   if (!x || !y || !r) return std::nullopt;
   client::SpawnOptions options;
-  if (!a.bodyFlags(4, options)) return std::nullopt;
+  if (!line.bodyFlags(4, options)) return std::nullopt;
   return std::tuple{client::Point{*x, *y}, *r, options};
 }
 
 std::optional<std::tuple<std::vector<client::Point>, client::SpawnOptions>> parsePolygon(
-    Arguments& a) {
+    Arguments& line) {
   std::vector<client::Point> points;
   std::size_t i = 1;
-  while (i < a.size() && wire::parseNumber<double>(a.word(i))) {
-    const auto x = a.numberAt(i), y = a.numberAt(i + 1);
+  while (i < line.size() && wire::parseNumber<double>(line.word(i))) {
+    const auto x = line.numberAt(i), y = line.numberAt(i + 1);
     if (!y) {
-      a.refuse("vertex " + std::to_string(points.size() + 1) + " has no y");
+      line.refuse("vertex " + std::to_string(points.size() + 1) + " has no y");
       return std::nullopt;
     }
     points.push_back({*x, *y});
     i += 2;
   }
   if (points.empty()) {
-    a.refuse("no vertices");
+    line.refuse("no vertices");
     return std::nullopt;
   }
   client::SpawnOptions options;
-  if (!a.bodyFlags(i, options)) return std::nullopt;
+  if (!line.bodyFlags(i, options)) return std::nullopt;
   // Too few or too many vertices are for the server to judge, with the
   // same message every client gets.
   return std::tuple{std::move(points), options};
 }
 
-std::optional<std::tuple<client::Point>> parsePoint(Arguments& a) {
-  const auto x = a.numberAt(1), y = a.numberAt(2);
-  if (!x || !y || !a.maxWords(3)) return std::nullopt;
+std::optional<std::tuple<client::Point>> parsePoint(Arguments& line) {
+  const auto x = line.numberAt(1), y = line.numberAt(2);
+  if (!x || !y || !line.maxWords(3)) return std::nullopt;
   return std::tuple{client::Point{*x, *y}};
 }
 
-std::optional<std::tuple<std::uint32_t>> parseBodyId(Arguments& a) {
-  const auto id = a.idAt(1);
-  if (!id || !a.maxWords(2)) return std::nullopt;
+std::optional<std::tuple<std::uint32_t>> parseBodyId(Arguments& line) {
+  const auto id = line.idAt(1);
+  if (!id || !line.maxWords(2)) return std::nullopt;
   return std::tuple{*id};
 }
 
 std::optional<std::tuple<std::uint32_t, client::Point, std::optional<client::Point>>> parseImpulse(
-    Arguments& a) {
-  const auto id = a.idAt(1);
-  const auto jx = a.numberAt(2), jy = a.numberAt(3);
+    Arguments& line) {
+  const auto id = line.idAt(1);
+  const auto jx = line.numberAt(2), jy = line.numberAt(3);
   if (!id || !jx || !jy) return std::nullopt;
   std::optional<client::Point> point;
-  if (a.size() > 4) {
-    const auto px = a.numberAt(4), py = a.numberAt(5);
+  if (line.size() > 4) {
+    const auto px = line.numberAt(4), py = line.numberAt(5);
     if (!px || !py) return std::nullopt;
     point = client::Point{*px, *py};
   }
-  if (!a.maxWords(6)) return std::nullopt;
+  if (!line.maxWords(6)) return std::nullopt;
   return std::tuple{*id, client::Point{*jx, *jy}, point};
 }
 
-std::optional<std::tuple<std::uint64_t, bool>> parsePing(Arguments& a) {
-  if (!parseNoArguments(a)) return std::nullopt;
+std::optional<std::tuple<std::uint64_t, bool>> parsePing(Arguments& line) {
+  if (!parseNoArguments(line)) return std::nullopt;
   const bool wantStateHash = false;
   return std::tuple{std::uint64_t(0), wantStateHash};
 }

@@ -74,10 +74,8 @@ void Simulation::changedBody(BodyId id) {
 
 InputResult Simulation::setGravity(const Vec2& gravity) {
   InputResult changed = world_.setGravity(gravity);
-  if (changed) {
-    changes_.worldWide();
-    ++version_;
-  }
+  // Every snapshot carries gravity and the pause flag: no body to list.
+  if (changed) ++version_;
   return changed;
 }
 
@@ -98,7 +96,6 @@ void Simulation::clear() {
 
 void Simulation::setPaused(bool paused) {
   paused_ = paused;
-  changes_.worldWide();
   ++version_;
 }
 

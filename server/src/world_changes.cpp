@@ -13,15 +13,9 @@ void sortUnique(std::vector<BodyId>& ids) {
 
 }  // namespace
 
-void WorldChanges::added(BodyId id) {
-  added_.push_back(id);
-  pending_ = true;
-}
+void WorldChanges::added(BodyId id) { added_.push_back(id); }
 
-void WorldChanges::removed(BodyId id) {
-  removed_.push_back(id);
-  pending_ = true;
-}
+void WorldChanges::removed(BodyId id) { removed_.push_back(id); }
 
 void WorldChanges::leftWorld(BodyId id) {
   leftWorld_.push_back(id);
@@ -33,13 +27,11 @@ void WorldChanges::changed(std::span<const BodyId> ids, int bodyCount) {
   // Several steps between snapshots repeat the same ids.
   const std::size_t limit = 4 * std::max<std::size_t>(std::size_t(bodyCount), 256);
   if (changed_.size() > limit) sortUnique(changed_);
-  pending_ = true;
 }
 
 void WorldChanges::replaced() {
   *this = WorldChanges();
   replaced_ = true;
-  pending_ = true;
 }
 
 void WorldChanges::normalise() {

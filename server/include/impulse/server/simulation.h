@@ -59,8 +59,6 @@ class Simulation {
   const PresetInfo& preset() const { return preset_; }
   /// Changes with every change of the world or its meta: names its state.
   std::uint64_t version() const { return version_; }
-  /// Anything changed since the last takeChanges()?
-  bool changesPending() const { return changes_.pending(); }
   /// The changes since the last call, forgotten here.
   WorldChanges takeChanges();
 

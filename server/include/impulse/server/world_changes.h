@@ -24,11 +24,6 @@ class WorldChanges {
   void changed(std::span<const BodyId> ids, int bodyCount);
   /// Every body was replaced (clear, preset): the next snapshot is full.
   void replaced();
-  /// Something world-wide changed (gravity, pause): a snapshot is due.
-  void worldWide() { pending_ = true; }
-
-  /// Anything to send since the last take?
-  bool pending() const { return pending_; }
   bool wasReplaced() const { return replaced_; }
   /// Each list sorted, without repeats; `changed` includes `added`.
   void normalise();
@@ -43,7 +38,6 @@ class WorldChanges {
   std::vector<BodyId> leftWorld_;
   std::vector<BodyId> changed_;
   bool replaced_ = false;
-  bool pending_ = false;
 };
 
 }  // namespace impulse::server
