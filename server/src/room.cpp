@@ -99,9 +99,9 @@ void Room::leave(Session& session) {
   std::erase_if(steps_, [&](const StepJob& job) { return job.client() == session.id(); });
 }
 
-Session* Room::member(std::uint32_t client) const {
+std::shared_ptr<Session> Room::member(std::uint32_t client) const {
   const auto it = members_.find(client);
-  return it == members_.end() ? nullptr : it->second.get();
+  return it == members_.end() ? nullptr : it->second;
 }
 
 void Room::enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes) {
@@ -164,8 +164,9 @@ void Room::advanceStep(Clock::time_point deadline) {
   StepJob job = std::move(steps_.front());
   steps_.pop_front();
   commands_.release(job.client());
-  if (Session* session = member(job.client()))
+  if (const auto session = member(job.client())) {
     reply(*session, job.finish(simulation_), job.bytes());
+  }
   broadcastSnapshot();
 }
 
@@ -178,7 +179,7 @@ void Room::applyCommands(Clock::time_point deadline) {
     auto queued = commands_.pop();
     if (!queued) break;
     // Leavers' queues are dropped, so the client is always a member.
-    if (Session* session = member(queued->client)) applyQueued(*queued, *session);
+    if (const auto session = member(queued->client)) applyQueued(*queued, *session);
   }
 }
 
@@ -221,15 +222,16 @@ void Room::broadcastSnapshot() {
   // after paused steps broadcast on other ticks.
   lastSnapshotSlot_ = snapshotSlot();
   ++snapshotSequence_;
-  std::vector<Session*> subscribers;
+  // Copies: a session that a send closes leaves members_ at once.
+  std::vector<std::shared_ptr<Session>> subscribers;
   for (const auto& [id, session] : members_) {
-    if (session->subscribed()) subscribers.push_back(session.get());
+    if (session->subscribed()) subscribers.push_back(session);
   }
   auto changes = simulation_.takeChanges();
   if (subscribers.empty()) return;
   const auto delta = snapshots_.delta(std::move(changes));
   lastSnapshotBytes_ = delta->size();
-  for (Session* session : subscribers) session->offerSnapshot(snapshotSequence_, delta);
+  for (const auto& session : subscribers) session->offerSnapshot(snapshotSequence_, delta);
 }
 
 v1::ServerStats Room::stats(bool withStateHash) {

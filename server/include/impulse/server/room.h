@@ -71,7 +71,9 @@ class Room final : public SnapshotSource {
   std::int64_t snapshotSlot() const;
   v1::ServerStats stats(bool withStateHash);
   void logStats(Clock::time_point now);
-  Session* member(std::uint32_t client) const;
+  /// A shared owner, so that a session closed by what is sent to it stays
+  /// alive until the caller is done with it; null for a non-member.
+  std::shared_ptr<Session> member(std::uint32_t client) const;
 
   const ServerOptions& options_;
   RoomHost& host_;
