@@ -15,6 +15,7 @@
 #include "impulse/server/access.h"
 #include "impulse/server/commands.h"
 #include "impulse/server/simulation.h"
+#include "impulse/server/step_job.h"
 #include "impulse/wire/framing.h"
 
 namespace {
@@ -39,6 +40,15 @@ std::uint64_t replyRequestId(const impulse::v1::ServerMessage& reply) {
   return reply.pong().request_id();
 }
 
+// A Step's ticks, all at once (the server spreads them over its ticks).
+impulse::v1::ServerMessage runStep(Simulation& simulation,
+                                   impulse::server::CommandOutcome&& outcome) {
+  impulse::server::StepJob job(0, std::move(outcome.reply), outcome.ticksToStep, 0);
+  while (!job.advance(simulation, impulse::server::Clock::time_point::max())) {
+  }
+  return job.finish(simulation);
+}
+
 void applyOne(Simulation& simulation, impulse::server::Ownership& ownership,
               const impulse::v1::ClientMessage& message, bool asPlayer) {
   const impulse::server::CommandLimits limits{.maxStepTicks = 4};
@@ -47,7 +57,8 @@ void applyOne(Simulation& simulation, impulse::server::Ownership& ownership,
   const int bodiesBefore = simulation.world().bodyCount();
   const impulse::Vec2 gravityBefore = simulation.world().gravity();
 
-  const auto outcome = impulse::server::applyCommand(simulation, message, limits, {});
+  auto outcome = impulse::server::applyCommand(simulation, message, limits);
+  if (outcome.ticksToStep > 0) outcome.reply = runStep(simulation, std::move(outcome));
   FUZZ_CHECK(replyRequestId(outcome.reply) == message.request_id());
   if (outcome.reply.has_command_result() && !outcome.reply.command_result().ok()) {
     FUZZ_CHECK(!outcome.reply.command_result().error().empty());

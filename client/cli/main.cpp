@@ -29,19 +29,21 @@ using Milliseconds = std::chrono::milliseconds;
 // Commands in flight at once: well under the server's per-client queue caps.
 constexpr std::size_t kMaxPipelined = 256;
 
-constexpr const char* kScriptHelp =
-    "Script commands, one per line ('#' starts a comment):\n"
-    "  preset N [MATERIAL]       load preset 0-10\n"
-    "  pause | resume            stop or restart the tick clock\n"
-    "  step N                    while paused: advance exactly N ticks\n"
-    "  circle X Y R [MATERIAL] [static] [nograv]\n"
-    "  polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]\n"
-    "  gravity GX GY | nudge DX DY | reset-gravity\n"
-    "  clear | remove ID | impulse ID JX JY [PX PY]\n"
-    "  query ID | bodies | wait-snapshot | ping\n"
-    "MATERIAL: solid, ice, wood, metal, rubber.\n"
-    "--token defaults to the environment's IMPULSE_TOKEN; it is sent in Hello.\n"
-    "Exit status: 0 every line succeeded, 1 some line failed, 2 arguments or connection failed.";
+// The --help footer: the script grammar, from the command table.
+std::string scriptHelp() {
+  std::string help = "Script commands, one per line ('#' starts a comment):\n";
+  const std::string grammar = cli::scriptGrammar();
+  for (std::size_t start = 0; start < grammar.size();) {
+    const std::size_t end = grammar.find('\n', start) + 1;
+    help.append("  ").append(grammar, start, end - start);
+    start = end;
+  }
+  return help +
+         "MATERIAL: solid, ice, wood, metal, rubber.\n"
+         "--token defaults to the environment's IMPULSE_TOKEN; it is sent in Hello.\n"
+         "Exit status: 0 every line succeeded, 1 some line failed, 2 arguments or connection "
+         "failed.";
+}
 
 // Script lines. A file is read directly; stdin is read on its own thread so
 // the connection keeps being serviced (snapshots drained) while a person types.
@@ -248,7 +250,7 @@ int main(int argc, char** argv) {
       ->option_text("T");
   app.add_option("script", arguments.script, "script file; '-' or none: stdin")
       ->option_text("SCRIPT");
-  app.footer(kScriptHelp);
+  app.footer(scriptHelp());
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

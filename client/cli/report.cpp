@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "impulse/wire/convert.h"
+#include "impulse/wire/parse_number.h"
 #include "server_wording.h"
 
 namespace impulse::cli {
@@ -60,9 +61,7 @@ Json number(double value) {
   // reader gets the same float, a person reads what the engine meant.
   char text[32];
   const auto end = std::to_chars(text, text + sizeof text, single).ptr;
-  double readable = value;
-  std::from_chars(text, end, readable);
-  return readable;
+  return wire::parseNumber<double>(std::string_view(text, std::size_t(end - text))).value_or(value);
 }
 
 Json lineReport(std::size_t line, std::string_view command) {

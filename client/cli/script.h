@@ -1,29 +1,26 @@
 #pragma once
 // The impulse-cli script grammar: one command per line, '#' starts a comment.
-//
-//   preset N [MATERIAL]          load preset 0-10 (MATERIAL: the one preset 9 uses)
-//   pause | resume               stop or restart the tick clock
-//   step N                       while paused: advance exactly N ticks
-//   circle X Y R [MATERIAL] [static] [nograv]
-//   polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]
-//   gravity GX GY | nudge DX DY | reset-gravity
-//   clear | remove ID | impulse ID JX JY [PX PY]
-//   query ID                     body description, state and mass properties
-//   bodies                       the client's mirror of every body
-//   wait-snapshot                the newest snapshot since the last command (or the
-//                                next one to arrive), summarised
-//   ping                         round trip and server statistics
-//
-// MATERIAL is solid, ice, wood, metal or rubber (any case).
+// The protocol's words, their grammar and help are the rows of the command
+// table (impulse/wire/command_table.h); the CLI adds words of its own
+// (bodies, wait-snapshot). scriptGrammar() writes them all for --help;
+// tests/net/command_table_test.cpp holds README.md and docs/server.md to it.
 
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "impulse.pb.h"
 
 namespace impulse::cli {
+
+/// A script word: how it is written and what it does.
+struct ScriptWord {
+  std::string_view word;
+  std::string_view usage;
+  std::string_view help;
+};
 
 struct ScriptCommand {
   enum class Kind { Server, Bodies, WaitSnapshot };
@@ -40,5 +37,12 @@ struct ParsedLine {
 
 /// Parses one line. Errors say what was expected and what was wrong.
 ParsedLine parseScriptLine(std::string_view line);
+
+/// Every script word: the command table's, in its order, then the CLI's own.
+std::vector<ScriptWord> scriptWords();
+/// One "usage  help" entry per word, as --help and README.md show them.
+std::string scriptGrammar();
+/// One "| `usage` | help |" row per word, as docs/server.md shows them.
+std::string scriptGrammarTable();
 
 }  // namespace impulse::cli

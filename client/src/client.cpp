@@ -1,8 +1,7 @@
 #include "impulse/client/client.h"
 
-#include <charconv>
-
 #include "impulse/client/commands.h"
+#include "impulse/wire/parse_number.h"
 
 namespace impulse::client {
 
@@ -33,12 +32,9 @@ std::optional<std::pair<std::string, std::uint16_t>> parseHostPort(std::string_v
   if (host.size() >= 2 && host.front() == '[' && host.back() == ']') {
     host = host.substr(1, host.size() - 2);
   }
-  unsigned port = 0;
-  const auto [end, ec] = std::from_chars(portText.data(), portText.data() + portText.size(), port);
-  if (ec != std::errc() || end != portText.data() + portText.size() || port == 0 || port > 65535) {
-    return std::nullopt;
-  }
-  return std::make_pair(std::string(host), std::uint16_t(port));
+  const auto port = wire::parseNumber<unsigned>(portText);
+  if (!port || *port == 0 || *port > 65535) return std::nullopt;
+  return std::make_pair(std::string(host), std::uint16_t(*port));
 }
 
 Client::Client(const ConnectOptions& options) : socket_(io_), reader_(options.maxFrameBytes) {

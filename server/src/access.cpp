@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "impulse/server/commands.h"
+
 namespace impulse::server {
 
 namespace {
@@ -17,22 +19,6 @@ bool sameSecret(std::string_view a, std::string_view b) {
     difference |= static_cast<unsigned char>(x ^ y);
   }
   return difference == 0;
-}
-
-bool worldWide(v1::ClientMessage::CommandCase command) {
-  using C = v1::ClientMessage;
-  switch (command) {
-    case C::kLoadPreset:
-    case C::kSetGravity:
-    case C::kNudgeGravity:
-    case C::kResetGravity:
-    case C::kClear:
-    case C::kSetPaused:
-    case C::kStep:
-      return true;
-    default:
-      return false;
-  }
 }
 
 // The body a remove_body or apply_impulse acts on.
@@ -57,31 +43,9 @@ bool isLoopbackAddress(std::string_view address) {
   return address == "localhost" || address == "::1" || address.starts_with("127.");
 }
 
-std::string_view commandName(const v1::ClientMessage& message) {
-  using C = v1::ClientMessage;
-  switch (message.command_case()) {
-    case C::kHello: return "hello";
-    case C::kSpawnCircle: return "spawn_circle";
-    case C::kSpawnPolygon: return "spawn_polygon";
-    case C::kLoadPreset: return "load_preset";
-    case C::kSetGravity: return "set_gravity";
-    case C::kNudgeGravity: return "nudge_gravity";
-    case C::kResetGravity: return "reset_gravity";
-    case C::kClear: return "clear";
-    case C::kRemoveBody: return "remove_body";
-    case C::kApplyImpulse: return "apply_impulse";
-    case C::kSetPaused: return "set_paused";
-    case C::kStep: return "step";
-    case C::kQueryBody: return "query_body";
-    case C::kPing: return "ping";
-    case C::COMMAND_NOT_SET: break;
-  }
-  return "(no command)";
-}
-
 std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint32_t client) const {
   const std::string_view command = commandName(message);
-  if (worldWide(message.command_case())) {
+  if (changesEveryonesWorld(message)) {
     return std::string(command) +
            ": refused for the player role (it changes everyone's world: the admin role, "
            "Hello.token = the admin token, is needed)";

@@ -8,9 +8,8 @@ void FairQueue::push(std::uint32_t client, v1::ClientMessage&& message, std::siz
 }
 
 std::optional<QueuedCommand> FairQueue::pop() {
-  if (queues_.empty()) return std::nullopt;
-  auto it = queues_.lower_bound(nextClient_);
-  if (it == queues_.end()) it = queues_.begin();
+  auto it = nextServed();
+  if (it == queues_.end()) return std::nullopt;
   QueuedCommand command = std::move(it->second.front());
   it->second.pop_front();
   --size_;
@@ -20,7 +19,21 @@ std::optional<QueuedCommand> FairQueue::pop() {
   return command;
 }
 
+FairQueue::Queues::iterator FairQueue::nextServed() {
+  // Held clients are few (those with a Step in progress): skipping them
+  // costs a step or two.
+  const auto start = queues_.lower_bound(nextClient_);
+  for (auto it = start; it != queues_.end(); ++it) {
+    if (!held_.contains(it->first)) return it;
+  }
+  for (auto it = queues_.begin(); it != start; ++it) {
+    if (!held_.contains(it->first)) return it;
+  }
+  return queues_.end();
+}
+
 std::size_t FairQueue::dropClient(std::uint32_t client) {
+  held_.erase(client);
   const auto it = queues_.find(client);
   if (it == queues_.end()) return 0;
   const std::size_t dropped = it->second.size();

@@ -1,6 +1,5 @@
 #include "impulse/server/options.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -8,19 +7,11 @@
 
 #include "impulse/scenes/presets.h"
 #include "impulse/server/access.h"
+#include "impulse/wire/parse_number.h"
 
 namespace impulse::server {
 
 namespace {
-
-template <class T>
-std::optional<T> parseNumber(std::string_view text) {
-  T value{};
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || ptr != end || text.empty()) return std::nullopt;
-  return value;
-}
 
 struct Flag {
   std::string_view name;
@@ -35,7 +26,7 @@ struct Flag {
 template <class Int>
 std::string intFlag(std::string_view name, std::string_view text, long long min, long long max,
                     Int& out) {
-  const auto value = parseNumber<long long>(text);
+  const auto value = wire::parseNumber<long long>(text);
   if (!value || *value < min || *value > max) {
     return std::string(name) + " expects an integer in " + std::to_string(min) + ".." +
            std::to_string(max) + ", got '" + std::string(text) + "'";
@@ -46,7 +37,7 @@ std::string intFlag(std::string_view name, std::string_view text, long long min,
 
 std::string realFlag(std::string_view name, std::string_view text, double min, double max,
                      double& out) {
-  const auto value = parseNumber<double>(text);
+  const auto value = wire::parseNumber<double>(text);
   if (!value || !std::isfinite(*value) || *value < min || *value > max) {
     return std::string(name) + " expects a number in " + std::to_string(min) + ".." +
            std::to_string(max) + ", got '" + std::string(text) + "'";

@@ -1,6 +1,7 @@
 #include "impulse/server/session.h"
 
 #include <algorithm>
+#include <cassert>
 #include <vector>
 
 #include "impulse/server/log.h"
@@ -63,6 +64,30 @@ std::string Session::label() const {
   return text;
 }
 
+bool Session::allowed(Phase from, Phase to) {
+  switch (to) {
+    case Phase::AwaitingHello:
+      return false;
+    case Phase::Serving:
+      return from == Phase::AwaitingHello;
+    case Phase::Streaming:
+      return from == Phase::Serving;
+    case Phase::Flushing:
+      return from <= Phase::Streaming;
+    case Phase::Lingering:
+      return from == Phase::Flushing;
+    case Phase::Closed:
+      return from != Phase::Closed;
+  }
+  return false;
+}
+
+void Session::enter(Phase next) {
+  // A refused transition is a bug in this file, not something a peer can cause.
+  assert(allowed(phase_, next));
+  phase_ = next;
+}
+
 void Session::start() { readMore(); }
 
 void Session::reject(const std::string& message) { fatal(message); }
@@ -70,9 +95,9 @@ void Session::reject(const std::string& message) { fatal(message); }
 // ------------------------------------------------------------------- reading
 
 void Session::readMore() {
-  if (reading_ || closed_) return;
-  if (!lingering_) {
-    if (closeAfterFlush_ || pendingCommandBytes_ >= limits_.maxPendingCommandBytes) return;
+  if (reading_ || phase_ == Phase::Closed) return;
+  if (phase_ != Phase::Lingering) {
+    if (!acceptingTraffic() || pendingCommandBytes_ >= limits_.maxPendingCommandBytes) return;
     if (readBegin_ < readEnd_) return processBuffered();
   }
   sizeReadBuffer();
@@ -93,14 +118,14 @@ void Session::sizeReadBuffer() {
 
 void Session::onRead(const asio::error_code& ec, std::size_t bytes) {
   reading_ = false;
-  if (closed_) return;
-  if (lingering_) {
+  if (phase_ == Phase::Closed) return;
+  if (phase_ == Phase::Lingering) {
     // Draining what the peer still sends, so that closing does not reset the
     // connection before it read our Error.
     if (ec) return close("closed after error");
     return readMore();
   }
-  if (closeAfterFlush_) return;
+  if (!acceptingTraffic()) return;
   if (ec) {
     if (ec == asio::error::eof && !reader_.atFrameBoundary()) {
       return fatal(reader_.truncationMessage());
@@ -117,7 +142,7 @@ void Session::onRead(const asio::error_code& ec, std::size_t bytes) {
 void Session::processBuffered() {
   // Stops early when the command cap is reached; the rest of the buffer waits
   // until commandsApplied() resumes reading.
-  while (readBegin_ < readEnd_ && !closed_ && !closeAfterFlush_ &&
+  while (readBegin_ < readEnd_ && acceptingTraffic() &&
          pendingCommandBytes_ < limits_.maxPendingCommandBytes) {
     const auto result =
         reader_.feed(std::span<const char>(readBuffer_.data() + readBegin_, readEnd_ - readBegin_));
@@ -134,14 +159,14 @@ void Session::handleFrame(std::string_view payload) {
     return fatal("a frame of " + std::to_string(payload.size()) +
                  " bytes does not parse as a ClientMessage");
   }
-  if (!helloDone_) {
+  if (phase_ == Phase::AwaitingHello) {
     if (!message.has_hello()) return fatal("the first message must be Hello");
     const auto& hello = message.hello();
     if (hello.protocol_version() != wire::kProtocolVersion) {
       return fatal("unsupported protocol version " + std::to_string(hello.protocol_version()) +
                    " (this server speaks " + std::to_string(wire::kProtocolVersion) + ")");
     }
-    helloDone_ = true;
+    enter(Phase::Serving);
     // The name only labels log lines: short and printable.
     name_ = hello.client_name().substr(0, 64);
     for (char& c : name_) {
@@ -180,17 +205,19 @@ void Session::commandsApplied(std::size_t bytes) {
 // ------------------------------------------------------------------- writing
 
 void Session::send(const v1::ServerMessage& message) {
-  if (closed_) return;
+  if (phase_ == Phase::Closed) return;
   push({wire::encodeSharedFrame(message), false});
 }
 
-void Session::subscribe() {
-  subscribed_ = true;
+void Session::subscribe(SnapshotSource& source) {
+  if (phase_ != Phase::Serving) return;
+  enter(Phase::Streaming);
+  snapshotSource_ = &source;
   push({nullptr, true});
 }
 
 void Session::offerSnapshot(std::uint64_t sequence, const SharedFrame& delta) {
-  if (closed_ || closeAfterFlush_ || !subscribed_) return;
+  if (phase_ != Phase::Streaming) return;
   if (unsentSnapshot_) {
     // The client has not taken the previous snapshot yet: instead of queueing
     // both, the unsent one becomes a full snapshot built when it is written.
@@ -201,16 +228,16 @@ void Session::offerSnapshot(std::uint64_t sequence, const SharedFrame& delta) {
       }
     }
     // (The snapshot a new subscriber waits for is not a skip.)
-    if (hasSnapshotSequence_) ++snapshotsSkipped_;
+    if (lastSnapshotSequence_) ++snapshotsSkipped_;
     return;
   }
-  const bool chained = hasSnapshotSequence_ && lastSnapshotSequence_ + 1 == sequence;
+  const bool chained = lastSnapshotSequence_ && *lastSnapshotSequence_ + 1 == sequence;
   if (chained) lastSnapshotSequence_ = sequence;
   push({chained ? delta : nullptr, true});
 }
 
 void Session::push(Outgoing item) {
-  if (closed_ || closeAfterFlush_) return;
+  if (!acceptingTraffic()) return;
   if (item.snapshot) {
     unsentSnapshot_ = true;
   } else {
@@ -225,14 +252,14 @@ void Session::push(Outgoing item) {
 }
 
 std::size_t Session::lockedItems() const {
-  if (writing_) return inFlight_;
+  if (inFlight_ > 0) return inFlight_;
   return writeOffset_ > 0 ? 1 : 0;
 }
 
 void Session::writeMore() {
-  if (writing_ || closed_) return;
+  if (inFlight_ > 0 || phase_ == Phase::Closed) return;
   if (queue_.empty()) {
-    if (closeAfterFlush_ && !lingering_) startLinger();
+    if (phase_ == Phase::Flushing) startLinger();
     return;
   }
   std::vector<asio::const_buffer> buffers;
@@ -243,23 +270,20 @@ void Session::writeMore() {
     if (item.snapshot) {
       unsentSnapshot_ = false;
       if (!item.frame) {
-        auto [frame, sequence] = host_.currentFullSnapshot();
+        auto [frame, sequence] = snapshotSource_->fullSnapshot();
         item.frame = std::move(frame);
         lastSnapshotSequence_ = sequence;
-        hasSnapshotSequence_ = true;
       }
     }
     const std::size_t skip = i == 0 ? writeOffset_ : 0;
     buffers.emplace_back(item.frame->data() + skip, item.frame->size() - skip);
   }
   inFlight_ = count;
-  writing_ = true;
   lastWriteProgress_ = Clock::now();
   socket_.async_write_some(buffers,
                            [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
-                             self->writing_ = false;
                              self->inFlight_ = 0;
-                             if (self->closed_) return;
+                             if (self->phase_ == Phase::Closed) return;
                              if (ec) return self->close(ec.message());
                              self->onWritten(n);
                            });
@@ -285,7 +309,7 @@ void Session::onWritten(std::size_t bytes) {
 // ------------------------------------------------------------------- closing
 
 void Session::fatal(const std::string& message) {
-  if (closed_ || closeAfterFlush_) return;
+  if (!acceptingTraffic()) return;
   logLine(label() + ": " + message);
   v1::ServerMessage error;
   error.mutable_error()->set_message(message);
@@ -296,15 +320,14 @@ void Session::fatal(const std::string& message) {
     if (!item.snapshot) queuedReplyBytes_ += item.frame->size();
   }
   unsentSnapshot_ = false;
-  subscribed_ = false;
-  closeAfterFlush_ = true;
+  enter(Phase::Flushing);
   queue_.push_back({wire::encodeSharedFrame(error), false});
   queuedReplyBytes_ += queue_.back().frame->size();
   writeMore();
 }
 
 void Session::startLinger() {
-  lingering_ = true;
+  enter(Phase::Lingering);
   lingerSince_ = Clock::now();
   asio::error_code ignored;
   socket_.shutdown(asio::ip::tcp::socket::shutdown_send, ignored);
@@ -312,28 +335,28 @@ void Session::startLinger() {
 }
 
 void Session::checkTimeouts(Clock::time_point now) {
-  if (closed_) return;
-  if (lingering_) {
+  if (phase_ == Phase::Closed) return;
+  if (phase_ == Phase::Lingering) {
     if (now - lingerSince_ > kLingerTimeout) close("closed after error");
     return;
   }
-  if (writing_ && now - lastWriteProgress_ > limits_.stallTimeout) {
+  if (inFlight_ > 0 && now - lastWriteProgress_ > limits_.stallTimeout) {
     return close("stalled: accepted no data for " + seconds(limits_.stallTimeout));
   }
-  if (closeAfterFlush_) return;
-  if (!helloDone_ && now - connectedAt_ > limits_.stallTimeout) {
+  if (phase_ == Phase::Flushing) return;
+  if (phase_ == Phase::AwaitingHello && now - connectedAt_ > limits_.stallTimeout) {
     return fatal("no Hello within " + seconds(limits_.stallTimeout));
   }
   // Subscribers are exempt: reading snapshots is their business, and the
   // stall timeout drops them when they stop.
-  if (helloDone_ && !subscribed_ && pendingCommandBytes_ == 0 &&
+  if (phase_ == Phase::Serving && pendingCommandBytes_ == 0 &&
       now - lastActive_ > limits_.idleTimeout) {
     fatal("idle: sent nothing for " + seconds(limits_.idleTimeout) + " and subscribes to nothing");
   }
 }
 
 bool Session::evictable(Clock::time_point now) const {
-  return acceptingTraffic() && !subscribed_ && queue_.empty() && pendingCommandBytes_ == 0 &&
+  return phase_ <= Phase::Serving && queue_.empty() && pendingCommandBytes_ == 0 &&
          now - lastActive_ >= kEvictableAfter;
 }
 
@@ -343,8 +366,8 @@ void Session::evict(Clock::time_point now) {
 }
 
 void Session::close(const std::string& reason) {
-  if (closed_) return;
-  closed_ = true;
+  if (phase_ == Phase::Closed) return;
+  enter(Phase::Closed);
   logLine(label() + " closed: " + reason);
   asio::error_code ignored;
   socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);

@@ -1,6 +1,7 @@
 #include "impulse/server/simulation.h"
 
 #include <chrono>
+#include <utility>
 
 namespace impulse::server {
 
@@ -18,7 +19,6 @@ WorldSettings worldSettings(const SimulationSettings& settings) {
 Simulation::Simulation(const SimulationSettings& settings)
     : tickHz_(settings.tickHz),
       world_(worldSettings(settings)),
-      snapshots_(world_),
       paused_(settings.paused),
       stepTimes_(std::size_t(settings.tickHz + 0.5)) {
   loadPreset(settings.preset, Material::Solid);
@@ -30,36 +30,83 @@ void Simulation::step() {
   ++tick_;
   stepTimes_.record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  snapshots_.stepped(world_.movedBodies());
-  for (const BodyId id : world_.escapedBodies()) snapshots_.bodyLeftWorld(id);
+  changes_.changed(world_.movedBodies(), world_.bodyCount());
+  for (const BodyId id : world_.escapedBodies()) changes_.leftWorld(id);
   bodiesLeftWorld_ += world_.escapedBodies().size();
+  ++version_;
 }
 
-std::uint64_t Simulation::stateHash() {
-  // Every change to the world goes through the snapshot builder, whose
-  // version therefore names the world's state.
-  if (hashVersion_ != snapshots_.version()) {
-    hash_ = world_.stateHash();
-    hashVersion_ = snapshots_.version();
+CreateResult Simulation::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
+  const auto created = world_.createCircle(center, radius, options);
+  if (created.ok()) {
+    changes_.added(created.id);
+    ++version_;
   }
-  return hash_;
+  return created;
+}
+
+CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
+  const auto created = world_.createPolygon(points, options);
+  if (created.ok()) {
+    changes_.added(created.id);
+    ++version_;
+  }
+  return created;
+}
+
+bool Simulation::removeBody(BodyId id) {
+  if (!world_.destroyBody(id)) return false;
+  changes_.removed(id);
+  ++version_;
+  return true;
+}
+
+InputResult Simulation::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
+  InputResult applied = world_.applyImpulse(id, impulse, point);
+  if (applied) changedBody(id);
+  return applied;
+}
+
+void Simulation::changedBody(BodyId id) {
+  changes_.changed(std::span(&id, 1), world_.bodyCount());
+  ++version_;
+}
+
+InputResult Simulation::setGravity(const Vec2& gravity) {
+  InputResult changed = world_.setGravity(gravity);
+  // Every snapshot carries gravity and the pause flag: no body to list.
+  if (changed) ++version_;
+  return changed;
 }
 
 bool Simulation::loadPreset(int id, Material selected) {
   const auto info = impulse::loadPreset(world_, id, selected);
   if (!info) return false;
-  snapshots_.worldReplaced(*info);
+  preset_ = *info;
+  changes_.replaced();
+  ++version_;
   return true;
 }
 
 void Simulation::clear() {
   world_.clear();
-  snapshots_.worldReplaced(snapshots_.preset());
+  changes_.replaced();
+  ++version_;
 }
 
 void Simulation::setPaused(bool paused) {
   paused_ = paused;
-  snapshots_.worldChanged();
+  ++version_;
+}
+
+WorldChanges Simulation::takeChanges() { return std::exchange(changes_, WorldChanges()); }
+
+std::uint64_t Simulation::stateHash() {
+  if (hashVersion_ != version_) {
+    hash_ = world_.stateHash();
+    hashVersion_ = version_;
+  }
+  return hash_;
 }
 
 }  // namespace impulse::server

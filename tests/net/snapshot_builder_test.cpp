@@ -7,6 +7,7 @@
 
 #include "impulse/client/world_mirror.h"
 #include "impulse/server/simulation.h"
+#include "impulse/server/snapshot_builder.h"
 #include "impulse/wire/framing.h"
 
 namespace impulse::server {
@@ -47,7 +48,8 @@ SimulationSettings pausedSandbox() {
 
 TEST(SnapshotBuilder, FullSnapshotListsEveryBodyWithThePreset) {
   Simulation sim(pausedSandbox());
-  const auto snapshot = decode(sim.snapshots().full(sim.meta()));
+  SnapshotBuilder snapshots(sim);
+  const auto snapshot = decode(snapshots.full());
   EXPECT_TRUE(snapshot.full());
   EXPECT_EQ(snapshot.preset().id(), 0);
   EXPECT_FALSE(snapshot.preset().title().empty());
@@ -57,12 +59,12 @@ TEST(SnapshotBuilder, FullSnapshotListsEveryBodyWithThePreset) {
 
 TEST(SnapshotBuilder, DeltaLeavesOutSleepingAndUnchangedBodies) {
   Simulation sim(pausedSandbox());
-  sim.snapshots().takeDelta(sim.meta());  // the preset's full snapshot
-  const auto ball = sim.world().createCircle(Vec2(5, 5), 0.5f);
+  SnapshotBuilder snapshots(sim);
+  snapshots.delta(sim.takeChanges());  // the preset's full snapshot
+  const auto ball = sim.createCircle(Vec2(5, 5), 0.5f, {});
   ASSERT_TRUE(ball.ok()) << ball.error;
-  sim.snapshots().bodyAdded(ball.id);
   sim.step();
-  auto delta = decode(sim.snapshots().takeDelta(sim.meta()));
+  auto delta = decode(snapshots.delta(sim.takeChanges()));
   EXPECT_FALSE(delta.full());
   ASSERT_EQ(delta.added_size(), 1);
   EXPECT_EQ(delta.added(0).id(), ball.id.value);
@@ -73,18 +75,19 @@ TEST(SnapshotBuilder, DeltaLeavesOutSleepingAndUnchangedBodies) {
   // Once everything sleeps, a step sends no body at all.
   for (int i = 0; i < 600 && sim.world().awakeBodyCount() > 0; ++i) sim.step();
   ASSERT_EQ(sim.world().awakeBodyCount(), 0);
-  sim.snapshots().takeDelta(sim.meta());
+  snapshots.delta(sim.takeChanges());
   sim.step();
-  delta = decode(sim.snapshots().takeDelta(sim.meta()));
+  delta = decode(snapshots.delta(sim.takeChanges()));
   EXPECT_EQ(delta.bodies_size(), 0);
   EXPECT_EQ(delta.added_size(), 0);
 }
 
 TEST(SnapshotBuilder, ReplacedWorldGivesAFullSnapshotWithTheNewPreset) {
   Simulation sim(pausedSandbox());
-  sim.snapshots().takeDelta(sim.meta());
+  SnapshotBuilder snapshots(sim);
+  snapshots.delta(sim.takeChanges());
   ASSERT_TRUE(sim.loadPreset(3, Material::Solid));
-  const auto snapshot = decode(sim.snapshots().takeDelta(sim.meta()));
+  const auto snapshot = decode(snapshots.delta(sim.takeChanges()));
   EXPECT_TRUE(snapshot.full());
   EXPECT_EQ(snapshot.preset().id(), 3);
   EXPECT_GT(snapshot.preset().markers_size(), 0);
@@ -92,8 +95,9 @@ TEST(SnapshotBuilder, ReplacedWorldGivesAFullSnapshotWithTheNewPreset) {
 
 TEST(SnapshotBuilder, MirrorsFollowTheWorldExactlyThroughRandomChanges) {
   Simulation sim(pausedSandbox());
+  SnapshotBuilder snapshots(sim);
   client::WorldMirror fromStart;
-  ASSERT_TRUE(fromStart.apply(decode(sim.snapshots().takeDelta(sim.meta()))));
+  ASSERT_TRUE(fromStart.apply(decode(snapshots.delta(sim.takeChanges()))));
   client::WorldMirror lateJoiner;
   bool joined = false;
   std::mt19937 random(11);
@@ -101,21 +105,17 @@ TEST(SnapshotBuilder, MirrorsFollowTheWorldExactlyThroughRandomChanges) {
   for (int round = 0; round < 120; ++round) {
     const int action = int(random() % 10);
     if (action < 4) {
-      const auto created = sim.world().createCircle(
-          Vec2(2 + float(random() % 20), 3 + float(random() % 12)), 0.3f + 0.1f * (random() % 4));
-      if (created.ok()) {
-        sim.snapshots().bodyAdded(created.id);
-        live.push_back(created.id);
-      }
+      const auto created =
+          sim.createCircle(Vec2(2 + float(random() % 20), 3 + float(random() % 12)),
+                           0.3f + 0.1f * (random() % 4), {});
+      if (created.ok()) live.push_back(created.id);
     } else if (action == 4 && !live.empty()) {
       const std::size_t index = random() % live.size();
-      ASSERT_TRUE(sim.world().destroyBody(live[index]));
-      sim.snapshots().bodyRemoved(live[index]);
+      ASSERT_TRUE(sim.removeBody(live[index]));
       live.erase(live.begin() + std::ptrdiff_t(index));
     } else if (action == 5 && !live.empty()) {
       const BodyId id = live[random() % live.size()];
-      ASSERT_TRUE(sim.world().applyImpulse(id, Vec2(50, 80)));
-      sim.snapshots().bodyChanged(id);
+      ASSERT_TRUE(sim.applyImpulse(id, Vec2(50, 80), std::nullopt));
     } else if (action == 6 && round % 40 == 6) {
       sim.clear();
       live.clear();
@@ -124,11 +124,11 @@ TEST(SnapshotBuilder, MirrorsFollowTheWorldExactlyThroughRandomChanges) {
     }
     // Between broadcasts, a client joins with a full snapshot of "now".
     if (!joined && round == 37) {
-      ASSERT_TRUE(lateJoiner.apply(decode(sim.snapshots().full(sim.meta()))));
+      ASSERT_TRUE(lateJoiner.apply(decode(snapshots.full())));
       joined = true;
     }
     if (round % 3 == 2) {
-      const auto delta = decode(sim.snapshots().takeDelta(sim.meta()));
+      const auto delta = decode(snapshots.delta(sim.takeChanges()));
       std::string error;
       ASSERT_TRUE(fromStart.apply(delta, &error)) << error;
       expectMirrorEqualsWorld(fromStart, sim.world());

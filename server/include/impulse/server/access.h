@@ -35,9 +35,6 @@ Admission admit(const AccessTokens& tokens, std::string_view offered);
 /// True for an address the loopback default may bind ("127.x", "::1", "localhost").
 bool isLoopbackAddress(std::string_view address);
 
-/// The wire name of a command ("spawn_circle", "clear", ...).
-std::string_view commandName(const v1::ClientMessage& message);
-
 /// Bodies created by player clients, by body id.
 class Ownership {
  public:

@@ -1,6 +1,10 @@
 #pragma once
-/// Applying one client command to the simulation. Every command is validated
-/// completely before anything changes, and produces exactly one reply.
+/// Applying one client command to a simulation, through the command table
+/// (impulse/wire/command_table.h). Every command is validated completely
+/// before anything changes, and produces exactly one reply.
+
+#include <cstdint>
+#include <string_view>
 
 #include "impulse.pb.h"
 #include "impulse/server/simulation.h"
@@ -8,8 +12,9 @@
 namespace impulse::server {
 
 struct CommandLimits {
-  /// Step.ticks range: ten seconds of simulated time at 60 Hz, so one Step
-  /// holds the server's thread for at most a second or two.
+  /// Step.ticks range: ten seconds of simulated time at 60 Hz. A Step runs
+  /// in bounded pieces across ticks (StepJob), so its length costs latency
+  /// to its own client only.
   std::uint32_t maxStepTicks = 600;
 };
 
@@ -18,12 +23,19 @@ struct CommandOutcome {
   v1::ServerMessage reply;
   /// Subscribers need a snapshot now if paused (the world or its meta changed).
   bool changed = false;
-  /// A Step ran: a snapshot follows the reply.
-  bool stepped = false;
+  /// An accepted Step: the ticks still to run before the reply may be sent.
+  std::uint32_t ticksToStep = 0;
 };
 
-/// Applies a command (not Hello). `stats` is copied into a Pong.
+/// Applies a command (not Hello). A Step is validated only: its ticks are
+/// run by a StepJob, which completes the reply.
 CommandOutcome applyCommand(Simulation& simulation, const v1::ClientMessage& message,
-                            const CommandLimits& limits, const v1::ServerStats& stats);
+                            const CommandLimits& limits);
+
+/// The wire name of a command ("spawn_circle", "clear", ...).
+std::string_view commandName(const v1::ClientMessage& message);
+
+/// True for commands that change everyone's world (the admin role's).
+bool changesEveryonesWorld(const v1::ClientMessage& message);
 
 }  // namespace impulse::server

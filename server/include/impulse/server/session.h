@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,15 @@ class SessionHost {
   virtual void onCommand(const std::shared_ptr<Session>& session, v1::ClientMessage&& message,
                          std::size_t bytes) = 0;
   virtual void onClosed(Session& session) = 0;
+};
+
+/// Where a subscriber's full snapshots come from: its room.
+class SnapshotSource {
+ public:
+  virtual ~SnapshotSource() = default;
   /// A full snapshot of the world now, and the sequence number of the last
   /// broadcast whose changes it includes.
-  virtual std::pair<SharedFrame, std::uint64_t> currentFullSnapshot() = 0;
+  virtual std::pair<SharedFrame, std::uint64_t> fullSnapshot() = 0;
 };
 
 struct SessionLimits {
@@ -64,9 +71,10 @@ class Session : public std::enable_shared_from_this<Session> {
   void reject(const std::string& message);
 
   void send(const v1::ServerMessage& message);
-  /// Starts the snapshot stream with a full snapshot.
-  void subscribe();
-  bool subscribed() const { return subscribed_; }
+  /// Starts the snapshot stream with a full snapshot from `source`, which
+  /// outlives the session's stream (a room keeps its members).
+  void subscribe(SnapshotSource& source);
+  bool subscribed() const { return phase_ == Phase::Streaming; }
   /// Broadcast `sequence` (delta against broadcast sequence - 1). A session
   /// that did not get every earlier broadcast gets a full snapshot instead.
   void offerSnapshot(std::uint64_t sequence, const SharedFrame& delta);
@@ -77,8 +85,6 @@ class Session : public std::enable_shared_from_this<Session> {
   void close(const std::string& reason);
 
   std::uint32_t id() const { return id_; }
-  bool closed() const { return closed_; }
-  bool helloDone() const { return helloDone_; }
   /// The role granted at Hello (PROTOCOL.md, Access).
   bool admin() const { return admin_; }
   void setAdmin(bool admin) { admin_ = admin; }
@@ -95,12 +101,21 @@ class Session : public std::enable_shared_from_this<Session> {
   void evict(Clock::time_point now);
   /// The peer's IP address ("" when unknown).
   const std::string& address() const { return address_; }
-  /// Not closed and not closing after an error.
-  bool acceptingTraffic() const { return !closed_ && !closeAfterFlush_; }
+  /// Not closed and not closing after an error (a phase before Flushing).
+  bool acceptingTraffic() const { return phase_ <= Phase::Streaming; }
   const std::string& name() const { return name_; }
   std::uint64_t snapshotsSkipped() const { return snapshotsSkipped_; }
 
  private:
+  /// The session's life, in order: a phase only ever moves forward.
+  /// AwaitingHello -> Serving (Hello accepted) -> Streaming (subscribed);
+  /// any of those -> Flushing (an Error queued: nothing more is read or
+  /// queued) -> Lingering (Error sent, half-closed, draining input until
+  /// EOF); any -> Closed.
+  enum class Phase { AwaitingHello, Serving, Streaming, Flushing, Lingering, Closed };
+  static bool allowed(Phase from, Phase to);
+  void enter(Phase next);
+
   struct Outgoing {
     SharedFrame frame;  // null: a full snapshot, built when it is written
     bool snapshot = false;
@@ -140,25 +155,25 @@ class Session : public std::enable_shared_from_this<Session> {
   std::size_t readBegin_ = 0;
   std::size_t readEnd_ = 0;
   wire::FrameReader reader_;
+  /// A read is in flight (at most one at a time).
   bool reading_ = false;
   std::size_t pendingCommandBytes_ = 0;
 
   std::deque<Outgoing> queue_;
   std::size_t queuedReplyBytes_ = 0;
+  /// Queue items in the write call in flight (0: none in flight).
   std::size_t inFlight_ = 0;
   std::size_t writeOffset_ = 0;
-  bool writing_ = false;
+  /// A snapshot waits in queue_, not yet taken into a write: a newer one
+  /// replaces it instead of queueing behind it.
   bool unsentSnapshot_ = false;
   Clock::time_point lastWriteProgress_;
 
-  bool helloDone_ = false;
-  bool subscribed_ = false;
-  bool closeAfterFlush_ = false;
-  bool lingering_ = false;
+  Phase phase_ = Phase::AwaitingHello;
   Clock::time_point lingerSince_;
-  bool closed_ = false;
-  std::uint64_t lastSnapshotSequence_ = 0;
-  bool hasSnapshotSequence_ = false;
+  SnapshotSource* snapshotSource_ = nullptr;
+  /// The broadcast the client's snapshots are up to (none before the first).
+  std::optional<std::uint64_t> lastSnapshotSequence_;
   std::uint64_t snapshotsSkipped_ = 0;
 };
 

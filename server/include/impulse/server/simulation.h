@@ -1,13 +1,16 @@
 #pragma once
-/// The served world: engine world, tick counter, pause state and the snapshot
-/// bookkeeping that every change to the world must go through.
+/// The served world: the only way to change it. Every change goes through a
+/// method here, which records it in the world's changes for the next
+/// snapshot, so callers never report changes by hand.
 
 #include <cstdint>
+#include <optional>
+#include <span>
 
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
-#include "impulse/server/snapshot_builder.h"
 #include "impulse/server/tick_schedule.h"
+#include "impulse/server/world_changes.h"
 #include "impulse/world.h"
 
 namespace impulse::server {
@@ -20,27 +23,45 @@ struct SimulationSettings {
   bool paused = false;
 };
 
+/// What a snapshot says besides bodies.
+struct SnapshotMeta {
+  std::uint64_t tick = 0;
+  double simTime = 0;
+  bool paused = false;
+};
+
 class Simulation {
  public:
   explicit Simulation(const SimulationSettings& settings);
 
-  World& world() { return world_; }
   const World& world() const { return world_; }
-  SnapshotBuilder& snapshots() { return snapshots_; }
 
-  /// Advances one tick and records what moved.
+  /// Advances one tick.
   void step();
+  CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options);
+  CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options);
+  /// False for an unknown id.
+  bool removeBody(BodyId id);
+  InputResult applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point);
+  InputResult setGravity(const Vec2& gravity);
   /// Replaces the world with preset `id`; false (world untouched) when out of range.
   bool loadPreset(int id, Material selected);
   /// Removes every body.
   void clear();
+  void setPaused(bool paused);
 
   std::uint64_t tick() const { return tick_; }
   double tickHz() const { return tickHz_; }
   double simTime() const { return double(tick_) / tickHz_; }
   bool paused() const { return paused_; }
-  void setPaused(bool paused);
   SnapshotMeta meta() const { return {tick_, simTime(), paused_}; }
+  /// The preset in force (cleared worlds keep the last one's text).
+  const PresetInfo& preset() const { return preset_; }
+  /// Changes with every change of the world or its meta: names its state.
+  std::uint64_t version() const { return version_; }
+  /// The changes since the last call, forgotten here.
+  WorldChanges takeChanges();
+
   /// Wall-clock milliseconds of the world steps over the last second.
   const TickTimes& stepTimes() const { return stepTimes_; }
   /// World::stateHash(), computed at most once per change of the world.
@@ -49,9 +70,14 @@ class Simulation {
   std::uint64_t bodiesLeftWorld() const { return bodiesLeftWorld_; }
 
  private:
+  /// After a successful change: records `id` (if any) as changed for snapshots.
+  void changedBody(BodyId id);
+
   double tickHz_;
   World world_;
-  SnapshotBuilder snapshots_;
+  WorldChanges changes_;
+  PresetInfo preset_;
+  std::uint64_t version_ = 0;
   std::uint64_t tick_ = 0;
   bool paused_ = false;
   TickTimes stepTimes_;

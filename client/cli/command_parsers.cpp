@@ -1,0 +1,143 @@
+#include "command_parsers.h"
+
+#include <array>
+#include <tuple>
+#include <vector>
+
+#include "impulse/client/commands.h"
+#include "impulse/wire/command_table.h"
+#include "impulse/wire/convert.h"
+#include "impulse/wire/parse_number.h"
+
+namespace impulse::cli {
+
+namespace {
+
+// Each parser turns a line's words into its builder's arguments, or nothing
+// with the problem noted.
+
+std::optional<std::tuple<int, Material>> parsePreset(Arguments& line) {
+  const auto id = line.integerAt(1);
+  if (!id) return std::nullopt;
+  Material material = Material::Solid;
+  if (line.size() > 2) {
+    const auto named = wire::materialFromName(line.word(2));
+    if (!named) {
+      line.refuse(quoted(line.word(2), " is not a material"));
+      return std::nullopt;
+    }
+    material = *named;
+  }
+  if (!line.maxWords(3)) return std::nullopt;
+  return std::tuple{int(*id), material};
+}
+
+std::optional<std::tuple<>> parseNoArguments(Arguments& line) {
+  if (!line.maxWords(1)) return std::nullopt;
+  return std::tuple{};
+}
+
+std::optional<std::tuple<bool>> parsePause(Arguments& line) {
+  if (!parseNoArguments(line)) return std::nullopt;
+  return std::tuple{true};
+}
+
+std::optional<std::tuple<bool>> parseResume(Arguments& line) {
+  if (!parseNoArguments(line)) return std::nullopt;
+  return std::tuple{false};
+}
+
+std::optional<std::tuple<std::uint32_t>> parseStep(Arguments& line) {
+  const auto ticks = line.integerAt(1);
+  if (!ticks || !line.maxWords(2)) return std::nullopt;
+  if (*ticks < 1 || *ticks > 0xffffffffLL) {
+    line.refuse("tick count out of range");
+    return std::nullopt;
+  }
+  return std::tuple{std::uint32_t(*ticks)};
+}
+
+std::optional<std::tuple<client::Point, double, client::SpawnOptions>> parseCircle(
+    Arguments& line) {
+  const auto x = line.numberAt(1), y = line.numberAt(2), r = line.numberAt(3);
+  if (!x || !y || !r) return std::nullopt;
+  client::SpawnOptions options;
+  if (!line.bodyFlags(4, options)) return std::nullopt;
+  return std::tuple{client::Point{*x, *y}, *r, options};
+}
+
+std::optional<std::tuple<std::vector<client::Point>, client::SpawnOptions>> parsePolygon(
+    Arguments& line) {
+  std::vector<client::Point> points;
+  std::size_t i = 1;
+  while (i < line.size() && wire::parseNumber<double>(line.word(i))) {
+    const auto x = line.numberAt(i), y = line.numberAt(i + 1);
+    if (!y) {
+      line.refuse("vertex " + std::to_string(points.size() + 1) + " has no y");
+      return std::nullopt;
+    }
+    points.push_back({*x, *y});
+    i += 2;
+  }
+  if (points.empty()) {
+    line.refuse("no vertices");
+    return std::nullopt;
+  }
+  client::SpawnOptions options;
+  if (!line.bodyFlags(i, options)) return std::nullopt;
+  // Too few or too many vertices are for the server to judge, with the
+  // same message every client gets.
+  return std::tuple{std::move(points), options};
+}
+
+std::optional<std::tuple<client::Point>> parsePoint(Arguments& line) {
+  const auto x = line.numberAt(1), y = line.numberAt(2);
+  if (!x || !y || !line.maxWords(3)) return std::nullopt;
+  return std::tuple{client::Point{*x, *y}};
+}
+
+std::optional<std::tuple<std::uint32_t>> parseBodyId(Arguments& line) {
+  const auto id = line.idAt(1);
+  if (!id || !line.maxWords(2)) return std::nullopt;
+  return std::tuple{*id};
+}
+
+std::optional<std::tuple<std::uint32_t, client::Point, std::optional<client::Point>>> parseImpulse(
+    Arguments& line) {
+  const auto id = line.idAt(1);
+  const auto jx = line.numberAt(2), jy = line.numberAt(3);
+  if (!id || !jx || !jy) return std::nullopt;
+  std::optional<client::Point> point;
+  if (line.size() > 4) {
+    const auto px = line.numberAt(4), py = line.numberAt(5);
+    if (!px || !py) return std::nullopt;
+    point = client::Point{*px, *py};
+  }
+  if (!line.maxWords(6)) return std::nullopt;
+  return std::tuple{*id, client::Point{*jx, *jy}, point};
+}
+
+std::optional<std::tuple<std::uint64_t, bool>> parsePing(Arguments& line) {
+  if (!parseNoArguments(line)) return std::nullopt;
+  const bool wantStateHash = false;
+  return std::tuple{std::uint64_t(0), wantStateHash};
+}
+
+// A row's parser composed with its builder.
+template <class Parsed, class Builder>
+std::optional<v1::ClientMessage> build(const std::optional<Parsed>& arguments, Builder builder) {
+  if (!arguments) return std::nullopt;
+  return std::apply(builder, *arguments);
+}
+
+#define IMPULSE_SCRIPT_WORD(Case, field, role, handler, word, usage, help, parser, builder) \
+  ProtocolWord{{word, usage, help},                                                         \
+               [](Arguments& arguments) { return build(parser(arguments), builder); }},
+constexpr std::array kProtocolWords{IMPULSE_COMMAND_TABLE(IMPULSE_SCRIPT_WORD)};
+#undef IMPULSE_SCRIPT_WORD
+
+}  // namespace
+
+std::span<const ProtocolWord> protocolWords() { return kProtocolWords; }
+
+}  // namespace impulse::cli

@@ -1,0 +1,64 @@
+#pragma once
+/// The protocol's commands, one row per script word: the only list of them.
+/// Adding a command is a message in proto/impulse.proto, a row here, and the
+/// functions the row names (the server handler, the script parser, the
+/// client builder); the server's dispatch and roles, the wire names, the
+/// script grammar, impulse-cli --help and the grammar README.md and
+/// docs/server.md must show (tests/net/command_table_test.cpp) all come
+/// from the rows.
+///
+/// Each user expands the table with a macro taking the columns in order and
+/// ignores the columns it cannot see (the server has no script parser, the
+/// client no server handler):
+///
+///   Case     the ClientMessage oneof case without its `k` (kStep: Step)
+///   field    the oneof field; also the command's wire name ("step")
+///   role     Anyone, or Admin for commands that change everyone's world
+///   handler  the server function applying it: server/src/command_handlers.cpp
+///   word     the impulse-cli word
+///   usage    its script grammar
+///   help     one line for --help, README.md and docs/server.md
+///   parser   the script words to the builder's arguments:
+///            client/cli/command_parsers.cpp
+///   builder  the client library's builder: impulse/client/commands.h
+///
+/// Two words may share a command (pause, resume): their rows name the same
+/// case, field, role and handler.
+
+// clang-format off
+#define IMPULSE_COMMAND_TABLE(ROW)                                                        \
+  ROW(LoadPreset, load_preset, Admin, loadPreset, "preset", "preset N [MATERIAL]",        \
+      "load preset 0-10 (MATERIAL: the one preset 9 compares with SOLID)",                \
+      parsePreset, client::loadPreset)                                                    \
+  ROW(SetPaused, set_paused, Admin, setPaused, "pause", "pause",                          \
+      "stop the tick clock", parsePause, client::setPaused)                               \
+  ROW(SetPaused, set_paused, Admin, setPaused, "resume", "resume",                        \
+      "restart the tick clock", parseResume, client::setPaused)                           \
+  ROW(Step, step, Admin, step, "step", "step N (1 or more ticks)",                        \
+      "while paused: advance exactly N ticks (reply has tick and state_hash)",            \
+      parseStep, client::step)                                                            \
+  ROW(SpawnCircle, spawn_circle, Anyone, spawnCircle, "circle",                           \
+      "circle X Y R [MATERIAL] [static] [nograv]", "spawn a circle; reply has body_id",   \
+      parseCircle, client::spawnCircle)                                                   \
+  ROW(SpawnPolygon, spawn_polygon, Anyone, spawnPolygon, "polygon",                       \
+      "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]",                       \
+      "spawn a convex polygon (world coordinates, either winding, 3-16 vertices)",        \
+      parsePolygon, client::spawnPolygon)                                                 \
+  ROW(SetGravity, set_gravity, Admin, setGravity, "gravity", "gravity GX GY",             \
+      "set gravity", parsePoint, client::setGravity)                                      \
+  ROW(NudgeGravity, nudge_gravity, Admin, nudgeGravity, "nudge", "nudge DX DY",           \
+      "add to gravity", parsePoint, client::nudgeGravity)                                 \
+  ROW(ResetGravity, reset_gravity, Admin, resetGravity, "reset-gravity", "reset-gravity", \
+      "reset gravity to (0, -9.81)", parseNoArguments, client::resetGravity)              \
+  ROW(Clear, clear, Admin, clear, "clear", "clear",                                       \
+      "remove every body", parseNoArguments, client::clearWorld)                          \
+  ROW(RemoveBody, remove_body, Anyone, removeBody, "remove", "remove ID",                 \
+      "remove a body", parseBodyId, client::removeBody)                                   \
+  ROW(ApplyImpulse, apply_impulse, Anyone, applyImpulse, "impulse",                       \
+      "impulse ID JX JY [PX PY]", "apply an impulse (at a world point)",                  \
+      parseImpulse, client::applyImpulse)                                                 \
+  ROW(QueryBody, query_body, Anyone, queryBody, "query", "query ID",                      \
+      "description, state and mass properties of a body", parseBodyId, client::queryBody) \
+  ROW(Ping, ping, Anyone, ping, "ping", "ping",                                           \
+      "round trip and server statistics", parsePing, client::ping)
+// clang-format on

@@ -1,0 +1,189 @@
+#include "impulse/server/command_handlers.h"
+
+#include <string>
+#include <vector>
+
+#include "impulse/wire/convert.h"
+
+namespace impulse::server {
+
+CommandContext::CommandContext(Simulation& simulation_, const v1::ClientMessage& message_,
+                               const CommandLimits& limits_)
+    : simulation(simulation_), message(message_), limits(limits_) {
+  result().set_request_id(message.request_id());
+}
+
+void CommandContext::fail(std::string error) {
+  result().set_ok(false);
+  result().set_error(std::move(error));
+}
+
+void CommandContext::succeed() {
+  result().set_ok(true);
+  outcome.changed = true;
+}
+
+namespace handlers {
+
+namespace {
+
+std::string unknownBody(std::uint32_t id) { return "unknown body id " + std::to_string(id); }
+
+void created(CommandContext& context, const CreateResult& created, const char* command) {
+  if (!created.ok()) return context.fail(std::string(command) + ": " + created.error);
+  context.result().set_body_id(created.id.value);
+  context.succeed();
+}
+
+void changeGravity(CommandContext& context, const Vec2& gravity, const char* command) {
+  if (InputResult changed = context.simulation.setGravity(gravity); !changed) {
+    return context.fail(std::string(command) + ": " + changed.error);
+  }
+  context.succeed();
+}
+
+}  // namespace
+
+void spawnCircle(CommandContext& context, const v1::SpawnCircle& command) {
+  if (!command.has_center()) return context.fail("spawn_circle: center is missing");
+  const auto center = wire::vecFromWire(command.center(), "spawn_circle.center");
+  if (!center.ok()) return context.fail(center.error);
+  const auto radius = wire::realFromWire(command.radius(), "spawn_circle.radius");
+  if (!radius.ok()) return context.fail(radius.error);
+  const auto options = wire::optionsFromWire(command.options());
+  if (!options.ok()) return context.fail("spawn_circle." + options.error);
+  created(context, context.simulation.createCircle(*center.value, *radius.value, *options.value),
+          "spawn_circle");
+}
+
+void spawnPolygon(CommandContext& context, const v1::SpawnPolygon& command) {
+  const int count = command.vertices_size();
+  // The count is checked before anything is copied.
+  if (count < kMinPolygonVertices || count > kMaxPolygonVertices) {
+    return context.fail(
+        "spawn_polygon: " + std::to_string(count) + " vertices given: " +
+        std::string(describe(count < kMinPolygonVertices ? ShapeError::TooFewVertices
+                                                         : ShapeError::TooManyVertices)));
+  }
+  std::vector<Vec2> points;
+  points.reserve(std::size_t(count));
+  for (int i = 0; i < count; ++i) {
+    const auto point =
+        wire::vecFromWire(command.vertices(i), "spawn_polygon.vertices[" + std::to_string(i) + "]");
+    if (!point.ok()) return context.fail(point.error);
+    points.push_back(*point.value);
+  }
+  const auto options = wire::optionsFromWire(command.options());
+  if (!options.ok()) return context.fail("spawn_polygon." + options.error);
+  created(context, context.simulation.createPolygon(points, *options.value), "spawn_polygon");
+}
+
+void loadPreset(CommandContext& context, const v1::LoadPreset& command) {
+  const auto material = wire::materialFromWire(command.material());
+  if (!material) {
+    return context.fail("load_preset.material " + std::to_string(command.material()) +
+                        " is not a material (0-5)");
+  }
+  if (command.preset() < 0 || command.preset() >= kPresetCount) {
+    return context.fail("load_preset: preset " + std::to_string(command.preset()) +
+                        " does not exist (0-" + std::to_string(kPresetCount - 1) + ")");
+  }
+  if (!context.simulation.loadPreset(command.preset(), *material)) {
+    return context.fail("load_preset: preset " + std::to_string(command.preset()) +
+                        " failed to load");
+  }
+  context.succeed();
+}
+
+void setGravity(CommandContext& context, const v1::SetGravity& command) {
+  if (!command.has_gravity()) return context.fail("set_gravity: gravity is missing");
+  const auto gravity = wire::vecFromWire(command.gravity(), "set_gravity.gravity");
+  if (!gravity.ok()) return context.fail(gravity.error);
+  changeGravity(context, *gravity.value, "set_gravity");
+}
+
+void nudgeGravity(CommandContext& context, const v1::NudgeGravity& command) {
+  if (!command.has_delta()) return context.fail("nudge_gravity: delta is missing");
+  const auto delta = wire::vecFromWire(command.delta(), "nudge_gravity.delta");
+  if (!delta.ok()) return context.fail(delta.error);
+  changeGravity(context, context.simulation.world().gravity() + *delta.value, "nudge_gravity");
+}
+
+void resetGravity(CommandContext& context, const v1::ResetGravity&) {
+  changeGravity(context, kDefaultGravity, "reset_gravity");
+}
+
+void clear(CommandContext& context, const v1::ClearWorld&) {
+  context.simulation.clear();
+  context.succeed();
+}
+
+void removeBody(CommandContext& context, const v1::RemoveBody& command) {
+  const BodyId id{command.body_id()};
+  if (!context.simulation.removeBody(id)) {
+    return context.fail("remove_body: " + unknownBody(id.value));
+  }
+  context.succeed();
+}
+
+void applyImpulse(CommandContext& context, const v1::ApplyImpulse& command) {
+  if (!command.has_impulse()) return context.fail("apply_impulse: impulse is missing");
+  const auto impulse = wire::vecFromWire(command.impulse(), "apply_impulse.impulse");
+  if (!impulse.ok()) return context.fail(impulse.error);
+  std::optional<Vec2> point;
+  if (command.has_point()) {
+    const auto p = wire::vecFromWire(command.point(), "apply_impulse.point");
+    if (!p.ok()) return context.fail(p.error);
+    point = *p.value;
+  }
+  const BodyId id{command.body_id()};
+  if (InputResult applied = context.simulation.applyImpulse(id, *impulse.value, point); !applied) {
+    return context.fail("apply_impulse: " + applied.error);
+  }
+  context.succeed();
+}
+
+void setPaused(CommandContext& context, const v1::SetPaused& command) {
+  context.simulation.setPaused(command.paused());
+  context.succeed();
+}
+
+void step(CommandContext& context, const v1::Step& command) {
+  if (!context.simulation.paused()) {
+    return context.fail("step: the server is running; pause it first");
+  }
+  const std::uint32_t maxTicks = context.limits.maxStepTicks;
+  if (command.ticks() < 1 || command.ticks() > maxTicks) {
+    return context.fail("step: ticks must be 1.." + std::to_string(maxTicks) + ", got " +
+                        std::to_string(command.ticks()));
+  }
+  context.succeed();
+  context.outcome.ticksToStep = command.ticks();
+}
+
+void queryBody(CommandContext& context, const v1::QueryBody& command) {
+  const BodyId id{command.body_id()};
+  const World& world = context.simulation.world();
+  const auto description = world.bodyDescription(id);
+  const auto state = world.bodyState(id);
+  if (!description || !state) return context.fail("query_body: " + unknownBody(id.value));
+  v1::ServerMessage reply;
+  auto* info = reply.mutable_body_info();
+  info->set_request_id(context.message.request_id());
+  wire::toWire(*description, *state, info);
+  context.outcome.reply = std::move(reply);
+}
+
+void ping(CommandContext& context, const v1::Ping& command) {
+  // The room adds its statistics (Room::answerPing): the world knows none.
+  v1::ServerMessage reply;
+  auto* pong = reply.mutable_pong();
+  pong->set_client_time_us(command.client_time_us());
+  pong->set_server_tick(context.simulation.tick());
+  pong->set_request_id(context.message.request_id());
+  context.outcome.reply = std::move(reply);
+}
+
+}  // namespace handlers
+
+}  // namespace impulse::server

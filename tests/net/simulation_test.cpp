@@ -1,0 +1,81 @@
+// The Simulation is the only way to change a served world: every change it
+// accepts is recorded for the next snapshot and moves the version that names
+// the world's state; a refused change records nothing.
+#include "impulse/server/simulation.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace impulse::server {
+namespace {
+
+Simulation pausedSandbox() {
+  SimulationSettings settings;
+  settings.paused = true;
+  return Simulation(settings);
+}
+
+bool contains(const std::vector<BodyId>& ids, BodyId id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+TEST(Simulation, EveryAcceptedChangeIsRecordedAndMovesTheVersion) {
+  Simulation sim = pausedSandbox();
+  sim.takeChanges();
+  auto version = sim.version();
+  auto changedOnce = [&] {
+    const bool moved = sim.version() > version;
+    version = sim.version();
+    return moved;
+  };
+
+  const auto ball = sim.createCircle(Vec2(5, 5), 0.5f, {});
+  ASSERT_TRUE(ball.ok()) << ball.error;
+  EXPECT_TRUE(changedOnce());
+  EXPECT_TRUE(sim.applyImpulse(ball.id, Vec2(1, 0), std::nullopt));
+  EXPECT_TRUE(changedOnce());
+  EXPECT_TRUE(sim.setGravity(Vec2(0, -1)));
+  EXPECT_TRUE(changedOnce());
+  sim.setPaused(false);
+  EXPECT_TRUE(changedOnce());
+  sim.step();
+  EXPECT_TRUE(changedOnce());
+  auto changes = sim.takeChanges();
+  changes.normalise();
+  EXPECT_TRUE(contains(changes.addedIds(), ball.id));
+  EXPECT_TRUE(contains(changes.changedIds(), ball.id));
+
+  EXPECT_TRUE(sim.removeBody(ball.id));
+  EXPECT_TRUE(changedOnce());
+  EXPECT_TRUE(contains(sim.takeChanges().removedIds(), ball.id));
+  sim.clear();
+  EXPECT_TRUE(changedOnce());
+  EXPECT_TRUE(sim.takeChanges().wasReplaced());
+  EXPECT_TRUE(sim.loadPreset(2, Material::Solid));
+  EXPECT_TRUE(changedOnce());
+  EXPECT_EQ(sim.preset().id, 2);
+  EXPECT_TRUE(sim.takeChanges().wasReplaced());
+}
+
+TEST(Simulation, RefusedChangesRecordNothing) {
+  Simulation sim = pausedSandbox();
+  sim.takeChanges();
+  const auto version = sim.version();
+  EXPECT_FALSE(sim.createCircle(Vec2(5, 5), -1.0f, {}).ok());
+  EXPECT_FALSE(sim.removeBody(BodyId{9999}));
+  EXPECT_FALSE(sim.applyImpulse(BodyId{9999}, Vec2(1, 0), std::nullopt));
+  EXPECT_FALSE(sim.setGravity(Vec2(0, -1e6f)));
+  EXPECT_FALSE(sim.loadPreset(kPresetCount, Material::Solid));
+  EXPECT_EQ(sim.version(), version);
+  auto changes = sim.takeChanges();
+  changes.normalise();
+  EXPECT_FALSE(changes.wasReplaced());
+  EXPECT_TRUE(changes.addedIds().empty());
+  EXPECT_TRUE(changes.removedIds().empty());
+  EXPECT_TRUE(changes.changedIds().empty());
+}
+
+}  // namespace
+}  // namespace impulse::server
