@@ -15,6 +15,7 @@
 
 #include "impulse/body.h"
 #include "impulse/field.h"
+#include "impulse/joint.h"
 #include "impulse/limits.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
@@ -133,6 +134,23 @@ class World {
   /// on the body would exceed InputLimits' accelerations.
   InputResult applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point = std::nullopt);
   InputResult setVelocity(BodyId id, const Vec2& linear, Real angular);
+
+  /// Validates the definition (live, distinct bodies; finite numbers in
+  /// range) before anything changes. Wakes both bodies.
+  JointResult createJoint(const JointDef& def);
+  /// Wakes both bodies. False for an unknown id.
+  bool destroyJoint(JointId id);
+  /// Refused, with the reason, for an unknown id, a field the kind lacks or
+  /// a number out of range. Wakes both bodies.
+  InputResult updateJoint(JointId id, const JointUpdate& update);
+  std::optional<JointDescription> jointDescription(JointId id) const;
+  std::optional<JointState> jointState(JointId id) const;
+  /// Every live joint's id in slot order.
+  std::vector<JointId> jointIds() const;
+  int jointCount() const;
+  /// Joints that went with their bodies in the last destroyBody call, or in
+  /// the last step (bodies the step guard removed), whichever came later.
+  std::span<const JointId> removedJoints() const;
 
   /// Adds a force field; it acts from the next step on, after the fields
   /// added before it. Wakes every body, as a change of gravity does.
