@@ -41,6 +41,22 @@ Json bodyJson(const v1::BodyDescriptor& descriptor, const v1::BodyState& state) 
   return body;
 }
 
+Json jointJson(const v1::JointInfo& info) {
+  const auto& d = info.descriptor();
+  Json joint = {{"id", d.id()}, {"body_a", d.body_a()}, {"body_b", d.body_b()}};
+  const auto description = wire::jointFromWire(d);
+  joint["kind"] = description ? wire::jointKindName(description->settings) : "unknown";
+  joint["local_anchor_a"] = pair(d.local_anchor_a());
+  joint["local_anchor_b"] = pair(d.local_anchor_b());
+  joint["collide_connected"] = d.collide_connected();
+  joint["reaction_force"] = pair(info.reaction_force());
+  joint["reaction_torque"] = number(info.reaction_torque());
+  joint["length"] = number(info.length());
+  joint["angle"] = number(info.angle());
+  joint["translation"] = number(info.translation());
+  return joint;
+}
+
 std::string hex(std::uint64_t value) {
   char text[24];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
@@ -99,6 +115,7 @@ std::string replyReport(std::size_t line, std::string_view command,
       report["error"] = "line " + std::to_string(line) + ": " + scriptWording(result.error());
     }
     if (result.body_id() != 0) report["body_id"] = result.body_id();
+    if (result.joint_id() != 0) report["joint_id"] = result.joint_id();
     report["tick"] = result.tick();
     if (result.state_hash() != 0) report["state_hash"] = hex(result.state_hash());
   } else if (reply.has_body_info()) {
@@ -112,6 +129,9 @@ std::string replyReport(std::size_t line, std::string_view command,
     body["dynamic_friction"] = number(info.dynamic_friction());
     report["ok"] = true;
     report["body"] = std::move(body);
+  } else if (reply.has_joint_info()) {
+    report["ok"] = true;
+    report["joint"] = jointJson(reply.joint_info());
   } else if (reply.has_pong()) {
     const auto& pong = reply.pong();
     const auto& s = pong.stats();

@@ -12,7 +12,7 @@ namespace {
 
 // Protocol field paths and the script words for them; longer paths first,
 // so a path is replaced before its command's prefix.
-constexpr std::array<std::pair<const char*, const char*>, 23> kFieldWords{{
+constexpr std::array<std::pair<const char*, const char*>, 25> kFieldWords{{
     {"spawn_circle.center.x", "circle X"},
     {"spawn_circle.center.y", "circle Y"},
     {"spawn_circle.center", "circle X Y"},
@@ -36,6 +36,10 @@ constexpr std::array<std::pair<const char*, const char*>, 23> kFieldWords{{
     {"apply_impulse", "impulse"},
     {"remove_body", "remove"},
     {"query_body", "query"},
+    // Joint errors keep their protocol paths (create_joint.distance.stiffness):
+    // the seven joint words share one message, so a path has no single word.
+    {"remove_joint", "remove-joint"},
+    {"query_joint", "query-joint"},
 }};
 
 std::string replaceAll(std::string text, std::string_view from, std::string_view to) {

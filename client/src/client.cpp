@@ -15,6 +15,8 @@ std::uint64_t replyId(const v1::ServerMessage& message) {
       return message.command_result().request_id();
     case v1::ServerMessage::kBodyInfo:
       return message.body_info().request_id();
+    case v1::ServerMessage::kJointInfo:
+      return message.joint_info().request_id();
     case v1::ServerMessage::kPong:
       return message.pong().request_id();
     default:

@@ -19,6 +19,21 @@ void setOptions(const SpawnOptions& options, v1::BodyOptions* out) {
   out->set_angular_velocity(options.angularVelocity);
 }
 
+// A CreateJoint with `ends` and `kind` in the oneof field `field` selects.
+template <class Kind>
+v1::ClientMessage createJoint(const JointEnds& ends, const Kind& kind,
+                              Kind* (v1::CreateJoint::*field)()) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_create_joint();
+  command->set_body_a(ends.bodyA);
+  command->set_body_b(ends.bodyB);
+  setPoint(ends.anchorA, command->mutable_anchor_a());
+  setPoint(ends.anchorB, command->mutable_anchor_b());
+  command->set_collide_connected(ends.collideConnected);
+  *(command->*field)() = kind;
+  return message;
+}
+
 }  // namespace
 
 v1::ClientMessage spawnCircle(Point center, double radius, const SpawnOptions& options) {
@@ -99,6 +114,63 @@ v1::ClientMessage step(std::uint32_t ticks) {
 v1::ClientMessage queryBody(std::uint32_t id) {
   v1::ClientMessage message;
   message.mutable_query_body()->set_body_id(id);
+  return message;
+}
+
+v1::ClientMessage distanceJoint(const JointEnds& ends, const v1::DistanceJoint& kind) {
+  return createJoint(ends, kind, &v1::CreateJoint::mutable_distance);
+}
+
+v1::ClientMessage ropeJoint(const JointEnds& ends, const v1::RopeJoint& kind) {
+  return createJoint(ends, kind, &v1::CreateJoint::mutable_rope);
+}
+
+v1::ClientMessage revoluteJoint(const JointEnds& ends, const v1::RevoluteJoint& kind) {
+  return createJoint(ends, kind, &v1::CreateJoint::mutable_revolute);
+}
+
+v1::ClientMessage prismaticJoint(const JointEnds& ends, const v1::PrismaticJoint& kind) {
+  return createJoint(ends, kind, &v1::CreateJoint::mutable_prismatic);
+}
+
+v1::ClientMessage weldJoint(const JointEnds& ends, const v1::WeldJoint& kind) {
+  return createJoint(ends, kind, &v1::CreateJoint::mutable_weld);
+}
+
+v1::ClientMessage wheelJoint(const JointEnds& ends, const v1::WheelJoint& kind) {
+  return createJoint(ends, kind, &v1::CreateJoint::mutable_wheel);
+}
+
+v1::ClientMessage mouseJoint(std::uint32_t body, Point point, const v1::MouseJoint& kind) {
+  return createJoint(JointEnds{body, 0, point, point, false}, kind,
+                     &v1::CreateJoint::mutable_mouse);
+}
+
+v1::ClientMessage setJointTarget(std::uint32_t joint, Point target) {
+  v1::ClientMessage message;
+  message.mutable_update_joint()->set_joint_id(joint);
+  setPoint(target, message.mutable_update_joint()->mutable_target());
+  return message;
+}
+
+v1::ClientMessage setJointMotor(std::uint32_t joint, double speed, std::optional<double> maxForce) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_update_joint();
+  command->set_joint_id(joint);
+  command->set_motor_speed(speed);
+  if (maxForce) command->set_max_motor_force(*maxForce);
+  return message;
+}
+
+v1::ClientMessage removeJoint(std::uint32_t joint) {
+  v1::ClientMessage message;
+  message.mutable_remove_joint()->set_joint_id(joint);
+  return message;
+}
+
+v1::ClientMessage queryJoint(std::uint32_t joint) {
+  v1::ClientMessage message;
+  message.mutable_query_joint()->set_joint_id(joint);
   return message;
 }
 

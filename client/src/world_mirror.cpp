@@ -14,10 +14,14 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
   gravity_ = wire::vecFromWireUnchecked(snapshot.gravity());
   paused_ = snapshot.paused();
   if (snapshot.has_preset()) preset_ = wire::presetFromWire(snapshot.preset());
-  if (snapshot.full()) bodies_.clear();
+  if (snapshot.full()) {
+    bodies_.clear();
+    joints_.clear();
+  }
   ++snapshotsApplied_;
 
   for (const std::uint32_t id : snapshot.removed()) bodies_.erase(id);
+  for (const std::uint32_t id : snapshot.joints_removed()) joints_.erase(id);
   for (const auto& descriptor : snapshot.added()) {
     auto shape = wire::shapeFromWire(descriptor.shape());
     if (!shape.ok()) {
@@ -39,6 +43,12 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
       return failed("state for unknown body " + std::to_string(state.id()));
     }
     it->second.state = wire::stateFromWire(state);
+  }
+  // joints_added both adds and replaces (a changed motor speed or target).
+  for (const auto& descriptor : snapshot.joints_added()) {
+    auto joint = wire::jointFromWire(descriptor);
+    if (!joint) return failed("joint " + std::to_string(descriptor.id()) + " has no kind");
+    joints_[descriptor.id()] = *joint;
   }
   return true;
 }

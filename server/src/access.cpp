@@ -27,6 +27,12 @@ std::uint32_t targetBody(const v1::ClientMessage& message) {
                                    : message.apply_impulse().body_id();
 }
 
+// The joint an update_joint or remove_joint acts on.
+std::uint32_t targetJoint(const v1::ClientMessage& message) {
+  return message.has_update_joint() ? message.update_joint().joint_id()
+                                    : message.remove_joint().joint_id();
+}
+
 }  // namespace
 
 Admission admit(const AccessTokens& tokens, std::string_view offered) {
@@ -53,6 +59,18 @@ std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint
   if (message.has_remove_body() || message.has_apply_impulse()) {
     return ownershipRefusal(command, targetBody(message), client);
   }
+  if (message.has_create_joint()) {
+    // Body 0 is the world, which a player may pin its own bodies to.
+    const auto& joint = message.create_joint();
+    std::string refusal = ownershipRefusal(command, joint.body_a(), client);
+    if (refusal.empty() && joint.body_b() != 0) {
+      refusal = ownershipRefusal(command, joint.body_b(), client);
+    }
+    return refusal;
+  }
+  if (message.has_update_joint() || message.has_remove_joint()) {
+    return jointRefusal(command, targetJoint(message), client);
+  }
   return {};
 }
 
@@ -64,6 +82,14 @@ std::string Ownership::ownershipRefusal(std::string_view command, std::uint32_t 
          " was not created by this client (players act on their own bodies only)";
 }
 
+std::string Ownership::jointRefusal(std::string_view command, std::uint32_t joint,
+                                    std::uint32_t client) const {
+  const auto it = jointOwnerOf_.find(joint);
+  if (it != jointOwnerOf_.end() && it->second == client) return {};
+  return std::string(command) + ": refused for the player role: joint " + std::to_string(joint) +
+         " was not created by this client (players act on their own joints only)";
+}
+
 void Ownership::recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
                               std::uint32_t client, const World& world) {
   if (!reply.has_command_result() || !reply.command_result().ok()) return;
@@ -71,13 +97,26 @@ void Ownership::recordOutcome(const v1::ClientMessage& message, const v1::Server
     ownerOf_[reply.command_result().body_id()] = client;
   } else if (message.has_remove_body()) {
     ownerOf_.erase(message.remove_body().body_id());
+  } else if (message.has_create_joint()) {
+    jointOwnerOf_[reply.command_result().joint_id()] = client;
+  } else if (message.has_remove_joint()) {
+    jointOwnerOf_.erase(message.remove_joint().joint_id());
   } else if (message.has_clear() || message.has_load_preset()) {
     ownerOf_.clear();
+    jointOwnerOf_.clear();
   }
-  // Bodies also leave by falling out of the world: forget them in one sweep
-  // once the map could outgrow the body limit.
-  if (ownerOf_.size() > 2 * std::size_t(world.settings().maxBodies)) {
+  sweep(world);
+}
+
+void Ownership::sweep(const World& world) {
+  const std::size_t limit = 2 * std::size_t(world.settings().maxBodies);
+  if (ownerOf_.size() > limit) {
     std::erase_if(ownerOf_, [&](const auto& entry) { return !world.isValid(BodyId{entry.first}); });
+  }
+  if (jointOwnerOf_.size() > limit) {
+    std::erase_if(jointOwnerOf_, [&](const auto& entry) {
+      return !world.jointDescription(JointId{entry.first});
+    });
   }
 }
 

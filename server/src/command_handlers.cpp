@@ -29,6 +29,8 @@ namespace {
 
 std::string unknownBody(std::uint32_t id) { return "unknown body id " + std::to_string(id); }
 
+std::string unknownJoint(std::uint32_t id) { return "unknown joint id " + std::to_string(id); }
+
 void created(CommandContext& context, const CreateResult& created, const char* command) {
   if (!created.ok()) return context.fail(std::string(command) + ": " + created.error);
   context.result().set_body_id(created.id.value);
@@ -181,6 +183,45 @@ void ping(CommandContext& context, const v1::Ping& command) {
   pong->set_client_time_us(command.client_time_us());
   pong->set_server_tick(context.simulation.tick());
   pong->set_request_id(context.message.request_id());
+  context.outcome.reply = std::move(reply);
+}
+
+void createJoint(CommandContext& context, const v1::CreateJoint& command) {
+  const auto def = wire::jointDefFromWire(command);
+  if (!def.ok()) return context.fail(def.error);
+  const auto created = context.simulation.createJoint(*def.value);
+  if (!created.ok()) return context.fail("create_joint: " + created.error);
+  context.result().set_joint_id(created.id.value);
+  context.succeed();
+}
+
+void updateJoint(CommandContext& context, const v1::UpdateJoint& command) {
+  const auto update = wire::jointUpdateFromWire(command);
+  if (!update.ok()) return context.fail(update.error);
+  const JointId id{command.joint_id()};
+  if (InputResult updated = context.simulation.updateJoint(id, *update.value); !updated) {
+    return context.fail("update_joint: " + updated.error);
+  }
+  context.succeed();
+}
+
+void removeJoint(CommandContext& context, const v1::RemoveJoint& command) {
+  if (!context.simulation.removeJoint(JointId{command.joint_id()})) {
+    return context.fail("remove_joint: " + unknownJoint(command.joint_id()));
+  }
+  context.succeed();
+}
+
+void queryJoint(CommandContext& context, const v1::QueryJoint& command) {
+  const JointId id{command.joint_id()};
+  const World& world = context.simulation.world();
+  const auto description = world.jointDescription(id);
+  const auto state = world.jointState(id);
+  if (!description || !state) return context.fail("query_joint: " + unknownJoint(id.value));
+  v1::ServerMessage reply;
+  auto* info = reply.mutable_joint_info();
+  info->set_request_id(context.message.request_id());
+  wire::toWire(*description, *state, info);
   context.outcome.reply = std::move(reply);
 }
 

@@ -1,5 +1,6 @@
 #include "impulse/server/simulation.h"
 
+#include <array>
 #include <chrono>
 #include <utility>
 
@@ -32,6 +33,7 @@ void Simulation::step() {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   changes_.changed(world_.movedBodies(), world_.bodyCount());
   for (const BodyId id : world_.escapedBodies()) changes_.leftWorld(id);
+  recordRemovedJoints();
   bodiesLeftWorld_ += world_.escapedBodies().size();
   ++version_;
 }
@@ -57,8 +59,43 @@ CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyO
 bool Simulation::removeBody(BodyId id) {
   if (!world_.destroyBody(id)) return false;
   changes_.removed(id);
+  recordRemovedJoints();
   ++version_;
   return true;
+}
+
+void Simulation::recordRemovedJoints() {
+  for (const JointId id : world_.removedJoints()) changes_.jointRemoved(id);
+}
+
+JointResult Simulation::createJoint(const JointDef& def) {
+  const auto created = world_.createJoint(def);
+  if (created.ok()) {
+    changes_.jointAdded(created.id);
+    // The joint wakes its bodies: their states go out with the joint.
+    changes_.changed(std::array{def.bodyA, def.bodyB}, world_.bodyCount());
+    ++version_;
+  }
+  return created;
+}
+
+bool Simulation::removeJoint(JointId id) {
+  const auto description = world_.jointDescription(id);
+  if (!description || !world_.destroyJoint(id)) return false;
+  changes_.jointRemoved(id);
+  changes_.changed(std::array{description->bodyA, description->bodyB}, world_.bodyCount());
+  ++version_;
+  return true;
+}
+
+InputResult Simulation::updateJoint(JointId id, const JointUpdate& update) {
+  InputResult updated = world_.updateJoint(id, update);
+  if (!updated) return updated;
+  // Sent again (joints_added replaces): a motor speed or mouse target is
+  // part of the descriptor clients draw. The bodies move with the next step.
+  changes_.jointAdded(id);
+  ++version_;
+  return updated;
 }
 
 InputResult Simulation::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {

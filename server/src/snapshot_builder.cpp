@@ -26,6 +26,12 @@ google::protobuf::ArenaOptions arenaOptions() {
   return options;
 }
 
+void addJoint(const World& world, JointId id, v1::Snapshot* snapshot) {
+  if (const auto description = world.jointDescription(id)) {
+    wire::toWire(*description, snapshot->add_joints_added());
+  }
+}
+
 bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
   return a.tick == b.tick && a.simTime == b.simTime && a.paused == b.paused;
 }
@@ -51,6 +57,8 @@ SharedFrame SnapshotBuilder::delta(WorldChanges changes) {
       wire::toWire(*description, snapshot->add_added());
     }
   }
+  for (const JointId id : changes.removedJointIds()) snapshot->add_joints_removed(id.value);
+  for (const JointId id : changes.addedJointIds()) addJoint(world, id, snapshot);
   snapshot->mutable_bodies()->Reserve(int(changes.changedIds().size()));
   for (const BodyId id : changes.changedIds()) {
     if (const auto state = world.bodyState(id)) wire::toWire(*state, snapshot->add_bodies());
@@ -79,6 +87,7 @@ SharedFrame SnapshotBuilder::full() {
     wire::toWire(*description, snapshot->add_added());
     wire::toWire(*state, snapshot->add_bodies());
   }
+  for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
   cachedFull_ = wire::encodeSharedFrame(message);
   cachedVersion_ = simulation_.version();
   cachedMeta_ = meta;

@@ -6,7 +6,8 @@ namespace impulse::server {
 
 namespace {
 
-void sortUnique(std::vector<BodyId>& ids) {
+template <class Id>
+void sortUnique(std::vector<Id>& ids) {
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
 }
@@ -16,6 +17,10 @@ void sortUnique(std::vector<BodyId>& ids) {
 void WorldChanges::added(BodyId id) { added_.push_back(id); }
 
 void WorldChanges::removed(BodyId id) { removed_.push_back(id); }
+
+void WorldChanges::jointAdded(JointId id) { jointsAdded_.push_back(id); }
+
+void WorldChanges::jointRemoved(JointId id) { jointsRemoved_.push_back(id); }
 
 void WorldChanges::leftWorld(BodyId id) {
   leftWorld_.push_back(id);
@@ -37,6 +42,8 @@ void WorldChanges::replaced() {
 void WorldChanges::normalise() {
   sortUnique(removed_);
   sortUnique(added_);
+  sortUnique(jointsAdded_);
+  sortUnique(jointsRemoved_);
   changed_.insert(changed_.end(), added_.begin(), added_.end());
   sortUnique(changed_);
 }

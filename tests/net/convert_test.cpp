@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace impulse::wire {
 namespace {
@@ -122,6 +123,52 @@ TEST(Convert, PresetInfoRoundTrip) {
   EXPECT_EQ(back.markers[0].center, Vec2(1, 2));
   EXPECT_EQ(back.markers[0].radius, 0.25f);
   EXPECT_TRUE(back.drawingAllowed);
+}
+
+// Every joint kind, with every value set, survives engine -> CreateJoint ->
+// engine -> JointDescriptor -> engine unchanged.
+TEST(Convert, EveryJointKindRoundTrips) {
+  RevoluteJointSettings revolute{true, -0.5f, 0.75f, true, 2, 30, 4, 0.5f};
+  PrismaticJointSettings prismatic{Vec2(0.6f, 0.8f), true, -1, 2, true, 3, 40, 5, 0.25f};
+  WheelJointSettings wheel{Vec2(0, 1), 800, 20, true, -6, 90};
+  const std::vector<JointSettings> kinds = {
+      DistanceJointSettings{1.5f, 200, 3}, RopeJointSettings{2.5f}, revolute, prismatic,
+      WeldJointSettings{1000, 50},        wheel,                   MouseJointSettings{500, 80, 9}};
+  for (const JointSettings& settings : kinds) {
+    v1::CreateJoint command;
+    command.set_body_a(7);
+    toWire(Vec2(1, 2), command.mutable_anchor_a());
+    toWire(settings, &command);
+    const auto def = jointDefFromWire(command);
+    ASSERT_TRUE(def.ok()) << def.error;
+    JointDescription description;
+    description.settings = def.value->settings;
+    v1::JointDescriptor descriptor;
+    toWire(description, &descriptor);
+    v1::CreateJoint again;
+    const auto back = jointFromWire(descriptor);
+    ASSERT_TRUE(back.has_value());
+    again.set_body_a(7);
+    toWire(Vec2(1, 2), again.mutable_anchor_a());
+    toWire(back->settings, &again);
+    EXPECT_EQ(again.SerializeAsString(), command.SerializeAsString()) << jointKindName(settings);
+  }
+}
+
+TEST(Convert, JointDefFromWireNamesTheBadField) {
+  v1::CreateJoint command;
+  command.mutable_wheel()->mutable_axis()->set_y(std::nan(""));
+  EXPECT_EQ(jointDefFromWire(command).error, "create_joint.wheel.axis.y is not a finite number");
+  command.mutable_revolute()->set_max_motor_torque(1e300);
+  EXPECT_TRUE(jointDefFromWire(command).error.starts_with(
+      "create_joint.revolute.max_motor_torque is too large"));
+  command.clear_kind();
+  EXPECT_TRUE(jointDefFromWire(command).error.starts_with("create_joint.kind: none of"));
+  v1::UpdateJoint update;
+  update.mutable_target()->set_x(std::nan(""));
+  EXPECT_EQ(jointUpdateFromWire(update).error, "update_joint.target.x is not a finite number");
+  update.clear_target();
+  EXPECT_FALSE(jointUpdateFromWire(update).value->motorSpeed.has_value());
 }
 
 }  // namespace

@@ -14,10 +14,6 @@ namespace {
 using client::Client;
 using Clock = std::chrono::steady_clock;
 
-bool mentions(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 std::uint32_t spawned(Client& client, const v1::ClientMessage& command) {
   const auto reply = client.request(command);
   EXPECT_TRUE(result(reply).ok()) << result(reply).error();
@@ -248,12 +244,6 @@ TEST(FairService, PingCarriesTheStateHashOnlyOnRequest) {
   EXPECT_NE(hash, 0u);
   const auto stepped = client.request(client::step(1));
   EXPECT_EQ(result(stepped).state_hash(), client.ping(milliseconds(10000), true).stats().state_hash());
-}
-
-client::ConnectOptions withToken(std::uint16_t port, std::string name, std::string token) {
-  auto options = localClient(port, std::move(name), false);
-  options.token = std::move(token);
-  return options;
 }
 
 TEST(Access, HelloWithoutTheTokenIsRefused) {

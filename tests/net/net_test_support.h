@@ -39,6 +39,17 @@ inline client::ConnectOptions localClient(std::uint16_t port, std::string name =
   return options;
 }
 
+/// A client without snapshots presenting `token` (Access).
+inline client::ConnectOptions withToken(std::uint16_t port, std::string name, std::string token) {
+  auto options = localClient(port, std::move(name), false);
+  options.token = std::move(token);
+  return options;
+}
+
+inline bool mentions(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
 /// Sends every command first, then awaits every reply (one tick in all).
 inline std::vector<v1::ServerMessage> requestAll(client::Client& client,
                                                  const std::vector<v1::ClientMessage>& commands) {

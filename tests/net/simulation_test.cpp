@@ -77,5 +77,42 @@ TEST(Simulation, RefusedChangesRecordNothing) {
   EXPECT_TRUE(changes.changedIds().empty());
 }
 
+bool hasJoint(const std::vector<JointId>& ids, JointId id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+TEST(Simulation, JointsAreRecordedWhenAddedRemovedOrTakenWithTheirBodies) {
+  Simulation sim = pausedSandbox();
+  const auto a = sim.createCircle(Vec2(5, 5), 0.5f, {});
+  const auto b = sim.createCircle(Vec2(7, 5), 0.5f, {});
+  ASSERT_TRUE(a.ok() && b.ok());
+  sim.takeChanges();
+
+  JointDef def;
+  def.bodyA = a.id;
+  def.bodyB = b.id;
+  def.anchorA = Vec2(5, 5);
+  def.anchorB = Vec2(7, 5);
+  const auto rod = sim.createJoint(def);
+  ASSERT_TRUE(rod.ok()) << rod.error;
+  const auto spring = sim.createJoint(def);
+  ASSERT_TRUE(spring.ok()) << spring.error;
+  EXPECT_TRUE(hasJoint(sim.takeChanges().addedJointIds(), rod.id));
+
+  const auto version = sim.version();
+  EXPECT_TRUE(sim.removeJoint(rod.id));
+  EXPECT_GT(sim.version(), version);
+  EXPECT_FALSE(sim.removeJoint(rod.id));
+  EXPECT_TRUE(hasJoint(sim.takeChanges().removedJointIds(), rod.id));
+
+  // Refused: nothing recorded.
+  def.bodyB = a.id;
+  EXPECT_FALSE(sim.createJoint(def).ok());
+  EXPECT_TRUE(sim.takeChanges().addedJointIds().empty());
+
+  ASSERT_TRUE(sim.removeBody(b.id));
+  EXPECT_TRUE(hasJoint(sim.takeChanges().removedJointIds(), spring.id));
+}
+
 }  // namespace
 }  // namespace impulse::server

@@ -40,6 +40,34 @@ v1::ClientMessage applyImpulse(std::uint32_t id, Point impulse,
 v1::ClientMessage setPaused(bool paused);
 v1::ClientMessage step(std::uint32_t ticks);
 v1::ClientMessage queryBody(std::uint32_t id);
+/// The two ends of a new joint (PROTOCOL.md, "Joints"): anchors are world
+/// points now; bodyB 0 fixes the joint to the world at anchorB.
+struct JointEnds {
+  std::uint32_t bodyA = 0;
+  std::uint32_t bodyB = 0;
+  Point anchorA;
+  Point anchorB;
+  bool collideConnected = false;
+};
+
+/// CreateJoint, one builder per kind; the reply's joint_id names the joint.
+v1::ClientMessage distanceJoint(const JointEnds& ends, const v1::DistanceJoint& kind);
+v1::ClientMessage ropeJoint(const JointEnds& ends, const v1::RopeJoint& kind);
+v1::ClientMessage revoluteJoint(const JointEnds& ends, const v1::RevoluteJoint& kind);
+v1::ClientMessage prismaticJoint(const JointEnds& ends, const v1::PrismaticJoint& kind);
+v1::ClientMessage weldJoint(const JointEnds& ends, const v1::WeldJoint& kind);
+v1::ClientMessage wheelJoint(const JointEnds& ends, const v1::WheelJoint& kind);
+/// Pulls `point` of `body` towards `point` (then setJointTarget) with at
+/// most kind.max_force.
+v1::ClientMessage mouseJoint(std::uint32_t body, Point point, const v1::MouseJoint& kind);
+/// UpdateJoint: a mouse joint's target.
+v1::ClientMessage setJointTarget(std::uint32_t joint, Point target);
+/// UpdateJoint: a motor's speed, and its max torque or force when given.
+v1::ClientMessage setJointMotor(std::uint32_t joint, double speed,
+                                std::optional<double> maxForce = std::nullopt);
+v1::ClientMessage removeJoint(std::uint32_t joint);
+/// Answered by a JointInfo.
+v1::ClientMessage queryJoint(std::uint32_t joint);
 /// With `wantStateHash` the Pong's stats carry the world's state hash.
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
 

@@ -9,6 +9,7 @@
 
 #include "impulse.pb.h"
 #include "impulse/body.h"
+#include "impulse/joint.h"
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
 #include "impulse/shape.h"
@@ -36,6 +37,8 @@ class WorldMirror {
   /// Bodies by id (ascending).
   const std::map<std::uint32_t, MirrorBody>& bodies() const { return bodies_; }
   const MirrorBody* find(BodyId id) const;
+  /// Joints by id (ascending), as the server described them.
+  const std::map<std::uint32_t, JointDescription>& joints() const { return joints_; }
 
   std::uint64_t tick() const { return tick_; }
   double simTime() const { return simTime_; }
@@ -47,6 +50,7 @@ class WorldMirror {
 
  private:
   std::map<std::uint32_t, MirrorBody> bodies_;
+  std::map<std::uint32_t, JointDescription> joints_;
   std::uint64_t tick_ = 0;
   double simTime_ = 0;
   Vec2 gravity_ = Vec2::Zero();

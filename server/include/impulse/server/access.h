@@ -4,7 +4,8 @@
 ///
 /// Without tokens every client is admin (the loopback default). With an admin
 /// token configured, clients that did not present it are players: they may
-/// spawn, push and remove only the bodies they created, query and ping;
+/// spawn, push and remove only the bodies they created, join them with
+/// joints (and change or remove only the joints they created), query and ping;
 /// world-wide commands (clear, presets, pause, step, gravity) are refused.
 
 #include <cstdint>
@@ -49,7 +50,15 @@ class Ownership {
   std::string ownershipRefusal(std::string_view command, std::uint32_t body,
                                std::uint32_t client) const;
 
+  std::string jointRefusal(std::string_view command, std::uint32_t joint,
+                           std::uint32_t client) const;
+  /// Forgets bodies and joints the world no longer has (they also leave by
+  /// falling out of the world, or with their bodies), once the maps could
+  /// outgrow the body limit.
+  void sweep(const World& world);
+
   std::unordered_map<std::uint32_t, std::uint32_t> ownerOf_;
+  std::unordered_map<std::uint32_t, std::uint32_t> jointOwnerOf_;
 };
 
 }  // namespace impulse::server

@@ -44,6 +44,10 @@ class Simulation {
   bool removeBody(BodyId id);
   InputResult applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point);
   InputResult setGravity(const Vec2& gravity);
+  JointResult createJoint(const JointDef& def);
+  /// False for an unknown id.
+  bool removeJoint(JointId id);
+  InputResult updateJoint(JointId id, const JointUpdate& update);
   /// Replaces the world with preset `id`; false (world untouched) when out of range.
   bool loadPreset(int id, Material selected);
   /// Removes every body.
@@ -72,6 +76,9 @@ class Simulation {
  private:
   /// After a successful change: records `id` (if any) as changed for snapshots.
   void changedBody(BodyId id);
+  /// Records the joints the world removed with their bodies (last
+  /// destroyBody call or step).
+  void recordRemovedJoints();
 
   double tickHz_;
   World world_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "impulse/body.h"
+#include "impulse/joint.h"
 
 namespace impulse::server {
 
@@ -22,6 +23,10 @@ class WorldChanges {
   /// States changed (a step's moved bodies, an impulse while paused);
   /// `bodyCount` bounds the list however many steps pass between takes.
   void changed(std::span<const BodyId> ids, int bodyCount);
+  void jointAdded(JointId id);
+  /// Listed even if added since the last take, as bodies are; joints that
+  /// went with their bodies are listed here too.
+  void jointRemoved(JointId id);
   /// Every body was replaced (clear, preset): the next snapshot is full.
   void replaced();
   bool wasReplaced() const { return replaced_; }
@@ -31,12 +36,16 @@ class WorldChanges {
   const std::vector<BodyId>& removedIds() const { return removed_; }
   const std::vector<BodyId>& leftWorldIds() const { return leftWorld_; }
   const std::vector<BodyId>& changedIds() const { return changed_; }
+  const std::vector<JointId>& addedJointIds() const { return jointsAdded_; }
+  const std::vector<JointId>& removedJointIds() const { return jointsRemoved_; }
 
  private:
   std::vector<BodyId> added_;
   std::vector<BodyId> removed_;
   std::vector<BodyId> leftWorld_;
   std::vector<BodyId> changed_;
+  std::vector<JointId> jointsAdded_;
+  std::vector<JointId> jointsRemoved_;
   bool replaced_ = false;
 };
 

@@ -13,6 +13,7 @@
 
 #include "impulse.pb.h"
 #include "impulse/body.h"
+#include "impulse/joint.h"
 #include "impulse/material.h"
 #include "impulse/math.h"
 #include "impulse/scenes/presets.h"
@@ -42,6 +43,12 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out);
 void toWire(const PresetInfo& preset, v1::PresetInfo* out);
 /// Everything QueryBody answers about one body.
 void toWire(const BodyDescription& description, const BodyState& state, v1::BodyInfo* out);
+void toWire(const JointDescription& description, v1::JointDescriptor* out);
+/// The kind and its values, into CreateJoint (client) or JointDescriptor.
+void toWire(const JointSettings& settings, v1::CreateJoint* out);
+void toWire(const JointSettings& settings, v1::JointDescriptor* out);
+/// Everything QueryJoint answers about one joint.
+void toWire(const JointDescription& description, const JointState& state, v1::JointInfo* out);
 
 // ------------------------------------------------------------ wire -> engine
 
@@ -63,6 +70,18 @@ Decoded<Shape> shapeFromWire(const v1::Shape& shape);
 BodyState stateFromWire(const v1::BodyState& state);
 Vec2 vecFromWireUnchecked(const v1::Vec2& v);
 PresetInfo presetFromWire(const v1::PresetInfo& preset);
+
+/// A CreateJoint as the engine's JointDef, every number checked; errors name
+/// the field ("create_joint.distance.stiffness is not a finite number").
+/// Ranges (negative stiffness, unknown bodies) are the engine's to judge.
+Decoded<JointDef> jointDefFromWire(const v1::CreateJoint& command);
+/// An UpdateJoint's fields that are set, each checked.
+Decoded<JointUpdate> jointUpdateFromWire(const v1::UpdateJoint& command);
+/// Joints come from the server: converted as they are. Nothing for a
+/// descriptor without a kind.
+std::optional<JointDescription> jointFromWire(const v1::JointDescriptor& joint);
+/// The wire name of a joint kind ("distance", "rope", ... "mouse").
+std::string_view jointKindName(const JointSettings& settings);
 
 /// Upper-case wire name of a material ("SOLID".."RUBBER").
 std::string_view materialName(Material material);
