@@ -32,6 +32,8 @@ struct Body {
   std::int32_t proxyKey = kNullIndex;
   // Head of this body's contact edge list (edge_list.h).
   std::int32_t contactHead = kNullIndex;
+  // Head of this body's joint edge list.
+  std::int32_t jointHead = kNullIndex;
   // Index into the solver's state array during a step (0 = static dummy).
   std::int32_t solverIndex = 0;
   std::uint64_t islandMark = 0;

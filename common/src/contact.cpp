@@ -174,6 +174,7 @@ void updatePairs(WorldData& world, Real /*dt*/) {
     const Body& b = world.bodies[pair.second];
     if (a.isStatic && b.isStatic) continue;
     if (world.contactByPair.contains(pairKey(pair.first, pair.second))) continue;
+    if (jointBlocksContact(world, pair.first, pair.second)) continue;
     createContact(world, pair.first, pair.second);
   }
 }

@@ -13,12 +13,15 @@ namespace impulse {
 namespace {
 
 // The island graph: calls visit(other) for every body joined to `slot` by a
-// constraint that links islands. Touching contacts today; a new constraint
-// kind adds its edge list here.
+// constraint that links islands: touching contacts and joints.
 template <class Visit>
 void forEachLinkedBody(const WorldData& world, std::int32_t slot, Visit&& visit) {
   forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
     if (contact.touching) visit(contact.edges.otherBody(key));
+  });
+  // A joint to the world has no body on its other side.
+  forEachEdge(world.joints, world.bodies[slot].jointHead, [&](std::int32_t key, const Joint& joint) {
+    if (joint.edges.otherBody(key) != kNullIndex) visit(joint.edges.otherBody(key));
   });
 }
 

@@ -58,7 +58,10 @@ void loadStates(WorldData& world, Real h) {
 
 // Every kind of constraint the solver runs, in the order each stage visits
 // them. A new kind adds itself here.
-std::array<ConstraintKind*, 1> constraintKinds(WorldData& world) { return {&world.contactConstraints}; }
+// Joints come first: they take their colours before the contacts do.
+std::array<ConstraintKind*, 2> constraintKinds(WorldData& world) {
+  return {&world.jointConstraints, &world.contactConstraints};
+}
 
 void integrateVelocities(WorldData& world, Real h) {
   const Real maxAngularSpeed = kMaxRotationPerSubStep / h;

@@ -194,11 +194,14 @@ CreateResult World::createPolygon(std::span<const Vec2> points, const BodyOption
   return createBody(makeBodyDef(Shape::makePolygon(build.polygon), build.centroid, options));
 }
 
-bool World::destroyBody(BodyId id) {
-  WorldData& w = *impl_;
+namespace {
+
+// Removes a body with its contacts and joints (added to removedJoints).
+bool removeBody(WorldData& w, BodyId id) {
   Body* body = w.find(id);
   if (body == nullptr) return false;
   std::int32_t slot = id.slot();
+  destroyBodyJoints(w, slot);
   destroyBodyContacts(w, slot);
   w.broadPhase.destroyProxy(body->proxyKey);
   if (body->awake) std::erase(w.awakeBodies, slot);
@@ -208,6 +211,13 @@ bool World::destroyBody(BodyId id) {
   w.freeBodies.release(slot);
   --w.liveBodies;
   return true;
+}
+
+}  // namespace
+
+bool World::destroyBody(BodyId id) {
+  impl_->removedJoints.clear();
+  return removeBody(*impl_, id);
 }
 
 void World::clear() {
@@ -320,7 +330,8 @@ void World::step(Real dt) {
     w.profile.*stage.time = millisecondsSince(stageStart);
   }
   guardStep(w, guard_);
-  for (BodyId id : guard_.escaped) destroyBody(id);
+  w.removedJoints.clear();
+  for (BodyId id : guard_.escaped) removeBody(w, id);
 
   w.profile.total = millisecondsSince(start);
   ++w.stepCount;

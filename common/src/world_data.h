@@ -13,6 +13,8 @@
 #include "contact_constraints.h"
 #include "contact_data.h"
 #include "free_list.h"
+#include "joint_constraints.h"
+#include "joint_data.h"
 #include "graph_coloring.h"
 #include "impulse/broad_phase.h"
 #include "impulse/field.h"
@@ -39,6 +41,11 @@ struct WorldData {
   // Lookup only (never iterated), so its order cannot leak into the step.
   std::unordered_map<std::uint64_t, std::int32_t> contactByPair;
 
+  std::vector<Joint> joints;
+  FreeList freeJoints;
+  int liveJoints = 0;
+  std::vector<JointId> removedJoints;
+
   /// In the order they were added, which is the order they apply in.
   std::vector<FieldSlot> fields;
   std::uint32_t nextFieldId = 1;
@@ -49,6 +56,7 @@ struct WorldData {
   std::vector<BodyId> movedBodies;
 
   // The kinds of constraint the solver runs (solver.cpp lists them).
+  JointConstraints jointConstraints;
   ContactConstraints contactConstraints;
 
   // Scratch reused every step, so the steady state allocates nothing.
@@ -87,5 +95,9 @@ void destroyContact(WorldData& world, std::int32_t contact);     // contact.cpp
 void destroyBodyContacts(WorldData& world, std::int32_t body);   // contact.cpp
 void wakeIsland(WorldData& world, std::int32_t body);            // island.cpp
 AABB bodyAABB(const WorldData& world, std::int32_t body);        // world.cpp
+// joint_world.cpp: a joint with collideConnected off between the bodies.
+bool jointBlocksContact(const WorldData& world, std::int32_t bodyA, std::int32_t bodyB);
+// joint_world.cpp: removes the body's joints, listing them in removedJoints.
+void destroyBodyJoints(WorldData& world, std::int32_t body);
 
 }  // namespace impulse

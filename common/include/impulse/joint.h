@@ -115,9 +115,9 @@ struct JointResult {
 
 /// What changes on a live joint (unset: unchanged).
 struct JointUpdate {
-  std::optional<Vec2> target;          ///< mouse joints
-  std::optional<Real> motorSpeed;      ///< revolute, prismatic, wheel
-  std::optional<Real> maxMotorForce;   ///< N (prismatic) or N*m (revolute, wheel)
+  std::optional<Vec2> target{};        ///< mouse joints
+  std::optional<Real> motorSpeed{};    ///< revolute, prismatic, wheel
+  std::optional<Real> maxMotorForce{}; ///< N (prismatic) or N*m (revolute, wheel)
 };
 
 /// What does not change over a joint's life (and its settings as in force).

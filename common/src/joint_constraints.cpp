@@ -1,0 +1,104 @@
+#include "joint_constraints.h"
+
+#include <algorithm>
+
+#include "world_data.h"
+
+namespace impulse {
+
+namespace {
+
+// Joint rows are rigid; like Box2D v3 they are twice as stiff as contacts,
+// within the same cap (a quarter of the sub-step rate each).
+constexpr Real kJointDampingRatio = 2;
+
+struct Side {
+  std::int32_t state = 0;
+  Real invMass = 0;
+  Real invInertia = 0;
+  Vec2 center = Vec2::Zero();
+  Rot q;
+};
+
+// A missing or static body, or one asleep, is the static dummy state 0:
+// the world frame for a missing one.
+Side sideOf(const WorldData& world, std::int32_t slot) {
+  if (slot == kNullIndex) return {};
+  const Body& body = world.bodies[slot];
+  Side side{0, 0, 0, body.transform.p, body.transform.q};
+  if (body.awake) side = {body.solverIndex, body.invMass, body.invInertia, body.transform.p, body.transform.q};
+  return side;
+}
+
+bool hasAwakeBody(const WorldData& world, const Joint& joint) {
+  auto awake = [&](std::int32_t slot) { return slot != kNullIndex && world.bodies[slot].awake; };
+  return joint.alive && (awake(joint.edges.bodyA) || awake(joint.edges.bodyB));
+}
+
+JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index) {
+  Side a = sideOf(world, joint.edges.bodyA);
+  // A mouse joint pulls towards a world point, whatever B is.
+  const bool mouse = std::holds_alternative<MouseJointSettings>(joint.settings);
+  Side b = mouse ? Side{} : sideOf(world, joint.edges.bodyB);
+  JointRow row;
+  row.joint = &joint;
+  row.index = index;
+  row.stateA = a.state;
+  row.stateB = b.state;
+  row.invMassA = a.invMass;
+  row.invInertiaA = a.invInertia;
+  row.invMassB = b.invMass;
+  row.invInertiaB = b.invInertia;
+  row.anchorA = a.q.apply(joint.localAnchorA);
+  row.anchorB = mouse ? joint.target : b.q.apply(joint.localAnchorB);
+  row.deltaCenter = b.center - a.center;
+  row.deltaAngle = jointAngle(joint, a.q, b.q);
+  row.axis = a.q.apply(joint.localAxisA);
+  row.lastAxis = row.axis;
+  if (world.settings.enableWarmStarting) row.impulses = joint.impulses;
+  return row;
+}
+
+}  // namespace
+
+bool JointConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
+  rows_.clear();
+  if (world.liveJoints == 0) return false;
+  gathered_.clear();
+  colorOf_.clear();
+  for (std::size_t index = 0; index < world.joints.size(); ++index) {
+    const Joint& joint = world.joints[index];
+    if (!hasAwakeBody(world, joint)) continue;
+    gathered_.push_back(makeRow(world, joint, static_cast<std::int32_t>(index)));
+    colorOf_.push_back(coloring.take(gathered_.back().stateA, gathered_.back().stateB));
+  }
+  // Solved in colour order, so a colour's joints could run side by side.
+  sortByColor(colorOf_, order_);
+  for (std::int32_t position : order_) rows_.push_back(gathered_[position]);
+  Real hertz = std::min(2 * world.settings.contactHertz, Real(0.25) / step.h);
+  pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
+  return false;
+}
+
+void JointConstraints::warmStart(const SubStep& sub) {
+  for (JointRow& row : rows_) warmStartJoint(row, sub.states[row.stateA], sub.states[row.stateB]);
+}
+
+void JointConstraints::run(const SubStep& sub, bool useBias) {
+  JointPass pass = pass_;
+  pass.useBias = useBias;
+  for (JointRow& row : rows_) solveJoint(row, sub.states[row.stateA], sub.states[row.stateB], pass);
+}
+
+void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
+void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
+
+void JointConstraints::store(WorldData& world) {
+  for (const JointRow& row : rows_) {
+    Joint& joint = world.joints[row.index];
+    joint.impulses = row.impulses;
+    jointReaction(row, pass_.invH, joint.reactionForce, joint.reactionTorque);
+  }
+}
+
+}  // namespace impulse
