@@ -169,16 +169,26 @@ JointWords<v1::RopeJoint> parseRope(Arguments& line) {
   return std::tuple{joint->ends, kind};
 }
 
+// Revolute and prismatic joints: "limit LO HI", "motor SPEED MAX" and
+// "spring K D"; the two differ in their limit's and motor's field names.
+template <class Kind, class SetBound, class SetMax>
+void applyLimitMotorSpring(const Tail& tail, Kind& kind, SetBound setLower, SetBound setUpper,
+                           SetMax setMax) {
+  const Group& limit = tail.group("limit");
+  kind.set_enable_limit(limit.given);
+  (kind.*setLower)(limit.first);
+  (kind.*setUpper)(limit.second);
+  applyMotor(tail, kind, setMax);
+  applySpring(tail, kind);
+}
+
 JointWords<v1::RevoluteJoint> parseRevolute(Arguments& line) {
   const auto joint = readJoint(line, false, false, 0, {"limit", "motor", "spring"});
   if (!joint) return std::nullopt;
   v1::RevoluteJoint kind;
-  const Group& limit = joint->tail.group("limit");
-  kind.set_enable_limit(limit.given);
-  kind.set_lower_angle(limit.first);
-  kind.set_upper_angle(limit.second);
-  applyMotor(joint->tail, kind, &v1::RevoluteJoint::set_max_motor_torque);
-  applySpring(joint->tail, kind);
+  applyLimitMotorSpring(joint->tail, kind, &v1::RevoluteJoint::set_lower_angle,
+                        &v1::RevoluteJoint::set_upper_angle,
+                        &v1::RevoluteJoint::set_max_motor_torque);
   return std::tuple{joint->ends, kind};
 }
 
@@ -187,12 +197,8 @@ JointWords<v1::PrismaticJoint> parsePrismatic(Arguments& line) {
   if (!joint) return std::nullopt;
   v1::PrismaticJoint kind;
   *kind.mutable_axis() = joint->axis;
-  const Group& limit = joint->tail.group("limit");
-  kind.set_enable_limit(limit.given);
-  kind.set_lower(limit.first);
-  kind.set_upper(limit.second);
-  applyMotor(joint->tail, kind, &v1::PrismaticJoint::set_max_motor_force);
-  applySpring(joint->tail, kind);
+  applyLimitMotorSpring(joint->tail, kind, &v1::PrismaticJoint::set_lower,
+                        &v1::PrismaticJoint::set_upper, &v1::PrismaticJoint::set_max_motor_force);
   return std::tuple{joint->ends, kind};
 }
 

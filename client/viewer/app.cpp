@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "body_metrics.h"
 #include "impulse/client/commands.h"
@@ -92,12 +93,17 @@ ControlContext App::context() const {
   }
   if (const auto hit = bodyAt(controls_.pointer())) context.bodyUnderPointer = hit->id;
   context.userBodies = userBodies();
-  // The newest state, not the interpolated one: steering reacts sooner.
+  // The newest state, not the interpolated one: the joint's anchor is where
+  // the server has the body.
   if (const auto grabbed = controls_.grabbedBody()) {
     if (const client::MirrorBody* body = mirrored(*grabbed)) {
       BodyLook look{body->shape, body->material, body->isStatic, body->ignoreGravity};
-      context.grabbed = GrabbedMotion{body->state.position, body->state.linearVelocity,
-                                      double(massOf(look).mass)};
+      context.grabbed = GrabbedBody{body->state.position, double(massOf(look).mass)};
+    }
+  }
+  if (const auto selected = controls_.selectedBody()) {
+    if (const client::MirrorBody* body = mirrored(*selected)) {
+      context.selectedPosition = body->state.position;
     }
   }
   return context;
@@ -230,6 +236,9 @@ void App::handleReplies() {
     }
     if (!reply.message.has_command_result()) continue;
     const v1::CommandResult& result = reply.message.command_result();
+    if (reply.what == "drag") {
+      controls_.dragJointAnswered(result.ok() ? std::optional(result.joint_id()) : std::nullopt);
+    }
     if (result.ok()) {
       if (reply.what == "polygon" || reply.what == "circle") spawned_.insert(result.body_id());
     } else if (reply.what == "inspect") {
@@ -251,9 +260,28 @@ void App::recordFigures() {
   energy_.add(float(kineticEnergy(world_.bodies())));
 }
 
+std::vector<JointFigure> App::jointFigures() const {
+  std::vector<JointFigure> figures;
+  const client::Client* client = connection_->client();
+  if (client == nullptr || client->mirror().joints().empty()) return figures;
+  std::unordered_map<std::uint32_t, const BodySample*> drawn;
+  for (const DrawnBody& body : world_.bodies()) drawn[body.state.id] = &body.state;
+  auto find = [&](BodyId id) {
+    const auto it = drawn.find(id.value);
+    return it == drawn.end() ? nullptr : it->second;
+  };
+  for (const auto& [id, joint] : client->mirror().joints()) {
+    if (auto figure = jointFigure(joint, find(joint.bodyA), find(joint.bodyB))) {
+      figures.push_back(*figure);
+    }
+  }
+  return figures;
+}
+
 void App::drawScene(ImDrawList& list, const ViewTransform& view) {
   scene_.begin(list, view);
   scene_.drawBodies(list, view, world_.bodies(), controls_.selectedBody(), controls_.grabbedBody());
+  scene_.drawJoints(list, view, jointFigures());
   if (const client::Client* client = connection_->client(); client && client->mirror().preset()) {
     scene_.drawMarkers(list, view, client->mirror().preset()->markers);
   }

@@ -16,6 +16,7 @@
 #include "gui.h"
 #include "history.h"
 #include "interpolated_world.h"
+#include "joint_figure.h"
 #include "layout.h"
 #include "options.h"
 #include "overlays.h"
@@ -76,6 +77,8 @@ class App {
   void recordFigures();
   void draw();
   void drawScene(ImDrawList& list, const ViewTransform& view);
+  /// The mirror's joints where the drawn (interpolated) bodies are.
+  std::vector<JointFigure> jointFigures() const;
   bool saveCapture(const std::string& path);
   const client::MirrorBody* mirrored(std::uint32_t id) const;
   std::optional<BodyHit> bodyAt(const Vec2& point) const;

@@ -173,7 +173,7 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     case Control::ClearAll:
       send(client::clearWorld(), "clear");
       selected_.reset();
-      grab_.reset();
+      endGrab(true);
       break;
     case Control::TogglePanel: panelVisible_ = !panelVisible_; break;
     case Control::ToggleInspector:
@@ -187,7 +187,7 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
       send(client::loadPreset(key.index, material_), "preset " + std::to_string(key.index));
       cancelDrawing();
       selected_.reset();
-      grab_.reset();
+      endGrab(true);
       panelVisible_ = false;
       camera_ = {};
       break;
@@ -201,6 +201,7 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     case Control::ToggleContacts: overlays_.contacts = !overlays_.contacts; break;
     case Control::ToggleBounds: overlays_.bounds = !overlays_.bounds; break;
     case Control::ToggleVelocities: overlays_.velocities = !overlays_.velocities; break;
+    case Control::PinSelected: pinSelected(context, now); break;
     case Control::CancelOrQuit: cancelOrQuit(now); break;
     default: break;
   }
@@ -212,7 +213,7 @@ void Controls::cancelOrQuit(double now) {
     cancelDrawing();
     notify("Drawing cancelled (Esc again quits)", now);
   } else if (grab_) {
-    grab_.reset();
+    endGrab();
   } else if (selected_) {
     selected_.reset();
   } else {
@@ -227,7 +228,7 @@ void Controls::clearUserBodies(const ControlContext& context, double now) {
   }
   for (const std::uint32_t id : context.userBodies) send(client::removeBody(id), "clear");
   selected_.reset();
-  grab_.reset();
+  endGrab(true);
 }
 
 void Controls::togglePause(const ControlContext& context) {
@@ -249,7 +250,7 @@ void Controls::removeBody(std::optional<std::uint32_t> body, double now) {
   }
   send(client::removeBody(*body), "remove");
   if (selected_ == body) selected_.reset();
-  if (grabbedBody() == body) grab_.reset();
+  if (grabbedBody() == body) endGrab(true);
 }
 
 void Controls::removeClicked(std::optional<std::uint32_t> body, double now) {
@@ -285,12 +286,48 @@ void Controls::repeatHeldKeys(const ControlContext& context, double now) {
 }
 
 void Controls::steerGrabbed(const ControlContext& context, double now) {
-  if (!grab_ || !grab_->dragging || !context.grabbed || now < grab_->nextImpulse) return;
-  const double interval = 1 / settings_.grabHz;
-  const Vec2 impulse = grabImpulse(*context.grabbed, grab_->offset, pointer_, context.gravity,
-                                   interval, settings_.grab);
-  send(client::applyImpulse(grab_->body, toPoint(impulse)), "drag");
-  grab_->nextImpulse = now + interval;
+  if (!grab_ || !grab_->dragging || !context.grabbed) return;
+  if (!grab_->jointRequested) {
+    // The held point where the body is now (it may have moved since the press).
+    const Vec2 held = context.grabbed->position + grab_->offset;
+    send(client::mouseJoint(grab_->body, toPoint(held), mouseSpring(context.grabbed->mass,
+                                                                     settings_.grab)),
+         "drag");
+    grab_->jointRequested = true;
+    grab_->sentTarget = held;
+  }
+  // A still cursor sends nothing: the joint keeps its target.
+  if (!grab_->joint || now < grab_->nextTarget || pointer_ == grab_->sentTarget) return;
+  send(client::setJointTarget(*grab_->joint, toPoint(pointer_)), "drag target");
+  grab_->sentTarget = pointer_;
+  grab_->nextTarget = now + 1 / settings_.grabHz;
+}
+
+void Controls::dragJointAnswered(std::optional<std::uint32_t> joint) {
+  if (abandonedJoints_ > 0) {
+    --abandonedJoints_;
+    if (joint) send(client::removeJoint(*joint), "drag end");
+    return;
+  }
+  if (grab_ && grab_->jointRequested && !grab_->joint) grab_->joint = joint;
+}
+
+void Controls::endGrab(bool bodyGone) {
+  if (!grab_) return;
+  if (grab_->joint && !bodyGone) send(client::removeJoint(*grab_->joint), "drag end");
+  if (grab_->jointRequested && !grab_->joint) ++abandonedJoints_;
+  grab_.reset();
+}
+
+void Controls::pinSelected(const ControlContext& context, double now) {
+  if (!selected_ || !context.selectedPosition) {
+    notify("J pins the selected body: M, then click a body", now);
+    return;
+  }
+  // At the cursor when it is on the body (a pendulum), else at the centre.
+  const Vec2 pivot =
+      context.bodyUnderPointer == selected_ ? pointer_ : *context.selectedPosition;
+  send(client::revoluteJoint({*selected_, 0, toPoint(pivot), toPoint(pivot), false}, {}), "pin");
 }
 
 std::optional<std::uint32_t> Controls::grabbedBody() const {
@@ -347,7 +384,7 @@ void Controls::pointerReleased(const Vec2& at) {
   pointerMoved(at);
   dragging_ = false;
   // Letting go is the throw: the body keeps the velocity it was given.
-  grab_.reset();
+  endGrab();
 }
 
 }  // namespace impulse::viewer

@@ -47,6 +47,7 @@ enum class Control {
   ToggleContacts,
   ToggleBounds,
   ToggleVelocities,
+  PinSelected,
   CancelOrQuit,
 };
 
@@ -57,6 +58,12 @@ struct ControlKey {
 };
 
 enum class DrawMode { None, Polygon, Circle };
+
+/// The grabbed body as the newest snapshot has it.
+struct GrabbedBody {
+  Vec2 position = Vec2::Zero();  ///< centre of mass
+  double mass = 0;
+};
 
 /// What the controls need to know about the world when an event happens.
 struct ControlContext {
@@ -71,8 +78,12 @@ struct ControlContext {
   /// What C removes: every moving body and every body this viewer made;
   /// the scene's static scenery stays.
   std::vector<std::uint32_t> userBodies{};
-  /// The newest motion of the grabbed body, while one is grabbed.
-  std::optional<GrabbedMotion> grabbed{};
+  /// The newest centre of mass and mass of the grabbed body, while one is
+  /// grabbed.
+  std::optional<GrabbedBody> grabbed{};
+  /// The selected body's centre of mass (J pins it there unless the
+  /// pointer is on it).
+  std::optional<Vec2> selectedPosition{};
 };
 
 /// A body under the cursor when the left button went down.
@@ -97,7 +108,8 @@ struct ControlSettings {
   double pushSpeed = 0.25;
   /// How long a notice stays on screen, seconds.
   double noticeSeconds = 4;
-  /// A grabbed body is steered this often (Hz): about the snapshot rate.
+  /// A grabbed body's target follows the cursor this often (Hz): about the
+  /// snapshot rate.
   double grabHz = 30;
   /// The cursor must move this far (m) before a press becomes a drag, so a
   /// click that selects a body does not disturb it.
@@ -128,6 +140,9 @@ class Controls {
   /// where it is not allowed.
   void update(const ControlContext& context, double now);
 
+  /// The server's answer to the drag's CreateJoint (`what` "drag"): the
+  /// joint's id, or nothing when it was refused.
+  void dragJointAnswered(std::optional<std::uint32_t> joint);
   /// Commands produced since the last call, in order.
   std::vector<Outgoing> takeCommands();
   /// Shows `text` for a few seconds (also used for server errors).
@@ -179,7 +194,10 @@ class Controls {
     Vec2 offset;     ///< grabbed point minus the body's centre at the press
     Vec2 pressedAt;  ///< where the press was, world
     bool dragging = false;
-    double nextImpulse = 0;
+    bool jointRequested = false;
+    std::optional<std::uint32_t> joint;  ///< the mouse joint, once the server named it
+    Vec2 sentTarget = Vec2::Zero();
+    double nextTarget = 0;
   };
 
   void togglePolygon(const ControlContext& context, double now);
@@ -192,6 +210,10 @@ class Controls {
   void stepOnce(const ControlContext& context, double now);
   void removeBody(std::optional<std::uint32_t> body, double now);
   void steerGrabbed(const ControlContext& context, double now);
+  /// Lets go: removes the drag's joint unless `bodyGone` (then it went with
+  /// the body).
+  void endGrab(bool bodyGone = false);
+  void pinSelected(const ControlContext& context, double now);
   /// Acts once for a repeating key; false when the key does not repeat.
   bool repeatAction(ControlKey key, const ControlContext& context, double now);
   void repeatHeldKeys(const ControlContext& context, double now);
@@ -209,6 +231,9 @@ class Controls {
   bool inspectorVisible_ = false;
   std::optional<std::uint32_t> selected_;
   std::optional<Grab> grab_;
+  /// Drag joints asked for by grabs that ended before the server answered:
+  /// removed as their ids arrive (answers come in order).
+  int abandonedJoints_ = 0;
   Overlays overlays_;
   Camera camera_;
 

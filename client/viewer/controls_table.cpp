@@ -8,13 +8,13 @@ namespace impulse::viewer {
 namespace {
 
 // SPEC.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 23> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
     {"drag", "circle: centre at press, radius to cursor"},
     {"Esc", "cancel drawing, grab or selection; else quit"},
-    {"left drag", "grab a body; release throws it"},
+    {"left drag", "pull a body by a mouse joint; release throws it"},
     {"right click, Del", "remove the body under the cursor"},
     {"C", "clear what was made; scenery stays"},
     {"Shift+C", "clear everything"},
@@ -26,9 +26,11 @@ constexpr std::array<std::pair<const char*, const char*>, 23> kControlRows{{
     {"K B V", "contacts, bounding boxes, velocities"},
     {"X", "show or hide these controls"},
     {"M", "inspector: click a body, arrows push it"},
+    {"J", "pin the selected body to the world (at the cursor)"},
     {"Q / G", "next shapes static / feel gravity"},
     {"KP 1-5, F5-F9", "SOLID ICE WOOD METAL RUBBER"},
     {"1-9, F1, 0", "preset 1-9, 10, sandbox"},
+    {"Shift+1-4", "spring, pendulum and cradle, chain bridge, car"},
     {"W A S D", "nudge gravity while held"},
     {"Enter", "reset gravity"},
     {"", "drawing: sandbox and presets 3, 4"},

@@ -1,15 +1,16 @@
 #include "grab.h"
 
+#include <numbers>
+
 namespace impulse::viewer {
 
-Vec2 grabImpulse(const GrabbedMotion& body, const Vec2& offset, const Vec2& cursor,
-                 const Vec2& gravity, double interval, const GrabSettings& settings) {
-  const Vec2 toCursor = cursor - (body.position + offset);
-  Vec2 wanted = toCursor * Real(settings.gain);
-  const Real speed = wanted.norm();
-  if (speed > Real(settings.maxSpeed)) wanted *= Real(settings.maxSpeed) / speed;
-  const Vec2 velocityChange = wanted - body.velocity - gravity * Real(interval);
-  return velocityChange * Real(body.mass);
+v1::MouseJoint mouseSpring(double mass, const GrabSettings& settings) {
+  const double omega = 2 * std::numbers::pi * settings.frequency;
+  v1::MouseJoint spring;
+  spring.set_stiffness(mass * omega * omega);
+  spring.set_damping(2 * settings.dampingRatio * mass * omega);
+  spring.set_max_force(mass * settings.maxAcceleration);
+  return spring;
 }
 
 }  // namespace impulse::viewer

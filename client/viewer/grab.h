@@ -1,35 +1,26 @@
 #pragma once
-/// Dragging a body by hand without a mouse joint on the server: at a steady
-/// rate the viewer sends the impulse that changes the body's velocity to one
-/// that carries the grabbed point towards the cursor (and cancels the
-/// gravity of the next interval). On release nothing more is sent, so the
-/// body flies on with the cursor's speed: a throw.
+/// Dragging a body by hand through a mouse joint on the server: the press
+/// point of the body is pulled towards the cursor by a critically damped
+/// spring whose force is capped, so a heavy body lags and a light one
+/// follows. On release the joint is removed and the body flies on with the
+/// speed it had: a throw.
 
-#include <cstdint>
-
-#include "impulse/math.h"
+#include "impulse.pb.h"
 
 namespace impulse::viewer {
 
 struct GrabSettings {
-  /// The grabbed point closes this fraction of its distance to the cursor
-  /// per second (a velocity gain, 1/s).
-  double gain = 10;
-  /// Speed limit of the dragged body, m/s.
-  double maxSpeed = 25;
+  /// The spring's natural frequency (Hz): how briskly the body follows.
+  double frequency = 5;
+  /// 1 is critical damping: no overshoot at the cursor.
+  double dampingRatio = 0.9;
+  /// The largest acceleration the hand gives the body (m/s^2), about 50 g:
+  /// enough to lift anything, not enough to fling it through walls.
+  double maxAcceleration = 500;
 };
 
-/// The newest known motion of the grabbed body.
-struct GrabbedMotion {
-  Vec2 position = Vec2::Zero();  ///< centre of mass
-  Vec2 velocity = Vec2::Zero();
-  double mass = 0;
-};
-
-/// The impulse (N*s) to apply at the centre of mass so that the point at
-/// `offset` from the centre heads for `cursor`; `interval` is the time until
-/// the next such impulse, over which `gravity` would otherwise pull.
-Vec2 grabImpulse(const GrabbedMotion& body, const Vec2& offset, const Vec2& cursor,
-                 const Vec2& gravity, double interval, const GrabSettings& settings = {});
+/// A body of `mass` kg: stiffness m*w^2 and damping 2*zeta*m*w give the same
+/// motion whatever the mass; the force cap scales with it too.
+v1::MouseJoint mouseSpring(double mass, const GrabSettings& settings = {});
 
 }  // namespace impulse::viewer

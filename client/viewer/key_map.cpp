@@ -3,6 +3,11 @@
 namespace impulse::viewer {
 
 std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
+  const bool shift = (modifiers & KMOD_SHIFT) != 0;
+  // Shift+1-4: the joint presets 11-14 (F1 is 10).
+  if (shift && key >= SDLK_1 && key <= SDLK_4) {
+    return ControlKey{Control::LoadPreset, 11 + int(key - SDLK_1)};
+  }
   if (key >= SDLK_0 && key <= SDLK_9) return ControlKey{Control::LoadPreset, int(key - SDLK_0)};
   if (key >= SDLK_KP_1 && key <= SDLK_KP_5) {
     return ControlKey{Control::SelectMaterial, int(key - SDLK_KP_1)};
@@ -10,7 +15,6 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
   if (key >= SDLK_F5 && key <= SDLK_F9) {
     return ControlKey{Control::SelectMaterial, int(key - SDLK_F5)};
   }
-  const bool shift = (modifiers & KMOD_SHIFT) != 0;
   switch (key) {
     case SDLK_F1: return ControlKey{Control::LoadPreset, 10};
     case SDLK_p: return ControlKey{Control::PolygonMode};
@@ -39,6 +43,7 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     case SDLK_k: return ControlKey{Control::ToggleContacts};
     case SDLK_b: return ControlKey{Control::ToggleBounds};
     case SDLK_v: return ControlKey{Control::ToggleVelocities};
+    case SDLK_j: return ControlKey{Control::PinSelected};
     case SDLK_ESCAPE: return ControlKey{Control::CancelOrQuit};
     default: return std::nullopt;
   }

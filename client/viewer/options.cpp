@@ -3,7 +3,10 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
+#include <string>
 #include <vector>
+
+#include "impulse/scenes/presets.h"
 
 namespace impulse::viewer {
 
@@ -24,8 +27,9 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
       ->option_text("HOST:PORT");
   app.add_option("--size", text.size, "window size in pixels (default " + text.size + ")")
       ->option_text("WxH");
-  app.add_option("--preset", text.preset, "load preset N (0-10) once connected")
-      ->check(CLI::Range(0, 10))
+  app.add_option("--preset", text.preset,
+                 "load preset N (0-" + std::to_string(kPresetCount - 1) + ") once connected")
+      ->check(CLI::Range(0, kPresetCount - 1))
       ->option_text("N");
   app.add_option("--screenshot", text.screenshot,
                  "save the window as BMP after --frames frames (default 60), then quit")

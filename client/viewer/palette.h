@@ -39,6 +39,8 @@ inline constexpr Colour kValid{60, 220, 90};
 inline constexpr Colour kInvalid{235, 60, 60};
 inline constexpr Colour kPreview{120, 200, 255};
 inline constexpr Colour kSelection{255, 221, 0};
+/// Joints: light steel, readable over every material's fill.
+inline constexpr Colour kJoint{205, 215, 230};
 inline constexpr Colour kGravity{255, 120, 200};
 inline constexpr Colour kWarning{255, 180, 60};
 /// Outline of sleeping bodies: a violet no material uses.

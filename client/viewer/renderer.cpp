@@ -168,6 +168,38 @@ void WorldRenderer::drawMarkers(ImDrawList& list, const ViewTransform& view,
   }
 }
 
+void WorldRenderer::drawJoints(ImDrawList& list, const ViewTransform& view,
+                               std::span<const JointFigure> joints) {
+  const ImU32 colour = packed(palette::kJoint);
+  // Pins a fixed few pixels wide: a hinge is a point at any zoom.
+  constexpr float kPinRadius = 4;
+  for (const JointFigure& joint : joints) {
+    const ImVec2 a = pixel(view, joint.a);
+    const ImVec2 b = pixel(view, joint.b);
+    switch (joint.look) {
+      case JointLook::Rod: list.AddLine(a, b, colour, kEmphasis); break;
+      case JointLook::Rope: list.AddLine(a, b, colour, 1.0f); break;
+      case JointLook::Spring: {
+        // Teeth about every 12 px, however long the spring is drawn.
+        const float pixels = std::hypot(b.x - a.x, b.y - a.y);
+        const int teeth = std::clamp(int(pixels / 12), 3, 40);
+        points_.clear();
+        for (const Vec2& p : zigzag(joint.a, joint.b, teeth, 5 / view.scale())) {
+          points_.push_back(pixel(view, p));
+        }
+        list.AddPolyline(points_.data(), int(points_.size()), colour, ImDrawFlags_None, kOutline);
+        break;
+      }
+      case JointLook::Slider:
+        list.AddLine(a, b, colour, kOutline);
+        list.AddCircle(a, kPinRadius, colour, 0, kOutline);
+        break;
+      case JointLook::Pin: list.AddCircle(a, kPinRadius, colour, 0, kEmphasis); break;
+      case JointLook::Pull: drawGrab(list, view, joint.a, joint.b); break;
+    }
+  }
+}
+
 void WorldRenderer::drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held,
                              const Vec2& cursor) {
   const ImU32 colour = packed(palette::kSelection);

@@ -14,6 +14,7 @@
 #include "controls.h"
 #include "impulse/scenes/presets.h"
 #include "interpolated_world.h"
+#include "joint_figure.h"
 #include "palette.h"
 #include "view_transform.h"
 
@@ -31,6 +32,10 @@ class WorldRenderer {
   void drawBodies(ImDrawList& list, const ViewTransform& view, std::span<const DrawnBody> bodies,
                   std::optional<std::uint32_t> selected, std::optional<std::uint32_t> grabbed);
   void drawMarkers(ImDrawList& list, const ViewTransform& view, std::span<const Marker> markers);
+  /// Joints over the bodies: rods and ropes as lines (a rope thinner), springs
+  /// as zig-zags, pins as small rings, sliders as a line with a ring.
+  void drawJoints(ImDrawList& list, const ViewTransform& view,
+                  std::span<const JointFigure> joints);
   /// The hand: a line from the held point of a grabbed body to the cursor.
   void drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held, const Vec2& cursor);
   /// The polygon or circle being drawn, and the polygon cursor dot.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -76,7 +77,7 @@ TEST(PresetLoading, OutOfRangeIdReturnsNothing_AndLeavesWorldUntouched) {
     EXPECT_EQ(world.bodyCount(), bodies);
     EXPECT_EQ(world.gravity(), Vec2(1, -2));
   }
-  EXPECT_EQ(kPresetCount, 11);
+  EXPECT_EQ(kPresetCount, 15);
 }
 
 TEST(PresetLoading, LoadingAPresetReplacesThePreviousScene_AndResetsGravity) {
@@ -353,6 +354,140 @@ TEST(Preset10Restitution, BounceHeightsAreOrderedByRestitution) {
       EXPECT_LT(balls[i].apex, balls[i - 1].apex);
     }
   }
+}
+
+// ---- Joint presets (11-14): each against its closed form ----
+
+// Times at which `value` crosses zero going up, found by linear
+// interpolation between steps, over `seconds`.
+std::vector<double> upwardCrossings(World& world, double seconds,
+                                    const std::function<double()>& value) {
+  std::vector<double> crossings;
+  double previous = value();
+  int step = 0;
+  simulateUntil(world, seconds, [&] {
+    ++step;
+    const double now = value();
+    if (previous < 0 && now >= 0) {
+      crossings.push_back((step - now / (now - previous)) * double(kDt));
+    }
+    previous = now;
+    return false;
+  });
+  return crossings;
+}
+
+// Mean period between the first and last upward crossings.
+double meanPeriod(const std::vector<double>& crossings) {
+  if (crossings.size() < 2) return 0;
+  return (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+}
+
+TEST(Preset11Spring, PeriodIsTwoPiRootMOverK_AndTheAmplitudeIsKept) {
+  LoadedPreset p = load(11);
+  ASSERT_EQ(p.dynamic.size(), 1u);
+  const BodyId ball = p.dynamic[0];
+  const double startY = stateOf(p.world, ball).position.y();
+  double highest = startY;
+  double lowest = startY;
+  const auto crossings = upwardCrossings(p.world, 20.5, [&] {
+    const double y = stateOf(p.world, ball).position.y();
+    highest = std::max(highest, y);
+    lowest = std::min(lowest, y);
+    return double(stateOf(p.world, ball).linearVelocity.y());
+  });
+  ASSERT_GE(crossings.size(), 10u);
+  // T = 2*pi*sqrt(m/k) = 2 s by construction; stated tolerance 1 %.
+  EXPECT_NEAR(meanPeriod(crossings), 2.0, 0.02);
+  // Undamped: after 10 periods the swing still spans 2 m (loss < 3 %).
+  EXPECT_NEAR(highest - lowest, 2.0, 0.06);
+}
+
+TEST(Preset12Pendulum, SmallSwingPeriodIsTwoPiRootLOverG) {
+  LoadedPreset p = load(12);
+  ASSERT_EQ(p.dynamic.size(), 6u);  // the pendulum, then the cradle's five
+  const BodyId bob = p.dynamic[0];
+  const double pivotX = 5;
+  const auto crossings = upwardCrossings(p.world, 12.5, [&] {
+    return double(stateOf(p.world, bob).position.x()) - pivotX;
+  });
+  ASSERT_GE(crossings.size(), 3u);
+  // 2*pi*sqrt(L/g) with the 10-degree correction (1 + theta^2/16); 1 %.
+  const double theta = 10 * kPi / 180;
+  const double expected = 2 * kPi * std::sqrt(4.0 / kG) * (1 + theta * theta / 16);
+  EXPECT_NEAR(meanPeriod(crossings), expected, 0.01 * expected);
+}
+
+TEST(Preset12NewtonsCradle, MomentumPassesThroughToTheLastBall) {
+  LoadedPreset p = load(12);
+  const std::vector<BodyId> cradle(p.dynamic.begin() + 1, p.dynamic.end());
+  ASSERT_EQ(cradle.size(), 5u);
+  const double restX = stateOf(p.world, cradle[4]).position.x();
+  double lastOut = 0;
+  double middleOut = 0;
+  // The first ball falls 60 degrees (a quarter of a period and more), hits,
+  // and the last swings out within the next half period.
+  simulateUntil(p.world, 3, [&] {
+    lastOut = std::max(lastOut, double(stateOf(p.world, cradle[4]).position.x()) - restX);
+    for (int i = 1; i < 4; ++i) {
+      const double at = stateOf(p.world, cradle[std::size_t(i)]).position.x();
+      middleOut = std::max(middleOut, std::abs(at - (restX - (4 - i) * 1.05)));
+    }
+    return false;
+  });
+  // Released 60 degrees out on 4 m (3.46 m to the side). RUBBER keeps 0.8
+  // of the speed per contact, so the last ball swings well out (2.5 m
+  // measured) while the middle ones barely move (0.4 m).
+  EXPECT_GT(lastOut, 1.0);
+  EXPECT_LT(middleOut, 0.5 * lastOut);
+}
+
+TEST(Preset13ChainBridge, EndPinsCarryTheWholeWeight) {
+  LoadedPreset p = load(13);
+  // Long enough for the dropped balls and the swinging V to come to rest.
+  simulate(p.world, 20);
+  double weight = 0;
+  for (BodyId id : p.dynamic) weight += p.world.bodyDescription(id)->mass.mass * kG;
+  // The two end pins: the first and last joints made.
+  const auto joints = p.world.jointIds();
+  ASSERT_EQ(joints.size(), 15u);
+  double lift = 0;
+  for (const JointId end : {joints.front(), joints.back()}) {
+    const auto description = p.world.jointDescription(end);
+    const auto state = p.world.jointState(end);
+    ASSERT_TRUE(description && state);
+    // Both end pins join a plank (A) to the world (B); the reaction is
+    // stated on B, so the plank is held up by its opposite.
+    const double sign = description->bodyB.isNull() ? -1 : 1;
+    lift += sign * double(state->reactionForce.y());
+  }
+  // Balls and planks rest on the bridge alone: the pins carry all of it (1 %).
+  EXPECT_NEAR(lift, weight, 0.01 * weight);
+}
+
+TEST(Preset14Car, MotorsHoldTheirSpeed_AndTheCarRollsAtOmegaR) {
+  LoadedPreset p = load(14);
+  ASSERT_EQ(p.dynamic.size(), 3u);  // chassis, two wheels
+  const BodyId chassis = p.dynamic[0];
+  simulate(p.world, 1);
+  const double x0 = stateOf(p.world, chassis).position.x();
+  double spinSum = 0;
+  int samples = 0;
+  // One second on the flat stretch before the bumps (they start at x = 8).
+  simulateUntil(p.world, 1, [&] {
+    spinSum += double(stateOf(p.world, p.dynamic[1]).angularVelocity);
+    ++samples;
+    return false;
+  });
+  const double travelled = stateOf(p.world, chassis).position.x() - x0;
+  // The motor's speed (-6 rad/s) within 2 %, bumps included.
+  EXPECT_NEAR(spinSum / samples, -6.0, 0.12);
+  // Rolling without slipping: v = omega * r = 3 m/s, within 5 % over 1 s.
+  EXPECT_NEAR(travelled, 3.0, 0.15);
+  // Then over the bumps without getting stuck or flipping.
+  simulate(p.world, 3);
+  EXPECT_GT(stateOf(p.world, chassis).position.x(), 16);
+  EXPECT_LT(std::abs(stateOf(p.world, chassis).angle), 0.5);
 }
 
 }  // namespace

@@ -97,33 +97,84 @@ TEST_F(ToolControls, DeleteRemovesTheSelectedBodyElseTheOneUnderTheCursor_RightC
   EXPECT_TRUE(controls.notice(now));
 }
 
-TEST_F(ToolControls, DraggingADynamicBodySteersItAtTheGrabRate_ReleaseStops) {
+TEST_F(ToolControls, DraggingMakesAMouseJoint_TheCursorMovesItsTarget_ReleaseRemovesIt) {
   const ControlSettings settings;
   controls.pointerPressed(Vec2(5, 5), BodyHit{3, false, Vec2(5, 5)}, now);
   ASSERT_EQ(controls.grabbedBody(), 3u);
   ControlContext context = sandbox;
-  context.gravity = Vec2(0, -10);
-  context.grabbed = GrabbedMotion{Vec2(5, 5), Vec2(0, 0), 2.0};
+  context.grabbed = GrabbedBody{Vec2(5, 5), 2.0};
   // A click that does not move is a selection, not a drag: nothing sent.
   controls.update(context, now);
   EXPECT_TRUE(sent().empty());
 
   controls.pointerMoved(Vec2(6, 5));
-  for (int frame = 0; frame < 60; ++frame) controls.update(context, now + frame / 60.0);
-  const auto commands = sent();
-  // One second of frames: grabHz impulses.
+  controls.update(context, now);
+  auto commands = sent();
+  ASSERT_EQ(commands.size(), 1u);
+  ASSERT_TRUE(commands[0].message.has_create_joint());
+  const auto& create = commands[0].message.create_joint();
+  EXPECT_EQ(create.body_a(), 3u);
+  EXPECT_EQ(create.body_b(), 0u);
+  EXPECT_EQ(create.anchor_a().x(), 5);
+  ASSERT_TRUE(create.has_mouse());
+  // Mass-scaled: the same brisk follow for any body.
+  EXPECT_NEAR(create.mouse().max_force(), 2.0 * settings.grab.maxAcceleration, 1e-9);
+  EXPECT_GT(create.mouse().stiffness(), 0);
+
+  // Targets follow the cursor once the server named the joint, at most at grabHz.
+  controls.dragJointAnswered(41);
+  for (int frame = 0; frame < 60; ++frame) {
+    controls.pointerMoved(Vec2(6 + frame * 0.01f, 5));
+    controls.update(context, now + frame / 60.0);
+  }
+  commands = sent();
   EXPECT_NEAR(double(commands.size()), settings.grabHz, 1.5);
-  ASSERT_TRUE(commands[0].message.has_apply_impulse());
-  const auto& impulse = commands[0].message.apply_impulse();
-  EXPECT_EQ(impulse.body_id(), 3u);
-  // 1 m to go at gain 10/s: 10 m/s for 2 kg, plus the gravity of one interval.
-  EXPECT_NEAR(impulse.impulse().x(), 2.0 * settings.grab.gain, 1e-4);
-  EXPECT_NEAR(impulse.impulse().y(), 2.0 * 10 / settings.grabHz, 1e-4);
+  ASSERT_TRUE(commands[0].message.has_update_joint());
+  EXPECT_EQ(commands[0].message.update_joint().joint_id(), 41u);
+  EXPECT_TRUE(commands[0].message.update_joint().has_target());
 
   controls.pointerReleased(Vec2(6, 5));
   EXPECT_FALSE(controls.grabbedBody());
-  controls.update(context, now + 2);
+  commands = sent();
+  ASSERT_EQ(commands.size(), 1u);
+  EXPECT_EQ(commands[0].message.remove_joint().joint_id(), 41u);
+}
+
+TEST_F(ToolControls, AJointAnsweredAfterTheReleaseIsRemovedAtOnce) {
+  controls.pointerPressed(Vec2(5, 5), BodyHit{3, false, Vec2(5, 5)}, now);
+  ControlContext context = sandbox;
+  context.grabbed = GrabbedBody{Vec2(5, 5), 1.0};
+  controls.pointerMoved(Vec2(6, 5));
+  controls.update(context, now);
+  controls.pointerReleased(Vec2(6, 5));
+  sent();
+  controls.dragJointAnswered(7);
+  const auto commands = sent();
+  ASSERT_EQ(commands.size(), 1u);
+  EXPECT_EQ(commands[0].message.remove_joint().joint_id(), 7u);
+}
+
+TEST_F(ToolControls, JPinsTheSelectedBodyAtTheCursorOnIt) {
+  press(Control::ToggleInspector, sandbox);
+  controls.pointerPressed(Vec2(5, 6), BodyHit{3, false, Vec2(5, 5)}, now);
+  controls.pointerReleased(Vec2(5, 6));
+  sent();
+  ControlContext context = sandbox;
+  context.selectedPosition = Vec2(5, 5);
+  context.bodyUnderPointer = 3;
+  press(Control::PinSelected, context);
+  auto commands = sent();
+  ASSERT_EQ(commands.size(), 1u);
+  const auto& pin = commands[0].message.create_joint();
+  EXPECT_TRUE(pin.has_revolute());
+  EXPECT_EQ(pin.body_a(), 3u);
+  EXPECT_EQ(pin.body_b(), 0u);
+  EXPECT_EQ(pin.anchor_a().y(), 6);
+  // Nothing selected: a hint, nothing sent.
+  press(Control::CancelOrQuit, context);
+  press(Control::PinSelected, context);
   EXPECT_TRUE(sent().empty());
+  EXPECT_TRUE(controls.notice(now));
 }
 
 TEST_F(ToolControls, StaticBodiesAreNotGrabbed) {

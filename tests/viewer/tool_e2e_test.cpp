@@ -233,8 +233,39 @@ TEST(Hands, LeftDragCarriesABodyToTheCursor_ReleaseThrowsIt) {
   EXPECT_FALSE(tool.viewer.app().controls().grabbedBody());
   ASSERT_TRUE(tool.observe([&] { return tool.body(id)->state.linearVelocity.x() > 2; },
                            milliseconds(1000)));
+  // The drag's mouse joint went with the release.
+  EXPECT_TRUE(tool.observe([&] { return tool.observer.mirror().joints().empty(); }));
   const Real releasedX = tool.body(id)->state.position.x();
   ASSERT_TRUE(tool.observe([&] { return tool.body(id)->state.position.x() > releasedX + 0.5f; }));
+}
+
+TEST(Joints, SpringsRodsAndPinsAreDrawnInTheJointColour) {
+  Tool tool({"--paused"});
+  ASSERT_TRUE(tool.showsEveryBody());
+  const std::uint32_t anchor = tool.spawn(client::spawnCircle({6, 9}, 0.3, {.isStatic = true}));
+  const std::uint32_t bob = tool.spawn(client::spawnCircle({6, 4}, 0.5));
+  const std::uint32_t swing = tool.spawn(client::spawnCircle({14, 4}, 0.5));
+  v1::DistanceJoint spring;
+  spring.set_stiffness(200);
+  ASSERT_TRUE(tool.observer.request(client::distanceJoint({anchor, bob, {6, 9}, {6, 4}, false},
+                                                          spring)).command_result().ok());
+  ASSERT_TRUE(tool.observer.request(client::revoluteJoint({swing, 0, {14, 9}, {14, 9}, false},
+                                                          {})).command_result().ok());
+  ASSERT_TRUE(tool.observe([&] {
+    const auto* c = tool.viewer.app().connection().client();
+    return c != nullptr && c->mirror().joints().size() == 2;
+  }));
+  tool.viewer.runFrames(5);
+  Shot shot = tool.viewer.capture(screenshotPath("joints_spring_and_pin.bmp"));
+  ASSERT_NE(shot, nullptr);
+  // The spring's zig-zag between the anchor and the bob, and the pin's ring.
+  const auto top = tool.viewer.pixel(Vec2(6, 8.5f));
+  const auto bottom = tool.viewer.pixel(Vec2(6, 4.5f));
+  const SDL_Rect springArea{int(top.x) - 12, int(top.y), 24, int(bottom.y - top.y)};
+  EXPECT_GT(countNear(shot.get(), springArea, viewer::palette::kJoint, 40), 40);
+  const auto pin = tool.viewer.pixel(Vec2(14, 9));
+  EXPECT_GT(countNear(shot.get(), {int(pin.x) - 6, int(pin.y) - 6, 12, 12},
+                      viewer::palette::kJoint, 40), 8);
 }
 
 TEST(Hands, RightClickAndDeleteRemoveTheBodyUnderTheCursor) {

@@ -1,11 +1,14 @@
-// Pure parts of the viewer's picture: the window layout, the grab impulse,
-// the contacts and energy shown, shape descriptions, number formatting.
+// Pure parts of the viewer's picture: the window layout, the hand's mouse
+// spring, joint figures, the contacts and energy shown, shape descriptions, number formatting.
 #include <gtest/gtest.h>
+
+#include <numbers>
 
 #include "body_metrics.h"
 #include "contact_finder.h"
 #include "grab.h"
 #include "impulse/client/number_format.h"
+#include "joint_figure.h"
 #include "layout.h"
 
 namespace impulse::viewer {
@@ -35,15 +38,44 @@ TEST(ViewTransform, FitsTheSceneInsideTheViewportOnly) {
   EXPECT_NEAR(std::max(view.width() / layout.scene.w, view.height() / layout.scene.h), 1, 1e-5);
 }
 
-TEST(GrabImpulse, HeadsForTheCursorWithinTheSpeedLimit_AndCancelsGravity) {
-  const GrabSettings settings{10, 25};
-  const GrabbedMotion body{Vec2(0, 0), Vec2(1, 0), 3};
-  // The point 0.5 m right of the centre is to reach (1, 0): 0.5 m to go.
-  const Vec2 near = grabImpulse(body, Vec2(0.5f, 0), Vec2(1, 0), Vec2(0, -9), 0.1, settings);
-  EXPECT_NEAR(near.x(), 3 * (5 - 1), 1e-4);
-  EXPECT_NEAR(near.y(), 3 * 0.9, 1e-4);
-  const Vec2 far = grabImpulse(body, Vec2::Zero(), Vec2(100, 0), Vec2::Zero(), 0.1, settings);
-  EXPECT_NEAR(far.x(), 3 * (25 - 1), 1e-3);
+TEST(MouseSpring, FollowsAsBrisklyWhateverTheMass) {
+  const GrabSettings settings{2, 1, 100};
+  const auto light = mouseSpring(1, settings);
+  const auto heavy = mouseSpring(50, settings);
+  // w = 2*pi*f: k = m*w^2, c = 2*zeta*m*w, cap m*a.
+  const double w = 2 * std::numbers::pi * 2;
+  EXPECT_NEAR(light.stiffness(), w * w, 1e-9);
+  EXPECT_NEAR(light.damping(), 2 * w, 1e-9);
+  EXPECT_NEAR(heavy.stiffness() / light.stiffness(), 50, 1e-9);
+  EXPECT_NEAR(heavy.max_force(), 5000, 1e-9);
+}
+
+TEST(JointFigure, AnchorsFollowTheDrawnBodies_SpringsZigZag) {
+  JointDescription rod;
+  rod.bodyA = BodyId{1};
+  rod.bodyB = BodyId{2};
+  rod.localAnchorA = Vec2(1, 0);
+  rod.localAnchorB = Vec2(0, 0);
+  BodySample a{1, Vec2(0, 0), Real(std::numbers::pi / 2)};
+  BodySample b{2, Vec2(3, 4)};
+  const auto figure = jointFigure(rod, &a, &b);
+  ASSERT_TRUE(figure);
+  EXPECT_EQ(figure->look, JointLook::Rod);
+  // A turned a quarter: its local (1, 0) is world (0, 1).
+  EXPECT_NEAR(figure->a.x(), 0, 1e-6);
+  EXPECT_NEAR(figure->a.y(), 1, 1e-6);
+  EXPECT_EQ(figure->b, Vec2(3, 4));
+  EXPECT_FALSE(jointFigure(rod, &a, nullptr));
+
+  rod.settings = DistanceJointSettings{0, 100, 1};
+  EXPECT_EQ(jointLook(rod.settings), JointLook::Spring);
+  EXPECT_EQ(jointLook(RevoluteJointSettings{}), JointLook::Pin);
+  EXPECT_EQ(jointLook(RopeJointSettings{}), JointLook::Rope);
+  const auto points = zigzag(Vec2(0, 0), Vec2(10, 0), 4, 0.5f);
+  ASSERT_EQ(points.size(), 2u + 8u + 2u);
+  EXPECT_EQ(points.front(), Vec2(0, 0));
+  EXPECT_EQ(points.back(), Vec2(10, 0));
+  for (std::size_t i = 2; i < points.size() - 2; ++i) EXPECT_NEAR(std::abs(points[i].y()), 0.5, 1e-6);
 }
 
 DrawnBody drawn(const BodyLook& look, std::uint32_t id, Vec2 position, Vec2 velocity = Vec2::Zero(),

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "impulse/scenes/presets.h"
 
@@ -245,6 +246,168 @@ PresetInfo restitutionPreset(World& world) {
           false};
 }
 
+
+// ------------------------------------------------------- presets with joints
+
+/// Period of the spring preset's oscillation, s.
+constexpr Real kSpringPeriod = 2;
+
+/// A rigid distance joint (rod) between the anchors, or a spring; body A
+/// must be a body (B may be the world, a null id).
+JointId join(World& world, BodyId a, BodyId b, Vec2 anchorA, Vec2 anchorB,
+             JointSettings settings = DistanceJointSettings{}) {
+  return world.createJoint({a, b, anchorA, anchorB, false, settings}).id;
+}
+
+PresetInfo springPreset(World& world) {
+  addBoundary(world);
+  const Vec2 hook(Real(12.5), 16);
+  addStaticBox(world, hook - Vec2(1, 0), hook + Vec2(1, Real(0.5)));
+  // k from the ball's own mass, so the period is exactly kSpringPeriod.
+  const BodyId ball = world.createCircle(Vec2(12.5f, 9), Real(0.5), {}).id;
+  const Real mass = world.bodyDescription(ball)->mass.mass;
+  const Real omega = 2 * std::numbers::pi_v<Real> / kSpringPeriod;
+  // Rest length 5; equilibrium m*g/k lower; the ball starts 1 m below that.
+  const Real restLength = 5;
+  const Real k = mass * omega * omega;
+  join(world, ball, BodyId{}, Vec2(12.5f, 9), hook, DistanceJointSettings{restLength, k, 0});
+  return {11,
+          "Spring",
+          {"A ball on an undamped spring: simple harmonic motion.",
+           "Its period is 2*pi*sqrt(m/k) = 2 s whatever the amplitude, and gravity",
+           "only moves the middle of the swing down by m*g/k."},
+          {},
+          false};
+}
+
+/// One ball of the cradle or the pendulum hanging by a rod from `pivot`.
+BodyId addHungBall(World& world, Vec2 pivot, Vec2 at, Real radius, Material material) {
+  const BodyId ball = world.createCircle(at, radius, {.material = material}).id;
+  join(world, ball, BodyId{}, at, pivot);
+  return ball;
+}
+
+PresetInfo pendulumPreset(World& world) {
+  addBoundary(world);
+  // A pendulum of 4 m released 10 degrees out: period about 2*pi*sqrt(L/g).
+  const Vec2 pivot(5, 16);
+  const Real length = 4;
+  const Real released = 10 * std::numbers::pi_v<Real> / 180;
+  addHungBall(world, pivot, pivot + length * Vec2(std::sin(released), -std::cos(released)),
+              Real(0.4), Material::Solid);
+  // Newton's cradle: five touching RUBBER balls; the first pulled out 60 degrees.
+  constexpr int kBalls = 5;
+  constexpr Real kRadius = Real(0.5);
+  // A small gap: the collisions pass along the row one pair at a time
+  // instead of being solved as one block that swings together.
+  constexpr Real kCradleGap = Real(0.05);
+  for (int i = 0; i < kBalls; ++i) {
+    const Vec2 top(13 + (2 * kRadius + kCradleGap) * Real(i), 16);
+    const Real swing = i == 0 ? -std::numbers::pi_v<Real> / 3 : 0;
+    addHungBall(world, top, top + length * Vec2(std::sin(swing), -std::cos(swing)), kRadius,
+                Material::Rubber);
+  }
+  return {12,
+          "Pendulum and Newton's cradle",
+          {"Left: a 4 m pendulum swinging 10 degrees: period 2*pi*sqrt(L/g) = 4.01 s.",
+           "Right: Newton's cradle. The first ball strikes the row and its momentum",
+           "passes through the three at rest to the last, which swings out."},
+          {},
+          false};
+}
+
+/// A plank of `length` from `from` at `angle`, 0.2 m thick below the line.
+BodyId addPlank(World& world, Vec2 from, Real length, Real angle) {
+  const Vec2 along = length * Vec2(std::cos(angle), std::sin(angle));
+  const Vec2 down = Real(0.2) * rightPerp(along) / length;
+  std::array<Vec2, 4> corners = {from + down, from + along + down, from + along, from};
+  return world.createPolygon(corners, {.material = Material::Wood}).id;
+}
+
+PresetInfo chainBridgePreset(World& world) {
+  addBoundary(world);
+  // Fourteen 1 m planks between posts 12 m apart: slack, so the chain sags
+  // into its curve instead of hanging taut. Built as a V, it settles.
+  constexpr int kPlanks = 14;
+  constexpr Real kPlank = 1;
+  const Real left = Real(6.5);
+  const Real span = 12;
+  const Real height = 8;
+  // The pins hang in the air 0.4 m off the posts' tops, so no plank rests
+  // on a post: the pins alone hold the bridge.
+  const Real clearance = Real(0.4);
+  addStaticBox(world, Vec2(left - clearance - 1, kFloor), Vec2(left - clearance, height));
+  addStaticBox(world, Vec2(left + span + clearance, kFloor),
+               Vec2(left + span + clearance + 1, height));
+  const Real slope = std::acos(span / 2 / (kPlanks / 2 * kPlank));
+  Vec2 joint(left, height);
+  BodyId previous;  // the world, for the first pin
+  for (int i = 0; i < kPlanks; ++i) {
+    const Real angle = i < kPlanks / 2 ? -slope : slope;
+    const BodyId plank = addPlank(world, joint, kPlank, angle);
+    world.createJoint({plank, previous, joint, joint, false, RevoluteJointSettings{}});
+    joint += kPlank * Vec2(std::cos(angle), std::sin(angle));
+    previous = plank;
+  }
+  world.createJoint({previous, BodyId{}, joint, joint, false, RevoluteJointSettings{}});
+  // Two balls dropped onto it.
+  world.createCircle(Vec2(10, 9), Real(0.4), {.material = Material::Metal});
+  world.createCircle(Vec2(15, 9), Real(0.6), {.material = Material::Rubber});
+  return {13,
+          "Chain bridge",
+          {"Fourteen wooden planks pinned end to end between posts 12 m apart sag",
+           "into a chain curve. The posts carry the whole weight: the vertical forces",
+           "of the two end pins add up to the weight of the planks and the balls."},
+          {},
+          false};
+}
+
+/// Uneven ground: bumps of alternating heights on the floor.
+void addBumps(World& world) {
+  for (int i = 0; i < 5; ++i) {
+    const Real x = 10 + Real(2.5) * Real(i);
+    const Real h = i % 2 == 0 ? Real(0.25) : Real(0.4);
+    std::array<Vec2, 3> bump = {Vec2(x, kFloor), Vec2(x + 2, kFloor), Vec2(x + 1, kFloor + h)};
+    world.createPolygon(bump, {.isStatic = true});
+  }
+}
+
+/// Motor speed of the car's wheels, rad/s (negative: clockwise, driving right).
+constexpr Real kCarWheelSpeed = -6;
+constexpr Real kCarWheelRadius = Real(0.5);
+
+PresetInfo carPreset(World& world) {
+  addBoundary(world);
+  addBumps(world);
+  const Real axle = kFloor + kCarWheelRadius;
+  const Real chassisBottom = axle + Real(0.3);
+  std::array<Vec2, 4> body = {Vec2(2, chassisBottom), Vec2(5, chassisBottom),
+                              Vec2(5, chassisBottom + Real(0.5)), Vec2(2, chassisBottom + Real(0.5))};
+  const BodyId chassis = world.createPolygon(body, {.material = Material::Wood}).id;
+  // Springs and motors from the masses: each axle carries half the chassis
+  // on a 1.5 Hz suspension damped at 0.7 of critical; the motors could
+  // climb a slope of 0.6.
+  const Real share = world.bodyDescription(chassis)->mass.mass / 2;
+  const Real omega = 2 * std::numbers::pi_v<Real> * Real(1.5);
+  WheelJointSettings axleSettings{Vec2(0, 1), share * omega * omega,
+                                  2 * Real(0.7) * share * omega, true, kCarWheelSpeed, 0};
+  for (const Real x : {Real(2.5), Real(4.5)}) {
+    const Vec2 centre(x, axle);
+    const BodyId wheel =
+        world.createCircle(centre, kCarWheelRadius, {.material = Material::Rubber}).id;
+    const Real carried = share + world.bodyDescription(wheel)->mass.mass;
+    axleSettings.maxMotorTorque = Real(0.6) * carried * Real(9.81) * kCarWheelRadius;
+    world.createJoint({chassis, wheel, centre, centre, false, axleSettings});
+  }
+  return {14,
+          "Car",
+          {"A car with two motorised wheels on sprung axles drives over bumps.",
+           "The motors hold the wheels at 6 rad/s; rolling without slipping the car",
+           "moves at wheel speed times radius, 3 m/s, and the springs soak up the bumps."},
+          {},
+          false};
+}
+
 }  // namespace
 
 std::optional<PresetInfo> loadPreset(World& world, int id, Material selected) {
@@ -262,7 +425,11 @@ std::optional<PresetInfo> loadPreset(World& world, int id, Material selected) {
     case 7: return speedPreset(world);
     case 8: return weightlessCrowd(world);
     case 9: return frictionPreset(world, selected);
-    default: return restitutionPreset(world);
+    case 10: return restitutionPreset(world);
+    case 11: return springPreset(world);
+    case 12: return pendulumPreset(world);
+    case 13: return chainBridgePreset(world);
+    default: return carPreset(world);
   }
 }
 

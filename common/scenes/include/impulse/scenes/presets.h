@@ -1,6 +1,6 @@
 #pragma once
-/// The scenes of SPEC.md (presets 0-10), built into a world. Server, tests and
-/// benchmark share them.
+/// The scenes of SPEC.md (presets 0-10) and the joint scenes (11-14), built
+/// into a world. Server, tests and benchmark share them.
 
 #include <string>
 #include <vector>
@@ -26,11 +26,13 @@ struct PresetInfo {
   bool drawingAllowed = false;
 };
 
-inline constexpr int kPresetCount = 11;
+/// 0-10 are SPEC.md's; 11-14 show joints (spring, pendulum and cradle, chain
+/// bridge, car).
+inline constexpr int kPresetCount = 15;
 /// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
 inline const Vec2 kSceneSize = Vec2(25, Real(18.75));
 
-/// Clears the world, resets gravity and builds preset `id` (0..10).
+/// Clears the world, resets gravity and builds preset `id` (0..14).
 /// `selected` is the viewer's current material (preset 9 uses it).
 /// Returns nothing for an id out of range, leaving the world untouched.
 std::optional<PresetInfo> loadPreset(World& world, int id, Material selected = Material::Solid);

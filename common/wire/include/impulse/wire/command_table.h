@@ -28,7 +28,7 @@
 // clang-format off
 #define IMPULSE_COMMAND_TABLE(ROW)                                                        \
   ROW(LoadPreset, load_preset, Admin, loadPreset, "preset", "preset N [MATERIAL]",        \
-      "load preset 0-10 (MATERIAL: the one preset 9 compares with SOLID)",                \
+      "load preset 0-14 (MATERIAL: the one preset 9 compares with SOLID)",                \
       parsePreset, client::loadPreset)                                                    \
   ROW(SetPaused, set_paused, Admin, setPaused, "pause", "pause",                          \
       "stop the tick clock", parsePause, client::setPaused)                               \
