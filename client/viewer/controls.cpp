@@ -365,7 +365,12 @@ void Controls::pointerPressed(const Vec2& at, std::optional<BodyHit> hit, double
         selected_ = hit ? std::optional(hit->id) : std::nullopt;
         if (!selected_) notify("No body there: click inside a body to inspect it", now);
       }
-      if (hit && !hit->isStatic) grab_ = Grab{hit->id, at - hit->position, at};
+      if (hit && !hit->isStatic) {
+        grab_ = Grab{};
+        grab_->body = hit->id;
+        grab_->offset = at - hit->position;
+        grab_->pressedAt = at;
+      }
       return;
   }
 }

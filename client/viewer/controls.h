@@ -190,9 +190,9 @@ class Controls {
     double nextRepeat;
   };
   struct Grab {
-    std::uint32_t body;
-    Vec2 offset;     ///< grabbed point minus the body's centre at the press
-    Vec2 pressedAt;  ///< where the press was, world
+    std::uint32_t body = 0;
+    Vec2 offset = Vec2::Zero();     ///< grabbed point minus the body's centre at the press
+    Vec2 pressedAt = Vec2::Zero();  ///< where the press was, world
     bool dragging = false;
     bool jointRequested = false;
     std::optional<std::uint32_t> joint;  ///< the mouse joint, once the server named it

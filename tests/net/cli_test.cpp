@@ -63,6 +63,43 @@ TEST(Cli, RunsEveryCommandAndPrintsOneJsonLineEach) {
   for (const auto& line : run.lines) EXPECT_FALSE(std::regex_search(line, longFraction)) << line;
 }
 
+TEST(Cli, JointWordsMakeEveryKind_AndQueryJointDescribesOne) {
+  ServerProcess server({"--paused"});
+  const std::string script =
+      "circle 12.5 16 0.3 static\n"
+      "circle 12.5 10 0.5\n"
+      "circle 9 10 0.4\n"
+      "distance 4 5 12.5 16 12.5 10 5 2000 0\n"
+      "rope 5 6 12.5 10 9 10\n"
+      "revolute 6 0 6 14 limit -1 1 motor 2 50\n"
+      "prismatic 5 6 11 10 1 0 limit -1 1 spring 100 5 collide\n"
+      "weld 5 6 11 10 1000 50\n"
+      "wheel 5 6 9 10 0 1 spring 500 20 motor -3 40\n"
+      "mouse 6 9 10 500 100 10\n"
+      "target 7 10 11\n"
+      "motor 3 1.5 60\n"
+      "step 10\n"
+      "query-joint 1\n"
+      "remove-joint 2\n"
+      "remove 5\n"
+      "query-joint 1\n"
+      "revolute 6 0 6 14 limit 1\n";
+  const auto run = runCli(server.port(), script);
+  ASSERT_EQ(run.lines.size(), 19u);
+  for (std::size_t i = 1; i <= 16; ++i) {
+    EXPECT_TRUE(contains(run.lines[i], R"("ok":true)")) << run.lines[i];
+  }
+  for (std::size_t i = 4; i <= 10; ++i) {
+    EXPECT_TRUE(contains(run.lines[i], R"("joint_id":)" + std::to_string(i - 3))) << run.lines[i];
+  }
+  EXPECT_TRUE(contains(run.lines[14], R"("joint":{"id":1,"body_a":4,"body_b":5,"kind":"distance")"))
+      << run.lines[14];
+  // The body took its joints with it; a bad line names its problem.
+  EXPECT_TRUE(contains(run.lines[17], "query-joint: unknown joint id 1")) << run.lines[17];
+  EXPECT_TRUE(contains(run.lines[18], R"("ok":false)")) << run.lines[18];
+  EXPECT_EQ(run.exitCode, 1);
+}
+
 TEST(Cli, ErrorsNameTheLineAndTheProblem) {
   ServerProcess server({"--paused"});
   const std::string script =

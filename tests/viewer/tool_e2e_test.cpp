@@ -268,6 +268,26 @@ TEST(Joints, SpringsRodsAndPinsAreDrawnInTheJointColour) {
                       viewer::palette::kJoint, 40), 8);
 }
 
+// The joint presets as the viewer shows them: each draws its joints.
+TEST(Joints, EachJointPresetIsDrawnWithItsJoints) {
+  for (const int preset : {11, 12, 13, 14}) {
+    SCOPED_TRACE(preset);
+    Tool tool({"--paused", "--preset", std::to_string(preset)});
+    ASSERT_TRUE(tool.showsEveryBody());
+    ASSERT_TRUE(tool.observe([&] {
+      const auto* c = tool.viewer.app().connection().client();
+      return c != nullptr && !c->mirror().joints().empty();
+    }));
+    tool.viewer.runFrames(5);
+    Shot shot = tool.viewer.capture(screenshotPath("preset" + std::to_string(preset) + ".bmp"));
+    ASSERT_NE(shot, nullptr);
+    const auto scene = tool.viewer.app().layout().scene;
+    EXPECT_GT(countNear(shot.get(), {int(scene.x), int(scene.y), int(scene.w), int(scene.h)},
+                        viewer::palette::kJoint, 30),
+              40);
+  }
+}
+
 TEST(Hands, RightClickAndDeleteRemoveTheBodyUnderTheCursor) {
   Tool tool({});
   ASSERT_TRUE(tool.showsEveryBody());
