@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "impulse/joint.h"
@@ -58,6 +59,13 @@ Samples record(World& world, double seconds, Measure&& measure) {
     samples.add(i * double(kDt), measure());
   }
   return samples;
+}
+
+/// The largest value `measure` gives after any tick over `seconds`.
+template <class Measure>
+double highestOver(World& world, double seconds, Measure&& measure) {
+  Samples s = record(world, seconds, measure);
+  return *std::max_element(s.value.begin(), s.value.end());
 }
 
 }  // namespace impulse::test
