@@ -194,3 +194,28 @@ TEST(JointDeterminism, EveryKindRunTwice_GivesIdenticalHashes) { EXPECT_EQ(runEv
 
 }  // namespace
 }  // namespace impulse::test
+
+namespace impulse::test {
+namespace {
+
+// A body hanging at rest from the world: the joint carries its weight, so
+// the reaction is m*g (on B, the world: downward), within 1 %.
+TEST(JointState, HangingBody_ReactionIsItsWeight_LengthAndAngleReported) {
+  World world;
+  BodyId bob = addCircle(world, {.center = Vec2(0, -2), .radius = Real(0.2)});
+  JointId rod = addJoint(world, bob, BodyId{}, Vec2(0, -2), Vec2::Zero(), DistanceJointSettings{});
+  JointId pin = addJoint(world, bob, BodyId{}, Vec2(0, -2), Vec2(0, -2), RevoluteJointSettings{}, true);
+  simulate(world, 1);
+  double weight = massOf(world, bob) * kG;
+  JointState rodState = *world.jointState(rod);
+  JointState pinState = *world.jointState(pin);
+  Vec2 total = rodState.reactionForce + pinState.reactionForce;
+  std::printf("measured: hanging reaction / weight = %.6f\n", -total.y() / weight);
+  EXPECT_NEAR(-total.y() / weight, 1, 0.01);
+  EXPECT_NEAR(total.x(), 0, weight * 0.01);
+  EXPECT_NEAR(rodState.length, 2, 0.001);
+  EXPECT_NEAR(pinState.angle, 0, 0.001);
+}
+
+}  // namespace
+}  // namespace impulse::test
