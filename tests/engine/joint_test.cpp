@@ -219,3 +219,41 @@ TEST(JointState, HangingBody_ReactionIsItsWeight_LengthAndAngleReported) {
 
 }  // namespace
 }  // namespace impulse::test
+
+namespace impulse::test {
+namespace {
+
+// The largest numbers createJoint accepts, on small light bodies far apart:
+// every state stays finite without the step guard's repairs.
+TEST(JointLimits, LargestAcceptedNumbers_KeepEveryStateFinite) {
+  World world;
+  const Real big = 1e9f;
+  const Real force = 1e10f;
+  const JointSettings kinds[] = {
+      DistanceJointSettings{.length = 10, .stiffness = big, .damping = big},
+      RopeJointSettings{.maxLength = Real(0.1)},
+      RevoluteJointSettings{.enableLimit = true, .lowerAngle = -3, .upperAngle = 3, .enableMotor = true,
+                            .motorSpeed = 1000, .maxMotorTorque = force, .stiffness = big, .damping = big},
+      PrismaticJointSettings{.axis = Vec2(1, 1), .enableLimit = true, .lower = -10000, .upper = 10000,
+                             .enableMotor = true, .motorSpeed = -1000, .maxMotorForce = force, .stiffness = big,
+                             .damping = big},
+      WeldJointSettings{.linearStiffness = big, .angularStiffness = big},
+      WheelJointSettings{.axis = Vec2(0, -3), .stiffness = big, .damping = big, .enableMotor = true,
+                         .motorSpeed = 1000, .maxMotorTorque = force},
+      MouseJointSettings{.maxForce = force, .stiffness = big, .damping = big}};
+  Real x = -20;
+  for (const JointSettings& settings : kinds) {
+    BodyId a = addCircle(world, {.center = Vec2(x, 5), .radius = Real(0.05)});
+    BodyId b = addCircle(world, {.center = Vec2(x + 3, 7), .radius = Real(0.05)});
+    addJoint(world, a, b, Vec2(x, 5), Vec2(x + 3, 7), settings);
+    x += 9;
+  }
+  for (int i = 0; i < 240; ++i) {
+    world.step(kDt);
+    ASSERT_TRUE(allStatesFinite(world)) << "step " << i;
+  }
+  EXPECT_EQ(world.guardReport().repairedBodies, 0u);
+}
+
+}  // namespace
+}  // namespace impulse::test
