@@ -28,7 +28,8 @@ Side sideOf(const WorldData& world, std::int32_t slot) {
   if (slot == kNullIndex) return {};
   const Body& body = world.bodies[slot];
   Side side{0, 0, 0, body.transform.p, body.transform.q};
-  if (body.awake) side = {body.solverIndex, body.invMass, body.invInertia, body.transform.p, body.transform.q};
+  if (body.awake)
+    side = {body.solverIndex, body.invMass, body.invInertia, body.transform.p, body.transform.q};
   return side;
 }
 
@@ -63,7 +64,8 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
 
 }  // namespace
 
-bool JointConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
+bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
+                               GraphColoring& coloring) {
   rows_.clear();
   if (world.liveJoints == 0) return false;
   gathered_.clear();

@@ -25,12 +25,15 @@ struct SpringScene {
   // A bob on a horizontal spring of rest length 1 to the world origin,
   // pulled out by `amplitude`, weightless; the spring's period is `period`.
   SpringScene(double period, double dampingRatio, double amplitude) {
-    bob = addCircle(world, {.center = Vec2(Real(1 + amplitude), 0), .radius = Real(0.25), .ignoreGravity = true});
+    bob = addCircle(
+        world,
+        {.center = Vec2(Real(1 + amplitude), 0), .radius = Real(0.25), .ignoreGravity = true});
     mass = massOf(world, bob);
     stiffness = mass * std::pow(2 * kPi / period, 2);
     double damping = 2 * dampingRatio * std::sqrt(stiffness * mass);
-    addJoint(world, bob, BodyId{}, stateOf(world, bob).position, Vec2::Zero(),
-             DistanceJointSettings{.length = 1, .stiffness = Real(stiffness), .damping = Real(damping)});
+    addJoint(
+        world, bob, BodyId{}, stateOf(world, bob).position, Vec2::Zero(),
+        DistanceJointSettings{.length = 1, .stiffness = Real(stiffness), .damping = Real(damping)});
   }
   Samples run(double seconds) {
     return record(world, seconds, [&] { return double(stateOf(world, bob).position.x()) - 1; });
@@ -95,7 +98,9 @@ double ellipticK(double k) {
 }
 
 /// Period of a pendulum of equivalent length l released from theta0.
-double pendulumPeriod(double l, double theta0) { return 4 * std::sqrt(l / kG) * ellipticK(std::sin(theta0 / 2)); }
+double pendulumPeriod(double l, double theta0) {
+  return 4 * std::sqrt(l / kG) * ellipticK(std::sin(theta0 / 2));
+}
 
 /// A bob of radius 0.1 hanging 2 m below the origin, released at theta0;
 /// `pinned`: a revolute joint at the origin (the bob turns with the rod, a
@@ -114,7 +119,8 @@ double measuredPendulumRatio(double theta0, bool pinned) {
     addJoint(world, bob, BodyId{}, start, Vec2::Zero(), DistanceJointSettings{});
   }
   double expected = pendulumPeriod(equivalent, theta0);
-  Samples s = record(world, 5.2 * expected, [&] { return double(stateOf(world, bob).position.x()); });
+  Samples s =
+      record(world, 5.2 * expected, [&] { return double(stateOf(world, bob).position.x()); });
   return s.meanPeriod(0) / expected;
 }
 
@@ -122,8 +128,8 @@ TEST(JointAccuracy, PendulumPeriod_SmallAnd90Degrees_Within1Percent) {
   for (bool pinned : {false, true}) {
     for (double theta0 : {0.05, kPi / 2}) {
       double ratio = measuredPendulumRatio(theta0, pinned);
-      std::printf("measured: pendulum %s theta0 %.2f period relative error = %.5g\n", pinned ? "revolute" : "rod",
-                  theta0, ratio - 1);
+      std::printf("measured: pendulum %s theta0 %.2f period relative error = %.5g\n",
+                  pinned ? "revolute" : "rod", theta0, ratio - 1);
       EXPECT_NEAR(ratio, 1, 0.01) << (pinned ? "revolute" : "rod") << " theta0 " << theta0;
     }
   }
@@ -161,9 +167,12 @@ CradleOutcome cradle(int subSteps, Real gap) {
     lastPeak = std::max(lastPeak, double(stateOf(world, balls[4]).linearVelocity.norm()));
     return 0.0;
   });
-  for (int i = 0; i < 4; ++i) othersAfter = std::max(othersAfter, double(stateOf(world, balls[i]).linearVelocity.norm()));
-  std::printf("measured: cradle %d sub-steps gap %.3f: last ball %.4g, fastest other %.4g of the impact speed\n",
-              subSteps, gap, lastPeak / impact, othersAfter / impact);
+  for (int i = 0; i < 4; ++i)
+    othersAfter = std::max(othersAfter, double(stateOf(world, balls[i]).linearVelocity.norm()));
+  std::printf(
+      "measured: cradle %d sub-steps gap %.3f: last ball %.4g, fastest other %.4g of the impact "
+      "speed\n",
+      subSteps, gap, lastPeak / impact, othersAfter / impact);
   return {lastPeak / impact, othersAfter / impact};
 }
 
@@ -193,14 +202,17 @@ double heavyChainStretch(int subSteps) {
   double linkMass = 0;
   for (int i = 0; i < links; ++i) {
     Vec2 joint = top - Vec2(0, linkLength * Real(i));
-    BodyId link = addBox(world, {.center = joint - Vec2(0, linkLength / 2), .halfWidth = Real(0.05), .halfHeight = linkLength / 2});
+    BodyId link = addBox(world, {.center = joint - Vec2(0, linkLength / 2),
+                                 .halfWidth = Real(0.05),
+                                 .halfHeight = linkLength / 2});
     linkMass = massOf(world, link);
     addJoint(world, link, previous, joint, joint, RevoluteJointSettings{});
     previous = link;
   }
   Vec2 end = top - Vec2(0, linkLength * links);
   // A weight of 300 links' mass: a dense box under the last link.
-  BodyDef def = makeBodyDef(Shape::makePolygon(makeBox(Real(0.5), Real(0.5))), end - Vec2(0, Real(0.5)), {});
+  BodyDef def =
+      makeBodyDef(Shape::makePolygon(makeBox(Real(0.5), Real(0.5))), end - Vec2(0, Real(0.5)), {});
   def.materialOverride.density = Real(300 * linkMass);
   BodyId weight = world.createBody(def).id;
   addJoint(world, weight, previous, end, end, RevoluteJointSettings{});
@@ -221,7 +233,8 @@ double heavyChainStretch(int subSteps) {
 // sub-steps on (held at 32); the default 4 stretch by about 16 % (printed).
 TEST(JointAccuracy, HeavyChain_300To1WeightOn20Links_StretchesBelow1Percent) {
   for (int subSteps : {4, 8, 16}) {
-    std::printf("measured: heavy chain worst stretch, %d sub-steps = %.5g\n", subSteps, heavyChainStretch(subSteps));
+    std::printf("measured: heavy chain worst stretch, %d sub-steps = %.5g\n", subSteps,
+                heavyChainStretch(subSteps));
   }
   double stretch = heavyChainStretch(32);
   std::printf("measured: heavy chain worst stretch, 32 sub-steps = %.5g\n", stretch);
@@ -231,7 +244,8 @@ TEST(JointAccuracy, HeavyChain_300To1WeightOn20Links_StretchesBelow1Percent) {
 TEST(JointAccuracy, Rope_NeverExceedsItsLengthByMoreThan1cm) {
   World world;
   BodyId bob = addCircle(world, {.center = Vec2(Real(0.5), 0), .radius = Real(0.2)});
-  JointId rope = addJoint(world, bob, BodyId{}, Vec2(Real(0.5), 0), Vec2::Zero(), RopeJointSettings{.maxLength = 3});
+  JointId rope = addJoint(world, bob, BodyId{}, Vec2(Real(0.5), 0), Vec2::Zero(),
+                          RopeJointSettings{.maxLength = 3});
   bool wasSlack = false;
   double worst = highestOver(world, 6, [&] {
     double length = world.jointState(rope)->length;
@@ -253,20 +267,29 @@ TEST(JointAccuracy, RevoluteMotor_ReachesAndHoldsItsSpeedUnderALoad_Within1Perce
   BodyId bar = addBox(world, {.center = Vec2(1, 0), .halfWidth = 1, .halfHeight = Real(0.1)});
   double maxTorque = 10 * massOf(world, bar) * kG * 1;
   addJoint(world, bar, BodyId{}, Vec2::Zero(), Vec2::Zero(),
-           RevoluteJointSettings{.enableMotor = true, .motorSpeed = 3, .maxMotorTorque = Real(maxTorque)});
+           RevoluteJointSettings{
+               .enableMotor = true, .motorSpeed = 3, .maxMotorTorque = Real(maxTorque)});
   simulate(world, 0.5);
-  double worst = highestOver(world, 4, [&] { return std::abs(-stateOf(world, bar).angularVelocity / 3.0 - 1); });
+  double worst = highestOver(
+      world, 4, [&] { return std::abs(-stateOf(world, bar).angularVelocity / 3.0 - 1); });
   report("revolute motor worst speed error", worst);
   EXPECT_LT(worst, 0.01);
 }
 
 TEST(JointAccuracy, RevoluteLimit_HoldsAHeavyBarWithin0p01Rad) {
   World world;
-  BodyId bar = addBox(world, {.center = Vec2(1, 0), .halfWidth = 1, .halfHeight = Real(0.1), .material = Material::Metal});
-  BodyId weight = addBox(world, {.center = Vec2(Real(2.2), 0), .halfWidth = Real(0.2), .halfHeight = Real(0.2), .material = Material::Metal});
+  BodyId bar = addBox(
+      world,
+      {.center = Vec2(1, 0), .halfWidth = 1, .halfHeight = Real(0.1), .material = Material::Metal});
+  BodyId weight = addBox(world, {.center = Vec2(Real(2.2), 0),
+                                 .halfWidth = Real(0.2),
+                                 .halfHeight = Real(0.2),
+                                 .material = Material::Metal});
   addJoint(world, weight, bar, Vec2(Real(2.2), 0), Vec2(Real(2.2), 0), WeldJointSettings{});
-  JointId hinge = addJoint(world, bar, BodyId{}, Vec2::Zero(), Vec2::Zero(),
-                           RevoluteJointSettings{.enableLimit = true, .lowerAngle = Real(-0.25), .upperAngle = Real(0.25)});
+  JointId hinge =
+      addJoint(world, bar, BodyId{}, Vec2::Zero(), Vec2::Zero(),
+               RevoluteJointSettings{
+                   .enableLimit = true, .lowerAngle = Real(-0.25), .upperAngle = Real(0.25)});
   // The bar falls clockwise: relative to it the world (B) turns the other
   // way, so the upper limit carries the load.
   double highest = highestOver(world, 3, [&] { return double(world.jointState(hinge)->angle); });
@@ -278,18 +301,21 @@ TEST(JointAccuracy, RevoluteLimit_HoldsAHeavyBarWithin0p01Rad) {
 TEST(JointAccuracy, PrismaticLimit_HoldsAHangingLoadWithin1cm_UpdateSetsTheMotor) {
   World world;
   BodyId slider = addBox(world, {.center = Vec2(0, 5), .material = Material::Metal});
-  JointId rail = addJoint(world, slider, BodyId{}, Vec2(0, 5), Vec2(0, 5),
-                          PrismaticJointSettings{.axis = Vec2(0, 1), .enableLimit = true, .lower = -1, .upper = 1});
+  JointId rail = addJoint(
+      world, slider, BodyId{}, Vec2(0, 5), Vec2(0, 5),
+      PrismaticJointSettings{.axis = Vec2(0, 1), .enableLimit = true, .lower = -1, .upper = 1});
   // Translation is B's (the world's) anchor relative to A's: the falling
   // slider drives it up to the upper limit.
-  double highest = highestOver(world, 2, [&] { return double(world.jointState(rail)->translation); });
+  double highest =
+      highestOver(world, 2, [&] { return double(world.jointState(rail)->translation); });
   report("prismatic limit worst overshoot (m)", highest - 1);
   EXPECT_GT(highest, 0.99);
   EXPECT_LT(highest, 1 + 0.01);
   EXPECT_NEAR(stateOf(world, slider).position.x(), 0, 0.001);
   // An update sets the motor's numbers; it does not switch the motor on.
   double force = 3 * massOf(world, slider) * kG;
-  ASSERT_TRUE(world.updateJoint(rail, {.motorSpeed = Real(0.5), .maxMotorForce = Real(force)}).ok());
+  ASSERT_TRUE(
+      world.updateJoint(rail, {.motorSpeed = Real(0.5), .maxMotorForce = Real(force)}).ok());
   auto settings = std::get<PrismaticJointSettings>(world.jointDescription(rail)->settings);
   EXPECT_EQ(settings.motorSpeed, Real(0.5));
   EXPECT_FALSE(settings.enableMotor);  // updating a motor does not enable it
@@ -301,9 +327,13 @@ TEST(JointAccuracy, PrismaticMotor_HoldsSpeedAgainstGravity_Within1Percent) {
   double force = 3 * massOf(world, slider) * kG;
   // The world's anchor moves down relative to the slider: the slider rises.
   addJoint(world, slider, BodyId{}, Vec2(0, 0), Vec2(0, 0),
-           PrismaticJointSettings{.axis = Vec2(0, 1), .enableMotor = true, .motorSpeed = Real(-0.5), .maxMotorForce = Real(force)});
+           PrismaticJointSettings{.axis = Vec2(0, 1),
+                                  .enableMotor = true,
+                                  .motorSpeed = Real(-0.5),
+                                  .maxMotorForce = Real(force)});
   simulate(world, 0.2);
-  double worst = highestOver(world, 2, [&] { return std::abs(stateOf(world, slider).linearVelocity.y() / 0.5 - 1.0); });
+  double worst = highestOver(
+      world, 2, [&] { return std::abs(stateOf(world, slider).linearVelocity.y() / 0.5 - 1.0); });
   report("prismatic motor worst speed error", worst);
   EXPECT_LT(worst, 0.01);
 }
@@ -315,7 +345,8 @@ TEST(JointAccuracy, Weld_KeepsTwoBoxesRigidThroughADrop_Within1cmAnd0p01Rad) {
   addGround(world);
   BodyId a = addBox(world, {.center = Vec2(0, 3), .angle = Real(0.3)});
   BodyId b = addBox(world, {.center = Vec2(1, Real(3.3))});
-  addJoint(world, a, b, Vec2(Real(0.5), Real(3.15)), Vec2(Real(0.5), Real(3.15)), WeldJointSettings{});
+  addJoint(world, a, b, Vec2(Real(0.5), Real(3.15)), Vec2(Real(0.5), Real(3.15)),
+           WeldJointSettings{});
   Transform ta0{stateOf(world, a).position, Rot::fromAngle(stateOf(world, a).angle)};
   Vec2 local0 = ta0.applyInverse(stateOf(world, b).position);
   double relative0 = stateOf(world, b).angle - stateOf(world, a).angle;
@@ -326,7 +357,8 @@ TEST(JointAccuracy, Weld_KeepsTwoBoxesRigidThroughADrop_Within1cmAnd0p01Rad) {
     BodyState sb = stateOf(world, b);
     Transform ta{sa.position, Rot::fromAngle(sa.angle)};
     worstOffset = std::max(worstOffset, double((ta.applyInverse(sb.position) - local0).norm()));
-    worstTurn = std::max(worstTurn, std::abs(std::remainder(double(sb.angle - sa.angle) - relative0, 2 * kPi)));
+    worstTurn = std::max(
+        worstTurn, std::abs(std::remainder(double(sb.angle - sa.angle) - relative0, 2 * kPi)));
     return 0.0;
   });
   report("weld worst offset (m)", worstOffset);
@@ -338,13 +370,17 @@ TEST(JointAccuracy, Weld_KeepsTwoBoxesRigidThroughADrop_Within1cmAnd0p01Rad) {
 TEST(JointAccuracy, WheelSuspensionPeriod_Within1Percent_MotorSpeedWithin1Percent) {
   World world;
   BodyId chassis = addBox(world, {.center = Vec2(0, 5), .halfWidth = 2, .isStatic = true});
-  BodyId wheel = addCircle(world, {.center = Vec2(0, 3), .radius = Real(0.4), .ignoreGravity = true});
+  BodyId wheel =
+      addCircle(world, {.center = Vec2(0, 3), .radius = Real(0.4), .ignoreGravity = true});
   double mass = massOf(world, wheel);
   double stiffness = mass * std::pow(2 * kPi / 0.5, 2);
   // The spring rests where the joint was made; a kick starts the bounce.
   ASSERT_TRUE(world.setVelocity(wheel, Vec2(0, 1), 0).ok());
   addJoint(world, chassis, wheel, Vec2(0, 3), Vec2(0, 3),
-           WheelJointSettings{.axis = Vec2(0, 1), .stiffness = Real(stiffness), .enableMotor = true, .motorSpeed = 8,
+           WheelJointSettings{.axis = Vec2(0, 1),
+                              .stiffness = Real(stiffness),
+                              .enableMotor = true,
+                              .motorSpeed = 8,
                               .maxMotorTorque = 100});
   Samples s = record(world, 5.2, [&] { return double(stateOf(world, wheel).position.y()) - 3; });
   double ratio = s.meanPeriod(0) / 0.5;
@@ -360,8 +396,10 @@ TEST(JointAccuracy, MouseJoint_PullsToTheTargetWithAtMostMaxForce) {
   BodyId box = addBox(world, {.center = Vec2(0, 0), .ignoreGravity = true});
   double mass = massOf(world, box);
   double maxForce = 2 * mass;  // at most 2 m/s^2
-  JointId mouse = addJoint(world, box, BodyId{}, Vec2(0, 0), Vec2(0, 0),
-                           MouseJointSettings{.maxForce = Real(maxForce), .stiffness = Real(50 * mass), .damping = Real(14 * mass)});
+  JointId mouse = addJoint(
+      world, box, BodyId{}, Vec2(0, 0), Vec2(0, 0),
+      MouseJointSettings{
+          .maxForce = Real(maxForce), .stiffness = Real(50 * mass), .damping = Real(14 * mass)});
   ASSERT_TRUE(world.updateJoint(mouse, {.target = Vec2(3, 0)}).ok());
   double fastestGain = 0;
   Real previous = 0;

@@ -13,8 +13,8 @@
 namespace impulse::test {
 
 /// Creates a joint that must be accepted (a refusal fails the test).
-inline JointId addJoint(World& world, BodyId a, BodyId b, Vec2 anchorA, Vec2 anchorB, JointSettings settings,
-                        bool collideConnected = false) {
+inline JointId addJoint(World& world, BodyId a, BodyId b, Vec2 anchorA, Vec2 anchorB,
+                        JointSettings settings, bool collideConnected = false) {
   JointDef def{a, b, anchorA, anchorB, collideConnected, settings};
   JointResult result = world.createJoint(def);
   EXPECT_TRUE(result.ok()) << result.error;
