@@ -45,7 +45,9 @@ Jacobian angularJacobian() { return {Vec2::Zero(), 1, 1}; }
 // Along a line between the anchors (distance, rope).
 Jacobian lineJacobian(const Frame& f, const Vec2& u) { return {u, cross(f.rA, u), cross(f.rB, u)}; }
 // Along an axis fixed in A (prismatic, wheel): A's lever reaches B's anchor.
-Jacobian slideJacobian(const Frame& f, const Vec2& u) { return {u, cross(f.d + f.rA, u), cross(f.rB, u)}; }
+Jacobian slideJacobian(const Frame& f, const Vec2& u) {
+  return {u, cross(f.d + f.rA, u), cross(f.rB, u)};
+}
 
 Vec2 unitOr(const Vec2& v, const Vec2& fallback) {
   Real length = v.norm();
@@ -66,16 +68,18 @@ void apply(const JointRow& row, const Jacobian& j, Real impulse, SolverState& a,
 }
 
 Real effectiveMass(const JointRow& row, const Jacobian& j) {
-  Real k = (row.invMassA + row.invMassB) * j.linear.squaredNorm() + row.invInertiaA * j.angularA * j.angularA +
-           row.invInertiaB * j.angularB * j.angularB;
+  Real k = (row.invMassA + row.invMassB) * j.linear.squaredNorm() +
+           row.invInertiaA * j.angularA * j.angularA + row.invInertiaB * j.angularB * j.angularB;
   return k > 0 ? 1 / k : 0;
 }
 
 Vec2 pointVelocity(const Frame& f, const SolverState& a, const SolverState& b) {
-  return b.linearVelocity + cross(b.angularVelocity, f.rB) - a.linearVelocity - cross(a.angularVelocity, f.rA);
+  return b.linearVelocity + cross(b.angularVelocity, f.rB) - a.linearVelocity -
+         cross(a.angularVelocity, f.rA);
 }
 
-void applyPoint(const JointRow& row, const Frame& f, const Vec2& impulse, SolverState& a, SolverState& b) {
+void applyPoint(const JointRow& row, const Frame& f, const Vec2& impulse, SolverState& a,
+                SolverState& b) {
   a.linearVelocity -= row.invMassA * impulse;
   a.angularVelocity -= row.invInertiaA * cross(f.rA, impulse);
   b.linearVelocity += row.invMassB * impulse;
@@ -104,10 +108,12 @@ Vec2 solve22(const Mat2& k, const Vec2& v) {
 
 // The soft step's terms: soft with position feedback in the biased pass,
 // hard (velocity only) in the relax pass.
-Softness rowSoftness(const JointPass& pass) { return pass.useBias ? pass.rigid : Softness{0, 1, 0}; }
+Softness rowSoftness(const JointPass& pass) {
+  return pass.useBias ? pass.rigid : Softness{0, 1, 0};
+}
 
-void rigidRow(const JointRow& row, const Jacobian& j, Real c, Real& accumulated, const JointPass& pass,
-              SolverState& a, SolverState& b) {
+void rigidRow(const JointRow& row, const Jacobian& j, Real c, Real& accumulated,
+              const JointPass& pass, SolverState& a, SolverState& b) {
   Softness soft = rowSoftness(pass);
   Real impulse = -effectiveMass(row, j) * soft.massScale * (velocity(j, a, b) + soft.biasRate * c) -
                  soft.impulseScale * accumulated;
@@ -117,20 +123,20 @@ void rigidRow(const JointRow& row, const Jacobian& j, Real c, Real& accumulated,
 
 // One-sided row keeping c >= 0. Speculative: while c > 0 it only stops the
 // bodies from closing more than c within the sub-step.
-void limitRow(const JointRow& row, const Jacobian& j, Real c, Real& accumulated, const JointPass& pass,
-              SolverState& a, SolverState& b) {
+void limitRow(const JointRow& row, const Jacobian& j, Real c, Real& accumulated,
+              const JointPass& pass, SolverState& a, SolverState& b) {
   Softness soft = rowSoftness(pass);
   Real bias = soft.biasRate * c;
   if (c > 0) soft = {0, 1, 0}, bias = c * pass.invH;
-  Real impulse =
-      -effectiveMass(row, j) * soft.massScale * (velocity(j, a, b) + bias) - soft.impulseScale * accumulated;
+  Real impulse = -effectiveMass(row, j) * soft.massScale * (velocity(j, a, b) + bias) -
+                 soft.impulseScale * accumulated;
   Real next = std::max(accumulated + impulse, Real(0));
   apply(row, j, next - accumulated, a, b);
   accumulated = next;
 }
 
-void motorRow(const JointRow& row, const Jacobian& j, Real speed, Real maxImpulse, Real& accumulated,
-              SolverState& a, SolverState& b) {
+void motorRow(const JointRow& row, const Jacobian& j, Real speed, Real maxImpulse,
+              Real& accumulated, SolverState& a, SolverState& b) {
   Real impulse = -effectiveMass(row, j) * (velocity(j, a, b) - speed);
   Real next = std::clamp(accumulated + impulse, -maxImpulse, maxImpulse);
   apply(row, j, next - accumulated, a, b);
@@ -149,8 +155,8 @@ Real springVelocityWeight(Real stiffness, Real damping, Real mass, Real h) {
 
 // A spring of `stiffness` N/m and `damping` N*s/m on a row; solved once per
 // sub-step in the biased pass (the relax pass would apply it twice).
-void springRow(const JointRow& row, const Jacobian& j, Real c, Real stiffness, Real damping, Real& impulseOut,
-               const JointPass& pass, SolverState& a, SolverState& b) {
+void springRow(const JointRow& row, const Jacobian& j, Real c, Real stiffness, Real damping,
+               Real& impulseOut, const JointPass& pass, SolverState& a, SolverState& b) {
   Real mass = effectiveMass(row, j);
   if (!pass.useBias || mass == 0) return;
   Real s = springVelocityWeight(stiffness, damping, mass, pass.h);
@@ -159,12 +165,14 @@ void springRow(const JointRow& row, const Jacobian& j, Real c, Real stiffness, R
   apply(row, j, impulse, a, b);
 }
 
-void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumulated, const JointPass& pass,
-                SolverState& a, SolverState& b, Real maxImpulse = std::numeric_limits<Real>::infinity()) {
+void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumulated,
+                const JointPass& pass, SolverState& a, SolverState& b,
+                Real maxImpulse = std::numeric_limits<Real>::infinity()) {
   Softness soft = rowSoftness(pass);
   Vec2 bias = soft.biasRate * c;
-  Vec2 impulse = -soft.massScale * solve22(pointInverseMass(row, f), pointVelocity(f, a, b) + bias) -
-                 soft.impulseScale * accumulated;
+  Vec2 impulse =
+      -soft.massScale * solve22(pointInverseMass(row, f), pointVelocity(f, a, b) + bias) -
+      soft.impulseScale * accumulated;
   Vec2 next = accumulated + impulse;
   if (next.norm() > maxImpulse) next *= maxImpulse / next.norm();
   applyPoint(row, f, next - accumulated, a, b);
@@ -172,14 +180,15 @@ void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumu
 }
 
 // The point spring: (1 + s K) impulse = -(h k c + s v), K the inverse mass.
-void springPoint(const JointRow& row, const Frame& f, Real stiffness, Real damping, Vec2& impulseOut,
-                 const JointPass& pass, SolverState& a, SolverState& b,
+void springPoint(const JointRow& row, const Frame& f, Real stiffness, Real damping,
+                 Vec2& impulseOut, const JointPass& pass, SolverState& a, SolverState& b,
                  Real maxImpulse = std::numeric_limits<Real>::infinity()) {
   if (!pass.useBias) return;
   Mat2 k = pointInverseMass(row, f);
   Real mass = 1 / std::max(k(0, 0), k(1, 1));
   Real s = springVelocityWeight(stiffness, damping, mass, pass.h);
-  Vec2 impulse = -solve22(Mat2::Identity() + s * k, pass.h * stiffness * f.d + s * pointVelocity(f, a, b));
+  Vec2 impulse =
+      -solve22(Mat2::Identity() + s * k, pass.h * stiffness * f.d + s * pointVelocity(f, a, b));
   if (impulse.norm() > maxImpulse) impulse *= maxImpulse / impulse.norm();
   impulseOut = impulse;
   applyPoint(row, f, impulse, a, b);
@@ -224,12 +233,14 @@ void solveKind(Context& x, const RopeJointSettings&) {
 template <class Settings>
 void axisRows(Context& x, const Jacobian& j, Real value, const Settings& s, Real maxMotorImpulse) {
   JointImpulses& p = x.row.impulses;
-  if (s.stiffness > 0) springRow(x.row, j, value, s.stiffness, s.damping, p.spring, x.pass, x.a, x.b);
+  if (s.stiffness > 0)
+    springRow(x.row, j, value, s.stiffness, s.damping, p.spring, x.pass, x.a, x.b);
   if (s.enableMotor) motorRow(x.row, j, s.motorSpeed, maxMotorImpulse, p.motor, x.a, x.b);
 }
 
 template <class Settings>
-void limitRows(Context& x, const Jacobian& j, Real value, Real lower, Real upper, const Settings& s) {
+void limitRows(Context& x, const Jacobian& j, Real value, Real lower, Real upper,
+               const Settings& s) {
   if (!s.enableLimit) return;
   limitRow(x.row, j, value - lower, x.row.impulses.lower, x.pass, x.a, x.b);
   limitRow(x.row, -j, upper - value, x.row.impulses.upper, x.pass, x.a, x.b);
@@ -244,7 +255,8 @@ void solveKind(Context& x, const RevoluteJointSettings& s) {
 void solveKind(Context& x, const MouseJointSettings& s) {
   Real maxImpulse = x.pass.h * s.maxForce;
   if (s.stiffness > 0) {
-    springPoint(x.row, x.f, s.stiffness, s.damping, x.row.impulses.pointSpring, x.pass, x.a, x.b, maxImpulse);
+    springPoint(x.row, x.f, s.stiffness, s.damping, x.row.impulses.pointSpring, x.pass, x.a, x.b,
+                maxImpulse);
   } else {
     rigidPoint(x.row, x.f, x.f.d, x.row.impulses.point, x.pass, x.a, x.b, maxImpulse);
   }
@@ -280,7 +292,8 @@ Slide slideOf(Context& x) {
   Vec2 u = x.a.deltaRotation.apply(x.row.axis);
   Vec2 n = leftPerp(u);
   x.row.lastAxis = u;
-  return {slideJacobian(x.f, u), slideJacobian(x.f, n), u.dot(x.f.d) - x.row.joint->referenceTranslation,
+  return {slideJacobian(x.f, u), slideJacobian(x.f, n),
+          u.dot(x.f.d) - x.row.joint->referenceTranslation,
           n.dot(x.f.d) - x.row.joint->referencePerpendicular};
 }
 
@@ -296,17 +309,21 @@ void solveKind(Context& x, const WheelJointSettings& s) {
   Slide slide = slideOf(x);
   JointImpulses& p = x.row.impulses;
   if (s.stiffness > 0) {
-    springRow(x.row, slide.along, slide.translation, s.stiffness, s.damping, p.spring, x.pass, x.a, x.b);
+    springRow(x.row, slide.along, slide.translation, s.stiffness, s.damping, p.spring, x.pass, x.a,
+              x.b);
   } else {
     rigidRow(x.row, slide.along, slide.translation, p.axial, x.pass, x.a, x.b);
   }
   if (s.enableMotor) {
-    motorRow(x.row, angularJacobian(), s.motorSpeed, x.pass.h * s.maxMotorTorque, p.motor, x.a, x.b);
+    motorRow(x.row, angularJacobian(), s.motorSpeed, x.pass.h * s.maxMotorTorque, p.motor, x.a,
+             x.b);
   }
   rigidRow(x.row, slide.across, slide.offset, p.perpendicular, x.pass, x.a, x.b);
 }
 
-bool turnsWithLimits(const JointSettings& settings) { return std::holds_alternative<RevoluteJointSettings>(settings); }
+bool turnsWithLimits(const JointSettings& settings) {
+  return std::holds_alternative<RevoluteJointSettings>(settings);
+}
 bool slides(const JointSettings& settings) {
   return std::holds_alternative<PrismaticJointSettings>(settings) ||
          std::holds_alternative<WheelJointSettings>(settings);
@@ -358,7 +375,8 @@ void jointReaction(const JointRow& row, Real invH, Vec2& force, Real& torque) {
   if (turnsWithLimits(settings)) {
     turn += along + p.spring + p.motor;
     along = 0;
-  } else if (std::holds_alternative<WeldJointSettings>(settings) || std::holds_alternative<WheelJointSettings>(settings)) {
+  } else if (std::holds_alternative<WeldJointSettings>(settings) ||
+             std::holds_alternative<WheelJointSettings>(settings)) {
     turn += std::holds_alternative<WeldJointSettings>(settings) ? p.spring : p.motor;
     along += std::holds_alternative<WheelJointSettings>(settings) ? p.spring : Real(0);
   } else {

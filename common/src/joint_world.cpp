@@ -13,17 +13,18 @@ namespace {
 
 // Ranges that keep every quantity a joint forms far inside float's range
 // (docs/engine.md, "Input limits").
-constexpr Real kMaxLength = 1e4;          // m
-constexpr Real kMaxStiffness = 1e9;       // N/m or N*m/rad
-constexpr Real kMaxDamping = 1e9;         // N*s/m or N*m*s/rad
-constexpr Real kMaxMotorSpeed = 1e3;      // rad/s or m/s
-constexpr Real kMaxMotorForce = 1e10;     // N or N*m
+constexpr Real kMaxLength = 1e4;       // m
+constexpr Real kMaxStiffness = 1e9;    // N/m or N*m/rad
+constexpr Real kMaxDamping = 1e9;      // N*s/m or N*m*s/rad
+constexpr Real kMaxMotorSpeed = 1e3;   // rad/s or m/s
+constexpr Real kMaxMotorForce = 1e10;  // N or N*m
 constexpr Real kPi = std::numbers::pi_v<Real>;
 
 /// Checks one number: empty when finite and within [lo, hi].
 std::string checkRange(const char* field, Real value, Real lo, Real hi) {
   if (isFinite(value) && value >= lo && value <= hi) return {};
-  return std::string(field) + " must be a finite number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  return std::string(field) + " must be a finite number in [" + std::to_string(lo) + ", " +
+         std::to_string(hi) + "]";
 }
 
 /// The first of several checks that failed, or empty.
@@ -35,15 +36,18 @@ std::string firstError(const Errors&... errors) {
 }
 
 std::string checkSpring(const char* stiffness, Real k, const char* damping, Real c) {
-  return firstError(checkRange(stiffness, k, 0, kMaxStiffness), checkRange(damping, c, 0, kMaxDamping));
+  return firstError(checkRange(stiffness, k, 0, kMaxStiffness),
+                    checkRange(damping, c, 0, kMaxDamping));
 }
 
 std::string checkMotor(const char* speed, Real v, const char* force, Real f) {
-  return firstError(checkRange(speed, v, -kMaxMotorSpeed, kMaxMotorSpeed), checkRange(force, f, 0, kMaxMotorForce));
+  return firstError(checkRange(speed, v, -kMaxMotorSpeed, kMaxMotorSpeed),
+                    checkRange(force, f, 0, kMaxMotorForce));
 }
 
 std::string checkLimits(const char* lower, Real lo, const char* upper, Real hi, Real bound) {
-  std::string error = firstError(checkRange(lower, lo, -bound, bound), checkRange(upper, hi, -bound, bound));
+  std::string error =
+      firstError(checkRange(lower, lo, -bound, bound), checkRange(upper, hi, -bound, bound));
   if (error.empty() && lo > hi) error = std::string(lower) + " must not exceed " + upper;
   return error;
 }
@@ -54,9 +58,12 @@ std::string checkAxis(const Vec2& axis) {
 }
 
 std::string checkSettings(const DistanceJointSettings& s) {
-  return firstError(checkRange("length", s.length, 0, kMaxLength), checkSpring("stiffness", s.stiffness, "damping", s.damping));
+  return firstError(checkRange("length", s.length, 0, kMaxLength),
+                    checkSpring("stiffness", s.stiffness, "damping", s.damping));
 }
-std::string checkSettings(const RopeJointSettings& s) { return checkRange("maxLength", s.maxLength, 0, kMaxLength); }
+std::string checkSettings(const RopeJointSettings& s) {
+  return checkRange("maxLength", s.maxLength, 0, kMaxLength);
+}
 std::string checkSettings(const RevoluteJointSettings& s) {
   return firstError(checkLimits("lowerAngle", s.lowerAngle, "upperAngle", s.upperAngle, kPi),
                     checkMotor("motorSpeed", s.motorSpeed, "maxMotorTorque", s.maxMotorTorque),
@@ -72,7 +79,8 @@ std::string checkSettings(const WeldJointSettings& s) {
                     checkRange("angularStiffness", s.angularStiffness, 0, kMaxStiffness));
 }
 std::string checkSettings(const WheelJointSettings& s) {
-  return firstError(checkAxis(s.axis), checkMotor("motorSpeed", s.motorSpeed, "maxMotorTorque", s.maxMotorTorque),
+  return firstError(checkAxis(s.axis),
+                    checkMotor("motorSpeed", s.motorSpeed, "maxMotorTorque", s.maxMotorTorque),
                     checkSpring("stiffness", s.stiffness, "damping", s.damping));
 }
 std::string checkSettings(const MouseJointSettings& s) {
@@ -89,7 +97,8 @@ bool withinReach(const WorldData& world, const Vec2& p) {
 
 std::string checkPoint(const WorldData& world, const char* field, const Vec2& p) {
   if (withinReach(world, p)) return {};
-  return std::string(field) + " must be finite and within the world bounds grown by the escape margin";
+  return std::string(field) +
+         " must be finite and within the world bounds grown by the escape margin";
 }
 
 std::string validateJoint(const WorldData& world, const JointDef& def) {
@@ -98,9 +107,12 @@ std::string validateJoint(const WorldData& world, const JointDef& def) {
   if (a == nullptr) return "bodyA is not a live body (unknown or removed)";
   if (!def.bodyB.isNull() && b == nullptr) return "bodyB is not a live body (unknown or removed)";
   if (def.bodyA == def.bodyB) return "bodyA and bodyB are the same body";
-  if (a->isStatic && (b == nullptr || b->isStatic)) return "a joint needs a dynamic body (both ends are static or the world)";
-  if (std::holds_alternative<MouseJointSettings>(def.settings) && a->isStatic) return "a mouse joint pulls bodyA, which is static";
-  return firstError(checkPoint(world, "anchorA", def.anchorA), checkPoint(world, "anchorB", def.anchorB),
+  if (a->isStatic && (b == nullptr || b->isStatic))
+    return "a joint needs a dynamic body (both ends are static or the world)";
+  if (std::holds_alternative<MouseJointSettings>(def.settings) && a->isStatic)
+    return "a mouse joint pulls bodyA, which is static";
+  return firstError(checkPoint(world, "anchorA", def.anchorA),
+                    checkPoint(world, "anchorB", def.anchorB),
                     std::visit([](const auto& s) { return checkSettings(s); }, def.settings));
 }
 
@@ -112,8 +124,10 @@ std::int32_t slotOf(BodyId id) { return id.isNull() ? kNullIndex : id.slot(); }
 
 // The settings as the joint keeps them: lengths resolved, axes unit.
 JointSettings resolved(JointSettings settings, Real anchorDistance) {
-  if (auto* s = std::get_if<DistanceJointSettings>(&settings); s && s->length == 0) s->length = anchorDistance;
-  if (auto* s = std::get_if<RopeJointSettings>(&settings); s && s->maxLength == 0) s->maxLength = anchorDistance;
+  if (auto* s = std::get_if<DistanceJointSettings>(&settings); s && s->length == 0)
+    s->length = anchorDistance;
+  if (auto* s = std::get_if<RopeJointSettings>(&settings); s && s->maxLength == 0)
+    s->maxLength = anchorDistance;
   if (auto* s = std::get_if<PrismaticJointSettings>(&settings)) s->axis.normalize();
   if (auto* s = std::get_if<WheelJointSettings>(&settings)) s->axis.normalize();
   return settings;
@@ -214,21 +228,26 @@ void removeJoint(WorldData& world, std::int32_t index) {
 
 Joint* findJoint(WorldData& world, JointId id) {
   std::int32_t slot = id.slot();
-  if (id.isNull() || slot < 0 || slot >= static_cast<std::int32_t>(world.joints.size())) return nullptr;
+  if (id.isNull() || slot < 0 || slot >= static_cast<std::int32_t>(world.joints.size()))
+    return nullptr;
   Joint& joint = world.joints[slot];
-  if (!joint.alive || (joint.generation & BodyId::kGenerationMask) != id.generation()) return nullptr;
+  if (!joint.alive || (joint.generation & BodyId::kGenerationMask) != id.generation())
+    return nullptr;
   return &joint;
 }
 
-const Joint* findJoint(const WorldData& world, JointId id) { return findJoint(const_cast<WorldData&>(world), id); }
+const Joint* findJoint(const WorldData& world, JointId id) {
+  return findJoint(const_cast<WorldData&>(world), id);
+}
 
 }  // namespace
 
 bool jointBlocksContact(const WorldData& world, std::int32_t bodyA, std::int32_t bodyB) {
   bool blocked = false;
-  forEachEdge(world.joints, world.bodies[bodyA].jointHead, [&](std::int32_t key, const Joint& joint) {
-    blocked = blocked || (!joint.collideConnected && joint.edges.otherBody(key) == bodyB);
-  });
+  forEachEdge(
+      world.joints, world.bodies[bodyA].jointHead, [&](std::int32_t key, const Joint& joint) {
+        blocked = blocked || (!joint.collideConnected && joint.edges.otherBody(key) == bodyB);
+      });
   return blocked;
 }
 
@@ -267,17 +286,25 @@ std::string applyUpdate(Joint& joint, const JointUpdate& update) {
   if (update.target && mouse == nullptr) return "target: only a mouse joint has a target";
   if (update.target) joint.target = *update.target;
   auto setMotor = [&](Real& speed, Real& force, const char* forceName) {
-    std::string error = firstError(update.motorSpeed ? checkRange("motorSpeed", *update.motorSpeed, -kMaxMotorSpeed, kMaxMotorSpeed) : "",
-                                   update.maxMotorForce ? checkRange(forceName, *update.maxMotorForce, 0, kMaxMotorForce) : "");
+    std::string error = firstError(
+        update.motorSpeed
+            ? checkRange("motorSpeed", *update.motorSpeed, -kMaxMotorSpeed, kMaxMotorSpeed)
+            : "",
+        update.maxMotorForce ? checkRange(forceName, *update.maxMotorForce, 0, kMaxMotorForce)
+                             : "");
     if (!error.empty()) return error;
     speed = update.motorSpeed.value_or(speed);
     force = update.maxMotorForce.value_or(force);
     return error;
   };
-  if (auto* s = std::get_if<RevoluteJointSettings>(&joint.settings)) return setMotor(s->motorSpeed, s->maxMotorTorque, "maxMotorForce");
-  if (auto* s = std::get_if<PrismaticJointSettings>(&joint.settings)) return setMotor(s->motorSpeed, s->maxMotorForce, "maxMotorForce");
-  if (auto* s = std::get_if<WheelJointSettings>(&joint.settings)) return setMotor(s->motorSpeed, s->maxMotorTorque, "maxMotorForce");
-  if (update.motorSpeed || update.maxMotorForce) return "motorSpeed, maxMotorForce: this joint kind has no motor";
+  if (auto* s = std::get_if<RevoluteJointSettings>(&joint.settings))
+    return setMotor(s->motorSpeed, s->maxMotorTorque, "maxMotorForce");
+  if (auto* s = std::get_if<PrismaticJointSettings>(&joint.settings))
+    return setMotor(s->motorSpeed, s->maxMotorForce, "maxMotorForce");
+  if (auto* s = std::get_if<WheelJointSettings>(&joint.settings))
+    return setMotor(s->motorSpeed, s->maxMotorTorque, "maxMotorForce");
+  if (update.motorSpeed || update.maxMotorForce)
+    return "motorSpeed, maxMotorForce: this joint kind has no motor";
   return {};
 }
 

@@ -18,14 +18,19 @@ bool stateIsFinite(const Body& body) {
 }
 
 // Warm-start impulses computed from a broken state would carry it into the
-// next step through every neighbour.
-void forgetContactImpulses(WorldData& world, const Body& body) {
+// next step through every neighbour (contacts and joints).
+void forgetImpulses(WorldData& world, const Body& body) {
   forEachEdge(world.contacts, body.contactHead, [](std::int32_t, Contact& contact) {
     for (ManifoldPoint& point : contact.manifold.points) {
       point.normalImpulse = 0;
       point.tangentImpulse = 0;
     }
     contact.manifold.rollingImpulse = 0;
+  });
+  forEachEdge(world.joints, body.jointHead, [](std::int32_t, Joint& joint) {
+    joint.impulses = {};
+    joint.reactionForce.setZero();
+    joint.reactionTorque = 0;
   });
 }
 
@@ -40,7 +45,7 @@ void repair(WorldData& world, std::int32_t slot) {
   body.angularVelocity = 0;
   body.force.setZero();
   body.torque = 0;
-  forgetContactImpulses(world, body);
+  forgetImpulses(world, body);
   world.broadPhase.updateProxy(body.proxyKey, bodyAABB(world, slot));
 }
 

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <vector>
 
 #include "impulse/scenes/stress.h"
 #include "impulse/world.h"
@@ -47,6 +48,23 @@ TEST(SteadyStateStep, DoesNotAllocate_WhenRainSettles) {
   long before = g_allocations.load();
   for (int i = 0; i < 60; ++i) world.step(Real(1.0 / 60.0));
   EXPECT_EQ(g_allocations.load() - before, 0) << "heap allocations during 60 steps of a settled pile";
+}
+
+// A swinging chain of pinned boxes: joints reuse their step arrays too.
+TEST(SteadyStateStep, DoesNotAllocate_WhenAChainSwings) {
+  World world;
+  BodyId previous{};
+  for (int i = 0; i < 10; ++i) {
+    Vec2 pin(Real(i), 10);
+    BodyOptions options;
+    BodyId link = world.createPolygon(std::vector<Vec2>{{pin.x(), 9.9f}, {pin.x() + 1, 9.9f}, {pin.x() + 1, 10.1f}, {pin.x(), 10.1f}}, options).id;
+    ASSERT_TRUE(world.createJoint({link, previous, pin, pin, false, RevoluteJointSettings{}}).ok());
+    previous = link;
+  }
+  for (int i = 0; i < 60; ++i) world.step(Real(1.0 / 60.0));
+  long before = g_allocations.load();
+  for (int i = 0; i < 60; ++i) world.step(Real(1.0 / 60.0));
+  EXPECT_EQ(g_allocations.load() - before, 0) << "heap allocations during 60 steps of a swinging chain";
 }
 
 }  // namespace

@@ -64,8 +64,10 @@ TEST(JointValidation, NonFiniteOrOutOfRangeNumbers_NameTheField) {
   expectRefused(scene, scene.def(DistanceJointSettings{.length = -1}), "length");
   expectRefused(scene, scene.def(DistanceJointSettings{.stiffness = nan}), "stiffness");
   expectRefused(scene, scene.def(RopeJointSettings{.maxLength = INFINITY}), "maxLength");
-  expectRefused(scene, scene.def(RevoluteJointSettings{.enableLimit = true, .lowerAngle = 1, .upperAngle = -1}),
-                "lowerAngle");
+  expectRefused(
+      scene,
+      scene.def(RevoluteJointSettings{.enableLimit = true, .lowerAngle = 1, .upperAngle = -1}),
+      "lowerAngle");
   expectRefused(scene, scene.def(RevoluteJointSettings{.maxMotorTorque = -5}), "maxMotorTorque");
   expectRefused(scene, scene.def(PrismaticJointSettings{.axis = Vec2::Zero()}), "axis");
   expectRefused(scene, scene.def(WheelJointSettings{.damping = -1}), "damping");
@@ -98,12 +100,16 @@ TEST(JointLifetime, CreateDescribeListAndDestroy) {
 
 TEST(JointLifetime, RemovingABody_RemovesAndListsItsJoints) {
   TwoBoxes scene;
-  JointId first = addJoint(scene.world, scene.a, scene.b, Vec2(0, 2), Vec2(2, 2), DistanceJointSettings{});
-  JointId second = addJoint(scene.world, scene.a, BodyId{}, Vec2(0, 2), Vec2(0, 4), RopeJointSettings{});
+  JointId first =
+      addJoint(scene.world, scene.a, scene.b, Vec2(0, 2), Vec2(2, 2), DistanceJointSettings{});
+  JointId second =
+      addJoint(scene.world, scene.a, BodyId{}, Vec2(0, 2), Vec2(0, 4), RopeJointSettings{});
   BodyId c = addBox(scene.world, {.center = Vec2(4, 2)});
-  JointId third = addJoint(scene.world, scene.b, c, Vec2(2, 2), Vec2(4, 2), DistanceJointSettings{});
+  JointId third =
+      addJoint(scene.world, scene.b, c, Vec2(2, 2), Vec2(4, 2), DistanceJointSettings{});
   ASSERT_TRUE(scene.world.destroyBody(scene.a));
-  std::vector<JointId> removed(scene.world.removedJoints().begin(), scene.world.removedJoints().end());
+  std::vector<JointId> removed(scene.world.removedJoints().begin(),
+                               scene.world.removedJoints().end());
   std::sort(removed.begin(), removed.end());
   EXPECT_EQ(removed, (std::vector<JointId>{first, second}));
   EXPECT_EQ(scene.world.jointIds(), std::vector<JointId>{third});
@@ -116,7 +122,8 @@ TEST(JointIslands, JointedBodiesSleepTogetherAndWakeOnChange) {
   addGround(world);
   BodyId a = addBox(world, {.center = Vec2(0, Real(0.5))});
   BodyId b = addBox(world, {.center = Vec2(3, Real(0.5))});
-  JointId joint = addJoint(world, a, b, Vec2(0, Real(0.5)), Vec2(3, Real(0.5)), DistanceJointSettings{});
+  JointId joint =
+      addJoint(world, a, b, Vec2(0, Real(0.5)), Vec2(3, Real(0.5)), DistanceJointSettings{});
   ASSERT_GT(simulateUntilAsleep(world, 5), 0);
   // Pushing one wakes the other through the joint.
   ASSERT_TRUE(world.applyImpulse(a, Vec2(0, 1)).ok());
@@ -149,11 +156,13 @@ TEST(JointContacts, CollideConnectedFalse_SuppressesContactsBetweenThePair) {
 
 TEST(JointUpdate, RefusesFieldsTheKindLacksAndWakes) {
   TwoBoxes scene;
-  JointId rope = addJoint(scene.world, scene.a, scene.b, Vec2(0, 2), Vec2(2, 2), RopeJointSettings{});
+  JointId rope =
+      addJoint(scene.world, scene.a, scene.b, Vec2(0, 2), Vec2(2, 2), RopeJointSettings{});
   EXPECT_FALSE(scene.world.updateJoint(rope, {.target = Vec2(1, 1)}).ok());
   EXPECT_FALSE(scene.world.updateJoint(rope, {.motorSpeed = 1}).ok());
   EXPECT_FALSE(scene.world.updateJoint(JointId{999}, {}).ok());
-  JointId hinge = addJoint(scene.world, scene.a, BodyId{}, Vec2(0, 2), Vec2(0, 2), RevoluteJointSettings{});
+  JointId hinge =
+      addJoint(scene.world, scene.a, BodyId{}, Vec2(0, 2), Vec2(0, 2), RevoluteJointSettings{});
   InputResult bad = scene.world.updateJoint(hinge, {.motorSpeed = std::nanf("")});
   EXPECT_NE(bad.error.find("motorSpeed"), std::string::npos) << bad.error;
   EXPECT_TRUE(scene.world.updateJoint(hinge, {.motorSpeed = 2, .maxMotorForce = 10}).ok());
@@ -167,20 +176,23 @@ std::vector<std::uint64_t> runEveryKind() {
   World world;
   addGround(world);
   std::vector<BodyId> boxes;
-  for (int i = 0; i < 8; ++i) boxes.push_back(addBox(world, {.center = Vec2(Real(i), Real(4 + 0.3 * i))}));
-  const JointSettings kinds[] = {DistanceJointSettings{},
-                                 RopeJointSettings{},
-                                 RevoluteJointSettings{.enableMotor = true, .motorSpeed = 1, .maxMotorTorque = 50},
-                                 PrismaticJointSettings{.enableLimit = true, .lower = -1, .upper = 1},
-                                 WeldJointSettings{.linearStiffness = 500},
-                                 WheelJointSettings{.stiffness = 200, .damping = 5},
-                                 DistanceJointSettings{.stiffness = 100, .damping = 1}};
+  for (int i = 0; i < 8; ++i)
+    boxes.push_back(addBox(world, {.center = Vec2(Real(i), Real(4 + 0.3 * i))}));
+  const JointSettings kinds[] = {
+      DistanceJointSettings{},
+      RopeJointSettings{},
+      RevoluteJointSettings{.enableMotor = true, .motorSpeed = 1, .maxMotorTorque = 50},
+      PrismaticJointSettings{.enableLimit = true, .lower = -1, .upper = 1},
+      WeldJointSettings{.linearStiffness = 500},
+      WheelJointSettings{.stiffness = 200, .damping = 5},
+      DistanceJointSettings{.stiffness = 100, .damping = 1}};
   for (int i = 0; i < 7; ++i) {
     Vec2 pa = stateOf(world, boxes[i]).position;
     Vec2 pb = stateOf(world, boxes[i + 1]).position;
     addJoint(world, boxes[i], boxes[i + 1], pa, pb, kinds[i]);
   }
-  addJoint(world, boxes[0], BodyId{}, Vec2(0, 4), Vec2(0, 6), MouseJointSettings{.maxForce = 500, .stiffness = 200});
+  addJoint(world, boxes[0], BodyId{}, Vec2(0, 4), Vec2(0, 6),
+           MouseJointSettings{.maxForce = 500, .stiffness = 200});
   std::vector<std::uint64_t> hashes;
   for (int i = 0; i < 300; ++i) {
     world.step(kDt);
@@ -190,7 +202,89 @@ std::vector<std::uint64_t> runEveryKind() {
   return hashes;
 }
 
-TEST(JointDeterminism, EveryKindRunTwice_GivesIdenticalHashes) { EXPECT_EQ(runEveryKind(), runEveryKind()); }
+TEST(JointDeterminism, EveryKindRunTwice_GivesIdenticalHashes) {
+  EXPECT_EQ(runEveryKind(), runEveryKind());
+}
+
+}  // namespace
+}  // namespace impulse::test
+
+namespace impulse::test {
+namespace {
+
+// A body hanging at rest from the world: the joint carries its weight, so
+// the reaction is m*g (on B, the world: downward), within 1 %.
+TEST(JointState, HangingBody_ReactionIsItsWeight_LengthAndAngleReported) {
+  World world;
+  BodyId bob = addCircle(world, {.center = Vec2(0, -2), .radius = Real(0.2)});
+  JointId rod = addJoint(world, bob, BodyId{}, Vec2(0, -2), Vec2::Zero(), DistanceJointSettings{});
+  JointId pin =
+      addJoint(world, bob, BodyId{}, Vec2(0, -2), Vec2(0, -2), RevoluteJointSettings{}, true);
+  simulate(world, 1);
+  double weight = massOf(world, bob) * kG;
+  JointState rodState = *world.jointState(rod);
+  JointState pinState = *world.jointState(pin);
+  Vec2 total = rodState.reactionForce + pinState.reactionForce;
+  std::printf("measured: hanging reaction / weight = %.6f\n", -total.y() / weight);
+  EXPECT_NEAR(-total.y() / weight, 1, 0.01);
+  EXPECT_NEAR(total.x(), 0, weight * 0.01);
+  EXPECT_NEAR(rodState.length, 2, 0.001);
+  EXPECT_NEAR(pinState.angle, 0, 0.001);
+}
+
+}  // namespace
+}  // namespace impulse::test
+
+namespace impulse::test {
+namespace {
+
+// The largest numbers createJoint accepts, on small light bodies far apart:
+// every state stays finite without the step guard's repairs.
+TEST(JointLimits, LargestAcceptedNumbers_KeepEveryStateFinite) {
+  World world;
+  const Real big = 1e9f;
+  const Real force = 1e10f;
+  const JointSettings kinds[] = {
+      DistanceJointSettings{.length = 10, .stiffness = big, .damping = big},
+      RopeJointSettings{.maxLength = Real(0.1)},
+      RevoluteJointSettings{.enableLimit = true,
+                            .lowerAngle = -3,
+                            .upperAngle = 3,
+                            .enableMotor = true,
+                            .motorSpeed = 1000,
+                            .maxMotorTorque = force,
+                            .stiffness = big,
+                            .damping = big},
+      PrismaticJointSettings{.axis = Vec2(1, 1),
+                             .enableLimit = true,
+                             .lower = -10000,
+                             .upper = 10000,
+                             .enableMotor = true,
+                             .motorSpeed = -1000,
+                             .maxMotorForce = force,
+                             .stiffness = big,
+                             .damping = big},
+      WeldJointSettings{.linearStiffness = big, .angularStiffness = big},
+      WheelJointSettings{.axis = Vec2(0, -3),
+                         .stiffness = big,
+                         .damping = big,
+                         .enableMotor = true,
+                         .motorSpeed = 1000,
+                         .maxMotorTorque = force},
+      MouseJointSettings{.maxForce = force, .stiffness = big, .damping = big}};
+  Real x = -20;
+  for (const JointSettings& settings : kinds) {
+    BodyId a = addCircle(world, {.center = Vec2(x, 5), .radius = Real(0.05)});
+    BodyId b = addCircle(world, {.center = Vec2(x + 3, 7), .radius = Real(0.05)});
+    addJoint(world, a, b, Vec2(x, 5), Vec2(x + 3, 7), settings);
+    x += 9;
+  }
+  for (int i = 0; i < 240; ++i) {
+    world.step(kDt);
+    ASSERT_TRUE(allStatesFinite(world)) << "step " << i;
+  }
+  EXPECT_EQ(world.guardReport().repairedBodies, 0u);
+}
 
 }  // namespace
 }  // namespace impulse::test

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "impulse/joint.h"
@@ -12,8 +13,8 @@
 namespace impulse::test {
 
 /// Creates a joint that must be accepted (a refusal fails the test).
-inline JointId addJoint(World& world, BodyId a, BodyId b, Vec2 anchorA, Vec2 anchorB, JointSettings settings,
-                        bool collideConnected = false) {
+inline JointId addJoint(World& world, BodyId a, BodyId b, Vec2 anchorA, Vec2 anchorB,
+                        JointSettings settings, bool collideConnected = false) {
   JointDef def{a, b, anchorA, anchorB, collideConnected, settings};
   JointResult result = world.createJoint(def);
   EXPECT_TRUE(result.ok()) << result.error;
@@ -58,6 +59,13 @@ Samples record(World& world, double seconds, Measure&& measure) {
     samples.add(i * double(kDt), measure());
   }
   return samples;
+}
+
+/// The largest value `measure` gives after any tick over `seconds`.
+template <class Measure>
+double highestOver(World& world, double seconds, Measure&& measure) {
+  Samples s = record(world, seconds, measure);
+  return *std::max_element(s.value.begin(), s.value.end());
 }
 
 }  // namespace impulse::test

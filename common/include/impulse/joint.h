@@ -53,6 +53,8 @@ struct RevoluteJointSettings {
 };
 
 /// B slides along `axis` (fixed in A, given in world at creation), no turn.
+/// Translation, limits and the spring's rest are measured from the
+/// position at creation.
 struct PrismaticJointSettings {
   Vec2 axis = Vec2(1, 0);
   bool enableLimit = false;
@@ -72,7 +74,7 @@ struct WeldJointSettings {
 };
 
 /// A wheel (B) on a suspension spring along `axis` (fixed in A), free to
-/// turn, with an optional motor.
+/// turn, with an optional motor. The spring rests at the creation position.
 struct WheelJointSettings {
   Vec2 axis = Vec2(0, 1);
   Real stiffness = 0;  ///< N/m along the axis, 0: rigid
@@ -83,7 +85,9 @@ struct WheelJointSettings {
 };
 
 /// Pulls anchorA of body A towards a target (anchorB at creation; then
-/// World::updateJoint) with at most maxForce, as a spring.
+/// World::updateJoint) with at most maxForce, as a spring (stiffness 0:
+/// rigid, still limited by maxForce). Motor speeds of every kind are B's
+/// relative to A: with B the world, A turns or slides the other way.
 struct MouseJointSettings {
   Real maxForce = 0;   ///< N
   Real stiffness = 0;  ///< N/m

@@ -1,0 +1,421 @@
+// Joint accuracy against closed forms (issue 14), each with its tolerance.
+// Every test prints what it measured ("measured:"), so the figures in the
+// issue's closing note come from these runs.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "joint_test_support.h"
+
+namespace impulse::test {
+namespace {
+
+void report(const char* what, double value) { std::printf("measured: %s = %.5g\n", what, value); }
+
+// ---- springs ----
+
+struct SpringScene {
+  World world;
+  BodyId bob;
+  double mass = 0;
+  double stiffness = 0;
+  // A bob on a horizontal spring of rest length 1 to the world origin,
+  // pulled out by `amplitude`, weightless; the spring's period is `period`.
+  SpringScene(double period, double dampingRatio, double amplitude) {
+    bob = addCircle(
+        world,
+        {.center = Vec2(Real(1 + amplitude), 0), .radius = Real(0.25), .ignoreGravity = true});
+    mass = massOf(world, bob);
+    stiffness = mass * std::pow(2 * kPi / period, 2);
+    double damping = 2 * dampingRatio * std::sqrt(stiffness * mass);
+    addJoint(
+        world, bob, BodyId{}, stateOf(world, bob).position, Vec2::Zero(),
+        DistanceJointSettings{.length = 1, .stiffness = Real(stiffness), .damping = Real(damping)});
+  }
+  Samples run(double seconds) {
+    return record(world, seconds, [&] { return double(stateOf(world, bob).position.x()) - 1; });
+  }
+};
+
+/// The largest |value| between two times.
+double peakBetween(const Samples& s, double from, double to) {
+  double peak = 0;
+  for (std::size_t i = 0; i < s.time.size(); ++i) {
+    if (s.time[i] >= from && s.time[i] < to) peak = std::max(peak, std::abs(s.value[i]));
+  }
+  return peak;
+}
+
+TEST(JointAccuracy, SpringMassPeriod_Within1Percent_AmplitudeLossBelow3PercentOver10Periods) {
+  SpringScene scene(1.0, 0, 0.5);
+  Samples s = scene.run(10.5);
+  double period = s.meanPeriod(0);
+  double expected = 2 * kPi * std::sqrt(scene.mass / scene.stiffness);
+  report("spring period relative error", period / expected - 1);
+  EXPECT_NEAR(period / expected, 1, 0.01);
+  double first = peakBetween(s, 0, 1);
+  double tenth = peakBetween(s, 9.5, 10.5);
+  report("spring amplitude loss over 10 periods", 1 - tenth / 0.5);
+  EXPECT_GT(first / 0.5, 0.97);
+  EXPECT_GT(tenth / 0.5, 0.97);
+}
+
+TEST(JointAccuracy, DampedSpringEnvelope_FollowsExpMinusZetaOmegaT_Within5Percent) {
+  const double zeta = 0.1;
+  const double amplitude = 0.5;
+  SpringScene scene(1.0, zeta, amplitude);
+  Samples s = scene.run(4);
+  double omega = 2 * kPi;
+  double omegaD = omega * std::sqrt(1 - zeta * zeta);
+  // Extrema of x = A e^{-zeta w t}(cos wd t + ...) fall at t = n pi / wd,
+  // where |x| = A e^{-zeta w t} exactly.
+  double worst = 0;
+  for (int n = 1; n * kPi / omegaD < 3.9; ++n) {
+    double t = n * kPi / omegaD;
+    double measured = peakBetween(s, t - 0.1, t + 0.1);
+    double expected = amplitude * std::exp(-zeta * omega * t);
+    worst = std::max(worst, std::abs(measured / expected - 1));
+  }
+  report("damped envelope worst relative error", worst);
+  EXPECT_LT(worst, 0.05);
+}
+
+// ---- pendulums ----
+
+/// Complete elliptic integral of the first kind K(k), by the AGM.
+double ellipticK(double k) {
+  double a = 1;
+  double b = std::sqrt(1 - k * k);
+  for (int i = 0; i < 20; ++i) {
+    double next = (a + b) / 2;
+    b = std::sqrt(a * b);
+    a = next;
+  }
+  return kPi / (2 * a);
+}
+
+/// Period of a pendulum of equivalent length l released from theta0.
+double pendulumPeriod(double l, double theta0) {
+  return 4 * std::sqrt(l / kG) * ellipticK(std::sin(theta0 / 2));
+}
+
+/// A bob of radius 0.1 hanging 2 m below the origin, released at theta0;
+/// `pinned`: a revolute joint at the origin (the bob turns with the rod, a
+/// physical pendulum), else a distance rod (the bob turns freely).
+double measuredPendulumRatio(double theta0, bool pinned) {
+  const double length = 2;
+  World world;
+  Vec2 start(Real(length * std::sin(theta0)), Real(-length * std::cos(theta0)));
+  BodyId bob = addCircle(world, {.center = start, .radius = Real(0.1)});
+  double equivalent = length;
+  if (pinned) {
+    addJoint(world, bob, BodyId{}, Vec2::Zero(), Vec2::Zero(), RevoluteJointSettings{});
+    double r = 0.1;
+    equivalent = (r * r / 2 + length * length) / length;
+  } else {
+    addJoint(world, bob, BodyId{}, start, Vec2::Zero(), DistanceJointSettings{});
+  }
+  double expected = pendulumPeriod(equivalent, theta0);
+  Samples s =
+      record(world, 5.2 * expected, [&] { return double(stateOf(world, bob).position.x()); });
+  return s.meanPeriod(0) / expected;
+}
+
+TEST(JointAccuracy, PendulumPeriod_SmallAnd90Degrees_Within1Percent) {
+  for (bool pinned : {false, true}) {
+    for (double theta0 : {0.05, kPi / 2}) {
+      double ratio = measuredPendulumRatio(theta0, pinned);
+      std::printf("measured: pendulum %s theta0 %.2f period relative error = %.5g\n",
+                  pinned ? "revolute" : "rod", theta0, ratio - 1);
+      EXPECT_NEAR(ratio, 1, 0.01) << (pinned ? "revolute" : "rod") << " theta0 " << theta0;
+    }
+  }
+}
+
+struct CradleOutcome {
+  double last = 0;    ///< the last ball's peak speed over the released ball's impact speed
+  double others = 0;  ///< the fastest other ball's speed afterwards, same scale
+};
+
+CradleOutcome cradle(int subSteps, Real gap) {
+  WorldSettings settings;
+  settings.subSteps = subSteps;
+  World world(settings);
+  const Real r = Real(0.25) + gap / 2;
+  std::vector<BodyId> balls;
+  for (int i = 0; i < 5; ++i) {
+    Vec2 pivot(Real(2 * r * i), 0);
+    Vec2 at = pivot + Vec2(0, -2);
+    if (i == 0) at = pivot + Vec2(Real(-2 * std::sin(0.5)), Real(-2 * std::cos(0.5)));
+    BodyDef def = makeBodyDef(Shape::makeCircle(Real(0.25)), at, {.material = Material::Metal});
+    def.materialOverride.restitution = 1;
+    def.materialOverride.staticFriction = 0;
+    def.materialOverride.dynamicFriction = 0;
+    CreateResult made = world.createBody(def);
+    balls.push_back(made.id);
+    addJoint(world, made.id, BodyId{}, at, pivot, DistanceJointSettings{}, true);
+  }
+  // The released ball's speed at the bottom, and the highest speed the last
+  // ball reaches while the first and middle ones stay nearly still.
+  double impact = std::sqrt(2 * kG * 2 * (1 - std::cos(0.5)));
+  double lastPeak = 0;
+  double othersAfter = 0;
+  record(world, 1.2, [&] {
+    lastPeak = std::max(lastPeak, double(stateOf(world, balls[4]).linearVelocity.norm()));
+    return 0.0;
+  });
+  for (int i = 0; i < 4; ++i)
+    othersAfter = std::max(othersAfter, double(stateOf(world, balls[i]).linearVelocity.norm()));
+  std::printf(
+      "measured: cradle %d sub-steps gap %.3f: last ball %.4g, fastest other %.4g of the impact "
+      "speed\n",
+      subSteps, gap, lastPeak / impact, othersAfter / impact);
+  return {lastPeak / impact, othersAfter / impact};
+}
+
+// Balls 5 cm apart, elastic, no friction, at the default 4 sub-steps: each
+// collision is one pair at a time. Touching balls (gap 0) pass only about
+// 43 % (printed, not held): the contact solver's restitution targets come
+// from the approach speeds at the step's start, which only the first pair
+// has, so the chain behind it absorbs the blow inelastically.
+TEST(JointAccuracy, NewtonsCradle_PassesMomentumThroughFiveBalls) {
+  CradleOutcome spaced = cradle(4, Real(0.05));
+  EXPECT_GT(spaced.last, 0.95);
+  EXPECT_LT(spaced.others, 0.1);
+  cradle(4, 0);
+  cradle(16, Real(0.02));
+}
+
+// ---- chains and ropes ----
+
+double heavyChainStretch(int subSteps) {
+  WorldSettings settings;
+  settings.subSteps = subSteps;
+  World world(settings);
+  const int links = 20;
+  const Real linkLength = Real(0.5);
+  BodyId previous{};
+  Vec2 top = Vec2(0, 20);
+  double linkMass = 0;
+  for (int i = 0; i < links; ++i) {
+    Vec2 joint = top - Vec2(0, linkLength * Real(i));
+    BodyId link = addBox(world, {.center = joint - Vec2(0, linkLength / 2),
+                                 .halfWidth = Real(0.05),
+                                 .halfHeight = linkLength / 2});
+    linkMass = massOf(world, link);
+    addJoint(world, link, previous, joint, joint, RevoluteJointSettings{});
+    previous = link;
+  }
+  Vec2 end = top - Vec2(0, linkLength * links);
+  // A weight of 300 links' mass: a dense box under the last link.
+  BodyDef def =
+      makeBodyDef(Shape::makePolygon(makeBox(Real(0.5), Real(0.5))), end - Vec2(0, Real(0.5)), {});
+  def.materialOverride.density = Real(300 * linkMass);
+  BodyId weight = world.createBody(def).id;
+  addJoint(world, weight, previous, end, end, RevoluteJointSettings{});
+  double nominal = linkLength * links + 0.5;
+  double worst = 0;
+  record(world, 5, [&] {
+    double reach = top.y() - stateOf(world, weight).position.y();
+    worst = std::max(worst, reach / nominal - 1);
+    return 0.0;
+  });
+  EXPECT_NEAR(massOf(world, weight) / linkMass, 300, 1);
+  return worst;
+}
+
+// Rigid joints are springs of a quarter of the sub-step rate relative to
+// the light links' mass, and the weight's pull stretches each of them: the
+// stretch falls with the square of the sub-steps. The target holds from 16
+// sub-steps on (held at 32); the default 4 stretch by about 16 % (printed).
+TEST(JointAccuracy, HeavyChain_300To1WeightOn20Links_StretchesBelow1Percent) {
+  for (int subSteps : {4, 8, 16}) {
+    std::printf("measured: heavy chain worst stretch, %d sub-steps = %.5g\n", subSteps,
+                heavyChainStretch(subSteps));
+  }
+  double stretch = heavyChainStretch(32);
+  std::printf("measured: heavy chain worst stretch, 32 sub-steps = %.5g\n", stretch);
+  EXPECT_LT(stretch, 0.01);
+}
+
+TEST(JointAccuracy, Rope_NeverExceedsItsLengthByMoreThan1cm) {
+  World world;
+  BodyId bob = addCircle(world, {.center = Vec2(Real(0.5), 0), .radius = Real(0.2)});
+  JointId rope = addJoint(world, bob, BodyId{}, Vec2(Real(0.5), 0), Vec2::Zero(),
+                          RopeJointSettings{.maxLength = 3});
+  bool wasSlack = false;
+  double worst = highestOver(world, 6, [&] {
+    double length = world.jointState(rope)->length;
+    wasSlack = wasSlack || length < 2.5;
+    return length - 3;
+  });
+  report("rope worst excess (m)", worst);
+  EXPECT_TRUE(wasSlack);
+  EXPECT_LT(worst, 0.01);
+}
+
+// ---- motors and limits ----
+
+TEST(JointAccuracy, RevoluteMotor_ReachesAndHoldsItsSpeedUnderALoad_Within1Percent) {
+  World world;
+  // An unbalanced bar pinned at one end: gravity's torque changes sign as it
+  // turns. The joint's speed is B's (the world's) relative to A: the bar
+  // turns at -motorSpeed.
+  BodyId bar = addBox(world, {.center = Vec2(1, 0), .halfWidth = 1, .halfHeight = Real(0.1)});
+  double maxTorque = 10 * massOf(world, bar) * kG * 1;
+  addJoint(world, bar, BodyId{}, Vec2::Zero(), Vec2::Zero(),
+           RevoluteJointSettings{
+               .enableMotor = true, .motorSpeed = 3, .maxMotorTorque = Real(maxTorque)});
+  simulate(world, 0.5);
+  double worst = highestOver(
+      world, 4, [&] { return std::abs(-stateOf(world, bar).angularVelocity / 3.0 - 1); });
+  report("revolute motor worst speed error", worst);
+  EXPECT_LT(worst, 0.01);
+}
+
+TEST(JointAccuracy, RevoluteLimit_HoldsAHeavyBarWithin0p01Rad) {
+  World world;
+  BodyId bar = addBox(
+      world,
+      {.center = Vec2(1, 0), .halfWidth = 1, .halfHeight = Real(0.1), .material = Material::Metal});
+  BodyId weight = addBox(world, {.center = Vec2(Real(2.2), 0),
+                                 .halfWidth = Real(0.2),
+                                 .halfHeight = Real(0.2),
+                                 .material = Material::Metal});
+  addJoint(world, weight, bar, Vec2(Real(2.2), 0), Vec2(Real(2.2), 0), WeldJointSettings{});
+  JointId hinge =
+      addJoint(world, bar, BodyId{}, Vec2::Zero(), Vec2::Zero(),
+               RevoluteJointSettings{
+                   .enableLimit = true, .lowerAngle = Real(-0.25), .upperAngle = Real(0.25)});
+  // The bar falls clockwise: relative to it the world (B) turns the other
+  // way, so the upper limit carries the load.
+  double highest = highestOver(world, 3, [&] { return double(world.jointState(hinge)->angle); });
+  report("revolute limit worst overshoot (rad)", highest - 0.25);
+  EXPECT_GT(highest, 0.24);
+  EXPECT_LT(highest, 0.25 + 0.01);
+}
+
+TEST(JointAccuracy, PrismaticLimit_HoldsAHangingLoadWithin1cm_UpdateSetsTheMotor) {
+  World world;
+  BodyId slider = addBox(world, {.center = Vec2(0, 5), .material = Material::Metal});
+  JointId rail = addJoint(
+      world, slider, BodyId{}, Vec2(0, 5), Vec2(0, 5),
+      PrismaticJointSettings{.axis = Vec2(0, 1), .enableLimit = true, .lower = -1, .upper = 1});
+  // Translation is B's (the world's) anchor relative to A's: the falling
+  // slider drives it up to the upper limit.
+  double highest =
+      highestOver(world, 2, [&] { return double(world.jointState(rail)->translation); });
+  report("prismatic limit worst overshoot (m)", highest - 1);
+  EXPECT_GT(highest, 0.99);
+  EXPECT_LT(highest, 1 + 0.01);
+  EXPECT_NEAR(stateOf(world, slider).position.x(), 0, 0.001);
+  // An update sets the motor's numbers; it does not switch the motor on.
+  double force = 3 * massOf(world, slider) * kG;
+  ASSERT_TRUE(
+      world.updateJoint(rail, {.motorSpeed = Real(0.5), .maxMotorForce = Real(force)}).ok());
+  auto settings = std::get<PrismaticJointSettings>(world.jointDescription(rail)->settings);
+  EXPECT_EQ(settings.motorSpeed, Real(0.5));
+  EXPECT_FALSE(settings.enableMotor);  // updating a motor does not enable it
+}
+
+TEST(JointAccuracy, PrismaticMotor_HoldsSpeedAgainstGravity_Within1Percent) {
+  World world;
+  BodyId slider = addBox(world, {.center = Vec2(0, 0), .material = Material::Metal});
+  double force = 3 * massOf(world, slider) * kG;
+  // The world's anchor moves down relative to the slider: the slider rises.
+  addJoint(world, slider, BodyId{}, Vec2(0, 0), Vec2(0, 0),
+           PrismaticJointSettings{.axis = Vec2(0, 1),
+                                  .enableMotor = true,
+                                  .motorSpeed = Real(-0.5),
+                                  .maxMotorForce = Real(force)});
+  simulate(world, 0.2);
+  double worst = highestOver(
+      world, 2, [&] { return std::abs(stateOf(world, slider).linearVelocity.y() / 0.5 - 1.0); });
+  report("prismatic motor worst speed error", worst);
+  EXPECT_LT(worst, 0.01);
+}
+
+// ---- weld, wheel, mouse ----
+
+TEST(JointAccuracy, Weld_KeepsTwoBoxesRigidThroughADrop_Within1cmAnd0p01Rad) {
+  World world;
+  addGround(world);
+  BodyId a = addBox(world, {.center = Vec2(0, 3), .angle = Real(0.3)});
+  BodyId b = addBox(world, {.center = Vec2(1, Real(3.3))});
+  addJoint(world, a, b, Vec2(Real(0.5), Real(3.15)), Vec2(Real(0.5), Real(3.15)),
+           WeldJointSettings{});
+  Transform ta0{stateOf(world, a).position, Rot::fromAngle(stateOf(world, a).angle)};
+  Vec2 local0 = ta0.applyInverse(stateOf(world, b).position);
+  double relative0 = stateOf(world, b).angle - stateOf(world, a).angle;
+  double worstOffset = 0;
+  double worstTurn = 0;
+  record(world, 3, [&] {
+    BodyState sa = stateOf(world, a);
+    BodyState sb = stateOf(world, b);
+    Transform ta{sa.position, Rot::fromAngle(sa.angle)};
+    worstOffset = std::max(worstOffset, double((ta.applyInverse(sb.position) - local0).norm()));
+    worstTurn = std::max(
+        worstTurn, std::abs(std::remainder(double(sb.angle - sa.angle) - relative0, 2 * kPi)));
+    return 0.0;
+  });
+  report("weld worst offset (m)", worstOffset);
+  report("weld worst relative turn (rad)", worstTurn);
+  EXPECT_LT(worstOffset, 0.01);
+  EXPECT_LT(worstTurn, 0.01);
+}
+
+TEST(JointAccuracy, WheelSuspensionPeriod_Within1Percent_MotorSpeedWithin1Percent) {
+  World world;
+  BodyId chassis = addBox(world, {.center = Vec2(0, 5), .halfWidth = 2, .isStatic = true});
+  BodyId wheel =
+      addCircle(world, {.center = Vec2(0, 3), .radius = Real(0.4), .ignoreGravity = true});
+  double mass = massOf(world, wheel);
+  double stiffness = mass * std::pow(2 * kPi / 0.5, 2);
+  // The spring rests where the joint was made; a kick starts the bounce.
+  ASSERT_TRUE(world.setVelocity(wheel, Vec2(0, 1), 0).ok());
+  addJoint(world, chassis, wheel, Vec2(0, 3), Vec2(0, 3),
+           WheelJointSettings{.axis = Vec2(0, 1),
+                              .stiffness = Real(stiffness),
+                              .enableMotor = true,
+                              .motorSpeed = 8,
+                              .maxMotorTorque = 100});
+  Samples s = record(world, 5.2, [&] { return double(stateOf(world, wheel).position.y()) - 3; });
+  double ratio = s.meanPeriod(0) / 0.5;
+  report("wheel suspension period relative error", ratio - 1);
+  report("wheel motor speed relative error", stateOf(world, wheel).angularVelocity / 8 - 1);
+  EXPECT_NEAR(ratio, 1, 0.01);
+  EXPECT_NEAR(stateOf(world, wheel).angularVelocity / 8, 1, 0.01);
+  EXPECT_NEAR(stateOf(world, wheel).position.x(), 0, 0.001);
+}
+
+TEST(JointAccuracy, MouseJoint_PullsToTheTargetWithAtMostMaxForce) {
+  World world;
+  BodyId box = addBox(world, {.center = Vec2(0, 0), .ignoreGravity = true});
+  double mass = massOf(world, box);
+  double maxForce = 2 * mass;  // at most 2 m/s^2
+  JointId mouse = addJoint(
+      world, box, BodyId{}, Vec2(0, 0), Vec2(0, 0),
+      MouseJointSettings{
+          .maxForce = Real(maxForce), .stiffness = Real(50 * mass), .damping = Real(14 * mass)});
+  ASSERT_TRUE(world.updateJoint(mouse, {.target = Vec2(3, 0)}).ok());
+  double fastestGain = 0;
+  Real previous = 0;
+  record(world, 6, [&] {
+    Real v = stateOf(world, box).linearVelocity.norm();
+    fastestGain = std::max(fastestGain, double(v - previous) / kDt);
+    previous = v;
+    return 0.0;
+  });
+  double miss = (stateOf(world, box).position - Vec2(3, 0)).norm();
+  report("mouse final distance to target (m)", miss);
+  report("mouse peak acceleration / (maxForce/m)", fastestGain / 2);
+  EXPECT_LT(miss, 0.01);
+  EXPECT_LT(fastestGain, 2 * 1.001);
+  EXPECT_NEAR(world.jointState(mouse)->reactionForce.norm(), 0, maxForce * 0.05);
+}
+
+}  // namespace
+}  // namespace impulse::test
