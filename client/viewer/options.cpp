@@ -39,9 +39,13 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
       ->option_text("N");
   app.add_flag("--no-vsync", [&options](std::int64_t) { options.vsync = false; },
                "do not wait for the display's refresh");
+  app.add_option("--token", options.connect.token,
+                 "access token sent in Hello; the admin token gives the admin role (see "
+                 "docs/server.md)")
+      ->option_text("T");
   app.footer(
-      "Environment: IMPULSE_FONT overrides the panel font; SDL_VIDEODRIVER=offscreen runs "
-      "without a display.");
+      "Environment: IMPULSE_TOKEN is the default --token; IMPULSE_FONT overrides the panel "
+      "font; SDL_VIDEODRIVER=offscreen runs without a display.");
 }
 
 std::optional<std::string> applyText(const TextValues& text, ViewerOptions& options) {
@@ -84,6 +88,8 @@ ParsedViewerOptions parseViewerOptions(std::span<const std::string_view> args) {
   ViewerOptions options;
   options.connect.name = "impulse-viewer";
   options.fontPath = defaultFontPath();
+  // As impulse-cli: the environment's token unless --token overrides it.
+  if (const char* token = std::getenv("IMPULSE_TOKEN")) options.connect.token = token;
   TextValues text;
   CLI::App app("", "impulse-viewer");
   describe(app, options, text);

@@ -2,8 +2,8 @@
 // that name the line, and exit codes.
 #include <sys/wait.h>
 
+#include <cctype>
 #include <cstdio>
-#include <regex>
 
 #include "net_test_support.h"
 
@@ -12,6 +12,21 @@ namespace {
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
+}
+
+// A '.' followed by ten or more digits: a number printed with its double
+// widening's digits. Scanned by hand: std::regex trips GCC 12's
+// -Wmaybe-uninitialized in sanitizer builds.
+bool hasLongFraction(const std::string& line) {
+  for (std::size_t dot = line.find('.'); dot != std::string::npos; dot = line.find('.', dot + 1)) {
+    std::size_t digits = 0;
+    while (dot + 1 + digits < line.size() &&
+           std::isdigit(static_cast<unsigned char>(line[dot + 1 + digits]))) {
+      ++digits;
+    }
+    if (digits >= 10) return true;
+  }
+  return false;
 }
 
 TEST(Cli, RunsEveryCommandAndPrintsOneJsonLineEach) {
@@ -59,8 +74,7 @@ TEST(Cli, RunsEveryCommandAndPrintsOneJsonLineEach) {
   // Numbers as people write them: integral values without ".0", single
   // precision state without the digits of its double widening.
   EXPECT_TRUE(contains(run.lines[0], R"("tick_hz":60,"snapshot_hz":30)")) << run.lines[0];
-  const std::regex longFraction(R"(\.\d{10,})");
-  for (const auto& line : run.lines) EXPECT_FALSE(std::regex_search(line, longFraction)) << line;
+  for (const auto& line : run.lines) EXPECT_FALSE(hasLongFraction(line)) << line;
 }
 
 TEST(Cli, JointWordsMakeEveryKind_AndQueryJointDescribesOne) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <vector>
 
 namespace impulse::viewer {
@@ -32,6 +33,17 @@ TEST(ViewerOptions, ParsesEveryFlag) {
   EXPECT_FALSE(parsed.options->vsync);
 }
 
+TEST(ViewerOptions, TokenComesFromTheFlag_ElseFromImpulseToken) {
+  unsetenv("IMPULSE_TOKEN");
+  EXPECT_EQ(parse({}).options->connect.token, "");
+  EXPECT_EQ(parse({"--token", "t0k"}).options->connect.token, "t0k");
+  setenv("IMPULSE_TOKEN", "from-env", 1);
+  EXPECT_EQ(parse({}).options->connect.token, "from-env");
+  EXPECT_EQ(parse({"--token=t0k"}).options->connect.token, "t0k");
+  unsetenv("IMPULSE_TOKEN");
+  EXPECT_FALSE(parse({"--token"}).options);  // a value is required
+}
+
 TEST(ViewerOptions, RefusesBadValuesWithAMessage) {
   for (const auto& args : std::vector<std::vector<std::string_view>>{
            {"--connect", "nohost"}, {"--size", "80x60"}, {"--preset", "15"}, {"--frames"},
@@ -49,7 +61,7 @@ TEST(ViewerOptions, UsageListsEveryFlagInAlignedColumns) {
   const std::string usage = viewerUsage();
   std::size_t column = std::string::npos;
   for (const char* flag : {"--connect", "--size", "--preset", "--screenshot", "--frames",
-                           "--no-vsync", "-h,--help"}) {
+                           "--no-vsync", "--token", "-h,--help"}) {
     const auto at = usage.find(std::string("  ") + flag) + 2;
     ASSERT_NE(at, std::string::npos + 2) << flag;
     // Each description starts in the same column as the others.

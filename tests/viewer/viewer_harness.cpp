@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <thread>
+#include <utility>
 
 namespace impulse::viewer_test {
 
@@ -22,7 +23,7 @@ client::ConnectOptions observerOptions(std::uint16_t port) {
   return options;
 }
 
-ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height) {
+ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::string token) {
   // No display in CI: SDL's offscreen driver and its software renderer,
   // drawing straight into the window surface (without framebuffer
   // acceleration SDL never loads Mesa through EGL, whose unloaded drivers
@@ -33,6 +34,7 @@ ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height) {
   viewer::ViewerOptions options;
   options.connect.port = port;
   options.connect.name = "viewer-under-test";
+  options.connect.token = std::move(token);
   options.width = width;
   options.height = height;
   options.fontPath = viewer::defaultFontPath();

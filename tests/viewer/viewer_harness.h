@@ -23,7 +23,9 @@ client::ConnectOptions observerOptions(std::uint16_t port);
 
 class ViewerHarness {
  public:
-  explicit ViewerHarness(std::uint16_t port, int width = 1280, int height = 720);
+  /// `token` is sent in Hello, as --token would send it.
+  explicit ViewerHarness(std::uint16_t port, int width = 1280, int height = 720,
+                         std::string token = {});
 
   viewer::App& app() { return *app_; }
   /// Runs frames (about 60 per second) until `done` or `timeout`; true if done.
