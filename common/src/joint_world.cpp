@@ -104,6 +104,7 @@ std::string checkPoint(const WorldData& world, const char* field, const Vec2& p)
 std::string validateJoint(const WorldData& world, const JointDef& def) {
   const Body* a = world.find(def.bodyA);
   const Body* b = world.find(def.bodyB);
+  if (def.bodyA.isNull()) return "bodyA must be a body; only bodyB may be the world (null)";
   if (a == nullptr) return "bodyA is not a live body (unknown or removed)";
   if (!def.bodyB.isNull() && b == nullptr) return "bodyB is not a live body (unknown or removed)";
   if (def.bodyA == def.bodyB) return "bodyA and bodyB are the same body";
