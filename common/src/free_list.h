@@ -1,10 +1,14 @@
 #pragma once
-// Slot reuse for the engine's arrays (bodies, contacts; joints tomorrow):
-// removed slots are handed out again, last freed first, so an array grows
-// only to its peak population and slot order stays deterministic.
+// Slot arrays: the engine's elements (bodies, contacts, joints) live in
+// vectors whose removed slots are handed out again, last freed first, so an
+// array grows only to its peak population and slot order stays
+// deterministic. Bodies and joints are named by ids that carry the slot and
+// its generation (BodyId, JointId), so a stale id finds nothing.
 
 #include <cstdint>
 #include <vector>
+
+#include "impulse/body.h"
 
 namespace impulse {
 
@@ -23,5 +27,30 @@ class FreeList {
  private:
   std::vector<std::int32_t> free_;
 };
+
+/// The live element `id` names (slot in range, alive, same generation), or
+/// null. Elements have `alive` and `generation`; ids have slot(),
+/// generation() and isNull(), with BodyId's generation bits.
+template <class Elements, class Id>
+auto findLive(Elements& elements, Id id) -> decltype(&elements[0]) {
+  const std::int32_t slot = id.slot();
+  if (id.isNull() || slot < 0 || slot >= static_cast<std::int32_t>(elements.size())) return nullptr;
+  auto& element = elements[std::size_t(slot)];
+  if (!element.alive || (element.generation & BodyId::kGenerationMask) != id.generation()) {
+    return nullptr;
+  }
+  return &element;
+}
+
+/// The ids of every live element, in slot order (`count` of them).
+template <class Id, class Elements>
+std::vector<Id> liveIds(const Elements& elements, int count) {
+  std::vector<Id> ids;
+  ids.reserve(std::size_t(count));
+  for (std::size_t slot = 0; slot < elements.size(); ++slot) {
+    if (elements[slot].alive) ids.push_back(Id::make(std::int32_t(slot), elements[slot].generation));
+  }
+  return ids;
+}
 
 }  // namespace impulse

@@ -11,19 +11,12 @@ namespace impulse {
 
 namespace {
 
-// Shortest readable form: "500", "3.4e+38", "0.02".
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
-
 std::string vector(const Vec2& v) {
   // Appended piece by piece: GCC 12 warns (falsely, -Wrestrict) on "(" + string.
   std::string text = "(";
-  text += number(v.x());
+  text += describeNumber(v.x());
   text += ", ";
-  text += number(v.y());
+  text += describeNumber(v.y());
   text += ')';
   return text;
 }
@@ -60,6 +53,12 @@ std::string checkPush(const WorldData& world, const Vec2& push, const std::optio
 
 }  // namespace
 
+std::string describeNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
 std::string checkBodyMotion(const InputLimits& limits, const Vec2& linearVelocity,
                             Real angularVelocity) {
   if (std::string error = checkFinite(linearVelocity, "velocity"); !error.empty()) return error;
@@ -76,7 +75,7 @@ std::string checkGravity(const InputLimits& limits, const Vec2& gravity) {
   if (std::string error = checkFinite(gravity, "gravity"); !error.empty()) return error;
   if (std::abs(gravity.x()) > limits.maxGravity || std::abs(gravity.y()) > limits.maxGravity) {
     return "gravity " + vector(gravity) + ": components must lie within +-" +
-           number(limits.maxGravity) + " m/s^2";
+           describeNumber(limits.maxGravity) + " m/s^2";
   }
   return {};
 }
@@ -91,7 +90,7 @@ std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds,
   const Vec2& p = *point;
   if (p.x() < lower.x() || p.y() < lower.y() || p.x() > upper.x() || p.y() > upper.y()) {
     return std::string(field) + " " + vector(p) + " is outside " + vector(lower) + " to " +
-           vector(upper) + " (the world bounds grown by " + number(limits.escapeMargin) + " m)";
+           vector(upper) + " (the world bounds grown by " + describeNumber(limits.escapeMargin) + " m)";
   }
   return {};
 }
@@ -99,12 +98,12 @@ std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds,
 std::string checkResultingMotion(const InputLimits& limits, const MotionCheck& motion,
                                  const char* field) {
   if (!(motion.linearSpeed <= limits.maxSpeed)) {
-    return std::string(field) + " gives a speed of " + number(motion.linearSpeed) +
-           " m/s: speeds must lie within 0.." + number(limits.maxSpeed) + " m/s";
+    return std::string(field) + " gives a speed of " + describeNumber(motion.linearSpeed) +
+           " m/s: speeds must lie within 0.." + describeNumber(limits.maxSpeed) + " m/s";
   }
   if (!(motion.angularSpeed <= limits.maxAngularSpeed)) {
-    return std::string(field) + " gives an angular speed of " + number(motion.angularSpeed) +
-           " rad/s: angular speeds must lie within 0.." + number(limits.maxAngularSpeed) + " rad/s";
+    return std::string(field) + " gives an angular speed of " + describeNumber(motion.angularSpeed) +
+           " rad/s: angular speeds must lie within 0.." + describeNumber(limits.maxAngularSpeed) + " rad/s";
   }
   return {};
 }
@@ -137,16 +136,16 @@ std::string checkForce(const WorldData& world, BodyId id, const Vec2& force,
   const double fy = double(body->force.y()) + force.y();
   const double acceleration = double(body->invMass) * length(fx, fy);
   if (!(acceleration <= limits.maxForceAcceleration)) {
-    return "force " + vector(force) + " N gives an acceleration of " + number(acceleration) +
-           " m/s^2: force / mass must lie within 0.." + number(limits.maxForceAcceleration) +
+    return "force " + vector(force) + " N gives an acceleration of " + describeNumber(acceleration) +
+           " m/s^2: force / mass must lie within 0.." + describeNumber(limits.maxForceAcceleration) +
            " m/s^2";
   }
   const double torque = double(body->torque) + leverMoment(*body, point, force);
   const double angular = double(body->invInertia) * std::abs(torque);
   if (!(angular <= limits.maxTorqueAcceleration)) {
-    return "force " + vector(force) + " N gives an angular acceleration of " + number(angular) +
+    return "force " + vector(force) + " N gives an angular acceleration of " + describeNumber(angular) +
            " rad/s^2: torque / inertia must lie within 0.." +
-           number(limits.maxTorqueAcceleration) + " rad/s^2";
+           describeNumber(limits.maxTorqueAcceleration) + " rad/s^2";
   }
   return {};
 }

@@ -11,6 +11,9 @@
 
 namespace impulse {
 
+/// A number as error messages print it, shortest readable: "500", "3.4e+38".
+std::string describeNumber(double value);
+
 /// An impulse (N*s) at `point` (default: the centre of mass).
 std::string checkImpulse(const WorldData& world, BodyId id, const Vec2& impulse,
                          const std::optional<Vec2>& point);

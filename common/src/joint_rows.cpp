@@ -179,14 +179,16 @@ void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumu
   accumulated = next;
 }
 
+// A point constraint's mass for the spring terms: along its stiffer axis.
+Real pointMass(const Mat2& inverseMass) { return 1 / std::max(inverseMass(0, 0), inverseMass(1, 1)); }
+
 // The point spring: (1 + s K) impulse = -(h k c + s v), K the inverse mass.
 void springPoint(const JointRow& row, const Frame& f, Real stiffness, Real damping,
                  Vec2& impulseOut, const JointPass& pass, SolverState& a, SolverState& b,
                  Real maxImpulse = std::numeric_limits<Real>::infinity()) {
   if (!pass.useBias) return;
   Mat2 k = pointInverseMass(row, f);
-  Real mass = 1 / std::max(k(0, 0), k(1, 1));
-  Real s = springVelocityWeight(stiffness, damping, mass, pass.h);
+  Real s = springVelocityWeight(stiffness, damping, pointMass(k), pass.h);
   Vec2 impulse =
       -solve22(Mat2::Identity() + s * k, pass.h * stiffness * f.d + s * pointVelocity(f, a, b));
   if (impulse.norm() > maxImpulse) impulse *= maxImpulse / impulse.norm();
@@ -196,11 +198,6 @@ void springPoint(const JointRow& row, const Frame& f, Real stiffness, Real dampi
 
 // A soft weld has no damping setting: critically damped.
 Real criticalDamping(Real stiffness, Real mass) { return 2 * std::sqrt(stiffness * mass); }
-
-Real pointMass(const JointRow& row, const Frame& f) {
-  Mat2 k = pointInverseMass(row, f);
-  return 1 / std::max(k(0, 0), k(1, 1));
-}
 
 struct Context {
   JointRow& row;
@@ -272,7 +269,7 @@ void solveKind(Context& x, const WeldJointSettings& s) {
     rigidRow(x.row, turn, x.f.angle, p.angular, x.pass, x.a, x.b);
   }
   if (s.linearStiffness > 0) {
-    Real damping = criticalDamping(s.linearStiffness, pointMass(x.row, x.f));
+    Real damping = criticalDamping(s.linearStiffness, pointMass(pointInverseMass(x.row, x.f)));
     springPoint(x.row, x.f, s.linearStiffness, damping, p.pointSpring, x.pass, x.a, x.b);
   } else {
     rigidPoint(x.row, x.f, x.f.d, p.point, x.pass, x.a, x.b);

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "input_limits.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -23,8 +24,8 @@ constexpr Real kPi = std::numbers::pi_v<Real>;
 /// Checks one number: empty when finite and within [lo, hi].
 std::string checkRange(const char* field, Real value, Real lo, Real hi) {
   if (isFinite(value) && value >= lo && value <= hi) return {};
-  return std::string(field) + " must be a finite number in [" + std::to_string(lo) + ", " +
-         std::to_string(hi) + "]";
+  return std::string(field) + " must be a finite number in [" + describeNumber(lo) + ", " +
+         describeNumber(hi) + "]";
 }
 
 /// The first of several checks that failed, or empty.
@@ -88,17 +89,9 @@ std::string checkSettings(const MouseJointSettings& s) {
                     checkSpring("stiffness", s.stiffness, "damping", s.damping));
 }
 
-bool withinReach(const WorldData& world, const Vec2& p) {
-  const AABB& b = world.settings.bounds;
-  Real margin = world.settings.inputLimits.escapeMargin;
-  return isFinite(p) && p.x() >= b.lower.x() - margin && p.y() >= b.lower.y() - margin &&
-         p.x() <= b.upper.x() + margin && p.y() <= b.upper.y() + margin;
-}
-
+// Anchors and targets may lie where a push may act (limits.h).
 std::string checkPoint(const WorldData& world, const char* field, const Vec2& p) {
-  if (withinReach(world, p)) return {};
-  return std::string(field) +
-         " must be finite and within the world bounds grown by the escape margin";
+  return checkApplicationPoint(world.settings.inputLimits, world.settings.bounds, p, field);
 }
 
 std::string validateJoint(const WorldData& world, const JointDef& def) {
@@ -227,20 +220,6 @@ void removeJoint(WorldData& world, std::int32_t index) {
   --world.liveJoints;
 }
 
-Joint* findJoint(WorldData& world, JointId id) {
-  std::int32_t slot = id.slot();
-  if (id.isNull() || slot < 0 || slot >= static_cast<std::int32_t>(world.joints.size()))
-    return nullptr;
-  Joint& joint = world.joints[slot];
-  if (!joint.alive || (joint.generation & BodyId::kGenerationMask) != id.generation())
-    return nullptr;
-  return &joint;
-}
-
-const Joint* findJoint(const WorldData& world, JointId id) {
-  return findJoint(const_cast<WorldData&>(world), id);
-}
-
 }  // namespace
 
 bool jointBlocksContact(const WorldData& world, std::int32_t bodyA, std::int32_t bodyB) {
@@ -275,7 +254,7 @@ JointResult World::createJoint(const JointDef& def) {
 }
 
 bool World::destroyJoint(JointId id) {
-  if (findJoint(*impl_, id) == nullptr) return false;
+  if (findLive(impl_->joints, id) == nullptr) return false;
   removeJoint(*impl_, id.slot());
   return true;
 }
@@ -313,10 +292,10 @@ std::string applyUpdate(Joint& joint, const JointUpdate& update) {
 
 InputResult World::updateJoint(JointId id, const JointUpdate& update) {
   WorldData& w = *impl_;
-  Joint* joint = findJoint(w, id);
+  Joint* joint = findLive(w.joints, id);
   if (joint == nullptr) return {"joint is not a live joint (unknown or removed)"};
-  if (update.target && !withinReach(w, *update.target)) {
-    return {"target must be finite and within the world bounds grown by the escape margin"};
+  if (update.target) {
+    if (std::string error = checkPoint(w, "target", *update.target); !error.empty()) return {error};
   }
   // Checked on a copy, so a refused update changes nothing.
   Joint changed = *joint;
@@ -328,7 +307,7 @@ InputResult World::updateJoint(JointId id, const JointUpdate& update) {
 
 std::optional<JointDescription> World::jointDescription(JointId id) const {
   const WorldData& w = *impl_;
-  const Joint* joint = findJoint(w, id);
+  const Joint* joint = findLive(w.joints, id);
   if (joint == nullptr) return std::nullopt;
   auto bodyId = [&](std::int32_t slot) { return slot == kNullIndex ? BodyId{} : w.idOf(slot); };
   return JointDescription{id,
@@ -342,7 +321,7 @@ std::optional<JointDescription> World::jointDescription(JointId id) const {
 
 std::optional<JointState> World::jointState(JointId id) const {
   const WorldData& w = *impl_;
-  const Joint* joint = findJoint(w, id);
+  const Joint* joint = findLive(w.joints, id);
   if (joint == nullptr) return std::nullopt;
   Transform ta = frameOf(w, joint->edges.bodyA);
   Transform tb = frameOf(w, joint->edges.bodyB);
@@ -359,14 +338,7 @@ std::optional<JointState> World::jointState(JointId id) const {
   return state;
 }
 
-std::vector<JointId> World::jointIds() const {
-  std::vector<JointId> ids;
-  ids.reserve(impl_->liveJoints);
-  for (std::size_t index = 0; index < impl_->joints.size(); ++index) {
-    if (impl_->joints[index].alive) ids.push_back(idOf(*impl_, static_cast<std::int32_t>(index)));
-  }
-  return ids;
-}
+std::vector<JointId> World::jointIds() const { return liveIds<JointId>(impl_->joints, impl_->liveJoints); }
 
 int World::jointCount() const { return impl_->liveJoints; }
 std::span<const JointId> World::removedJoints() const { return impl_->removedJoints; }

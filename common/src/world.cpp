@@ -122,15 +122,8 @@ void hashBits(std::uint64_t& hash, const T& value) {
 
 }  // namespace
 
-Body* WorldData::find(BodyId id) {
-  std::int32_t slot = id.slot();
-  if (id.isNull() || slot < 0 || slot >= static_cast<std::int32_t>(bodies.size())) return nullptr;
-  Body& body = bodies[slot];
-  if (!body.alive || (body.generation & BodyId::kGenerationMask) != id.generation()) return nullptr;
-  return &body;
-}
-
-const Body* WorldData::find(BodyId id) const { return const_cast<WorldData*>(this)->find(id); }
+Body* WorldData::find(BodyId id) { return findLive(bodies, id); }
+const Body* WorldData::find(BodyId id) const { return findLive(bodies, id); }
 
 AABB bodyAABB(const WorldData& world, std::int32_t slot) {
   return computeAABB(world.shapes[slot], world.bodies[slot].transform);
@@ -252,14 +245,7 @@ std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
                          c.rollingResistance};
 }
 
-std::vector<BodyId> World::bodyIds() const {
-  std::vector<BodyId> ids;
-  ids.reserve(impl_->liveBodies);
-  for (std::size_t slot = 0; slot < impl_->bodies.size(); ++slot) {
-    if (impl_->bodies[slot].alive) ids.push_back(impl_->idOf(static_cast<std::int32_t>(slot)));
-  }
-  return ids;
-}
+std::vector<BodyId> World::bodyIds() const { return liveIds<BodyId>(impl_->bodies, impl_->liveBodies); }
 
 int World::bodyCount() const { return impl_->liveBodies; }
 int World::awakeBodyCount() const { return static_cast<int>(impl_->awakeBodies.size()); }
