@@ -227,9 +227,9 @@ void Room::broadcastSnapshot() {
   for (const auto& [id, session] : members_) {
     if (session->subscribed()) subscribers.push_back(session);
   }
-  auto changes = simulation_.takeChanges();
+  WorldChanges& changes = simulation_.takeChanges();
   if (subscribers.empty()) return;
-  const auto delta = snapshots_.delta(std::move(changes));
+  const auto delta = snapshots_.delta(changes);
   lastSnapshotBytes_ = delta->size();
   for (const auto& session : subscribers) session->offerSnapshot(snapshotSequence_, delta);
 }

@@ -39,16 +39,14 @@ void Simulation::step() {
 }
 
 CreateResult Simulation::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
-  const auto created = world_.createCircle(center, radius, options);
-  if (created.ok()) {
-    changes_.added(created.id);
-    ++version_;
-  }
-  return created;
+  return recordCreated(world_.createCircle(center, radius, options));
 }
 
 CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
-  const auto created = world_.createPolygon(points, options);
+  return recordCreated(world_.createPolygon(points, options));
+}
+
+CreateResult Simulation::recordCreated(CreateResult created) {
   if (created.ok()) {
     changes_.added(created.id);
     ++version_;
@@ -136,7 +134,11 @@ void Simulation::setPaused(bool paused) {
   ++version_;
 }
 
-WorldChanges Simulation::takeChanges() { return std::exchange(changes_, WorldChanges()); }
+WorldChanges& Simulation::takeChanges() {
+  std::swap(changes_, taken_);
+  changes_.clear();
+  return taken_;
+}
 
 std::uint64_t Simulation::stateHash() {
   if (hashVersion_ != version_) {

@@ -40,7 +40,7 @@ bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
 
 SnapshotBuilder::SnapshotBuilder(const Simulation& simulation) : simulation_(simulation) {}
 
-SharedFrame SnapshotBuilder::delta(WorldChanges changes) {
+SharedFrame SnapshotBuilder::delta(WorldChanges& changes) {
   if (changes.wasReplaced()) return full();
   const World& world = simulation_.world();
   // Thousands of small sub-messages: an arena makes their allocation cheap.

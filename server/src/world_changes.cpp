@@ -35,8 +35,18 @@ void WorldChanges::changed(std::span<const BodyId> ids, int bodyCount) {
 }
 
 void WorldChanges::replaced() {
-  *this = WorldChanges();
+  clear();
   replaced_ = true;
+}
+
+void WorldChanges::clear() {
+  added_.clear();
+  removed_.clear();
+  leftWorld_.clear();
+  changed_.clear();
+  jointsAdded_.clear();
+  jointsRemoved_.clear();
+  replaced_ = false;
 }
 
 void WorldChanges::normalise() {

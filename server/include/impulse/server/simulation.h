@@ -63,8 +63,9 @@ class Simulation {
   const PresetInfo& preset() const { return preset_; }
   /// Changes with every change of the world or its meta: names its state.
   std::uint64_t version() const { return version_; }
-  /// The changes since the last call, forgotten here.
-  WorldChanges takeChanges();
+  /// The changes since the last call, forgotten here. Valid until the next
+  /// call: two buffers take turns, so a broadcast allocates no new lists.
+  WorldChanges& takeChanges();
 
   /// Wall-clock milliseconds of the world steps over the last second.
   const TickTimes& stepTimes() const { return stepTimes_; }
@@ -74,6 +75,8 @@ class Simulation {
   std::uint64_t bodiesLeftWorld() const { return bodiesLeftWorld_; }
 
  private:
+  /// Records a created body as added (a refused creation changes nothing).
+  CreateResult recordCreated(CreateResult created);
   /// After a successful change: records `id` (if any) as changed for snapshots.
   void changedBody(BodyId id);
   /// Records the joints the world removed with their bodies (last
@@ -83,6 +86,8 @@ class Simulation {
   double tickHz_;
   World world_;
   WorldChanges changes_;
+  /// The changes last taken (takeChanges), kept for their lists' capacity.
+  WorldChanges taken_;
   PresetInfo preset_;
   std::uint64_t version_ = 0;
   std::uint64_t tick_ = 0;

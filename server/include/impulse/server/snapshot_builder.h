@@ -22,8 +22,8 @@ class SnapshotBuilder {
   explicit SnapshotBuilder(const Simulation& simulation);
 
   /// `changes` as a ServerMessage frame: a full snapshot when the world was
-  /// replaced.
-  SharedFrame delta(WorldChanges changes);
+  /// replaced. Normalises `changes` in place.
+  SharedFrame delta(WorldChanges& changes);
   /// Every body now, as a ServerMessage frame.
   SharedFrame full();
 

@@ -30,6 +30,8 @@ class WorldChanges {
   /// Every body was replaced (clear, preset): the next snapshot is full.
   void replaced();
   bool wasReplaced() const { return replaced_; }
+  /// Forgets every change, keeping the lists' capacity.
+  void clear();
   /// Each list sorted, without repeats; `changed` includes `added`.
   void normalise();
   const std::vector<BodyId>& addedIds() const { return added_; }
