@@ -14,6 +14,9 @@ template <class... F>
 struct Overloaded : F... {
   using F::operator()...;
 };
+// Spelled out: clang before 17 does not deduce an aggregate's arguments.
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
 
 void fill(const DistanceJointSettings& s, v1::DistanceJoint* out) {
   out->set_length(s.length);
