@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "body_metrics.h"
 #include "impulse/client/commands.h"
@@ -260,28 +259,22 @@ void App::recordFigures() {
   energy_.add(float(kineticEnergy(world_.bodies())));
 }
 
-std::vector<JointFigure> App::jointFigures() const {
-  std::vector<JointFigure> figures;
+void App::updateJointFigures() {
+  jointFigures_.clear();
   const client::Client* client = connection_->client();
-  if (client == nullptr || client->mirror().joints().empty()) return figures;
-  std::unordered_map<std::uint32_t, const BodySample*> drawn;
-  for (const DrawnBody& body : world_.bodies()) drawn[body.state.id] = &body.state;
-  auto find = [&](BodyId id) {
-    const auto it = drawn.find(id.value);
-    return it == drawn.end() ? nullptr : it->second;
-  };
+  if (client == nullptr) return;
   for (const auto& [id, joint] : client->mirror().joints()) {
-    if (auto figure = jointFigure(joint, find(joint.bodyA), find(joint.bodyB))) {
-      figures.push_back(*figure);
+    if (auto figure = jointFigure(joint, world_.find(joint.bodyA.value), world_.find(joint.bodyB.value))) {
+      jointFigures_.push_back(*figure);
     }
   }
-  return figures;
 }
 
 void App::drawScene(ImDrawList& list, const ViewTransform& view) {
   scene_.begin(list, view);
   scene_.drawBodies(list, view, world_.bodies(), controls_.selectedBody(), controls_.grabbedBody());
-  scene_.drawJoints(list, view, jointFigures());
+  updateJointFigures();
+  scene_.drawJoints(list, view, jointFigures_);
   if (const client::Client* client = connection_->client(); client && client->mirror().preset()) {
     scene_.drawMarkers(list, view, client->mirror().preset()->markers);
   }

@@ -77,8 +77,9 @@ class App {
   void recordFigures();
   void draw();
   void drawScene(ImDrawList& list, const ViewTransform& view);
-  /// The mirror's joints where the drawn (interpolated) bodies are.
-  std::vector<JointFigure> jointFigures() const;
+  /// The mirror's joints where the drawn (interpolated) bodies are, into
+  /// jointFigures_ (reused every frame).
+  void updateJointFigures();
   bool saveCapture(const std::string& path);
   const client::MirrorBody* mirrored(std::uint32_t id) const;
   std::optional<BodyHit> bodyAt(const Vec2& point) const;
@@ -93,6 +94,7 @@ class App {
   std::unique_ptr<Connection> connection_;
   std::unique_ptr<Gui> gui_;
   WorldRenderer scene_;
+  std::vector<JointFigure> jointFigures_;
   OverlayRenderer overlays_;
   std::optional<v1::BodyInfo> inspected_;
   double nextInspect_ = 0;

@@ -97,4 +97,10 @@ void InterpolatedWorld::update(double now) {
   }
 }
 
+const BodySample* InterpolatedWorld::find(std::uint32_t id) const {
+  const auto it = std::lower_bound(drawn_.begin(), drawn_.end(), id,
+                                   [](const DrawnBody& body, std::uint32_t key) { return body.state.id < key; });
+  return it != drawn_.end() && it->state.id == id ? &it->state : nullptr;
+}
+
 }  // namespace impulse::viewer

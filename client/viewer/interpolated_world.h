@@ -42,7 +42,10 @@ class InterpolatedWorld {
 
   /// Samples the world for a frame drawn at local time `now`.
   void update(double now);
+  /// In ascending id, as the snapshot frames hold them.
   const std::vector<DrawnBody>& bodies() const { return drawn_; }
+  /// The drawn state of body `id`, or null when it is not drawn.
+  const BodySample* find(std::uint32_t id) const;
   SampleMode lastMode() const { return mode_; }
   double renderTime() const { return renderTime_; }
 

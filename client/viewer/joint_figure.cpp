@@ -34,22 +34,24 @@ std::optional<JointFigure> jointFigure(const JointDescription& joint, const Body
   return figure;
 }
 
-std::vector<Vec2> zigzag(const Vec2& from, const Vec2& to, int teeth, Real width) {
+void zigzag(const Vec2& from, const Vec2& to, int teeth, Real width, std::vector<Vec2>& points) {
+  points.clear();
+  points.push_back(from);
   const Vec2 along = to - from;
   const Real length = along.norm();
-  if (length <= 0 || teeth <= 0) return {from, to};
-  const Vec2 side = leftPerp(along) / length * width;
-  // A tenth of the length straight at each end, where the spring is hooked.
-  const Vec2 start = from + along * Real(0.1);
-  const Vec2 step = along * Real(0.8) / Real(2 * teeth);
-  std::vector<Vec2> points{from, start};
-  for (int i = 0; i < 2 * teeth; ++i) {
-    const Real sign = i % 2 == 0 ? Real(1) : Real(-1);
-    points.push_back(start + step * (Real(i) + Real(0.5)) + side * sign);
+  if (length > 0 && teeth > 0) {
+    const Vec2 side = leftPerp(along) / length * width;
+    // A tenth of the length straight at each end, where the spring is hooked.
+    const Vec2 start = from + along * Real(0.1);
+    const Vec2 step = along * Real(0.8) / Real(2 * teeth);
+    points.push_back(start);
+    for (int i = 0; i < 2 * teeth; ++i) {
+      const Real sign = i % 2 == 0 ? Real(1) : Real(-1);
+      points.push_back(start + step * (Real(i) + Real(0.5)) + side * sign);
+    }
+    points.push_back(to - along * Real(0.1));
   }
-  points.push_back(to - along * Real(0.1));
   points.push_back(to);
-  return points;
 }
 
 }  // namespace impulse::viewer

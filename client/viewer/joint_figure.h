@@ -27,8 +27,9 @@ JointLook jointLook(const JointSettings& settings);
 std::optional<JointFigure> jointFigure(const JointDescription& joint, const BodySample* a,
                                        const BodySample* b);
 
-/// A spring's zig-zag from `from` to `to`: straight ends, then `teeth`
-/// corners `width` to either side of the line.
-std::vector<Vec2> zigzag(const Vec2& from, const Vec2& to, int teeth, Real width);
+/// A spring's zig-zag from `from` to `to` into `points` (replacing what it
+/// held, so a caller's buffer is reused every frame): straight ends, then
+/// `teeth` corners `width` to either side of the line.
+void zigzag(const Vec2& from, const Vec2& to, int teeth, Real width, std::vector<Vec2>& points);
 
 }  // namespace impulse::viewer

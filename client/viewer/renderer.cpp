@@ -183,10 +183,9 @@ void WorldRenderer::drawJoints(ImDrawList& list, const ViewTransform& view,
         // Teeth about every 12 px, however long the spring is drawn.
         const float pixels = std::hypot(b.x - a.x, b.y - a.y);
         const int teeth = std::clamp(int(pixels / 12), 3, 40);
+        zigzag(joint.a, joint.b, teeth, 5 / view.scale(), springPoints_);
         points_.clear();
-        for (const Vec2& p : zigzag(joint.a, joint.b, teeth, 5 / view.scale())) {
-          points_.push_back(pixel(view, p));
-        }
+        for (const Vec2& p : springPoints_) points_.push_back(pixel(view, p));
         list.AddPolyline(points_.data(), int(points_.size()), colour, ImDrawFlags_None, kOutline);
         break;
       }

@@ -48,6 +48,7 @@ class WorldRenderer {
   void drawCirclePreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 
   std::vector<ImVec2> points_;
+  std::vector<Vec2> springPoints_;
   std::vector<ImVec2> inset_;
 };
 
