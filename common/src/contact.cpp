@@ -69,6 +69,7 @@ void matchWarmStart(const Manifold& previous, Manifold& next) {
       if (old.id != point.id) continue;
       point.normalImpulse = old.normalImpulse;
       point.tangentImpulse = old.tangentImpulse;
+      point.supportImpulse = old.supportImpulse;
       break;
     }
   }

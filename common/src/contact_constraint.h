@@ -18,6 +18,8 @@ struct ConstraintRef {
   std::int32_t contact = kNullIndex;
   std::int32_t stateA = 0;
   std::int32_t stateB = 0;
+  /// Holds its upper body up in the support pass (support_order.h).
+  bool holdsUp = false;
 };
 
 struct ConstraintPoint {
@@ -27,6 +29,8 @@ struct ConstraintPoint {
   Real normalImpulse = 0;
   Real tangentImpulse = 0;
   Real totalNormalImpulse = 0;
+  /// The support pass's impulse (ManifoldPoint::supportImpulse).
+  Real supportImpulse = 0;
   Real normalMass = 0;
   Real tangentMass = 0;
   Real relativeVelocity = 0;
@@ -61,7 +65,7 @@ template <class F>
 struct WidePoint {
   F anchorAX, anchorAY, anchorBX, anchorBY;
   F baseSeparation;
-  F normalImpulse, tangentImpulse, totalNormalImpulse;
+  F normalImpulse, tangentImpulse, totalNormalImpulse, supportImpulse;
   F normalMass, tangentMass;
   F relativeVelocity, friction;
   F loadOverlap, pushCap;
@@ -87,11 +91,20 @@ struct Avx2BundlesDeleter {
   void operator()(Avx2Bundles* bundles) const;  // contact_solver_wide_avx2.cpp
 };
 
+/// Where a prepared constraint sits: bundle and lane, or (bundle -1) its
+/// index in the overflow list.
+struct ContactPlace {
+  std::int32_t bundle = -1;
+  std::int32_t lane = 0;
+};
+
 struct WideContactSet {
   /// Bundles of the width in use (the other stays empty).
   std::vector<WideConstraint<simd::F4>> bundles4;
   std::unique_ptr<Avx2Bundles, Avx2BundlesDeleter> bundles8;
   std::vector<ContactConstraint> overflow;
+  /// Per ConstraintRef, where its constraint went (the support pass's map).
+  std::vector<ContactPlace> placeOf;
   // Scratch for sorting by colour, kept to avoid allocation per step.
   std::vector<std::int32_t> colorOf;
   std::vector<std::int32_t> order;

@@ -38,6 +38,7 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   collectTouching(world, refs_);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
+  support_.build(world, refs_, world.solverStates.size());
   return kernels_->build(world, refs_, contactSoftness(world.settings, step.h), coloring, wide_);
 }
 
@@ -49,7 +50,11 @@ ContactSolverContext ContactConstraints::contextFor(const SubStep& sub) const {
 }
 
 void ContactConstraints::warmStart(const SubStep& sub) { kernels_->warmStart(contextFor(sub), wide_); }
-void ContactConstraints::solve(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, true); }
+void ContactConstraints::solve(const SubStep& sub) {
+  const ContactSolverContext context = contextFor(sub);
+  kernels_->solve(context, wide_, true);
+  kernels_->support(context, wide_, support_.rows());
+}
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }
 void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }
 void ContactConstraints::restitution(const SubStep& sub) { kernels_->restitution(contextFor(sub), wide_); }

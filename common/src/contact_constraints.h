@@ -7,6 +7,7 @@
 
 #include "constraint_kind.h"
 #include "contact_constraint.h"
+#include "support_order.h"
 
 namespace impulse {
 
@@ -26,6 +27,7 @@ class ContactConstraints final : public ConstraintKind {
   ContactSolverContext contextFor(const SubStep& sub) const;
 
   std::vector<ConstraintRef> refs_;
+  SupportOrder support_;
   WideContactSet wide_;
   const WideContactKernels* kernels_ = nullptr;
   ContactSolverContext context_;

@@ -9,6 +9,7 @@
 
 #include "contact_solver.h"
 #include "graph_coloring.h"
+#include "support_order.h"
 
 namespace impulse {
 
@@ -26,6 +27,8 @@ struct WideContactKernels {
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
   /// The push pass (pushOverlap).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
+  /// The support pass (holdUpSupported) over `rows`, in their order.
+  void (*support)(const ContactSolverContext& context, WideContactSet& set, std::span<const SupportRow> rows);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
   /// Writes the impulses back into the manifolds for next step's warm start.
   void (*store)(const WideContactSet& set, WorldData& world);

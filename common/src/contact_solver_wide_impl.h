@@ -31,6 +31,7 @@ void packPoint(WidePoint<F>& w, int lane, const ConstraintPoint& p) {
   setLane(w.normalImpulse, lane, p.normalImpulse);
   setLane(w.tangentImpulse, lane, p.tangentImpulse);
   setLane(w.totalNormalImpulse, lane, p.totalNormalImpulse);
+  setLane(w.supportImpulse, lane, p.supportImpulse);
   setLane(w.normalMass, lane, p.normalMass);
   setLane(w.tangentMass, lane, p.tangentMass);
   setLane(w.relativeVelocity, lane, p.relativeVelocity);
@@ -187,7 +188,7 @@ void solveFriction(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBo
   F ty = -c.normalX;
   Relative<F> dv = relativeVelocity(a, b, p);
   F vt = dv.vx * tx + dv.vy * ty;
-  F limit = p.friction * p.normalImpulse;
+  F limit = p.friction * (p.normalImpulse + p.supportImpulse);
   F accumulated = simd::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
   F impulse = accumulated - p.tangentImpulse;
   p.tangentImpulse = accumulated;
@@ -220,6 +221,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   const ColorStarts start = sortByColor(set.colorOf, set.order);
 
   bool intrusion = false;
+  set.placeOf.resize(refs.size());
   auto prepare = [&](std::int32_t k, ContactConstraint& into) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     prepareContact(world, ref, softness, into);
@@ -232,12 +234,14 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
     for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
       int lane = (k - start[color]) % F::kLanes;
       if (lane == 0) bundles.push_back(emptyBundle<F>());
+      set.placeOf[std::size_t(set.order[k])] = {static_cast<std::int32_t>(bundles.size() - 1), lane};
       prepare(k, prepared);
       packLane(bundles.back(), lane, prepared, prepared.contact);
     }
   }
   set.overflow.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
+    set.placeOf[std::size_t(set.order[k])] = {-1, static_cast<std::int32_t>(set.overflow.size())};
     set.overflow.emplace_back();
     prepare(k, set.overflow.back());
   }
@@ -306,6 +310,53 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   pushOverlap(overflowContext(context, set));
 }
 
+// One lane as a scalar constraint, with what the support pass reads.
+template <class F>
+void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c) {
+  c.stateA = w.stateA[lane];
+  c.stateB = w.stateB[lane];
+  c.pointCount = 2;  // a one-point manifold's second point has zero mass and is skipped
+  c.normal = Vec2(w.normalX.v[lane], w.normalY.v[lane]);
+  c.invMassA = w.invMassA.v[lane];
+  c.invInertiaA = w.invInertiaA.v[lane];
+  c.invMassB = w.invMassB.v[lane];
+  c.invInertiaB = w.invInertiaB.v[lane];
+  for (int j = 0; j < 2; ++j) {
+    const WidePoint<F>& p = w.points[j];
+    ConstraintPoint& cp = c.points[j];
+    cp.anchorA = Vec2(p.anchorAX.v[lane], p.anchorAY.v[lane]);
+    cp.anchorB = Vec2(p.anchorBX.v[lane], p.anchorBY.v[lane]);
+    cp.baseSeparation = p.baseSeparation.v[lane];
+    cp.normalImpulse = p.normalImpulse.v[lane];
+    cp.totalNormalImpulse = p.totalNormalImpulse.v[lane];
+    cp.supportImpulse = p.supportImpulse.v[lane];
+    cp.normalMass = p.normalMass.v[lane];
+  }
+}
+
+// Bottom-up, one supporting contact at a time (support_order.h): the scalar
+// pass on each lane in turn, so every width gives the same result.
+template <class F>
+void supportWide(const ContactSolverContext& context, WideContactSet& set, std::span<const SupportRow> rows) {
+  auto& bundles = bundlesOf<F>(set);
+  ContactConstraint scratch;
+  for (const SupportRow& row : rows) {
+    const ContactPlace place = set.placeOf[std::size_t(row.ref)];
+    if (place.bundle < 0) {
+      holdUpSupported(context, set.overflow[std::size_t(place.lane)], row.upperIsB);
+      continue;
+    }
+    WideConstraint<F>& w = bundles[std::size_t(place.bundle)];
+    unpackForSupport(w, place.lane, scratch);
+    holdUpSupported(context, scratch, row.upperIsB);
+    for (int j = 0; j < 2; ++j) {
+      setLane(w.points[j].normalImpulse, place.lane, scratch.points[j].normalImpulse);
+      setLane(w.points[j].totalNormalImpulse, place.lane, scratch.points[j].totalNormalImpulse);
+      setLane(w.points[j].supportImpulse, place.lane, scratch.points[j].supportImpulse);
+    }
+  }
+}
+
 template <class F>
 void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   const F threshold = simd::broadcast<F>(-context.restitutionThreshold);
@@ -341,11 +392,12 @@ template <class F>
 void storeWideImpulses(const WideContactSet& set, WorldData& world) {
   for (const WideConstraint<F>& w : bundlesOf<F>(const_cast<WideContactSet&>(set))) {
     alignas(16) float rolling[F::kLanes];
-    alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes];
+    alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], support[2][F::kLanes];
     simd::store(rolling, w.rollingImpulse);
     for (int j = 0; j < 2; ++j) {
       simd::store(normal[j], w.points[j].normalImpulse);
       simd::store(tangent[j], w.points[j].tangentImpulse);
+      simd::store(support[j], w.points[j].supportImpulse);
     }
     for (int lane = 0; lane < F::kLanes; ++lane) {
       if (w.source[lane] < 0) continue;
@@ -354,6 +406,7 @@ void storeWideImpulses(const WideContactSet& set, WorldData& world) {
       for (int j = 0; j < manifold.pointCount; ++j) {
         manifold.points[j].normalImpulse = normal[j][lane];
         manifold.points[j].tangentImpulse = tangent[j][lane];
+        manifold.points[j].supportImpulse = support[j][lane];
       }
     }
   }
@@ -364,7 +417,7 @@ void storeWideImpulses(const WideContactSet& set, WorldData& world) {
 template <class F>
 WideContactKernels makeWideContactKernels() {
   return {F::kLanes,           &buildWideContacts<F>, &warmStartWide<F>,          &solveWide<F>,
-          &pushWide<F>,        &restitutionWide<F>,   &storeWideImpulses<F>};
+          &pushWide<F>,        &supportWide<F>,       &restitutionWide<F>,        &storeWideImpulses<F>};
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ void forgetImpulses(WorldData& world, const Body& body) {
     for (ManifoldPoint& point : contact.manifold.points) {
       point.normalImpulse = 0;
       point.tangentImpulse = 0;
+      point.supportImpulse = 0;
     }
     contact.manifold.rollingImpulse = 0;
   });

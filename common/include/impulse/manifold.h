@@ -26,6 +26,9 @@ struct ManifoldPoint {
 
   Real normalImpulse = 0;
   Real tangentImpulse = 0;
+  /// The support pass's impulse last sub-step (solver state): the part of
+  /// the load the soft rows left to it, which friction is limited by too.
+  Real supportImpulse = 0;
 };
 
 /// Up to two contact points sharing one normal, which points from A to B.
