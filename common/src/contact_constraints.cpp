@@ -53,7 +53,7 @@ void ContactConstraints::warmStart(const SubStep& sub) { kernels_->warmStart(con
 void ContactConstraints::solve(const SubStep& sub) {
   const ContactSolverContext context = contextFor(sub);
   kernels_->solve(context, wide_, true);
-  kernels_->support(context, wide_, support_.rows());
+  kernels_->support(context, wide_, support_);
 }
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }
 void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }

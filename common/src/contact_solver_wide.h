@@ -27,8 +27,9 @@ struct WideContactKernels {
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
   /// The push pass (pushOverlap).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
-  /// The support pass (holdUpSupported) over `rows`, in their order.
-  void (*support)(const ContactSolverContext& context, WideContactSet& set, std::span<const SupportRow> rows);
+  /// The support pass (holdUpSupported) storey by storey, from the ground
+  /// up; each storey's rows backwards when the context reverses the order.
+  void (*support)(const ContactSolverContext& context, WideContactSet& set, const SupportOrder& order);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
   /// Writes the impulses back into the manifolds for next step's warm start.
   void (*store)(const WideContactSet& set, WorldData& world);

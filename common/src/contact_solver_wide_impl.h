@@ -327,32 +327,40 @@ void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c
     cp.anchorA = Vec2(p.anchorAX.v[lane], p.anchorAY.v[lane]);
     cp.anchorB = Vec2(p.anchorBX.v[lane], p.anchorBY.v[lane]);
     cp.baseSeparation = p.baseSeparation.v[lane];
-    cp.normalImpulse = p.normalImpulse.v[lane];
-    cp.totalNormalImpulse = p.totalNormalImpulse.v[lane];
-    cp.supportImpulse = p.supportImpulse.v[lane];
     cp.normalMass = p.normalMass.v[lane];
   }
 }
 
-// Bottom-up, one supporting contact at a time (support_order.h): the scalar
-// pass on each lane in turn, so every width gives the same result.
+// One supporting contact, wherever its constraint sits: the scalar pass on
+// its lane, so every width gives the same result.
 template <class F>
-void supportWide(const ContactSolverContext& context, WideContactSet& set, std::span<const SupportRow> rows) {
-  auto& bundles = bundlesOf<F>(set);
+void supportRow(const ContactSolverContext& context, WideContactSet& set, const SupportRow& row,
+                ContactConstraint& scratch) {
+  const ContactPlace place = set.placeOf[std::size_t(row.ref)];
+  if (place.bundle < 0) {
+    holdUpSupported(context, set.overflow[std::size_t(place.lane)], row.upperIsB);
+    return;
+  }
+  WideConstraint<F>& w = bundlesOf<F>(set)[std::size_t(place.bundle)];
+  unpackForSupport(w, place.lane, scratch);
+  holdUpSupported(context, scratch, row.upperIsB);
+  for (int j = 0; j < 2; ++j) setLane(w.points[j].supportImpulse, place.lane, scratch.points[j].supportImpulse);
+}
+
+// Storey by storey from the ground up. Within a storey the rows run
+// backwards every other sub-step: a box on two supports lifted always left
+// first drifted right (the point-order lean of solveWide, again).
+template <class F>
+void supportWide(const ContactSolverContext& context, WideContactSet& set, const SupportOrder& order) {
   ContactConstraint scratch;
-  for (const SupportRow& row : rows) {
-    const ContactPlace place = set.placeOf[std::size_t(row.ref)];
-    if (place.bundle < 0) {
-      holdUpSupported(context, set.overflow[std::size_t(place.lane)], row.upperIsB);
-      continue;
-    }
-    WideConstraint<F>& w = bundles[std::size_t(place.bundle)];
-    unpackForSupport(w, place.lane, scratch);
-    holdUpSupported(context, scratch, row.upperIsB);
-    for (int j = 0; j < 2; ++j) {
-      setLane(w.points[j].normalImpulse, place.lane, scratch.points[j].normalImpulse);
-      setLane(w.points[j].totalNormalImpulse, place.lane, scratch.points[j].totalNormalImpulse);
-      setLane(w.points[j].supportImpulse, place.lane, scratch.points[j].supportImpulse);
+  const std::span<const SupportRow> rows = order.rows();
+  const std::span<const std::int32_t> starts = order.storeyStarts();
+  for (std::size_t storey = 0; storey + 1 < starts.size(); ++storey) {
+    const std::int32_t first = starts[storey];
+    const std::int32_t end = starts[storey + 1];
+    for (std::int32_t k = 0; k < end - first; ++k) {
+      const std::int32_t r = context.reversePointOrder ? end - 1 - k : first + k;
+      supportRow<F>(context, set, rows[std::size_t(r)], scratch);
     }
   }
 }

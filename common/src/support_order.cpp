@@ -13,6 +13,12 @@ constexpr std::int32_t kUnreached = -1;
 // stand on it.
 constexpr Real kMinUpwardNormal = Real(0.5);
 
+// A jointed body is held by more than its contacts: lifting it alone would
+// fight its joints (a welded pair landing twisted), so the soft rows keep it.
+bool isJointed(const WorldData& world, std::int32_t state) {
+  return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
+}
+
 }  // namespace
 
 // Breadth-first from the static dummy (state 0) over the touching contacts,
@@ -46,6 +52,7 @@ void SupportOrder::levelBodies(std::span<const ConstraintRef> refs, std::size_t 
 
 void SupportOrder::build(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount) {
   rows_.clear();
+  levelStart_.assign(1, 0);
   const Vec2 gravity = world.settings.gravity;
   if (refs.empty() || gravity.squaredNorm() == 0) return;
   const Vec2 up = -gravity.normalized();
@@ -61,7 +68,7 @@ void SupportOrder::build(const WorldData& world, std::span<ConstraintRef> refs, 
     const bool upperIsB = upward > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
-    if (lower == kUnreached || upper <= lower) continue;
+    if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;
     ref.holdsUp = true;
     unsorted_.push_back({static_cast<std::int32_t>(i), upperIsB});
     rowLevel_.push_back(lower);
@@ -76,6 +83,9 @@ void SupportOrder::build(const WorldData& world, std::span<ConstraintRef> refs, 
   for (std::size_t r = 0; r < unsorted_.size(); ++r) {
     rows_[std::size_t(levelStart_[std::size_t(rowLevel_[r])]++)] = unsorted_[r];
   }
+  // The fill moved each start to the next level's: shift back by one.
+  levelStart_.pop_back();
+  levelStart_.insert(levelStart_.begin(), 0);
 }
 
 }  // namespace impulse

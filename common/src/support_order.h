@@ -37,6 +37,8 @@ class SupportOrder {
   /// No gravity, no rows.
   void build(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount);
   std::span<const SupportRow> rows() const { return rows_; }
+  /// Where each storey's rows start in rows(), and (last) their end.
+  std::span<const std::int32_t> storeyStarts() const { return levelStart_; }
 
  private:
   void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);

@@ -167,7 +167,7 @@ TEST_P(HeavyLoad, OnOneSmallBox_SinksUnderOneCentimetre) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Stacking, HeavyLoad, testing::Values(180, 300, 1000),
-                         [](const testing::TestParamInfo<int>& info) { return "Ratio" + std::to_string(info.param); });
+                         [](const testing::TestParamInfo<int>& ratio) { return "Ratio" + std::to_string(ratio.param); });
 
 TEST(Stacking, HeavyBoxHoldsOnLightBoxes_AtMassRatioOneToHundred) {
   // Two 1 m ICE boxes (100 kg each) carry a 2.5 m x 2 m METAL box
