@@ -18,7 +18,7 @@ struct ConstraintRef {
   std::int32_t contact = kNullIndex;
   std::int32_t stateA = 0;
   std::int32_t stateB = 0;
-  /// Holds its upper body up in the support pass (support_order.h).
+  /// Holds its upper body up in the support pass (support_pass.h).
   bool holdsUp = false;
 };
 

@@ -38,8 +38,10 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   collectTouching(world, refs_);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
-  support_.build(world, refs_, world.solverStates.size());
-  return kernels_->build(world, refs_, contactSoftness(world.settings, step.h), coloring, wide_);
+  support_.order(world, refs_, world.solverStates.size());
+  bool intrusion = kernels_->build(world, refs_, contactSoftness(world.settings, step.h), coloring, wide_);
+  kernels_->loadSupport(wide_, support_);
+  return intrusion;
 }
 
 ContactSolverContext ContactConstraints::contextFor(const SubStep& sub) const {
@@ -53,11 +55,14 @@ void ContactConstraints::warmStart(const SubStep& sub) { kernels_->warmStart(con
 void ContactConstraints::solve(const SubStep& sub) {
   const ContactSolverContext context = contextFor(sub);
   kernels_->solve(context, wide_, true);
-  kernels_->support(context, wide_, support_);
+  support_.solve(context.states, context.inverseSubStep, context.reversePointOrder);
 }
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }
 void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }
 void ContactConstraints::restitution(const SubStep& sub) { kernels_->restitution(contextFor(sub), wide_); }
-void ContactConstraints::store(WorldData& world) { kernels_->store(wide_, world); }
+void ContactConstraints::store(WorldData& world) {
+  kernels_->store(wide_, world);
+  support_.store(world, refs_);
+}
 
 }  // namespace impulse

@@ -7,7 +7,7 @@
 
 #include "constraint_kind.h"
 #include "contact_constraint.h"
-#include "support_order.h"
+#include "support_pass.h"
 
 namespace impulse {
 
@@ -27,7 +27,7 @@ class ContactConstraints final : public ConstraintKind {
   ContactSolverContext contextFor(const SubStep& sub) const;
 
   std::vector<ConstraintRef> refs_;
-  SupportOrder support_;
+  SupportPass support_;
   WideContactSet wide_;
   const WideContactKernels* kernels_ = nullptr;
   ContactSolverContext context_;

@@ -1,7 +1,6 @@
 #include "contact_solver.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -212,62 +211,6 @@ void pushOverlap(const ContactSolverContext& context) {
       Real impulse = std::max(-cp.normalMass * c.softness.massScale * (vn + bias), Real(0));
       applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * c.normal);
     }
-  }
-}
-
-namespace {
-
-// The smallest non-negative impulses (at most two points) that lift every
-// point to its target: the 2x2 linear complementarity problem by its four
-// cases. K is symmetric: k11, k12, k22. Solving the two points one after the
-// other instead would give the first a spin the second only half undoes: a
-// box resting flat on the ground crept sideways.
-std::array<Real, 2> liftImpulses(Real k11, Real k12, Real k22, Real b1, Real b2) {
-  Real det = k11 * k22 - k12 * k12;
-  if (det > Real(1e-6) * k11 * k22) {
-    Real l1 = (k22 * b1 - k12 * b2) / det;
-    Real l2 = (k11 * b2 - k12 * b1) / det;
-    if (l1 >= 0 && l2 >= 0) return {l1, l2};
-  }
-  if (b1 > 0 && k12 * b1 / k11 >= b2) return {b1 / k11, 0};
-  if (b2 > 0 && k12 * b2 / k22 >= b1) return {0, b2 / k22};
-  return {0, 0};
-}
-
-}  // namespace
-
-void holdUpSupported(const ContactSolverContext& context, ContactConstraint& c, bool upperIsB) {
-  SolverState& a = context.states[c.stateA];
-  SolverState& b = context.states[c.stateB];
-  SolverState& upper = upperIsB ? b : a;
-  const Real invMass = upperIsB ? c.invMassB : c.invMassA;
-  const Real invInertia = upperIsB ? c.invInertiaB : c.invInertiaA;
-  // The impulse pushes B along the normal and A against it: either way, up.
-  const Real side = upperIsB ? Real(1) : Real(-1);
-  const Vec2 deltaPosition = b.deltaPosition - a.deltaPosition;
-  // Per point: the arm of the upper body, and how much the approach must
-  // slow (the target minus the normal velocity now). A point apart may
-  // close its gap this sub-step; one touching may not approach at all.
-  std::array<Real, 2> arm{0, 0};
-  std::array<Real, 2> shortfall{0, 0};
-  for (int j = 0; j < c.pointCount; ++j) {
-    const ConstraintPoint& cp = c.points[j];
-    if (cp.normalMass == 0) continue;
-    Vec2 moved = deltaPosition + b.deltaRotation.apply(cp.anchorB) - a.deltaRotation.apply(cp.anchorA);
-    Real separation = cp.baseSeparation + moved.dot(c.normal);
-    Real slowestAllowed = separation > 0 ? -separation * context.inverseSubStep : Real(0);
-    arm[j] = cross(upperIsB ? cp.anchorB : cp.anchorA, c.normal);
-    shortfall[j] = slowestAllowed - normalVelocity(a, b, c, cp);
-  }
-  // A missing second point has no shortfall and so never takes an impulse.
-  const Real k11 = invMass + invInertia * arm[0] * arm[0];
-  const Real k12 = invMass + invInertia * arm[0] * arm[1];
-  const Real k22 = invMass + invInertia * arm[1] * arm[1];
-  const std::array<Real, 2> impulse = liftImpulses(k11, k12, k22, shortfall[0], shortfall[1]);
-  for (int j = 0; j < 2; ++j) {
-    c.points[j].supportImpulse = impulse[j];
-    upper.linearVelocity += side * invMass * impulse[j] * c.normal;
-    upper.angularVelocity += side * invInertia * arm[j] * impulse[j];
   }
 }
 

@@ -35,13 +35,6 @@ bool hasIntrusion(const ContactConstraint& constraint, const Manifold& manifold)
 /// only positions keep the result, so pushing adds no energy.
 void pushOverlap(const ContactSolverContext& context);
 
-/// The support pass on one supporting contact (support_order.h): with the
-/// lower body taken as immovable, stops the upper body's points from moving
-/// into it (or, when apart, from closing more than the gap this sub-step).
-/// The impulse is accumulated, so the lower body feels it at the next warm
-/// start.
-void holdUpSupported(const ContactSolverContext& context, ContactConstraint& constraint, bool upperIsB);
-
 /// Bounces: adds restitution to contacts that were approaching fast enough.
 void applyRestitution(const ContactSolverContext& context);
 

@@ -9,7 +9,7 @@
 
 #include "contact_solver.h"
 #include "graph_coloring.h"
-#include "support_order.h"
+#include "support_pass.h"
 
 namespace impulse {
 
@@ -27,9 +27,8 @@ struct WideContactKernels {
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
   /// The push pass (pushOverlap).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
-  /// The support pass (holdUpSupported) storey by storey, from the ground
-  /// up; each storey's rows backwards when the context reverses the order.
-  void (*support)(const ContactSolverContext& context, WideContactSet& set, const SupportOrder& order);
+  /// Gives each support row its prepared constraint (support_pass.h).
+  void (*loadSupport)(const WideContactSet& set, SupportPass& pass);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
   /// Writes the impulses back into the manifolds for next step's warm start.
   void (*store)(const WideContactSet& set, WorldData& world);

@@ -310,12 +310,12 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   pushOverlap(overflowContext(context, set));
 }
 
-// One lane as a scalar constraint, with what the support pass reads.
+// One lane as a scalar constraint, with what a support row takes.
 template <class F>
 void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c) {
   c.stateA = w.stateA[lane];
   c.stateB = w.stateB[lane];
-  c.pointCount = 2;  // a one-point manifold's second point has zero mass and is skipped
+  c.pointCount = 2;  // a one-point manifold's second point has zero mass
   c.normal = Vec2(w.normalX.v[lane], w.normalY.v[lane]);
   c.invMassA = w.invMassA.v[lane];
   c.invInertiaA = w.invInertiaA.v[lane];
@@ -331,37 +331,20 @@ void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c
   }
 }
 
-// One supporting contact, wherever its constraint sits: the scalar pass on
-// its lane, so every width gives the same result.
+// Each support row's constraint, from its lane (or the overflow list).
 template <class F>
-void supportRow(const ContactSolverContext& context, WideContactSet& set, const SupportRow& row,
-                ContactConstraint& scratch) {
-  const ContactPlace place = set.placeOf[std::size_t(row.ref)];
-  if (place.bundle < 0) {
-    holdUpSupported(context, set.overflow[std::size_t(place.lane)], row.upperIsB);
-    return;
-  }
-  WideConstraint<F>& w = bundlesOf<F>(set)[std::size_t(place.bundle)];
-  unpackForSupport(w, place.lane, scratch);
-  holdUpSupported(context, scratch, row.upperIsB);
-  for (int j = 0; j < 2; ++j) setLane(w.points[j].supportImpulse, place.lane, scratch.points[j].supportImpulse);
-}
-
-// Storey by storey from the ground up. Within a storey the rows run
-// backwards every other sub-step: a box on two supports lifted always left
-// first drifted right (the point-order lean of solveWide, again).
-template <class F>
-void supportWide(const ContactSolverContext& context, WideContactSet& set, const SupportOrder& order) {
+void loadSupportWide(const WideContactSet& set, SupportPass& pass) {
+  const auto& bundles = bundlesOf<F>(const_cast<WideContactSet&>(set));
   ContactConstraint scratch;
-  const std::span<const SupportRow> rows = order.rows();
-  const std::span<const std::int32_t> starts = order.storeyStarts();
-  for (std::size_t storey = 0; storey + 1 < starts.size(); ++storey) {
-    const std::int32_t first = starts[storey];
-    const std::int32_t end = starts[storey + 1];
-    for (std::int32_t k = 0; k < end - first; ++k) {
-      const std::int32_t r = context.reversePointOrder ? end - 1 - k : first + k;
-      supportRow<F>(context, set, rows[std::size_t(r)], scratch);
+  const std::span<const SupportRow> rows = pass.rows();
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const ContactPlace place = set.placeOf[std::size_t(rows[r].ref)];
+    if (place.bundle < 0) {
+      pass.load(r, set.overflow[std::size_t(place.lane)]);
+      continue;
     }
+    unpackForSupport(bundles[std::size_t(place.bundle)], place.lane, scratch);
+    pass.load(r, scratch);
   }
 }
 
@@ -425,7 +408,7 @@ void storeWideImpulses(const WideContactSet& set, WorldData& world) {
 template <class F>
 WideContactKernels makeWideContactKernels() {
   return {F::kLanes,           &buildWideContacts<F>, &warmStartWide<F>,          &solveWide<F>,
-          &pushWide<F>,        &supportWide<F>,       &restitutionWide<F>,        &storeWideImpulses<F>};
+          &pushWide<F>,        &loadSupportWide<F>,       &restitutionWide<F>,        &storeWideImpulses<F>};
 }
 
 }  // namespace
