@@ -143,24 +143,25 @@ std::string propertiesFromWire(const v1::BodyOptions& options, BodyOptions& resu
   MaterialOverride& o = result.materialOverride;
   std::optional<Real> friction;
   std::optional<Real> gravityScale;
+  std::optional<Real> linearDamping;
+  std::optional<Real> angularDamping;
   for (std::string error :
        {optionalFromWire(options.has_density(), options.density(), "options.density", o.density),
         optionalFromWire(options.has_friction(), options.friction(), "options.friction", friction),
         optionalFromWire(options.has_restitution(), options.restitution(), "options.restitution",
                          o.restitution),
         optionalFromWire(options.has_gravity_scale(), options.gravity_scale(),
-                         "options.gravity_scale", gravityScale)}) {
+                         "options.gravity_scale", gravityScale),
+        optionalFromWire(true, options.linear_damping(), "options.linear_damping", linearDamping),
+        optionalFromWire(true, options.angular_damping(), "options.angular_damping",
+                         angularDamping)}) {
     if (!error.empty()) return error;
   }
   o.staticFriction = friction;
   o.dynamicFriction = friction;
   result.gravityScale = gravityScale.value_or(Real(1));
-  auto linear = realFromWire(options.linear_damping(), "options.linear_damping");
-  if (!linear.ok()) return std::move(linear.error);
-  result.linearDrag = *linear.value;
-  auto angular = realFromWire(options.angular_damping(), "options.angular_damping");
-  if (!angular.ok()) return std::move(angular.error);
-  result.angularDrag = *angular.value;
+  result.linearDrag = *linearDamping;
+  result.angularDrag = *angularDamping;
   return {};
 }
 
