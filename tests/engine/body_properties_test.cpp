@@ -122,7 +122,8 @@ TEST(BodyProperties, FrictionGivenSlidesLikeCoulomb) {
   const Real mu = Real(0.6);
   CreateResult box = world.createPolygon(
       std::array{Vec2(-0.5, 0), Vec2(0.5, 0), Vec2(0.5, 1), Vec2(-0.5, 1)},
-      {.linearVelocity = Vec2(5, 0), .materialOverride = {.staticFriction = mu, .dynamicFriction = mu}});
+      {.linearVelocity = Vec2(5, 0),
+       .materialOverride = {.staticFriction = mu, .dynamicFriction = mu}});
   ASSERT_TRUE(box.ok()) << box.error;
   simulate(world, 3);
   const double mixed = 0.5 * mu;

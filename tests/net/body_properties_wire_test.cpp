@@ -26,7 +26,8 @@ TEST(BodyPropertiesWire, SpawnOptionsRoundTripInDescriptorAndBodyInfo) {
   options.linearDamping = 0.5;
   options.angularDamping = 0.25;
   options.gravityScale = -0.75;
-  const auto& spawned = result(client.request(client::spawnCircle({5, 5}, 0.5, options)));
+  const v1::CommandResult spawned =
+      result(client.request(client::spawnCircle({5, 5}, 0.5, options)));
   ASSERT_TRUE(spawned.ok()) << spawned.error();
 
   // Values exact in float, so the engine's float holds them unchanged.
@@ -62,7 +63,8 @@ TEST(BodyPropertiesWire, SpawnOptionsRoundTripInDescriptorAndBodyInfo) {
 TEST(BodyPropertiesWire, UnsetPropertiesReportTheMaterials) {
   ServerProcess server(timedRates());
   Client client(localClient(server.port(), "plain", false));
-  const auto& spawned = result(client.request(client::spawnCircle({5, 5}, 0.5, {Material::Foam})));
+  const v1::CommandResult spawned =
+      result(client.request(client::spawnCircle({5, 5}, 0.5, {Material::Foam})));
   ASSERT_TRUE(spawned.ok()) << spawned.error();
   const auto info = client.request(client::queryBody(spawned.body_id())).body_info();
   const MaterialProperties& foam = materialProperties(Material::Foam);
@@ -77,7 +79,8 @@ TEST(BodyPropertiesWire, BadPropertiesAreRefusedNamingTheField) {
   ServerProcess server(timedRates());
   Client client(localClient(server.port(), "bad", false));
   auto refusal = [&](client::SpawnOptions options) {
-    const auto& reply = result(client.request(client::spawnCircle({5, 5}, 0.5, options)));
+    const v1::CommandResult reply =
+        result(client.request(client::spawnCircle({5, 5}, 0.5, options)));
     EXPECT_FALSE(reply.ok());
     return reply.error();
   };

@@ -56,7 +56,7 @@ TEST(TimeScaleServer, OutOfRangeScaleIsRefusedAndChangesNothing) {
   ServerProcess server(timedRates());
   Client client(localClient(server.port(), "bad", false));
   for (double scale : {0.001, 17.0, std::nan("")}) {
-    const auto& refused = result(client.request(client::setTimeScale(scale)));
+    const v1::CommandResult refused = result(client.request(client::setTimeScale(scale)));
     EXPECT_FALSE(refused.ok());
     EXPECT_TRUE(mentions(refused.error(), "set_time_scale: time scale")) << refused.error();
     EXPECT_TRUE(mentions(refused.error(), "[0.01, 16]")) << refused.error();
