@@ -159,7 +159,8 @@ std::string replyReport(std::size_t line, std::string_view command,
                        {"snapshots_skipped", s.snapshots_skipped()},
                        {"bodies_left_world", s.bodies_left_world()},
                        {"guard_repairs", s.guard_repairs()},
-                       {"commands_rate_limited", s.commands_rate_limited()}};
+                       {"commands_rate_limited", s.commands_rate_limited()},
+                       {"scaled_steps_dropped", s.scaled_steps_dropped()}};
   } else {
     report["ok"] = false;
     report["error"] = "unexpected reply";
