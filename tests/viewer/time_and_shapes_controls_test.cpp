@@ -83,7 +83,9 @@ TEST_F(TimeAndShapesTest, SizeKeysScaleTheShapesWithinTheirRange) {
   press(Control::ShapeLarger, {});
   EXPECT_NEAR(controls.shapeSize(), kDefaultShapeSize * kShapeSizeFactor, 1e-6);
   press(Control::StandardShape, {}, 4);
-  const auto& square = sent().at(0).message.spawn_polygon();
+  const auto commands = sent();
+  ASSERT_EQ(commands.size(), 1u);
+  const auto& square = commands[0].message.spawn_polygon();
   // A square of circumradius R has side R sqrt(2).
   const double side = std::hypot(square.vertices(1).x() - square.vertices(0).x(),
                                  square.vertices(1).y() - square.vertices(0).y());
