@@ -58,10 +58,52 @@ bool Arguments::maxWords(std::size_t count) {
   return false;
 }
 
+namespace {
+
+// NAME=VALUE words of the per-body properties (PROTOCOL.md), each setting
+// one SpawnOptions field; ranges are the server's to judge.
+struct PropertyWord {
+  std::string_view name;
+  void (*set)(client::SpawnOptions& options, double value);
+};
+
+constexpr PropertyWord kPropertyWords[] = {
+    {"density", [](client::SpawnOptions& o, double v) { o.density = v; }},
+    {"friction", [](client::SpawnOptions& o, double v) { o.friction = v; }},
+    {"restitution", [](client::SpawnOptions& o, double v) { o.restitution = v; }},
+    {"damping", [](client::SpawnOptions& o, double v) { o.linearDamping = v; }},
+    {"angular-damping", [](client::SpawnOptions& o, double v) { o.angularDamping = v; }},
+    {"gravity-scale", [](client::SpawnOptions& o, double v) { o.gravityScale = v; }},
+};
+
+}  // namespace
+
+bool Arguments::bodyProperty(std::string_view word, client::SpawnOptions& options) {
+  const auto equals = word.find('=');
+  if (equals == std::string_view::npos) return false;
+  for (const PropertyWord& property : kPropertyWords) {
+    if (word.substr(0, equals) != property.name) continue;
+    const auto value = wire::parseNumber<double>(word.substr(equals + 1));
+    if (!value) {
+      note(quoted(word, " has no number after '='"));
+      return false;
+    }
+    property.set(options, *value);
+    return true;
+  }
+  return false;
+}
+
 bool Arguments::bodyFlags(std::size_t from, client::SpawnOptions& options) {
   for (std::size_t i = from; i < words_.size(); ++i) {
     const std::string_view word = words_[i];
-    if (word == "static") {
+    if (word.find('=') != std::string_view::npos) {
+      if (!bodyProperty(word, options)) {
+        note("unexpected " + quoted(word, " (density=, friction=, restitution=, damping=, "
+                                          "angular-damping= or gravity-scale=)"));
+        return false;
+      }
+    } else if (word == "static") {
       options.isStatic = true;
     } else if (word == "nograv") {
       options.ignoreGravity = true;

@@ -30,7 +30,9 @@ class Arguments {
   std::optional<std::uint32_t> idAt(std::size_t i);
   /// False (noted) when more than `count` words were given.
   bool maxWords(std::size_t count);
-  /// Reads MATERIAL, static and nograv in any order from word `from` on.
+  /// Reads MATERIAL, static, nograv and NAME=VALUE properties (density,
+  /// friction, restitution, damping, angular-damping, gravity-scale) in any
+  /// order from word `from` on.
   bool bodyFlags(std::size_t from, client::SpawnOptions& options);
 
   /// Keeps the first problem found on the line.
@@ -41,6 +43,8 @@ class Arguments {
 
  private:
   bool present(std::size_t i);
+  /// One NAME=VALUE word into `options`; false when not one of them.
+  bool bodyProperty(std::string_view word, client::SpawnOptions& options);
 
   std::vector<std::string_view> words_;
   std::string problem_;

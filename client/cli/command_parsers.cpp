@@ -124,6 +124,12 @@ std::optional<std::tuple<std::uint64_t, bool>> parsePing(Arguments& line) {
   return std::tuple{std::uint64_t(0), wantStateHash};
 }
 
+std::optional<std::tuple<double>> parseTimeScale(Arguments& line) {
+  const auto scale = line.numberAt(1);
+  if (!scale || !line.maxWords(2)) return std::nullopt;
+  return std::tuple{*scale};
+}
+
 // A row's parser composed with its builder.
 template <class Parsed, class Builder>
 std::optional<v1::ClientMessage> build(const std::optional<Parsed>& arguments, Builder builder) {

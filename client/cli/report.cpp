@@ -127,6 +127,11 @@ std::string replyReport(std::size_t line, std::string_view command,
     body["restitution"] = number(info.restitution());
     body["static_friction"] = number(info.static_friction());
     body["dynamic_friction"] = number(info.dynamic_friction());
+    body["density"] = number(info.density());
+    body["linear_damping"] = number(info.linear_damping());
+    body["angular_damping"] = number(info.angular_damping());
+    body["gravity_scale"] = number(info.gravity_scale());
+    body["rolling_resistance"] = number(info.rolling_resistance());
     report["ok"] = true;
     report["body"] = std::move(body);
   } else if (reply.has_joint_info()) {
@@ -154,7 +159,8 @@ std::string replyReport(std::size_t line, std::string_view command,
                        {"snapshots_skipped", s.snapshots_skipped()},
                        {"bodies_left_world", s.bodies_left_world()},
                        {"guard_repairs", s.guard_repairs()},
-                       {"commands_rate_limited", s.commands_rate_limited()}};
+                       {"commands_rate_limited", s.commands_rate_limited()},
+                       {"scaled_steps_dropped", s.scaled_steps_dropped()}};
   } else {
     report["ok"] = false;
     report["error"] = "unexpected reply";

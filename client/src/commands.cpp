@@ -17,6 +17,12 @@ void setOptions(const SpawnOptions& options, v1::BodyOptions* out) {
   out->set_ignore_gravity(options.ignoreGravity);
   setPoint({options.velocityX, options.velocityY}, out->mutable_velocity());
   out->set_angular_velocity(options.angularVelocity);
+  if (options.density) out->set_density(*options.density);
+  if (options.friction) out->set_friction(*options.friction);
+  if (options.restitution) out->set_restitution(*options.restitution);
+  out->set_linear_damping(options.linearDamping);
+  out->set_angular_damping(options.angularDamping);
+  if (options.gravityScale) out->set_gravity_scale(*options.gravityScale);
 }
 
 // A CreateJoint with `ends` and `kind` in the oneof field `field` selects.
@@ -178,6 +184,12 @@ v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash) {
   v1::ClientMessage message;
   message.mutable_ping()->set_client_time_us(clientTimeUs);
   message.mutable_ping()->set_want_state_hash(wantStateHash);
+  return message;
+}
+
+v1::ClientMessage setTimeScale(double scale) {
+  v1::ClientMessage message;
+  message.mutable_set_time_scale()->set_scale(scale);
   return message;
 }
 

@@ -13,6 +13,7 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
   simTime_ = snapshot.sim_time();
   gravity_ = wire::vecFromWireUnchecked(snapshot.gravity());
   paused_ = snapshot.paused();
+  timeScale_ = snapshot.time_scale() > 0 ? snapshot.time_scale() : 1;
   if (snapshot.has_preset()) preset_ = wire::presetFromWire(snapshot.preset());
   if (snapshot.full()) {
     bodies_.clear();

@@ -85,6 +85,7 @@ ControlContext App::context() const {
   if (client != nullptr) {
     context.serverPaused = client->mirror().paused();
     context.gravity = client->mirror().gravity();
+    context.timeScale = client->mirror().timeScale();
   }
   if (inspected_ && controls_.selectedBody() &&
       inspected_->descriptor().id() == *controls_.selectedBody()) {
@@ -314,6 +315,7 @@ void App::draw() {
     input.serverPaused = mirror.paused();
     input.tick = mirror.tick();
     input.simTime = mirror.simTime();
+    input.timeScale = mirror.timeScale();
   }
   if (inspected_) input.inspected = &*inspected_;
   drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input,

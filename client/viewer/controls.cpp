@@ -6,6 +6,8 @@
 #include "impulse/scenes/presets.h"
 
 #include "impulse/client/commands.h"
+#include "impulse/client/number_format.h"
+#include "standard_shapes.h"
 
 namespace impulse::viewer {
 
@@ -54,7 +56,8 @@ std::string materialLabel(Material material) {
   return name;
 }
 
-Controls::Controls(ControlSettings settings) : settings_(settings) {}
+Controls::Controls(ControlSettings settings)
+    : settings_(settings), shapeSize_(kDefaultShapeSize) {}
 
 void Controls::send(v1::ClientMessage message, std::string what) {
   outbox_.push_back({std::move(message), std::move(what)});
@@ -203,6 +206,12 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     case Control::ToggleVelocities: overlays_.velocities = !overlays_.velocities; break;
     case Control::PinSelected: pinSelected(context, now); break;
     case Control::CancelOrQuit: cancelOrQuit(now); break;
+    case Control::SlowerTime: scaleTime(context, 0.5, now); break;
+    case Control::FasterTime: scaleTime(context, 2, now); break;
+    case Control::NormalTime: scaleTime(context, 1 / context.timeScale, now); break;
+    case Control::StandardShape: spawnStandardShape(key.index, context, now); break;
+    case Control::ShapeSmaller: resizeShapes(1 / kShapeSizeFactor, now); break;
+    case Control::ShapeLarger: resizeShapes(kShapeSizeFactor, now); break;
     default: break;
   }
 }
@@ -328,6 +337,30 @@ void Controls::pinSelected(const ControlContext& context, double now) {
   const Vec2 pivot =
       context.bodyUnderPointer == selected_ ? pointer_ : *context.selectedPosition;
   send(client::revoluteJoint({*selected_, 0, toPoint(pivot), toPoint(pivot), false}, {}), "pin");
+}
+
+void Controls::scaleTime(const ControlContext& context, double factor, double now) {
+  // The server's range (PROTOCOL.md, "Time"): 0.01x to 16x.
+  constexpr double kSlowest = 0.01;
+  constexpr double kFastest = 16;
+  const double wanted = std::clamp(context.timeScale * factor, kSlowest, kFastest);
+  if (wanted == context.timeScale) {
+    notify("Time scale stays " + client::formatNumber(wanted, 2) + "x (0.01x to 16x)", now);
+    return;
+  }
+  send(client::setTimeScale(wanted), "time scale");
+}
+
+void Controls::spawnStandardShape(int sides, const ControlContext& context, double now) {
+  if (!checkDrawingAllowed(context, now)) return;
+  std::vector<client::Point> vertices;
+  for (const Vec2& v : regularPolygon(sides, pointer_, shapeSize_)) vertices.push_back(toPoint(v));
+  send(client::spawnPolygon(vertices, spawnOptions()), std::string(standardShapeName(sides)));
+}
+
+void Controls::resizeShapes(Real factor, double now) {
+  shapeSize_ = std::clamp(shapeSize_ * factor, kMinShapeSize, kMaxShapeSize);
+  notify("Standard shapes: " + client::formatNumber(shapeSize_, 2) + " m to a corner", now);
 }
 
 std::optional<std::uint32_t> Controls::grabbedBody() const {

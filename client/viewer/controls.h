@@ -19,7 +19,8 @@
 
 namespace impulse::viewer {
 
-/// What a key does; `index` carries the preset (0-10) or the material (0-4).
+/// What a key does; `index` carries the preset (0-14), the material
+/// (0-7) or a standard shape's number of sides (3-6).
 enum class Control {
   PolygonMode,
   CircleMode,
@@ -49,6 +50,14 @@ enum class Control {
   ToggleVelocities,
   PinSelected,
   CancelOrQuit,
+  // Time scale: halve, double, back to 1x.
+  SlowerTime,
+  FasterTime,
+  NormalTime,
+  /// A regular polygon of `index` sides at the cursor, and its size.
+  StandardShape,
+  ShapeSmaller,
+  ShapeLarger,
 };
 
 struct ControlKey {
@@ -84,6 +93,8 @@ struct ControlContext {
   /// The selected body's centre of mass (J pins it there unless the
   /// pointer is on it).
   std::optional<Vec2> selectedPosition{};
+  /// The server's time scale (simulated seconds per wall second).
+  double timeScale = 1;
 };
 
 /// A body under the cursor when the left button went down.
@@ -174,6 +185,8 @@ class Controls {
   bool nextStatic() const { return nextStatic_; }
   bool nextFeelsGravity() const { return nextFeelsGravity_; }
   Material material() const { return material_; }
+  /// Circumradius of the next standard shape, m.
+  Real shapeSize() const { return shapeSize_; }
 
   // Drawing previews.
   const std::vector<Vec2>& polygonPoints() const { return points_; }
@@ -214,6 +227,10 @@ class Controls {
   /// the body).
   void endGrab(bool bodyGone = false);
   void pinSelected(const ControlContext& context, double now);
+  /// Asks for the server's time scale times `factor`, kept in its range.
+  void scaleTime(const ControlContext& context, double factor, double now);
+  void spawnStandardShape(int sides, const ControlContext& context, double now);
+  void resizeShapes(Real factor, double now);
   /// Acts once for a repeating key; false when the key does not repeat.
   bool repeatAction(ControlKey key, const ControlContext& context, double now);
   void repeatHeldKeys(const ControlContext& context, double now);
@@ -241,6 +258,7 @@ class Controls {
   bool nextStatic_ = false;
   bool nextFeelsGravity_ = true;
   Material material_ = Material::Solid;
+  Real shapeSize_;
 
   std::vector<Vec2> points_;
   Vec2 pointer_ = Vec2::Zero();

@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // SPEC.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 28> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
@@ -28,12 +28,15 @@ constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
     {"M", "inspector: click a body, arrows push it"},
     {"J", "pin the selected body to the world (at the cursor)"},
     {"Q / G", "next shapes static / feel gravity"},
-    {"KP 1-5, F5-F9", "SOLID ICE WOOD METAL RUBBER"},
+    {"KP 1-8, F5-F12", "SOLID ICE WOOD METAL RUBBER STONE GLASS FOAM"},
     {"1-9, F1, 0", "preset 1-9, 10, sandbox"},
     {"Shift+1-4", "spring, pendulum and cradle, chain bridge, car"},
     {"W A S D", "nudge gravity while held"},
     {"Enter", "reset gravity"},
     {"", "drawing: sandbox and presets 3, 4"},
+    {"[ ] \\", "time: half, double, 1x speed (0.01x-16x)"},
+    {"T Y U I", "triangle, square, pentagon, hexagon at the cursor"},
+    {"- =", "standard shapes smaller, larger"},
 }};
 
 }  // namespace

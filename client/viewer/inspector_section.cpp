@@ -56,6 +56,10 @@ void drawBodyTable(const v1::BodyInfo& info) {
   row("restitution", formatNumber(info.restitution(), 3));
   row("friction", "static " + formatNumber(info.static_friction(), 3) + ", dynamic " +
                       formatNumber(info.dynamic_friction(), 3));
+  row("density", formatNumber(info.density(), 3) + " kg/m2");
+  row("damping", "linear " + formatNumber(info.linear_damping(), 3) + ", angular " +
+                     formatNumber(info.angular_damping(), 3) + " 1/s");
+  row("gravity scale", formatNumber(info.gravity_scale(), 3));
   ImGui::EndTable();
 }
 

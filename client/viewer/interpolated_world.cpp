@@ -22,11 +22,15 @@ PlayoutSettings playoutSettings(double interval) {
 
 InterpolatedWorld::InterpolatedWorld(double snapshotInterval)
     : buffer_(interpolationSettings(snapshotInterval)),
-      clock_(playoutSettings(snapshotInterval)) {}
+      clock_(playoutSettings(snapshotInterval)),
+      snapshotInterval_(snapshotInterval) {}
 
 void InterpolatedWorld::reset(double snapshotInterval) {
   buffer_ = SnapshotBuffer(interpolationSettings(snapshotInterval));
   clock_ = PlayoutClock(playoutSettings(snapshotInterval));
+  timeBase_.reset();
+  snapshotInterval_ = snapshotInterval;
+  timeScale_ = 1;
   looks_.clear();
   departed_.clear();
   drawn_.clear();
@@ -38,7 +42,7 @@ void InterpolatedWorld::seed(const client::WorldMirror& mirror, double now) {
   for (const auto& [id, body] : mirror.bodies()) {
     looks_[id] = {body.shape, body.material, body.isStatic, body.ignoreGravity};
   }
-  record(mirror, mirror.simTime(), true, mirror.paused(), now);
+  record(mirror, mirror.simTime(), mirror.timeScale(), true, mirror.paused(), now);
 }
 
 void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
@@ -56,11 +60,19 @@ void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
                                  body->ignoreGravity};
     }
   }
-  record(mirror, time, snapshot.full(), snapshot.paused(), now);
+  record(mirror, time, mirror.timeScale(), snapshot.full(), snapshot.paused(), now);
 }
 
-void InterpolatedWorld::record(const client::WorldMirror& mirror, double serverTime, bool full,
-                               bool paused, double now) {
+void InterpolatedWorld::fitSnapshotInterval(const client::WorldMirror& mirror, double timeScale) {
+  if (timeScale == timeScale_ || mirror.tick() == 0) return;
+  timeScale_ = timeScale;
+  const double stepSeconds = mirror.simTime() / double(mirror.tick());
+  clock_.setSnapshotInterval(std::max(snapshotInterval_, stepSeconds / timeScale));
+}
+
+void InterpolatedWorld::record(const client::WorldMirror& mirror, double serverTime,
+                               double timeScale, bool full, bool paused, double now) {
+  fitSnapshotInterval(mirror, timeScale);
   SnapshotFrame frame;
   frame.time = serverTime;
   frame.full = full;
@@ -72,11 +84,11 @@ void InterpolatedWorld::record(const client::WorldMirror& mirror, double serverT
         {id, s.position, s.angle, s.linearVelocity, s.angularVelocity, s.awake});
   }
   buffer_.push(std::move(frame));
-  clock_.onSnapshot(serverTime, now, paused);
+  clock_.onSnapshot(timeBase_.onSnapshot(serverTime, timeScale), now, paused);
 }
 
 void InterpolatedWorld::update(double now) {
-  renderTime_ = clock_.renderTime(now);
+  renderTime_ = timeBase_.toSim(clock_.renderTime(now));
   buffer_.discardBefore(renderTime_);
   mode_ = buffer_.sample(renderTime_, samples_);
 

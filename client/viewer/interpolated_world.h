@@ -12,6 +12,7 @@
 #include "impulse/client/world_mirror.h"
 #include "interpolation.h"
 #include "playout_clock.h"
+#include "playout_time_base.h"
 
 namespace impulse::viewer {
 
@@ -47,17 +48,24 @@ class InterpolatedWorld {
   /// The drawn state of body `id`, or null when it is not drawn.
   const BodySample* find(std::uint32_t id) const;
   SampleMode lastMode() const { return mode_; }
+  /// The simulated time drawn.
   double renderTime() const { return renderTime_; }
 
   const SnapshotBuffer& buffer() const { return buffer_; }
   const PlayoutClock& clock() const { return clock_; }
 
  private:
-  void record(const client::WorldMirror& mirror, double serverTime, bool full, bool paused,
-              double now);
+  void record(const client::WorldMirror& mirror, double serverTime, double timeScale, bool full,
+              bool paused, double now);
+  /// Snapshots come at most every `dt / scale` wall seconds below 1x (one
+  /// step per 1/scale ticks): the playout delay must cover that gap.
+  void fitSnapshotInterval(const client::WorldMirror& mirror, double timeScale);
 
   SnapshotBuffer buffer_;
   PlayoutClock clock_;
+  PlayoutTimeBase timeBase_;
+  double snapshotInterval_;
+  double timeScale_ = 1;
   std::unordered_map<std::uint32_t, BodyLook> looks_;
   /// Bodies gone from the server, with the server time they went at.
   std::vector<std::pair<std::uint32_t, double>> departed_;

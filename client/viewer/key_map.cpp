@@ -9,10 +9,12 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     return ControlKey{Control::LoadPreset, 11 + int(key - SDLK_1)};
   }
   if (key >= SDLK_0 && key <= SDLK_9) return ControlKey{Control::LoadPreset, int(key - SDLK_0)};
-  if (key >= SDLK_KP_1 && key <= SDLK_KP_5) {
+  // Keypad 1-8 and F5-F12: the eight materials (SDL numbers both runs
+  // consecutively).
+  if (key >= SDLK_KP_1 && key <= SDLK_KP_8) {
     return ControlKey{Control::SelectMaterial, int(key - SDLK_KP_1)};
   }
-  if (key >= SDLK_F5 && key <= SDLK_F9) {
+  if (key >= SDLK_F5 && key <= SDLK_F12) {
     return ControlKey{Control::SelectMaterial, int(key - SDLK_F5)};
   }
   switch (key) {
@@ -45,6 +47,18 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     case SDLK_v: return ControlKey{Control::ToggleVelocities};
     case SDLK_j: return ControlKey{Control::PinSelected};
     case SDLK_ESCAPE: return ControlKey{Control::CancelOrQuit};
+    case SDLK_LEFTBRACKET: return ControlKey{Control::SlowerTime};
+    case SDLK_RIGHTBRACKET: return ControlKey{Control::FasterTime};
+    case SDLK_BACKSLASH: return ControlKey{Control::NormalTime};
+    // T Y U I, side by side: 3, 4, 5 and 6 sides.
+    case SDLK_t: return ControlKey{Control::StandardShape, 3};
+    case SDLK_y: return ControlKey{Control::StandardShape, 4};
+    case SDLK_u: return ControlKey{Control::StandardShape, 5};
+    case SDLK_i: return ControlKey{Control::StandardShape, 6};
+    case SDLK_MINUS:
+    case SDLK_KP_MINUS: return ControlKey{Control::ShapeSmaller};
+    case SDLK_EQUALS:
+    case SDLK_KP_PLUS: return ControlKey{Control::ShapeLarger};
     default: return std::nullopt;
   }
 }

@@ -18,6 +18,9 @@ Colour materialColour(Material material) {
     case Material::Wood: return {166, 108, 56};
     case Material::Metal: return {128, 132, 140};
     case Material::Rubber: return {255, 140, 0};
+    case Material::Stone: return {112, 98, 86};
+    case Material::Glass: return {150, 250, 200};
+    case Material::Foam: return {255, 236, 160};
   }
   return {255, 0, 255};
 }

@@ -17,7 +17,8 @@ struct Colour {
   friend bool operator==(const Colour&, const Colour&) = default;
 };
 
-/// SPEC.md: SOLID white, ICE light blue, WOOD brown, METAL grey, RUBBER orange.
+/// SPEC.md: SOLID white, ICE light blue, WOOD brown, METAL grey, RUBBER orange;
+/// issue 15: STONE dark taupe, GLASS pale aqua, FOAM cream.
 Colour materialColour(Material material);
 
 /// Fill of a body: its material colour, whether awake or asleep (sleep shows

@@ -59,6 +59,18 @@ void drawTitle(const PanelFonts& fonts, const PanelInput& input) {
   }
 }
 
+void drawTimeScale(const PanelInput& input, const std::function<void(ControlKey)>& act) {
+  // Slow motion and fast forward keep the step size: only the pace changes.
+  const ImVec4 colour = colourOf(input.timeScale == 1 ? palette::kText : palette::kWarning);
+  ImGui::TextColored(colour, "speed %sx", formatNumber(input.timeScale, 2).c_str());
+  ImGui::SameLine();
+  if (ImGui::Button("slower ([)")) act({Control::SlowerTime});
+  ImGui::SameLine();
+  if (ImGui::Button("1x (\\)")) act({Control::NormalTime});
+  ImGui::SameLine();
+  if (ImGui::Button("faster (])")) act({Control::FasterTime});
+}
+
 void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& act) {
   if (input.link != LinkState::Connected) {
     ImGui::TextDisabled("not connected: the clock is the server's");
@@ -79,6 +91,7 @@ void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& ac
   ImGui::BeginDisabled(!input.serverPaused);
   if (ImGui::Button("Step (.)")) act({Control::StepOnce});
   ImGui::EndDisabled();
+  drawTimeScale(input, act);
 }
 
 void swatch(Colour fill, Colour outline, float thickness) {
@@ -119,7 +132,9 @@ void drawNextShape(const Controls& controls, const std::function<void(ControlKey
   ImGui::SameLine();
   bool gravity = controls.nextFeelsGravity();
   if (ImGui::Checkbox("Gravity (G)", &gravity)) act({Control::ToggleGravity});
-  ImGui::TextUnformatted("Material (KP 1-5, F5-F9):");
+  ImGui::Text("Shapes at the cursor (T Y U I): %s m to a corner (- =)",
+              formatNumber(controls.shapeSize(), 2).c_str());
+  ImGui::TextUnformatted("Material (KP 1-8, F5-F12):");
   drawLegend(controls, act);
 }
 

@@ -26,6 +26,7 @@ struct PanelInput {
   bool serverPaused = false;
   std::uint64_t tick = 0;
   double simTime = 0;
+  double timeScale = 1;  ///< simulated seconds per wall second
   /// The selected body's details (QueryBody), when they arrived.
   const v1::BodyInfo* inspected = nullptr;
   LinkState link = LinkState::Connecting;

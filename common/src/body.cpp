@@ -16,6 +16,8 @@ BodyDef makeBodyDef(const Shape& shape, const Vec2& position, const BodyOptions&
   def.ignoreGravity = options.ignoreGravity;
   def.linearDrag = options.linearDrag;
   def.angularDrag = options.angularDrag;
+  def.materialOverride = options.materialOverride;
+  def.gravityScale = options.gravityScale;
   return def;
 }
 

@@ -21,6 +21,7 @@ struct Body {
   MassProperties mass;
   Real linearDrag = 0;
   Real angularDrag = 0;
+  Real gravityScale = 1;
   // Sizes used by sleeping (how fast the rim moves) and continuous collision
   // (how far a body may move in a step before it could skip a thin wall).
   Real extent = 0;

@@ -28,10 +28,28 @@ bool contains(const AABB& bounds, const Vec2& p) {
          p.y() <= bounds.upper.y();
 }
 
+// The per-body motion properties the material table does not bound.
+std::string checkDragAndGravityScale(const BodyDef& def) {
+  auto outside = [](Real value, Real lo, Real hi) { return !(value >= lo && value <= hi); };
+  const std::string dragRange = " must be in [0, " + describeNumber(kMaxDrag) + "] 1/s";
+  if (outside(def.linearDrag, 0, kMaxDrag)) {
+    return "linear damping " + describeNumber(def.linearDrag) + dragRange;
+  }
+  if (outside(def.angularDrag, 0, kMaxDrag)) {
+    return "angular damping " + describeNumber(def.angularDrag) + dragRange;
+  }
+  if (outside(def.gravityScale, -kMaxGravityScale, kMaxGravityScale)) {
+    return "gravity scale " + describeNumber(def.gravityScale) + " must be in [-" +
+           describeNumber(kMaxGravityScale) + ", " + describeNumber(kMaxGravityScale) + "]";
+  }
+  return {};
+}
+
 std::string validateDef(const WorldData& world, const BodyDef& def) {
   if (!isFinite(def.position) || !isFinite(def.angle) || !isFinite(def.linearVelocity) ||
-      !isFinite(def.angularVelocity) || !isFinite(def.linearDrag) || !isFinite(def.angularDrag)) {
-    return "body has a non-finite position, angle, velocity or drag (NaN or infinity)";
+      !isFinite(def.angularVelocity) || !isFinite(def.linearDrag) || !isFinite(def.angularDrag) ||
+      !isFinite(def.gravityScale)) {
+    return "body has a non-finite position, angle, velocity, drag or gravity scale (NaN or infinity)";
   }
   if (!contains(world.settings.bounds, def.position)) {
     const AABB& b = world.settings.bounds;
@@ -44,7 +62,7 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
       !error.empty()) {
     return error;
   }
-  if (def.linearDrag < 0 || def.angularDrag < 0) return "drag must not be negative";
+  if (std::string error = checkDragAndGravityScale(def); !error.empty()) return error;
   if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
   if (std::string error = validateMaterialOverride(def.materialOverride); !error.empty()) return error;
   if (world.liveBodies >= world.settings.maxBodies) {
@@ -153,6 +171,7 @@ CreateResult World::createBody(const BodyDef& def) {
   body.transform = {def.position, Rot::fromAngle(def.angle)};
   body.linearDrag = def.linearDrag;
   body.angularDrag = def.angularDrag;
+  body.gravityScale = def.gravityScale;
   body.creationOrder = w.nextCreationOrder++;
   w.shapes[slot] = def.shape;
   setMass(body, def.shape, body.coefficients.density);
@@ -242,7 +261,11 @@ std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
                          c.restitution,
                          c.staticFriction,
                          c.dynamicFriction,
-                         c.rollingResistance};
+                         c.rollingResistance,
+                         c.density,
+                         body->linearDrag,
+                         body->angularDrag,
+                         body->gravityScale};
 }
 
 std::vector<BodyId> World::bodyIds() const { return liveIds<BodyId>(impl_->bodies, impl_->liveBodies); }

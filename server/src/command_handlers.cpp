@@ -84,7 +84,7 @@ void loadPreset(CommandContext& context, const v1::LoadPreset& command) {
   const auto material = wire::materialFromWire(command.material());
   if (!material) {
     return context.fail("load_preset.material " + std::to_string(command.material()) +
-                        " is not a material (0-5)");
+                        " is not a material " + wire::materialRange());
   }
   if (command.preset() < 0 || command.preset() >= kPresetCount) {
     return context.fail("load_preset: preset " + std::to_string(command.preset()) +
@@ -223,6 +223,13 @@ void queryJoint(CommandContext& context, const v1::QueryJoint& command) {
   info->set_request_id(context.message.request_id());
   wire::toWire(*description, *state, info);
   context.outcome.reply = std::move(reply);
+}
+
+void setTimeScale(CommandContext& context, const v1::SetTimeScale& command) {
+  if (InputResult changed = context.simulation.setTimeScale(command.scale()); !changed) {
+    return context.fail("set_time_scale: " + changed.error);
+  }
+  context.succeed();
 }
 
 }  // namespace handlers

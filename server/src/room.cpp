@@ -88,6 +88,7 @@ void Room::join(const std::shared_ptr<Session>& session, bool wantSnapshots) {
   welcome->set_admin(session->admin());
   welcome->set_max_commands_per_second(std::uint32_t(options_.maxCommandsPerSecond));
   welcome->set_idle_timeout(options_.idleTimeoutSeconds);
+  welcome->set_time_scale(simulation_.timeScale());
   session->send(message);
   if (wantSnapshots) session->subscribe(*this);
 }
@@ -152,11 +153,27 @@ void Room::runTick() {
   applyCommands(start + period / 2);
   advanceStep(start + period * 3 / 4);
   if (!simulation_.paused()) {
-    simulation_.step();
-    if (snapshotSlot() != lastSnapshotSlot_) broadcastSnapshot();
+    ++runningTicks_;
+    const int stepped = runScaledSteps(start + period * 3 / 4);
+    // Below 1x most ticks run no step: they have nothing new to send.
+    if (stepped > 0 && snapshotSlot() != lastSnapshotSlot_) broadcastSnapshot();
   }
   tickTimes_.record(millisecondsSince(start));
   logStats(Clock::now());
+}
+
+int Room::runScaledSteps(Clock::time_point deadline) {
+  // Like a StepJob: the first step always runs; the others while the tick's
+  // budget lasts. Steps that do not fit are dropped, never owed, so a world
+  // too large for its time scale runs slower instead of falling behind.
+  const int due = simulation_.stepsDueThisTick();
+  int stepped = 0;
+  while (stepped < due && (stepped == 0 || Clock::now() < deadline)) {
+    simulation_.step();
+    ++stepped;
+  }
+  scaledStepsDropped_ += std::uint64_t(due - stepped);
+  return stepped;
 }
 
 void Room::advanceStep(Clock::time_point deadline) {
@@ -213,8 +230,7 @@ void Room::answerPing(const v1::Ping& ping, v1::ServerMessage& pong) {
 }
 
 std::int64_t Room::snapshotSlot() const {
-  return std::int64_t(
-      std::floor(double(simulation_.tick()) * options_.snapshotHz / options_.tickHz));
+  return std::int64_t(std::floor(double(runningTicks_) * options_.snapshotHz / options_.tickHz));
 }
 
 void Room::broadcastSnapshot() {
@@ -258,6 +274,7 @@ v1::ServerStats Room::stats(bool withStateHash) {
   stats.set_guard_repairs(simulation_.world().guardReport().repairedBodies);
   stats.set_commands_rate_limited(commandsRateLimited_);
   stats.set_commands_queued(commands_.size());
+  stats.set_scaled_steps_dropped(scaledStepsDropped_);
   return stats;
 }
 

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace impulse::server {
@@ -132,6 +134,30 @@ void Simulation::clear() {
 void Simulation::setPaused(bool paused) {
   paused_ = paused;
   ++version_;
+}
+
+InputResult Simulation::setTimeScale(double scale) {
+  if (!(scale >= kMinTimeScale && scale <= kMaxTimeScale)) {
+    char message[96];
+    std::snprintf(message, sizeof message, "time scale %g must be in [%g, %g]", scale,
+                  kMinTimeScale, kMaxTimeScale);
+    return {message};
+  }
+  timeScale_ = scale;
+  ticksAtScale_ = 0;
+  stepsAtScale_ = 0;
+  ++version_;
+  return {};
+}
+
+int Simulation::stepsDueThisTick() {
+  ++ticksAtScale_;
+  // The tiny allowance keeps a scale like 0.1 (not exact in binary) from
+  // owing its tenth step one tick late.
+  const auto owed = std::uint64_t(std::floor(timeScale_ * double(ticksAtScale_) + 1e-9));
+  const auto due = owed - stepsAtScale_;
+  stepsAtScale_ = owed;
+  return int(due);
 }
 
 WorldChanges& Simulation::takeChanges() {

@@ -17,6 +17,7 @@ void fillMeta(const Simulation& simulation, bool full, v1::Snapshot* snapshot) {
   wire::toWire(simulation.world().gravity(), snapshot->mutable_gravity());
   snapshot->set_full(full);
   snapshot->set_paused(meta.paused);
+  snapshot->set_time_scale(meta.timeScale);
 }
 
 google::protobuf::ArenaOptions arenaOptions() {
@@ -33,7 +34,8 @@ void addJoint(const World& world, JointId id, v1::Snapshot* snapshot) {
 }
 
 bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
-  return a.tick == b.tick && a.simTime == b.simTime && a.paused == b.paused;
+  return a.tick == b.tick && a.simTime == b.simTime && a.paused == b.paused &&
+         a.timeScale == b.timeScale;
 }
 
 }  // namespace

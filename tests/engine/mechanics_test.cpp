@@ -279,7 +279,8 @@ double firstBounceHeight(Material material, double dropHeight) {
 }
 
 TEST(Bounce, HeightRatioIsRestitutionSquared_ForBallDroppedOnStaticFloor) {
-  for (Material material : {Material::Solid, Material::Rubber, Material::Ice}) {
+  for (Material material : {Material::Solid, Material::Rubber, Material::Ice, Material::Stone,
+                            Material::Glass, Material::Foam}) {
     SCOPED_TRACE(materialProperties(material).name);
     const double drop = 2;
     const double impactSpeed = std::sqrt(2 * kG * drop);  // 6.3 m/s, far above the 1 m/s threshold

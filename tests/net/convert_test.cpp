@@ -35,7 +35,9 @@ TEST(Convert, MaterialsMapWithUnspecifiedAsSolid) {
   EXPECT_EQ(materialFromWire(v1::MATERIAL_UNSPECIFIED), Material::Solid);
   EXPECT_EQ(materialFromWire(v1::SOLID), Material::Solid);
   EXPECT_EQ(materialFromWire(v1::RUBBER), Material::Rubber);
-  EXPECT_FALSE(materialFromWire(6).has_value());
+  EXPECT_EQ(materialFromWire(v1::STONE), Material::Stone);
+  EXPECT_EQ(materialFromWire(v1::FOAM), Material::Foam);
+  EXPECT_FALSE(materialFromWire(9).has_value());
   EXPECT_FALSE(materialFromWire(-1).has_value());
   for (int i = 0; i < kMaterialCount; ++i) {
     const auto material = *materialFromIndex(i);
@@ -43,7 +45,8 @@ TEST(Convert, MaterialsMapWithUnspecifiedAsSolid) {
     EXPECT_EQ(materialFromName(materialName(material)), material);
   }
   EXPECT_EQ(materialFromName("ice"), Material::Ice);
-  EXPECT_FALSE(materialFromName("glass").has_value());
+  EXPECT_EQ(materialFromName("glass"), Material::Glass);
+  EXPECT_FALSE(materialFromName("plastic").has_value());
 }
 
 TEST(Convert, OptionsAreCheckedFieldByField) {
@@ -62,6 +65,62 @@ TEST(Convert, OptionsAreCheckedFieldByField) {
   options.set_material(v1::SOLID);
   options.set_angular_velocity(std::numeric_limits<float>::quiet_NaN());
   EXPECT_EQ(optionsFromWire(options).error, "options.angular_velocity is not a finite number");
+}
+
+TEST(Convert, PerBodyPropertiesDecodeAndNameTheirField) {
+  v1::BodyOptions options;
+  const auto plain = optionsFromWire(options);
+  ASSERT_TRUE(plain.ok()) << plain.error;
+  EXPECT_FALSE(plain.value->materialOverride.density) << "unset: the material's";
+  EXPECT_FALSE(plain.value->materialOverride.staticFriction);
+  EXPECT_EQ(plain.value->gravityScale, 1);
+
+  options.set_density(250);
+  options.set_friction(0.5);
+  options.set_restitution(0.25);
+  options.set_linear_damping(2);
+  options.set_angular_damping(3);
+  options.set_gravity_scale(0);
+  const auto given = optionsFromWire(options);
+  ASSERT_TRUE(given.ok()) << given.error;
+  const MaterialOverride& o = given.value->materialOverride;
+  EXPECT_EQ(o.density, 250.0f);
+  EXPECT_EQ(o.staticFriction, 0.5f) << "friction sets both";
+  EXPECT_EQ(o.dynamicFriction, 0.5f);
+  EXPECT_EQ(o.restitution, 0.25f);
+  EXPECT_EQ(given.value->linearDrag, 2.0f);
+  EXPECT_EQ(given.value->angularDrag, 3.0f);
+  EXPECT_EQ(given.value->gravityScale, 0.0f) << "set to 0, not the unset 1";
+
+  options.set_gravity_scale(std::numeric_limits<double>::infinity());
+  EXPECT_EQ(optionsFromWire(options).error, "options.gravity_scale is not a finite number");
+  options.set_gravity_scale(1);
+  options.set_angular_damping(1e300);
+  EXPECT_EQ(optionsFromWire(options).error.rfind("options.angular_damping is too large", 0), 0u);
+}
+
+TEST(Convert, DescriptorCarriesThePropertiesInForce) {
+  BodyDescription description;
+  description.id = BodyId{7};
+  description.shape = Shape::makeCircle(0.5f);
+  description.material = Material::Glass;
+  description.density = 123.5f;
+  description.restitution = 0.75f;
+  description.staticFriction = 0.5f;
+  description.dynamicFriction = 0.25f;
+  description.linearDrag = 1.5f;
+  description.angularDrag = 0.125f;
+  description.gravityScale = -2;
+  v1::BodyDescriptor descriptor;
+  toWire(description, &descriptor);
+  EXPECT_EQ(descriptor.material(), v1::GLASS);
+  EXPECT_EQ(descriptor.density(), 123.5);
+  EXPECT_EQ(descriptor.restitution(), 0.75);
+  EXPECT_EQ(descriptor.static_friction(), 0.5);
+  EXPECT_EQ(descriptor.dynamic_friction(), 0.25);
+  EXPECT_EQ(descriptor.linear_damping(), 1.5);
+  EXPECT_EQ(descriptor.angular_damping(), 0.125);
+  EXPECT_EQ(descriptor.gravity_scale(), -2);
 }
 
 TEST(Convert, StateRoundTripIsExact) {

@@ -70,7 +70,7 @@ TEST(HostileInput, MostNegativeMaterialIsRefusedWithoutOverflow) {
       static_cast<v1::Material>(std::numeric_limits<std::int32_t>::min()));
   const auto reply = client.request(command);
   EXPECT_FALSE(result(reply).ok());
-  EXPECT_TRUE(mentions(result(reply).error(), "is not a material (0-5)")) << result(reply).error();
+  EXPECT_TRUE(mentions(result(reply).error(), "is not a material (0-8)")) << result(reply).error();
 }
 
 TEST(HostileInput, BodyLeavingTheWorldIsRemovedAndReportedToSubscribers) {

@@ -71,23 +71,48 @@ TEST(CliScript, EveryCommandBuildsItsMessage) {
   EXPECT_TRUE(parseOk("ping").message.has_ping());
 }
 
+TEST(CliScript, PropertiesAndNewMaterialsReachTheOptions) {
+  const auto command = parseOk(
+      "circle 5 8 0.5 stone density=300 friction=0.25 restitution=0.5 damping=1.5 "
+      "angular-damping=0.75 gravity-scale=-2");
+  const auto& options = command.message.spawn_circle().options();
+  EXPECT_EQ(options.material(), v1::STONE);
+  EXPECT_EQ(options.density(), 300);
+  EXPECT_EQ(options.friction(), 0.25);
+  EXPECT_EQ(options.restitution(), 0.5);
+  EXPECT_EQ(options.linear_damping(), 1.5);
+  EXPECT_EQ(options.angular_damping(), 0.75);
+  EXPECT_EQ(options.gravity_scale(), -2);
+  const auto& plain = parseOk("polygon 0 0 1 0 1 1 foam").message.spawn_polygon().options();
+  EXPECT_EQ(plain.material(), v1::FOAM);
+  EXPECT_FALSE(plain.has_density()) << "unset: the material's";
+  EXPECT_FALSE(plain.has_gravity_scale());
+  EXPECT_EQ(parseOk("circle 1 1 1 GLASS").message.spawn_circle().options().material(), v1::GLASS);
+  EXPECT_EQ(parseOk("time-scale 0.25").message.set_time_scale().scale(), 0.25);
+}
+
 TEST(CliScript, NonFiniteNumbersAreSentForTheServerToRefuse) {
   EXPECT_TRUE(std::isnan(parseOk("circle nan 1 1").message.spawn_circle().center().x()));
   EXPECT_TRUE(std::isinf(parseOk("gravity inf 0").message.set_gravity().gravity().x()));
 }
 
 TEST(CliScript, ErrorsNameTheUsageAndTheProblem) {
-  EXPECT_EQ(parseError("circle 1 2"),
-            "circle X Y R [MATERIAL] [static] [nograv]: missing argument 3");
-  EXPECT_EQ(parseError("circle 1 x 3"),
-            "circle X Y R [MATERIAL] [static] [nograv]: 'x' is not a number");
-  EXPECT_EQ(parseError("circle 1 2 3 glass"),
-            "circle X Y R [MATERIAL] [static] [nograv]: unexpected 'glass' (material, static or "
-            "nograv)");
+  const std::string circle = "circle X Y R [MATERIAL] [static] [nograv] [NAME=VALUE...]: ";
+  EXPECT_EQ(parseError("circle 1 2"), circle + "missing argument 3");
+  EXPECT_EQ(parseError("circle 1 x 3"), circle + "'x' is not a number");
+  EXPECT_EQ(parseError("circle 1 2 3 plastic"),
+            circle + "unexpected 'plastic' (material, static or nograv)");
+  EXPECT_EQ(parseError("circle 1 2 3 colour=4"),
+            circle + "unexpected 'colour=4' (density=, friction=, restitution=, damping=, "
+                     "angular-damping= or gravity-scale=)");
+  EXPECT_EQ(parseError("circle 1 2 3 density=heavy"),
+            circle + "'density=heavy' has no number after '='");
+  EXPECT_EQ(parseError("time-scale"), "time-scale S: missing argument 1");
   EXPECT_EQ(parseError("step"), "step N (1 or more ticks): missing argument 1");
   EXPECT_EQ(parseError("step 0"), "step N (1 or more ticks): tick count out of range");
   EXPECT_EQ(parseError("polygon 1 2 3"),
-            "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]: vertex 2 has no y");
+            "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv] [NAME=VALUE...]: vertex 2 "
+            "has no y");
   EXPECT_EQ(parseError("query -1"), "query ID: body id -1 out of range");
   EXPECT_EQ(parseError("pause now"), "pause: unexpected 'now'");
   EXPECT_EQ(parseError("jump 3"), "unknown command 'jump'");

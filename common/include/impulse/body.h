@@ -58,7 +58,13 @@ struct BodyDef {
   /// Air drag rates in 1/s: dv/dt = -linearDrag * v, exact over any dt.
   Real linearDrag = 0;
   Real angularDrag = 0;
+  /// The body feels gravityScale * gravity (unless ignoreGravity).
+  Real gravityScale = 1;
 };
+
+/// Ranges of the per-body properties that the material table does not hold.
+inline constexpr Real kMaxDrag = 1000;         ///< 1/s, linear and angular
+inline constexpr Real kMaxGravityScale = 10;   ///< |gravityScale|
 
 /// A body created from user-facing input (wire commands, tools): validated
 /// fully before anything changes.
@@ -70,6 +76,9 @@ struct BodyOptions {
   Real angularVelocity = 0;
   Real linearDrag = 0;
   Real angularDrag = 0;
+  /// Per-body coefficients replacing the material's (unset: the material's).
+  MaterialOverride materialOverride{};
+  Real gravityScale = 1;
 };
 
 /// The definition of a body of `shape` (local to its centroid) whose
@@ -105,6 +114,10 @@ struct BodyDescription {
   Real staticFriction = 0;
   Real dynamicFriction = 0;
   Real rollingResistance = 0;
+  Real density = 0;  ///< kg/m^2, the one the mass came from
+  Real linearDrag = 0;
+  Real angularDrag = 0;
+  Real gravityScale = 1;
 };
 
 }  // namespace impulse

@@ -9,8 +9,8 @@
 
 namespace impulse {
 
-enum class Material : std::uint8_t { Solid = 0, Ice, Wood, Metal, Rubber };
-inline constexpr int kMaterialCount = 5;
+enum class Material : std::uint8_t { Solid = 0, Ice, Wood, Metal, Rubber, Stone, Glass, Foam };
+inline constexpr int kMaterialCount = 8;
 
 struct MaterialProperties {
   std::string_view name;
@@ -30,7 +30,7 @@ const MaterialProperties& materialProperties(Material material);
 /// Pair mixing as in the seed: the mean of the two coefficients.
 inline Real mixCoefficient(Real a, Real b) { return Real(0.5) * (a + b); }
 
-/// Material from its index 0..4, or nothing when out of range.
+/// Material from its index 0..kMaterialCount-1, or nothing when out of range.
 std::optional<Material> materialFromIndex(int index);
 
 }  // namespace impulse

@@ -9,8 +9,8 @@ namespace impulse::wire {
 
 namespace {
 
-constexpr std::array<std::string_view, kMaterialCount> kMaterialNames = {"SOLID", "ICE", "WOOD",
-                                                                         "METAL", "RUBBER"};
+constexpr std::array<std::string_view, kMaterialCount> kMaterialNames = {
+    "SOLID", "ICE", "WOOD", "METAL", "RUBBER", "STONE", "GLASS", "FOAM"};
 
 std::string joinName(std::string_view what, std::string_view field) {
   std::string name(what);
@@ -57,6 +57,13 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
   out->set_material(toWire(description.material));
   out->set_is_static(description.isStatic);
   out->set_ignore_gravity(description.ignoreGravity);
+  out->set_density(description.density);
+  out->set_restitution(description.restitution);
+  out->set_static_friction(description.staticFriction);
+  out->set_dynamic_friction(description.dynamicFriction);
+  out->set_linear_damping(description.linearDrag);
+  out->set_angular_damping(description.angularDrag);
+  out->set_gravity_scale(description.gravityScale);
 }
 
 void toWire(const PresetInfo& preset, v1::PresetInfo* out) {
@@ -80,6 +87,11 @@ void toWire(const BodyDescription& description, const BodyState& state, v1::Body
   out->set_restitution(description.restitution);
   out->set_static_friction(description.staticFriction);
   out->set_dynamic_friction(description.dynamicFriction);
+  out->set_density(description.density);
+  out->set_linear_damping(description.linearDrag);
+  out->set_angular_damping(description.angularDrag);
+  out->set_gravity_scale(description.gravityScale);
+  out->set_rolling_resistance(description.rollingResistance);
 }
 
 Decoded<Real> realFromWire(double value, std::string_view what) {
@@ -109,12 +121,58 @@ std::optional<Material> materialFromWire(int material) {
   return materialFromIndex(material - 1);
 }
 
+std::string materialRange() {
+  return "(0-" + std::to_string(kMaterialCount) + ")";
+}
+
+namespace {
+
+// An optional wire number into an optional Real, checked as realFromWire.
+std::string optionalFromWire(bool present, double value, std::string_view what,
+                             std::optional<Real>& out) {
+  if (!present) return {};
+  auto real = realFromWire(value, what);
+  if (!real.ok()) return std::move(real.error);
+  out = *real.value;
+  return {};
+}
+
+// The per-body properties (PROTOCOL.md) checked for finiteness here; their
+// ranges are the engine's to judge (World::createBody names the field).
+std::string propertiesFromWire(const v1::BodyOptions& options, BodyOptions& result) {
+  MaterialOverride& o = result.materialOverride;
+  std::optional<Real> friction;
+  std::optional<Real> gravityScale;
+  std::optional<Real> linearDamping;
+  std::optional<Real> angularDamping;
+  for (std::string error :
+       {optionalFromWire(options.has_density(), options.density(), "options.density", o.density),
+        optionalFromWire(options.has_friction(), options.friction(), "options.friction", friction),
+        optionalFromWire(options.has_restitution(), options.restitution(), "options.restitution",
+                         o.restitution),
+        optionalFromWire(options.has_gravity_scale(), options.gravity_scale(),
+                         "options.gravity_scale", gravityScale),
+        optionalFromWire(true, options.linear_damping(), "options.linear_damping", linearDamping),
+        optionalFromWire(true, options.angular_damping(), "options.angular_damping",
+                         angularDamping)}) {
+    if (!error.empty()) return error;
+  }
+  o.staticFriction = friction;
+  o.dynamicFriction = friction;
+  result.gravityScale = gravityScale.value_or(Real(1));
+  result.linearDrag = *linearDamping;
+  result.angularDrag = *angularDamping;
+  return {};
+}
+
+}  // namespace
+
 Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   BodyOptions result;
   const auto material = materialFromWire(options.material());
   if (!material) {
     return Decoded<BodyOptions>::failure("options.material " + std::to_string(options.material()) +
-                                         " is not a material (0-5)");
+                                         " is not a material " + materialRange());
   }
   result.material = *material;
   result.isStatic = options.is_static();
@@ -125,6 +183,9 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   auto angular = realFromWire(options.angular_velocity(), "options.angular_velocity");
   if (!angular.ok()) return Decoded<BodyOptions>::failure(std::move(angular.error));
   result.angularVelocity = *angular.value;
+  if (std::string error = propertiesFromWire(options, result); !error.empty()) {
+    return Decoded<BodyOptions>::failure(std::move(error));
+  }
   return Decoded<BodyOptions>::success(result);
 }
 

@@ -20,6 +20,13 @@ struct SpawnOptions {
   double velocityX = 0;
   double velocityY = 0;
   float angularVelocity = 0;
+  /// Per-body properties (PROTOCOL.md); unset: the material's values.
+  std::optional<double> density{};
+  std::optional<double> friction{};
+  std::optional<double> restitution{};
+  double linearDamping = 0;
+  double angularDamping = 0;
+  std::optional<double> gravityScale{};
 };
 
 struct Point {
@@ -70,5 +77,7 @@ v1::ClientMessage removeJoint(std::uint32_t joint);
 v1::ClientMessage queryJoint(std::uint32_t joint);
 /// With `wantStateHash` the Pong's stats carry the world's state hash.
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
+/// Simulated seconds per wall second, 0.01..16 (PROTOCOL.md, "Time").
+v1::ClientMessage setTimeScale(double scale);
 
 }  // namespace impulse::client

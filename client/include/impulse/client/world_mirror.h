@@ -44,6 +44,8 @@ class WorldMirror {
   double simTime() const { return simTime_; }
   Vec2 gravity() const { return gravity_; }
   bool paused() const { return paused_; }
+  /// Simulated seconds per wall second (1 from a server that sends none).
+  double timeScale() const { return timeScale_; }
   /// The preset of the last full snapshot, once one arrived.
   const std::optional<PresetInfo>& preset() const { return preset_; }
   std::uint64_t snapshotsApplied() const { return snapshotsApplied_; }
@@ -55,6 +57,7 @@ class WorldMirror {
   double simTime_ = 0;
   Vec2 gravity_ = Vec2::Zero();
   bool paused_ = false;
+  double timeScale_ = 1;
   std::optional<PresetInfo> preset_;
   std::uint64_t snapshotsApplied_ = 0;
 };

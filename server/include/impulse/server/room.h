@@ -58,6 +58,9 @@ class Room final : public SnapshotSource {
   void scheduleTick();
   void onTimer();
   void runTick();
+  /// The world steps the time scale owes this tick, as many as fit before
+  /// `deadline` (at least one); returns how many ran.
+  int runScaledSteps(Clock::time_point deadline);
   /// Runs the oldest Step in progress until `deadline` (at least one tick).
   void advanceStep(Clock::time_point deadline);
   void applyCommands(Clock::time_point deadline);
@@ -67,7 +70,8 @@ class Room final : public SnapshotSource {
   /// Adds the room's statistics to the handler's Pong: only Ping needs them.
   void answerPing(const v1::Ping& ping, v1::ServerMessage& pong);
   void broadcastSnapshot();
-  /// Snapshots are due when floor(tick * snapshot_hz / tick_hz) changes.
+  /// Snapshots are due when floor(running ticks * snapshot_hz / tick_hz)
+  /// changes: on the wall clock's grid, whatever the time scale.
   std::int64_t snapshotSlot() const;
   v1::ServerStats stats(bool withStateHash);
   void logStats(Clock::time_point now);
@@ -96,6 +100,10 @@ class Room final : public SnapshotSource {
   /// Snapshots skipped by members that left.
   std::uint64_t snapshotsSkippedByLeavers_ = 0;
   std::uint64_t commandsRateLimited_ = 0;
+  /// Ticks the clock ran unpaused (the snapshot grid) and the steps a time
+  /// scale owed that did not fit their tick.
+  std::uint64_t runningTicks_ = 0;
+  std::uint64_t scaledStepsDropped_ = 0;
   Clock::time_point lastStatsLog_;
 };
 

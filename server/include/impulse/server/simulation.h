@@ -23,11 +23,16 @@ struct SimulationSettings {
   bool paused = false;
 };
 
+/// Range of SetTimeScale (PROTOCOL.md, "Time").
+inline constexpr double kMinTimeScale = 0.01;
+inline constexpr double kMaxTimeScale = 16;
+
 /// What a snapshot says besides bodies.
 struct SnapshotMeta {
   std::uint64_t tick = 0;
   double simTime = 0;
   bool paused = false;
+  double timeScale = 1;
 };
 
 class Simulation {
@@ -53,12 +58,20 @@ class Simulation {
   /// Removes every body.
   void clear();
   void setPaused(bool paused);
+  /// Simulated seconds per wall second, kMinTimeScale..kMaxTimeScale; an
+  /// error naming the range otherwise (nothing changes).
+  InputResult setTimeScale(double scale);
+  /// One wall tick passed on the clock: how many world steps the time scale
+  /// owes now (0 at most ticks below 1x, `scale` at whole scales above). The
+  /// caller runs them with step(); those it cannot fit are simply not run.
+  int stepsDueThisTick();
 
   std::uint64_t tick() const { return tick_; }
   double tickHz() const { return tickHz_; }
   double simTime() const { return double(tick_) / tickHz_; }
   bool paused() const { return paused_; }
-  SnapshotMeta meta() const { return {tick_, simTime(), paused_}; }
+  double timeScale() const { return timeScale_; }
+  SnapshotMeta meta() const { return {tick_, simTime(), paused_, timeScale_}; }
   /// The preset in force (cleared worlds keep the last one's text).
   const PresetInfo& preset() const { return preset_; }
   /// Changes with every change of the world or its meta: names its state.
@@ -92,6 +105,11 @@ class Simulation {
   std::uint64_t version_ = 0;
   std::uint64_t tick_ = 0;
   bool paused_ = false;
+  double timeScale_ = 1;
+  // Wall ticks since the scale was set and steps owed for them so far: the
+  // steps due are counted from these, so no rounding error accumulates.
+  std::uint64_t ticksAtScale_ = 0;
+  std::uint64_t stepsAtScale_ = 0;
   TickTimes stepTimes_;
   std::uint64_t bodiesLeftWorld_ = 0;
   std::uint64_t hash_ = 0;

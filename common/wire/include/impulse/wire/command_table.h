@@ -38,10 +38,12 @@
       "while paused: advance exactly N ticks (reply has tick and state_hash)",            \
       parseStep, client::step)                                                            \
   ROW(SpawnCircle, spawn_circle, Anyone, spawnCircle, "circle",                           \
-      "circle X Y R [MATERIAL] [static] [nograv]", "spawn a circle; reply has body_id",   \
+      "circle X Y R [MATERIAL] [static] [nograv] [NAME=VALUE...]",                        \
+      "spawn a circle (NAME: density friction restitution damping angular-damping "       \
+      "gravity-scale); reply has body_id",                                                \
       parseCircle, client::spawnCircle)                                                   \
   ROW(SpawnPolygon, spawn_polygon, Anyone, spawnPolygon, "polygon",                       \
-      "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv]",                       \
+      "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv] [NAME=VALUE...]",       \
       "spawn a convex polygon (world coordinates, either winding, 3-16 vertices)",        \
       parsePolygon, client::spawnPolygon)                                                 \
   ROW(SetGravity, set_gravity, Admin, setGravity, "gravity", "gravity GX GY",             \
@@ -97,5 +99,8 @@
       "remove a joint", parseBodyId, client::removeJoint)                                \
   ROW(QueryJoint, query_joint, Anyone, queryJoint, "query-joint", "query-joint J",        \
       "a joint's description, reaction force and torque, length, angle", parseBodyId,   \
-      client::queryJoint)
+      client::queryJoint)                                                                 \
+  ROW(SetTimeScale, set_time_scale, Admin, setTimeScale, "time-scale", "time-scale S",    \
+      "simulated time runs S times wall time (0.01-16), same step size",                  \
+      parseTimeScale, client::setTimeScale)
 // clang-format on

@@ -60,7 +60,10 @@ Decoded<Vec2> vecFromWire(const v1::Vec2& v, std::string_view what);
 /// MATERIAL_UNSPECIFIED and SOLID give Solid; nothing for a value outside the
 /// enum (proto3 enums carry unknown numbers through).
 std::optional<Material> materialFromWire(int material);
-/// Material, flags and initial velocities, each checked.
+/// The enum's range as error messages print it: "(0-8)".
+std::string materialRange();
+/// Material, flags, initial velocities and per-body properties, each checked.
+/// A `friction` sets both the static and the dynamic coefficient.
 Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options);
 
 /// A shape as described by the server (body-local polygon, anticlockwise).
@@ -83,7 +86,7 @@ std::optional<JointDescription> jointFromWire(const v1::JointDescriptor& joint);
 /// The wire name of a joint kind ("distance", "rope", ... "mouse").
 std::string_view jointKindName(const JointSettings& settings);
 
-/// Upper-case wire name of a material ("SOLID".."RUBBER").
+/// Upper-case wire name of a material ("SOLID".."FOAM").
 std::string_view materialName(Material material);
 /// Material from its name, case-insensitive ("ice", "RUBBER").
 std::optional<Material> materialFromName(std::string_view name);
