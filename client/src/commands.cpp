@@ -181,4 +181,10 @@ v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash) {
   return message;
 }
 
+v1::ClientMessage listRooms() {
+  v1::ClientMessage message;
+  message.mutable_list_rooms();
+  return message;
+}
+
 }  // namespace impulse::client

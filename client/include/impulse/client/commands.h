@@ -70,5 +70,7 @@ v1::ClientMessage removeJoint(std::uint32_t joint);
 v1::ClientMessage queryJoint(std::uint32_t joint);
 /// With `wantStateHash` the Pong's stats carry the world's state hash.
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
+/// Answered by a RoomList: every room of the server.
+v1::ClientMessage listRooms();
 
 }  // namespace impulse::client

@@ -97,5 +97,8 @@
       "remove a joint", parseBodyId, client::removeJoint)                                \
   ROW(QueryJoint, query_joint, Anyone, queryJoint, "query-joint", "query-joint J",        \
       "a joint's description, reaction force and torque, length, angle", parseBodyId,   \
-      client::queryJoint)
+      client::queryJoint)                                                                 \
+  ROW(ListRooms, list_rooms, Anyone, listRooms, "rooms", "rooms",                         \
+      "the server's rooms: name, clients, bodies, tick (reply is a RoomList)",            \
+      parseNoArguments, client::listRooms)
 // clang-format on
