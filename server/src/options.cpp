@@ -141,6 +141,14 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 1000, o.maxRooms);
        }},
+      {"--health-port", true,
+       "N  answer HTTP GET /healthz and /readyz on this port (0 picks a free one; default none)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         std::uint16_t port = 0;
+         std::string error = intFlag(f, v, 0, 65535, port);
+         if (error.empty()) o.healthPort = port;
+         return error;
+       }},
       {"--room-threads", true, "N  threads stepping the rooms, 1-64 (default 2)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 64, o.roomThreads);

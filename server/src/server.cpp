@@ -45,6 +45,11 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
   acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
   acceptor_.bind(endpoint);
   acceptor_.listen();
+  if (options.healthPort) {
+    health_ = std::make_unique<HealthEndpoint>(
+        io, asio::ip::tcp::endpoint(endpoint.address(), *options.healthPort),
+        [this] { return readiness(); });
+  }
 }
 
 void Server::start() {
@@ -54,6 +59,11 @@ void Server::start() {
           " in every room; rooms stepped on " + std::to_string(options_.roomThreads) +
           " thread(s)");
   accept();
+  if (health_) {
+    health_->start();
+    const auto probes = health_->endpoint();
+    logLine("health probes on port " + std::to_string(probes.port()) + " (GET /healthz, /readyz)");
+  }
   for (const auto& [name, room] : rooms_) room->start();
   scheduleHousekeeping();
 }
@@ -65,6 +75,7 @@ void Server::stop() {
   asio::error_code ignored;
   acceptor_.close(ignored);
   housekeepingTimer_.cancel();
+  if (health_) health_->stop();
   for (const auto& [name, room] : rooms_) room->stop();
   std::vector<std::shared_ptr<Session>> sessions;
   for (const auto& [id, session] : sessions_) sessions.push_back(session);
@@ -91,6 +102,14 @@ std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello
 std::shared_ptr<Room> Server::roomOf(const Session& session) const {
   const auto it = roomOfClient_.find(session.id());
   return it == roomOfClient_.end() ? nullptr : it->second;
+}
+
+Readiness Server::readiness() const {
+  const std::string rooms = std::to_string(rooms_.size()) + " of " +
+                            std::to_string(options_.maxRooms) + " rooms";
+  if (stopped_) return {false, "stopping"};
+  if (rooms_.size() >= std::size_t(options_.maxRooms)) return {false, "full: " + rooms};
+  return {true, "ready: " + rooms};
 }
 
 void Server::listRooms(v1::RoomList& list) const {

@@ -44,6 +44,9 @@ struct ServerOptions {
   int maxRooms = 16;
   /// Threads stepping the rooms (each room on one thread at a time).
   int roomThreads = 2;
+  /// The HTTP health probes' port on the bind address (health_endpoint.h);
+  /// none without --health-port, 0 picks a free one.
+  std::optional<std::uint16_t> healthPort;
 };
 
 /// Outcome of parsing: options, a request for help, or an error message.

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "impulse/server/access.h"
+#include "impulse/server/health_endpoint.h"
 #include "impulse/server/options.h"
 #include "impulse/server/room.h"
 #include "impulse/server/session.h"
@@ -58,6 +59,8 @@ class Server final : public SessionHost, public RoomHost {
   /// Gives freed heap back to the system after connections closed (a flood
   /// of them would otherwise leave the process large).
   void releaseMemory(Clock::time_point now);
+  /// /readyz: ready while a new room can be made.
+  Readiness readiness() const;
 
   asio::io_context& io_;
   ServerOptions options_;
@@ -65,6 +68,8 @@ class Server final : public SessionHost, public RoomHost {
   asio::steady_timer housekeepingTimer_;
   SessionLimits sessionLimits_;
   AccessTokens tokens_;
+  /// The probes' endpoint, with --health-port.
+  std::unique_ptr<HealthEndpoint> health_;
   asio::thread_pool& steppers_;
   /// By name. The default room lives as long as the server; any other is
   /// dropped when its last member leaves.
