@@ -66,7 +66,10 @@ void HealthEndpoint::accept() {
       asio::async_read_until(
           probe->socket, asio::dynamic_buffer(probe->request, kMaxRequestLine), "\r\n",
           [this, probe](const asio::error_code& read, std::size_t length) {
-            if (read) return probe->deadline.cancel();
+            if (read) {
+              probe->deadline.cancel();
+              return;
+            }
             probe->response = respond(probe->request.substr(0, length));
             asio::async_write(probe->socket, asio::buffer(probe->response),
                               [probe](const asio::error_code&, std::size_t) {

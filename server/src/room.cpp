@@ -125,8 +125,9 @@ void Room::welcome(std::uint32_t client, bool admin, bool wantSnapshots) {
 void Room::leave(Session& session) {
   const auto it = members_.find(session.id());
   if (it == members_.end()) return;
-  if (session.subscribed()) --subscribers_;
   members_.erase(it);
+  subscriberIds_.erase(session.id());
+  countSubscribers();
   snapshotsSkippedByLeavers_ += session.snapshotsSkipped();
   onStrand([this, client = session.id()] {
     clients_.erase(client);
@@ -139,6 +140,8 @@ std::shared_ptr<Session> Room::member(std::uint32_t client) const {
   const auto it = members_.find(client);
   return it == members_.end() ? nullptr : it->second;
 }
+
+void Room::countSubscribers() { subscribers_ = subscriberIds_.size(); }
 
 void Room::enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes) {
   if (!session.withinRate()) {
@@ -202,7 +205,8 @@ void Room::deliverReply(Reply& reply) {
   if (reply.kind == ReplyKind::Command) session->commandsApplied(reply.bytes);
   if (reply.kind == ReplyKind::WelcomeAndSubscribe) {
     session->subscribe(*this);
-    if (session->subscribed()) ++subscribers_;
+    if (session->subscribed()) subscriberIds_.insert(session->id());
+    countSubscribers();
   }
 }
 

@@ -29,6 +29,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -107,6 +108,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   /// A shared owner, so that a session closed by what is sent to it stays
   /// alive until the caller is done with it; null for a non-member.
   std::shared_ptr<Session> member(std::uint32_t client) const;
+  /// Tells the strand how many subscribers there are (none: no deltas to build).
+  void countSubscribers();
 
   // ------------------------------------------------------- strand side
   void welcome(std::uint32_t client, bool admin, bool wantSnapshots);
@@ -139,6 +142,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
 
   // I/O thread only.
   std::map<std::uint32_t, std::shared_ptr<Session>> members_;
+  /// Members whose snapshot stream started (a closed session no longer says).
+  std::set<std::uint32_t> subscriberIds_;
   /// Snapshots skipped by members that left.
   std::uint64_t snapshotsSkippedByLeavers_ = 0;
   std::uint64_t commandsRateLimited_ = 0;
