@@ -21,7 +21,7 @@ struct StartAttempt {
 /// does start (prints its listening line) is stopped at once.
 StartAttempt startServer(const std::string& environment, const std::string& arguments) {
   const std::string command = "env -u IMPULSE_TOKEN -u IMPULSE_ADMIN_TOKEN " + environment +
-                              " timeout -s TERM 2 " + IMPULSE_SERVER_BINARY + " " + arguments +
+                              " timeout --preserve-status -s TERM 2 " + IMPULSE_SERVER_BINARY + " " + arguments +
                               " 2>&1";
   StartAttempt attempt;
   FILE* pipe = popen(command.c_str(), "r");

@@ -43,6 +43,9 @@ std::optional<std::string> helloError(std::uint16_t port, const std::string& roo
   return raw.receiveError(milliseconds(3000));
 }
 
+/// Bodies a new room starts with: the sandbox's scenery (--preset 0).
+std::uint32_t sceneryBodies(client::Client& client) { return client.ping().stats().bodies(); }
+
 std::uint32_t spawnedBody(client::Client& client, double x, double y) {
   const auto reply = client.request(client::spawnCircle({x, y}, 0.5));
   EXPECT_TRUE(reply.command_result().ok()) << reply.command_result().error();
@@ -53,17 +56,19 @@ TEST(Rooms, EachRoomHasItsOwnWorldAndSubscribers) {
   ServerProcess server;
   client::Client red(inRoom(server.port(), "red", true));
   client::Client blue(inRoom(server.port(), "blue", true));
+  const auto scenery = sceneryBodies(red);
+  EXPECT_EQ(sceneryBodies(blue), scenery);
   spawnedBody(red, 5, 10);
   spawnedBody(red, 8, 10);
   spawnedBody(blue, 5, 10);
 
   client::Client redWatcher(inRoom(server.port(), "red", true));
-  EXPECT_EQ(redWatcher.mirror().bodies().size(), 2u);  // the full snapshot of red's world
-  EXPECT_EQ(red.ping().stats().bodies(), 2u);
-  EXPECT_EQ(blue.ping().stats().bodies(), 1u);
+  EXPECT_EQ(redWatcher.mirror().bodies().size(), scenery + 2);  // the full snapshot of red's world
+  EXPECT_EQ(red.ping().stats().bodies(), scenery + 2);
+  EXPECT_EQ(blue.ping().stats().bodies(), scenery + 1);
   // Blue's subscriber never hears of red's bodies.
   blue.poll();
-  EXPECT_EQ(blue.mirror().bodies().size(), 1u);
+  EXPECT_EQ(blue.mirror().bodies().size(), scenery + 1);
 
   const auto list = listRooms(blue);
   ASSERT_EQ(list.rooms_size(), 3);  // default (always there), blue, red: sorted by name
@@ -73,22 +78,25 @@ TEST(Rooms, EachRoomHasItsOwnWorldAndSubscribers) {
   EXPECT_EQ(list.rooms(0).clients(), 1u);
   EXPECT_EQ(list.rooms(1).clients(), 0u);
   EXPECT_EQ(list.rooms(2).clients(), 2u);
-  EXPECT_EQ(list.rooms(0).bodies(), 1u);
-  EXPECT_EQ(list.rooms(2).bodies(), 2u);
+  EXPECT_EQ(list.rooms(0).bodies(), scenery + 1);
+  EXPECT_EQ(list.rooms(1).bodies(), scenery);
+  EXPECT_EQ(list.rooms(2).bodies(), scenery + 2);
   EXPECT_GT(list.rooms(2).tick(), 0u);
 }
 
 TEST(Rooms, EmptyHelloRoomIsTheDefaultRoom) {
   ServerProcess server;
   client::Client plain(localClient(server.port(), "plain", false));
+  const auto scenery = sceneryBodies(plain);
   spawnedBody(plain, 5, 10);
   client::Client named(inRoom(server.port(), "default"));
-  EXPECT_EQ(named.ping().stats().bodies(), 1u);
+  EXPECT_EQ(named.ping().stats().bodies(), scenery + 1);
 }
 
 TEST(Rooms, RoomIsDroppedWhenItsLastClientLeaves) {
   ServerProcess server;
   client::Client observer(localClient(server.port(), "observer", false));
+  const auto scenery = sceneryBodies(observer);
   {
     client::Client player(inRoom(server.port(), "match-1"));
     spawnedBody(player, 5, 10);
@@ -103,7 +111,7 @@ TEST(Rooms, RoomIsDroppedWhenItsLastClientLeaves) {
   EXPECT_TRUE(mentions(server.log(), "room match-1 dropped: its last client left"));
   // Joining again makes a new, empty world.
   client::Client again(inRoom(server.port(), "match-1"));
-  EXPECT_EQ(again.ping().stats().bodies(), 0u);
+  EXPECT_EQ(again.ping().stats().bodies(), scenery);
 }
 
 TEST(Rooms, RoomLimitIsRefusedWithAClearError) {
@@ -132,14 +140,16 @@ TEST(Rooms, BadRoomNamesAreRefused) {
   ASSERT_TRUE(longName);
   EXPECT_EQ(*longName, "Hello.room is 65 characters long: " + rule);
   // The longest allowed name, every allowed character.
-  client::Client ok(inRoom(server.port(), std::string(60, 'a') + "Z9_-."));
+  client::Client ok(inRoom(server.port(), std::string(59, 'a') + "Z9_-."));
   EXPECT_EQ(ok.welcome().client_id() > 0, true);
 }
 
 TEST(Rooms, BodyLimitHoldsPerRoom) {
-  ServerProcess server({"--max-bodies", "2"});
+  // The sandbox's scenery counts too: room for two more bodies.
+  ServerProcess server({"--max-bodies", "5"});
   client::Client a(inRoom(server.port(), "a"));
   client::Client b(inRoom(server.port(), "b"));
+  ASSERT_EQ(sceneryBodies(a), 3u);
   spawnedBody(a, 5, 10);
   spawnedBody(a, 8, 10);
   const auto refused = a.request(client::spawnCircle({11, 10}, 0.5));
@@ -149,19 +159,22 @@ TEST(Rooms, BodyLimitHoldsPerRoom) {
   // Another room has its own budget.
   spawnedBody(b, 5, 10);
   spawnedBody(b, 8, 10);
-  EXPECT_EQ(a.ping().stats().bodies(), 2u);
-  EXPECT_EQ(b.ping().stats().bodies(), 2u);
+  EXPECT_EQ(a.ping().stats().bodies(), 5u);
+  EXPECT_EQ(b.ping().stats().bodies(), 5u);
 }
 
 TEST(Rooms, CliJoinsARoomAndListsRooms) {
   ServerProcess server;
   client::Client resident(inRoom(server.port(), "lobby"));
+  const auto scenery = sceneryBodies(resident);
   const auto run = runCli(server.port(), "circle 5 10 0.5\nrooms\n", false, "--room lobby");
   ASSERT_EQ(run.exitCode, 0);
   ASSERT_EQ(run.lines.size(), 3u);  // connect, circle, rooms
   EXPECT_TRUE(mentions(run.lines[2], R"("command":"rooms","ok":true)")) << run.lines[2];
-  EXPECT_TRUE(mentions(run.lines[2], R"({"name":"lobby","clients":2,"bodies":1,)")) << run.lines[2];
-  EXPECT_EQ(resident.ping().stats().bodies(), 1u);
+  EXPECT_TRUE(mentions(run.lines[2], R"({"name":"lobby","clients":2,"bodies":)" +
+                                         std::to_string(scenery + 1) + ","))
+      << run.lines[2];
+  EXPECT_EQ(resident.ping().stats().bodies(), scenery + 1);
 }
 
 // One overloaded room keeps its own thread busy; another room on the pool
