@@ -54,14 +54,14 @@ struct Sample {
 // A grid of circles with no gravity, each drifting at the same velocity and
 // spin: no contacts, all awake, every state field non-zero (the costliest
 // body to encode).
-std::vector<v1::ClientMessage> driftingGrid(int bodies) {
+std::vector<impulse::v1::ClientMessage> driftingGrid(int bodies) {
   const int columns = int(std::ceil(std::sqrt(double(bodies))));
   impulse::client::SpawnOptions options;
   options.ignoreGravity = true;
   options.velocityX = 0.25;
   options.velocityY = 0.5;
   options.angularVelocity = 0.7f;
-  std::vector<v1::ClientMessage> commands;
+  std::vector<impulse::v1::ClientMessage> commands;
   for (int i = 0; i < bodies; ++i) {
     const double x = -22 + 0.6 * (i % columns);
     const double y = -22 + 0.6 * (i / columns);
@@ -155,7 +155,7 @@ void report(const LoadOptions& options, const std::vector<Sample>& samples,
       "summary: %d bodies, %d subscribers (%s), %.0f Hz ticks, %.0f Hz snapshots: tick %.2f ms "
       "mean (worst second's max %.2f ms, period %.2f ms), %.1f ticks/s, %llu skipped, "
       "%.0f B/s per client (%.2f Mbit/s), %.1f snapshots/s per client, %.0f %% of a core "
-      "(server); %u body states in a sampled delta; %d subscriber(s) dropped\n",
+      "(server); %u body states in a sampled snapshot; %d subscriber(s) dropped\n",
       options.bodies, options.subscribers, options.encoding.c_str(), options.tickHz,
       options.snapshotHz, mean(samples, &Sample::tickMeanMs), maximum(samples, &Sample::tickMaxMs),
       1000 / options.tickHz, mean(samples, &Sample::ticksPerSecond),
@@ -218,7 +218,8 @@ int main(int argc, char** argv) {
     load::ServerChild server(
         options.server,
         {"--tick-hz", std::to_string(options.tickHz), "--snapshot-hz",
-         std::to_string(options.snapshotHz), "--max-bodies", std::to_string(options.bodies),
+         // Room for the preset's scenery besides the bench's bodies.
+         std::to_string(options.snapshotHz), "--max-bodies", std::to_string(options.bodies + 100),
          "--max-clients", std::to_string(options.subscribers + 8), "--max-clients-per-address",
          std::to_string(options.subscribers + 8), "--max-commands-per-second", "1000000",
          "--room-threads", std::to_string(options.roomThreads)});

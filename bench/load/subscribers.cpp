@@ -50,8 +50,8 @@ bool parseEncoding(const std::string& name, Encoding& encoding) {
   return false;
 }
 
-v1::ClientMessage subscriberHello(Encoding encoding, int index) {
-  v1::ClientMessage message;
+impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index) {
+  impulse::v1::ClientMessage message;
   auto* hello = message.mutable_hello();
   hello->set_protocol_version(1);
   hello->set_client_name("load-subscriber-" + std::to_string(index));
@@ -67,7 +67,7 @@ Subscribers::Subscribers(std::uint16_t port, int count, Encoding encoding) {
   for (int i = 0; i < count; ++i) {
     auto connection = std::make_unique<Connection>();
     connection->socket = connectLoopback(port);
-    sendAll(connection->socket, wire::encodeFrame(subscriberHello(encoding, i)));
+    sendAll(connection->socket, impulse::wire::encodeFrame(subscriberHello(encoding, i)));
     connections_.push_back(std::move(connection));
   }
   reader_ = std::thread([this] { run(); });
@@ -139,9 +139,9 @@ void Subscribers::consume(Connection& connection, const char* data, std::size_t 
 }
 
 void Subscribers::sampleFrame() {
-  v1::ServerMessage message;
+  impulse::v1::ServerMessage message;
   if (!message.ParseFromString(sample_) || !message.has_snapshot()) return;
-  if (!message.snapshot().full()) sampledBodies_ = std::uint32_t(message.snapshot().bodies_size());
+  sampledBodies_ = std::uint32_t(message.snapshot().bodies_size());
 }
 
 }  // namespace load

@@ -3,8 +3,8 @@
 // want_snapshots and the chosen encoding, then read everything the server
 // sends, counting bytes and frames. One thread polls them all, so the
 // readers cost the shared machine little; they never decode (a client's
-// decoding is not the server's load), except for one sample per second
-// that checks how many bodies a delta carries.
+// decoding is not the server's load), except for one frame in 30 that
+// checks how many body states a snapshot carries.
 
 #include <atomic>
 #include <cstdint>
@@ -23,7 +23,7 @@ enum class Encoding { Plain };
 /// "plain" -> Encoding::Plain; false for a name this build does not know.
 bool parseEncoding(const std::string& name, Encoding& encoding);
 /// The Hello a subscriber sends.
-v1::ClientMessage subscriberHello(Encoding encoding, int index);
+impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index);
 
 struct SubscriberCounts {
   std::uint64_t bytes = 0;
@@ -40,7 +40,8 @@ class Subscribers {
 
   /// Bytes and frames each subscriber has read so far.
   std::vector<SubscriberCounts> counts() const;
-  /// Body states in the newest sampled delta snapshot (subscriber 0).
+  /// Body states in the newest sampled snapshot (subscriber 0; a full one
+  /// when it fell behind).
   std::uint32_t sampledBodies() const { return sampledBodies_.load(); }
   /// Connections the server closed (a healthy run has none).
   int closed() const { return closed_.load(); }
