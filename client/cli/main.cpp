@@ -248,6 +248,9 @@ int main(int argc, char** argv) {
   if (const char* token = std::getenv("IMPULSE_TOKEN")) arguments.connect.token = token;
   app.add_option("--token", arguments.connect.token, "access token sent in Hello (see docs/server.md)")
       ->option_text("T");
+  app.add_option("--room", arguments.connect.room,
+                 "room to join, made on first join (default: the room \"default\")")
+      ->option_text("NAME");
   app.add_option("script", arguments.script, "script file; '-' or none: stdin")
       ->option_text("SCRIPT");
   app.footer(scriptHelp());

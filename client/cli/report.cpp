@@ -137,6 +137,16 @@ std::string replyReport(std::size_t line, std::string_view command,
   } else if (reply.has_joint_info()) {
     report["ok"] = true;
     report["joint"] = jointJson(reply.joint_info());
+  } else if (reply.has_room_list()) {
+    Json rooms = Json::array();
+    for (const auto& room : reply.room_list().rooms()) {
+      rooms.push_back({{"name", room.name()},
+                       {"clients", room.clients()},
+                       {"bodies", room.bodies()},
+                       {"tick", room.tick()}});
+    }
+    report["ok"] = true;
+    report["rooms"] = std::move(rooms);
   } else if (reply.has_pong()) {
     const auto& pong = reply.pong();
     const auto& s = pong.stats();

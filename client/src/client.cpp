@@ -19,6 +19,8 @@ std::uint64_t replyId(const v1::ServerMessage& message) {
       return message.joint_info().request_id();
     case v1::ServerMessage::kPong:
       return message.pong().request_id();
+    case v1::ServerMessage::kRoomList:
+      return message.room_list().request_id();
     default:
       return 0;
   }
@@ -75,6 +77,7 @@ Client::Client(const ConnectOptions& options) : socket_(io_), reader_(options.ma
   hello.mutable_hello()->set_client_name(options.name);
   hello.mutable_hello()->set_want_snapshots(options.wantSnapshots);
   hello.mutable_hello()->set_token(options.token);
+  hello.mutable_hello()->set_room(options.room);
   send(std::move(hello));
   while (!welcome_.has_world_max()) {
     if (!receiveOne(deadline)) throw ConnectionError("no Welcome from " + target);

@@ -193,4 +193,10 @@ v1::ClientMessage setTimeScale(double scale) {
   return message;
 }
 
+v1::ClientMessage listRooms() {
+  v1::ClientMessage message;
+  message.mutable_list_rooms();
+  return message;
+}
+
 }  // namespace impulse::client

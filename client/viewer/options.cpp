@@ -43,6 +43,9 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
                  "access token sent in Hello; the admin token gives the admin role (see "
                  "docs/server.md)")
       ->option_text("T");
+  app.add_option("--room", options.connect.room,
+                 "room to join, made on first join (default: the room \"default\")")
+      ->option_text("NAME");
   app.footer(
       "Environment: IMPULSE_TOKEN is the default --token; IMPULSE_FONT overrides the panel "
       "font; SDL_VIDEODRIVER=offscreen runs without a display.");

@@ -232,6 +232,13 @@ void setTimeScale(CommandContext& context, const v1::SetTimeScale& command) {
   context.succeed();
 }
 
+void listRooms(CommandContext& context, const v1::ListRooms&) {
+  // The server fills the list in (Server::deliver): a room knows only itself.
+  v1::ServerMessage reply;
+  reply.mutable_room_list()->set_request_id(context.message.request_id());
+  context.outcome.reply = std::move(reply);
+}
+
 }  // namespace handlers
 
 }  // namespace impulse::server

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include <asio/thread_pool.hpp>
+
 #include "impulse/server/log.h"
 #include "impulse/server/options.h"
 #include "impulse/server/server.h"
@@ -22,8 +24,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    asio::io_context io(1);
-    Server server(io, *parsed.options);
+    // Declared first: the rooms' strands post to the io_context until the pool is joined.
+    asio::thread_pool steppers(std::size_t(parsed.options->roomThreads));
+    asio::io_context io;
+    Server server(io, steppers, *parsed.options);
     asio::signal_set signals(io, SIGINT, SIGTERM);
     signals.async_wait([&server](const asio::error_code& ec, int signal) {
       if (ec) return;
@@ -39,6 +43,7 @@ int main(int argc, char** argv) {
     std::printf("listening on %s:%u\n", host.c_str(), unsigned(endpoint.port()));
     std::fflush(stdout);
     io.run();
+    steppers.join();
     logLine("stopped");
     return 0;
   } catch (const std::exception& error) {

@@ -99,7 +99,7 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 10000, o.maxClients);
        }},
-      {"--max-bodies", true, "N  bodies the world may hold (default 10000)",
+      {"--max-bodies", true, "N  bodies each room's world may hold (default 10000)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 200000, o.maxBodies);
        }},
@@ -136,6 +136,22 @@ const std::vector<Flag>& flags() {
        "(default 10)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return realFlag(f, v, 0.1, 3600, o.stallTimeoutSeconds);
+       }},
+      {"--max-rooms", true, "N  rooms at once, 1-1000; a Hello naming a new room past it is refused (default 16)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 1000, o.maxRooms);
+       }},
+      {"--health-port", true,
+       "N  answer HTTP GET /healthz and /readyz on this port (0 picks a free one; default none)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         std::uint16_t port = 0;
+         std::string error = intFlag(f, v, 0, 65535, port);
+         if (error.empty()) o.healthPort = port;
+         return error;
+       }},
+      {"--room-threads", true, "N  threads stepping the rooms, 1-64 (default 2)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 64, o.roomThreads);
        }},
   };
   return table;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "impulse/server/log.h"
@@ -43,38 +44,67 @@ double millisecondsSince(Clock::time_point start) {
 
 }  // namespace
 
-Room::Room(asio::io_context& io, const ServerOptions& options, RoomHost& host)
-    : options_(options),
+Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
+           const ServerOptions& options, RoomHost& host)
+    : name_(std::move(name)),
+      io_(io),
+      strand_(asio::make_strand(steppers.get_executor())),
+      options_(options),
       host_(host),
-      timer_(io),
+      timer_(strand_),
       simulation_(simulationSettings(options)),
       snapshots_(simulation_),
       schedule_(periodOf(options.tickHz), Clock::now()),
-      tickTimes_(std::size_t(std::ceil(options.tickHz))) {}
+      tickTimes_(std::size_t(std::ceil(options.tickHz))) {
+  publish();
+}
+
+template <class Work>
+void Room::onStrand(Work work) {
+  asio::post(strand_, [self = shared_from_this(), work = std::move(work)]() mutable {
+    work();
+    self->publish();
+    if (self->outbox_.empty()) return;
+    auto batch = std::make_shared<Batch>(std::move(self->outbox_));
+    self->outbox_.clear();
+    asio::post(self->io_, [self, batch] { self->deliver(*batch); });
+  });
+}
 
 void Room::start() {
-  const auto now = Clock::now();
-  schedule_ = TickSchedule(periodOf(options_.tickHz), now);
-  lastStatsLog_ = now;
-  lastSnapshotSlot_ = snapshotSlot();
-  scheduleTick();
+  onStrand([this] {
+    const auto now = Clock::now();
+    schedule_ = TickSchedule(periodOf(options_.tickHz), now);
+    lastStatsLog_ = now;
+    lastSnapshotSlot_ = snapshotSlot();
+    scheduleTick();
+  });
 }
 
 void Room::stop() {
-  stopped_ = true;
-  timer_.cancel();
-  commands_ = FairQueue();
-  steps_.clear();
+  onStrand([this] {
+    stopped_ = true;
+    timer_.cancel();
+    commands_ = FairQueue();
+    steps_.clear();
+  });
 }
 
 // ------------------------------------------------------------------ members
 
 void Room::join(const std::shared_ptr<Session>& session, bool wantSnapshots) {
   members_[session->id()] = session;
+  onStrand([this, client = session->id(), admin = session->admin(), wantSnapshots] {
+    welcome(client, admin, wantSnapshots);
+  });
+}
+
+void Room::welcome(std::uint32_t client, bool admin, bool wantSnapshots) {
+  clients_[client] = admin;
   v1::ServerMessage message;
   auto* welcome = message.mutable_welcome();
   welcome->set_protocol_version(wire::kProtocolVersion);
-  welcome->set_client_id(session->id());
+  welcome->set_client_id(client);
   welcome->set_tick_hz(options_.tickHz);
   welcome->set_snapshot_hz(options_.snapshotHz);
   welcome->set_tick(simulation_.tick());
@@ -85,19 +115,26 @@ void Room::join(const std::shared_ptr<Session>& session, bool wantSnapshots) {
   welcome->set_max_frame_bytes(std::uint32_t(options_.maxFrameBytes));
   welcome->set_max_bodies(std::uint32_t(options_.maxBodies));
   welcome->set_max_step_ticks(limits_.maxStepTicks);
-  welcome->set_admin(session->admin());
+  welcome->set_admin(admin);
   welcome->set_max_commands_per_second(std::uint32_t(options_.maxCommandsPerSecond));
   welcome->set_idle_timeout(options_.idleTimeoutSeconds);
   welcome->set_time_scale(simulation_.timeScale());
-  session->send(message);
-  if (wantSnapshots) session->subscribe(*this);
+  outbox_.emplace_back(Reply{client, std::move(message), 0,
+                             wantSnapshots ? ReplyKind::WelcomeAndSubscribe : ReplyKind::Welcome});
 }
 
 void Room::leave(Session& session) {
-  if (members_.erase(session.id()) == 0) return;
+  const auto it = members_.find(session.id());
+  if (it == members_.end()) return;
+  members_.erase(it);
+  subscriberIds_.erase(session.id());
+  countSubscribers();
   snapshotsSkippedByLeavers_ += session.snapshotsSkipped();
-  commands_.dropClient(session.id());
-  std::erase_if(steps_, [&](const StepJob& job) { return job.client() == session.id(); });
+  onStrand([this, client = session.id()] {
+    clients_.erase(client);
+    commands_.dropClient(client);
+    std::erase_if(steps_, [&](const StepJob& job) { return job.client() == client; });
+  });
 }
 
 std::shared_ptr<Session> Room::member(std::uint32_t client) const {
@@ -105,43 +142,108 @@ std::shared_ptr<Session> Room::member(std::uint32_t client) const {
   return it == members_.end() ? nullptr : it->second;
 }
 
+void Room::countSubscribers() { subscribers_ = subscriberIds_.size(); }
+
 void Room::enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes) {
   if (!session.withinRate()) {
     // Answered at once and never queued, so a flood costs the tick nothing.
     ++commandsRateLimited_;
-    reply(session,
-          refusal(message,
-                  std::string(commandName(message)) + ": rate limit exceeded (at most " +
-                      std::to_string(options_.maxCommandsPerSecond) +
-                      " commands per second per client); not applied",
-                  simulation_.tick()),
-          bytes);
+    session.send(refusal(message,
+                         std::string(commandName(message)) + ": rate limit exceeded (at most " +
+                             std::to_string(options_.maxCommandsPerSecond) +
+                             " commands per second per client); not applied",
+                         publishedTick_.load()));
+    session.commandsApplied(bytes);
     return;
   }
-  commands_.push(session.id(), std::move(message), bytes);
+  onStrand([this, client = session.id(), message = std::move(message), bytes]() mutable {
+    // A leaver's commands are dropped: its leave was posted after them.
+    if (clients_.contains(client)) commands_.push(client, std::move(message), bytes);
+  });
+}
+
+v1::RoomInfo Room::info() const {
+  v1::RoomInfo info;
+  info.set_name(name_);
+  info.set_clients(std::uint32_t(members_.size()));
+  info.set_bodies(publishedBodies_.load());
+  info.set_tick(publishedTick_.load());
+  return info;
 }
 
 std::pair<SharedFrame, std::uint64_t> Room::fullSnapshot() {
+  const std::lock_guard lock(worldMutex_);
   return {snapshots_.full(), snapshotSequence_};
+}
+
+// ------------------------------------------------------- I/O-thread delivery
+
+void Room::deliver(Batch& batch) {
+  for (auto& item : batch) {
+    if (auto* reply = std::get_if<Reply>(&item)) {
+      deliverReply(*reply);
+    } else {
+      deliverBroadcast(std::get<Broadcast>(item));
+    }
+  }
+}
+
+void Room::deliverReply(Reply& reply) {
+  const auto session = member(reply.client);
+  if (!session) return;
+  auto& message = reply.message;
+  if (message.has_pong()) {
+    // What only the I/O thread knows: connections and the members' skips.
+    auto* stats = message.mutable_pong()->mutable_stats();
+    stats->set_clients(std::uint32_t(host_.connectionCount()));
+    std::uint64_t skipped = snapshotsSkippedByLeavers_;
+    for (const auto& [id, other] : members_) skipped += other->snapshotsSkipped();
+    stats->set_snapshots_skipped(skipped);
+    stats->set_commands_rate_limited(commandsRateLimited_);
+  }
+  if (message.has_room_list()) host_.listRooms(*message.mutable_room_list());
+  session->send(message);
+  if (reply.kind == ReplyKind::Command) session->commandsApplied(reply.bytes);
+  if (reply.kind == ReplyKind::WelcomeAndSubscribe) {
+    session->subscribe(*this);
+    if (session->subscribed()) subscriberIds_.insert(session->id());
+    countSubscribers();
+  }
+}
+
+void Room::deliverBroadcast(const Broadcast& broadcast) {
+  // Copies: a session that a send closes leaves members_ at once.
+  std::vector<std::shared_ptr<Session>> subscribers;
+  for (const auto& [id, session] : members_) {
+    if (session->subscribed()) subscribers.push_back(session);
+  }
+  for (const auto& session : subscribers) {
+    session->offerSnapshot(broadcast.sequence, broadcast.delta);
+  }
 }
 
 // --------------------------------------------------------------------- ticks
 
 void Room::scheduleTick() {
   timer_.expires_at(schedule_.nextDeadline());
-  timer_.async_wait([this](const asio::error_code& ec) {
-    if (!ec && !stopped_) onTimer();
+  timer_.async_wait([self = shared_from_this()](const asio::error_code& ec) {
+    if (ec || self->stopped_) return;
+    self->onStrand([self] { self->onTimer(); });
   });
 }
 
 void Room::onTimer() {
-  const auto due = schedule_.due(Clock::now());
-  for (int i = 0; i < due.run && !stopped_; ++i) runTick();
-  if (due.skipped > 0) {
-    logLine("overrun: skipped " + std::to_string(due.skipped) + " tick(s) after running " +
-            std::to_string(due.run) + " late");
+  if (stopped_) return;
+  {
+    const std::lock_guard lock(worldMutex_);
+    const auto due = schedule_.due(Clock::now());
+    for (int i = 0; i < due.run; ++i) runTick();
+    if (due.skipped > 0) {
+      logLine("room " + name_ + ": overrun: skipped " + std::to_string(due.skipped) +
+              " tick(s) after running " + std::to_string(due.run) + " late");
+    }
   }
-  if (!stopped_) scheduleTick();
+  scheduleTick();
 }
 
 void Room::runTick() {
@@ -181,9 +283,7 @@ void Room::advanceStep(Clock::time_point deadline) {
   StepJob job = std::move(steps_.front());
   steps_.pop_front();
   commands_.release(job.client());
-  if (const auto session = member(job.client())) {
-    reply(*session, job.finish(simulation_), job.bytes());
-  }
+  if (clients_.contains(job.client())) reply(job.client(), job.finish(simulation_), job.bytes());
   broadcastSnapshot();
 }
 
@@ -196,33 +296,35 @@ void Room::applyCommands(Clock::time_point deadline) {
     auto queued = commands_.pop();
     if (!queued) break;
     // Leavers' queues are dropped, so the client is always a member.
-    if (const auto session = member(queued->client)) applyQueued(*queued, *session);
+    if (const auto client = clients_.find(queued->client); client != clients_.end()) {
+      applyQueued(*queued, client->second);
+    }
   }
 }
 
-void Room::applyQueued(QueuedCommand& queued, Session& session) {
+void Room::applyQueued(QueuedCommand& queued, bool admin) {
   const auto& message = queued.message;
-  if (!session.admin()) {
-    if (std::string error = ownership_.playerRefusal(message, session.id()); !error.empty()) {
-      return reply(session, refusal(message, std::move(error), simulation_.tick()), queued.bytes);
+  const std::uint32_t client = queued.client;
+  if (!admin) {
+    if (std::string error = ownership_.playerRefusal(message, client); !error.empty()) {
+      return reply(client, refusal(message, std::move(error), simulation_.tick()), queued.bytes);
     }
   }
   auto outcome = applyCommand(simulation_, message, limits_);
-  ownership_.recordOutcome(message, outcome.reply, session.id(), simulation_.world());
+  ownership_.recordOutcome(message, outcome.reply, client, simulation_.world());
   if (outcome.ticksToStep > 0) {
     // The client's later commands wait for its Step, keeping their order.
-    commands_.hold(session.id());
-    steps_.emplace_back(session.id(), std::move(outcome.reply), outcome.ticksToStep, queued.bytes);
+    commands_.hold(client);
+    steps_.emplace_back(client, std::move(outcome.reply), outcome.ticksToStep, queued.bytes);
     return;
   }
   if (outcome.reply.has_pong()) answerPing(message.ping(), outcome.reply);
-  reply(session, std::move(outcome.reply), queued.bytes);
+  reply(client, std::move(outcome.reply), queued.bytes);
   if (outcome.changed && simulation_.paused()) broadcastSnapshot();
 }
 
-void Room::reply(Session& session, v1::ServerMessage message, std::size_t bytes) {
-  session.send(message);
-  session.commandsApplied(bytes);
+void Room::reply(std::uint32_t client, v1::ServerMessage message, std::size_t bytes) {
+  outbox_.emplace_back(Reply{client, std::move(message), bytes});
 }
 
 void Room::answerPing(const v1::Ping& ping, v1::ServerMessage& pong) {
@@ -238,16 +340,12 @@ void Room::broadcastSnapshot() {
   // after paused steps broadcast on other ticks.
   lastSnapshotSlot_ = snapshotSlot();
   ++snapshotSequence_;
-  // Copies: a session that a send closes leaves members_ at once.
-  std::vector<std::shared_ptr<Session>> subscribers;
-  for (const auto& [id, session] : members_) {
-    if (session->subscribed()) subscribers.push_back(session);
-  }
   WorldChanges& changes = simulation_.takeChanges();
-  if (subscribers.empty()) return;
+  // A subscriber joining meanwhile starts from a full snapshot, so nothing is lost.
+  if (subscribers_.load() == 0) return;
   const auto delta = snapshots_.delta(changes);
   lastSnapshotBytes_ = delta->size();
-  for (const auto& session : subscribers) session->offerSnapshot(snapshotSequence_, delta);
+  outbox_.emplace_back(Broadcast{snapshotSequence_, delta});
 }
 
 v1::ServerStats Room::stats(bool withStateHash) {
@@ -264,15 +362,10 @@ v1::ServerStats Room::stats(bool withStateHash) {
   stats.set_mean_step_ms(simulation_.stepTimes().mean());
   stats.set_bodies(std::uint32_t(simulation_.world().bodyCount()));
   stats.set_awake_bodies(std::uint32_t(simulation_.world().awakeBodyCount()));
-  stats.set_clients(std::uint32_t(host_.connectionCount()));
   stats.set_last_snapshot_bytes(lastSnapshotBytes_);
-  std::uint64_t skipped = snapshotsSkippedByLeavers_;
-  for (const auto& [id, session] : members_) skipped += session->snapshotsSkipped();
-  stats.set_snapshots_skipped(skipped);
   if (withStateHash) stats.set_state_hash(simulation_.stateHash());
   stats.set_bodies_left_world(simulation_.bodiesLeftWorld());
   stats.set_guard_repairs(simulation_.world().guardReport().repairedBodies);
-  stats.set_commands_rate_limited(commandsRateLimited_);
   stats.set_commands_queued(commands_.size());
   stats.set_scaled_steps_dropped(scaledStepsDropped_);
   return stats;
@@ -282,11 +375,16 @@ void Room::logStats(Clock::time_point now) {
   if (now - lastStatsLog_ < kStatsLogInterval) return;
   lastStatsLog_ = now;
   const auto s = stats(false);
-  logLine("tick " + std::to_string(simulation_.tick()) + ": tick " +
+  logLine("room " + name_ + ": tick " + std::to_string(simulation_.tick()) + ": tick " +
           std::to_string(s.mean_tick_ms()) + " ms mean, " + std::to_string(s.max_tick_ms()) +
           " ms max; " + std::to_string(s.bodies()) + " bodies (" +
-          std::to_string(s.awake_bodies()) + " awake); " + std::to_string(s.clients()) +
+          std::to_string(s.awake_bodies()) + " awake); " + std::to_string(clients_.size()) +
           " clients; " + std::to_string(s.ticks_skipped()) + " ticks skipped");
+}
+
+void Room::publish() {
+  publishedTick_ = simulation_.tick();
+  publishedBodies_ = std::uint32_t(simulation_.world().bodyCount());
 }
 
 }  // namespace impulse::server

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "impulse/server/log.h"
+#include "impulse/server/room_name.h"
 
 namespace impulse::server {
 
@@ -29,27 +30,41 @@ SessionLimits sessionLimits(const ServerOptions& options) {
 
 }  // namespace
 
-Server::Server(asio::io_context& io, const ServerOptions& options)
+Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOptions& options)
     : io_(io),
       options_(options),
       acceptor_(io),
       housekeepingTimer_(io),
       sessionLimits_(sessionLimits(options)),
-      tokens_{options.token, options.adminToken} {
-  rooms_.push_back(std::make_unique<Room>(io, options_, *this));
+      tokens_{options.token, options.adminToken},
+      steppers_(steppers) {
+  const std::string defaultRoom(kDefaultRoom);
+  rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, options_, *this);
   const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
   acceptor_.bind(endpoint);
   acceptor_.listen();
+  if (options.healthPort) {
+    health_ = std::make_unique<HealthEndpoint>(
+        io, asio::ip::tcp::endpoint(endpoint.address(), *options.healthPort),
+        [this] { return readiness(); });
+  }
 }
 
 void Server::start() {
   lastTrim_ = Clock::now();
   logLine("serving preset " + std::to_string(options_.preset) + " at " +
-          std::to_string(options_.tickHz) + " Hz" + (options_.paused ? ", paused" : ""));
+          std::to_string(options_.tickHz) + " Hz" + (options_.paused ? ", paused" : "") +
+          " in every room; rooms stepped on " + std::to_string(options_.roomThreads) +
+          " thread(s)");
   accept();
-  for (const auto& room : rooms_) room->start();
+  if (health_) {
+    health_->start();
+    const auto probes = health_->endpoint();
+    logLine("health probes on port " + std::to_string(probes.port()) + " (GET /healthz, /readyz)");
+  }
+  for (const auto& [name, room] : rooms_) room->start();
   scheduleHousekeeping();
 }
 
@@ -60,13 +75,46 @@ void Server::stop() {
   asio::error_code ignored;
   acceptor_.close(ignored);
   housekeepingTimer_.cancel();
-  for (const auto& room : rooms_) room->stop();
+  if (health_) health_->stop();
+  for (const auto& [name, room] : rooms_) room->stop();
   std::vector<std::shared_ptr<Session>> sessions;
   for (const auto& [id, session] : sessions_) sessions.push_back(session);
   for (const auto& session : sessions) session->close("server shutting down");
 }
 
-Room& Server::roomOf(const Session&) { return *rooms_.front(); }
+// -------------------------------------------------------------------- rooms
+
+std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello& hello) {
+  if (std::string refusal = roomNameRefusal(hello.room()); !refusal.empty()) return refusal;
+  const std::string name = roomNameOf(hello.room());
+  if (const auto it = rooms_.find(name); it != rooms_.end()) return it->second;
+  if (rooms_.size() >= std::size_t(options_.maxRooms)) {
+    return "room limit reached: this server holds at most " + std::to_string(options_.maxRooms) +
+           " rooms (--max-rooms); join an existing one (ListRooms) or another server";
+  }
+  auto room = std::make_shared<Room>(name, io_, steppers_, options_, *this);
+  rooms_[name] = room;
+  room->start();
+  logLine("room " + name + " made (" + std::to_string(rooms_.size()) + " rooms)");
+  return room;
+}
+
+std::shared_ptr<Room> Server::roomOf(const Session& session) const {
+  const auto it = roomOfClient_.find(session.id());
+  return it == roomOfClient_.end() ? nullptr : it->second;
+}
+
+Readiness Server::readiness() const {
+  const std::string rooms = std::to_string(rooms_.size()) + " of " +
+                            std::to_string(options_.maxRooms) + " rooms";
+  if (stopped_) return {false, "stopping"};
+  if (rooms_.size() >= std::size_t(options_.maxRooms)) return {false, "full: " + rooms};
+  return {true, "ready: " + rooms};
+}
+
+void Server::listRooms(v1::RoomList& list) const {
+  for (const auto& [name, room] : rooms_) *list.add_rooms() = room->info();
+}
 
 // ------------------------------------------------------------------ clients
 
@@ -135,17 +183,30 @@ std::string Server::admissionRefusal(const Session& newcomer) {
 void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& hello) {
   const Admission admission = admit(tokens_, hello.token());
   if (!admission.error.empty()) return session->reject(admission.error);
+  auto room = roomFor(hello);
+  if (const auto* refusal = std::get_if<std::string>(&room)) return session->reject(*refusal);
   session->setAdmin(admission.admin);
-  roomOf(*session).join(session, hello.want_snapshots());
+  const auto& joined = std::get<std::shared_ptr<Room>>(room);
+  roomOfClient_[session->id()] = joined;
+  joined->join(session, hello.want_snapshots());
 }
 
 void Server::onCommand(const std::shared_ptr<Session>& session, v1::ClientMessage&& message,
                        std::size_t bytes) {
-  roomOf(*session).enqueue(*session, std::move(message), bytes);
+  // Sessions pass commands on only after their Hello was accepted.
+  if (const auto room = roomOf(*session)) room->enqueue(*session, std::move(message), bytes);
 }
 
 void Server::onClosed(Session& session) {
-  roomOf(session).leave(session);
+  if (const auto room = roomOf(session)) {
+    room->leave(session);
+    roomOfClient_.erase(session.id());
+    if (room->empty() && room->name() != kDefaultRoom && !stopped_) {
+      room->stop();
+      rooms_.erase(room->name());
+      logLine("room " + room->name() + " dropped: its last client left");
+    }
+  }
   ++closedSinceTrim_;
   sessions_.erase(session.id());
 }

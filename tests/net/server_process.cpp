@@ -235,15 +235,16 @@ bool RawConnection::waitClosed(milliseconds timeout) {
 
 // ------------------------------------------------------------------- CLI
 
-CliRun runCli(std::uint16_t port, const std::string& script, bool viaStdin) {
+CliRun runCli(std::uint16_t port, const std::string& script, bool viaStdin,
+              const std::string& extraArguments) {
   const std::string path = tempPath("impulse-cli-XXXXXX.txt");
   {
     std::ofstream file(path);
     file << script;
   }
   const std::string command = std::string(IMPULSE_CLI_BINARY) +
-                              " --connect 127.0.0.1:" + std::to_string(port) +
-                              (viaStdin ? " < " : " ") + path;
+                              " --connect 127.0.0.1:" + std::to_string(port) + " " +
+                              extraArguments + (viaStdin ? " < " : " ") + path;
   CliRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return run;

@@ -75,8 +75,9 @@ struct CliRun {
   std::vector<std::string> lines;
 };
 
-/// Runs impulse-cli --connect 127.0.0.1:PORT on `script` (written to a file,
-/// or fed on stdin).
-CliRun runCli(std::uint16_t port, const std::string& script, bool viaStdin = false);
+/// Runs impulse-cli --connect 127.0.0.1:PORT [extraArguments] on `script`
+/// (written to a file, or fed on stdin).
+CliRun runCli(std::uint16_t port, const std::string& script, bool viaStdin = false,
+              const std::string& extraArguments = "");
 
 }  // namespace impulse::net_test

@@ -44,6 +44,12 @@ TEST(ViewerOptions, TokenComesFromTheFlag_ElseFromImpulseToken) {
   EXPECT_FALSE(parse({"--token"}).options);  // a value is required
 }
 
+TEST(ViewerOptions, RoomIsSentInHello_DefaultTheDefaultRoom) {
+  EXPECT_EQ(parse({}).options->connect.room, "");  // Hello.room "" is the room "default"
+  EXPECT_EQ(parse({"--room", "match-7"}).options->connect.room, "match-7");
+  EXPECT_FALSE(parse({"--room"}).options);  // a value is required
+}
+
 TEST(ViewerOptions, RefusesBadValuesWithAMessage) {
   for (const auto& args : std::vector<std::vector<std::string_view>>{
            {"--connect", "nohost"}, {"--size", "80x60"}, {"--preset", "15"}, {"--frames"},

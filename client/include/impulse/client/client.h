@@ -44,6 +44,8 @@ struct ConnectOptions {
   std::uint32_t protocolVersion = wire::kProtocolVersion;
   /// Hello.token: the server's token, or its admin token for the admin role.
   std::string token;
+  /// Hello.room: the room to join (made on first join); "" = "default".
+  std::string room;
 };
 
 /// "HOST:PORT" (or "[V6]:PORT") split; nothing when malformed.

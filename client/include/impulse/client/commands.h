@@ -80,4 +80,7 @@ v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
 /// Simulated seconds per wall second, 0.01..16 (PROTOCOL.md, "Time").
 v1::ClientMessage setTimeScale(double scale);
 
+/// Answered by a RoomList: every room of the server.
+v1::ClientMessage listRooms();
+
 }  // namespace impulse::client

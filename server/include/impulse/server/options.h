@@ -39,6 +39,14 @@ struct ServerOptions {
   std::string token;
   /// Grants the admin role; without it every client is admin.
   std::string adminToken;
+  /// Rooms (PROTOCOL.md): at most this many at once; a Hello naming a new
+  /// room past it is refused. --max-bodies is per room.
+  int maxRooms = 16;
+  /// Threads stepping the rooms (each room on one thread at a time).
+  int roomThreads = 2;
+  /// The HTTP health probes' port on the bind address (health_endpoint.h);
+  /// none without --health-port, 0 picks a free one.
+  std::optional<std::uint16_t> healthPort;
 };
 
 /// Outcome of parsing: options, a request for help, or an error message.

@@ -2,17 +2,37 @@
 /// One world and everything that serves it: the simulation, its tick
 /// schedule and timer, the clients' command queues, its members and
 /// subscribers, and the snapshot builder. The Server accepts connections
-/// and hands each client, after Hello, to a room; today there is one.
+/// and hands each client, after Hello, to the room it names.
 ///
 /// Data flow: session -> enqueue() -> FairQueue -> (tick) applyCommand()
 /// through the command table -> Simulation (records its changes) ->
 /// SnapshotBuilder -> every subscribed member.
+///
+/// Threads (docs/server.md, "Rooms"): a room lives on two sides.
+/// - The I/O thread (the io_context, like every Session) owns the members
+///   and calls every public function.
+/// - The room's strand on the stepping pool owns the world: the simulation,
+///   the command queue, the Steps in progress, the tick timer. Commands,
+///   joins and leaves are posted to it; what it has to say (Welcome,
+///   replies, snapshot frames) is collected in an outbox and posted back to
+///   the I/O thread in one batch (deliver()). So a session is only ever
+///   touched by the I/O thread and a world only by one thread at a time.
+/// The one crossing: a subscriber's full snapshot is built on the I/O
+/// thread when its socket is ready, under worldMutex_, which the strand
+/// holds while it ticks.
 
 #include <asio.hpp>
+#include <asio/thread_pool.hpp>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <variant>
+#include <vector>
 
 #include "impulse/server/access.h"
 #include "impulse/server/commands.h"
@@ -26,17 +46,22 @@
 
 namespace impulse::server {
 
-/// What a room needs from the server that holds it.
+/// What a room needs from the server that holds it (called on the I/O thread).
 class RoomHost {
  public:
   virtual ~RoomHost() = default;
   /// Open connections, members of any room or not (ServerStats.clients).
   virtual std::size_t connectionCount() const = 0;
+  /// Every room of the server, for a RoomList.
+  virtual void listRooms(v1::RoomList& list) const = 0;
 };
 
-class Room final : public SnapshotSource {
+class Room final : public SnapshotSource, public std::enable_shared_from_this<Room> {
  public:
-  Room(asio::io_context& io, const ServerOptions& options, RoomHost& host);
+  Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
+       const ServerOptions& options, RoomHost& host);
+
+  const std::string& name() const { return name_; }
 
   /// Starts the tick timer.
   void start();
@@ -48,13 +73,46 @@ class Room final : public SnapshotSource {
   void join(const std::shared_ptr<Session>& session, bool wantSnapshots);
   /// A member closed: its queued commands and its Step in progress are dropped.
   void leave(Session& session);
+  bool empty() const { return members_.empty(); }
   /// A member's command, applied at a coming tick; refused at once past the
   /// client's rate.
   void enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes);
+  /// Name, members, and the bodies and tick as of the room's last tick.
+  v1::RoomInfo info() const;
 
   std::pair<SharedFrame, std::uint64_t> fullSnapshot() override;
 
  private:
+  // ----------------------------------------------- strand -> I/O thread
+  enum class ReplyKind { Command, Welcome, WelcomeAndSubscribe };
+  struct Reply {
+    std::uint32_t client;
+    v1::ServerMessage message;
+    std::size_t bytes;  // the command's frame size (frees the client's reading budget)
+    ReplyKind kind = ReplyKind::Command;
+  };
+  struct Broadcast {
+    std::uint64_t sequence;
+    SharedFrame delta;
+  };
+  using Outgoing = std::variant<Reply, Broadcast>;
+  using Batch = std::vector<Outgoing>;
+
+  /// Runs `work` on the strand, then posts what it produced to the I/O thread.
+  template <class Work>
+  void onStrand(Work work);
+  /// I/O thread: hands a batch to the members it names.
+  void deliver(Batch& batch);
+  void deliverReply(Reply& reply);
+  void deliverBroadcast(const Broadcast& broadcast);
+  /// A shared owner, so that a session closed by what is sent to it stays
+  /// alive until the caller is done with it; null for a non-member.
+  std::shared_ptr<Session> member(std::uint32_t client) const;
+  /// Tells the strand how many subscribers there are (none: no deltas to build).
+  void countSubscribers();
+
+  // ------------------------------------------------------- strand side
+  void welcome(std::uint32_t client, bool admin, bool wantSnapshots);
   void scheduleTick();
   void onTimer();
   void runTick();
@@ -65,38 +123,31 @@ class Room final : public SnapshotSource {
   void advanceStep(Clock::time_point deadline);
   void applyCommands(Clock::time_point deadline);
   /// Applies one queued command for its client, roles checked, and replies.
-  void applyQueued(QueuedCommand& queued, Session& session);
-  void reply(Session& session, v1::ServerMessage message, std::size_t bytes);
+  void applyQueued(QueuedCommand& queued, bool admin);
+  void reply(std::uint32_t client, v1::ServerMessage message, std::size_t bytes);
   /// Adds the room's statistics to the handler's Pong: only Ping needs them.
   void answerPing(const v1::Ping& ping, v1::ServerMessage& pong);
   void broadcastSnapshot();
   /// Snapshots are due when floor(running ticks * snapshot_hz / tick_hz)
   /// changes: on the wall clock's grid, whatever the time scale.
   std::int64_t snapshotSlot() const;
+  /// The statistics the world side knows (the I/O thread adds clients and
+  /// skipped snapshots when it delivers the Pong).
   v1::ServerStats stats(bool withStateHash);
   void logStats(Clock::time_point now);
-  /// A shared owner, so that a session closed by what is sent to it stays
-  /// alive until the caller is done with it; null for a non-member.
-  std::shared_ptr<Session> member(std::uint32_t client) const;
+  /// Publishes the tick and body count for RoomList and early refusals.
+  void publish();
 
+  const std::string name_;
+  asio::io_context& io_;
+  asio::strand<asio::thread_pool::executor_type> strand_;
   const ServerOptions& options_;
   RoomHost& host_;
-  asio::steady_timer timer_;
-  Simulation simulation_;
-  SnapshotBuilder snapshots_;
-  CommandLimits limits_;
-  TickSchedule schedule_;
-  TickTimes tickTimes_;
-  bool stopped_ = false;
 
+  // I/O thread only.
   std::map<std::uint32_t, std::shared_ptr<Session>> members_;
-  FairQueue commands_;
-  std::deque<StepJob> steps_;
-  Ownership ownership_;
-
-  std::uint64_t snapshotSequence_ = 0;
-  std::int64_t lastSnapshotSlot_ = 0;
-  std::uint64_t lastSnapshotBytes_ = 0;
+  /// Members whose snapshot stream started (a closed session no longer says).
+  std::set<std::uint32_t> subscriberIds_;
   /// Snapshots skipped by members that left.
   std::uint64_t snapshotsSkippedByLeavers_ = 0;
   std::uint64_t commandsRateLimited_ = 0;
@@ -104,7 +155,33 @@ class Room final : public SnapshotSource {
   /// scale owed that did not fit their tick.
   std::uint64_t runningTicks_ = 0;
   std::uint64_t scaledStepsDropped_ = 0;
+
+  // Written by the I/O thread, read by the strand: subscribers to build deltas for.
+  std::atomic<std::size_t> subscribers_ = 0;
+  // Written by the strand, read by the I/O thread.
+  std::atomic<std::uint64_t> publishedTick_ = 0;
+  std::atomic<std::uint32_t> publishedBodies_ = 0;
+
+  // Strand only, except that fullSnapshot() reads the world and the
+  // snapshot builder on the I/O thread under worldMutex_.
+  std::mutex worldMutex_;
+  asio::steady_timer timer_;
+  Simulation simulation_;
+  SnapshotBuilder snapshots_;
+  std::uint64_t snapshotSequence_ = 0;
+  CommandLimits limits_;
+  TickSchedule schedule_;
+  TickTimes tickTimes_;
+  bool stopped_ = false;
+  /// The members as the strand knows them, with their role (true: admin).
+  std::map<std::uint32_t, bool> clients_;
+  FairQueue commands_;
+  std::deque<StepJob> steps_;
+  Ownership ownership_;
+  std::int64_t lastSnapshotSlot_ = 0;
+  std::uint64_t lastSnapshotBytes_ = 0;
   Clock::time_point lastStatsLog_;
+  Batch outbox_;
 };
 
 }  // namespace impulse::server

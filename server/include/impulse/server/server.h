@@ -1,17 +1,23 @@
 #pragma once
 /// impulse-server: accepts clients, admits them, and hands each one after
-/// Hello to a room (room.h), which runs the world's tick and broadcasts its
-/// snapshots. Everything runs on the io_context's thread: every piece of
-/// work is bounded and every socket operation is asynchronous, so the
-/// simulation never waits on a socket.
+/// Hello to the room it names (room.h), made on first join, which runs its
+/// world's tick and broadcasts its snapshots. Sockets, sessions and the
+/// rooms' members live on the io_context's thread (every socket operation
+/// asynchronous); each room's world is stepped on a strand of the stepping
+/// pool, so rooms tick in parallel and never wait on a socket or on each
+/// other (docs/server.md, "Rooms").
 
 #include <asio.hpp>
+#include <asio/thread_pool.hpp>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
+#include <variant>
 #include <vector>
 
 #include "impulse/server/access.h"
+#include "impulse/server/health_endpoint.h"
 #include "impulse/server/options.h"
 #include "impulse/server/room.h"
 #include "impulse/server/session.h"
@@ -22,7 +28,9 @@ namespace impulse::server {
 class Server final : public SessionHost, public RoomHost {
  public:
   /// Binds the listening socket (throws asio::system_error on failure).
-  Server(asio::io_context& io, const ServerOptions& options);
+  /// Rooms are stepped on `steppers`, which must outlive the io_context's
+  /// pending work (join it after io_context::run() returns).
+  Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOptions& options);
 
   asio::ip::tcp::endpoint endpoint() const { return acceptor_.local_endpoint(); }
   /// Starts accepting and ticking.
@@ -35,19 +43,24 @@ class Server final : public SessionHost, public RoomHost {
                  std::size_t bytes) override;
   void onClosed(Session& session) override;
   std::size_t connectionCount() const override { return sessions_.size(); }
+  void listRooms(v1::RoomList& list) const override;
 
  private:
   void accept();
   /// Why a new connection may not be served ("" when it may); makes room
   /// by evicting an idle connection when it can.
   std::string admissionRefusal(const Session& newcomer);
-  /// The room a client plays in: the default room, until clients can choose.
-  Room& roomOf(const Session& session);
+  /// The room Hello names, made if it is new; or why the client may not join.
+  std::variant<std::shared_ptr<Room>, std::string> roomFor(const v1::Hello& hello);
+  /// The room a client joined; null before Hello.
+  std::shared_ptr<Room> roomOf(const Session& session) const;
   void scheduleHousekeeping();
   void housekeeping();
   /// Gives freed heap back to the system after connections closed (a flood
   /// of them would otherwise leave the process large).
   void releaseMemory(Clock::time_point now);
+  /// /readyz: ready while a new room can be made.
+  Readiness readiness() const;
 
   asio::io_context& io_;
   ServerOptions options_;
@@ -55,8 +68,13 @@ class Server final : public SessionHost, public RoomHost {
   asio::steady_timer housekeepingTimer_;
   SessionLimits sessionLimits_;
   AccessTokens tokens_;
-  /// The first is the default room, the only one today.
-  std::vector<std::unique_ptr<Room>> rooms_;
+  /// The probes' endpoint, with --health-port.
+  std::unique_ptr<HealthEndpoint> health_;
+  asio::thread_pool& steppers_;
+  /// By name. The default room lives as long as the server; any other is
+  /// dropped when its last member leaves.
+  std::map<std::string, std::shared_ptr<Room>> rooms_;
+  std::map<std::uint32_t, std::shared_ptr<Room>> roomOfClient_;
 
   std::map<std::uint32_t, std::shared_ptr<Session>> sessions_;
   std::uint32_t nextClientId_ = 1;

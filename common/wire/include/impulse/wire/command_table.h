@@ -102,5 +102,8 @@
       client::queryJoint)                                                                 \
   ROW(SetTimeScale, set_time_scale, Admin, setTimeScale, "time-scale", "time-scale S",    \
       "simulated time runs S times wall time (0.01-16), same step size",                  \
-      parseTimeScale, client::setTimeScale)
+      parseTimeScale, client::setTimeScale)                                             \
+  ROW(ListRooms, list_rooms, Anyone, listRooms, "rooms", "rooms",                         \
+      "the server's rooms: name, clients, bodies, tick (reply is a RoomList)",            \
+      parseNoArguments, client::listRooms)
 // clang-format on

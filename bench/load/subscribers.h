@@ -1,0 +1,76 @@
+#pragma once
+// The load bench's subscribers: N raw connections that say Hello with
+// want_snapshots and the chosen encoding, then read everything the server
+// sends, counting bytes and frames. One thread polls them all, so the
+// readers cost the shared machine little; they never decode (a client's
+// decoding is not the server's load), except for one frame in 30 that
+// checks how many body states a snapshot carries.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "impulse.pb.h"
+
+namespace load {
+
+/// What a subscriber asks for in Hello (PROTOCOL.md, "Compact snapshots").
+enum class Encoding { Plain };
+
+/// "plain" -> Encoding::Plain; false for a name this build does not know.
+bool parseEncoding(const std::string& name, Encoding& encoding);
+/// The Hello a subscriber sends.
+impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index);
+
+struct SubscriberCounts {
+  std::uint64_t bytes = 0;
+  std::uint64_t frames = 0;
+};
+
+class Subscribers {
+ public:
+  /// Connects `count` subscribers to 127.0.0.1:`port` and starts reading.
+  Subscribers(std::uint16_t port, int count, Encoding encoding);
+  ~Subscribers();
+  Subscribers(const Subscribers&) = delete;
+  Subscribers& operator=(const Subscribers&) = delete;
+
+  /// Bytes and frames each subscriber has read so far.
+  std::vector<SubscriberCounts> counts() const;
+  /// Body states in the newest sampled snapshot (subscriber 0; a full one
+  /// when it fell behind).
+  std::uint32_t sampledBodies() const { return sampledBodies_.load(); }
+  /// Connections the server closed (a healthy run has none).
+  int closed() const { return closed_.load(); }
+
+ private:
+  struct Connection {
+    int socket = -1;
+    std::atomic<std::uint64_t> bytes = 0;
+    std::atomic<std::uint64_t> frames = 0;
+    /// Frame parsing: payload bytes left of the current frame, else the
+    /// varint length being read.
+    std::uint64_t frameLeft = 0;
+    std::uint64_t header = 0;
+    int headerShift = 0;
+    /// The current frame is kept for the body-count sample.
+    bool sampling = false;
+  };
+  void run();
+  /// Reads what `connection` has; false once the server closed it.
+  bool readFrom(Connection& connection, bool sampled);
+  void consume(Connection& connection, const char* data, std::size_t size, bool sampled);
+  void sampleFrame();
+
+  std::vector<std::unique_ptr<Connection>> connections_;
+  std::string sample_;
+  std::atomic<std::uint32_t> sampledBodies_ = 0;
+  std::atomic<int> closed_ = 0;
+  std::atomic<bool> stop_ = false;
+  std::thread reader_;
+};
+
+}  // namespace load
