@@ -19,6 +19,8 @@ std::uint64_t replyId(const v1::ServerMessage& message) {
       return message.joint_info().request_id();
     case v1::ServerMessage::kPong:
       return message.pong().request_id();
+    case v1::ServerMessage::kSceneData:
+      return message.scene_data().request_id();
     default:
       return 0;
   }

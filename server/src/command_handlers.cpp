@@ -225,6 +225,21 @@ void queryJoint(CommandContext& context, const v1::QueryJoint& command) {
   context.outcome.reply = std::move(reply);
 }
 
+void saveScene(CommandContext& context, const v1::SaveScene&) {
+  v1::ServerMessage reply;
+  auto* scene = reply.mutable_scene_data();
+  scene->set_request_id(context.message.request_id());
+  scene->set_data(wire::saveScene(context.simulation.world()));
+  context.outcome.reply = std::move(reply);
+}
+
+void loadScene(CommandContext& context, const v1::LoadScene& command) {
+  if (InputResult loaded = context.simulation.loadScene(command.data()); !loaded) {
+    return context.fail("load_scene: " + loaded.error);
+  }
+  context.succeed();
+}
+
 }  // namespace handlers
 
 }  // namespace impulse::server

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <utility>
 
+#include "impulse/wire/scene_convert.h"
+
 namespace impulse::server {
 
 namespace {
@@ -127,6 +129,14 @@ void Simulation::clear() {
   world_.clear();
   changes_.replaced();
   ++version_;
+}
+
+InputResult Simulation::loadScene(std::string_view data) {
+  InputResult loaded = wire::loadScene(world_, data);
+  if (!loaded) return loaded;
+  changes_.replaced();
+  ++version_;
+  return loaded;
 }
 
 void Simulation::setPaused(bool paused) {

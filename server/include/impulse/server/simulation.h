@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
@@ -52,6 +53,10 @@ class Simulation {
   bool loadPreset(int id, Material selected);
   /// Removes every body.
   void clear();
+  /// Replaces the world with a serialised Scene (docs/scenes.md); refused,
+  /// with the reason and the world untouched, when it does not parse or
+  /// the engine refuses its state.
+  InputResult loadScene(std::string_view data);
   void setPaused(bool paused);
 
   std::uint64_t tick() const { return tick_; }

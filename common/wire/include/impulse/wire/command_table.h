@@ -97,5 +97,11 @@
       "remove a joint", parseBodyId, client::removeJoint)                                \
   ROW(QueryJoint, query_joint, Anyone, queryJoint, "query-joint", "query-joint J",        \
       "a joint's description, reaction force and torque, length, angle", parseBodyId,   \
-      client::queryJoint)
+      client::queryJoint)                                                                 \
+  ROW(SaveScene, save_scene, Anyone, saveScene, "save", "save FILE",                      \
+      "write the whole world, bit-exact, to FILE (a Scene message, docs/scenes.md)",      \
+      parseSceneFileName, client::saveScene)                                              \
+  ROW(LoadScene, load_scene, Admin, loadScene, "load", "load FILE",                       \
+      "replace the world with the scene in FILE; it steps on as the saved one did",       \
+      parseSceneFile, client::loadScene)
 // clang-format on
