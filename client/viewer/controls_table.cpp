@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // SPEC.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 27> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
@@ -34,6 +34,8 @@ constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
     {"W A S D", "nudge gravity while held"},
     {"Enter", "reset gravity"},
     {"", "drawing: sandbox and presets 3, 4"},
+    {"Ctrl+S / Ctrl+O", "save the scene to its file / load it back"},
+    {"Ctrl+D / Ctrl+1-9", "keep the drawn polygon / stamp kept shape 1-9"},
 }};
 
 }  // namespace
