@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "impulse/wire/convert.h"
+#include "impulse/wire/scene_convert.h"
 
 namespace impulse::server {
 
