@@ -16,7 +16,8 @@ std::optional<std::string> readSceneFile(const std::string& path, std::string& e
     return std::nullopt;
   }
   if (size > kMaxSceneFileBytes) {
-    error = path + " is larger than a scene file may be (" + std::to_string(kMaxSceneFileBytes >> 20) + " MiB)";
+    error = path + " is larger than a scene file may be (" +
+            std::to_string(kMaxSceneFileBytes >> 20) + " MiB)";
     return std::nullopt;
   }
   std::ifstream file(path, std::ios::binary);

@@ -138,9 +138,12 @@ void App::actOnScene(SceneKey key) {
   switch (key.action) {
     case SceneAction::SaveScene: return controls_.notify(sceneFiles_.save(), now());
     case SceneAction::LoadScene: return controls_.notify(sceneFiles_.load(), now());
-    case SceneAction::SaveShape: return controls_.notify(sceneFiles_.saveShape(c.polygonPoints()), now());
+    case SceneAction::SaveShape:
+      return controls_.notify(sceneFiles_.saveShape(c.polygonPoints()), now());
     case SceneAction::StampShape:
-      if (!context().drawingAllowed) return controls_.notify("This scene does not allow drawing", now());
+      if (!context().drawingAllowed) {
+        return controls_.notify("This scene does not allow drawing", now());
+      }
       return controls_.notify(sceneFiles_.stamp(std::size_t(key.index), c.pointer(),
                                                 {.material = c.material(),
                                                  .isStatic = c.nextStatic(),

@@ -29,15 +29,18 @@ ShapeLibrary::ShapeLibrary(std::string path) : path_(std::move(path)) {
     std::vector<Vec2> points = parseShapeLine(line);
     const PolygonBuild build = buildPolygon(points);
     if (build.error != ShapeError::None) continue;
-    shapes_.emplace_back(build.polygon.vertices.begin(), build.polygon.vertices.begin() + build.polygon.count);
+    shapes_.emplace_back(build.polygon.vertices.begin(),
+                         build.polygon.vertices.begin() + build.polygon.count);
   }
 }
 
 std::string ShapeLibrary::add(std::span<const Vec2> points) {
   const PolygonBuild build = buildPolygon(points);
-  if (build.error != ShapeError::None) return "Shape not kept: " + std::string(describe(build.error));
+  if (build.error != ShapeError::None)
+    return "Shape not kept: " + std::string(describe(build.error));
   if (shapes_.size() == kMaxShapes) shapes_.erase(shapes_.begin());
-  shapes_.emplace_back(build.polygon.vertices.begin(), build.polygon.vertices.begin() + build.polygon.count);
+  shapes_.emplace_back(build.polygon.vertices.begin(),
+                       build.polygon.vertices.begin() + build.polygon.count);
   if (std::string error = write(); !error.empty()) return error;
   return "Shape " + std::to_string(shapes_.size()) + " kept in " + path_ + ": Ctrl+" +
          std::to_string(shapes_.size()) + " stamps it at the cursor";
@@ -54,7 +57,8 @@ std::string ShapeLibrary::write() const {
   std::ostringstream text;
   text.precision(9);  // enough digits to give back every float
   for (const auto& shape : shapes_) {
-    for (std::size_t i = 0; i < shape.size(); ++i) text << (i ? " " : "") << shape[i].x() << ' ' << shape[i].y();
+    for (std::size_t i = 0; i < shape.size(); ++i)
+      text << (i ? " " : "") << shape[i].x() << ' ' << shape[i].y();
     text << '\n';
   }
   const std::string error = client::writeSceneFile(path_, text.str());
@@ -73,7 +77,8 @@ std::string SceneFiles::sceneArrived(const std::string& data) {
   if (std::string error = client::writeSceneFile(sceneFile_, data); !error.empty()) {
     return "Scene not saved: " + error;
   }
-  return "Scene saved to " + sceneFile_ + " (" + std::to_string(data.size()) + " bytes): Ctrl+O loads it";
+  return "Scene saved to " + sceneFile_ + " (" + std::to_string(data.size()) +
+         " bytes): Ctrl+O loads it";
 }
 
 std::string SceneFiles::load() {
@@ -90,10 +95,12 @@ std::string SceneFiles::saveShape(std::span<const Vec2> drawing) {
   return shapes_.add(lastDrawn_);
 }
 
-std::string SceneFiles::stamp(std::size_t index, const Vec2& at, const client::SpawnOptions& options) {
+std::string SceneFiles::stamp(std::size_t index, const Vec2& at,
+                              const client::SpawnOptions& options) {
   const std::vector<Vec2> points = shapes_.placed(index, at);
   if (points.empty()) {
-    return "No shape " + std::to_string(index + 1) + " in " + shapes_.path() + " (Ctrl+D keeps a drawn polygon)";
+    return "No shape " + std::to_string(index + 1) + " in " + shapes_.path() +
+           " (Ctrl+D keeps a drawn polygon)";
   }
   std::vector<client::Point> vertices;
   for (const Vec2& p : points) vertices.push_back({p.x(), p.y()});
@@ -104,7 +111,8 @@ std::string SceneFiles::stamp(std::size_t index, const Vec2& at, const client::S
 void SceneFiles::sent(const v1::ClientMessage& message) {
   if (!message.has_spawn_polygon()) return;
   lastDrawn_.clear();
-  for (const v1::Vec2& v : message.spawn_polygon().vertices()) lastDrawn_.emplace_back(Real(v.x()), Real(v.y()));
+  for (const v1::Vec2& v : message.spawn_polygon().vertices())
+    lastDrawn_.emplace_back(Real(v.x()), Real(v.y()));
 }
 
 std::vector<Outgoing> SceneFiles::takeCommands() { return std::exchange(outbox_, {}); }

@@ -8,9 +8,18 @@ namespace impulse {
 namespace {
 
 SolverSettingsState solverSettingsOf(const WorldSettings& s) {
-  return {s.gravity,      s.subSteps,           s.relaxIterations,      s.contactHertz,
-          s.contactDampingRatio, s.maxContactPushSpeed, s.restitutionThreshold, s.stickSpeed,
-          s.enableWarmStarting,  s.enableSleep,         s.linearSleepTolerance, s.timeToSleep,
+  return {s.gravity,
+          s.subSteps,
+          s.relaxIterations,
+          s.contactHertz,
+          s.contactDampingRatio,
+          s.maxContactPushSpeed,
+          s.restitutionThreshold,
+          s.stickSpeed,
+          s.enableWarmStarting,
+          s.enableSleep,
+          s.linearSleepTolerance,
+          s.timeToSleep,
           s.enableContinuous};
 }
 
@@ -112,7 +121,8 @@ WorldState World::exportState() const {
   state.nextCreationOrder = w.nextCreationOrder;
   const std::vector<bool> liveContacts = liveContactSlots(w);
   for (std::size_t slot = 0; slot < w.contacts.size(); ++slot) {
-    state.contacts.push_back(liveContacts[slot] ? exportContact(w.contacts[slot]) : ContactSlotState{});
+    state.contacts.push_back(liveContacts[slot] ? exportContact(w.contacts[slot])
+                                                : ContactSlotState{});
   }
   state.freeContacts = w.freeContacts.slots();
   for (const Joint& joint : w.joints) state.joints.push_back(exportJoint(joint));

@@ -18,14 +18,16 @@ namespace {
 // Ranges of the solver settings a scene may carry (docs/scenes.md).
 constexpr int kMaxSubSteps = 64;
 constexpr int kMaxRelaxIterations = 64;
-constexpr double kMaxRate = 1e4;          // Hz, damping ratios, speeds in m/s
-constexpr double kMaxSleepTime = 1e9;     // s
-constexpr double kMaxLocalLength = 1e4;   // m, anchors and joint references
-constexpr double kMaxImpulse = 1e15;      // N*s, impulses carried for warm starting
-constexpr double kMaxCoefficient = 1e3;   // mixed friction, restitution, rolling length
+constexpr double kMaxRate = 1e4;         // Hz, damping ratios, speeds in m/s
+constexpr double kMaxSleepTime = 1e9;    // s
+constexpr double kMaxLocalLength = 1e4;  // m, anchors and joint references
+constexpr double kMaxImpulse = 1e15;     // N*s, impulses carried for warm starting
+constexpr double kMaxCoefficient = 1e3;  // mixed friction, restitution, rolling length
 constexpr Real kUnitTolerance = Real(1e-4);
 
-std::string at(const char* kind, std::size_t slot) { return std::string(kind) + " " + std::to_string(slot) + ": "; }
+std::string at(const char* kind, std::size_t slot) {
+  return std::string(kind) + " " + std::to_string(slot) + ": ";
+}
 
 std::string checkVector(const std::string& field, const Vec2& v, double bound) {
   std::string error = checkRange(field + ".x", v.x(), -bound, bound);
@@ -33,7 +35,8 @@ std::string checkVector(const std::string& field, const Vec2& v, double bound) {
 }
 
 std::string checkRotation(const std::string& field, const Rot& q) {
-  if (isFinite(q.c) && isFinite(q.s) && std::abs(q.c * q.c + q.s * q.s - 1) <= kUnitTolerance) return {};
+  if (isFinite(q.c) && isFinite(q.s) && std::abs(q.c * q.c + q.s * q.s - 1) <= kUnitTolerance)
+    return {};
   return field + " must be a unit rotation (cos, sin)";
 }
 
@@ -45,17 +48,17 @@ std::string firstOf(const Errors&... errors) {
 }
 
 std::string applySolverSettings(const SolverSettingsState& s, WorldSettings& settings) {
-  std::string error = firstOf(
-      checkGravity(settings.inputLimits, s.gravity),
-      checkRange("subSteps", s.subSteps, 1, kMaxSubSteps),
-      checkRange("relaxIterations", s.relaxIterations, 0, kMaxRelaxIterations),
-      checkRange("contactHertz", s.contactHertz, 0, kMaxRate),
-      checkRange("contactDampingRatio", s.contactDampingRatio, 0, kMaxRate),
-      checkRange("maxContactPushSpeed", s.maxContactPushSpeed, 0, kMaxRate),
-      checkRange("restitutionThreshold", s.restitutionThreshold, 0, kMaxRate),
-      checkRange("stickSpeed", s.stickSpeed, 0, kMaxRate),
-      checkRange("linearSleepTolerance", s.linearSleepTolerance, 0, kMaxRate),
-      checkRange("timeToSleep", s.timeToSleep, 0, kMaxSleepTime));
+  std::string error =
+      firstOf(checkGravity(settings.inputLimits, s.gravity),
+              checkRange("subSteps", s.subSteps, 1, kMaxSubSteps),
+              checkRange("relaxIterations", s.relaxIterations, 0, kMaxRelaxIterations),
+              checkRange("contactHertz", s.contactHertz, 0, kMaxRate),
+              checkRange("contactDampingRatio", s.contactDampingRatio, 0, kMaxRate),
+              checkRange("maxContactPushSpeed", s.maxContactPushSpeed, 0, kMaxRate),
+              checkRange("restitutionThreshold", s.restitutionThreshold, 0, kMaxRate),
+              checkRange("stickSpeed", s.stickSpeed, 0, kMaxRate),
+              checkRange("linearSleepTolerance", s.linearSleepTolerance, 0, kMaxRate),
+              checkRange("timeToSleep", s.timeToSleep, 0, kMaxSleepTime));
   if (!error.empty()) return "settings: " + error;
   settings.gravity = s.gravity;
   settings.subSteps = s.subSteps;
@@ -86,10 +89,12 @@ std::string checkPolygon(const Polygon& polygon, const ShapeLimits& limits) {
   if (build.error != ShapeError::None) return "polygon: " + std::string(describe(build.error));
   const Real extent = computeExtent(Shape::makePolygon(polygon));
   if (build.centroid.norm() > kUnitTolerance * (1 + extent)) {
-    return "polygon's centroid must be at the body's origin (vertices are local to the centre of mass)";
+    return "polygon's centroid must be at the body's origin (vertices are local to the centre of "
+           "mass)";
   }
   for (int i = 0; i < polygon.count; ++i) {
-    const Vec2 edge = polygon.vertices[std::size_t((i + 1) % polygon.count)] - polygon.vertices[std::size_t(i)];
+    const Vec2 edge =
+        polygon.vertices[std::size_t((i + 1) % polygon.count)] - polygon.vertices[std::size_t(i)];
     const Vec2 outward = Vec2(edge.y(), -edge.x()).normalized();
     const Vec2& normal = polygon.normals[std::size_t(i)];
     if (!isFinite(normal) || (normal - outward).norm() > kUnitTolerance ||
@@ -116,25 +121,29 @@ MaterialOverride coefficientsOf(const BodySlotState& b) {
 std::string checkBody(const WorldSettings& settings, const BodySlotState& b) {
   const InputLimits& limits = settings.inputLimits;
   if (static_cast<int>(b.material) >= kMaterialCount) return "unknown material";
-  std::string error = firstOf(
-      checkShape(b.shape, settings.shapeLimits),
-      checkApplicationPoint(limits, settings.bounds, b.transform.p, "position"),
-      checkRotation("rotation", b.transform.q), checkBodyMotion(limits, b.linearVelocity, b.angularVelocity),
-      validateMaterialOverride(coefficientsOf(b)), checkRange("linearDrag", b.linearDrag, 0, kMaxRate),
-      checkRange("angularDrag", b.angularDrag, 0, kMaxRate),
-      checkRange("sleepTime", b.sleepTime, 0, kMaxSleepTime),
-      checkApplicationPoint(limits, settings.bounds, b.center0, "center0"),
-      checkRotation("rotation0", b.rotation0));
+  std::string error =
+      firstOf(checkShape(b.shape, settings.shapeLimits),
+              checkApplicationPoint(limits, settings.bounds, b.transform.p, "position"),
+              checkRotation("rotation", b.transform.q),
+              checkBodyMotion(limits, b.linearVelocity, b.angularVelocity),
+              validateMaterialOverride(coefficientsOf(b)),
+              checkRange("linearDrag", b.linearDrag, 0, kMaxRate),
+              checkRange("angularDrag", b.angularDrag, 0, kMaxRate),
+              checkRange("sleepTime", b.sleepTime, 0, kMaxSleepTime),
+              checkApplicationPoint(limits, settings.bounds, b.center0, "center0"),
+              checkRotation("rotation0", b.rotation0));
   if (!error.empty()) return error;
   if (b.isStatic && b.awake) return "a static body cannot be awake";
   return {};
 }
 
 // Pending forces within the accelerations InputLimits allow for the mass.
-std::string checkForces(const InputLimits& limits, const BodySlotState& b, const MassProperties& mass) {
+std::string checkForces(const InputLimits& limits, const BodySlotState& b,
+                        const MassProperties& mass) {
   const double maxForce = b.isStatic ? 0 : double(limits.maxForceAcceleration) * mass.mass;
   const double maxTorque = b.isStatic ? 0 : double(limits.maxTorqueAcceleration) * mass.inertia;
-  return firstOf(checkVector("force", b.force, maxForce), checkRange("torque", b.torque, -maxTorque, maxTorque));
+  return firstOf(checkVector("force", b.force, maxForce),
+                 checkRange("torque", b.torque, -maxTorque, maxTorque));
 }
 
 // The body as createBody would have made it, with the saved motion and
@@ -181,12 +190,15 @@ std::string checkFreeList(const char* kind, const std::vector<std::int32_t>& fre
   std::size_t deadCount = 0;
   for (bool live : alive) deadCount += live ? 0 : 1;
   for (std::int32_t slot : freeSlots) {
-    if (slot < 0 || std::size_t(slot) >= alive.size() || alive[std::size_t(slot)] || listed[std::size_t(slot)]) {
-      return std::string(kind) + " free list must name each free slot once (bad entry " + std::to_string(slot) + ")";
+    if (slot < 0 || std::size_t(slot) >= alive.size() || alive[std::size_t(slot)] ||
+        listed[std::size_t(slot)]) {
+      return std::string(kind) + " free list must name each free slot once (bad entry " +
+             std::to_string(slot) + ")";
     }
     listed[std::size_t(slot)] = true;
   }
-  if (freeSlots.size() != deadCount) return std::string(kind) + " free list must name every free slot";
+  if (freeSlots.size() != deadCount)
+    return std::string(kind) + " free list must name every free slot";
   return {};
 }
 
@@ -208,7 +220,6 @@ class StateImport {
   std::unique_ptr<WorldData> take() { return std::move(next_); }
 
  private:
-
   std::string settings() { return applySolverSettings(state_.settings, next_->settings); }
 
   std::string bodies() {
@@ -221,7 +232,8 @@ class StateImport {
       Body body;
       body.generation = b.generation;
       if (b.alive) {
-        if (std::string error = checkBody(w.settings, b); !error.empty()) return at("body slot", slot) + error;
+        if (std::string error = checkBody(w.settings, b); !error.empty())
+          return at("body slot", slot) + error;
         if (b.creationOrder >= state_.nextCreationOrder) {
           return at("body slot", slot) + "creationOrder must be below nextCreationOrder";
         }
@@ -236,7 +248,8 @@ class StateImport {
     if (w.liveBodies > w.settings.maxBodies) {
       return "body limit reached (" + std::to_string(w.settings.maxBodies) + " bodies)";
     }
-    if (std::string error = checkFreeList("body", state_.freeBodies, alive); !error.empty()) return error;
+    if (std::string error = checkFreeList("body", state_.freeBodies, alive); !error.empty())
+      return error;
     w.freeBodies.assign(state_.freeBodies);
     w.nextCreationOrder = state_.nextCreationOrder;
     return {};
@@ -249,12 +262,14 @@ class StateImport {
     if (!w.broadPhase.restore(state_.broadPhase)) {
       return "broad phase: a tree is not a valid tree, or the queue names a node that is no leaf";
     }
-    if (w.broadPhase.proxyCount() != w.liveBodies) return "broad phase: one leaf per live body is needed";
+    if (w.broadPhase.proxyCount() != w.liveBodies)
+      return "broad phase: one leaf per live body is needed";
     for (std::size_t slot = 0; slot < w.bodies.size(); ++slot) {
       const Body& body = w.bodies[slot];
       if (!body.alive) continue;
       const bool staticKey = (body.proxyKey & 1) == static_cast<int>(BroadPhase::ProxyKind::Static);
-      if (w.broadPhase.leafUserValue(body.proxyKey) != std::int32_t(slot) || staticKey != body.isStatic) {
+      if (w.broadPhase.leafUserValue(body.proxyKey) != std::int32_t(slot) ||
+          staticKey != body.isStatic) {
         return at("body slot", slot) + "proxyKey must name its own leaf in the tree of its kind";
       }
     }
@@ -262,7 +277,8 @@ class StateImport {
   }
 
   bool liveBody(std::int32_t slot) const {
-    return slot >= 0 && std::size_t(slot) < next_->bodies.size() && next_->bodies[std::size_t(slot)].alive;
+    return slot >= 0 && std::size_t(slot) < next_->bodies.size() &&
+           next_->bodies[std::size_t(slot)].alive;
   }
 
   std::string checkContact(const ContactSlotState& c) const {
@@ -273,28 +289,34 @@ class StateImport {
     if (w.bodies[std::size_t(c.bodyA)].isStatic && w.bodies[std::size_t(c.bodyB)].isStatic) {
       return "two static bodies have no contact";
     }
-    if (collideFunction(w.shapes[std::size_t(c.bodyA)].type, w.shapes[std::size_t(c.bodyB)].type) == nullptr) {
+    if (collideFunction(w.shapes[std::size_t(c.bodyA)].type, w.shapes[std::size_t(c.bodyB)].type) ==
+        nullptr) {
       return "bodyA's shape must be the polygon when the shapes differ";
     }
-    if (c.manifold.pointCount < 0 || c.manifold.pointCount > 2) return "a manifold has 0 to 2 points";
-    std::string error = firstOf(
-        checkVector("normal", c.manifold.normal, 2), checkRange("rollingImpulse", c.manifold.rollingImpulse, -kMaxImpulse, kMaxImpulse),
-        checkVector("frame.relative.p", c.frame.relative.p, kMaxLocalLength), checkRotation("frame.relative.q", c.frame.relative.q),
-        checkVector("frame.localNormal", c.frame.localNormal, 2),
-        checkRange("staticFriction", c.staticFriction, 0, kMaxCoefficient),
-        checkRange("dynamicFriction", c.dynamicFriction, 0, kMaxCoefficient),
-        checkRange("restitution", c.restitution, 0, kMaxCoefficient),
-        checkRange("rollingResistance", c.rollingResistance, 0, kMaxCoefficient));
+    if (c.manifold.pointCount < 0 || c.manifold.pointCount > 2)
+      return "a manifold has 0 to 2 points";
+    std::string error =
+        firstOf(checkVector("normal", c.manifold.normal, 2),
+                checkRange("rollingImpulse", c.manifold.rollingImpulse, -kMaxImpulse, kMaxImpulse),
+                checkVector("frame.relative.p", c.frame.relative.p, kMaxLocalLength),
+                checkRotation("frame.relative.q", c.frame.relative.q),
+                checkVector("frame.localNormal", c.frame.localNormal, 2),
+                checkRange("staticFriction", c.staticFriction, 0, kMaxCoefficient),
+                checkRange("dynamicFriction", c.dynamicFriction, 0, kMaxCoefficient),
+                checkRange("restitution", c.restitution, 0, kMaxCoefficient),
+                checkRange("rollingResistance", c.rollingResistance, 0, kMaxCoefficient));
     for (int i = 0; i < 2 && error.empty(); ++i) {
       const ManifoldPoint& p = c.manifold.points[std::size_t(i)];
-      error = firstOf(checkVector("point", p.point, kMaxLocalLength), checkVector("anchorA", p.anchorA, kMaxLocalLength),
-                      checkVector("anchorB", p.anchorB, kMaxLocalLength),
-                      checkRange("separation", p.separation, -kMaxLocalLength, kMaxLocalLength),
-                      checkRange("normalImpulse", p.normalImpulse, -kMaxImpulse, kMaxImpulse),
-                      checkRange("tangentImpulse", p.tangentImpulse, -kMaxImpulse, kMaxImpulse),
-                      checkVector("frame.localPointA", c.frame.localPointA[i], kMaxLocalLength),
-                      checkVector("frame.localPointB", c.frame.localPointB[i], kMaxLocalLength),
-                      checkRange("frame.offset", c.frame.offset[i], -kMaxLocalLength, kMaxLocalLength));
+      error =
+          firstOf(checkVector("point", p.point, kMaxLocalLength),
+                  checkVector("anchorA", p.anchorA, kMaxLocalLength),
+                  checkVector("anchorB", p.anchorB, kMaxLocalLength),
+                  checkRange("separation", p.separation, -kMaxLocalLength, kMaxLocalLength),
+                  checkRange("normalImpulse", p.normalImpulse, -kMaxImpulse, kMaxImpulse),
+                  checkRange("tangentImpulse", p.tangentImpulse, -kMaxImpulse, kMaxImpulse),
+                  checkVector("frame.localPointA", c.frame.localPointA[i], kMaxLocalLength),
+                  checkVector("frame.localPointB", c.frame.localPointB[i], kMaxLocalLength),
+                  checkRange("frame.offset", c.frame.offset[i], -kMaxLocalLength, kMaxLocalLength));
     }
     return error;
   }
@@ -307,12 +329,14 @@ class StateImport {
       alive.push_back(c.alive);
       Contact contact;
       if (c.alive) {
-        if (std::string error = checkContact(c); !error.empty()) return at("contact slot", slot) + error;
+        if (std::string error = checkContact(c); !error.empty())
+          return at("contact slot", slot) + error;
         contact.edges.bodyA = c.bodyA;
         contact.edges.bodyB = c.bodyB;
         contact.manifold = c.manifold;
         contact.frame = c.frame;
-        contact.collide = collideFunction(w.shapes[std::size_t(c.bodyA)].type, w.shapes[std::size_t(c.bodyB)].type);
+        contact.collide = collideFunction(w.shapes[std::size_t(c.bodyA)].type,
+                                          w.shapes[std::size_t(c.bodyB)].type);
         contact.staticFriction = c.staticFriction;
         contact.dynamicFriction = c.dynamicFriction;
         contact.restitution = c.restitution;
@@ -325,7 +349,8 @@ class StateImport {
       }
       w.contacts.push_back(contact);
     }
-    if (std::string error = checkFreeList("contact", state_.freeContacts, alive); !error.empty()) return error;
+    if (std::string error = checkFreeList("contact", state_.freeContacts, alive); !error.empty())
+      return error;
     w.freeContacts.assign(state_.freeContacts);
     return {};
   }
@@ -342,14 +367,20 @@ class StateImport {
     }
     const JointImpulses& i = j.impulses;
     return firstOf(
-        checkJointSettings(j.settings), checkVector("localAnchorA", j.localAnchorA, kMaxLocalLength),
-        checkVector("localAnchorB", j.localAnchorB, kMaxLocalLength + w.settings.inputLimits.escapeMargin),
-        checkVector("localAxisA", j.localAxisA, 2), checkRange("referenceAngle", j.referenceAngle, -4, 4),
-        checkRange("referenceTranslation", j.referenceTranslation, -kMaxLocalLength, kMaxLocalLength),
-        checkRange("referencePerpendicular", j.referencePerpendicular, -kMaxLocalLength, kMaxLocalLength),
+        checkJointSettings(j.settings),
+        checkVector("localAnchorA", j.localAnchorA, kMaxLocalLength),
+        checkVector("localAnchorB", j.localAnchorB,
+                    kMaxLocalLength + w.settings.inputLimits.escapeMargin),
+        checkVector("localAxisA", j.localAxisA, 2),
+        checkRange("referenceAngle", j.referenceAngle, -4, 4),
+        checkRange("referenceTranslation", j.referenceTranslation, -kMaxLocalLength,
+                   kMaxLocalLength),
+        checkRange("referencePerpendicular", j.referencePerpendicular, -kMaxLocalLength,
+                   kMaxLocalLength),
         checkRange("length", j.length, 0, kMaxLocalLength),
         checkApplicationPoint(w.settings.inputLimits, w.settings.bounds, j.target, "target"),
-        checkVector("impulses.point", i.point, kMaxImpulse), checkVector("impulses.pointSpring", i.pointSpring, kMaxImpulse),
+        checkVector("impulses.point", i.point, kMaxImpulse),
+        checkVector("impulses.pointSpring", i.pointSpring, kMaxImpulse),
         checkRange("impulses.perpendicular", i.perpendicular, -kMaxImpulse, kMaxImpulse),
         checkRange("impulses.angular", i.angular, -kMaxImpulse, kMaxImpulse),
         checkRange("impulses.axial", i.axial, -kMaxImpulse, kMaxImpulse),
@@ -371,7 +402,8 @@ class StateImport {
       Joint joint;
       joint.generation = j.generation;
       if (j.alive) {
-        if (std::string error = checkJoint(j); !error.empty()) return at("joint slot", slot) + error;
+        if (std::string error = checkJoint(j); !error.empty())
+          return at("joint slot", slot) + error;
         joint.edges.bodyA = j.bodyA;
         joint.edges.bodyB = j.bodyB;
         joint.settings = j.settings;
@@ -392,7 +424,8 @@ class StateImport {
       }
       w.joints.push_back(joint);
     }
-    if (std::string error = checkFreeList("joint", state_.freeJoints, alive); !error.empty()) return error;
+    if (std::string error = checkFreeList("joint", state_.freeJoints, alive); !error.empty())
+      return error;
     w.freeJoints.assign(state_.freeJoints);
     return {};
   }
@@ -402,11 +435,13 @@ class StateImport {
   // front, last key first, rebuilds the saved order.
   template <class Elements>
   std::string linkList(Elements& elements, std::vector<bool>& seen, std::int32_t slot,
-                       const std::vector<std::int32_t>& keys, std::int32_t& head, const char* kind) {
+                       const std::vector<std::int32_t>& keys, std::int32_t& head,
+                       const char* kind) {
     for (std::int32_t key : keys) {
       const std::int32_t element = edgeElement(key);
       if (key < 0 || std::size_t(element) >= elements.size() || seen[std::size_t(key)] ||
-          !isLive(elements, element) || elements[std::size_t(element)].edges.body(edgeSide(key)) != slot) {
+          !isLive(elements, element) ||
+          elements[std::size_t(element)].edges.body(edgeSide(key)) != slot) {
         return at("body slot", std::size_t(slot)) + kind + " edge " + std::to_string(key) +
                " must name a live element of this body, once";
       }
@@ -436,22 +471,28 @@ class StateImport {
       }
       Body& body = w.bodies[slot];
       std::string error = firstOf(
-          linkList(w.contacts, contactSeen, std::int32_t(slot), b.contactEdges, body.contactHead, "contact"),
+          linkList(w.contacts, contactSeen, std::int32_t(slot), b.contactEdges, body.contactHead,
+                   "contact"),
           linkList(w.joints, jointSeen, std::int32_t(slot), b.jointEdges, body.jointHead, "joint"));
       if (!error.empty()) return error;
     }
-    return firstOf(allLinked(contactSeen, "contact", [&](std::size_t key) { return isLive(w.contacts, edgeElement(std::int32_t(key))); }),
-                   allLinked(jointSeen, "joint", [&](std::size_t key) {
-                     const Joint& joint = w.joints[std::size_t(edgeElement(std::int32_t(key)))];
-                     return joint.alive && joint.edges.body(edgeSide(std::int32_t(key))) != kNullIndex;
-                   }));
+    return firstOf(
+        allLinked(
+            contactSeen, "contact",
+            [&](std::size_t key) { return isLive(w.contacts, edgeElement(std::int32_t(key))); }),
+        allLinked(jointSeen, "joint", [&](std::size_t key) {
+          const Joint& joint = w.joints[std::size_t(edgeElement(std::int32_t(key)))];
+          return joint.alive && joint.edges.body(edgeSide(std::int32_t(key))) != kNullIndex;
+        }));
   }
 
   template <class Linkable>
-  static std::string allLinked(const std::vector<bool>& seen, const char* kind, Linkable&& linkable) {
+  static std::string allLinked(const std::vector<bool>& seen, const char* kind,
+                               Linkable&& linkable) {
     for (std::size_t key = 0; key < seen.size(); ++key) {
       if (!seen[key] && linkable(key)) {
-        return std::string(kind) + " " + std::to_string(key / 2) + " is missing from a body's edge list";
+        return std::string(kind) + " " + std::to_string(key / 2) +
+               " is missing from a body's edge list";
       }
     }
     return {};
@@ -468,7 +509,8 @@ class StateImport {
       listed[std::size_t(slot)] = true;
     }
     for (std::size_t slot = 0; slot < w.bodies.size(); ++slot) {
-      if (w.bodies[slot].awake && !listed[slot]) return at("body slot", slot) + "awake but not in the awake list";
+      if (w.bodies[slot].awake && !listed[slot])
+        return at("body slot", slot) + "awake but not in the awake list";
     }
     w.awakeBodies = state_.awakeBodies;
     return {};

@@ -2,6 +2,8 @@
 // on bit-identically to it, and a state that is wrong anywhere is refused
 // with a message, leaving the world exactly as it was.
 
+#include "impulse/world_state.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -13,7 +15,6 @@
 
 #include "impulse/scenes/stress.h"
 #include "impulse/world.h"
-#include "impulse/world_state.h"
 #include "joint_test_support.h"
 #include "world_test_support.h"
 
@@ -113,7 +114,8 @@ void expectBitIdenticalAfterLoad(World& original) {
   for (int i = 1; i <= kStepsAfterLoad; ++i) {
     original.step(kDt);
     loaded.step(kDt);
-    ASSERT_EQ(loaded.stateHash(), original.stateHash()) << "diverged at step " << i << " after load";
+    ASSERT_EQ(loaded.stateHash(), original.stateHash())
+        << "diverged at step " << i << " after load";
     if (i == kStepsAfterLoad / 2) {
       const BodyId a = addCircle(original, {.center = Vec2(0, 12), .radius = Real(0.4)});
       const BodyId b = addCircle(loaded, {.center = Vec2(0, 12), .radius = Real(0.4)});
@@ -150,23 +152,34 @@ TEST(WorldState, JointsStepOnBitIdentically_AfterLoad) {
   // rope, a motorised wheel on a prismatic cart, a weld and a mouse pull.
   BodyId previous{};
   for (int i = 0; i < 8; ++i) {
-    const BodyId link = addBox(world, {.center = Vec2(Real(i) + Real(0.5), 10), .halfWidth = Real(0.5), .halfHeight = Real(0.1)});
+    const BodyId link = addBox(
+        world,
+        {.center = Vec2(Real(i) + Real(0.5), 10), .halfWidth = Real(0.5), .halfHeight = Real(0.1)});
     addJoint(world, link, previous, Vec2(Real(i), 10), Vec2(Real(i), 10), RevoluteJointSettings{});
     previous = link;
   }
   const BodyId weight = addCircle(world, {.center = Vec2(-4, 6), .radius = Real(0.5)});
-  addJoint(world, weight, {}, Vec2(-4, 6), Vec2(-4, 9), DistanceJointSettings{.length = 2, .stiffness = 200, .damping = 2});
-  const BodyId swing = addCircle(world, {.center = Vec2(-8, 6), .radius = Real(0.3), .velocity = Vec2(4, 0)});
+  addJoint(world, weight, {}, Vec2(-4, 6), Vec2(-4, 9),
+           DistanceJointSettings{.length = 2, .stiffness = 200, .damping = 2});
+  const BodyId swing =
+      addCircle(world, {.center = Vec2(-8, 6), .radius = Real(0.3), .velocity = Vec2(4, 0)});
   addJoint(world, swing, {}, Vec2(-8, 6), Vec2(-8, 9), RopeJointSettings{});
-  const BodyId cart = addBox(world, {.center = Vec2(6, 1), .halfWidth = 1, .halfHeight = Real(0.3)});
+  const BodyId cart =
+      addBox(world, {.center = Vec2(6, 1), .halfWidth = 1, .halfHeight = Real(0.3)});
   const BodyId wheel = addCircle(world, {.center = Vec2(6, Real(0.4)), .radius = Real(0.35)});
   addJoint(world, wheel, cart, Vec2(6, Real(0.4)), Vec2(6, Real(0.4)),
-           WheelJointSettings{.stiffness = 300, .damping = 5, .enableMotor = true, .motorSpeed = -3, .maxMotorTorque = 50});
+           WheelJointSettings{.stiffness = 300,
+                              .damping = 5,
+                              .enableMotor = true,
+                              .motorSpeed = -3,
+                              .maxMotorTorque = 50});
   addJoint(world, cart, {}, Vec2(6, 1), Vec2(6, 1), PrismaticJointSettings{.axis = Vec2(1, 0)});
-  const BodyId glued = addBox(world, {.center = Vec2(7, Real(1.6)), .halfWidth = Real(0.3), .halfHeight = Real(0.3)});
+  const BodyId glued = addBox(
+      world, {.center = Vec2(7, Real(1.6)), .halfWidth = Real(0.3), .halfHeight = Real(0.3)});
   addJoint(world, glued, cart, Vec2(7, Real(1.3)), Vec2(7, Real(1.3)), WeldJointSettings{});
   const BodyId pulled = addBox(world, {.center = Vec2(-12, 1)});
-  addJoint(world, pulled, {}, Vec2(-12, 1), Vec2(-10, 4), MouseJointSettings{.maxForce = 500, .stiffness = 100, .damping = 10});
+  addJoint(world, pulled, {}, Vec2(-12, 1), Vec2(-10, 4),
+           MouseJointSettings{.maxForce = 500, .stiffness = 100, .damping = 10});
   simulate(world, 1);
   ASSERT_GE(world.jointCount(), 13);
   expectBitIdenticalAfterLoad(world);
@@ -246,7 +259,8 @@ void expectRefused(const WorldState& bad, const std::string& expected) {
 TEST(WorldState, RefusesNonFiniteBody_WorldUnchanged) {
   World source;
   WorldState state = pileState(source);
-  state.bodies[std::size_t(firstDynamicSlot(state))].linearVelocity.x() = std::numeric_limits<Real>::quiet_NaN();
+  state.bodies[std::size_t(firstDynamicSlot(state))].linearVelocity.x() =
+      std::numeric_limits<Real>::quiet_NaN();
   expectRefused(state, "velocity is not a finite number");
 }
 

@@ -41,7 +41,8 @@ TEST(Scenes, SceneLoadedIntoAnotherServerStepsOnBitIdentically) {
   stepHashes(a, 1, 45);
   const auto ball = a.request(client::spawnCircle({6, 12}, 0.6, {Material::Rubber}));
   ASSERT_TRUE(result(ball).ok());
-  ASSERT_TRUE(result(a.request(client::distanceJoint({result(ball).body_id(), 0, {6, 12}, {6, 15}, false}, {})))
+  ASSERT_TRUE(result(a.request(client::distanceJoint(
+                         {result(ball).body_id(), 0, {6, 12}, {6, 15}, false}, {})))
                   .ok());
   stepHashes(a, 1, 20);
 

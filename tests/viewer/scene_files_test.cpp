@@ -23,7 +23,8 @@ class SceneFilesTest : public ::testing::Test {
   std::filesystem::path dir;
 };
 
-const std::vector<Vec2> kTriangle = {Vec2(10, 10), Vec2(13, 10), Vec2(10, 13)};  // centroid (11, 11)
+const std::vector<Vec2> kTriangle = {Vec2(10, 10), Vec2(13, 10),
+                                     Vec2(10, 13)};  // centroid (11, 11)
 
 TEST_F(SceneFilesTest, SaveAsksForTheScene_AndTheReplyIsWrittenToTheFileNamedOnScreen) {
   SceneFiles files(path("world.scene"), path("shapes.txt"));

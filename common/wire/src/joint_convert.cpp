@@ -279,7 +279,9 @@ void toWire(const JointSettings& settings, v1::SceneJoint* out) { kindToWire(set
 Decoded<JointSettings> jointSettingsFromWire(const v1::SceneJoint& joint) {
   JointSettings settings;
   std::string error;
-  if (!kindFromWire(joint, Reader("joint."), settings, error)) return Decoded<JointSettings>::failure(error);
+  if (!kindFromWire(joint, Reader("joint."), settings, error)) {
+    return Decoded<JointSettings>::failure(error);
+  }
   return Decoded<JointSettings>::success(settings);
 }
 

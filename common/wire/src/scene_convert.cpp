@@ -173,10 +173,12 @@ Vec2 get(const v1::SceneVec2& v) { return Vec2(v.x(), v.y()); }
 Rot get(const v1::SceneRotation& q) { return {q.c(), q.s()}; }
 
 SolverSettingsState getSettings(const v1::SceneSettings& s) {
-  return {get(s.gravity()),          s.sub_steps(),           s.relax_iterations(),
-          s.contact_hertz(),         s.contact_damping_ratio(), s.max_contact_push_speed(),
-          s.restitution_threshold(), s.stick_speed(),           s.enable_warm_starting(),
-          s.enable_sleep(),          s.linear_sleep_tolerance(), s.time_to_sleep(),
+  return {get(s.gravity()),           s.sub_steps(),
+          s.relax_iterations(),       s.contact_hertz(),
+          s.contact_damping_ratio(),  s.max_contact_push_speed(),
+          s.restitution_threshold(),  s.stick_speed(),
+          s.enable_warm_starting(),   s.enable_sleep(),
+          s.linear_sleep_tolerance(), s.time_to_sleep(),
           s.enable_continuous()};
 }
 
@@ -187,8 +189,10 @@ std::string getShape(const v1::SceneBody& b, Shape& shape) {
       return {};
     case v1::SceneBody::kPolygon: {
       const v1::ScenePolygon& p = b.polygon();
-      if (p.vertices_size() < 3 || p.vertices_size() > kMaxPolygonVertices || p.normals_size() != p.vertices_size()) {
-        return "polygon must have 3 to " + std::to_string(kMaxPolygonVertices) + " vertices, a normal each";
+      if (p.vertices_size() < 3 || p.vertices_size() > kMaxPolygonVertices ||
+          p.normals_size() != p.vertices_size()) {
+        return "polygon must have 3 to " + std::to_string(kMaxPolygonVertices) +
+               " vertices, a normal each";
       }
       Polygon polygon;
       polygon.count = p.vertices_size();
@@ -199,7 +203,8 @@ std::string getShape(const v1::SceneBody& b, Shape& shape) {
       shape = Shape::makePolygon(polygon);
       return {};
     }
-    case v1::SceneBody::SHAPE_NOT_SET: break;
+    case v1::SceneBody::SHAPE_NOT_SET:
+      break;
   }
   return "a live body needs a shape (circle_radius or polygon)";
 }
@@ -273,8 +278,11 @@ std::string getContact(const v1::SceneContact& in, ContactSlotState& c) {
 }
 
 JointImpulses getImpulses(const v1::SceneJointImpulses& in) {
-  return {get(in.point()), get(in.point_spring()), in.perpendicular(), in.angular(), in.axial(),
-          in.spring(),     in.motor(),             in.lower(),         in.upper()};
+  return {get(in.point()),    get(in.point_spring()),
+          in.perpendicular(), in.angular(),
+          in.axial(),         in.spring(),
+          in.motor(),         in.lower(),
+          in.upper()};
 }
 
 std::string getJoint(const v1::SceneJoint& in, JointSlotState& j) {
@@ -319,7 +327,9 @@ std::string getTree(const v1::SceneTree& in, DynamicTree::State& tree) {
   return {};
 }
 
-std::string at(const char* kind, int index) { return std::string(kind) + " " + std::to_string(index) + ": "; }
+std::string at(const char* kind, int index) {
+  return std::string(kind) + " " + std::to_string(index) + ": ";
+}
 
 }  // namespace
 
@@ -350,14 +360,16 @@ std::string saveScene(const World& world) {
 Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
   using Result = Decoded<WorldState>;
   if (scene.version() == 0 || scene.version() > kSceneVersion) {
-    return Result::failure("scene version " + std::to_string(scene.version()) + " is not supported (this build reads 1 to " +
+    return Result::failure("scene version " + std::to_string(scene.version()) +
+                           " is not supported (this build reads 1 to " +
                            std::to_string(kSceneVersion) + ")");
   }
   WorldState state;
   state.settings = getSettings(scene.settings());
   state.bodies.resize(std::size_t(scene.bodies_size()));
   for (int i = 0; i < scene.bodies_size(); ++i) {
-    if (std::string error = getBody(scene.bodies(i), state.bodies[std::size_t(i)]); !error.empty()) {
+    if (std::string error = getBody(scene.bodies(i), state.bodies[std::size_t(i)]);
+        !error.empty()) {
       return Result::failure(at("body slot", i) + error);
     }
   }
@@ -365,14 +377,16 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
   state.nextCreationOrder = scene.next_creation_order();
   state.contacts.resize(std::size_t(scene.contacts_size()));
   for (int i = 0; i < scene.contacts_size(); ++i) {
-    if (std::string error = getContact(scene.contacts(i), state.contacts[std::size_t(i)]); !error.empty()) {
+    if (std::string error = getContact(scene.contacts(i), state.contacts[std::size_t(i)]);
+        !error.empty()) {
       return Result::failure(at("contact slot", i) + error);
     }
   }
   state.freeContacts.assign(scene.free_contacts().begin(), scene.free_contacts().end());
   state.joints.resize(std::size_t(scene.joints_size()));
   for (int i = 0; i < scene.joints_size(); ++i) {
-    if (std::string error = getJoint(scene.joints(i), state.joints[std::size_t(i)]); !error.empty()) {
+    if (std::string error = getJoint(scene.joints(i), state.joints[std::size_t(i)]);
+        !error.empty()) {
       return Result::failure(at("joint slot", i) + error);
     }
   }
@@ -380,7 +394,8 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
   if (std::string error = getTree(scene.static_tree(), state.broadPhase.trees[0]); !error.empty()) {
     return Result::failure("static_tree: " + error);
   }
-  if (std::string error = getTree(scene.movable_tree(), state.broadPhase.trees[1]); !error.empty()) {
+  if (std::string error = getTree(scene.movable_tree(), state.broadPhase.trees[1]);
+      !error.empty()) {
     return Result::failure("movable_tree: " + error);
   }
   state.broadPhase.queued.assign(scene.queued_proxies().begin(), scene.queued_proxies().end());

@@ -8,9 +8,9 @@
 #include <string_view>
 
 #include "impulse.pb.h"
+#include "impulse/wire/convert.h"
 #include "impulse/world.h"
 #include "impulse/world_state.h"
-#include "impulse/wire/convert.h"
 
 namespace impulse::wire {
 
