@@ -81,7 +81,7 @@ TEST(Scenes, CliSavesToAFileAndAnotherServerLoadsIt) {
 TEST(Scenes, BadScenesAreRefusedAndTheWorldStaysAsItWas) {
   ServerProcess server({"--paused"});
   Client client(localClient(server.port()));
-  ASSERT_TRUE(result(client.request(client::loadPreset(3))).ok());
+  ASSERT_TRUE(result(client.request(client::loadPreset(8))).ok());
   stepHashes(client, 1, 10);
   const std::string before = savedScene(client);
 
@@ -89,12 +89,11 @@ TEST(Scenes, BadScenesAreRefusedAndTheWorldStaysAsItWas) {
   newer.set_version(2);
   v1::Scene nan;
   ASSERT_TRUE(nan.ParseFromString(before));
-  for (auto& body : *nan.mutable_bodies()) {
-    if (body.alive() && !body.is_static()) {
-      body.mutable_velocity()->set_x(std::numeric_limits<float>::quiet_NaN());
-      break;
-    }
-  }
+  auto dynamic =
+      std::find_if(nan.mutable_bodies()->begin(), nan.mutable_bodies()->end(),
+                   [](const v1::SceneBody& body) { return body.alive() && !body.is_static(); });
+  ASSERT_NE(dynamic, nan.mutable_bodies()->end());
+  dynamic->mutable_velocity()->set_x(std::numeric_limits<float>::quiet_NaN());
   v1::Scene orphanJoint;
   ASSERT_TRUE(orphanJoint.ParseFromString(before));
   auto* joint = orphanJoint.add_joints();
