@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include "impulse/client/client.h"
+#include "impulse/client/scene_file.h"
 #include "report.h"
 #include "script.h"
 
@@ -136,6 +137,7 @@ int run(const Arguments& arguments) {
       std::string command;
       std::uint64_t requestId;
       Milliseconds timeout;
+      std::string file;  // `save`: where the scene goes
     };
     std::deque<Pending> pending;
     auto drainOne = [&] {
@@ -149,6 +151,13 @@ int run(const Arguments& arguments) {
                                       " ms");
       }
       failures += reply->has_command_result() && !reply->command_result().ok() ? 1 : 0;
+      if (reply->has_scene_data()) {
+        const std::string error = client::writeSceneFile(next.file, reply->scene_data().data());
+        failures += error.empty() ? 0 : 1;
+        print(cli::sceneSavedReport(next.line, next.command, next.file,
+                                    reply->scene_data().data().size(), error));
+        return;
+      }
       print(cli::replyReport(next.line, next.command, *reply));
     };
     auto drainAll = [&] {
@@ -188,7 +197,7 @@ int run(const Arguments& arguments) {
           lineNumber = lineCount;
           command = name;
           sentMark = client.mirror().snapshotsApplied();
-          pending.push_back({lineCount, name, client.send(message), timeout});
+          pending.push_back({lineCount, name, client.send(message), timeout, parsed.command->file});
           if (pending.size() >= kMaxPipelined) drainOne();
           break;
         }

@@ -105,6 +105,16 @@ std::string welcomeReport(const v1::Welcome& welcome) {
   return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
+std::string sceneSavedReport(std::size_t line, std::string_view command, const std::string& file,
+                             std::size_t bytes, const std::string& error) {
+  Json report = lineReport(line, command);
+  report["ok"] = error.empty();
+  report["file"] = file;
+  report["bytes"] = bytes;
+  if (!error.empty()) report["error"] = "line " + std::to_string(line) + ": " + error;
+  return report.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
 std::string replyReport(std::size_t line, std::string_view command,
                         const v1::ServerMessage& reply) {
   Json report = lineReport(line, command);

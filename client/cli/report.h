@@ -29,6 +29,9 @@ std::string welcomeReport(const v1::Welcome& welcome);
 /// CommandResult, BodyInfo or Pong. Server errors are worded as the script
 /// writes its commands (server_wording.h).
 std::string replyReport(std::size_t line, std::string_view command, const v1::ServerMessage& reply);
+/// `save`: the scene's size and file, or the error writing it.
+std::string sceneSavedReport(std::size_t line, std::string_view command, const std::string& file,
+                             std::size_t bytes, const std::string& error);
 std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror);
 std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot, std::size_t frameBytes);
 

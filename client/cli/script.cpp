@@ -54,6 +54,7 @@ ParsedLine parseProtocolWord(const ProtocolWord& row, Arguments& arguments) {
   if (!message) return refused(row.text.usage, arguments.problem());
   ScriptCommand command{std::string(row.text.word), ScriptCommand::Kind::Server,
                         std::move(*message)};
+  if (command.message.has_save_scene()) command.file = std::string(arguments.word(1));
   return {std::move(command)};
 }
 

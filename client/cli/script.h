@@ -27,6 +27,7 @@ struct ScriptCommand {
   std::string name;  // first word, as typed
   Kind kind = Kind::Server;
   v1::ClientMessage message;  // for Kind::Server
+  std::string file{};         // for `save`: where the reply's scene goes
 };
 
 struct ParsedLine {

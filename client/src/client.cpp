@@ -21,6 +21,8 @@ std::uint64_t replyId(const v1::ServerMessage& message) {
       return message.pong().request_id();
     case v1::ServerMessage::kRoomList:
       return message.room_list().request_id();
+    case v1::ServerMessage::kSceneData:
+      return message.scene_data().request_id();
     default:
       return 0;
   }

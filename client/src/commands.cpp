@@ -180,6 +180,18 @@ v1::ClientMessage queryJoint(std::uint32_t joint) {
   return message;
 }
 
+v1::ClientMessage saveScene() {
+  v1::ClientMessage message;
+  message.mutable_save_scene();
+  return message;
+}
+
+v1::ClientMessage loadScene(std::string data) {
+  v1::ClientMessage message;
+  message.mutable_load_scene()->set_data(std::move(data));
+  return message;
+}
+
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash) {
   v1::ClientMessage message;
   message.mutable_ping()->set_client_time_us(clientTimeUs);

@@ -28,7 +28,8 @@ std::runtime_error sdlError(const std::string& what) {
 
 }  // namespace
 
-App::App(ViewerOptions options) : options_(std::move(options)) {
+App::App(ViewerOptions options)
+    : options_(std::move(options)), sceneFiles_(options_.sceneFile, options_.shapeFile) {
   if (SDL_Init(SDL_INIT_VIDEO) != 0) throw sdlError("SDL_Init");
   const std::string title = "Impulse - " + options_.connect.host + ":" +
                             std::to_string(options_.connect.port);
@@ -133,9 +134,32 @@ std::optional<BodyHit> App::bodyAt(const Vec2& point) const {
 
 void App::act(ControlKey key) { controls_.keyPressed(key, context(), now()); }
 
+void App::actOnScene(SceneKey key) {
+  const Controls& c = controls_;
+  switch (key.action) {
+    case SceneAction::SaveScene: return controls_.notify(sceneFiles_.save(), now());
+    case SceneAction::LoadScene: return controls_.notify(sceneFiles_.load(), now());
+    case SceneAction::SaveShape:
+      return controls_.notify(sceneFiles_.saveShape(c.polygonPoints()), now());
+    case SceneAction::StampShape:
+      if (!context().drawingAllowed) {
+        return controls_.notify("This scene does not allow drawing", now());
+      }
+      return controls_.notify(sceneFiles_.stamp(std::size_t(key.index), c.pointer(),
+                                                {.material = c.material(),
+                                                 .isStatic = c.nextStatic(),
+                                                 .ignoreGravity = !c.nextFeelsGravity()}),
+                              now());
+  }
+}
+
 void App::handleKey(const SDL_KeyboardEvent& key) {
   // Held keys repeat at the controls' own steady rate, not the OS's.
   if (key.repeat != 0) return;
+  if (const auto sceneKey = sceneKeyFor(key.keysym.sym, key.keysym.mod)) {
+    if (key.type == SDL_KEYDOWN) actOnScene(*sceneKey);
+    return;
+  }
   const auto control = controlForKey(key.keysym.sym, key.keysym.mod);
   if (!control) return;
   if (key.type == SDL_KEYDOWN) {
@@ -212,7 +236,10 @@ void App::exchange() {
     presetRequested_ = true;
   }
   controls_.update(context(), t);
-  for (Outgoing& command : controls_.takeCommands()) {
+  std::vector<Outgoing> commands = controls_.takeCommands();
+  for (const Outgoing& command : commands) sceneFiles_.sent(command.message);
+  for (Outgoing& command : sceneFiles_.takeCommands()) commands.push_back(std::move(command));
+  for (Outgoing& command : commands) {
     if (!connection_->send(std::move(command.message), command.what)) {
       controls_.notify("Not connected: " + command.what + " not sent", t);
     }
@@ -234,8 +261,15 @@ void App::handleReplies() {
       }
       continue;
     }
+    if (reply.message.has_scene_data()) {
+      controls_.notify(sceneFiles_.sceneArrived(reply.message.scene_data().data()), now());
+      continue;
+    }
     if (!reply.message.has_command_result()) continue;
     const v1::CommandResult& result = reply.message.command_result();
+    if (reply.what == "load scene" && result.ok()) {
+      controls_.notify("Scene loaded from " + sceneFiles_.sceneFile(), now());
+    }
     if (reply.what == "drag") {
       controls_.dragJointAnswered(result.ok() ? std::optional(result.joint_id()) : std::nullopt);
     }

@@ -17,10 +17,12 @@
 #include "history.h"
 #include "interpolated_world.h"
 #include "joint_figure.h"
+#include "key_map.h"
 #include "layout.h"
 #include "options.h"
 #include "overlays.h"
 #include "renderer.h"
+#include "scene_files.h"
 #include "view_transform.h"
 
 namespace impulse::viewer {
@@ -71,6 +73,7 @@ class App {
   void handleButton(const SDL_MouseButtonEvent& button);
   void handleMotion(const SDL_MouseMotionEvent& motion);
   void act(ControlKey key);
+  void actOnScene(SceneKey key);
   ControlContext context() const;
   void exchange();
   void handleReplies();
@@ -91,6 +94,7 @@ class App {
   std::uint64_t start_ = 0;
   InterpolatedWorld world_;
   Controls controls_;
+  SceneFiles sceneFiles_;
   std::unique_ptr<Connection> connection_;
   std::unique_ptr<Gui> gui_;
   WorldRenderer scene_;

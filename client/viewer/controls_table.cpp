@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // SPEC.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 28> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 30> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
@@ -37,6 +37,8 @@ constexpr std::array<std::pair<const char*, const char*>, 28> kControlRows{{
     {"[ ] \\", "time: half, double, 1x speed (0.01x-16x)"},
     {"T Y U I", "triangle, square, pentagon, hexagon at the cursor"},
     {"- =", "standard shapes smaller, larger"},
+    {"Ctrl+S / Ctrl+O", "save the scene to its file / load it back"},
+    {"Ctrl+D / Ctrl+1-9", "keep the drawn polygon / stamp kept shape 1-9"},
 }};
 
 }  // namespace

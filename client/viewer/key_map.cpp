@@ -3,6 +3,7 @@
 namespace impulse::viewer {
 
 std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
+  if ((modifiers & KMOD_CTRL) != 0) return std::nullopt;
   const bool shift = (modifiers & KMOD_SHIFT) != 0;
   // Shift+1-4: the joint presets 11-14 (F1 is 10).
   if (shift && key >= SDLK_1 && key <= SDLK_4) {
@@ -59,6 +60,18 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     case SDLK_KP_MINUS: return ControlKey{Control::ShapeSmaller};
     case SDLK_EQUALS:
     case SDLK_KP_PLUS: return ControlKey{Control::ShapeLarger};
+    default: return std::nullopt;
+  }
+}
+
+std::optional<SceneKey> sceneKeyFor(SDL_Keycode key, Uint16 modifiers) {
+  if ((modifiers & KMOD_CTRL) == 0) return std::nullopt;
+  if (key >= SDLK_1 && key <= SDLK_9) return SceneKey{SceneAction::StampShape, int(key - SDLK_1)};
+  switch (key) {
+    case SDLK_s: return SceneKey{SceneAction::SaveScene};
+    case SDLK_o:
+    case SDLK_l: return SceneKey{SceneAction::LoadScene};
+    case SDLK_d: return SceneKey{SceneAction::SaveShape};
     default: return std::nullopt;
   }
 }

@@ -10,6 +10,15 @@
 namespace impulse::viewer {
 
 /// The control a key stands for, or nothing for a key without one.
+/// With Ctrl held, no control: Ctrl keys are the scene keys below.
 std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers = KMOD_NONE);
+
+/// Ctrl+S, Ctrl+O (or Ctrl+L), Ctrl+D, Ctrl+1..9 (scene_files.h).
+enum class SceneAction { SaveScene, LoadScene, SaveShape, StampShape };
+struct SceneKey {
+  SceneAction action;
+  int index = 0;  ///< StampShape: the shape, 0-based
+};
+std::optional<SceneKey> sceneKeyFor(SDL_Keycode key, Uint16 modifiers);
 
 }  // namespace impulse::viewer

@@ -39,6 +39,14 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
       ->option_text("N");
   app.add_flag("--no-vsync", [&options](std::int64_t) { options.vsync = false; },
                "do not wait for the display's refresh");
+  app.add_option("--scene-file", options.sceneFile,
+                 "Ctrl+S saves the scene to FILE, Ctrl+O loads it (default " + options.sceneFile +
+                     ")")
+      ->option_text("FILE");
+  app.add_option("--shape-file", options.shapeFile,
+                 "the shape library Ctrl+D adds to and Ctrl+1..9 stamp from (default " +
+                     options.shapeFile + ")")
+      ->option_text("FILE");
   app.add_option("--token", options.connect.token,
                  "access token sent in Hello; the admin token gives the admin role (see "
                  "docs/server.md)")

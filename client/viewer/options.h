@@ -23,6 +23,10 @@ struct ViewerOptions {
   /// Quit after this many frames (0: run until Esc or the window closes).
   int frames = 0;
   bool vsync = true;
+  /// Ctrl+S saves the scene here, Ctrl+O loads it (docs/scenes.md).
+  std::string sceneFile = "impulse.scene";
+  /// The shape library (Ctrl+D, Ctrl+1..9).
+  std::string shapeFile = "impulse-shapes.txt";
 };
 
 struct ParsedViewerOptions {

@@ -102,6 +102,29 @@ int BroadPhase::proxyCount() const {
          trees_[treeIndex(ProxyKind::Movable)].leafCount();
 }
 
+BroadPhase::State BroadPhase::state() const {
+  return {{trees_[0].state(), trees_[1].state()}, moveBuffer_};
+}
+
+bool BroadPhase::restore(const State& state) {
+  BroadPhase candidate;
+  for (int tree = 0; tree < 2; ++tree) {
+    if (!candidate.trees_[tree].restore(state.trees[tree])) return false;
+  }
+  for (std::int32_t key : state.queued) {
+    if (key != kNullKey && candidate.leafUserValue(key) < 0) return false;
+  }
+  candidate.moveBuffer_ = state.queued;
+  *this = std::move(candidate);
+  return true;
+}
+
+std::int32_t BroadPhase::leafUserValue(std::int32_t proxyKey) const {
+  if (proxyKey < 0) return -1;
+  const DynamicTree& tree = trees_[treeIndex(kindOf(proxyKey))];
+  return tree.isLeafNode(nodeOf(proxyKey)) ? tree.userValue(nodeOf(proxyKey)) : -1;
+}
+
 void BroadPhase::queryPairs(std::int32_t proxyKey, std::vector<ProxyPair>& pairs) const {
   const ProxyKind kind = kindOf(proxyKey);
   const std::int32_t node = nodeOf(proxyKey);

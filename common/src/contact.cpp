@@ -11,12 +11,6 @@ namespace impulse {
 
 namespace {
 
-std::uint64_t pairKey(std::int32_t a, std::int32_t b) {
-  auto lo = static_cast<std::uint64_t>(std::min(a, b));
-  auto hi = static_cast<std::uint64_t>(std::max(a, b));
-  return (lo << 32) | hi;
-}
-
 Real rollingRadius(const Shape& shape) {
   // Only round shapes roll; a polygon's resistance to tipping is geometric.
   return shape.type == ShapeType::Circle ? shape.circle.radius : Real(0);
@@ -54,7 +48,7 @@ void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
   contact.rollingResistance =
       mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
       std::max(rollingRadius(world.shapes[a]), rollingRadius(world.shapes[b]));
-  contact.pairKey = pairKey(a, b);
+  contact.pairKey = contactPairKey(a, b);
   linkContact(world, index);
   world.contactByPair.emplace(contact.pairKey, index);
 }
@@ -174,7 +168,7 @@ void updatePairs(WorldData& world, Real /*dt*/) {
     const Body& a = world.bodies[pair.first];
     const Body& b = world.bodies[pair.second];
     if (a.isStatic && b.isStatic) continue;
-    if (world.contactByPair.contains(pairKey(pair.first, pair.second))) continue;
+    if (world.contactByPair.contains(contactPairKey(pair.first, pair.second))) continue;
     if (jointBlocksContact(world, pair.first, pair.second)) continue;
     createContact(world, pair.first, pair.second);
   }

@@ -2,6 +2,7 @@
 // A contact: a pair of bodies whose fat boxes overlap, its manifold and the
 // coefficients mixed from the two materials (contact.cpp keeps them).
 
+#include <algorithm>
 #include <cstdint>
 
 #include "edge_list.h"
@@ -9,16 +10,12 @@
 
 namespace impulse {
 
-/// A manifold's geometry in the bodies' own frames, for updating it cheaply
-/// while the bodies move only a little (contact.cpp).
-struct ManifoldFrame {
-  bool computed = false;  ///< false until the narrow phase first ran
-  Transform relative;     ///< B's pose in A's frame when it ran
-  Vec2 localNormal = Vec2::Zero();  ///< in A's frame
-  Vec2 localPointA[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on A
-  Vec2 localPointB[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on B
-  Real offset[2] = {0, 0};  ///< separation minus the points' gap along the normal
-};
+/// The key of a pair of body slots in WorldData::contactByPair, either order.
+inline std::uint64_t contactPairKey(std::int32_t a, std::int32_t b) {
+  auto lo = static_cast<std::uint64_t>(std::min(a, b));
+  auto hi = static_cast<std::uint64_t>(std::max(a, b));
+  return (lo << 32) | hi;
+}
 
 struct Contact {
   /// The two bodies and this contact's place in their edge lists.

@@ -49,6 +49,20 @@ void DynamicTree::moveProxy(std::int32_t node, const AABB& box) {
   insertLeaf(node);
 }
 
+bool DynamicTree::restore(const State& state) {
+  DynamicTree candidate;
+  candidate.nodes_ = state.nodes;
+  candidate.root_ = state.root;
+  candidate.freeList_ = state.freeList;
+  candidate.leafCount_ = state.leafCount;
+  if (!candidate.isValid()) return false;
+  for (const Node& node : candidate.nodes_) {
+    if (node.height == 0 && !(isFinite(node.box.lower) && isFinite(node.box.upper))) return false;
+  }
+  *this = std::move(candidate);
+  return true;
+}
+
 int DynamicTree::height() const { return root_ == kNull ? 0 : nodes_[root_].height; }
 
 bool DynamicTree::isValid() const {

@@ -6,6 +6,7 @@
 // its generation (BodyId, JointId), so a stale id finds nothing.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "impulse/body.h"
@@ -23,6 +24,10 @@ class FreeList {
     return slot;
   }
   void release(std::int32_t slot) { free_.push_back(slot); }
+  /// Free slots, the next one handed out last (for saving a world).
+  const std::vector<std::int32_t>& slots() const { return free_; }
+  /// Replaces the free slots (the caller has checked them).
+  void assign(std::vector<std::int32_t> slots) { free_ = std::move(slots); }
 
  private:
   std::vector<std::int32_t> free_;

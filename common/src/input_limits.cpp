@@ -53,6 +53,12 @@ std::string checkPush(const WorldData& world, const Vec2& push, const std::optio
 
 }  // namespace
 
+std::string checkRange(const std::string& field, double value, double lo, double hi) {
+  if (std::isfinite(value) && value >= lo && value <= hi) return {};
+  return field + " must be a finite number in [" + describeNumber(lo) + ", " + describeNumber(hi) +
+         "]";
+}
+
 std::string describeNumber(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", value);

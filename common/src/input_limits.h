@@ -14,6 +14,10 @@ namespace impulse {
 /// A number as error messages print it, shortest readable: "500", "3.4e+38".
 std::string describeNumber(double value);
 
+/// One number: empty when finite and within [lo, hi], else a sentence that
+/// names the field and the range.
+std::string checkRange(const std::string& field, double value, double lo, double hi);
+
 /// An impulse (N*s) at `point` (default: the centre of mass).
 std::string checkImpulse(const WorldData& world, BodyId id, const Vec2& impulse,
                          const std::optional<Vec2>& point);

@@ -21,13 +21,6 @@ constexpr Real kMaxMotorSpeed = 1e3;   // rad/s or m/s
 constexpr Real kMaxMotorForce = 1e10;  // N or N*m
 constexpr Real kPi = std::numbers::pi_v<Real>;
 
-/// Checks one number: empty when finite and within [lo, hi].
-std::string checkRange(const char* field, Real value, Real lo, Real hi) {
-  if (isFinite(value) && value >= lo && value <= hi) return {};
-  return std::string(field) + " must be a finite number in [" + describeNumber(lo) + ", " +
-         describeNumber(hi) + "]";
-}
-
 /// The first of several checks that failed, or empty.
 template <class... Errors>
 std::string firstError(const Errors&... errors) {
@@ -107,8 +100,16 @@ std::string validateJoint(const WorldData& world, const JointDef& def) {
     return "a mouse joint pulls bodyA, which is static";
   return firstError(checkPoint(world, "anchorA", def.anchorA),
                     checkPoint(world, "anchorB", def.anchorB),
-                    std::visit([](const auto& s) { return checkSettings(s); }, def.settings));
+                    checkJointSettings(def.settings));
 }
+
+}  // namespace
+
+std::string checkJointSettings(const JointSettings& settings) {
+  return std::visit([](const auto& s) { return checkSettings(s); }, settings);
+}
+
+namespace {
 
 Transform frameOf(const WorldData& world, std::int32_t slot) {
   return slot == kNullIndex ? Transform{} : world.bodies[slot].transform;

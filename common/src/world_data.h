@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -99,5 +100,7 @@ AABB bodyAABB(const WorldData& world, std::int32_t body);        // world.cpp
 bool jointBlocksContact(const WorldData& world, std::int32_t bodyA, std::int32_t bodyB);
 // joint_world.cpp: removes the body's joints, listing them in removedJoints.
 void destroyBodyJoints(WorldData& world, std::int32_t body);
+// joint_world.cpp: empty when the settings' numbers are finite and in range.
+std::string checkJointSettings(const JointSettings& settings);
 
 }  // namespace impulse

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "impulse/wire/convert.h"
+#include "impulse/wire/scene_convert.h"
 
 namespace impulse::server {
 
@@ -228,6 +229,21 @@ void queryJoint(CommandContext& context, const v1::QueryJoint& command) {
 void setTimeScale(CommandContext& context, const v1::SetTimeScale& command) {
   if (InputResult changed = context.simulation.setTimeScale(command.scale()); !changed) {
     return context.fail("set_time_scale: " + changed.error);
+  }
+  context.succeed();
+}
+
+void saveScene(CommandContext& context, const v1::SaveScene&) {
+  v1::ServerMessage reply;
+  auto* scene = reply.mutable_scene_data();
+  scene->set_request_id(context.message.request_id());
+  scene->set_data(wire::saveScene(context.simulation.world()));
+  context.outcome.reply = std::move(reply);
+}
+
+void loadScene(CommandContext& context, const v1::LoadScene& command) {
+  if (InputResult loaded = context.simulation.loadScene(command.data()); !loaded) {
+    return context.fail("load_scene: " + loaded.error);
   }
   context.succeed();
 }

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "impulse/wire/scene_convert.h"
+
 namespace impulse::server {
 
 namespace {
@@ -129,6 +131,14 @@ void Simulation::clear() {
   world_.clear();
   changes_.replaced();
   ++version_;
+}
+
+InputResult Simulation::loadScene(std::string_view data) {
+  InputResult loaded = wire::loadScene(world_, data);
+  if (!loaded) return loaded;
+  changes_.replaced();
+  ++version_;
+  return loaded;
 }
 
 void Simulation::setPaused(bool paused) {

@@ -63,6 +63,20 @@ class BroadPhase {
 
   int proxyCount() const;
 
+  /// Both trees (static, movable) and the queue of proxies waiting for a
+  /// pair search, for saving a world.
+  struct State {
+    DynamicTree::State trees[2];
+    std::vector<std::int32_t> queued;
+  };
+  State state() const;
+  /// Replaces both trees and the queue; false (unchanged) when a tree is
+  /// invalid or a queued key names no leaf. The caller checks that the
+  /// leaves' user values are its own.
+  bool restore(const State& state);
+  /// The user value of the leaf a key names, or -1 when it names none.
+  std::int32_t leafUserValue(std::int32_t proxyKey) const;
+
  private:
   void queryPairs(std::int32_t proxyKey, std::vector<ProxyPair>& pairs) const;
 

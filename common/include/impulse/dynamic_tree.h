@@ -21,11 +21,40 @@ class DynamicTree {
 
   const AABB& box(std::int32_t node) const { return nodes_[node].box; }
   std::int32_t userValue(std::int32_t node) const { return nodes_[node].userValue; }
+  /// Whether `node` is in range and a leaf in use.
+  bool isLeafNode(std::int32_t node) const {
+    return node >= 0 && node < static_cast<std::int32_t>(nodes_.size()) && nodes_[node].height == 0;
+  }
 
   /// Calls visit(node) for each leaf whose box overlaps `box`, in a
   /// deterministic order; visit returns false to stop.
   template <typename Visit>
   void query(const AABB& box, Visit&& visit) const;
+
+  /// A leaf or an inner node as the tree keeps it (height: leaf 0, free -1;
+  /// parent is the free-list link of a free node).
+  struct Node {
+    AABB box;
+    std::int32_t parent = kNull;
+    std::int32_t child1 = kNull;
+    std::int32_t child2 = kNull;
+    std::int32_t userValue = -1;
+    std::int16_t height = 0;
+    bool isLeaf() const { return child1 == kNull; }
+  };
+  /// The whole tree, node by node: its shape decides which nodes later
+  /// proxies get and the order queries visit leaves in, so a saved world
+  /// keeps it.
+  struct State {
+    std::vector<Node> nodes;
+    std::int32_t root = kNull;
+    std::int32_t freeList = kNull;
+    int leafCount = 0;
+  };
+  State state() const { return {nodes_, root_, freeList_, leafCount_}; }
+  /// Replaces the tree with a saved one; false (tree unchanged) when it is
+  /// not a valid tree (isValid) or a leaf's box is not finite.
+  bool restore(const State& state);
 
   int height() const;
   int leafCount() const { return leafCount_; }
@@ -34,16 +63,6 @@ class DynamicTree {
   bool isValid() const;
 
  private:
-  struct Node {
-    AABB box;
-    std::int32_t parent = kNull;  // also the free-list link for free nodes
-    std::int32_t child1 = kNull;
-    std::int32_t child2 = kNull;
-    std::int32_t userValue = -1;
-    std::int16_t height = 0;  // leaf 0, free -1
-    bool isLeaf() const { return child1 == kNull; }
-  };
-
   std::int32_t allocateNode();
   void freeNode(std::int32_t node);
   void insertLeaf(std::int32_t leaf);

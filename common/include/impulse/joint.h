@@ -135,6 +135,20 @@ struct JointDescription {
   JointSettings settings;
 };
 
+/// Impulses per sub-step, kept across steps for warm starting (the spring's
+/// only for the reaction: springs are solved afresh every sub-step).
+struct JointImpulses {
+  Vec2 point = Vec2::Zero();        ///< pin of revolute, weld, rigid mouse
+  Vec2 pointSpring = Vec2::Zero();  ///< soft weld, mouse
+  Real perpendicular = 0;           ///< across the axis (prismatic, wheel)
+  Real angular = 0;                 ///< rigid angle (weld, prismatic)
+  Real axial = 0;                   ///< rod length, rigid wheel axis
+  Real spring = 0;
+  Real motor = 0;
+  Real lower = 0;
+  Real upper = 0;
+};
+
 /// A joint's state after the last step.
 struct JointState {
   Vec2 reactionForce = Vec2::Zero();  ///< N, on body B

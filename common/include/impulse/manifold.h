@@ -40,6 +40,18 @@ struct Manifold {
   Real rollingImpulse = 0;
 };
 
+/// A manifold's geometry in the bodies' own frames, for updating it cheaply
+/// while the bodies move only a little (contact.cpp). Solver
+/// state like the impulses: a saved scene keeps it.
+struct ManifoldFrame {
+  bool computed = false;  ///< false until the narrow phase first ran
+  Transform relative;     ///< B's pose in A's frame when it ran
+  Vec2 localNormal = Vec2::Zero();  ///< in A's frame
+  Vec2 localPointA[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on A
+  Vec2 localPointB[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on B
+  Real offset[2] = {0, 0};  ///< separation minus the points' gap along the normal
+};
+
 /// Feature key of a point made from feature a of shape A and feature b of B.
 constexpr std::uint16_t makeFeatureId(int a, int b) {
   return static_cast<std::uint16_t>(((a & 0xFF) << 8) | (b & 0xFF));

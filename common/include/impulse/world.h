@@ -19,6 +19,7 @@
 #include "impulse/limits.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
+#include "impulse/world_state.h"
 
 namespace impulse {
 
@@ -177,6 +178,15 @@ class World {
   const StepProfile& profile() const;
   std::uint64_t stepCount() const;
   double simulatedTime() const;
+
+  /// The whole state (impulse/world_state.h), for saving a scene.
+  WorldState exportState() const;
+  /// Replaces the world with a saved state, after checking every number,
+  /// shape, index and link in it against this world's limits (which it
+  /// keeps); refused with the reason, world unchanged, otherwise. The world
+  /// then steps on bit-identically to the one that was saved (same build,
+  /// same limits).
+  InputResult importState(const WorldState& state);
 
   /// Hash of every body's exact bits (position, rotation, velocities, awake),
   /// for determinism tests.

@@ -274,6 +274,17 @@ std::optional<JointDescription> jointFromWire(const v1::JointDescriptor& joint) 
   return result;
 }
 
+void toWire(const JointSettings& settings, v1::SceneJoint* out) { kindToWire(settings, out); }
+
+Decoded<JointSettings> jointSettingsFromWire(const v1::SceneJoint& joint) {
+  JointSettings settings;
+  std::string error;
+  if (!kindFromWire(joint, Reader("joint."), settings, error)) {
+    return Decoded<JointSettings>::failure(error);
+  }
+  return Decoded<JointSettings>::success(settings);
+}
+
 std::string_view jointKindName(const JointSettings& settings) {
   static constexpr std::string_view kNames[] = {"distance", "rope", "revolute", "prismatic",
                                                 "weld",     "wheel", "mouse"};

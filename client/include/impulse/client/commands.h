@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 
 #include "impulse.pb.h"
 #include "impulse/material.h"
@@ -75,6 +76,10 @@ v1::ClientMessage setJointMotor(std::uint32_t joint, double speed,
 v1::ClientMessage removeJoint(std::uint32_t joint);
 /// Answered by a JointInfo.
 v1::ClientMessage queryJoint(std::uint32_t joint);
+/// Answered by a SceneData holding the serialised Scene.
+v1::ClientMessage saveScene();
+/// `data`: a serialised Scene, as SceneData.data or a scene file holds it.
+v1::ClientMessage loadScene(std::string data);
 /// With `wantStateHash` the Pong's stats carry the world's state hash.
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
 /// Simulated seconds per wall second, 0.01..16 (PROTOCOL.md, "Time").

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
@@ -57,6 +58,10 @@ class Simulation {
   bool loadPreset(int id, Material selected);
   /// Removes every body.
   void clear();
+  /// Replaces the world with a serialised Scene (docs/scenes.md); refused,
+  /// with the reason and the world untouched, when it does not parse or
+  /// the engine refuses its state.
+  InputResult loadScene(std::string_view data);
   void setPaused(bool paused);
   /// Simulated seconds per wall second, kMinTimeScale..kMaxTimeScale; an
   /// error naming the range otherwise (nothing changes).

@@ -105,5 +105,11 @@
       parseTimeScale, client::setTimeScale)                                             \
   ROW(ListRooms, list_rooms, Anyone, listRooms, "rooms", "rooms",                         \
       "the server's rooms: name, clients, bodies, tick (reply is a RoomList)",            \
-      parseNoArguments, client::listRooms)
+      parseNoArguments, client::listRooms)                                                \
+  ROW(SaveScene, save_scene, Anyone, saveScene, "save", "save FILE",                      \
+      "write the whole world, bit-exact, to FILE (a Scene message, docs/scenes.md)",      \
+      parseSceneFileName, client::saveScene)                                              \
+  ROW(LoadScene, load_scene, Admin, loadScene, "load", "load FILE",                       \
+      "replace the world with the scene in FILE; it steps on as the saved one did",       \
+      parseSceneFile, client::loadScene)
 // clang-format on

@@ -83,6 +83,10 @@ Decoded<JointUpdate> jointUpdateFromWire(const v1::UpdateJoint& command);
 /// Joints come from the server: converted as they are. Nothing for a
 /// descriptor without a kind.
 std::optional<JointDescription> jointFromWire(const v1::JointDescriptor& joint);
+/// A scene joint's kind and values into SceneJoint (scene_convert.h), and
+/// back with every number checked.
+void toWire(const JointSettings& settings, v1::SceneJoint* out);
+Decoded<JointSettings> jointSettingsFromWire(const v1::SceneJoint& joint);
 /// The wire name of a joint kind ("distance", "rope", ... "mouse").
 std::string_view jointKindName(const JointSettings& settings);
 
