@@ -120,8 +120,8 @@ void Room::enqueue(Session& session, v1::ClientMessage&& message, std::size_t by
   commands_.push(session.id(), std::move(message), bytes);
 }
 
-std::pair<SharedFrame, std::uint64_t> Room::fullSnapshot() {
-  return {snapshots_.full(), snapshotSequence_};
+std::pair<SharedFrame, std::uint64_t> Room::fullSnapshot(bool quantized) {
+  return {quantized ? snapshots_.quantizedFull() : snapshots_.full(), snapshotSequence_};
 }
 
 // --------------------------------------------------------------------- ticks
@@ -228,10 +228,20 @@ void Room::broadcastSnapshot() {
     if (session->subscribed()) subscribers.push_back(session);
   }
   WorldChanges& changes = simulation_.takeChanges();
-  if (subscribers.empty()) return;
+  if (subscribers.empty()) {
+    snapshots_.skipQuantized();
+    return;
+  }
   const auto delta = snapshots_.delta(changes);
   lastSnapshotBytes_ = delta->size();
-  for (const auto& session : subscribers) session->offerSnapshot(snapshotSequence_, delta);
+  // Quantized subscribers share one delta too; without any, its baseline lapses.
+  const bool anyQuantized = std::any_of(subscribers.begin(), subscribers.end(),
+                                        [](const auto& session) { return session->quantized(); });
+  const auto quantizedDelta = anyQuantized ? snapshots_.quantizedDelta(changes) : nullptr;
+  if (!anyQuantized) snapshots_.skipQuantized();
+  for (const auto& session : subscribers) {
+    session->offerSnapshot(snapshotSequence_, session->quantized() ? quantizedDelta : delta);
+  }
 }
 
 v1::ServerStats Room::stats(bool withStateHash) {

@@ -44,6 +44,9 @@ struct ConnectOptions {
   std::uint32_t protocolVersion = wire::kProtocolVersion;
   /// Hello.token: the server's token, or its admin token for the admin role.
   std::string token;
+  /// Hello.snapshot_encoding: QUANTIZED asks for compact snapshots
+  /// (docs/snapshots.md); the mirror decodes either.
+  v1::SnapshotEncoding snapshotEncoding = v1::SNAPSHOT_ENCODING_PLAIN;
 };
 
 /// "HOST:PORT" (or "[V6]:PORT") split; nothing when malformed.

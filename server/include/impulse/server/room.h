@@ -52,7 +52,7 @@ class Room final : public SnapshotSource {
   /// client's rate.
   void enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes);
 
-  std::pair<SharedFrame, std::uint64_t> fullSnapshot() override;
+  std::pair<SharedFrame, std::uint64_t> fullSnapshot(bool quantized) override;
 
  private:
   void scheduleTick();
