@@ -19,11 +19,11 @@ namespace impulse::wire::quantized {
 struct SnapshotLists {
   std::uint64_t tick = 0;
   std::int64_t tickHz = 60;
-  std::span<const std::uint32_t> removed;
+  std::span<const std::uint32_t> removed{};
   /// The ids in Snapshot.added: coded whole (every body, in a key frame).
-  std::span<const std::uint32_t> added;
+  std::span<const std::uint32_t> added{};
   /// Bodies whose state may differ from the baseline's (a delta's only).
-  std::span<const std::uint32_t> changed;
+  std::span<const std::uint32_t> changed{};
 };
 
 class Encoder {
@@ -49,7 +49,7 @@ class Encoder {
     std::uint32_t id = 0;
     bool whole = false;  // an absolute record (added bodies)
     bool sent = false;   // a correction record (delta-coded bodies)
-    State state;
+    State state{};
     Residuals residuals{};
   };
   void writeHeader(bool key, std::uint64_t tick, std::int64_t tickHz, std::uint64_t ticks,
