@@ -2,9 +2,6 @@
 
 #include <google/protobuf/arena.h>
 
-#include <algorithm>
-#include <cmath>
-
 #include "impulse.pb.h"
 #include "impulse/wire/convert.h"
 #include "impulse/wire/framing.h"
@@ -75,9 +72,11 @@ void addWholeWorld(const Simulation& simulation, v1::Snapshot* snapshot) {
   for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
 }
 
-// The prediction's integer tick rate (docs/snapshots.md).
-std::int64_t quantizedTickHz(const Simulation& simulation) {
-  return std::max<std::int64_t>(1, std::llround(simulation.tickHz()));
+// The integration the prediction follows (docs/snapshots.md).
+wire::quantized::Integration quantizedIntegration(const Simulation& simulation) {
+  const World& world = simulation.world();
+  return wire::quantized::integrationOf(simulation.tickHz(), world.settings().subSteps,
+                                        world.gravity());
 }
 
 }  // namespace
@@ -143,7 +142,7 @@ SharedFrame SnapshotBuilder::quantizedDelta(const WorldChanges& changes) {
   const auto added = addedIds(*snapshot);
   snapshot->set_quantized_bodies(encoder_.delta(
       simulation_.world(), {.tick = simulation_.tick(),
-                            .tickHz = quantizedTickHz(simulation_),
+                            .integration = quantizedIntegration(simulation_),
                             .removed = {snapshot->removed().data(), std::size_t(snapshot->removed_size())},
                             .added = added,
                             .changed = changedIds_}));
@@ -164,7 +163,7 @@ SharedFrame SnapshotBuilder::quantizedFull() {
   const auto added = addedIds(*snapshot);
   snapshot->set_quantized_bodies(encoder_.keyFrame(
       simulation_.world(), {.tick = simulation_.tick(),
-                            .tickHz = quantizedTickHz(simulation_),
+                            .integration = quantizedIntegration(simulation_),
                             .added = added}));
   cachedKey_ = wire::encodeSharedFrame(message);
   cachedKeyVersion_ = simulation_.version();

@@ -20,6 +20,8 @@ namespace {
 
 constexpr int kTickHz = 60;
 constexpr int kTicksPerSnapshot = 2;
+// The world's default substeps and gravity.
+const Integration kIntegration = integrationOf(kTickHz, 4, Vec2(0, Real(-9.81)));
 constexpr double kPositionBound = double(kPositionQuantum) * kPositionUnit;  // 2^-9
 constexpr double kVelocityBound = double(kVelocityQuantum) * kVelocityUnit;  // 2^-5
 
@@ -74,7 +76,7 @@ void startWithKeyFrame(World& world, Stream& stream) {
   const auto ids = allIds(world);
   stream.encoder.reset(world, stream.tick);
   const std::string key =
-      stream.encoder.keyFrame(world, {.tick = stream.tick, .tickHz = kTickHz, .added = ids});
+      stream.encoder.keyFrame(world, {.tick = stream.tick, .integration = kIntegration, .added = ids});
   ASSERT_FALSE(stream.decoder.decode(key, true, {}, ids, stream.moved));
   ASSERT_EQ(stream.moved.size(), ids.size());
 }
@@ -98,7 +100,7 @@ TEST(CompactSnapshots, SettlingScene_AtMostFourBitsPerBodyPerSnapshot_WithinAQua
       ++stream.tick;
     }
     const std::string delta = stream.encoder.delta(
-        world, {.tick = stream.tick, .tickHz = kTickHz, .changed = changed});
+        world, {.tick = stream.tick, .integration = kIntegration, .changed = changed});
     ASSERT_FALSE(stream.decoder.decode(delta, false, {}, {}, stream.moved));
     bits += delta.size() * 8;
     ++snapshots;

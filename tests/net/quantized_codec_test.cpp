@@ -64,11 +64,13 @@ TEST(BitCodec, ReadingPastTheEndOrAnEndlessCode_Fails) {
 
 namespace q = quantized;
 
+const q::Integration kIntegration = q::integrationOf(60, 4, Vec2(0, Real(-9.81)));
+
 TEST(QuantizedPrediction, MatchesSemiImplicitEulerInClosedForm) {
-  // v = 1.5 m/s, a = -9.8125 m/s^2 (exactly 10048/1024/16 units per tick at
-  // 64 Hz), over n ticks: x = dt * (n*v + a*dt*n*(n+1)/2), v' = v + n*a*dt.
-  const std::int64_t tickHz = 64;
-  const double dt = 1.0 / tickHz;
+  // v = 1.5 m/s, a = -9.8125 m/s^2 at 64 Hz with 4 substeps, over n ticks
+  // (4n substeps of dt/4): x = dt * (n*v + a*dt*n*(4n+1)/8), v' = v + n*a*dt.
+  const q::Integration integration{.tickHz = 64, .subSteps = 4};
+  const double dt = 1.0 / 64;
   const double v = 1.5;
   const double a = -9.8125;
   q::State state;
@@ -76,15 +78,15 @@ TEST(QuantizedPrediction, MatchesSemiImplicitEulerInClosedForm) {
   state.velocity[1] = std::llround(v / q::kVelocityUnit);
   state.acceleration[1] = std::llround(a * dt / q::kVelocityUnit * q::kAccelerationScale);
   for (const std::int64_t n : {1, 2, 7, 30}) {
-    const q::State next = q::predict(state, n, tickHz);
-    const double x = dt * (double(n) * v + a * dt * double(n * (n + 1)) / 2);
+    const q::State next = q::predict(state, n, integration);
+    const double x = dt * (double(n) * v + a * dt * double(n * (4 * n + 1)) / 8);
     EXPECT_NEAR(double(next.position[1]) * q::kPositionUnit, x, q::kPositionUnit) << n;
     EXPECT_NEAR(double(next.velocity[1]) * q::kVelocityUnit, v + double(n) * a * dt,
                 q::kVelocityUnit)
         << n;
   }
   state.awake = false;
-  EXPECT_EQ(q::predict(state, 10, tickHz), state);
+  EXPECT_EQ(q::predict(state, 10, integration), state);
 }
 
 TEST(QuantizedPrediction, DeadZone_SendsNothingWithinAQuantum_ElseTheNearestQuantum) {
@@ -130,10 +132,10 @@ TEST(QuantizedStream, SameWorldTwice_GivesTheSameBytes) {
     World world = fallingWorld();
     q::Encoder encoder;
     encoder.reset(world, 0);
-    stream.push_back(encoder.keyFrame(world, {.tick = 0, .tickHz = 60, .added = idsOf(world)}));
+    stream.push_back(encoder.keyFrame(world, {.tick = 0, .integration = kIntegration, .added = idsOf(world)}));
     for (std::uint64_t tick = 2; tick <= 120; tick += 2) {
       const auto moved = stepAndCollectMoved(world, 2);
-      stream.push_back(encoder.delta(world, {.tick = tick, .tickHz = 60, .changed = moved}));
+      stream.push_back(encoder.delta(world, {.tick = tick, .integration = kIntegration, .changed = moved}));
     }
   }
   EXPECT_EQ(streams[0], streams[1]);
@@ -147,7 +149,7 @@ TEST(QuantizedStream, LateJoinerKeyFrame_ThenDeltas_MatchTheEarlyClient) {
   std::vector<BodyState> moved;
   encoder.reset(world, 0);
   const auto ids = idsOf(world);
-  ASSERT_FALSE(early.decode(encoder.keyFrame(world, {.tick = 0, .tickHz = 60, .added = ids}),
+  ASSERT_FALSE(early.decode(encoder.keyFrame(world, {.tick = 0, .integration = kIntegration, .added = ids}),
                             true, {}, ids, moved));
   std::uint64_t tick = 0;
   for (int snapshot = 0; snapshot < 80; ++snapshot) {
@@ -158,13 +160,13 @@ TEST(QuantizedStream, LateJoinerKeyFrame_ThenDeltas_MatchTheEarlyClient) {
       // (taken now, between broadcasts) and by everyone's next delta.
       world.createCircle(Vec2(0, 5), Real(0.4));
       const auto now = idsOf(world);
-      ASSERT_FALSE(late.decode(encoder.keyFrame(world, {.tick = tick, .tickHz = 60, .added = now}),
+      ASSERT_FALSE(late.decode(encoder.keyFrame(world, {.tick = tick, .integration = kIntegration, .added = now}),
                                true, {}, now, moved));
     }
     std::vector<std::uint32_t> added;
     if (snapshot == 20) added.push_back(idsOf(world).back());
     const std::string delta =
-        encoder.delta(world, {.tick = tick, .tickHz = 60, .added = added, .changed = changed});
+        encoder.delta(world, {.tick = tick, .integration = kIntegration, .added = added, .changed = changed});
     ASSERT_FALSE(early.decode(delta, false, {}, added, moved));
     if (snapshot >= 20) {
       const auto error = late.decode(delta, false, {}, added, moved);
@@ -179,9 +181,9 @@ TEST(QuantizedStream, HostileBytes_GetAnErrorAndForgetTheBaseline) {
   q::Encoder encoder;
   encoder.reset(world, 0);
   const auto ids = idsOf(world);
-  const std::string key = encoder.keyFrame(world, {.tick = 0, .tickHz = 60, .added = ids});
+  const std::string key = encoder.keyFrame(world, {.tick = 0, .integration = kIntegration, .added = ids});
   const auto changed = stepAndCollectMoved(world, 2);
-  const std::string delta = encoder.delta(world, {.tick = 2, .tickHz = 60, .changed = changed});
+  const std::string delta = encoder.delta(world, {.tick = 2, .integration = kIntegration, .changed = changed});
   std::vector<BodyState> moved;
 
   q::Decoder decoder;

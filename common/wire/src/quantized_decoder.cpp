@@ -1,6 +1,7 @@
 #include "impulse/wire/quantized_decoder.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 
 namespace impulse::wire::quantized {
@@ -9,16 +10,21 @@ namespace {
 
 struct Header {
   bool key = false;
-  std::int64_t tickHz = 0;
+  Integration integration;
   std::uint64_t tick = 0;
   std::uint64_t ticks = 0;
   std::uint64_t count = 0;
 };
 
+bool withinLimit(std::int64_t value, std::int64_t limit) { return std::abs(value) <= limit; }
+
 std::optional<std::string> readHeader(BitReader& bits, Header& header) {
   const std::uint64_t version = bits.readBits(kFormatVersionBits);
   header.key = bits.readBit();
   const std::uint64_t tickHz = bits.readExpGolomb();
+  const std::uint64_t subSteps = bits.readExpGolomb();
+  std::array<std::int64_t, 2> gravity{};
+  for (std::int64_t& g : gravity) g = bits.readSigned();
   header.tick = bits.readExpGolomb();
   if (!header.key) header.ticks = bits.readExpGolomb();
   header.count = bits.readExpGolomb();
@@ -27,16 +33,22 @@ std::optional<std::string> readHeader(BitReader& bits, Header& header) {
     return "quantized_bodies: layout version " + std::to_string(version) + ", expected " +
            std::to_string(kFormatVersion);
   }
-  if (tickHz < 1 || tickHz > kMaxTickHz) {
+  if (tickHz < 1 || tickHz > std::uint64_t(kMaxTickHz)) {
     return "quantized_bodies: tick rate " + std::to_string(tickHz) + " Hz is outside 1.." +
            std::to_string(kMaxTickHz);
   }
+  if (subSteps < 1 || subSteps > std::uint64_t(kMaxSubSteps)) {
+    return "quantized_bodies: " + std::to_string(subSteps) + " substeps is outside 1.." +
+           std::to_string(kMaxSubSteps);
+  }
+  if (!withinLimit(gravity[0], kAccelerationLimit) || !withinLimit(gravity[1], kAccelerationLimit)) {
+    return "quantized_bodies: gravity out of range";
+  }
   if (header.ticks > header.tick) return "quantized_bodies: the baseline is before tick 0";
-  header.tickHz = std::int64_t(tickHz);
+  header.integration = {
+      .tickHz = std::int64_t(tickHz), .subSteps = std::int64_t(subSteps), .gravity = gravity};
   return std::nullopt;
 }
-
-bool withinLimit(std::int64_t value, std::int64_t limit) { return std::abs(value) <= limit; }
 
 bool readWhole(BitReader& bits, State& state) {
   state.awake = bits.readBit();
@@ -53,7 +65,7 @@ bool readWhole(BitReader& bits, State& state) {
 }
 
 bool readCorrection(BitReader& bits, const State& before, std::int64_t ticks,
-                    std::int64_t tickHz, State& state) {
+                    const Integration& integration, State& state) {
   const bool awake = bits.readBit();
   Residuals residuals{};
   for (std::int64_t& residual : residuals) residual = bits.readSigned();
@@ -61,7 +73,7 @@ bool readCorrection(BitReader& bits, const State& before, std::int64_t ticks,
   for (std::size_t i = 0; i < residuals.size(); ++i) {
     if (!withinLimit(residuals[i], kValueLimit / kQuanta[i])) return false;
   }
-  state = corrected(predict(before, ticks, tickHz), residuals, awake, before, ticks);
+  state = corrected(predict(before, ticks, integration), residuals, awake, before, ticks, integration);
   auto fits = [](const auto& values) {
     return std::all_of(values.begin(), values.end(),
                        [](std::int64_t v) { return withinLimit(v, kValueLimit); });
@@ -102,7 +114,7 @@ std::optional<std::string> Decoder::decode(std::string_view bytes, bool full,
     }
   }
   if (!error) {
-    error = decodeEntries(bits, std::int64_t(header.ticks), header.tickHz, whole_, moved);
+    error = decodeEntries(bits, std::int64_t(header.ticks), header.integration, whole_, moved);
   }
   if (error) {
     forget();
@@ -115,7 +127,7 @@ std::optional<std::string> Decoder::decode(std::string_view bytes, bool full,
 }
 
 std::optional<std::string> Decoder::decodeEntries(BitReader& bits, std::int64_t ticks,
-                                                  std::int64_t tickHz,
+                                                  const Integration& integration,
                                                   std::span<const std::uint32_t> whole,
                                                   std::vector<BodyState>& moved) {
   std::size_t deltaLeft = baseline_.bodies.size() - whole.size();
@@ -143,10 +155,10 @@ std::optional<std::string> Decoder::decodeEntries(BitReader& bits, std::int64_t 
     --runLeft;
     --deltaLeft;
     const State before = state;
-    if (runSent && !readCorrection(bits, before, ticks, tickHz, state)) {
+    if (runSent && !readCorrection(bits, before, ticks, integration, state)) {
       return "quantized_bodies: body " + std::to_string(id) + ": a correction cut short or out of range";
     }
-    if (!runSent) state = predict(before, ticks, tickHz);
+    if (!runSent) state = predict(before, ticks, integration);
     if (runSent || before.awake) moved.push_back(dequantize(BodyId{id}, state));
   }
   return std::nullopt;

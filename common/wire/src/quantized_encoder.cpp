@@ -1,6 +1,8 @@
 #include "impulse/wire/quantized_encoder.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 namespace impulse::wire::quantized {
 
@@ -64,7 +66,7 @@ std::string Encoder::delta(const World& world, const SnapshotLists& lists) {
       entry.whole = true;
       state = stateNow(world, id);
     } else {
-      const State predicted = predict(state, std::int64_t(ticks), lists.tickHz);
+      const State predicted = predict(state, std::int64_t(ticks), lists.integration);
       const auto truth = state.awake || contains(changed, id)
                              ? world.bodyState(BodyId{id})
                              : std::nullopt;
@@ -72,7 +74,7 @@ std::string Encoder::delta(const World& world, const SnapshotLists& lists) {
       entry.residuals = residualsBetween(predicted, now);
       entry.sent = anyNonZero(entry.residuals) || now.awake != predicted.awake;
       state = entry.sent ? corrected(predicted, entry.residuals, now.awake, state,
-                                     std::int64_t(ticks))
+                                     std::int64_t(ticks), lists.integration)
                          : predicted;
     }
     entry.state = state;
@@ -82,8 +84,15 @@ std::string Encoder::delta(const World& world, const SnapshotLists& lists) {
   ++generation_;
 
   bits_.clear();
-  writeHeader(false, lists.tick, lists.tickHz, ticks, entries_.size());
+  writeHeader(false, lists.tick, lists.integration, ticks, entries_.size());
   writeEntries();
+  {
+    static long sent=0, total=0, comp[7]={0}, runs=0; static long nz[6]={0}; static long big[6]={0};
+    bool prev=false;
+    for (auto& e: entries_) { total++; if (e.sent) {sent++; for (int i=0;i<6;i++){ if(e.residuals[i]) nz[i]++; if (std::abs(e.residuals[i])>2) big[i]++;} } if (e.sent!=prev) runs++; prev=e.sent; }
+    (void)comp;
+    static int calls=0; if (++calls % 20 == 0) fprintf(stderr, "sent %ld/%ld runs %ld nz %ld %ld %ld %ld %ld %ld big %ld %ld %ld %ld %ld %ld\n", sent,total,runs,nz[0],nz[1],nz[2],nz[3],nz[4],nz[5],big[0],big[1],big[2],big[3],big[4],big[5]);
+  }
   return bits_.bytes();
 }
 
@@ -95,16 +104,18 @@ std::string Encoder::keyFrame(const World& world, const SnapshotLists& lists) {
     entries_.push_back({.id = id, .whole = true, .state = state});
   }
   bits_.clear();
-  writeHeader(true, baseline_.tick, lists.tickHz, 0, entries_.size());
+  writeHeader(true, baseline_.tick, lists.integration, 0, entries_.size());
   writeEntries();
   return bits_.bytes();
 }
 
-void Encoder::writeHeader(bool key, std::uint64_t tick, std::int64_t tickHz, std::uint64_t ticks,
+void Encoder::writeHeader(bool key, std::uint64_t tick, const Integration& integration, std::uint64_t ticks,
                           std::size_t count) {
   bits_.writeBits(kFormatVersion, kFormatVersionBits);
   bits_.writeBit(key);
-  bits_.writeExpGolomb(std::uint64_t(tickHz));
+  bits_.writeExpGolomb(std::uint64_t(integration.tickHz));
+  bits_.writeExpGolomb(std::uint64_t(integration.subSteps));
+  for (const std::int64_t g : integration.gravity) bits_.writeSigned(g);
   bits_.writeExpGolomb(tick);
   if (!key) bits_.writeExpGolomb(ticks);
   bits_.writeExpGolomb(count);

@@ -48,19 +48,21 @@ BodyState dequantize(BodyId id, const State& q) {
   return state;
 }
 
-State predict(const State& state, std::int64_t ticks, std::int64_t tickHz) {
+State predict(const State& state, std::int64_t ticks, const Integration& integration) {
   if (!state.awake || ticks <= 0) return state;
   const std::int64_t n = std::min(ticks, kMaxPredictionTicks);
+  const std::int64_t s = integration.subSteps;
   State next = state;
   for (int i = 0; i < 3; ++i) {
-    // Semi-implicit Euler over n ticks of dt = 1/tickHz with the velocity
-    // growing by a = acceleration/16 each tick: v' = v + n*a and
-    // x' = x + dt * (n*v + a*n*(n+1)/2). Position units are a quarter of
-    // velocity units, hence 4 / (32 * tickHz) = 1 / (8 * tickHz).
+    // Semi-implicit Euler over n*s substeps of dt/s (dt = 1/tickHz), the
+    // velocity growing by a/s each (a = acceleration/16 per tick):
+    // v' = v + n*a and x' = x + dt * (n*v + a*n*(n*s+1)/(2*s)). Position
+    // units are a quarter of velocity units, acceleration units 1/16 of them.
     const std::int64_t v = state.velocity[i];
     const std::int64_t a = state.acceleration[i];
     next.velocity[i] = clampValue(v + divideRounded(a * n, kAccelerationScale));
-    const std::int64_t travel = divideRounded(n * (32 * v + a * (n + 1)), 8 * tickHz);
+    const std::int64_t travel =
+        divideRounded(n * (32 * s * v + a * (n * s + 1)), 8 * s * integration.tickHz);
     next.position[i] = clampValue(state.position[i] + travel);
   }
   return next;
@@ -87,8 +89,30 @@ Residuals residualsBetween(const State& predicted, const State& truth) {
   return residuals;
 }
 
+Integration integrationOf(double tickHz, int subSteps, const Vec2& gravity) {
+  const auto hz = std::clamp<std::int64_t>(std::llround(tickHz), 1, kMaxTickHz);
+  auto perTick = [hz](double acceleration) {
+    const double units = acceleration / double(hz) / kVelocityUnit * double(kAccelerationScale);
+    const double limit = double(kAccelerationLimit);
+    return std::llround(std::clamp(units, -limit, limit));
+  };
+  return {.tickHz = hz,
+          .subSteps = std::clamp<std::int64_t>(subSteps, 1, kMaxSubSteps),
+          .gravity = {perTick(double(gravity.x())), perTick(double(gravity.y()))}};
+}
+
+namespace {
+
+std::int64_t snapped(std::int64_t learnt, std::int64_t gravity, std::int64_t tolerance) {
+  if (std::abs(learnt - gravity) <= tolerance) return gravity;
+  if (std::abs(learnt) <= tolerance) return 0;
+  return learnt;
+}
+
+}  // namespace
+
 State corrected(const State& predicted, const Residuals& residuals, bool awake,
-                const State& before, std::int64_t ticks) {
+                const State& before, std::int64_t ticks, const Integration& integration) {
   State state = predicted;
   for (std::size_t i = 0; i < residuals.size(); ++i) {
     component(state, i) += residuals[i] * kQuanta[i];
@@ -98,10 +122,12 @@ State corrected(const State& predicted, const Residuals& residuals, bool awake,
     state.acceleration = {};
   } else if (ticks > 0) {
     const std::int64_t n = std::min(ticks, kMaxPredictionTicks);
+    const std::int64_t tolerance = divideRounded(kVelocityQuantum * kAccelerationScale, n);
     for (std::size_t i = 0; i < 3; ++i) {
       const std::int64_t change = state.velocity[i] - before.velocity[i];
-      state.acceleration[i] = std::clamp(divideRounded(change * kAccelerationScale, n),
-                                         -kAccelerationLimit, kAccelerationLimit);
+      const std::int64_t learnt = std::clamp(divideRounded(change * kAccelerationScale, n),
+                                             -kAccelerationLimit, kAccelerationLimit);
+      state.acceleration[i] = snapped(learnt, i < 2 ? integration.gravity[i] : 0, tolerance);
     }
   }
   return state;

@@ -13,8 +13,6 @@ namespace impulse::wire::quantized {
 /// The layout's version, the first 4 bits of every quantized_bodies.
 inline constexpr std::uint64_t kFormatVersion = 1;
 inline constexpr int kFormatVersionBits = 4;
-/// Tick rates a stream may state (Hz).
-inline constexpr std::uint64_t kMaxTickHz = 100000;
 
 struct Baseline {
   /// By body id, ascending: the order bodies are coded in.

@@ -33,7 +33,7 @@ class Decoder {
 
  private:
   std::optional<std::string> decodeEntries(BitReader& bits, std::int64_t ticks,
-                                           std::int64_t tickHz,
+                                           const Integration& integration,
                                            std::span<const std::uint32_t> whole,
                                            std::vector<BodyState>& moved);
 

@@ -18,7 +18,7 @@ namespace impulse::wire::quantized {
 /// One snapshot's body lists, as its message carries them (ids ascending).
 struct SnapshotLists {
   std::uint64_t tick = 0;
-  std::int64_t tickHz = 60;
+  Integration integration;
   std::span<const std::uint32_t> removed{};
   /// The ids in Snapshot.added: coded whole (every body, in a key frame).
   std::span<const std::uint32_t> added{};
@@ -52,7 +52,7 @@ class Encoder {
     State state{};
     Residuals residuals{};
   };
-  void writeHeader(bool key, std::uint64_t tick, std::int64_t tickHz, std::uint64_t ticks,
+  void writeHeader(bool key, std::uint64_t tick, const Integration& integration, std::uint64_t ticks,
                    std::size_t count);
   void writeEntries();
 

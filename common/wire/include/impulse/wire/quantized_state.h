@@ -25,8 +25,24 @@ inline constexpr std::int64_t kAccelerationScale = 16;
 /// Magnitude limits (units) that keep every product below 2^63.
 inline constexpr std::int64_t kValueLimit = std::int64_t(1) << 41;
 inline constexpr std::int64_t kAccelerationLimit = std::int64_t(1) << 36;
-/// Predictions extrapolate over at most this many ticks.
-inline constexpr std::int64_t kMaxPredictionTicks = 4096;
+/// Predictions extrapolate over at most this many ticks, of at most this
+/// many substeps.
+inline constexpr std::int64_t kMaxPredictionTicks = 256;
+inline constexpr std::int64_t kMaxSubSteps = 64;
+/// Tick rates a stream may state (Hz).
+inline constexpr std::int64_t kMaxTickHz = 100000;
+
+/// How the server integrates: ticks per second, substeps per tick, and
+/// gravity (acceleration units, per axis).
+struct Integration {
+  std::int64_t tickHz = 60;
+  std::int64_t subSteps = 4;
+  std::array<std::int64_t, 2> gravity{};
+};
+
+/// The integration of a world stepped at `tickHz` (rounded; substeps
+/// clamped to 1..kMaxSubSteps) under `gravity`.
+Integration integrationOf(double tickHz, int subSteps, const Vec2& gravity);
 
 /// Index 0, 1, 2: x, y, angle (and their rates).
 struct State {
@@ -48,9 +64,10 @@ State quantize(const BodyState& state);
 /// Back to metres, radians and seconds.
 BodyState dequantize(BodyId id, const State& state);
 
-/// Where an awake body is `ticks` ticks later at a tick rate of `tickHz`, if
-/// it keeps its acceleration; a sleeping body stays.
-State predict(const State& state, std::int64_t ticks, std::int64_t tickHz);
+/// Where an awake body is `ticks` ticks later if it keeps its acceleration
+/// (the engine's semi-implicit Euler over every substep); a sleeping body
+/// stays.
+State predict(const State& state, std::int64_t ticks, const Integration& integration);
 
 /// Corrections in quanta, per component: x, y, angle, vx, vy, angular velocity.
 using Residuals = std::array<std::int64_t, 6>;
@@ -63,8 +80,11 @@ inline constexpr Residuals kQuanta = {kPositionQuantum, kPositionQuantum, kPosit
 Residuals residualsBetween(const State& predicted, const State& truth);
 /// The state a record makes of a prediction: the residuals applied, the
 /// awake flag set, and the acceleration learnt from `before` over `ticks`
-/// (kept when no tick passed, zero for a sleeping body).
+/// (kept when no tick passed, zero for a sleeping body). A learnt
+/// acceleration within a velocity quantum (over the interval) of gravity
+/// becomes gravity, one within a quantum of zero becomes zero: falling and
+/// resting are then predicted exactly, not from noisy quantized velocities.
 State corrected(const State& predicted, const Residuals& residuals, bool awake,
-                const State& before, std::int64_t ticks);
+                const State& before, std::int64_t ticks, const Integration& integration);
 
 }  // namespace impulse::wire::quantized
