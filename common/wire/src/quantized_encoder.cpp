@@ -1,8 +1,6 @@
 #include "impulse/wire/quantized_encoder.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 
 namespace impulse::wire::quantized {
 
@@ -86,13 +84,6 @@ std::string Encoder::delta(const World& world, const SnapshotLists& lists) {
   bits_.clear();
   writeHeader(false, lists.tick, lists.integration, ticks, entries_.size());
   writeEntries();
-  {
-    static long sent=0, total=0, comp[7]={0}, runs=0; static long nz[6]={0}; static long big[6]={0};
-    bool prev=false;
-    for (auto& e: entries_) { total++; if (e.sent) {sent++; for (int i=0;i<6;i++){ if(e.residuals[i]) nz[i]++; if (std::abs(e.residuals[i])>2) big[i]++;} } if (e.sent!=prev) runs++; prev=e.sent; }
-    (void)comp;
-    static int calls=0; if (++calls % 20 == 0) fprintf(stderr, "sent %ld/%ld runs %ld nz %ld %ld %ld %ld %ld %ld big %ld %ld %ld %ld %ld %ld\n", sent,total,runs,nz[0],nz[1],nz[2],nz[3],nz[4],nz[5],big[0],big[1],big[2],big[3],big[4],big[5]);
-  }
   return bits_.bytes();
 }
 

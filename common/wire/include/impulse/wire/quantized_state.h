@@ -18,7 +18,7 @@ inline constexpr double kPositionUnit = 1.0 / 4096;
 inline constexpr double kVelocityUnit = 1.0 / 1024;
 /// Corrections are sent in quanta, in units: 2^-9 m (and rad), 2^-5 m/s
 /// (and rad/s). A decoded value is always within one quantum of the truth.
-inline constexpr std::int64_t kPositionQuantum = 8;
+inline constexpr std::int64_t kPositionQuantum = 16;
 inline constexpr std::int64_t kVelocityQuantum = 32;
 /// Accelerations are kept in velocity units / 16 per tick.
 inline constexpr std::int64_t kAccelerationScale = 16;
