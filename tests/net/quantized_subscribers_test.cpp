@@ -1,4 +1,4 @@
-// Compact snapshots through the real server: a quantized subscriber's mirror
+// Quantized subscribers through the real server: a quantized subscriber's mirror
 // stays within a quantum of a plain subscriber's (full precision) at every
 // step, a quantized client joining late starts from a key frame and agrees
 // too, and an unknown encoding is refused at Hello.
@@ -42,7 +42,7 @@ void expectWithinAQuantum(const Client& plain, const Client& quantized) {
   }
 }
 
-TEST(CompactSnapshots, QuantizedMirrorStaysWithinAQuantumOfThePlainOne_LateJoinerToo) {
+TEST(QuantizedSubscribers, QuantizedMirrorStaysWithinAQuantumOfThePlainOne_LateJoinerToo) {
   ServerProcess server(timedRates());
   Client driver(localClient(server.port(), "driver", false));
   requestAll(driver, {client::setPaused(true)});
@@ -71,7 +71,7 @@ TEST(CompactSnapshots, QuantizedMirrorStaysWithinAQuantumOfThePlainOne_LateJoine
   EXPECT_FALSE(quantized.lastSnapshot()->quantized_bodies().empty());
 }
 
-TEST(CompactSnapshots, UnknownEncoding_IsRefusedAtHello) {
+TEST(QuantizedSubscribers, UnknownEncoding_IsRefusedAtHello) {
   ServerProcess server;
   auto options = localClient(server.port(), "odd");
   options.snapshotEncoding = v1::SnapshotEncoding(7);
