@@ -80,6 +80,7 @@ Client::Client(const ConnectOptions& options) : socket_(io_), reader_(options.ma
   hello.mutable_hello()->set_want_snapshots(options.wantSnapshots);
   hello.mutable_hello()->set_token(options.token);
   hello.mutable_hello()->set_room(options.room);
+  hello.mutable_hello()->set_snapshot_encoding(options.snapshotEncoding);
   send(std::move(hello));
   while (!welcome_.has_world_max()) {
     if (!receiveOne(deadline)) throw ConnectionError("no Welcome from " + target);

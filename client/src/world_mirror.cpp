@@ -38,6 +38,11 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
     body.state.id = body.id;
     bodies_[descriptor.id()] = body;
   }
+  if (!snapshot.quantized_bodies().empty()) {
+    if (auto problem = applyQuantized(snapshot)) return failed(std::move(*problem));
+  } else if (snapshot.full()) {
+    decoder_.forget();
+  }
   for (const auto& state : snapshot.bodies()) {
     const auto it = bodies_.find(state.id());
     if (it == bodies_.end()) {
@@ -52,6 +57,23 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
     joints_[descriptor.id()] = *joint;
   }
   return true;
+}
+
+std::optional<std::string> WorldMirror::applyQuantized(const v1::Snapshot& snapshot) {
+  addedIds_.clear();
+  for (const auto& descriptor : snapshot.added()) addedIds_.push_back(descriptor.id());
+  const std::span<const std::uint32_t> removed(snapshot.removed().data(),
+                                               std::size_t(snapshot.removed_size()));
+  if (auto problem = decoder_.decode(snapshot.quantized_bodies(), snapshot.full(), removed,
+                                     addedIds_, decoded_)) {
+    return problem;
+  }
+  for (const BodyState& state : decoded_) {
+    const auto it = bodies_.find(state.id.value);
+    if (it == bodies_.end()) return "state for unknown body " + std::to_string(state.id.value);
+    it->second.state = state;
+  }
+  return std::nullopt;
 }
 
 const MirrorBody* WorldMirror::find(BodyId id) const {

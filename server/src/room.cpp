@@ -142,7 +142,13 @@ std::shared_ptr<Session> Room::member(std::uint32_t client) const {
   return it == members_.end() ? nullptr : it->second;
 }
 
-void Room::countSubscribers() { subscribers_ = subscriberIds_.size(); }
+void Room::countSubscribers() {
+  subscribers_ = subscriberIds_.size();
+  quantizedSubscribers_ = std::size_t(std::count_if(subscriberIds_.begin(), subscriberIds_.end(), [&](std::uint32_t id) {
+    const auto session = member(id);
+    return session && session->quantized();
+  }));
+}
 
 void Room::enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes) {
   if (!session.withinRate()) {
@@ -171,9 +177,9 @@ v1::RoomInfo Room::info() const {
   return info;
 }
 
-std::pair<SharedFrame, std::uint64_t> Room::fullSnapshot() {
+std::pair<SharedFrame, std::uint64_t> Room::fullSnapshot(bool quantized) {
   const std::lock_guard lock(worldMutex_);
-  return {snapshots_.full(), snapshotSequence_};
+  return {quantized ? snapshots_.quantizedFull() : snapshots_.full(), snapshotSequence_};
 }
 
 // ------------------------------------------------------- I/O-thread delivery
@@ -218,7 +224,9 @@ void Room::deliverBroadcast(const Broadcast& broadcast) {
     if (session->subscribed()) subscribers.push_back(session);
   }
   for (const auto& session : subscribers) {
-    session->offerSnapshot(broadcast.sequence, broadcast.delta);
+    // A quantized subscriber counted after the tick built no quantized
+    // delta: its null frame becomes a key frame when written.
+    session->offerSnapshot(broadcast.sequence, session->quantized() ? broadcast.quantizedDelta : broadcast.delta);
   }
 }
 
@@ -342,10 +350,17 @@ void Room::broadcastSnapshot() {
   ++snapshotSequence_;
   WorldChanges& changes = simulation_.takeChanges();
   // A subscriber joining meanwhile starts from a full snapshot, so nothing is lost.
-  if (subscribers_.load() == 0) return;
+  if (subscribers_.load() == 0) {
+    snapshots_.skipQuantized();
+    return;
+  }
   const auto delta = snapshots_.delta(changes);
   lastSnapshotBytes_ = delta->size();
-  outbox_.emplace_back(Broadcast{snapshotSequence_, delta});
+  // Quantized subscribers share one delta too; without any, its baseline lapses.
+  const bool anyQuantized = quantizedSubscribers_.load() > 0;
+  SharedFrame quantizedDelta = anyQuantized ? snapshots_.quantizedDelta(changes) : nullptr;
+  if (!anyQuantized) snapshots_.skipQuantized();
+  outbox_.emplace_back(Broadcast{snapshotSequence_, delta, std::move(quantizedDelta)});
 }
 
 v1::ServerStats Room::stats(bool withStateHash) {

@@ -166,6 +166,11 @@ void Session::handleFrame(std::string_view payload) {
       return fatal("unsupported protocol version " + std::to_string(hello.protocol_version()) +
                    " (this server speaks " + std::to_string(wire::kProtocolVersion) + ")");
     }
+    if (!v1::SnapshotEncoding_IsValid(hello.snapshot_encoding())) {
+      return fatal("snapshot_encoding " + std::to_string(hello.snapshot_encoding()) +
+                   " is not 0 (SNAPSHOT_ENCODING_PLAIN) or 1 (SNAPSHOT_ENCODING_QUANTIZED)");
+    }
+    quantized_ = hello.snapshot_encoding() == v1::SNAPSHOT_ENCODING_QUANTIZED;
     enter(Phase::Serving);
     // The name only labels log lines: short and printable.
     name_ = hello.client_name().substr(0, 64);
@@ -270,7 +275,7 @@ void Session::writeMore() {
     if (item.snapshot) {
       unsentSnapshot_ = false;
       if (!item.frame) {
-        auto [frame, sequence] = snapshotSource_->fullSnapshot();
+        auto [frame, sequence] = snapshotSource_->fullSnapshot(quantized_);
         item.frame = std::move(frame);
         lastSnapshotSequence_ = sequence;
       }

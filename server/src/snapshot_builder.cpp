@@ -33,9 +33,52 @@ void addJoint(const World& world, JointId id, v1::Snapshot* snapshot) {
   }
 }
 
+// What every delta carries whatever its encoding: removals, added bodies
+// and joints.
+void addChangeLists(const World& world, const WorldChanges& changes, v1::Snapshot* snapshot) {
+  for (const BodyId id : changes.removedIds()) snapshot->add_removed(id.value);
+  for (const BodyId id : changes.leftWorldIds()) snapshot->add_left_world(id.value);
+  for (const BodyId id : changes.addedIds()) {
+    if (const auto description = world.bodyDescription(id)) {
+      wire::toWire(*description, snapshot->add_added());
+    }
+  }
+  for (const JointId id : changes.removedJointIds()) snapshot->add_joints_removed(id.value);
+  for (const JointId id : changes.addedJointIds()) addJoint(world, id, snapshot);
+}
+
+std::vector<std::uint32_t> addedIds(const v1::Snapshot& snapshot) {
+  std::vector<std::uint32_t> ids;
+  ids.reserve(std::size_t(snapshot.added_size()));
+  for (const auto& descriptor : snapshot.added()) ids.push_back(descriptor.id());
+  return ids;
+}
+
 bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
   return a.tick == b.tick && a.simTime == b.simTime && a.paused == b.paused &&
          a.timeScale == b.timeScale;
+}
+
+// A full snapshot's meta, preset, descriptors and joints: all but the states.
+void addWholeWorld(const Simulation& simulation, v1::Snapshot* snapshot) {
+  const World& world = simulation.world();
+  fillMeta(simulation, true, snapshot);
+  wire::toWire(simulation.preset(), snapshot->mutable_preset());
+  const auto ids = world.bodyIds();
+  snapshot->mutable_added()->Reserve(int(ids.size()));
+  for (const BodyId id : ids) {
+    if (const auto description = world.bodyDescription(id)) {
+      wire::toWire(*description, snapshot->add_added());
+    }
+  }
+  for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
+}
+
+// The integration the prediction follows (docs/snapshots.md).
+wire::quantized::Integration quantizedIntegration(const Simulation& simulation) {
+  const World& world = simulation.world();
+  return wire::quantized::integrationOf(simulation.tickHz(), world.settings().subSteps,
+                                        world.gravity());
 }
 
 }  // namespace
@@ -52,15 +95,7 @@ SharedFrame SnapshotBuilder::delta(WorldChanges& changes) {
   fillMeta(simulation_, false, snapshot);
 
   changes.normalise();
-  for (const BodyId id : changes.removedIds()) snapshot->add_removed(id.value);
-  for (const BodyId id : changes.leftWorldIds()) snapshot->add_left_world(id.value);
-  for (const BodyId id : changes.addedIds()) {
-    if (const auto description = world.bodyDescription(id)) {
-      wire::toWire(*description, snapshot->add_added());
-    }
-  }
-  for (const JointId id : changes.removedJointIds()) snapshot->add_joints_removed(id.value);
-  for (const JointId id : changes.addedJointIds()) addJoint(world, id, snapshot);
+  addChangeLists(world, changes, snapshot);
   snapshot->mutable_bodies()->Reserve(int(changes.changedIds().size()));
   for (const BodyId id : changes.changedIds()) {
     if (const auto state = world.bodyState(id)) wire::toWire(*state, snapshot->add_bodies());
@@ -73,27 +108,70 @@ SharedFrame SnapshotBuilder::full() {
   if (cachedFull_ && cachedVersion_ == simulation_.version() && sameMeta(cachedMeta_, meta)) {
     return cachedFull_;
   }
-  const World& world = simulation_.world();
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
-  fillMeta(simulation_, true, snapshot);
-  wire::toWire(simulation_.preset(), snapshot->mutable_preset());
-  const auto ids = world.bodyIds();
-  snapshot->mutable_added()->Reserve(int(ids.size()));
-  snapshot->mutable_bodies()->Reserve(int(ids.size()));
-  for (const BodyId id : ids) {
-    const auto description = world.bodyDescription(id);
-    const auto state = world.bodyState(id);
-    if (!description || !state) continue;
-    wire::toWire(*description, snapshot->add_added());
-    wire::toWire(*state, snapshot->add_bodies());
+  const World& world = simulation_.world();
+  addWholeWorld(simulation_, snapshot);
+  snapshot->mutable_bodies()->Reserve(snapshot->added_size());
+  for (const auto& descriptor : snapshot->added()) {
+    wire::toWire(*world.bodyState(BodyId{descriptor.id()}), snapshot->add_bodies());
   }
-  for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
   cachedFull_ = wire::encodeSharedFrame(message);
   cachedVersion_ = simulation_.version();
   cachedMeta_ = meta;
   return cachedFull_;
+}
+
+// --------------------------------------------------------- quantized snapshots
+
+void SnapshotBuilder::startQuantized() {
+  encoder_.reset(simulation_.world(), simulation_.tick());
+}
+
+SharedFrame SnapshotBuilder::quantizedDelta(const WorldChanges& changes) {
+  if (changes.wasReplaced() || !encoder_.valid()) {
+    startQuantized();
+    return quantizedFull();
+  }
+  google::protobuf::Arena arena(arenaOptions());
+  auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
+  auto* snapshot = message.mutable_snapshot();
+  fillMeta(simulation_, false, snapshot);
+  addChangeLists(simulation_.world(), changes, snapshot);
+  changedIds_.clear();
+  for (const BodyId id : changes.changedIds()) changedIds_.push_back(id.value);
+  const auto added = addedIds(*snapshot);
+  snapshot->set_quantized_bodies(encoder_.delta(
+      simulation_.world(), {.tick = simulation_.tick(),
+                            .integration = quantizedIntegration(simulation_),
+                            .removed = {snapshot->removed().data(), std::size_t(snapshot->removed_size())},
+                            .added = added,
+                            .changed = changedIds_}));
+  return wire::encodeSharedFrame(message);
+}
+
+SharedFrame SnapshotBuilder::quantizedFull() {
+  if (!encoder_.valid()) startQuantized();
+  const SnapshotMeta meta = simulation_.meta();
+  if (cachedKey_ && cachedKeyVersion_ == simulation_.version() && sameMeta(cachedKeyMeta_, meta) &&
+      cachedKeyGeneration_ == encoder_.generation()) {
+    return cachedKey_;
+  }
+  google::protobuf::Arena arena(arenaOptions());
+  auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
+  auto* snapshot = message.mutable_snapshot();
+  addWholeWorld(simulation_, snapshot);
+  const auto added = addedIds(*snapshot);
+  snapshot->set_quantized_bodies(encoder_.keyFrame(
+      simulation_.world(), {.tick = simulation_.tick(),
+                            .integration = quantizedIntegration(simulation_),
+                            .added = added}));
+  cachedKey_ = wire::encodeSharedFrame(message);
+  cachedKeyVersion_ = simulation_.version();
+  cachedKeyGeneration_ = encoder_.generation();
+  cachedKeyMeta_ = meta;
+  return cachedKey_;
 }
 
 }  // namespace impulse::server

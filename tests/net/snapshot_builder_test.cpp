@@ -3,6 +3,7 @@
 // always equals the world exactly.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "impulse/client/world_mirror.h"
@@ -93,6 +94,29 @@ TEST(SnapshotBuilder, ReplacedWorldGivesAFullSnapshotWithTheNewPreset) {
   EXPECT_GT(snapshot.preset().markers_size(), 0);
 }
 
+// One random change: a spawn, a removal, a push while paused, now and then
+// a clear, else a step.
+void changeAtRandom(Simulation& sim, std::mt19937& random, std::vector<BodyId>& live, int round) {
+  const int action = int(random() % 10);
+  if (action < 4) {
+    const auto created = sim.createCircle(Vec2(2 + float(random() % 20), 3 + float(random() % 12)),
+                                          0.3f + 0.1f * (random() % 4), {});
+    if (created.ok()) live.push_back(created.id);
+  } else if (action == 4 && !live.empty()) {
+    const std::size_t index = random() % live.size();
+    ASSERT_TRUE(sim.removeBody(live[index]));
+    live.erase(live.begin() + std::ptrdiff_t(index));
+  } else if (action == 5 && !live.empty()) {
+    const BodyId id = live[random() % live.size()];
+    ASSERT_TRUE(sim.applyImpulse(id, Vec2(50, 80), std::nullopt));
+  } else if (action == 6 && round % 40 == 6) {
+    sim.clear();
+    live.clear();
+  } else {
+    sim.step();
+  }
+}
+
 TEST(SnapshotBuilder, MirrorsFollowTheWorldExactlyThroughRandomChanges) {
   Simulation sim(pausedSandbox());
   SnapshotBuilder snapshots(sim);
@@ -103,25 +127,7 @@ TEST(SnapshotBuilder, MirrorsFollowTheWorldExactlyThroughRandomChanges) {
   std::mt19937 random(11);
   std::vector<BodyId> live;
   for (int round = 0; round < 120; ++round) {
-    const int action = int(random() % 10);
-    if (action < 4) {
-      const auto created =
-          sim.createCircle(Vec2(2 + float(random() % 20), 3 + float(random() % 12)),
-                           0.3f + 0.1f * (random() % 4), {});
-      if (created.ok()) live.push_back(created.id);
-    } else if (action == 4 && !live.empty()) {
-      const std::size_t index = random() % live.size();
-      ASSERT_TRUE(sim.removeBody(live[index]));
-      live.erase(live.begin() + std::ptrdiff_t(index));
-    } else if (action == 5 && !live.empty()) {
-      const BodyId id = live[random() % live.size()];
-      ASSERT_TRUE(sim.applyImpulse(id, Vec2(50, 80), std::nullopt));
-    } else if (action == 6 && round % 40 == 6) {
-      sim.clear();
-      live.clear();
-    } else {
-      sim.step();
-    }
+    changeAtRandom(sim, random, live, round);
     // Between broadcasts, a client joins with a full snapshot of "now".
     if (!joined && round == 37) {
       ASSERT_TRUE(lateJoiner.apply(decode(snapshots.full())));
@@ -135,6 +141,56 @@ TEST(SnapshotBuilder, MirrorsFollowTheWorldExactlyThroughRandomChanges) {
       if (joined) {
         ASSERT_TRUE(lateJoiner.apply(delta, &error)) << error;
         expectMirrorEqualsWorld(lateJoiner, sim.world());
+      }
+    }
+  }
+}
+
+void expectMirrorWithinAQuantum(const client::WorldMirror& mirror, const World& world) {
+  namespace q = wire::quantized;
+  const Real position = Real(double(q::kPositionQuantum) * q::kPositionUnit);
+  const Real velocity = Real(double(q::kVelocityQuantum) * q::kVelocityUnit);
+  ASSERT_EQ(mirror.bodies().size(), std::size_t(world.bodyCount()));
+  for (const auto& [id, body] : mirror.bodies()) {
+    const auto truth = world.bodyState(BodyId{id});
+    ASSERT_TRUE(truth) << id;
+    EXPECT_LT((body.state.position - truth->position).cwiseAbs().maxCoeff(), position) << id;
+    EXPECT_LT(std::abs(body.state.angle - truth->angle), position) << id;
+    EXPECT_LT((body.state.linearVelocity - truth->linearVelocity).cwiseAbs().maxCoeff(), velocity)
+        << id;
+    EXPECT_EQ(body.state.awake, truth->awake) << id;
+  }
+}
+
+// Quantized mirrors see every broadcast's states within a quantum; a client
+// that joins between broadcasts starts from a key frame (the baseline's
+// states, not "now") and is within a quantum from the next delta on.
+TEST(SnapshotBuilder, QuantizedMirrorsFollowTheWorldWithinAQuantumThroughRandomChanges) {
+  Simulation sim(pausedSandbox());
+  SnapshotBuilder snapshots(sim);
+  client::WorldMirror fromStart;
+  ASSERT_TRUE(fromStart.apply(decode(snapshots.quantizedFull())));
+  client::WorldMirror lateJoiner;
+  bool joined = false;
+  std::mt19937 random(12);
+  std::vector<BodyId> live;
+  for (int round = 0; round < 150; ++round) {
+    changeAtRandom(sim, random, live, round);
+    if (!joined && round == 40) {
+      ASSERT_TRUE(lateJoiner.apply(decode(snapshots.quantizedFull())));
+      joined = true;
+    }
+    if (round % 3 == 2) {
+      WorldChanges& changes = sim.takeChanges();
+      snapshots.delta(changes);
+      const auto delta = decode(snapshots.quantizedDelta(changes));
+      EXPECT_EQ(delta.bodies_size(), 0);
+      std::string error;
+      ASSERT_TRUE(fromStart.apply(delta, &error)) << error;
+      expectMirrorWithinAQuantum(fromStart, sim.world());
+      if (joined) {
+        ASSERT_TRUE(lateJoiner.apply(delta, &error)) << error;
+        expectMirrorWithinAQuantum(lateJoiner, sim.world());
       }
     }
   }

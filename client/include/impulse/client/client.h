@@ -46,6 +46,9 @@ struct ConnectOptions {
   std::string token;
   /// Hello.room: the room to join (made on first join); "" = "default".
   std::string room;
+  /// Hello.snapshot_encoding: QUANTIZED asks for compact snapshots
+  /// (docs/snapshots.md); the mirror decodes either.
+  v1::SnapshotEncoding snapshotEncoding = v1::SNAPSHOT_ENCODING_PLAIN;
 };
 
 /// "HOST:PORT" (or "[V6]:PORT") split; nothing when malformed.

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "impulse.pb.h"
 #include "impulse/body.h"
@@ -13,6 +14,7 @@
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
 #include "impulse/shape.h"
+#include "impulse/wire/quantized_decoder.h"
 
 namespace impulse::client {
 
@@ -29,7 +31,8 @@ struct MirrorBody {
 class WorldMirror {
  public:
   /// Applies one snapshot: a full one replaces everything; a delta removes,
-  /// then adds (or replaces) descriptors, then sets states. On a malformed
+  /// then adds (or replaces) descriptors, then sets states (from `bodies`,
+  /// or decoded from `quantized_bodies`, docs/snapshots.md). On a malformed
   /// snapshot (a shape that does not decode, a state for an unknown body)
   /// returns false with the reason; bodies already applied stay applied.
   bool apply(const v1::Snapshot& snapshot, std::string* error = nullptr);
@@ -60,6 +63,11 @@ class WorldMirror {
   double timeScale_ = 1;
   std::optional<PresetInfo> preset_;
   std::uint64_t snapshotsApplied_ = 0;
+  wire::quantized::Decoder decoder_;
+  std::vector<BodyState> decoded_;
+  std::vector<std::uint32_t> addedIds_;
+
+  std::optional<std::string> applyQuantized(const v1::Snapshot& snapshot);
 };
 
 }  // namespace impulse::client

@@ -80,7 +80,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   /// Name, members, and the bodies and tick as of the room's last tick.
   v1::RoomInfo info() const;
 
-  std::pair<SharedFrame, std::uint64_t> fullSnapshot() override;
+  std::pair<SharedFrame, std::uint64_t> fullSnapshot(bool quantized) override;
 
  private:
   // ----------------------------------------------- strand -> I/O thread
@@ -94,6 +94,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   struct Broadcast {
     std::uint64_t sequence;
     SharedFrame delta;
+    SharedFrame quantizedDelta;  ///< null without quantized subscribers
   };
   using Outgoing = std::variant<Reply, Broadcast>;
   using Batch = std::vector<Outgoing>;
@@ -158,6 +159,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
 
   // Written by the I/O thread, read by the strand: subscribers to build deltas for.
   std::atomic<std::size_t> subscribers_ = 0;
+  std::atomic<std::size_t> quantizedSubscribers_ = 0;
   // Written by the strand, read by the I/O thread.
   std::atomic<std::uint64_t> publishedTick_ = 0;
   std::atomic<std::uint32_t> publishedBodies_ = 0;

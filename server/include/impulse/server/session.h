@@ -42,9 +42,10 @@ class SessionHost {
 class SnapshotSource {
  public:
   virtual ~SnapshotSource() = default;
-  /// A full snapshot of the world now, and the sequence number of the last
-  /// broadcast whose changes it includes.
-  virtual std::pair<SharedFrame, std::uint64_t> fullSnapshot() = 0;
+  /// A full snapshot of the world now (a quantized key frame when
+  /// `quantized`), and the sequence number of the last broadcast whose
+  /// changes it includes.
+  virtual std::pair<SharedFrame, std::uint64_t> fullSnapshot(bool quantized) = 0;
 };
 
 struct SessionLimits {
@@ -88,6 +89,8 @@ class Session : public std::enable_shared_from_this<Session> {
   /// The role granted at Hello (PROTOCOL.md, Access).
   bool admin() const { return admin_; }
   void setAdmin(bool admin) { admin_ = admin; }
+  /// Hello.snapshot_encoding was SNAPSHOT_ENCODING_QUANTIZED.
+  bool quantized() const { return quantized_; }
   /// Takes one command from the client's rate budget: false when over it.
   /// A client refused four seconds' worth of commands in a row is not
   /// slowing down: it is closed with an Error.
@@ -148,6 +151,7 @@ class Session : public std::enable_shared_from_this<Session> {
   RateLimiter rate_;
   std::size_t refusedInARow_ = 0;
   bool admin_ = false;
+  bool quantized_ = false;
 
   /// Starts small; doubles while reads fill it, shrinks back once they do not.
   std::vector<char> readBuffer_;

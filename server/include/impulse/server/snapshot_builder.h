@@ -5,13 +5,20 @@
 /// one, once for every subscriber. Full snapshots are built from the world
 /// itself and cached until the world changes, so any number of joining or
 /// lagging clients in one tick cost one serialisation.
+///
+/// Quantized snapshots (docs/snapshots.md) come from one encoder per room:
+/// every subscriber that took the previous broadcast holds the same baseline,
+/// so a quantized delta too is serialised once for all of them; a subscriber
+/// that joins or skips gets a key frame, cached like the full snapshot.
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "impulse/server/simulation.h"
 #include "impulse/server/world_changes.h"
+#include "impulse/wire/quantized_encoder.h"
 
 namespace impulse::server {
 
@@ -27,12 +34,32 @@ class SnapshotBuilder {
   /// Every body now, as a ServerMessage frame.
   SharedFrame full();
 
+  /// The same changes for SNAPSHOT_ENCODING_QUANTIZED subscribers, coded
+  /// against the previous quantized broadcast. Call after delta() (which
+  /// normalises the changes).
+  SharedFrame quantizedDelta(const WorldChanges& changes);
+  /// Every body for a quantized subscriber: a key frame whose states are the
+  /// ones the last quantized delta left, so the next delta applies to it.
+  SharedFrame quantizedFull();
+  /// No quantized subscriber took this broadcast: the baseline is stale, and
+  /// the next quantized snapshot starts over from the world.
+  void skipQuantized() { encoder_.forget(); }
+
  private:
+  void startQuantized();
+
   const Simulation& simulation_;
   // Full-snapshot cache: valid while the simulation's version and meta are equal.
   std::uint64_t cachedVersion_ = ~std::uint64_t(0);
   SnapshotMeta cachedMeta_;
   SharedFrame cachedFull_;
+  wire::quantized::Encoder encoder_;
+  std::vector<std::uint32_t> changedIds_;
+  // Key-frame cache: valid while version, meta and the encoder's generation are equal.
+  std::uint64_t cachedKeyVersion_ = ~std::uint64_t(0);
+  std::uint64_t cachedKeyGeneration_ = ~std::uint64_t(0);
+  SnapshotMeta cachedKeyMeta_;
+  SharedFrame cachedKey_;
 };
 
 }  // namespace impulse::server
