@@ -152,7 +152,9 @@ void prepareContact(const WorldData& world, const ConstraintRef& ref, const Cont
     cp.tangentMass = effectiveMass(c, cp.anchorA, cp.anchorB, tangent);
     Vec2 relative = pointVelocity(b, cp.anchorB) - pointVelocity(a, cp.anchorA);
     cp.relativeVelocity = relative.dot(c.normal);
-    cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, mp.normalImpulse);
+    // The load includes what the support pass carried, or a held-up body's
+    // resting overlap would read as an intrusion to push out.
+    cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, mp.normalImpulse + cp.supportImpulse);
     cp.pushCap = pushCapForLoad(c.softness, cp.loadOverlap, world.settings.maxContactPushSpeed);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.

@@ -10,9 +10,10 @@ namespace impulse {
 namespace {
 
 constexpr std::int32_t kUnreached = -1;
-// cos(60 degrees): steeper contacts lean on their neighbour rather than
-// stand on it.
-constexpr Real kMinUpwardNormal = Real(0.5);
+// cos(25 degrees): a body stands on contacts this close to level. Steeper
+// ones lean on their neighbour; among them the 30 degrees of circles packed
+// in a pile, which lifting one-sidedly would keep stirring.
+constexpr Real kMinUpwardNormal = Real(0.9);
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.

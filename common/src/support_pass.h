@@ -54,7 +54,7 @@ class SupportPass {
  public:
   /// Levels every awake body by its contact distance from the static world
   /// (a box on the ground is 1, a box on it 2), and takes as rows the
-  /// contacts whose normal is within 60 degrees of up and whose upper body
+  /// contacts whose normal is within 25 degrees of up and whose upper body
   /// is a level above the lower one and has no joints, lowest storey first;
   /// marks those refs `holdsUp`. No gravity, no rows.
   void order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount);
