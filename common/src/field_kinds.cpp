@@ -11,4 +11,13 @@ FieldBuild makeField(const FieldDef& def) {
   return std::visit(Maker{}, def);
 }
 
+std::optional<FieldDef> describeField(const ForceField& field) {
+  if (const auto* gravitation = dynamic_cast<const Gravitation*>(&field)) {
+    return GravitationDef{gravitation->constant()};
+  }
+  if (const auto* fluid = dynamic_cast<const FluidRegion*>(&field)) return fluid->def();
+  if (const auto* fan = dynamic_cast<const Fan*>(&field)) return fan->def();
+  return std::nullopt;
+}
+
 }  // namespace impulse

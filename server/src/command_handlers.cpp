@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "impulse/wire/convert.h"
+#include "impulse/wire/field_convert.h"
 
 namespace impulse::server {
 
@@ -223,6 +224,22 @@ void queryJoint(CommandContext& context, const v1::QueryJoint& command) {
   info->set_request_id(context.message.request_id());
   wire::toWire(*description, *state, info);
   context.outcome.reply = std::move(reply);
+}
+
+void addField(CommandContext& context, const v1::AddField& command) {
+  const auto def = wire::fieldDefFromWire(command);
+  if (!def.ok()) return context.fail(def.error);
+  const FieldResult added = context.simulation.addField(*def.value);
+  if (!added.ok()) return context.fail("add_field: " + added.error);
+  context.result().set_field_id(added.id.value);
+  context.succeed();
+}
+
+void removeField(CommandContext& context, const v1::RemoveField& command) {
+  if (!context.simulation.removeField(FieldId{command.field_id()})) {
+    return context.fail("remove_field: unknown field id " + std::to_string(command.field_id()));
+  }
+  context.succeed();
 }
 
 }  // namespace handlers

@@ -4,6 +4,7 @@
 
 #include "impulse.pb.h"
 #include "impulse/wire/convert.h"
+#include "impulse/wire/field_convert.h"
 #include "impulse/wire/framing.h"
 
 namespace impulse::server {
@@ -30,6 +31,14 @@ void addJoint(const World& world, JointId id, v1::Snapshot* snapshot) {
   if (const auto description = world.jointDescription(id)) {
     wire::toWire(*description, snapshot->add_joints_added());
   }
+}
+
+// A field the world no longer has (added and removed between snapshots) is
+// not described: its id is in fields_removed.
+void addField(const World& world, FieldId id, v1::Snapshot* snapshot) {
+  const ForceField* field = world.field(id);
+  if (field == nullptr) return;
+  if (const auto def = describeField(*field)) wire::toWire(id, *def, snapshot->add_fields_added());
 }
 
 bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
@@ -59,6 +68,8 @@ SharedFrame SnapshotBuilder::delta(WorldChanges& changes) {
   }
   for (const JointId id : changes.removedJointIds()) snapshot->add_joints_removed(id.value);
   for (const JointId id : changes.addedJointIds()) addJoint(world, id, snapshot);
+  for (const FieldId id : changes.removedFieldIds()) snapshot->add_fields_removed(id.value);
+  for (const FieldId id : changes.addedFieldIds()) addField(world, id, snapshot);
   snapshot->mutable_bodies()->Reserve(int(changes.changedIds().size()));
   for (const BodyId id : changes.changedIds()) {
     if (const auto state = world.bodyState(id)) wire::toWire(*state, snapshot->add_bodies());
@@ -88,6 +99,7 @@ SharedFrame SnapshotBuilder::full() {
     wire::toWire(*state, snapshot->add_bodies());
   }
   for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
+  for (const FieldId id : world.fieldIds()) addField(world, id, snapshot);
   cachedFull_ = wire::encodeSharedFrame(message);
   cachedVersion_ = simulation_.version();
   cachedMeta_ = meta;

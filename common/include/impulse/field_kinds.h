@@ -2,6 +2,7 @@
 /// The kinds of force field a user can ask for by numbers (the wire's
 /// AddField), and the one call that checks them and makes the field.
 
+#include <optional>
 #include <variant>
 
 #include "impulse/fan.h"
@@ -14,5 +15,8 @@ using FieldDef = std::variant<GravitationDef, FluidDef, FanDef>;
 
 /// The field, or the error naming the refused number and its range.
 FieldBuild makeField(const FieldDef& def);
+/// The numbers a field made by makeField was made from; nothing for a field
+/// of another kind.
+std::optional<FieldDef> describeField(const ForceField& field);
 
 }  // namespace impulse

@@ -68,6 +68,12 @@ v1::ClientMessage setJointMotor(std::uint32_t joint, double speed,
 v1::ClientMessage removeJoint(std::uint32_t joint);
 /// Answered by a JointInfo.
 v1::ClientMessage queryJoint(std::uint32_t joint);
+
+/// AddField, one builder per kind; the reply's field_id names the field.
+v1::ClientMessage gravitationField(double constant);
+v1::ClientMessage fluidField(const v1::FluidRegion& fluid);
+v1::ClientMessage fanField(const v1::Fan& fan);
+v1::ClientMessage removeField(std::uint32_t field);
 /// With `wantStateHash` the Pong's stats carry the world's state hash.
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
 
