@@ -31,6 +31,7 @@ constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
     {"KP 1-5, F5-F9", "SOLID ICE WOOD METAL RUBBER"},
     {"1-9, F1, 0", "preset 1-9, 10, sandbox"},
     {"Shift+1-4", "spring, pendulum and cradle, chain bridge, car"},
+    {"Shift+5-7", "orbits, floating, fans"},
     {"W A S D", "nudge gravity while held"},
     {"Enter", "reset gravity"},
     {"", "drawing: sandbox and presets 3, 4"},
