@@ -6,7 +6,7 @@
 #include "impulse/fluid_region.h"
 
 #include <cmath>
-#include <ranges>
+#include <algorithm>
 
 #include "impulse/submerged.h"
 #include "input_limits.h"

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <vector>
 
 #include "impulse/fluid_region.h"
@@ -45,7 +47,7 @@ TEST(Submerged, TiltedBoxHalfIn_IsTheClippedPolygon) {
   // A unit square turned 45 degrees, centre on the surface: the lower half
   // is a right triangle of area 1/2 whose centroid is sqrt(2)/2 / 3 deep.
   Transform at;
-  at.q = Rot(Real(kPi / 4));
+  at.q = Rot::fromAngle(Real(kPi / 4));
   const SubmergedPart part = submergedPart(Shape::makePolygon(makeBox(Real(0.5), Real(0.5))), at, pool());
   EXPECT_NEAR(part.area, 0.5, 1e-6);
   EXPECT_NEAR(part.centroid.y(), -std::sqrt(2.0) / 2 / 3, 1e-6);
