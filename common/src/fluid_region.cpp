@@ -1,7 +1,7 @@
 // A liquid region (impulse/fluid_region.h). Buoyancy -rho * A_sub * g acts at
 // the submerged centroid, so a body tilted off its stable pose feels the
-// torque that rights it. Drag is an exact exponential decay over the step,
-// stable for any rate.
+// torque that rights it. Drag is implicit (backward Euler), stable for any
+// rate.
 
 #include "impulse/fluid_region.h"
 
@@ -20,9 +20,11 @@ constexpr Real kMaxDensity = 100000;
 constexpr Real kMaxDrag = 100;
 constexpr Real kMaxCurrent = 100;
 
-// Force (or torque) per unit mass (or inertia) that takes `rate` of a
-// velocity away as exp(-rate t) does over dt.
-Real decayPerStep(Real rate, Real dt) { return rate > 0 && dt > 0 ? (1 - std::exp(-rate * dt)) / dt : 0; }
+// Backward Euler for drag at `rate`: the force per unit mass (or torque per
+// unit inertia) is rate / (1 + rate dt) times the speed the body would have
+// at the end of the step. Stable for any rate, and a sinking body reaches
+// exactly the terminal speed of the continuous law.
+Real implicitRate(Real rate, Real dt) { return rate / (1 + rate * dt); }
 
 std::string checkRange(Real value, Real low, Real high, const char* field, bool lowIncluded) {
   const bool below = lowIncluded ? value < low : value <= low;
@@ -76,17 +78,19 @@ FluidRegion::FluidRegion(const FluidDef& def) : def_(def) {
 
 FieldLoad FluidRegion::loadOn(const FieldBody& body, const FieldStep& step) const {
   const SubmergedPart part = submergedPart(*body.shape, body.transform, def_.polygon);
-  if (part.area <= 0 || body.area <= 0) return {};
+  if (part.area <= 0 || body.area <= 0 || body.mass <= 0) return {};
   const Real share = std::min(Real(1), Real(part.area / body.area));
   const Vec2 arm = part.centroid - body.transform.p;
   FieldLoad load;
   const Vec2 buoyancy = -def_.density * Real(part.area) * step.gravity;
-  // Drag on the centre's motion through the current, acting where the
-  // liquid holds the body (the submerged centroid): a current turns it.
-  const Vec2 drag = -body.mass * decayPerStep(def_.linearDrag * share, step.dt) * (body.linearVelocity - def_.current);
+  // Drag on the centre's motion through the current, on the velocity weight
+  // and buoyancy would give it by the step's end, acting where the liquid
+  // holds the body (the submerged centroid): a current turns it.
+  const Vec2 predicted = body.linearVelocity + step.dt * (step.gravity + buoyancy / body.mass) - def_.current;
+  const Vec2 drag = -body.mass * implicitRate(def_.linearDrag * share, step.dt) * predicted;
   load.force = buoyancy + drag;
   load.torque = cross(arm, buoyancy + drag) -
-                body.inertia * decayPerStep(def_.angularDrag * share, step.dt) * body.angularVelocity;
+                body.inertia * implicitRate(def_.angularDrag * share, step.dt) * body.angularVelocity;
   return load;
 }
 

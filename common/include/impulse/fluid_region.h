@@ -15,8 +15,8 @@ struct FluidDef {
   std::vector<Vec2> polygon;
   Real density = 1000;  ///< kg/m^2 (areal, as the materials), in (0, 100000]
   /// Rates (1/s) in [0, 100]: fully submerged, a body's speed relative to the
-  /// current decays as exp(-linearDrag t) and its spin as exp(-angularDrag t);
-  /// a body partly in takes that share of the drag.
+  /// current decays as exp(-linearDrag t) and its spin as exp(-angularDrag t)
+  /// (stepped by backward Euler); a body partly in takes that share of the drag.
   Real linearDrag = 1;
   Real angularDrag = 1;
   Vec2 current = Vec2::Zero();  ///< m/s, each component within +-100
