@@ -41,10 +41,13 @@ bool anyFieldNeedsStillBodies(const WorldData& world) {
 
 void addLoad(Body& body, const FieldLoad& load) {
   // A field is user code: a non-finite load is dropped rather than let in.
-  if (!isFinite(load.force) || !isFinite(load.torque) || !isFinite(load.impulse)) return;
+  if (!isFinite(load.force) || !isFinite(load.torque) || !isFinite(load.impulse) || !isFinite(load.angularImpulse)) {
+    return;
+  }
   body.force += load.force;
   body.torque += load.torque;
   body.linearVelocity += body.invMass * load.impulse;
+  body.angularVelocity += body.invInertia * load.angularImpulse;
 }
 
 }  // namespace

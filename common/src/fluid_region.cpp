@@ -100,9 +100,11 @@ void FluidRegion::apply(const FieldStep& step, std::span<FieldLoad> loads) const
     const Vec2 reach(body.extent, body.extent);
     const Vec2& p = body.transform.p;
     if (!box_.overlaps({p - reach, p + reach})) continue;
+    // As an impulse at the start of the step: buoyancy is a stiff spring for
+    // a light body, and only the kick keeps its bobbing from gaining energy.
     const FieldLoad load = loadOn(body, step);
-    loads[i].force += load.force;
-    loads[i].torque += load.torque;
+    loads[i].impulse += step.dt * load.force;
+    loads[i].angularImpulse += step.dt * load.torque;
   }
 }
 

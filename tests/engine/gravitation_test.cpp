@@ -86,9 +86,10 @@ TEST(Gravitation, EccentricTwoBodyOrbit_KeepsEnergyAndAngularMomentum) {
   World world = weightlessWorld();
   const Real radius = Real(0.3);
   const double ma = massOf(radius, Material::Metal), mb = massOf(radius, Material::Wood);
-  const double total = ma + mb, constant = 1;
-  // Start at apoapsis of a relative orbit with semi-major axis a, e = 0.5.
-  const double a = 6, e = 0.5, apoapsis = a * (1 + e);
+  // Start at apoapsis of a relative orbit with semi-major axis a, e = 0.5,
+  // G chosen for a period of 20 s.
+  const double total = ma + mb, a = 6, e = 0.5, apoapsis = a * (1 + e);
+  const double constant = 4 * kPi * kPi * a * a * a / (20.0 * 20.0 * total);
   const double relativeSpeed = std::sqrt(constant * total * (1 - e) / apoapsis);
   const Vec2 offsetA(Real(-apoapsis * mb / total), 0), offsetB(Real(apoapsis * ma / total), 0);
   BodyId bodyA = addCircle(world, {.center = Vec2(0, 10) + offsetA, .radius = radius, .material = Material::Metal,

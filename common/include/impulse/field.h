@@ -3,7 +3,7 @@
 /// contact (orbits, fans, liquids). A field sees the awake dynamic bodies
 /// once per step, before the solve, and returns a force and torque for each;
 /// they act over that step like World::applyForce. A field whose pull
-/// depends on where bodies are (gravitation) may return an impulse instead:
+/// depends on where bodies are (gravitation, buoyancy) may return an impulse instead:
 /// it is added to the velocity at the start of the step, before the
 /// sub-steps move the body, which makes the step symplectic Euler for that
 /// pull (orbits neither spiral in nor out). A world without fields pays
@@ -39,6 +39,7 @@ struct FieldLoad {
   Vec2 force = Vec2::Zero();  ///< spread over the step's sub-steps
   Real torque = 0;
   Vec2 impulse = Vec2::Zero();  ///< N*s, added to the velocity before the sub-steps
+  Real angularImpulse = 0;      ///< N*m*s, added to the spin before the sub-steps
 };
 
 /// What a field sees of the world for one step.

@@ -42,7 +42,7 @@ void exactPull(std::span<const PointMass> masses, double constant, std::span<Vec
 /// over the cells taken whole, which acceleration() can report.
 class PullTree {
  public:
-  explicit PullTree(double theta = 0.5) : theta_(theta) {}
+  explicit PullTree(double theta) : theta_(theta) {}
   void build(std::span<const PointMass> masses);
   /// Acceleration of masses[target] (per unit G); adds this answer's error
   /// bound (per unit G) to *bound when given.
@@ -74,8 +74,8 @@ class PullTree {
 class Gravitation : public ForceField {
  public:
   /// Worlds with at most this many bodies take the exact sum.
-  static constexpr std::size_t kExactLimit = 128;
-  static constexpr double kTheta = 0.5;
+  static constexpr std::size_t kExactLimit = 512;
+  static constexpr double kTheta = 0.3;
 
   explicit Gravitation(double constant) : constant_(constant) {}
   double constant() const { return constant_; }
