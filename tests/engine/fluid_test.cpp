@@ -63,13 +63,18 @@ TEST(Submerged, CircleInsideACorner_CountsOnlyTheOverlap) {
   EXPECT_NEAR(part.centroid.y(), 4 / (3 * kPi), 1e-6);
 }
 
-/// Fraction of a unit box below y = 0 once it has floated for `seconds`.
+/// Share of a unit box's area under water once it has floated for
+/// `seconds` (whatever way up it settled: a square of WOOD floats corner down).
 double floatingFraction(Material material, double seconds) {
   World world;
   BodyId box = addBox(world, {.center = Vec2(0, 0), .material = material});
   world.addField(makeFluidRegion(water()).field);
   simulate(world, seconds);
-  return 0.5 - stateOf(world, box).position.y();
+  const BodyState state = stateOf(world, box);
+  Transform at;
+  at.p = state.position;
+  at.q = Rot::fromAngle(state.angle);
+  return submergedPart(Shape::makePolygon(makeBox(Real(0.5), Real(0.5))), at, pool()).area;
 }
 
 TEST(Fluid, WoodAndIce_FloatAsDeepAsArchimedesSays) {

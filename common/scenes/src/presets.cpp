@@ -418,15 +418,16 @@ PresetInfo orbitsPreset(World& world) {
   // A static body pulls with its area times density.
   const Real sunMass = world.bodyDescription(sun)->mass.area * materialProperties(Material::Metal).density;
   world.addField(makeGravitation({kOrbitConstant}).field);
-  // Light planets on circular orbits, v = sqrt(G M / r), each a quarter turn on.
-  const Material materials[] = {Material::Ice, Material::Rubber, Material::Wood};
+  // Light planets (their pulls on each other are a few parts in ten
+  // thousand of the sun's) on circular orbits, v = sqrt(G M / r), each a
+  // quarter turn on.
   for (int k = 0; k < 3; ++k) {
     const Real radius = kPlanetOrbits[k];
     const Real speed = std::sqrt(Real(kOrbitConstant) * sunMass / radius);
     const Real angle = Real(k) * std::numbers::pi_v<Real> / 2;
     const Vec2 out(std::cos(angle), std::sin(angle));
-    world.createCircle(centre + radius * out, Real(0.2), {.material = materials[k],
-                                                          .linearVelocity = speed * Vec2(-out.y(), out.x())});
+    world.createCircle(centre + radius * out, kPlanetRadius,
+                       {.material = Material::Ice, .linearVelocity = speed * Vec2(-out.y(), out.x())});
   }
   return {15,
           "Orbits",
@@ -472,12 +473,18 @@ PresetInfo fansPreset(World& world) {
                             .range = kFanRange, .spread = Real(0.35)})
                        .field);
   }
-  // Light ICE balls over the whole floor: those in a fan's cone ride its air.
-  for (int row = 0; row < 3; ++row) {
-    for (int column = 0; column < 10; ++column) {
-      world.createCircle(Vec2(Real(3 + 2 * column + 0.5 * (row % 2)), Real(2 + 1.2 * row)), kLightBallRadius,
+  // Light ICE balls dropped into each cone, fanned out in angle so that few
+  // start in another's shadow, and a row on the floor between the fans.
+  for (Real x : kFanPositions) {
+    for (int k = 0; k < 8; ++k) {
+      const Real angle = Real(-0.28 + 0.08 * k), height = Real(2 + 0.8 * k);
+      world.createCircle(Vec2(x + height * std::tan(angle), kFloor + height), kLightBallRadius,
                          {.material = Material::Ice});
     }
+  }
+  for (int k = 0; k < 5; ++k) {
+    world.createCircle(Vec2(Real(11.3 + 0.6 * k), kFloor + kLightBallRadius), kLightBallRadius,
+                       {.material = Material::Ice});
   }
   return {17,
           "Fans",

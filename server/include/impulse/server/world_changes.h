@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "impulse/body.h"
+#include "impulse/field.h"
 #include "impulse/joint.h"
 
 namespace impulse::server {

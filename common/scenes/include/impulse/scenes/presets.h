@@ -33,8 +33,9 @@ inline constexpr int kPresetCount = 18;
 inline const Vec2 kSceneSize = Vec2(25, Real(18.75));
 
 /// The field scenes' numbers, for the tests of their outcomes.
-inline constexpr Real kSunRadius = Real(1.2);  ///< METAL, static
-inline constexpr double kOrbitConstant = 0.0073;  ///< G: the inner planet's period is about 4 s
+inline constexpr Real kSunRadius = Real(1.5);  ///< METAL, static
+inline constexpr double kOrbitConstant = 0.0047;  ///< G: the inner planet's period is about 4 s
+inline constexpr Real kPlanetRadius = Real(0.15);  ///< ICE: 0.05 % of the sun's mass
 inline constexpr Real kPlanetOrbits[3] = {3, 5, Real(7.5)};
 inline constexpr Real kWaterLevel = 8;
 inline constexpr Real kWaterDensity = 1000;
