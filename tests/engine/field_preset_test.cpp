@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <map>
 
+#include "impulse/scenes/field_scenes.h"
 #include "impulse/scenes/presets.h"
 #include "impulse/submerged.h"
 #include "world_test_support.h"
@@ -81,7 +82,9 @@ TEST(Preset16Floating, EachBoxFloatsAsDeepAsItsDensity_AndMetalSinks) {
     const double expected = materialProperties(material).density / kWaterDensity;
     std::printf("%s box: %.4f submerged (%.2f)\n", materialProperties(material).name.data(), submerged[material],
                 expected);
-    EXPECT_NEAR(submerged[material], expected, 0.02) << materialProperties(material).name;
+    // Sleep takes a box once it moves slower than 0.05 m/s: up to about
+    // 0.05 / omega (1-3 cm) off its rest depth.
+    EXPECT_NEAR(submerged[material], expected, 0.03) << materialProperties(material).name;
   }
   EXPECT_NEAR(submerged[Material::Metal], 1.0, 1e-6) << "METAL sinks";
 }

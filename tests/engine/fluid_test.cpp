@@ -64,10 +64,16 @@ TEST(Submerged, CircleInsideACorner_CountsOnlyTheOverlap) {
 }
 
 /// Share of a unit box's area under water once it has floated for
-/// `seconds` (whatever way up it settled: a square of WOOD floats corner down).
+/// `seconds` (whatever way up it settled: a square of WOOD floats corner
+/// down). Dropped from 10 cm above its rest depth; sleep off, since a body
+/// put to sleep below 0.05 m/s may rest up to 0.05 / omega (1.3 cm for WOOD)
+/// off its depth.
 double floatingFraction(Material material, double seconds) {
-  World world;
-  BodyId box = addBox(world, {.center = Vec2(0, 0), .material = material});
+  WorldSettings settings;
+  settings.enableSleep = false;
+  World world(settings);
+  const Real share = materialProperties(material).density / 1000;
+  BodyId box = addBox(world, {.center = Vec2(0, Real(0.6) - share), .material = material});
   world.addField(makeFluidRegion(water()).field);
   simulate(world, seconds);
   const BodyState state = stateOf(world, box);
@@ -78,8 +84,8 @@ double floatingFraction(Material material, double seconds) {
 }
 
 TEST(Fluid, WoodAndIce_FloatAsDeepAsArchimedesSays) {
-  const double wood = floatingFraction(Material::Wood, 10);
-  const double ice = floatingFraction(Material::Ice, 10);
+  const double wood = floatingFraction(Material::Wood, 20);
+  const double ice = floatingFraction(Material::Ice, 20);
   std::printf("floating: WOOD %.4f submerged (700/1000 = 0.7), ICE %.4f (100/1000 = 0.1)\n", wood, ice);
   EXPECT_NEAR(wood, 0.7, 0.007);
   EXPECT_NEAR(ice, 0.1, 0.001);

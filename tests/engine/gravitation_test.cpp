@@ -112,8 +112,9 @@ TEST(Gravitation, EccentricTwoBodyOrbit_KeepsEnergyAndAngularMomentum) {
   std::printf("eccentric orbit (e = 0.5, T = %.2f s, 20 orbits): max energy error %.3e, final %.3e; "
               "max angular momentum error %.3e\n",
               period, energyError, std::abs(end.energy - start.energy) / std::abs(start.energy), angularError);
-  EXPECT_LT(energyError, 0.02) << "energy oscillates within 2 % near periapsis";
-  EXPECT_LT(std::abs(end.energy - start.energy) / std::abs(start.energy), 0.01) << "and does not drift";
+  // Measured: 0.73 % at most (near periapsis), 2e-5 after 20 orbits.
+  EXPECT_LT(energyError, 0.01) << "energy oscillates within 1 % near periapsis";
+  EXPECT_LT(std::abs(end.energy - start.energy) / std::abs(start.energy), 1e-3) << "and does not drift";
   EXPECT_LT(angularError, 1e-4) << "symplectic Euler keeps it exactly but for float rounding";
 }
 

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "impulse/scenes/field_scenes.h"
 #include "impulse/scenes/presets.h"
 #include "palette.h"
 #include "server_process.h"

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "impulse/field_kinds.h"
+#include "impulse/scenes/field_scenes.h"
 #include "impulse/scenes/presets.h"
 
 namespace impulse {
@@ -433,7 +434,7 @@ PresetInfo orbitsPreset(World& world) {
           "Orbits",
           {"Newton's gravitation, no weight: three light planets circle a static sun.",
            "Kepler: T = 2*pi*sqrt(r^3 / (G M)), so radii 3, 5 and 7.5 m give periods",
-           "of 4 s, 8.6 s and 15.8 s. The step is symplectic: the orbits do not spiral."},
+           "of 8 s, 17.2 s and 31.7 s. The step is symplectic: the orbits do not spiral."},
           {},
           false};
 }
@@ -444,18 +445,21 @@ PresetInfo floatingPreset(World& world) {
   const std::array<Vec2, 4> pool = {Vec2(left, kFloor), Vec2(right, kFloor), Vec2(right, kWaterLevel),
                                     Vec2(left, kWaterLevel)};
   world.addField(makeFluidRegion({.polygon = {pool.begin(), pool.end()}, .density = kWaterDensity,
-                                  .linearDrag = Real(1.5), .angularDrag = Real(1.5)})
+                                  .linearDrag = 5, .angularDrag = 5})
                      .field);
   // Dropped from above the surface; each floats as deep as its density says.
   const Material materials[] = {Material::Ice, Material::Rubber, Material::Solid, Material::Wood, Material::Metal};
   for (int k = 0; k < 5; ++k) {
-    const Vec2 at(Real(3.5 + 4.5 * k), kWaterLevel + 2);
+    const Vec2 at(Real(2.5 + 3.5 * k), kWaterLevel + 2);
     const std::array<Vec2, 4> box = {at + Vec2(-0.6f, -0.6f), at + Vec2(0.6f, -0.6f), at + Vec2(0.6f, 0.6f),
                                      at + Vec2(-0.6f, 0.6f)};
     world.createPolygon(box, {.material = materials[k]});
   }
-  world.createPolygon(std::array{Vec2(9, 14), Vec2(13, 14), Vec2(13, 14.5f), Vec2(9, 14.5f)},
-                      {.material = Material::Wood});
+  // A plank dropped tilted by 0.3 rad.
+  BodyDef plank = makeBodyDef(Shape::makePolygon(makeBox(Real(1.8), Real(0.3))), Vec2(21, 13),
+                              {.material = Material::Wood});
+  plank.angle = Real(0.3);
+  world.createBody(plank);
   return {16,
           "Floating",
           {"A pool of water (1000 kg/m^2): boxes sink until they displace their own mass.",

@@ -32,18 +32,6 @@ inline constexpr int kPresetCount = 18;
 /// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
 inline const Vec2 kSceneSize = Vec2(25, Real(18.75));
 
-/// The field scenes' numbers, for the tests of their outcomes.
-inline constexpr Real kSunRadius = Real(1.5);  ///< METAL, static
-inline constexpr double kOrbitConstant = 0.0047;  ///< G: the inner planet's period is about 4 s
-inline constexpr Real kPlanetRadius = Real(0.15);  ///< ICE: 0.05 % of the sun's mass
-inline constexpr Real kPlanetOrbits[3] = {3, 5, Real(7.5)};
-inline constexpr Real kWaterLevel = 8;
-inline constexpr Real kWaterDensity = 1000;
-inline constexpr Real kFanPositions[2] = {7, 18};
-inline constexpr Real kFanSpeed = 45;
-inline constexpr Real kFanRange = 14;
-inline constexpr Real kLightBallRadius = Real(0.15);
-
 /// Clears the world, resets gravity and builds preset `id` (0..17).
 /// `selected` is the viewer's current material (preset 9 uses it).
 /// Returns nothing for an id out of range, leaving the world untouched.
