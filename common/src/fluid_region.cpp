@@ -100,10 +100,15 @@ void FluidRegion::apply(const FieldStep& step, std::span<FieldLoad> loads) const
     const Vec2 reach(body.extent, body.extent);
     const Vec2& p = body.transform.p;
     if (!box_.overlaps({p - reach, p + reach})) continue;
-    // As an impulse at the start of the step: buoyancy is a stiff spring for
-    // a light body, and only the kick keeps its bobbing from gaining energy.
+    // Buoyancy is a stiff spring for a light body: spread over the sub-steps
+    // its bobbing gains energy (an ICE box leapt ever higher). So the load
+    // is an impulse at the start of the step, except the body's weight,
+    // which is spread as gravity is and cancels it: a body at its rest
+    // depth then has no velocity at all, and the rest is symplectic Euler.
     const FieldLoad load = loadOn(body, step);
-    loads[i].impulse += step.dt * load.force;
+    const Vec2 weight = body.mass * step.gravity;
+    loads[i].force -= weight;
+    loads[i].impulse += step.dt * (load.force + weight);
     loads[i].angularImpulse += step.dt * load.torque;
   }
 }
