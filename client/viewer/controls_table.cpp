@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // SPEC.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 25> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 26> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
