@@ -9,6 +9,7 @@
 #include "impulse/wire/command_table.h"
 #include "impulse/wire/convert.h"
 #include "impulse/wire/parse_number.h"
+#include "field_parsers.h"
 #include "joint_parsers.h"
 
 namespace impulse::cli {

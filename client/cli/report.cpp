@@ -126,6 +126,7 @@ std::string replyReport(std::size_t line, std::string_view command,
     }
     if (result.body_id() != 0) report["body_id"] = result.body_id();
     if (result.joint_id() != 0) report["joint_id"] = result.joint_id();
+    if (result.field_id() != 0) report["field_id"] = result.field_id();
     report["tick"] = result.tick();
     if (result.state_hash() != 0) report["state_hash"] = hex(result.state_hash());
   } else if (reply.has_body_info()) {

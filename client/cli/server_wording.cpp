@@ -12,7 +12,7 @@ namespace {
 
 // Protocol field paths and the script words for them; longer paths first,
 // so a path is replaced before its command's prefix.
-constexpr std::array<std::pair<const char*, const char*>, 25> kFieldWords{{
+constexpr std::array<std::pair<const char*, const char*>, 26> kFieldWords{{
     {"spawn_circle.center.x", "circle X"},
     {"spawn_circle.center.y", "circle Y"},
     {"spawn_circle.center", "circle X Y"},
@@ -40,6 +40,8 @@ constexpr std::array<std::pair<const char*, const char*>, 25> kFieldWords{{
     // the seven joint words share one message, so a path has no single word.
     {"remove_joint", "remove-joint"},
     {"query_joint", "query-joint"},
+    // Field errors keep theirs too (add_field.fan.speed): three words share AddField.
+    {"remove_field", "remove-field"},
 }};
 
 std::string replaceAll(std::string text, std::string_view from, std::string_view to) {

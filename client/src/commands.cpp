@@ -192,6 +192,30 @@ v1::ClientMessage loadScene(std::string data) {
   return message;
 }
 
+v1::ClientMessage gravitationField(double constant) {
+  v1::ClientMessage message;
+  message.mutable_add_field()->mutable_gravitation()->set_constant(constant);
+  return message;
+}
+
+v1::ClientMessage fluidField(const v1::FluidRegion& fluid) {
+  v1::ClientMessage message;
+  *message.mutable_add_field()->mutable_fluid() = fluid;
+  return message;
+}
+
+v1::ClientMessage fanField(const v1::Fan& fan) {
+  v1::ClientMessage message;
+  *message.mutable_add_field()->mutable_fan() = fan;
+  return message;
+}
+
+v1::ClientMessage removeField(std::uint32_t field) {
+  v1::ClientMessage message;
+  message.mutable_remove_field()->set_field_id(field);
+  return message;
+}
+
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash) {
   v1::ClientMessage message;
   message.mutable_ping()->set_client_time_us(clientTimeUs);

@@ -1,6 +1,7 @@
 #include "impulse/client/world_mirror.h"
 
 #include "impulse/wire/convert.h"
+#include "impulse/wire/field_convert.h"
 
 namespace impulse::client {
 
@@ -18,11 +19,13 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
   if (snapshot.full()) {
     bodies_.clear();
     joints_.clear();
+    fields_.clear();
   }
   ++snapshotsApplied_;
 
   for (const std::uint32_t id : snapshot.removed()) bodies_.erase(id);
   for (const std::uint32_t id : snapshot.joints_removed()) joints_.erase(id);
+  for (const std::uint32_t id : snapshot.fields_removed()) fields_.erase(id);
   for (const auto& descriptor : snapshot.added()) {
     auto shape = wire::shapeFromWire(descriptor.shape());
     if (!shape.ok()) {
@@ -55,6 +58,11 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
     auto joint = wire::jointFromWire(descriptor);
     if (!joint) return failed("joint " + std::to_string(descriptor.id()) + " has no kind");
     joints_[descriptor.id()] = *joint;
+  }
+  for (const auto& descriptor : snapshot.fields_added()) {
+    auto field = wire::fieldFromWire(descriptor);
+    if (!field) return failed("field " + std::to_string(descriptor.id()) + " has no kind");
+    fields_.insert_or_assign(descriptor.id(), std::move(*field));
   }
   return true;
 }

@@ -307,6 +307,9 @@ void App::updateJointFigures() {
 
 void App::drawScene(ImDrawList& list, const ViewTransform& view) {
   scene_.begin(list, view);
+  if (const client::Client* client = connection_->client()) {
+    scene_.drawFields(list, view, client->mirror().fields());
+  }
   scene_.drawBodies(list, view, world_.bodies(), controls_.selectedBody(), controls_.grabbedBody());
   updateJointFigures();
   scene_.drawJoints(list, view, jointFigures_);

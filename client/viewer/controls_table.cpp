@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // SPEC.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 30> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 31> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
@@ -31,6 +31,7 @@ constexpr std::array<std::pair<const char*, const char*>, 30> kControlRows{{
     {"KP 1-8, F5-F12", "SOLID ICE WOOD METAL RUBBER STONE GLASS FOAM"},
     {"1-9, F1, 0", "preset 1-9, 10, sandbox"},
     {"Shift+1-4", "spring, pendulum and cradle, chain bridge, car"},
+    {"Shift+5-7", "orbits, floating, fans"},
     {"W A S D", "nudge gravity while held"},
     {"Enter", "reset gravity"},
     {"", "drawing: sandbox and presets 3, 4"},

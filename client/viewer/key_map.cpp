@@ -9,6 +9,10 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
   if (shift && key >= SDLK_1 && key <= SDLK_4) {
     return ControlKey{Control::LoadPreset, 11 + int(key - SDLK_1)};
   }
+  // Shift+5-7: the field presets 15-17.
+  if (shift && key >= SDLK_5 && key <= SDLK_7) {
+    return ControlKey{Control::LoadPreset, 15 + int(key - SDLK_5)};
+  }
   if (key >= SDLK_0 && key <= SDLK_9) return ControlKey{Control::LoadPreset, int(key - SDLK_0)};
   // Keypad 1-8 and F5-F12: the eight materials (SDL numbers both runs
   // consecutively).

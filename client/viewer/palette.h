@@ -42,6 +42,12 @@ inline constexpr Colour kPreview{120, 200, 255};
 inline constexpr Colour kSelection{255, 221, 0};
 /// Joints: light steel, readable over every material's fill.
 inline constexpr Colour kJoint{205, 215, 230};
+// Fields: translucent so the bodies inside stay readable.
+inline constexpr Colour kLiquid{40, 110, 210, 90};
+inline constexpr Colour kLiquidEdge{110, 180, 255, 200};
+inline constexpr Colour kAir{200, 230, 255, 28};
+inline constexpr Colour kAirEdge{200, 230, 255, 110};
+inline constexpr Colour kGravitation{255, 200, 90};
 inline constexpr Colour kGravity{255, 120, 200};
 inline constexpr Colour kWarning{255, 180, 60};
 /// Outline of sleeping bodies: a violet no material uses.

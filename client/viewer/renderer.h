@@ -7,11 +7,13 @@
 
 #include <imgui.h>
 
+#include <map>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "controls.h"
+#include "impulse/field_kinds.h"
 #include "impulse/scenes/presets.h"
 #include "interpolated_world.h"
 #include "joint_figure.h"
@@ -36,6 +38,9 @@ class WorldRenderer {
   /// as zig-zags, pins as small rings, sliders as a line with a ring.
   void drawJoints(ImDrawList& list, const ViewTransform& view,
                   std::span<const JointFigure> joints);
+  /// Fields under the bodies: liquids tinted, fan cones, a gravitation marker.
+  void drawFields(ImDrawList& list, const ViewTransform& view,
+                  const std::map<std::uint32_t, FieldDef>& fields);
   /// The hand: a line from the held point of a grabbed body to the cursor.
   void drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held, const Vec2& cursor);
   /// The polygon or circle being drawn, and the polygon cursor dot.
@@ -44,6 +49,9 @@ class WorldRenderer {
  private:
   void drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
                 Colour outline, float thickness);
+  void drawFluid(ImDrawList& list, const ViewTransform& view, const FluidDef& fluid);
+  void drawFan(ImDrawList& list, const ViewTransform& view, const FanDef& fan);
+  void drawGravitationMarker(ImDrawList& list, const ViewTransform& view);
   void drawPolygonPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
   void drawCirclePreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 

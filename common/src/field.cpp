@@ -1,5 +1,8 @@
 // The field stage: each force field sees the awake dynamic bodies and adds
-// a force and torque to each for this step. Without fields it does nothing.
+// a force and torque (or an impulse) to each for this step. Without fields
+// it does nothing.
+
+#include <algorithm>
 
 #include "world_data.h"
 
@@ -7,29 +10,57 @@ namespace impulse {
 
 namespace {
 
-void gatherFieldBodies(WorldData& world) {
+FieldBody fieldBodyOf(const WorldData& world, std::int32_t slot, Real mass) {
+  const Body& body = world.bodies[slot];
+  return {world.idOf(slot), body.transform, body.linearVelocity, body.angularVelocity, mass,
+          body.mass.inertia, &world.shapes[slot], body.material, body.mass.area, body.extent};
+}
+
+void gatherMovingBodies(WorldData& world) {
   world.fieldBodies.clear();
   for (std::int32_t slot : world.awakeBodies) {
-    const Body& body = world.bodies[slot];
-    world.fieldBodies.push_back({world.idOf(slot), body.transform, body.linearVelocity, body.angularVelocity,
-                                 body.mass.mass, body.mass.inertia, &world.shapes[slot], body.material});
+    world.fieldBodies.push_back(fieldBodyOf(world, slot, world.bodies[slot].mass.mass));
   }
   world.fieldLoads.assign(world.fieldBodies.size(), FieldLoad{});
 }
 
+// Static bodies weigh their area times density here: they pull without moving.
+void gatherStillBodies(WorldData& world) {
+  world.fieldStillBodies.clear();
+  for (std::int32_t slot = 0; slot < static_cast<std::int32_t>(world.bodies.size()); ++slot) {
+    const Body& body = world.bodies[slot];
+    if (!body.alive || (body.awake && !body.isStatic)) continue;
+    Real mass = body.isStatic ? body.mass.area * body.coefficients.density : body.mass.mass;
+    world.fieldStillBodies.push_back(fieldBodyOf(world, slot, mass));
+  }
+}
+
+bool anyFieldNeedsStillBodies(const WorldData& world) {
+  return std::ranges::any_of(world.fields, [](const FieldSlot& slot) { return slot.field->needsStillBodies(); });
+}
+
+void addLoad(Body& body, const FieldLoad& load) {
+  // A field is user code: a non-finite load is dropped rather than let in.
+  if (!isFinite(load.force) || !isFinite(load.torque) || !isFinite(load.impulse) || !isFinite(load.angularImpulse)) {
+    return;
+  }
+  body.force += load.force;
+  body.torque += load.torque;
+  body.linearVelocity += body.invMass * load.impulse;
+  body.angularVelocity += body.invInertia * load.angularImpulse;
+}
+
 }  // namespace
 
-void applyFields(WorldData& world, Real /*dt*/) {
+void applyFields(WorldData& world, Real dt) {
   if (world.fields.empty() || world.awakeBodies.empty()) return;
-  gatherFieldBodies(world);
-  for (const FieldSlot& slot : world.fields) slot.field->apply(world.fieldBodies, world.fieldLoads);
+  gatherMovingBodies(world);
+  world.fieldStillBodies.clear();
+  if (anyFieldNeedsStillBodies(world)) gatherStillBodies(world);
+  const FieldStep step{world.fieldBodies, world.fieldStillBodies, world.settings.gravity, dt};
+  for (const FieldSlot& slot : world.fields) slot.field->apply(step, world.fieldLoads);
   for (std::size_t k = 0; k < world.fieldLoads.size(); ++k) {
-    const FieldLoad& load = world.fieldLoads[k];
-    // A field is user code: a non-finite load is dropped rather than let in.
-    if (!isFinite(load.force) || !isFinite(load.torque)) continue;
-    Body& body = world.bodies[world.awakeBodies[k]];
-    body.force += load.force;
-    body.torque += load.torque;
+    addLoad(world.bodies[world.awakeBodies[k]], world.fieldLoads[k]);
   }
 }
 

@@ -361,6 +361,19 @@ bool World::removeField(FieldId id) {
 
 int World::fieldCount() const { return static_cast<int>(impl_->fields.size()); }
 
+std::vector<FieldId> World::fieldIds() const {
+  std::vector<FieldId> ids;
+  for (const FieldSlot& slot : impl_->fields) ids.push_back(slot.id);
+  return ids;
+}
+
+const ForceField* World::field(FieldId id) const {
+  for (const FieldSlot& slot : impl_->fields) {
+    if (slot.id == id) return slot.field.get();
+  }
+  return nullptr;
+}
+
 std::span<const BodyId> World::escapedBodies() const { return guard_.escaped; }
 const StepGuardReport& World::guardReport() const { return guard_; }
 

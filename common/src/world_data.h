@@ -64,6 +64,7 @@ struct WorldData {
   std::vector<ProxyPair> newPairs;
   std::vector<std::int32_t> activeContacts;
   std::vector<FieldBody> fieldBodies;
+  std::vector<FieldBody> fieldStillBodies;
   std::vector<FieldLoad> fieldLoads;
   std::vector<SolverState> solverStates;
   std::vector<SolverIntegration> solverIntegration;

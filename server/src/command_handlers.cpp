@@ -5,6 +5,7 @@
 
 #include "impulse/wire/convert.h"
 #include "impulse/wire/scene_convert.h"
+#include "impulse/wire/field_convert.h"
 
 namespace impulse::server {
 
@@ -229,6 +230,22 @@ void queryJoint(CommandContext& context, const v1::QueryJoint& command) {
 void setTimeScale(CommandContext& context, const v1::SetTimeScale& command) {
   if (InputResult changed = context.simulation.setTimeScale(command.scale()); !changed) {
     return context.fail("set_time_scale: " + changed.error);
+  }
+  context.succeed();
+}
+
+void addField(CommandContext& context, const v1::AddField& command) {
+  const auto def = wire::fieldDefFromWire(command);
+  if (!def.ok()) return context.fail(def.error);
+  const FieldResult added = context.simulation.addField(*def.value);
+  if (!added.ok()) return context.fail("add_field: " + added.error);
+  context.result().set_field_id(added.id.value);
+  context.succeed();
+}
+
+void removeField(CommandContext& context, const v1::RemoveField& command) {
+  if (!context.simulation.removeField(FieldId{command.field_id()})) {
+    return context.fail("remove_field: unknown field id " + std::to_string(command.field_id()));
   }
   context.succeed();
 }

@@ -86,7 +86,7 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 64, o.subSteps);
        }},
-      {"--preset", true, "N  scene loaded at start, 0-14 (default 0, the sandbox)",
+      {"--preset", true, "N  scene loaded at start, 0-17 (default 0, the sandbox)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 0, kPresetCount - 1, o.preset);
        }},

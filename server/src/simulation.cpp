@@ -118,6 +118,23 @@ InputResult Simulation::setGravity(const Vec2& gravity) {
   return changed;
 }
 
+FieldResult Simulation::addField(const FieldDef& def) {
+  FieldBuild build = makeField(def);
+  if (!build.ok()) return {{}, build.error};
+  const FieldId id = world_.addField(std::move(build.field));
+  // The bodies it wakes go out with the next step's moved bodies.
+  changes_.fieldAdded(id);
+  ++version_;
+  return {id, {}};
+}
+
+bool Simulation::removeField(FieldId id) {
+  if (!world_.removeField(id)) return false;
+  changes_.fieldRemoved(id);
+  ++version_;
+  return true;
+}
+
 bool Simulation::loadPreset(int id, Material selected) {
   const auto info = impulse::loadPreset(world_, id, selected);
   if (!info) return false;

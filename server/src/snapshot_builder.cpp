@@ -4,6 +4,7 @@
 
 #include "impulse.pb.h"
 #include "impulse/wire/convert.h"
+#include "impulse/wire/field_convert.h"
 #include "impulse/wire/framing.h"
 
 namespace impulse::server {
@@ -33,6 +34,14 @@ void addJoint(const World& world, JointId id, v1::Snapshot* snapshot) {
   }
 }
 
+// A field the world no longer has (added and removed between snapshots) is
+// not described: its id is in fields_removed.
+void addField(const World& world, FieldId id, v1::Snapshot* snapshot) {
+  const ForceField* field = world.field(id);
+  if (field == nullptr) return;
+  if (const auto def = describeField(*field)) wire::toWire(id, *def, snapshot->add_fields_added());
+}
+
 // What every delta carries whatever its encoding: removals, added bodies
 // and joints.
 void addChangeLists(const World& world, const WorldChanges& changes, v1::Snapshot* snapshot) {
@@ -45,6 +54,8 @@ void addChangeLists(const World& world, const WorldChanges& changes, v1::Snapsho
   }
   for (const JointId id : changes.removedJointIds()) snapshot->add_joints_removed(id.value);
   for (const JointId id : changes.addedJointIds()) addJoint(world, id, snapshot);
+  for (const FieldId id : changes.removedFieldIds()) snapshot->add_fields_removed(id.value);
+  for (const FieldId id : changes.addedFieldIds()) addField(world, id, snapshot);
 }
 
 std::vector<std::uint32_t> addedIds(const v1::Snapshot& snapshot) {
@@ -72,6 +83,7 @@ void addWholeWorld(const Simulation& simulation, v1::Snapshot* snapshot) {
     }
   }
   for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
+  for (const FieldId id : world.fieldIds()) addField(world, id, snapshot);
 }
 
 // The integration the prediction follows (docs/snapshots.md).

@@ -22,6 +22,10 @@ void WorldChanges::jointAdded(JointId id) { jointsAdded_.push_back(id); }
 
 void WorldChanges::jointRemoved(JointId id) { jointsRemoved_.push_back(id); }
 
+void WorldChanges::fieldAdded(FieldId id) { fieldsAdded_.push_back(id); }
+
+void WorldChanges::fieldRemoved(FieldId id) { fieldsRemoved_.push_back(id); }
+
 void WorldChanges::leftWorld(BodyId id) {
   leftWorld_.push_back(id);
   removed(id);
@@ -46,6 +50,8 @@ void WorldChanges::clear() {
   changed_.clear();
   jointsAdded_.clear();
   jointsRemoved_.clear();
+  fieldsAdded_.clear();
+  fieldsRemoved_.clear();
   replaced_ = false;
 }
 

@@ -15,8 +15,8 @@ namespace {
 class UniformField : public ForceField {
  public:
   explicit UniformField(Vec2 acceleration) : acceleration_(acceleration) {}
-  void apply(std::span<const FieldBody> bodies, std::span<FieldLoad> loads) const override {
-    for (std::size_t i = 0; i < bodies.size(); ++i) loads[i].force += bodies[i].mass * acceleration_;
+  void apply(const FieldStep& step, std::span<FieldLoad> loads) const override {
+    for (std::size_t i = 0; i < step.bodies.size(); ++i) loads[i].force += step.bodies[i].mass * acceleration_;
   }
 
  private:
@@ -26,7 +26,7 @@ class UniformField : public ForceField {
 /// A broken field: NaN force and infinite torque on every body.
 class BrokenField : public ForceField {
  public:
-  void apply(std::span<const FieldBody>, std::span<FieldLoad> loads) const override {
+  void apply(const FieldStep&, std::span<FieldLoad> loads) const override {
     for (FieldLoad& load : loads) {
       load.force.x() = std::numeric_limits<Real>::quiet_NaN();
       load.torque = std::numeric_limits<Real>::infinity();

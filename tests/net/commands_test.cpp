@@ -219,7 +219,7 @@ TEST(ServerSession, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
       {"query null id", client::queryBody(0), "unknown body id 0"},
       {"impulse unknown id", client::applyImpulse(987654, {1, 0}), "unknown body id 987654"},
       {"impulse on static", client::applyImpulse(wall, {1, 0}), "is static"},
-      {"preset too high", client::loadPreset(15), "preset 15 does not exist"},
+      {"preset too high", client::loadPreset(18), "preset 18 does not exist"},
       {"preset negative", client::loadPreset(-1), "preset -1 does not exist"},
       {"step zero", client::step(0), "ticks must be 1..600"},
       {"step too long", client::step(100000), "ticks must be 1..600"},

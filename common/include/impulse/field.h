@@ -2,11 +2,17 @@
 /// Force fields: forces that act on bodies through space rather than through
 /// contact (orbits, fans, liquids). A field sees the awake dynamic bodies
 /// once per step, before the solve, and returns a force and torque for each;
-/// they act over that step like World::applyForce. A world without fields
-/// pays nothing for the stage.
+/// they act over that step like World::applyForce. A field whose pull
+/// depends on where bodies are (gravitation, buoyancy) may return an impulse instead:
+/// it is added to the velocity at the start of the step, before the
+/// sub-steps move the body, which makes the step symplectic Euler for that
+/// pull (orbits neither spiral in nor out). A world without fields pays
+/// nothing for the stage.
 
 #include <cstdint>
+#include <memory>
 #include <span>
+#include <string>
 
 #include "impulse/body.h"
 #include "impulse/math.h"
@@ -24,21 +30,48 @@ struct FieldBody {
   Real inertia = 0;  ///< about the centre of mass
   const Shape* shape = nullptr;  ///< local to the centre of mass
   Material material = Material::Solid;
+  Real area = 0;
+  Real extent = 0;  ///< largest distance from the centre of mass to the shape
 };
 
 /// What a field adds to one body for the coming step.
 struct FieldLoad {
-  Vec2 force = Vec2::Zero();
+  Vec2 force = Vec2::Zero();  ///< spread over the step's sub-steps
   Real torque = 0;
+  Vec2 impulse = Vec2::Zero();  ///< N*s, added to the velocity before the sub-steps
+  Real angularImpulse = 0;      ///< N*m*s, added to the spin before the sub-steps
+};
+
+/// What a field sees of the world for one step.
+struct FieldStep {
+  /// The awake dynamic bodies: the ones the field pushes (loads[i] is bodies[i]'s).
+  std::span<const FieldBody> bodies;
+  /// Static and sleeping bodies, only for a field that asks (needsStillBodies):
+  /// they are sources of the field but are not pushed. A static body's mass
+  /// is its area times its density.
+  std::span<const FieldBody> stillBodies;
+  Vec2 gravity = Vec2::Zero();
+  Real dt = 0;
 };
 
 class ForceField {
  public:
   virtual ~ForceField() = default;
-  /// Adds this field's force and torque on bodies[i] to loads[i]. The step
-  /// drops a body's load if it is not finite, and the step guard holds
+  /// Adds this field's force and torque on step.bodies[i] to loads[i]. The
+  /// step drops a body's load if it is not finite, and the step guard holds
   /// speeds to the input limits whatever a field does.
-  virtual void apply(std::span<const FieldBody> bodies, std::span<FieldLoad> loads) const = 0;
+  virtual void apply(const FieldStep& step, std::span<FieldLoad> loads) const = 0;
+  /// True for a field that comes from the bodies themselves and so needs
+  /// FieldStep::stillBodies; the others do not pay for gathering them.
+  virtual bool needsStillBodies() const { return false; }
+};
+
+/// A field made from user numbers, or the reason they were refused (the
+/// number's name and its range).
+struct FieldBuild {
+  std::shared_ptr<const ForceField> field;
+  std::string error;
+  bool ok() const { return error.empty(); }
 };
 
 /// Handle of a field in a world; 0 is null.

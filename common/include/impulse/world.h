@@ -159,6 +159,10 @@ class World {
   /// False for an unknown id.
   bool removeField(FieldId id);
   int fieldCount() const;
+  /// Every field's id, in the order they apply.
+  std::vector<FieldId> fieldIds() const;
+  /// The field, or nullptr for an unknown id.
+  const ForceField* field(FieldId id) const;
 
   /// The body whose shape contains the point (the topmost-created if several).
   std::optional<BodyId> queryPoint(const Vec2& point) const;

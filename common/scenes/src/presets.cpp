@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "impulse/field_kinds.h"
+#include "impulse/scenes/field_scenes.h"
 #include "impulse/scenes/presets.h"
 
 namespace impulse {
@@ -408,6 +410,95 @@ PresetInfo carPreset(World& world) {
           false};
 }
 
+// ------------------------------------------------------------ field scenes
+
+PresetInfo orbitsPreset(World& world) {
+  world.setGravity(Vec2::Zero());
+  const Vec2 centre = kSceneSize / 2;
+  const BodyId sun = world.createCircle(centre, kSunRadius, {.material = Material::Metal, .isStatic = true}).id;
+  // A static body pulls with its area times density.
+  const Real sunMass = world.bodyDescription(sun)->mass.area * materialProperties(Material::Metal).density;
+  world.addField(makeGravitation({kOrbitConstant}).field);
+  // Light planets (their pulls on each other are a few parts in ten
+  // thousand of the sun's) on circular orbits, v = sqrt(G M / r), each a
+  // quarter turn on.
+  for (int k = 0; k < 3; ++k) {
+    const Real radius = kPlanetOrbits[k];
+    const Real speed = std::sqrt(Real(kOrbitConstant) * sunMass / radius);
+    const Real angle = Real(k) * std::numbers::pi_v<Real> / 2;
+    const Vec2 out(std::cos(angle), std::sin(angle));
+    world.createCircle(centre + radius * out, kPlanetRadius,
+                       {.material = Material::Ice, .linearVelocity = speed * Vec2(-out.y(), out.x())});
+  }
+  return {15,
+          "Orbits",
+          {"Newton's gravitation, no weight: three light planets circle a static sun.",
+           "Kepler: T = 2*pi*sqrt(r^3 / (G M)), so radii 3, 5 and 7.5 m give periods",
+           "of 8 s, 17.2 s and 31.7 s. The step is symplectic: the orbits do not spiral."},
+          {},
+          false};
+}
+
+PresetInfo floatingPreset(World& world) {
+  addBoundary(world);
+  const Real left = kBorder, right = kSceneSize.x() - kBorder;
+  const std::array<Vec2, 4> pool = {Vec2(left, kFloor), Vec2(right, kFloor), Vec2(right, kWaterLevel),
+                                    Vec2(left, kWaterLevel)};
+  world.addField(makeFluidRegion({.polygon = {pool.begin(), pool.end()}, .density = kWaterDensity,
+                                  .linearDrag = 5, .angularDrag = 5})
+                     .field);
+  // Dropped from above the surface; each floats as deep as its density says.
+  const Material materials[] = {Material::Ice, Material::Rubber, Material::Solid, Material::Wood, Material::Metal};
+  for (int k = 0; k < 5; ++k) {
+    const Vec2 at(Real(2.5 + 3.5 * k), kWaterLevel + 2);
+    const std::array<Vec2, 4> box = {at + Vec2(-0.6f, -0.6f), at + Vec2(0.6f, -0.6f), at + Vec2(0.6f, 0.6f),
+                                     at + Vec2(-0.6f, 0.6f)};
+    world.createPolygon(box, {.material = materials[k]});
+  }
+  // A plank dropped tilted by 0.3 rad.
+  BodyDef plank = makeBodyDef(Shape::makePolygon(makeBox(Real(1.8), Real(0.3))), Vec2(21, 13),
+                              {.material = Material::Wood});
+  plank.angle = Real(0.3);
+  world.createBody(plank);
+  return {16,
+          "Floating",
+          {"A pool of water (1000 kg/m^2): boxes sink until they displace their own mass.",
+           "ICE floats 10 % under, RUBBER 20 %, SOLID 50 %, WOOD 70 %; METAL (2000)",
+           "sinks. The plank lands tilted and rights itself: its metacentre is high."},
+          {},
+          false};
+}
+
+PresetInfo fansPreset(World& world) {
+  addBoundary(world);
+  addCeiling(world);
+  for (Real x : kFanPositions) {
+    world.addField(makeFan({.position = Vec2(x, kFloor), .direction = Vec2(0, 1), .speed = kFanSpeed,
+                            .range = kFanRange, .spread = Real(0.35)})
+                       .field);
+  }
+  // Light ICE balls dropped into each cone, fanned out in angle so that few
+  // start in another's shadow, and a row on the floor between the fans.
+  for (Real x : kFanPositions) {
+    for (int k = 0; k < 8; ++k) {
+      const Real angle = Real(-0.28 + 0.08 * k), height = Real(2 + 0.8 * k);
+      world.createCircle(Vec2(x + height * std::tan(angle), kFloor + height), kLightBallRadius,
+                         {.material = Material::Ice});
+    }
+  }
+  for (int k = 0; k < 5; ++k) {
+    world.createCircle(Vec2(Real(11.3 + 0.6 * k), kFloor + kLightBallRadius), kLightBallRadius,
+                       {.material = Material::Ice});
+  }
+  return {17,
+          "Fans",
+          {"Two fans on the floor blow upward, the air slowing to nothing at 14 m.",
+           "Light ICE balls hover where the drag 1/2 rho w u^2 equals their weight;",
+           "balls behind others are in their shadow and drop. Outside the cones: no air."},
+          {},
+          false};
+}
+
 }  // namespace
 
 std::optional<PresetInfo> loadPreset(World& world, int id, Material selected) {
@@ -429,7 +520,10 @@ std::optional<PresetInfo> loadPreset(World& world, int id, Material selected) {
     case 11: return springPreset(world);
     case 12: return pendulumPreset(world);
     case 13: return chainBridgePreset(world);
-    default: return carPreset(world);
+    case 14: return carPreset(world);
+    case 15: return orbitsPreset(world);
+    case 16: return floatingPreset(world);
+    default: return fansPreset(world);
   }
 }
 

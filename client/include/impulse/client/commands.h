@@ -80,6 +80,12 @@ v1::ClientMessage queryJoint(std::uint32_t joint);
 v1::ClientMessage saveScene();
 /// `data`: a serialised Scene, as SceneData.data or a scene file holds it.
 v1::ClientMessage loadScene(std::string data);
+
+/// AddField, one builder per kind; the reply's field_id names the field.
+v1::ClientMessage gravitationField(double constant);
+v1::ClientMessage fluidField(const v1::FluidRegion& fluid);
+v1::ClientMessage fanField(const v1::Fan& fan);
+v1::ClientMessage removeField(std::uint32_t field);
 /// With `wantStateHash` the Pong's stats carry the world's state hash.
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
 /// Simulated seconds per wall second, 0.01..16 (PROTOCOL.md, "Time").

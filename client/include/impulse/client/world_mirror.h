@@ -10,6 +10,7 @@
 
 #include "impulse.pb.h"
 #include "impulse/body.h"
+#include "impulse/field_kinds.h"
 #include "impulse/joint.h"
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
@@ -42,6 +43,8 @@ class WorldMirror {
   const MirrorBody* find(BodyId id) const;
   /// Joints by id (ascending), as the server described them.
   const std::map<std::uint32_t, JointDescription>& joints() const { return joints_; }
+  /// Fields by id (ascending), as the server described them.
+  const std::map<std::uint32_t, FieldDef>& fields() const { return fields_; }
 
   std::uint64_t tick() const { return tick_; }
   double simTime() const { return simTime_; }
@@ -56,6 +59,7 @@ class WorldMirror {
  private:
   std::map<std::uint32_t, MirrorBody> bodies_;
   std::map<std::uint32_t, JointDescription> joints_;
+  std::map<std::uint32_t, FieldDef> fields_;
   std::uint64_t tick_ = 0;
   double simTime_ = 0;
   Vec2 gravity_ = Vec2::Zero();

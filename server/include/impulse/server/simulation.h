@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
+#include "impulse/field_kinds.h"
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
 #include "impulse/server/tick_schedule.h"
@@ -15,6 +17,13 @@
 #include "impulse/world.h"
 
 namespace impulse::server {
+
+/// A field added, or why it was refused.
+struct FieldResult {
+  FieldId id;
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
 
 struct SimulationSettings {
   double tickHz = 60;
@@ -54,6 +63,10 @@ class Simulation {
   /// False for an unknown id.
   bool removeJoint(JointId id);
   InputResult updateJoint(JointId id, const JointUpdate& update);
+  /// The field, or the error naming the refused number (world unchanged).
+  FieldResult addField(const FieldDef& def);
+  /// False for an unknown id.
+  bool removeField(FieldId id);
   /// Replaces the world with preset `id`; false (world untouched) when out of range.
   bool loadPreset(int id, Material selected);
   /// Removes every body.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "impulse/body.h"
+#include "impulse/field.h"
 #include "impulse/joint.h"
 
 namespace impulse::server {
@@ -27,6 +28,10 @@ class WorldChanges {
   /// Listed even if added since the last take, as bodies are; joints that
   /// went with their bodies are listed here too.
   void jointRemoved(JointId id);
+  void fieldAdded(FieldId id);
+  /// A field added and removed between takes is listed here only (the
+  /// snapshot describes fields the world still has).
+  void fieldRemoved(FieldId id);
   /// Every body was replaced (clear, preset): the next snapshot is full.
   void replaced();
   bool wasReplaced() const { return replaced_; }
@@ -40,6 +45,8 @@ class WorldChanges {
   const std::vector<BodyId>& changedIds() const { return changed_; }
   const std::vector<JointId>& addedJointIds() const { return jointsAdded_; }
   const std::vector<JointId>& removedJointIds() const { return jointsRemoved_; }
+  const std::vector<FieldId>& addedFieldIds() const { return fieldsAdded_; }
+  const std::vector<FieldId>& removedFieldIds() const { return fieldsRemoved_; }
 
  private:
   std::vector<BodyId> added_;
@@ -48,6 +55,8 @@ class WorldChanges {
   std::vector<BodyId> changed_;
   std::vector<JointId> jointsAdded_;
   std::vector<JointId> jointsRemoved_;
+  std::vector<FieldId> fieldsAdded_;
+  std::vector<FieldId> fieldsRemoved_;
   bool replaced_ = false;
 };
 

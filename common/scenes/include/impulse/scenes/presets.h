@@ -27,12 +27,12 @@ struct PresetInfo {
 };
 
 /// 0-10 are SPEC.md's; 11-14 show joints (spring, pendulum and cradle, chain
-/// bridge, car).
-inline constexpr int kPresetCount = 15;
+/// bridge, car); 15-17 fields (orbits, floating, fans).
+inline constexpr int kPresetCount = 18;
 /// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
 inline const Vec2 kSceneSize = Vec2(25, Real(18.75));
 
-/// Clears the world, resets gravity and builds preset `id` (0..14).
+/// Clears the world, resets gravity and builds preset `id` (0..17).
 /// `selected` is the viewer's current material (preset 9 uses it).
 /// Returns nothing for an id out of range, leaving the world untouched.
 std::optional<PresetInfo> loadPreset(World& world, int id, Material selected = Material::Solid);

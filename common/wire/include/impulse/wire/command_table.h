@@ -28,7 +28,7 @@
 // clang-format off
 #define IMPULSE_COMMAND_TABLE(ROW)                                                        \
   ROW(LoadPreset, load_preset, Admin, loadPreset, "preset", "preset N [MATERIAL]",        \
-      "load preset 0-14 (MATERIAL: the one preset 9 compares with SOLID)",                \
+      "load preset 0-17 (MATERIAL: the one preset 9 compares with SOLID)",                \
       parsePreset, client::loadPreset)                                                    \
   ROW(SetPaused, set_paused, Admin, setPaused, "pause", "pause",                          \
       "stop the tick clock", parsePause, client::setPaused)                               \
@@ -111,5 +111,17 @@
       parseSceneFileName, client::saveScene)                                              \
   ROW(LoadScene, load_scene, Admin, loadScene, "load", "load FILE",                       \
       "replace the world with the scene in FILE; it steps on as the saved one did",       \
-      parseSceneFile, client::loadScene)
+      parseSceneFile, client::loadScene)                                                  \
+  ROW(AddField, add_field, Admin, addField, "gravitation", "gravitation G",               \
+      "Newton's gravitation between all bodies, constant G; reply has field_id",          \
+      parseGravitation, client::gravitationField)                                         \
+  ROW(AddField, add_field, Admin, addField, "fluid",                                      \
+      "fluid DENSITY DRAG ANGULAR_DRAG CX CY X1 Y1 X2 Y2 X3 Y3 ...",                      \
+      "a liquid in a convex polygon, drag rates 1/s, current (CX, CY) m/s",               \
+      parseFluid, client::fluidField)                                                     \
+  ROW(AddField, add_field, Admin, addField, "fan", "fan X Y DX DY SPEED RANGE SPREAD",    \
+      "air blowing from (X, Y) along (DX, DY) at SPEED m/s, to RANGE m, half-angle SPREAD", \
+      parseFan, client::fanField)                                                         \
+  ROW(RemoveField, remove_field, Admin, removeField, "remove-field", "remove-field F",     \
+      "remove a field", parseBodyId, client::removeField)
 // clang-format on
