@@ -128,6 +128,10 @@ WorldState World::exportState() const {
   state.freeContacts = w.freeContacts.slots();
   for (const Joint& joint : w.joints) state.joints.push_back(exportJoint(joint));
   state.freeJoints = w.freeJoints.slots();
+  for (const FieldSlot& slot : w.fields) {
+    if (auto def = describeField(*slot.field)) state.fields.push_back({slot.id, std::move(*def)});
+  }
+  state.nextFieldId = w.nextFieldId;
   state.broadPhase = w.broadPhase.state();
   state.awakeBodies = w.awakeBodies;
   state.stepCount = w.stepCount;

@@ -4,6 +4,7 @@
 // nothing in it is trusted: numbers, shapes, slot indices, free lists, edge
 // lists and both broad-phase trees are all checked before they are used.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -213,7 +214,7 @@ class StateImport {
   // The stages in order: each relies on the ones before it.
   std::string run() {
     for (auto stage : {&StateImport::settings, &StateImport::bodies, &StateImport::broadPhase,
-                       &StateImport::contacts, &StateImport::joints, &StateImport::edges,
+                       &StateImport::contacts, &StateImport::joints, &StateImport::fields, &StateImport::edges,
                        &StateImport::awakeList, &StateImport::clock}) {
       if (std::string error = (this->*stage)(); !error.empty()) return error;
     }
@@ -223,6 +224,27 @@ class StateImport {
 
  private:
   std::string settings() { return applySolverSettings(state_.settings, next_->settings); }
+
+  // Each field made again from its numbers (so checked as AddField checks
+  // them), under its own id.
+  std::string fields() {
+    WorldData& w = *next_;
+    if (state_.nextFieldId == 0) return "nextFieldId must be at least 1";
+    std::vector<std::uint32_t> seen;
+    for (std::size_t i = 0; i < state_.fields.size(); ++i) {
+      const FieldSlotState& f = state_.fields[i];
+      if (f.id.value == 0 || f.id.value >= state_.nextFieldId) {
+        return at("field", i) + "id must lie within 1..nextFieldId - 1";
+      }
+      if (std::find(seen.begin(), seen.end(), f.id.value) != seen.end()) return at("field", i) + "id used twice";
+      seen.push_back(f.id.value);
+      FieldBuild built = makeField(f.def);
+      if (!built.ok()) return at("field", i) + built.error;
+      w.fields.push_back({f.id, std::move(built.field)});
+    }
+    w.nextFieldId = state_.nextFieldId;
+    return {};
+  }
 
   std::string bodies() {
     WorldData& w = *next_;

@@ -185,6 +185,32 @@ TEST(WorldState, JointsStepOnBitIdentically_AfterLoad) {
   expectBitIdenticalAfterLoad(world);
 }
 
+// Fields are saved by the numbers they were made from and made again under
+// their ids: a liquid, a fan and gravitation act on a falling rain the same
+// after the load, and the next field gets the same id in both worlds.
+TEST(WorldState, FieldsStepOnBitIdentically_AfterLoad_AndKeepTheirIds) {
+  World world;
+  buildRain(world, 200);
+  const Real width = 12;
+  ASSERT_TRUE(world.addField(makeField(FluidDef{.polygon = {Vec2(-width, 0), Vec2(width, 0), Vec2(width, 3),
+                                                             Vec2(-width, 3)}})
+                                 .field)
+                  .value != 0);
+  const FieldId fan = world.addField(makeField(FanDef{.position = Vec2(0, 1), .direction = Vec2(0, 1)}).field);
+  ASSERT_TRUE(world.addField(makeField(GravitationDef{.constant = 0.5}).field).value != 0);
+  ASSERT_TRUE(world.removeField(fan));  // a gap in the ids
+  simulate(world, 1);
+  const WorldState saved = world.exportState();
+  ASSERT_EQ(saved.fields.size(), 2u);
+  expectBitIdenticalAfterLoad(world);
+
+  World loaded(world.settings());
+  ASSERT_TRUE(loaded.importState(saved).ok());
+  const std::vector<FieldId> savedIds{saved.fields[0].id, saved.fields[1].id};
+  EXPECT_EQ(loaded.fieldIds(), savedIds);
+  EXPECT_EQ(loaded.addField(makeField(GravitationDef{}).field).value, saved.nextFieldId);
+}
+
 TEST(WorldState, SleepingPileStepsOnBitIdentically_WhenWokenAfterLoad) {
   World world;
   const Pyramid pyramid = buildPyramid(world, 6);
@@ -305,6 +331,19 @@ TEST(WorldState, RefusesBrokenLinks_WorldUnchanged) {
   state = source.exportState();
   state.awakeBodies.clear();
   expectRefused(state, "awake");
+}
+
+TEST(WorldState, RefusesFieldOutOfRange_WorldUnchanged) {
+  World source;
+  buildTower(source, 2);
+  source.addField(makeField(GravitationDef{}).field);
+  WorldState bad = source.exportState();
+  ASSERT_EQ(bad.fields.size(), 1u);
+  bad.fields[0].def = GravitationDef{.constant = 1e9};
+  expectRefused(bad, "field 0: ");
+  WorldState reused = source.exportState();
+  reused.fields.push_back(reused.fields[0]);
+  expectRefused(reused, "id used twice");
 }
 
 }  // namespace

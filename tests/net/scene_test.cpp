@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "impulse/client/scene_file.h"
+#include "impulse/wire/scene_convert.h"
 #include "net_test_support.h"
 
 namespace impulse::net_test {
@@ -86,7 +87,7 @@ TEST(Scenes, BadScenesAreRefusedAndTheWorldStaysAsItWas) {
   const std::string before = savedScene(client);
 
   v1::Scene newer;
-  newer.set_version(2);
+  newer.set_version(wire::kSceneVersion + 1);
   v1::Scene nan;
   ASSERT_TRUE(nan.ParseFromString(before));
   auto dynamic =
@@ -102,7 +103,7 @@ TEST(Scenes, BadScenesAreRefusedAndTheWorldStaysAsItWas) {
   joint->mutable_distance()->set_length(1);
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"not a scene \xff\xff", "does not parse as a Scene"},
-      {newer.SerializeAsString(), "scene version 2 is not supported"},
+      {newer.SerializeAsString(), "scene version 3 is not supported (this build reads 1 to 2)"},
       {nan.SerializeAsString(), "velocity is not a finite number"},
       {orphanJoint.SerializeAsString(), "joint slot 0: bodyA must be a live body"},
   };

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "impulse/broad_phase.h"
+#include "impulse/field_kinds.h"
 #include "impulse/joint.h"
 #include "impulse/manifold.h"
 #include "impulse/material.h"
@@ -123,6 +124,13 @@ struct JointSlotState {
   bool collideConnected = false;
 };
 
+/// A force field of one of the built-in kinds, by the numbers it was made
+/// from (fields are stateless between steps).
+struct FieldSlotState {
+  FieldId id;
+  FieldDef def;
+};
+
 struct WorldState {
   SolverSettingsState settings;
   std::vector<BodySlotState> bodies;
@@ -133,6 +141,10 @@ struct WorldState {
   std::vector<std::int32_t> freeContacts;
   std::vector<JointSlotState> joints;
   std::vector<std::int32_t> freeJoints;
+  /// Fields in the order the step applies them. A field of a kind of one's
+  /// own (not made by makeField) cannot be described and is not saved.
+  std::vector<FieldSlotState> fields;
+  std::uint32_t nextFieldId = 1;
   BroadPhase::State broadPhase;
   /// Awake body slots in the order the step visits them.
   std::vector<std::int32_t> awakeBodies;

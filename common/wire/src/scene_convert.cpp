@@ -4,6 +4,8 @@
 
 #include "impulse/wire/scene_convert.h"
 
+#include "impulse/wire/field_convert.h"
+
 #include <string>
 
 namespace impulse::wire {
@@ -347,6 +349,8 @@ void toWire(const WorldState& state, v1::Scene* out) {
   putSlots(state.freeContacts, out->mutable_free_contacts());
   for (const JointSlotState& joint : state.joints) putJoint(joint, out->add_joints());
   putSlots(state.freeJoints, out->mutable_free_joints());
+  for (const FieldSlotState& field : state.fields) toWire(field.id, field.def, out->add_fields());
+  out->set_next_field_id(state.nextFieldId);
   putTree(state.broadPhase.trees[0], out->mutable_static_tree());
   putTree(state.broadPhase.trees[1], out->mutable_movable_tree());
   putSlots(state.broadPhase.queued, out->mutable_queued_proxies());
@@ -395,6 +399,13 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
     }
   }
   state.freeJoints.assign(scene.free_joints().begin(), scene.free_joints().end());
+  for (int i = 0; i < scene.fields_size(); ++i) {
+    auto def = fieldFromWire(scene.fields(i));
+    if (!def) return Result::failure(at("field", i) + "not a field kind this build knows");
+    state.fields.push_back({FieldId{scene.fields(i).id()}, std::move(*def)});
+  }
+  // Version 1 had no fields: its worlds start their field ids at 1.
+  state.nextFieldId = scene.version() >= 2 ? scene.next_field_id() : 1;
   if (std::string error = getTree(scene.static_tree(), state.broadPhase.trees[0]); !error.empty()) {
     return Result::failure("static_tree: " + error);
   }
