@@ -139,7 +139,7 @@ double maximum(const std::vector<Sample>& samples, double Sample::*field) {
 }
 
 void report(const LoadOptions& options, const std::vector<Sample>& samples,
-            std::uint32_t sampledBodies, int closed) {
+            const std::string& sampled, int closed) {
   std::printf("%6s %10s %10s %9s %8s %7s %12s %12s %9s %8s\n", "second", "tick ms", "max ms",
               "ticks/s", "skipped", "awake", "B/s/client", "min B/s", "snaps/s", "CPU %");
   for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -155,13 +155,13 @@ void report(const LoadOptions& options, const std::vector<Sample>& samples,
       "summary: %d bodies, %d subscribers (%s), %.0f Hz ticks, %.0f Hz snapshots: tick %.2f ms "
       "mean (worst second's max %.2f ms, period %.2f ms), %.1f ticks/s, %llu skipped, "
       "%.0f B/s per client (%.2f Mbit/s), %.1f snapshots/s per client, %.0f %% of a core "
-      "(server); %u body states in a sampled snapshot; %d subscriber(s) dropped\n",
+      "(server); %s in a sampled snapshot; %d subscriber(s) dropped\n",
       options.bodies, options.subscribers, options.encoding.c_str(), options.tickHz,
       options.snapshotHz, mean(samples, &Sample::tickMeanMs), maximum(samples, &Sample::tickMaxMs),
       1000 / options.tickHz, mean(samples, &Sample::ticksPerSecond),
       static_cast<unsigned long long>(skipped), mean(samples, &Sample::bytesPerClient),
       mean(samples, &Sample::bytesPerClient) * 8 / 1e6, mean(samples, &Sample::snapshotsPerClient),
-      mean(samples, &Sample::serverCpuPercent), sampledBodies, closed);
+      mean(samples, &Sample::serverCpuPercent), sampled.c_str(), closed);
 }
 
 void chart(const LoadOptions& options, const std::vector<Sample>& samples) {
@@ -204,13 +204,13 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 1000.0));
   app.add_option("--room-threads", options.roomThreads, "the server's stepping threads (default 2)")
       ->check(CLI::Range(1, 64));
-  app.add_option("--encoding", options.encoding, "snapshot encoding the subscribers ask for: plain");
+  app.add_option("--encoding", options.encoding, "snapshot encoding the subscribers ask for: plain or quantized");
   app.add_option("--server", options.server, "impulse-server binary (default: this build's)");
   app.add_option("--svg", options.svg, "write a chart of the run to this SVG file");
   CLI11_PARSE(app, argc, argv);
   load::Encoding encoding;
   if (!load::parseEncoding(options.encoding, encoding)) {
-    std::fprintf(stderr, "impulse-load-bench: --encoding '%s' is not one this build knows (plain)\n",
+    std::fprintf(stderr, "impulse-load-bench: --encoding '%s' is not one this build knows (plain, quantized)\n",
                  options.encoding.c_str());
     return 2;
   }
@@ -232,7 +232,11 @@ int main(int argc, char** argv) {
     load::Subscribers subscribers(server.port(), options.subscribers, encoding);
     std::this_thread::sleep_for(std::chrono::duration<double>(options.warmupSeconds));
     const auto samples = measure(options, admin, subscribers, server);
-    report(options, samples, subscribers.sampledBodies(), subscribers.closed());
+    const std::string sampled =
+        encoding == load::Encoding::Quantized
+            ? std::to_string(subscribers.sampledQuantizedBytes()) + " bytes of quantized body states"
+            : std::to_string(subscribers.sampledBodies()) + " body states";
+    report(options, samples, sampled, subscribers.closed());
     if (!options.svg.empty()) chart(options, samples);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "impulse-load-bench: %s\n", error.what());

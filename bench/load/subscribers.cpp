@@ -47,6 +47,10 @@ bool parseEncoding(const std::string& name, Encoding& encoding) {
     encoding = Encoding::Plain;
     return true;
   }
+  if (name == "quantized") {
+    encoding = Encoding::Quantized;
+    return true;
+  }
   return false;
 }
 
@@ -59,6 +63,9 @@ impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index) {
   switch (encoding) {
     case Encoding::Plain:
       break;  // SNAPSHOT_ENCODING_PLAIN is Hello's default
+    case Encoding::Quantized:
+      hello->set_snapshot_encoding(impulse::v1::SNAPSHOT_ENCODING_QUANTIZED);
+      break;
   }
   return message;
 }
@@ -142,6 +149,7 @@ void Subscribers::sampleFrame() {
   impulse::v1::ServerMessage message;
   if (!message.ParseFromString(sample_) || !message.has_snapshot()) return;
   sampledBodies_ = std::uint32_t(message.snapshot().bodies_size());
+  sampledQuantizedBytes_ = std::uint32_t(message.snapshot().quantized_bodies().size());
 }
 
 }  // namespace load

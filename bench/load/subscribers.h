@@ -18,9 +18,9 @@
 namespace load {
 
 /// What a subscriber asks for in Hello (PROTOCOL.md, "Compact snapshots").
-enum class Encoding { Plain };
+enum class Encoding { Plain, Quantized };
 
-/// "plain" -> Encoding::Plain; false for a name this build does not know.
+/// "plain" or "quantized"; false for a name this build does not know.
 bool parseEncoding(const std::string& name, Encoding& encoding);
 /// The Hello a subscriber sends.
 impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index);
@@ -43,6 +43,8 @@ class Subscribers {
   /// Body states in the newest sampled snapshot (subscriber 0; a full one
   /// when it fell behind).
   std::uint32_t sampledBodies() const { return sampledBodies_.load(); }
+  /// Bytes of quantized body states in that snapshot (quantized encoding).
+  std::uint32_t sampledQuantizedBytes() const { return sampledQuantizedBytes_.load(); }
   /// Connections the server closed (a healthy run has none).
   int closed() const { return closed_.load(); }
 
@@ -68,6 +70,7 @@ class Subscribers {
   std::vector<std::unique_ptr<Connection>> connections_;
   std::string sample_;
   std::atomic<std::uint32_t> sampledBodies_ = 0;
+  std::atomic<std::uint32_t> sampledQuantizedBytes_ = 0;
   std::atomic<int> closed_ = 0;
   std::atomic<bool> stop_ = false;
   std::thread reader_;
