@@ -36,7 +36,9 @@ Simulation makeSimulation() {
 std::uint64_t replyRequestId(const impulse::v1::ServerMessage& reply) {
   if (reply.has_command_result()) return reply.command_result().request_id();
   if (reply.has_body_info()) return reply.body_info().request_id();
+  if (reply.has_joint_info()) return reply.joint_info().request_id();
   if (reply.has_room_list()) return reply.room_list().request_id();
+  if (reply.has_scene_data()) return reply.scene_data().request_id();
   FUZZ_CHECK(reply.has_pong());
   return reply.pong().request_id();
 }
