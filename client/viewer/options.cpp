@@ -54,6 +54,10 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
   app.add_option("--room", options.connect.room,
                  "room to join, made on first join (default: the room \"default\")")
       ->option_text("NAME");
+  app.add_flag_callback(
+      "--quantized",
+      [&options] { options.connect.snapshotEncoding = v1::SNAPSHOT_ENCODING_QUANTIZED; },
+      "ask for compact snapshots (quantized, delta-coded: docs/snapshots.md)");
   app.footer(
       "Environment: IMPULSE_TOKEN is the default --token; IMPULSE_FONT overrides the panel "
       "font; SDL_VIDEODRIVER=offscreen runs without a display.");

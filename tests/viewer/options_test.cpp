@@ -50,6 +50,11 @@ TEST(ViewerOptions, RoomIsSentInHello_DefaultTheDefaultRoom) {
   EXPECT_FALSE(parse({"--room"}).options);  // a value is required
 }
 
+TEST(ViewerOptions, QuantizedAsksForCompactSnapshots_DefaultPlain) {
+  EXPECT_EQ(parse({}).options->connect.snapshotEncoding, v1::SNAPSHOT_ENCODING_PLAIN);
+  EXPECT_EQ(parse({"--quantized"}).options->connect.snapshotEncoding, v1::SNAPSHOT_ENCODING_QUANTIZED);
+}
+
 TEST(ViewerOptions, RefusesBadValuesWithAMessage) {
   for (const auto& args : std::vector<std::vector<std::string_view>>{
            {"--connect", "nohost"}, {"--size", "80x60"}, {"--preset", "18"}, {"--frames"},
