@@ -144,7 +144,7 @@ std::shared_ptr<Session> Room::member(std::uint32_t client) const {
 
 void Room::countSubscribers() {
   subscribers_ = subscriberIds_.size();
-  quantizedSubscribers_ = std::size_t(std::count_if(subscriberIds_.begin(), subscriberIds_.end(), [&](std::uint32_t id) {
+  quantizedSubscribers_ = std::size_t(std::ranges::count_if(subscriberIds_, [&](std::uint32_t id) {
     const auto session = member(id);
     return session && session->quantized();
   }));
@@ -218,16 +218,19 @@ void Room::deliverReply(Reply& reply) {
 }
 
 void Room::deliverBroadcast(const Broadcast& broadcast) {
-  // Copies: a session that a send closes leaves members_ at once.
-  std::vector<std::shared_ptr<Session>> subscribers;
+  // Copies: a session that a send closes leaves members_ at once. The list
+  // keeps its capacity from one broadcast to the next.
+  broadcastTargets_.clear();
   for (const auto& [id, session] : members_) {
-    if (session->subscribed()) subscribers.push_back(session);
+    if (session->subscribed()) broadcastTargets_.push_back(session);
   }
-  for (const auto& session : subscribers) {
+  for (const auto& session : broadcastTargets_) {
     // A quantized subscriber counted after the tick built no quantized
     // delta: its null frame becomes a key frame when written.
-    session->offerSnapshot(broadcast.sequence, session->quantized() ? broadcast.quantizedDelta : broadcast.delta);
+    session->offerSnapshot(broadcast.sequence,
+                           session->quantized() ? broadcast.quantizedDelta : broadcast.delta);
   }
+  broadcastTargets_.clear();  // lets closed sessions go
 }
 
 // --------------------------------------------------------------------- ticks
@@ -349,17 +352,14 @@ void Room::broadcastSnapshot() {
   lastSnapshotSlot_ = snapshotSlot();
   ++snapshotSequence_;
   WorldChanges& changes = simulation_.takeChanges();
+  // Quantized subscribers share one delta; without any, its baseline lapses.
+  const bool anyQuantized = quantizedSubscribers_.load() > 0;
+  if (!anyQuantized) snapshots_.skipQuantized();
   // A subscriber joining meanwhile starts from a full snapshot, so nothing is lost.
-  if (subscribers_.load() == 0) {
-    snapshots_.skipQuantized();
-    return;
-  }
+  if (subscribers_.load() == 0) return;
   const auto delta = snapshots_.delta(changes);
   lastSnapshotBytes_ = delta->size();
-  // Quantized subscribers share one delta too; without any, its baseline lapses.
-  const bool anyQuantized = quantizedSubscribers_.load() > 0;
   SharedFrame quantizedDelta = anyQuantized ? snapshots_.quantizedDelta(changes) : nullptr;
-  if (!anyQuantized) snapshots_.skipQuantized();
   outbox_.emplace_back(Broadcast{snapshotSequence_, delta, std::move(quantizedDelta)});
 }
 

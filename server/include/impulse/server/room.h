@@ -149,6 +149,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   std::map<std::uint32_t, std::shared_ptr<Session>> members_;
   /// Members whose snapshot stream started (a closed session no longer says).
   std::set<std::uint32_t> subscriberIds_;
+  /// deliverBroadcast's scratch list of the sessions it offers a snapshot.
+  std::vector<std::shared_ptr<Session>> broadcastTargets_;
   /// Snapshots skipped by members that left.
   std::uint64_t snapshotsSkippedByLeavers_ = 0;
   std::uint64_t commandsRateLimited_ = 0;
