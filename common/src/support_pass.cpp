@@ -137,10 +137,10 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
   }
   for (std::size_t s = 1; s <= stateCount; ++s) edgeStart_[s] += edgeStart_[s - 1];
   neighbours_.resize(2 * refs.size());
-  queue_.assign(edgeStart_.begin(), edgeStart_.end() - 1);  // fill cursors, reused below
+  cursor_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
   for (const ConstraintRef& ref : refs) {
-    neighbours_[std::size_t(queue_[std::size_t(ref.stateA)]++)] = ref.stateB;
-    neighbours_[std::size_t(queue_[std::size_t(ref.stateB)]++)] = ref.stateA;
+    neighbours_[std::size_t(cursor_[std::size_t(ref.stateA)]++)] = ref.stateB;
+    neighbours_[std::size_t(cursor_[std::size_t(ref.stateB)]++)] = ref.stateA;
   }
   level_.assign(stateCount, kUnreached);
   level_[0] = 0;
@@ -189,12 +189,10 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   for (std::int32_t level : rowLevel_) ++storeyStart_[std::size_t(level) + 1];
   for (std::size_t l = 1; l < storeyStart_.size(); ++l) storeyStart_[l] += storeyStart_[l - 1];
   rows_.resize(unsorted_.size());
+  cursor_.assign(storeyStart_.begin(), storeyStart_.end() - 1);
   for (std::size_t r = 0; r < unsorted_.size(); ++r) {
-    rows_[std::size_t(storeyStart_[std::size_t(rowLevel_[r])]++)] = unsorted_[r];
+    rows_[std::size_t(cursor_[std::size_t(rowLevel_[r])]++)] = unsorted_[r];
   }
-  // The fill moved each start to the next level's: shift back by one.
-  storeyStart_.pop_back();
-  storeyStart_.insert(storeyStart_.begin(), 0);
 }
 
 }  // namespace impulse

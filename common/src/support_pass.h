@@ -74,6 +74,8 @@ class SupportPass {
   std::vector<std::int32_t> edgeStart_;
   std::vector<std::int32_t> neighbours_;
   std::vector<std::int32_t> queue_;
+  /// Fill positions of a counting sort (adjacency lists, then storeys).
+  std::vector<std::int32_t> cursor_;
   std::vector<SupportRow> unsorted_;
   std::vector<std::int32_t> rowLevel_;
   std::vector<std::int32_t> storeyStart_;
