@@ -39,6 +39,9 @@ class ConstraintKind {
   virtual void warmStart(const SubStep& sub) = 0;
   /// One pass that removes velocity error and softly corrects position error.
   virtual void solve(const SubStep& sub) = 0;
+  /// After every kind's solve pass: a direct pass that leaves this kind's
+  /// rows exactly satisfied where Gauss-Seidel cannot (joint trees).
+  virtual void solveExact(const SubStep&) {}
   /// One pass without position correction: takes out the velocity the
   /// correction added, once the positions have moved.
   virtual void relax(const SubStep& sub) = 0;
@@ -46,6 +49,9 @@ class ConstraintKind {
   /// velocities, which the solver has swapped for zeroed pseudo velocities.
   /// Runs only in steps where some kind's prepare asked for it.
   virtual void push(const SubStep&) {}
+  /// After every kind's push: the exact pass on the pseudo velocities, so a
+  /// rigid joint carries one body's push out of an overlap to the other.
+  virtual void pushExact(const SubStep&) {}
   /// Once per step, after the sub-steps: bounces.
   virtual void restitution(const SubStep&) {}
   /// Keeps the impulses for next step's warm start.

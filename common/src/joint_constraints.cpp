@@ -79,6 +79,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   // Solved in colour order, so a colour's joints could run side by side.
   sortByColor(colorOf_, order_);
   for (std::int32_t position : order_) rows_.push_back(gathered_[position]);
+  tree_.order(rows_, world.solverStates.size());
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
   return false;
@@ -95,6 +96,12 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
 }
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
+void JointConstraints::solveExact(const SubStep& sub) {
+  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::Real);
+}
+void JointConstraints::pushExact(const SubStep& sub) {
+  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::Push);
+}
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 
 void JointConstraints::store(WorldData& world) {

@@ -7,8 +7,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 
-#include "joint_constraints.h"
+#include "joint_row.h"
 
 namespace impulse {
 
@@ -285,17 +286,16 @@ struct Slide {
   Real offset;
 };
 
-Slide slideOf(Context& x) {
-  Vec2 u = x.a.deltaRotation.apply(x.row.axis);
+Slide slideOf(JointRow& row, const Frame& f, const SolverState& a) {
+  Vec2 u = a.deltaRotation.apply(row.axis);
   Vec2 n = leftPerp(u);
-  x.row.lastAxis = u;
-  return {slideJacobian(x.f, u), slideJacobian(x.f, n),
-          u.dot(x.f.d) - x.row.joint->referenceTranslation,
-          n.dot(x.f.d) - x.row.joint->referencePerpendicular};
+  row.lastAxis = u;
+  return {slideJacobian(f, u), slideJacobian(f, n), u.dot(f.d) - row.joint->referenceTranslation,
+          n.dot(f.d) - row.joint->referencePerpendicular};
 }
 
 void solveKind(Context& x, const PrismaticJointSettings& s) {
-  Slide slide = slideOf(x);
+  Slide slide = slideOf(x.row, x.f, x.a);
   axisRows(x, slide.along, slide.translation, s, x.pass.h * s.maxMotorForce);
   limitRows(x, slide.along, slide.translation, s.lower, s.upper, s);
   rigidRow(x.row, angularJacobian(), x.f.angle, x.row.impulses.angular, x.pass, x.a, x.b);
@@ -303,7 +303,7 @@ void solveKind(Context& x, const PrismaticJointSettings& s) {
 }
 
 void solveKind(Context& x, const WheelJointSettings& s) {
-  Slide slide = slideOf(x);
+  Slide slide = slideOf(x.row, x.f, x.a);
   JointImpulses& p = x.row.impulses;
   if (s.stiffness > 0) {
     springRow(x.row, slide.along, slide.translation, s.stiffness, s.damping, p.spring, x.pass, x.a,
@@ -331,6 +331,52 @@ Jacobian limitJacobian(const JointRow& row, const Frame& f, const SolverState& a
   if (turnsWithLimits(row.joint->settings)) return angularJacobian();
   if (slides(row.joint->settings)) return slideJacobian(f, a.deltaRotation.apply(row.axis));
   return lineJacobian(f, unitOr(f.d, row.lastAxis));
+}
+
+// ---- rigid rows, for the tree pass (joint_tree_pass.h) ----
+
+struct RigidRowsOut {
+  RigidRows& rows;
+  int count = 0;
+  void add(const Jacobian& j, Real position, Real& impulse) {
+    rows[count++] = {j.linear, j.angularA, j.angularB, position, &impulse};
+  }
+  void addPoint(const Frame& f, Vec2& impulse) {
+    add({Vec2(1, 0), -f.rA.y(), -f.rB.y()}, f.d.x(), impulse.x());
+    add({Vec2(0, 1), f.rA.x(), f.rB.x()}, f.d.y(), impulse.y());
+  }
+};
+
+/// What the rigid rows are read from: the joint now.
+struct RigidContext {
+  JointRow& row;
+  const SolverState& a;
+  Frame f;
+};
+
+void addRigid(RigidRowsOut& out, RigidContext& x, const DistanceJointSettings& s) {
+  if (s.stiffness > 0) return;
+  Jacobian j = lineJacobian(x.f, unitOr(x.f.d, x.row.lastAxis));
+  out.add(j, x.f.d.norm() - x.row.joint->length, x.row.impulses.axial);
+}
+void addRigid(RigidRowsOut&, RigidContext&, const RopeJointSettings&) {}
+void addRigid(RigidRowsOut&, RigidContext&, const MouseJointSettings&) {}
+void addRigid(RigidRowsOut& out, RigidContext& x, const RevoluteJointSettings&) {
+  out.addPoint(x.f, x.row.impulses.point);
+}
+void addRigid(RigidRowsOut& out, RigidContext& x, const WeldJointSettings& s) {
+  if (s.linearStiffness == 0) out.addPoint(x.f, x.row.impulses.point);
+  if (s.angularStiffness == 0) out.add(angularJacobian(), x.f.angle, x.row.impulses.angular);
+}
+void addRigid(RigidRowsOut& out, RigidContext& x, const PrismaticJointSettings&) {
+  Slide slide = slideOf(x.row, x.f, x.a);
+  out.add(angularJacobian(), x.f.angle, x.row.impulses.angular);
+  out.add(slide.across, slide.offset, x.row.impulses.perpendicular);
+}
+void addRigid(RigidRowsOut& out, RigidContext& x, const WheelJointSettings& s) {
+  Slide slide = slideOf(x.row, x.f, x.a);
+  out.add(slide.across, slide.offset, x.row.impulses.perpendicular);
+  if (s.stiffness == 0) out.add(slide.along, slide.translation, x.row.impulses.axial);
 }
 
 }  // namespace
@@ -361,6 +407,27 @@ void warmStartJoint(JointRow& row, SolverState& a, SolverState& b) {
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass) {
   Context x{row, a, b, pass, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { solveKind(x, settings); }, row.joint->settings);
+}
+
+int rigidRowCount(const JointSettings& settings) {
+  return std::visit(
+      [](const auto& s) -> int {
+        using Kind = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<Kind, DistanceJointSettings>) return s.stiffness > 0 ? 0 : 1;
+        if constexpr (std::is_same_v<Kind, RevoluteJointSettings>) return 2;
+        if constexpr (std::is_same_v<Kind, WeldJointSettings>)
+          return (s.linearStiffness > 0 ? 0 : 2) + (s.angularStiffness > 0 ? 0 : 1);
+        if constexpr (std::is_same_v<Kind, PrismaticJointSettings>) return 2;
+        if constexpr (std::is_same_v<Kind, WheelJointSettings>) return s.stiffness > 0 ? 1 : 2;
+        return 0;  // ropes and mouse joints
+      },
+      settings);
+}
+
+void rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
+  RigidContext x{row, a, frameOf(row, a, b)};
+  RigidRowsOut rows{out};
+  std::visit([&](const auto& settings) { addRigid(rows, x, settings); }, row.joint->settings);
 }
 
 void jointReaction(const JointRow& row, Real invH, Vec2& force, Real& torque) {

@@ -7,6 +7,7 @@
 //     integrate velocities (gravity, forces, drag)
 //     warm start (apply last impulses)
 //     solve with soft position correction (contacts: no faster than loads need)
+//     solve exactly what a kind can (joint trees)
 //     push position error out through pseudo velocities (split impulse), if any
 //     integrate positions
 //     relax (no correction: removes the velocity the correction added)
@@ -106,6 +107,7 @@ void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* cons
     state.angularVelocity = 0;
   }
   for (ConstraintKind* kind : kinds) kind->push(sub);
+  for (ConstraintKind* kind : kinds) kind->pushExact(sub);
   for (std::size_t k = 1; k < count; ++k) {
     SolverState& state = world.solverStates[k];
     keepAwakeWhilePushed(world.bodies[world.solverIntegration[k].body], state, world.settings);
@@ -167,6 +169,7 @@ void solve(WorldData& world, Real dt) {
     integrateVelocities(world, h);
     for (ConstraintKind* kind : kinds) kind->warmStart(sub);
     for (ConstraintKind* kind : kinds) kind->solve(sub);
+    for (ConstraintKind* kind : kinds) kind->solveExact(sub);
     if (needsPush) {
       pushThenIntegratePositions(world, kinds, sub, h);
     } else {

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "joint_test_support.h"
 
@@ -191,7 +193,9 @@ TEST(JointAccuracy, NewtonsCradle_PassesMomentumThroughFiveBalls) {
 
 // ---- chains and ropes ----
 
-double heavyChainStretch(int subSteps) {
+/// A chain of 20 light links on revolute pins, hanging from the world, with
+/// a weight of `ratio` links' mass under it; the worst stretch over 5 s.
+double heavyChainStretch(int subSteps, double ratio) {
   WorldSettings settings;
   settings.subSteps = subSteps;
   World world(settings);
@@ -210,35 +214,120 @@ double heavyChainStretch(int subSteps) {
     previous = link;
   }
   Vec2 end = top - Vec2(0, linkLength * links);
-  // A weight of 300 links' mass: a dense box under the last link.
   BodyDef def =
       makeBodyDef(Shape::makePolygon(makeBox(Real(0.5), Real(0.5))), end - Vec2(0, Real(0.5)), {});
-  def.materialOverride.density = Real(300 * linkMass);
+  def.materialOverride.density = Real(ratio * linkMass);
   BodyId weight = world.createBody(def).id;
   addJoint(world, weight, previous, end, end, RevoluteJointSettings{});
+  // A push sideways, so the chain swings and the pins turn under the load.
+  EXPECT_TRUE(world.applyImpulse(weight, Vec2(Real(2 * ratio * linkMass), 0)).ok());
   double nominal = linkLength * links + 0.5;
   double worst = 0;
   record(world, 5, [&] {
-    double reach = top.y() - stateOf(world, weight).position.y();
+    double reach = (top - stateOf(world, weight).position).norm();
     worst = std::max(worst, reach / nominal - 1);
     return 0.0;
   });
-  EXPECT_NEAR(massOf(world, weight) / linkMass, 300, 1);
+  EXPECT_NEAR(massOf(world, weight) / linkMass, ratio, ratio / 100);
   return worst;
 }
 
-// Rigid joints are springs of a quarter of the sub-step rate relative to
-// the light links' mass, and the weight's pull stretches each of them: the
-// stretch falls with the square of the sub-steps. The target holds from 16
-// sub-steps on (held at 32); the default 4 stretch by about 16 % (printed).
-TEST(JointAccuracy, HeavyChain_300To1WeightOn20Links_StretchesBelow1Percent) {
-  for (int subSteps : {4, 8, 16}) {
-    std::printf("measured: heavy chain worst stretch, %d sub-steps = %.5g\n", subSteps,
-                heavyChainStretch(subSteps));
+// The chain is a tree of rigid rows, solved exactly every sub-step
+// (joint_tree_pass.h): the stretch is the linearisation's alone, far below
+// the 1 % target at the default settings (the soft rows alone stretched it
+// by 16 % at 4 sub-steps). At 1000:1 the links under the load swing about
+// their pins at about sqrt(r T / I) = 480 rad/s, the most a 240 Hz
+// sub-step can follow: that swinging chain needs 8 sub-steps.
+TEST(JointAccuracy, HeavyChain_300To1And1000To1WeightOn20Links_StretchesBelow1Percent) {
+  const int defaultSubSteps = WorldSettings{}.subSteps;
+  for (auto [ratio, subSteps] : {std::pair{300.0, defaultSubSteps}, std::pair{1000.0, 8}}) {
+    double stretch = heavyChainStretch(subSteps, ratio);
+    std::printf("measured: heavy chain %g:1 worst stretch, %d sub-steps = %.5g\n", ratio, subSteps,
+                stretch);
+    EXPECT_LT(stretch, 0.0001) << ratio << ":1";
   }
-  double stretch = heavyChainStretch(32);
-  std::printf("measured: heavy chain worst stretch, 32 sub-steps = %.5g\n", stretch);
-  EXPECT_LT(stretch, 0.01);
+}
+
+/// A chain of `links` bars pinned to the world at both ends (a bridge's
+/// loop through the world), sagging from a V; the worst distance between
+/// the two bodies' ends at any pin over `seconds`.
+double pinnedBothEndsWorstGap(int links, double seconds) {
+  World world;
+  std::vector<BodyId> bars;
+  std::vector<Vec2> pins;
+  Vec2 pin(0, 10);
+  for (int i = 0; i < links; ++i) {
+    const Vec2 next = pin + Vec2(1, i < links / 2 ? Real(-0.4) : Real(0.4));
+    bars.push_back(addBox(world, {.center = (pin + next) / 2, .halfWidth = Real(0.5),
+                                  .halfHeight = Real(0.05),
+                                  .angle = std::atan2((next - pin).y(), (next - pin).x())}));
+    pins.push_back(pin);
+    pin = next;
+  }
+  pins.push_back(pin);
+  addJoint(world, bars.front(), BodyId{}, pins.front(), pins.front(), RevoluteJointSettings{});
+  for (int i = 1; i < links; ++i) addJoint(world, bars[i], bars[i - 1], pins[i], pins[i], RevoluteJointSettings{});
+  addJoint(world, bars.back(), BodyId{}, pins.back(), pins.back(), RevoluteJointSettings{});
+  // Each bar's ends in its own frame, to find where the pins are now.
+  std::vector<std::pair<Vec2, Vec2>> ends;
+  for (int i = 0; i < links; ++i) {
+    BodyState s = stateOf(world, bars[i]);
+    Transform t{s.position, Rot::fromAngle(s.angle)};
+    ends.emplace_back(t.applyInverse(pins[i]), t.applyInverse(pins[i + 1]));
+  }
+  auto endOf = [&](int bar, bool far) {
+    BodyState s = stateOf(world, bars[bar]);
+    Transform t{s.position, Rot::fromAngle(s.angle)};
+    return t.apply(far ? ends[bar].second : ends[bar].first);
+  };
+  double worst = 0;
+  record(world, seconds, [&] {
+    worst = std::max(worst, double((endOf(0, false) - pins.front()).norm()));
+    worst = std::max(worst, double((endOf(links - 1, true) - pins.back()).norm()));
+    for (int i = 1; i < links; ++i) worst = std::max(worst, double((endOf(i, false) - endOf(i - 1, true)).norm()));
+    return 0.0;
+  });
+  return worst;
+}
+
+// Two pins to the world close a loop through it: the exact pass keeps both
+// (the second through its small compliance) while the chain swings down.
+TEST(JointAccuracy, ChainPinnedAtBothEnds_SwingsWithEveryPinWithin1mm) {
+  double gap = pinnedBothEndsWorstGap(10, 5);
+  report("chain pinned at both ends, worst pin gap (m)", gap);
+  EXPECT_LT(gap, 0.001);
+}
+
+// A loop of joints between bodies (a four-bar linkage) has no tree: it
+// keeps the soft rows alone, and still holds together and stays finite.
+TEST(JointAccuracy, FourBarLoop_KeepsTheSoftRows_HoldsWithin1cm) {
+  World world;
+  const BodyId crank = addBox(world, {.center = Vec2(0, Real(5.5)), .halfWidth = Real(0.05), .halfHeight = Real(0.5)});
+  const BodyId coupler = addBox(world, {.center = Vec2(1, 6), .halfWidth = 1, .halfHeight = Real(0.05)});
+  const BodyId rocker = addBox(world, {.center = Vec2(2, Real(5.5)), .halfWidth = Real(0.05), .halfHeight = Real(0.5)});
+  const BodyId link = addBox(world, {.center = Vec2(1, 5), .halfWidth = 1, .halfHeight = Real(0.05)});
+  const Vec2 corners[4] = {Vec2(0, 5), Vec2(0, 6), Vec2(2, 6), Vec2(2, 5)};
+  addJoint(world, crank, BodyId{}, corners[0], corners[0], RevoluteJointSettings{});
+  addJoint(world, crank, coupler, corners[1], corners[1], RevoluteJointSettings{});
+  addJoint(world, coupler, rocker, corners[2], corners[2], RevoluteJointSettings{});
+  addJoint(world, rocker, link, corners[3], corners[3], RevoluteJointSettings{});
+  addJoint(world, link, crank, corners[0], corners[0], RevoluteJointSettings{});
+  ASSERT_TRUE(world.applyImpulse(coupler, Vec2(2, 0)).ok());
+  double worst = 0;
+  record(world, 3, [&] {
+    for (const JointId id : world.jointIds()) {
+      const auto state = world.jointState(id);
+      const auto description = world.jointDescription(id);
+      if (!state || !description) continue;
+      if (!description->bodyB.isNull()) worst = std::max(worst, double(state->length));
+    }
+    return 0.0;
+  });
+  report("four-bar loop worst pin gap (m)", worst);
+  EXPECT_LT(worst, 0.01);
+  for (const BodyId id : {crank, coupler, rocker, link}) {
+    EXPECT_TRUE(stateOf(world, id).position.allFinite());
+  }
 }
 
 TEST(JointAccuracy, Rope_NeverExceedsItsLengthByMoreThan1cm) {

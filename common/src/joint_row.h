@@ -1,0 +1,68 @@
+#pragma once
+// A joint as the solver sees it during a step, and the rows of each kind
+// (joint_rows.cpp): shared by the soft passes (joint_constraints.h) and the
+// exact tree pass (joint_tree_pass.h).
+
+#include <array>
+#include <cstdint>
+
+#include "joint_data.h"
+#include "solver_data.h"
+
+namespace impulse {
+
+/// One joint as the solver sees it during a step.
+struct JointRow {
+  const Joint* joint = nullptr;
+  std::int32_t index = kNullIndex;
+  std::int32_t stateA = 0;
+  std::int32_t stateB = 0;
+  Real invMassA = 0;
+  Real invInertiaA = 0;
+  Real invMassB = 0;
+  Real invInertiaB = 0;
+  Vec2 anchorA = Vec2::Zero();  ///< from A's centre, world-rotated at step start
+  Vec2 anchorB = Vec2::Zero();
+  Vec2 deltaCenter = Vec2::Zero();  ///< B's centre minus A's at step start
+  Real deltaAngle = 0;              ///< joint angle at step start
+  Vec2 axis = Vec2(1, 0);           ///< world axis at step start (prismatic, wheel)
+  Vec2 lastAxis = Vec2(1, 0);       ///< for the reaction force
+  JointImpulses impulses;
+};
+
+/// What every row's pass needs besides the row and its two states.
+struct JointPass {
+  Real h = 0;
+  Real invH = 0;
+  Softness rigid;
+  bool useBias = true;
+};
+
+
+/// A rigid (equality) row of a joint at the sub-step's geometry: its speed
+/// is linear . (vB - vA) + angularB * wB - angularA * wA, its error
+/// `position`; `impulse` is where its impulse accumulates.
+struct RigidRow {
+  Vec2 linear = Vec2::Zero();
+  Real angularA = 0;
+  Real angularB = 0;
+  Real position = 0;
+  Real* impulse = nullptr;
+};
+using RigidRows = std::array<RigidRow, 3>;
+
+/// The rows of one kind (joint_rows.cpp).
+void warmStartJoint(JointRow& row, SolverState& a, SolverState& b);
+void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass);
+/// How many rigid rows a joint of these settings has (0 to 3): the pin of a
+/// revolute or rigid weld, a rod's length, a rigid weld's angle, the angle
+/// and offset of a prismatic, the offset (and rigid travel) of a wheel.
+int rigidRowCount(const JointSettings& settings);
+/// Fills the first rigidRowCount rows of `out` at the states' geometry.
+void rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out);
+/// The reaction on B (N, N*m) from the last sub-step's impulses.
+void jointReaction(const JointRow& row, Real invH, Vec2& force, Real& torque);
+/// The joint angle B relative to A since creation, wrapped to [-pi, pi].
+Real jointAngle(const Joint& joint, const Rot& qA, const Rot& qB);
+
+}  // namespace impulse

@@ -1,0 +1,250 @@
+#include "joint_tree_pass.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <Eigen/LU>
+
+namespace impulse {
+
+namespace {
+
+// Two fifths of a rigid row's position error are taken out per sub-step: the
+// error of a swinging chain (the rows are linearised) stays far below a
+// millimetre, and a joint made apart closes in a few steps without a kick.
+constexpr double kErrorShare = 0.4;
+// The correction never moves a row faster than this (m/s or rad/s), so a
+// joint made far apart is pulled together, not thrown.
+constexpr double kMaxCorrectionSpeed = 1;
+// Each row gives way by this share of its own inverse mass (it ends the pass
+// with a speed of 1e-5 of its impulse's own effect): that keeps the
+// elimination regular where rows repeat each other (two pins at one point,
+// both ends of a bridge), far below anything a step can show.
+constexpr double kCompliance = 1e-5;
+
+bool isBody(std::int32_t state, Real invMass) { return state != 0 && invMass > 0; }
+bool hasBodyA(const JointRow& row) { return isBody(row.stateA, row.invMassA); }
+bool hasBodyB(const JointRow& row) { return isBody(row.stateB, row.invMassB); }
+
+std::int32_t findGroup(std::vector<std::int32_t>& group, std::int32_t state) {
+  while (group[state] != state) {
+    group[state] = group[group[state]];
+    state = group[state];
+  }
+  return state;
+}
+
+// The joint's rows acting on one of its bodies (3 rows by vx, vy, w).
+Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
+  Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
+  for (int r = 0; r < count; ++r) {
+    const RigidRow& row = rows[r];
+    const double sign = sideB ? 1 : -1;
+    g(r, 0) = sign * row.linear.x();
+    g(r, 1) = sign * row.linear.y();
+    g(r, 2) = sideB ? row.angularB : -row.angularA;
+  }
+  return g;
+}
+
+Eigen::Matrix3d massOf(Real invMass, Real invInertia) {
+  // A body that cannot turn has an inertia beyond any lever.
+  const double inertia = invInertia > 0 ? 1.0 / invInertia : 1e30;
+  return Eigen::Vector3d(1.0 / invMass, 1.0 / invMass, inertia).asDiagonal();
+}
+
+}  // namespace
+
+void JointTreePass::order(std::span<const JointRow> rows, std::size_t stateCount) {
+  nodes_.clear();
+  buildGroups(rows, stateCount);
+  jointTaken_.assign(rows.size(), 0);
+  bodySeen_.assign(stateCount, 0);
+  // A joint to the world is the best root: then no leaf is a joint alone,
+  // whose block is only the compliance. Other groups start anywhere.
+  for (bool worldJointsOnly : {true, false}) {
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const JointRow& row = rows[r];
+      if (jointTaken_[r]) continue;
+      if (!hasBodyA(row) && !hasBodyB(row)) continue;
+      const bool toWorld = hasBodyA(row) != hasBodyB(row);
+      if (worldJointsOnly && !toWorld) continue;
+      const std::int32_t body = hasBodyA(row) ? row.stateA : row.stateB;
+      if (groupHasLoop_[findGroup(bodyGroup_, body)]) continue;
+      orderGroup(static_cast<std::int32_t>(r), rows);
+    }
+  }
+}
+
+// Joints with a rigid row and a body are the edges; a joint that closes a
+// loop marks its group, and counting sorts them by body for the walk.
+void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stateCount) {
+  bodyGroup_.resize(stateCount);
+  for (std::size_t s = 0; s < stateCount; ++s) bodyGroup_[s] = static_cast<std::int32_t>(s);
+  groupHasLoop_.assign(stateCount, 0);
+  jointsStart_.assign(stateCount + 1, 0);
+  loopBodies_.clear();
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const JointRow& row = rows[r];
+    const bool a = hasBodyA(row) && rigidRowCount(row.joint->settings) > 0;
+    const bool b = hasBodyB(row) && rigidRowCount(row.joint->settings) > 0;
+    if (a) ++jointsStart_[row.stateA + 1];
+    if (b) ++jointsStart_[row.stateB + 1];
+    if (!a || !b) continue;
+    const std::int32_t groupA = findGroup(bodyGroup_, row.stateA);
+    const std::int32_t groupB = findGroup(bodyGroup_, row.stateB);
+    if (groupA == groupB) loopBodies_.push_back(row.stateA);
+    bodyGroup_[groupA] = groupB;
+  }
+  for (std::int32_t state : loopBodies_) groupHasLoop_[findGroup(bodyGroup_, state)] = 1;
+  for (std::size_t s = 0; s < stateCount; ++s) jointsStart_[s + 1] += jointsStart_[s];
+  cursor_.assign(jointsStart_.begin(), jointsStart_.end() - 1);
+  jointsOfBody_.resize(static_cast<std::size_t>(jointsStart_.back()));
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const JointRow& row = rows[r];
+    if (rigidRowCount(row.joint->settings) == 0) continue;
+    if (hasBodyA(row)) jointsOfBody_[cursor_[row.stateA]++] = static_cast<std::int32_t>(r);
+    if (hasBodyB(row)) jointsOfBody_[cursor_[row.stateB]++] = static_cast<std::int32_t>(r);
+  }
+}
+
+// Breadth first from the root joint, then stored reversed: every node comes
+// before its parent, as the elimination needs.
+void JointTreePass::orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows) {
+  if (rigidRowCount(rows[rootJoint].joint->settings) == 0) return;
+  std::vector<Node>& walk = walk_;
+  walk.clear();
+  walk.push_back({.row = rootJoint, .isJoint = true});
+  jointTaken_[rootJoint] = 1;
+  for (std::size_t at = 0; at < walk.size(); ++at) {
+    const Node node = walk[at];
+    const auto here = static_cast<std::int32_t>(at);
+    if (node.isJoint) {
+      const JointRow& row = rows[node.row];
+      for (bool sideB : {false, true}) {
+        if (!(sideB ? hasBodyB(row) : hasBodyA(row))) continue;
+        const std::int32_t state = sideB ? row.stateB : row.stateA;
+        if (bodySeen_[state]) continue;  // the parent
+        bodySeen_[state] = 1;
+        walk.push_back({.parent = here,
+                        .state = state,
+                        .mass = massOf(sideB ? row.invMassB : row.invMassA,
+                                       sideB ? row.invInertiaB : row.invInertiaA)});
+      }
+      continue;
+    }
+    for (std::int32_t k = jointsStart_[node.state]; k < jointsStart_[node.state + 1]; ++k) {
+      const std::int32_t joint = jointsOfBody_[k];
+      if (jointTaken_[joint]) continue;
+      jointTaken_[joint] = 1;
+      walk.push_back({.parent = here, .row = joint, .isJoint = true});
+    }
+  }
+  const auto base = static_cast<std::int32_t>(nodes_.size());
+  const auto last = static_cast<std::int32_t>(walk.size()) - 1;
+  for (std::int32_t at = last; at >= 0; --at) {
+    Node node = walk[at];
+    if (node.parent >= 0) node.parent = base + last - node.parent;
+    nodes_.push_back(node);
+  }
+}
+
+void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h,
+                          Motion motion) {
+  if (nodes_.empty()) return;
+  assemble(rows, states, h, motion);
+  factorAndSolve();
+  apply(states, motion);
+}
+
+void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
+                                  double errorRate) {
+  const SolverState& a = states[row.stateA];
+  const SolverState& b = states[row.stateB];
+  RigidRows rigid;
+  const int count = rigidRowCount(row.joint->settings);
+  rigidRows(row, a, b, rigid);
+  node.jacobianA = jacobianOn(rigid, count, false);
+  node.jacobianB = jacobianOn(rigid, count, true);
+  node.diagonal = Eigen::Matrix3d::Identity();
+  node.value.setZero();
+  node.impulses = {};
+  for (int r = 0; r < count; ++r) {
+    const RigidRow& g = rigid[r];
+    const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
+                               row.invInertiaA * g.angularA * g.angularA +
+                               row.invInertiaB * g.angularB * g.angularB;
+    if (inverseMass <= 0) {  // moves nothing: an identity row, cut loose
+      node.jacobianA.row(r).setZero();
+      node.jacobianB.row(r).setZero();
+      continue;
+    }
+    node.diagonal(r, r) = -kCompliance * inverseMass;
+    const double speed = g.linear.dot(b.linearVelocity - a.linearVelocity) +
+                         g.angularB * b.angularVelocity - g.angularA * a.angularVelocity;
+    const double correction =
+        std::clamp(errorRate * g.position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
+    node.value(r) = -(speed + correction);
+    node.impulses[r] = g.impulse;
+  }
+}
+
+// H_ii, H_{i,parent} and the right-hand side at the sub-step's geometry.
+void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h,
+                             Motion motion) {
+  const double errorRate = motion == Motion::Real ? kErrorShare / h : 0;
+  for (Node& node : nodes_) {
+    if (node.isJoint) {
+      assembleJoint(node, rows[node.row], states, errorRate);
+    } else {
+      node.diagonal = node.mass;
+      node.value.setZero();
+    }
+  }
+  for (Node& node : nodes_) {
+    if (node.parent < 0) continue;
+    const Node& parent = nodes_[node.parent];
+    if (node.isJoint) {
+      node.toParent = rows[node.row].stateB == parent.state ? node.jacobianB : node.jacobianA;
+    } else {
+      const JointRow& row = rows[parent.row];
+      node.toParent = (row.stateB == node.state ? parent.jacobianB : parent.jacobianA).transpose();
+    }
+  }
+}
+
+// L D L^T of the tree, leaves first (every child before its parent), then
+// the two substitutions; the solution replaces each node's value: a body's
+// velocity change, a joint's negated impulses.
+void JointTreePass::factorAndSolve() {
+  for (Node& node : nodes_) {
+    node.diagonalInverse = node.diagonal.inverse();
+    if (node.parent < 0) continue;
+    Node& parent = nodes_[node.parent];
+    const Eigen::Matrix3d lower = node.diagonalInverse * node.toParent;  // L_i^T
+    parent.diagonal.noalias() -= node.toParent.transpose() * lower;
+    parent.value.noalias() -= lower.transpose() * node.value;
+    node.toParent = lower;
+  }
+  for (auto node = nodes_.rbegin(); node != nodes_.rend(); ++node) {
+    node->value = node->diagonalInverse * node->value;
+    if (node->parent >= 0) node->value.noalias() -= node->toParent * nodes_[node->parent].value;
+  }
+}
+
+void JointTreePass::apply(std::span<SolverState> states, Motion motion) {
+  for (const Node& node : nodes_) {
+    if (!node.isJoint) {
+      SolverState& state = states[node.state];
+      state.linearVelocity += Vec2(Real(node.value(0)), Real(node.value(1)));
+      state.angularVelocity += Real(node.value(2));
+      continue;
+    }
+    if (motion == Motion::Push) continue;
+    for (int r = 0; r < 3; ++r) {
+      if (node.impulses[r] != nullptr) *node.impulses[r] -= Real(node.value(r));
+    }
+  }
+}
+
+}  // namespace impulse

@@ -1,0 +1,86 @@
+#pragma once
+// The joint tree pass: solves the rigid rows of every acyclic group of
+// joints exactly, once per sub-step, after the soft rows.
+//
+// Soft Gauss-Seidel passes a load along a chain one link per iteration, and
+// rigid rows are springs of a quarter of the sub-step rate: a 300:1 weight
+// on 20 light links stretched the chain by 16 %. Where the joints between
+// the awake bodies form a tree (a chain, a bridge, a car, a ragdoll), the
+// system of bodies and joints can be solved directly in linear time
+// (Baraff, "Linear-time dynamics using Lagrange multipliers", 1996): the
+// matrix [M G^T; G -eps] of body masses and joint Jacobians has the tree's
+// sparsity, and eliminating it from the leaves inwards makes no fill-in.
+// The pass sets the velocity of every rigid row to what removes 40 % of
+// its position error per sub-step; its impulses join the joints' warm start.
+// Groups with a loop keep the soft rows alone. Limits, motors, springs,
+// ropes and mouse joints stay soft rows: they are inequalities or are soft
+// by design.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "joint_row.h"
+
+namespace impulse {
+
+class JointTreePass {
+ public:
+  /// Once per step: finds the acyclic groups among `rows` (bodies are their
+  /// solver states, state 0 and massless bodies are the world) and orders
+  /// each group's bodies and joints from the leaves to a root.
+  void order(std::span<const JointRow> rows, std::size_t stateCount);
+  /// Real: the states' velocities, with position correction; the impulses
+  /// join the joints' warm start. Push: the split impulse's pseudo
+  /// velocities, which only the rows' speeds are taken out of.
+  enum class Motion { Real, Push };
+  /// The pass: per group, builds and factors the system at the sub-step's
+  /// geometry, solves it and applies the impulses.
+  void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h, Motion motion);
+
+ private:
+  using Mat3 = Eigen::Matrix3d;
+  using Vec3 = Eigen::Vector3d;
+
+  /// A body or a joint of a group. Joints have up to three rigid rows;
+  /// unused rows are identity rows with a zero right-hand side.
+  struct Node {
+    std::int32_t parent = -1;  ///< position in nodes_, -1 for a root
+    std::int32_t state = 0;    ///< a body's solver state
+    std::int32_t row = -1;     ///< a joint's JointRow
+    bool isJoint = false;
+    Eigen::Matrix3d mass = Eigen::Matrix3d::Zero();  ///< a body's
+    Eigen::Matrix3d jacobianA = Eigen::Matrix3d::Zero();  ///< a joint's rows on A, on B
+    Eigen::Matrix3d jacobianB = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d diagonal = Eigen::Matrix3d::Zero();  ///< H_ii, then D_i
+    Eigen::Matrix3d diagonalInverse = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d toParent = Eigen::Matrix3d::Zero();  ///< H_{i,parent}, then L
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();  ///< right-hand side, then solution
+    std::array<Real*, 3> impulses{};  ///< a joint's rows' accumulated impulses
+  };
+
+  void buildGroups(std::span<const JointRow> rows, std::size_t stateCount);
+  void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
+  void assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h,
+                Motion motion);
+  void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
+                     double errorRate);
+  void factorAndSolve();
+  void apply(std::span<SolverState> states, Motion motion);
+
+  std::vector<std::int32_t> bodyGroup_;     ///< union-find over solver states
+  std::vector<std::uint8_t> groupHasLoop_;  ///< by union-find root
+  std::vector<std::uint8_t> bodySeen_;      ///< by state, while ordering
+  std::vector<std::uint8_t> jointTaken_;    ///< by row
+  std::vector<std::int32_t> jointsOfBody_;  ///< joints with rigid rows, by body
+  std::vector<std::int32_t> jointsStart_;
+  std::vector<std::int32_t> cursor_;
+  std::vector<std::int32_t> loopBodies_;
+  std::vector<Node> walk_;
+  std::vector<Node> nodes_;  ///< every group, each leaves first, root last
+};
+
+}  // namespace impulse
