@@ -97,10 +97,10 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
 void JointConstraints::solveExact(const SubStep& sub) {
-  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::Real);
+  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::Velocities);
 }
 void JointConstraints::pushExact(const SubStep& sub) {
-  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::Push);
+  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::PseudoVelocities);
 }
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 

@@ -192,7 +192,7 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
 // H_ii, H_{i,parent} and the right-hand side at the sub-step's geometry.
 void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h,
                              Motion motion) {
-  const double errorRate = motion == Motion::Real ? kErrorShare / h : 0;
+  const double errorRate = motion == Motion::Velocities ? kErrorShare / h : 0;
   for (Node& node : nodes_) {
     if (node.isJoint) {
       assembleJoint(node, rows[node.row], states, errorRate);
@@ -240,7 +240,7 @@ void JointTreePass::apply(std::span<SolverState> states, Motion motion) {
       state.angularVelocity += Real(node.value(2));
       continue;
     }
-    if (motion == Motion::Push) continue;
+    if (motion == Motion::PseudoVelocities) continue;
     for (int r = 0; r < 3; ++r) {
       if (node.impulses[r] != nullptr) *node.impulses[r] -= Real(node.value(r));
     }

@@ -33,10 +33,10 @@ class JointTreePass {
   /// solver states, state 0 and massless bodies are the world) and orders
   /// each group's bodies and joints from the leaves to a root.
   void order(std::span<const JointRow> rows, std::size_t stateCount);
-  /// Real: the states' velocities, with position correction; the impulses
-  /// join the joints' warm start. Push: the split impulse's pseudo
-  /// velocities, which only the rows' speeds are taken out of.
-  enum class Motion { Real, Push };
+  /// Velocities: the states' real velocities, with position correction; the
+  /// impulses join the joints' warm start. PseudoVelocities: the split
+  /// impulse's, which only the rows' speeds are taken out of.
+  enum class Motion { Velocities, PseudoVelocities };
   /// The pass: per group, builds and factors the system at the sub-step's
   /// geometry, solves it and applies the impulses.
   void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h, Motion motion);
