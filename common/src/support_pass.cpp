@@ -127,18 +127,24 @@ void SupportPass::store(WorldData& world, std::span<const ConstraintRef> refs) c
   }
 }
 
-// Breadth-first from the static dummy (state 0) over the touching contacts,
-// held as adjacency lists in one array (counted, then filled).
-void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount) {
+// Breadth-first from the static dummy (state 0) over the level contacts
+// (`level` by ref), held as adjacency lists in one array (counted, then
+// filled). Only level contacts count: a column of circles against a wall
+// touches the static world at every storey, yet stands on the ground alone.
+void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::span<const std::uint8_t> level,
+                              std::size_t stateCount) {
   edgeStart_.assign(stateCount + 1, 0);
-  for (const ConstraintRef& ref : refs) {
-    ++edgeStart_[std::size_t(ref.stateA) + 1];
-    ++edgeStart_[std::size_t(ref.stateB) + 1];
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    if (!level[i]) continue;
+    ++edgeStart_[std::size_t(refs[i].stateA) + 1];
+    ++edgeStart_[std::size_t(refs[i].stateB) + 1];
   }
   for (std::size_t s = 1; s <= stateCount; ++s) edgeStart_[s] += edgeStart_[s - 1];
-  neighbours_.resize(2 * refs.size());
+  neighbours_.resize(std::size_t(edgeStart_[stateCount]));
   cursor_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
-  for (const ConstraintRef& ref : refs) {
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    if (!level[i]) continue;
+    const ConstraintRef& ref = refs[i];
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateA)]++)] = ref.stateB;
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateB)]++)] = ref.stateA;
   }
@@ -162,16 +168,21 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   const Vec2 gravity = world.settings.gravity;
   if (refs.empty() || gravity.squaredNorm() == 0) return;
   const Vec2 up = -gravity.normalized();
-  levelBodies(refs, stateCount);
+  upward_.resize(refs.size());
+  isLevel_.resize(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    upward_[i] = world.contacts[refs[i].contact].manifold.normal.dot(up);
+    isLevel_[i] = std::abs(upward_[i]) >= kMinUpwardNormal;
+  }
+  levelBodies(refs, isLevel_, stateCount);
 
   unsorted_.clear();
   rowLevel_.clear();
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     ConstraintRef& ref = refs[i];
-    Real upward = world.contacts[ref.contact].manifold.normal.dot(up);
-    if (std::abs(upward) < kMinUpwardNormal) continue;
-    const bool upperIsB = upward > 0;
+    if (!isLevel_[i]) continue;
+    const bool upperIsB = upward_[i] > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;

@@ -52,11 +52,11 @@ struct SupportRow {
 
 class SupportPass {
  public:
-  /// Levels every awake body by its contact distance from the static world
-  /// (a box on the ground is 1, a box on it 2), and takes as rows the
-  /// contacts whose normal is within 25 degrees of up and whose upper body
-  /// is a level above the lower one and has no joints, lowest storey first;
-  /// marks those refs `holdsUp`. No gravity, no rows.
+  /// Levels every awake body by its distance from the static world over
+  /// level contacts (normal within 25 degrees of up: a box on the ground is
+  /// 1, a box on it 2), and takes as rows the level contacts whose upper
+  /// body is a level above the lower one and has no joints, lowest storey
+  /// first; marks those refs `holdsUp`. No gravity, no rows.
   void order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount);
   std::span<const SupportRow> rows() const { return rows_; }
   /// Takes a row's geometry from its prepared constraint.
@@ -68,8 +68,11 @@ class SupportPass {
   void store(WorldData& world, std::span<const ConstraintRef> refs) const;
 
  private:
-  void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
+  void levelBodies(std::span<const ConstraintRef> refs, std::span<const std::uint8_t> level,
+                   std::size_t stateCount);
 
+  std::vector<Real> upward_;           ///< by ref: the normal's share of up
+  std::vector<std::uint8_t> isLevel_;  ///< by ref: within 25 degrees of up
   std::vector<std::int32_t> level_;
   std::vector<std::int32_t> edgeStart_;
   std::vector<std::int32_t> neighbours_;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -356,6 +358,38 @@ TEST(Crowd, ConfinedOverlappingCircles_AreNotThrownApart) {
   // Was 22 m/s (Box2D v3: 15.5 m/s); measured 0.90 m/s now. The issue asks
   // for 0.5 m/s: not met yet, so the bound here guards the gain.
   EXPECT_LT(fastest, 1.5);
+}
+
+// A squeezed crowd (the bench's squeeze-900): a 30x30 square lattice of
+// touching unit circles in an open box exactly 30 m wide, under gravity.
+// Every row is held at full width by the walls, so the right answer is that
+// nothing moves. The columns against the walls touch the static world at
+// every storey; the support pass must still stand them on the ground
+// storey by storey (it once took them for storey 1 and left the top of
+// each falling: 0.91 m/s).
+TEST(Crowd, SqueezedLatticeOfCircles_HoldsStill) {
+  WorldSettings settings;
+  settings.enableSleep = false;
+  World world(settings);
+  const Real half = 15;
+  addBox(world, {.center = Vec2(0, -1), .halfWidth = half + 2, .halfHeight = 1, .isStatic = true});
+  for (Real side : {Real(-1), Real(1)}) {
+    addBox(world, {.center = Vec2(side * (half + 1), 16), .halfWidth = 1, .halfHeight = 16, .isStatic = true});
+  }
+  std::vector<BodyId> circles;
+  for (int row = 0; row < 30; ++row) {
+    for (int column = 0; column < 30; ++column) {
+      const Vec2 centre(-half + Real(0.5) + Real(column), Real(0.5) + Real(row));
+      circles.push_back(addCircle(world, {.center = centre, .radius = Real(0.5), .material = Material::Metal}));
+    }
+  }
+  double fastest = 0;
+  simulateUntil(world, 10, [&] {
+    for (BodyId id : circles) fastest = std::max(fastest, double(stateOf(world, id).linearVelocity.norm()));
+    return false;
+  });
+  std::printf("measured: squeezed lattice fastest body %.4g m/s\n", fastest);
+  EXPECT_LT(fastest, 0.01);
 }
 
 // ---- Sleeping ----
