@@ -26,20 +26,23 @@ struct Jacobian {
 };
 
 /// The joint's geometry now: anchors from the centres, B's anchor minus A's,
-/// and the joint angle.
+/// and the joint angle. The angle is read only by rows that turn: its atan2
+/// is the costliest part of a frame, and a plain pin never needs it.
 struct Frame {
   Vec2 rA;
   Vec2 rB;
   Vec2 d;
-  Real angle;
+  Real startAngle;
+  Rot qA;
+  Rot qB;
+  Real angle() const { return startAngle + relativeRotation(qA, qB).angle(); }
 };
 
 Frame frameOf(const JointRow& row, const SolverState& a, const SolverState& b) {
   Vec2 rA = a.deltaRotation.apply(row.anchorA);
   Vec2 rB = b.deltaRotation.apply(row.anchorB);
   Vec2 d = (b.deltaPosition - a.deltaPosition) + row.deltaCenter + rB - rA;
-  Real angle = row.deltaAngle + relativeRotation(a.deltaRotation, b.deltaRotation).angle();
-  return {rA, rB, d, angle};
+  return {rA, rB, d, row.deltaAngle, a.deltaRotation, b.deltaRotation};
 }
 
 Jacobian angularJacobian() { return {Vec2::Zero(), 1, 1}; }
@@ -245,8 +248,9 @@ void limitRows(Context& x, const Jacobian& j, Real value, Real lower, Real upper
 }
 
 void solveKind(Context& x, const RevoluteJointSettings& s) {
-  axisRows(x, angularJacobian(), x.f.angle, s, x.pass.h * s.maxMotorTorque);
-  limitRows(x, angularJacobian(), x.f.angle, s.lowerAngle, s.upperAngle, s);
+  const Real angle = s.stiffness > 0 || s.enableLimit ? x.f.angle() : Real(0);
+  axisRows(x, angularJacobian(), angle, s, x.pass.h * s.maxMotorTorque);
+  limitRows(x, angularJacobian(), angle, s.lowerAngle, s.upperAngle, s);
   rigidPoint(x.row, x.f, x.f.d, x.row.impulses.point, x.pass, x.a, x.b);
 }
 
@@ -265,9 +269,9 @@ void solveKind(Context& x, const WeldJointSettings& s) {
   Jacobian turn = angularJacobian();
   if (s.angularStiffness > 0) {
     Real damping = criticalDamping(s.angularStiffness, effectiveMass(x.row, turn));
-    springRow(x.row, turn, x.f.angle, s.angularStiffness, damping, p.spring, x.pass, x.a, x.b);
+    springRow(x.row, turn, x.f.angle(), s.angularStiffness, damping, p.spring, x.pass, x.a, x.b);
   } else {
-    rigidRow(x.row, turn, x.f.angle, p.angular, x.pass, x.a, x.b);
+    rigidRow(x.row, turn, x.f.angle(), p.angular, x.pass, x.a, x.b);
   }
   if (s.linearStiffness > 0) {
     Real damping = criticalDamping(s.linearStiffness, pointMass(pointInverseMass(x.row, x.f)));
@@ -298,7 +302,7 @@ void solveKind(Context& x, const PrismaticJointSettings& s) {
   Slide slide = slideOf(x.row, x.f, x.a);
   axisRows(x, slide.along, slide.translation, s, x.pass.h * s.maxMotorForce);
   limitRows(x, slide.along, slide.translation, s.lower, s.upper, s);
-  rigidRow(x.row, angularJacobian(), x.f.angle, x.row.impulses.angular, x.pass, x.a, x.b);
+  rigidRow(x.row, angularJacobian(), x.f.angle(), x.row.impulses.angular, x.pass, x.a, x.b);
   rigidRow(x.row, slide.across, slide.offset, x.row.impulses.perpendicular, x.pass, x.a, x.b);
 }
 
@@ -366,11 +370,11 @@ void addRigid(RigidRowsOut& out, RigidContext& x, const RevoluteJointSettings&) 
 }
 void addRigid(RigidRowsOut& out, RigidContext& x, const WeldJointSettings& s) {
   if (s.linearStiffness == 0) out.addPoint(x.f, x.row.impulses.point);
-  if (s.angularStiffness == 0) out.add(angularJacobian(), x.f.angle, x.row.impulses.angular);
+  if (s.angularStiffness == 0) out.add(angularJacobian(), x.f.angle(), x.row.impulses.angular);
 }
 void addRigid(RigidRowsOut& out, RigidContext& x, const PrismaticJointSettings&) {
   Slide slide = slideOf(x.row, x.f, x.a);
-  out.add(angularJacobian(), x.f.angle, x.row.impulses.angular);
+  out.add(angularJacobian(), x.f.angle(), x.row.impulses.angular);
   out.add(slide.across, slide.offset, x.row.impulses.perpendicular);
 }
 void addRigid(RigidRowsOut& out, RigidContext& x, const WheelJointSettings& s) {

@@ -47,19 +47,13 @@ Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
   return g;
 }
 
-Eigen::Matrix3d massOf(Real invMass, Real invInertia) {
-  // A body that cannot turn has an inertia beyond any lever.
-  const double inertia = invInertia > 0 ? 1.0 / invInertia : 1e30;
-  return Eigen::Vector3d(1.0 / invMass, 1.0 / invMass, inertia).asDiagonal();
-}
-
 }  // namespace
 
 void JointTreePass::order(std::span<const JointRow> rows, std::size_t stateCount) {
   nodes_.clear();
   buildGroups(rows, stateCount);
   jointTaken_.assign(rows.size(), 0);
-  bodySeen_.assign(stateCount, 0);
+  bodyVisit_.assign(stateCount, -1);
   // A joint to the world is the best root: then no leaf is a joint alone,
   // whose block is only the compliance. Other groups start anywhere.
   for (bool worldJointsOnly : {true, false}) {
@@ -112,41 +106,63 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
 // before its parent, as the elimination needs.
 void JointTreePass::orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows) {
   if (rigidRowCount(rows[rootJoint].joint->settings) == 0) return;
-  std::vector<Node>& walk = walk_;
-  walk.clear();
-  walk.push_back({.row = rootJoint, .isJoint = true});
+  walk_.assign(1, {.row = rootJoint});
   jointTaken_[rootJoint] = 1;
-  for (std::size_t at = 0; at < walk.size(); ++at) {
-    const Node node = walk[at];
+  for (std::size_t at = 0; at < walk_.size(); ++at) {
+    const Visit visit = walk_[at];
     const auto here = static_cast<std::int32_t>(at);
-    if (node.isJoint) {
-      const JointRow& row = rows[node.row];
+    if (visit.row >= 0) {
+      const JointRow& row = rows[visit.row];
       for (bool sideB : {false, true}) {
         if (!(sideB ? hasBodyB(row) : hasBodyA(row))) continue;
         const std::int32_t state = sideB ? row.stateB : row.stateA;
-        if (bodySeen_[state]) continue;  // the parent
-        bodySeen_[state] = 1;
-        walk.push_back({.parent = here,
-                        .state = state,
-                        .mass = massOf(sideB ? row.invMassB : row.invMassA,
-                                       sideB ? row.invInertiaB : row.invInertiaA)});
+        if (bodyVisit_[state] >= 0) continue;  // the parent
+        bodyVisit_[state] = static_cast<std::int32_t>(walk_.size());
+        walk_.push_back({.parent = here, .state = state});
       }
       continue;
     }
-    for (std::int32_t k = jointsStart_[node.state]; k < jointsStart_[node.state + 1]; ++k) {
+    for (std::int32_t k = jointsStart_[visit.state]; k < jointsStart_[visit.state + 1]; ++k) {
       const std::int32_t joint = jointsOfBody_[k];
       if (jointTaken_[joint]) continue;
       jointTaken_[joint] = 1;
-      walk.push_back({.parent = here, .row = joint, .isJoint = true});
+      walk_.push_back({.parent = here, .row = joint});
     }
   }
+  storeReversed(rows);
+}
+
+void JointTreePass::storeReversed(std::span<const JointRow> rows) {
   const auto base = static_cast<std::int32_t>(nodes_.size());
-  const auto last = static_cast<std::int32_t>(walk.size()) - 1;
+  const auto last = static_cast<std::int32_t>(walk_.size()) - 1;
+  auto nodeOf = [&](std::int32_t walked) { return walked < 0 ? -1 : base + last - walked; };
   for (std::int32_t at = last; at >= 0; --at) {
-    Node node = walk[at];
-    if (node.parent >= 0) node.parent = base + last - node.parent;
+    const Visit& visit = walk_[at];
+    Node node;
+    node.parent = nodeOf(visit.parent);
+    node.state = visit.state;
+    node.row = visit.row;
+    node.isJoint = visit.row >= 0;
+    if (node.isJoint) {
+      const JointRow& row = rows[visit.row];
+      if (hasBodyA(row)) node.sides[0] = nodeOf(bodyVisit_[row.stateA]);
+      if (hasBodyB(row)) node.sides[1] = nodeOf(bodyVisit_[row.stateB]);
+    } else {
+      node.mass = bodyMass(rows, visit);
+    }
     nodes_.push_back(node);
   }
+}
+
+// m, m and I of a body, from the joint that reached it or that it reached.
+Eigen::Vector3d JointTreePass::bodyMass(std::span<const JointRow> rows, const Visit& body) const {
+  const Visit& joint = walk_[body.parent];
+  const JointRow& row = rows[joint.row];
+  const bool sideB = row.stateB == body.state;
+  const Real invMass = sideB ? row.invMassB : row.invMassA;
+  const Real invInertia = sideB ? row.invInertiaB : row.invInertiaA;
+  // A body that cannot turn has an inertia beyond any lever.
+  return {1.0 / invMass, 1.0 / invMass, invInertia > 0 ? 1.0 / invInertia : 1e30};
 }
 
 void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h,
@@ -164,8 +180,8 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
   RigidRows rigid;
   const int count = rigidRowCount(row.joint->settings);
   rigidRows(row, a, b, rigid);
-  node.jacobianA = jacobianOn(rigid, count, false);
-  node.jacobianB = jacobianOn(rigid, count, true);
+  std::array<Eigen::Matrix3d, 2> jacobians{jacobianOn(rigid, count, false),
+                                           jacobianOn(rigid, count, true)};
   node.diagonal = Eigen::Matrix3d::Identity();
   node.value.setZero();
   node.impulses = {};
@@ -175,8 +191,8 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
                                row.invInertiaA * g.angularA * g.angularA +
                                row.invInertiaB * g.angularB * g.angularB;
     if (inverseMass <= 0) {  // moves nothing: an identity row, cut loose
-      node.jacobianA.row(r).setZero();
-      node.jacobianB.row(r).setZero();
+      jacobians[0].row(r).setZero();
+      jacobians[1].row(r).setZero();
       continue;
     }
     node.diagonal(r, r) = -kCompliance * inverseMass;
@@ -186,6 +202,16 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
         std::clamp(errorRate * g.position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
     node.value(r) = -(speed + correction);
     node.impulses[r] = g.impulse;
+  }
+  // The joint's rows couple it to its parent body, or its child bodies to it.
+  for (std::size_t side = 0; side < 2; ++side) {
+    const std::int32_t body = node.sides[side];
+    if (body < 0) continue;
+    if (body == node.parent) {
+      node.toParent = jacobians[side];
+    } else {
+      nodes_[body].toParent = jacobians[side].transpose();
+    }
   }
 }
 
@@ -197,18 +223,8 @@ void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverSta
     if (node.isJoint) {
       assembleJoint(node, rows[node.row], states, errorRate);
     } else {
-      node.diagonal = node.mass;
+      node.diagonal = node.mass.asDiagonal();
       node.value.setZero();
-    }
-  }
-  for (Node& node : nodes_) {
-    if (node.parent < 0) continue;
-    const Node& parent = nodes_[node.parent];
-    if (node.isJoint) {
-      node.toParent = rows[node.row].stateB == parent.state ? node.jacobianB : node.jacobianA;
-    } else {
-      const JointRow& row = rows[parent.row];
-      node.toParent = (row.stateB == node.state ? parent.jacobianB : parent.jacobianA).transpose();
     }
   }
 }
@@ -218,16 +234,17 @@ void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverSta
 // velocity change, a joint's negated impulses.
 void JointTreePass::factorAndSolve() {
   for (Node& node : nodes_) {
-    node.diagonalInverse = node.diagonal.inverse();
+    const Eigen::Matrix3d inverse = node.diagonal.inverse();
+    const Eigen::Vector3d reduced = node.value;
+    node.value = inverse * reduced;
     if (node.parent < 0) continue;
     Node& parent = nodes_[node.parent];
-    const Eigen::Matrix3d lower = node.diagonalInverse * node.toParent;  // L_i^T
+    const Eigen::Matrix3d lower = inverse * node.toParent;
     parent.diagonal.noalias() -= node.toParent.transpose() * lower;
-    parent.value.noalias() -= lower.transpose() * node.value;
+    parent.value.noalias() -= lower.transpose() * reduced;
     node.toParent = lower;
   }
   for (auto node = nodes_.rbegin(); node != nodes_.rend(); ++node) {
-    node->value = node->diagonalInverse * node->value;
     if (node->parent >= 0) node->value.noalias() -= node->toParent * nodes_[node->parent].value;
   }
 }

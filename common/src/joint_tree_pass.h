@@ -52,18 +52,24 @@ class JointTreePass {
     std::int32_t state = 0;    ///< a body's solver state
     std::int32_t row = -1;     ///< a joint's JointRow
     bool isJoint = false;
-    Eigen::Matrix3d mass = Eigen::Matrix3d::Zero();  ///< a body's
-    Eigen::Matrix3d jacobianA = Eigen::Matrix3d::Zero();  ///< a joint's rows on A, on B
-    Eigen::Matrix3d jacobianB = Eigen::Matrix3d::Zero();
+    std::array<std::int32_t, 2> sides{-1, -1};  ///< a joint's bodies' nodes (A, B), -1: none
+    Eigen::Vector3d mass = Eigen::Vector3d::Zero();      ///< a body's m, m, I
     Eigen::Matrix3d diagonal = Eigen::Matrix3d::Zero();  ///< H_ii, then D_i
-    Eigen::Matrix3d diagonalInverse = Eigen::Matrix3d::Zero();
-    Eigen::Matrix3d toParent = Eigen::Matrix3d::Zero();  ///< H_{i,parent}, then L
-    Eigen::Vector3d value = Eigen::Vector3d::Zero();  ///< right-hand side, then solution
+    Eigen::Matrix3d toParent = Eigen::Matrix3d::Zero();  ///< H_{i,parent}, then D_i^-1 H_{i,parent}
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();     ///< right-hand side, then solution
     std::array<Real*, 3> impulses{};  ///< a joint's rows' accumulated impulses
+  };
+  /// A node as the walk finds it (parent and sides by walk position).
+  struct Visit {
+    std::int32_t parent = -1;
+    std::int32_t state = 0;
+    std::int32_t row = -1;
   };
 
   void buildGroups(std::span<const JointRow> rows, std::size_t stateCount);
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
+  void storeReversed(std::span<const JointRow> rows);
+  Eigen::Vector3d bodyMass(std::span<const JointRow> rows, const Visit& body) const;
   void assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h,
                 Motion motion);
   void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
@@ -73,13 +79,13 @@ class JointTreePass {
 
   std::vector<std::int32_t> bodyGroup_;     ///< union-find over solver states
   std::vector<std::uint8_t> groupHasLoop_;  ///< by union-find root
-  std::vector<std::uint8_t> bodySeen_;      ///< by state, while ordering
+  std::vector<std::int32_t> bodyVisit_;     ///< by state: its walk position, -1 unseen
   std::vector<std::uint8_t> jointTaken_;    ///< by row
   std::vector<std::int32_t> jointsOfBody_;  ///< joints with rigid rows, by body
   std::vector<std::int32_t> jointsStart_;
   std::vector<std::int32_t> cursor_;
   std::vector<std::int32_t> loopBodies_;
-  std::vector<Node> walk_;
+  std::vector<Visit> walk_;
   std::vector<Node> nodes_;  ///< every group, each leaves first, root last
 };
 
