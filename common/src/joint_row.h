@@ -28,6 +28,9 @@ struct JointRow {
   Vec2 axis = Vec2(1, 0);           ///< world axis at step start (prismatic, wheel)
   Vec2 lastAxis = Vec2(1, 0);       ///< for the reaction force
   JointImpulses impulses;
+  /// Its rigid rows belong to the tree pass (joint_tree_pass.h), which solves
+  /// them exactly after the soft pass: the soft pass skips them.
+  bool inTree = false;
 };
 
 /// What every row's pass needs besides the row and its two states.

@@ -118,6 +118,7 @@ Softness rowSoftness(const JointPass& pass) {
 
 void rigidRow(const JointRow& row, const Jacobian& j, Real c, Real& accumulated,
               const JointPass& pass, SolverState& a, SolverState& b) {
+  if (row.inTree && pass.useBias) return;
   Softness soft = rowSoftness(pass);
   Real impulse = -effectiveMass(row, j) * soft.massScale * (velocity(j, a, b) + soft.biasRate * c) -
                  soft.impulseScale * accumulated;
@@ -172,6 +173,7 @@ void springRow(const JointRow& row, const Jacobian& j, Real c, Real stiffness, R
 void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumulated,
                 const JointPass& pass, SolverState& a, SolverState& b,
                 Real maxImpulse = std::numeric_limits<Real>::infinity()) {
+  if (row.inTree && pass.useBias) return;
   Softness soft = rowSoftness(pass);
   Vec2 bias = soft.biasRate * c;
   Vec2 impulse =

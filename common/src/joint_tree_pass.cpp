@@ -49,7 +49,7 @@ Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
 
 }  // namespace
 
-void JointTreePass::order(std::span<const JointRow> rows, std::size_t stateCount) {
+void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
   nodes_.clear();
   buildGroups(rows, stateCount);
   jointTaken_.assign(rows.size(), 0);
@@ -67,6 +67,9 @@ void JointTreePass::order(std::span<const JointRow> rows, std::size_t stateCount
       if (groupHasLoop_[findGroup(bodyGroup_, body)]) continue;
       orderGroup(static_cast<std::int32_t>(r), rows);
     }
+  }
+  for (const Node& node : nodes_) {
+    if (node.isJoint) rows[node.row].inTree = true;
   }
 }
 

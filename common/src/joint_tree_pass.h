@@ -32,7 +32,7 @@ class JointTreePass {
   /// Once per step: finds the acyclic groups among `rows` (bodies are their
   /// solver states, state 0 and massless bodies are the world) and orders
   /// each group's bodies and joints from the leaves to a root.
-  void order(std::span<const JointRow> rows, std::size_t stateCount);
+  void order(std::span<JointRow> rows, std::size_t stateCount);
   /// Velocities: the states' real velocities, with position correction; the
   /// impulses join the joints' warm start. PseudoVelocities: the split
   /// impulse's, which only the rows' speeds are taken out of.
