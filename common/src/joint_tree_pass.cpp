@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <limits>
 
-#include <Eigen/LU>
-
 namespace impulse {
 
 namespace {
@@ -45,6 +43,33 @@ Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
     g(r, 2) = sideB ? row.angularB : -row.angularA;
   }
   return g;
+}
+
+// The blocks D_i are symmetric: their inverse by cofactors, six of them.
+Eigen::Matrix3d symmetricInverse(const Eigen::Matrix3d& a) {
+  const double xx = a(1, 1) * a(2, 2) - a(1, 2) * a(1, 2);
+  const double xy = a(0, 2) * a(1, 2) - a(0, 1) * a(2, 2);
+  const double xz = a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1);
+  const double scale = 1 / (a(0, 0) * xx + a(0, 1) * xy + a(0, 2) * xz);
+  const double yy = (a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2)) * scale;
+  const double yz = (a(0, 2) * a(0, 1) - a(0, 0) * a(1, 2)) * scale;
+  const double zz = (a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1)) * scale;
+  Eigen::Matrix3d inverse;
+  inverse << xx * scale, xy * scale, xz * scale, xy * scale, yy, yz, xz * scale, yz, zz;
+  return inverse;
+}
+
+// target -= coupling^T * lower, which is symmetric (coupling^T D^-1
+// coupling): six dot products instead of nine.
+void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matrix3d& lower,
+                              Eigen::Matrix3d& target) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = i; j < 3; ++j) {
+      const double product = coupling.col(i).dot(lower.col(j));
+      target(i, j) -= product;
+      if (j != i) target(j, i) -= product;
+    }
+  }
 }
 
 }  // namespace
@@ -237,13 +262,13 @@ void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverSta
 // velocity change, a joint's negated impulses.
 void JointTreePass::factorAndSolve() {
   for (Node& node : nodes_) {
-    const Eigen::Matrix3d inverse = node.diagonal.inverse();
+    const Eigen::Matrix3d inverse = symmetricInverse(node.diagonal);
     const Eigen::Vector3d reduced = node.value;
-    node.value = inverse * reduced;
+    node.value.noalias() = inverse * reduced;
     if (node.parent < 0) continue;
     Node& parent = nodes_[node.parent];
     const Eigen::Matrix3d lower = inverse * node.toParent;
-    parent.diagonal.noalias() -= node.toParent.transpose() * lower;
+    subtractSymmetricProduct(node.toParent, lower, parent.diagonal);
     parent.value.noalias() -= lower.transpose() * reduced;
     node.toParent = lower;
   }

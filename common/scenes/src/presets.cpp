@@ -297,7 +297,7 @@ PresetInfo pendulumPreset(World& world) {
   const Real released = 10 * std::numbers::pi_v<Real> / 180;
   addHungBall(world, pivot, pivot + length * Vec2(std::sin(released), -std::cos(released)),
               Real(0.4), Material::Solid);
-  // Newton's cradle: five touching RUBBER balls; the first pulled out 60 degrees.
+  // Newton's cradle: five RUBBER balls in a row; the first pulled out 60 degrees.
   constexpr int kBalls = 5;
   constexpr Real kRadius = Real(0.5);
   // A small gap: the collisions pass along the row one pair at a time
@@ -342,16 +342,20 @@ PresetInfo chainBridgePreset(World& world) {
   addStaticBox(world, Vec2(left + span + clearance, kFloor),
                Vec2(left + span + clearance + 1, height));
   const Real slope = std::acos(span / 2 / (kPlanks / 2 * kPlank));
+  // The pins are exact (the joint tree pass), so without friction the chain
+  // would swing on for minutes: each pin brakes with up to 100 N*m (a motor
+  // held at speed 0), a seventh of the turn a 140 kg plank's weight gives it.
+  const RevoluteJointSettings pin{.enableMotor = true, .motorSpeed = 0, .maxMotorTorque = 100};
   Vec2 joint(left, height);
   BodyId previous;  // the world, for the first pin
   for (int i = 0; i < kPlanks; ++i) {
     const Real angle = i < kPlanks / 2 ? -slope : slope;
     const BodyId plank = addPlank(world, joint, kPlank, angle);
-    world.createJoint({plank, previous, joint, joint, false, RevoluteJointSettings{}});
+    world.createJoint({plank, previous, joint, joint, false, pin});
     joint += kPlank * Vec2(std::cos(angle), std::sin(angle));
     previous = plank;
   }
-  world.createJoint({previous, BodyId{}, joint, joint, false, RevoluteJointSettings{}});
+  world.createJoint({previous, BodyId{}, joint, joint, false, pin});
   // Two balls dropped onto it.
   world.createCircle(Vec2(10, 9), Real(0.4), {.material = Material::Metal});
   world.createCircle(Vec2(15, 9), Real(0.6), {.material = Material::Rubber});
