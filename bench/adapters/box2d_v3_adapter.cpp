@@ -11,11 +11,11 @@
 // threshold 0.05 m/s for 0.5 s (as Impulse's). v3 polygons have no skin
 // (radius 0), so the described shape collides as it is.
 //
-// Joints as v3's users make them, at b2DefaultJointDef's values: pins are
-// revolute joints, rods distance joints without spring. v3 solves both as
-// soft constraints (constraint hertz 60, capped at a quarter of the sub-step
-// rate, damping ratio 2, the same soft step as its contacts): they are v3's
-// rigid joints, and stretch under load where the others' do not by design.
+// Joints as v3's users make them, from b2DefaultRevoluteJointDef and
+// b2DefaultDistanceJointDef: pins are revolute joints, rods distance joints
+// without spring. v3 solves both as soft constraints (constraint hertz 60,
+// capped at a quarter of the sub-step rate, damping ratio 2, the same soft
+// step as its contacts): they are v3's rigid joints, soft by its design.
 // Springs are distance joints with enableSpring; v3 takes a frequency and a
 // damping ratio, not N/m and N*s/m, so the described stiffness k and damping
 // c become hertz = sqrt(k / m) / (2 pi) and ratio = c / (2 sqrt(k m)) for the
@@ -53,8 +53,8 @@ b2Polygon toPolygon(const std::vector<Vec2d>& vertices) {
   return b2MakePolygon(&hull, 0.0f);
 }
 
-// 1 / (1/mA + 1/mB + (rA x u)^2 / IA + (rB x u)^2 / IB): a body's resistance
-// to a push along u at its anchor (static bodies add nothing).
+// A body's share 1/m + (r x u)^2 / I of a joint's inverse effective mass
+// along u at its anchor (r from its centre of mass); static bodies add 0.
 float inverseMassAlong(b2BodyId body, b2Vec2 anchor, b2Vec2 axis) {
   const float mass = b2Body_GetMass(body);
   if (mass == 0) return 0;
