@@ -3,9 +3,11 @@
 // per scene, ratio and front lines, and optionally a CSV file and an SVG plot
 // per scene.
 //
-//   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART] [--engine NAME]
+//   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] [--engine NAME]
 //
-// --scene and --engine narrow the run (for profiling one engine on one scene).
+// --scene and --engine narrow the run (for profiling one engine on one scene);
+// --scene takes name parts separated by commas and keeps a scene that
+// contains any of them.
 
 #include <cstdio>
 #include <cstring>
@@ -28,7 +30,7 @@ struct Options {
 };
 
 [[noreturn]] void usage(const char* program) {
-  std::fprintf(stderr, "usage: %s [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART] [--engine NAME]\n", program);
+  std::fprintf(stderr, "usage: %s [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] [--engine NAME]\n", program);
   std::exit(2);
 }
 
@@ -47,6 +49,17 @@ Options parse(int argc, char** argv) {
     else usage(argv[0]);
   }
   return options;
+}
+
+/// Whether `name` contains any of the comma-separated parts of `filter`.
+bool sceneWanted(const std::string& name, const std::string& filter) {
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = filter.find(',', start);
+    if (name.find(filter.substr(start, end - start)) != std::string::npos) return true;
+    if (end == std::string::npos) return false;
+    start = end + 1;
+  }
 }
 
 std::string cpuModel() {
@@ -71,7 +84,7 @@ int main(int argc, char** argv) {
   std::vector<bench::RunResult> all;
   int failures = 0;
   for (const auto& scene : bench::allScenes(options.quick)) {
-    if (scene->name().find(options.sceneFilter) == std::string::npos) continue;
+    if (!sceneWanted(scene->name(), options.sceneFilter)) continue;
     const bench::SceneDescription description = scene->describe();
     std::vector<bench::RunResult> results;
     for (const bench::EngineSetting& setting : bench::allSettings()) {

@@ -10,6 +10,7 @@ SceneList allScenes(bool quick) {
   addBulletScene(scenes, quick);
   addClosedFormScenes(scenes, quick);
   addSleepingScenes(scenes, quick);
+  addJointScenes(scenes, quick);
   return scenes;
 }
 

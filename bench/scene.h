@@ -57,6 +57,7 @@ void addCircleScenes(SceneList& scenes, bool quick);      // confined, squeeze, 
 void addBulletScene(SceneList& scenes, bool quick);
 void addClosedFormScenes(SceneList& scenes, bool quick);  // free fall, incline, rolling, bounce
 void addSleepingScenes(SceneList& scenes, bool quick);
+void addJointScenes(SceneList& scenes, bool quick);  // chains, bridge, pendulum, spring, ragdolls
 
 SceneList allScenes(bool quick);
 

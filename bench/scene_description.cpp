@@ -69,4 +69,19 @@ int addBody(SceneDescription& scene, const BodyDesc& body) {
   return static_cast<int>(scene.bodies.size()) - 1;
 }
 
+JointDesc makePin(int bodyA, int bodyB, Vec2d pin) {
+  return {JointKind::Pin, bodyA, bodyB, pin, pin, 0, 0, 0};
+}
+
+JointDesc makeRod(int bodyA, int bodyB, Vec2d anchorA, Vec2d anchorB) {
+  return {JointKind::Rod, bodyA, bodyB, anchorA, anchorB, 0, 0, 0};
+}
+
+JointDesc makeSpring(int bodyA, int bodyB, Vec2d anchorA, Vec2d anchorB, double restLength,
+                     double stiffness, double damping) {
+  return {JointKind::Spring, bodyA, bodyB, anchorA, anchorB, restLength, stiffness, damping};
+}
+
+void addJoint(SceneDescription& scene, const JointDesc& joint) { scene.joints.push_back(joint); }
+
 }  // namespace bench

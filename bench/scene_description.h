@@ -50,10 +50,33 @@ struct BodyDesc {
   double restitution = 0;
 };
 
+/// Joints every engine here has: a pin (revolute), a rigid rod and an
+/// undamped or damped spring (distance joints).
+enum class JointKind { Pin, Rod, Spring };
+
+/// JointDesc::bodyB for a joint to the world.
+inline constexpr int kWorldBody = -1;
+
+/// A joint between bodies (indices into SceneDescription::bodies), or a body
+/// and the world (bodyB = kWorldBody). Anchors are world points at creation;
+/// a pin's two anchors are the same point. Joined bodies do not collide with
+/// each other.
+struct JointDesc {
+  JointKind kind = JointKind::Pin;
+  int bodyA = 0;
+  int bodyB = kWorldBody;
+  Vec2d anchorA;
+  Vec2d anchorB;
+  double restLength = 0;  ///< springs; rods keep their length at creation
+  double stiffness = 0;   ///< springs, N/m
+  double damping = 0;     ///< springs, N*s/m
+};
+
 struct SceneDescription {
   Vec2d gravity{0, -9.81};
   bool allowSleep = false;
   std::vector<BodyDesc> bodies;
+  std::vector<JointDesc> joints;
 
   /// True when every body has the same friction and restitution, so an
   /// engine's own mixing rule already yields the mean.
@@ -66,5 +89,11 @@ BodyDesc makeStaticBox(Vec2d lower, Vec2d upper, impulse::Material material = im
 
 /// Appends bodies and returns the index of the first.
 int addBody(SceneDescription& scene, const BodyDesc& body);
+
+JointDesc makePin(int bodyA, int bodyB, Vec2d pin);
+JointDesc makeRod(int bodyA, int bodyB, Vec2d anchorA, Vec2d anchorB);
+JointDesc makeSpring(int bodyA, int bodyB, Vec2d anchorA, Vec2d anchorB, double restLength,
+                     double stiffness, double damping);
+void addJoint(SceneDescription& scene, const JointDesc& joint);
 
 }  // namespace bench

@@ -4,10 +4,15 @@
 // described mass. Restitution threshold 1 m/s as Impulse's. Sleeping uses
 // Box2D's compile-time tolerances (0.01 m/s, 2 deg/s, 0.5 s). Continuous
 // collision is Box2D's default (dynamic against static). Box2D clamps a body's
-// motion to b2_maxTranslation (2 m) per step: 120 m/s at 60 Hz.
+// motion to b2_maxTranslation (2 m) per step: 120 m/s at 60 Hz. Joints:
+// pins are b2RevoluteJoints, rods b2DistanceJoints of stiffness 0 (rigid),
+// springs b2DistanceJoints with the described stiffness (N/m) and damping
+// (N*s/m) and no length limits; a joint to the world joins a static body
+// without fixtures.
 
 #include <box2d/box2d.h>
 
+#include <cfloat>
 #include <cmath>
 
 #include "engine_adapter.h"
@@ -67,6 +72,7 @@ class Box2DAdapter final : public EngineAdapter {
     if (!scene.uniformCoefficients()) world_.SetContactListener(&mixing_);
     bodies_.reserve(scene.bodies.size());
     for (const BodyDesc& body : scene.bodies) bodies_.push_back(create(body));
+    for (const JointDesc& joint : scene.joints) createJoint(joint);
   }
 
   void step(double dt) override { world_.Step(float(dt), velocityIterations_, positionIterations_); }
@@ -108,7 +114,42 @@ class Box2DAdapter final : public EngineAdapter {
     return body;
   }
 
+  b2Body* bodyOf(int index) {
+    if (index != kWorldBody) return bodies_[static_cast<std::size_t>(index)];
+    if (!ground_) {
+      b2BodyDef def;
+      ground_ = world_.CreateBody(&def);
+    }
+    return ground_;
+  }
+
+  void createJoint(const JointDesc& joint) {
+    b2Body* a = bodyOf(joint.bodyA);
+    b2Body* b = bodyOf(joint.bodyB);
+    const b2Vec2 anchorA(float(joint.anchorA.x), float(joint.anchorA.y));
+    const b2Vec2 anchorB(float(joint.anchorB.x), float(joint.anchorB.y));
+    if (joint.kind == JointKind::Pin) {
+      b2RevoluteJointDef def;
+      def.Initialize(a, b, anchorA);
+      world_.CreateJoint(&def);
+      return;
+    }
+    b2DistanceJointDef def;
+    def.Initialize(a, b, anchorA, anchorB);
+    if (joint.kind == JointKind::Spring) {
+      // Initialize pins min and max length to the rest length, which would
+      // hold the spring rigid: free them.
+      def.length = float(joint.restLength);
+      def.minLength = 0;
+      def.maxLength = FLT_MAX;
+      def.stiffness = float(joint.stiffness);
+      def.damping = float(joint.damping);
+    }
+    world_.CreateJoint(&def);
+  }
+
   b2World world_;
+  b2Body* ground_ = nullptr;
   MeanMixing mixing_;
   int velocityIterations_;
   int positionIterations_;

@@ -10,9 +10,22 @@
 // collision on (dynamic against static), speed capped at 400 m/s, sleep
 // threshold 0.05 m/s for 0.5 s (as Impulse's). v3 polygons have no skin
 // (radius 0), so the described shape collides as it is.
+//
+// Joints as v3's users make them, from b2DefaultRevoluteJointDef and
+// b2DefaultDistanceJointDef: pins are revolute joints, rods distance joints
+// without spring. v3 solves both as soft constraints (constraint hertz 60,
+// capped at a quarter of the sub-step rate, damping ratio 2, the same soft
+// step as its contacts): they are v3's rigid joints, soft by its design.
+// Springs are distance joints with enableSpring; v3 takes a frequency and a
+// damping ratio, not N/m and N*s/m, so the described stiffness k and damping
+// c become hertz = sqrt(k / m) / (2 pi) and ratio = c / (2 sqrt(k m)) for the
+// joint's effective mass m along its axis at creation (the mass v3 scales
+// the spring by). A joint to the world joins a static body without shapes.
 
 #include <box2d/box2d.h>
 
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "engine_adapter.h"
@@ -40,6 +53,16 @@ b2Polygon toPolygon(const std::vector<Vec2d>& vertices) {
   return b2MakePolygon(&hull, 0.0f);
 }
 
+// A body's share 1/m + (r x u)^2 / I of a joint's inverse effective mass
+// along u at its anchor (r from its centre of mass); static bodies add 0.
+float inverseMassAlong(b2BodyId body, b2Vec2 anchor, b2Vec2 axis) {
+  const float mass = b2Body_GetMass(body);
+  if (mass == 0) return 0;
+  const b2Vec2 centre = b2Body_GetWorldPoint(body, b2Body_GetLocalCenter(body));
+  const float arm = b2Cross(b2Sub(anchor, centre), axis);
+  return 1 / mass + arm * arm / b2Body_GetRotationalInertia(body);
+}
+
 class Box2DV3Adapter final : public EngineAdapter {
  public:
   Box2DV3Adapter(const SceneDescription& scene, int subSteps) : subSteps_(subSteps) {
@@ -53,6 +76,7 @@ class Box2DV3Adapter final : public EngineAdapter {
     world_ = b2CreateWorld(&def);
     bodies_.reserve(scene.bodies.size());
     for (const BodyDesc& body : scene.bodies) bodies_.push_back(create(body));
+    for (const JointDesc& joint : scene.joints) createJoint(joint);
   }
   ~Box2DV3Adapter() override { b2DestroyWorld(world_); }
   Box2DV3Adapter(const Box2DV3Adapter&) = delete;
@@ -95,7 +119,51 @@ class Box2DV3Adapter final : public EngineAdapter {
     return body;
   }
 
+  b2BodyId bodyOf(int index) {
+    if (index != kWorldBody) return bodies_[static_cast<std::size_t>(index)];
+    if (B2_IS_NULL(ground_)) {
+      b2BodyDef def = b2DefaultBodyDef();
+      ground_ = b2CreateBody(world_, &def);
+    }
+    return ground_;
+  }
+
+  // The bodies and anchors of a joint definition whose other fields keep
+  // their defaults.
+  void join(b2JointDef& base, const JointDesc& joint) {
+    base.bodyIdA = bodyOf(joint.bodyA);
+    base.bodyIdB = bodyOf(joint.bodyB);
+    base.localFrameA.p = b2Body_GetLocalPoint(base.bodyIdA, toVec(joint.anchorA));
+    base.localFrameB.p = b2Body_GetLocalPoint(base.bodyIdB, toVec(joint.anchorB));
+  }
+
+  void createJoint(const JointDesc& joint) {
+    if (joint.kind == JointKind::Pin) {
+      b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
+      join(def.base, joint);
+      b2CreateRevoluteJoint(world_, &def);
+      return;
+    }
+    b2DistanceJointDef def = b2DefaultDistanceJointDef();
+    join(def.base, joint);
+    def.length = b2Distance(toVec(joint.anchorA), toVec(joint.anchorB));
+    if (joint.kind == JointKind::Spring) springFor(joint, def);
+    b2CreateDistanceJoint(world_, &def);
+  }
+
+  void springFor(const JointDesc& joint, b2DistanceJointDef& def) {
+    const b2Vec2 anchorA = toVec(joint.anchorA), anchorB = toVec(joint.anchorB);
+    const b2Vec2 axis = b2Normalize(b2Sub(anchorB, anchorA));
+    const double mass = 1.0 / (inverseMassAlong(def.base.bodyIdA, anchorA, axis) +
+                               inverseMassAlong(def.base.bodyIdB, anchorB, axis));
+    def.length = float(joint.restLength);
+    def.enableSpring = true;
+    def.hertz = float(std::sqrt(joint.stiffness / mass) / (2 * std::numbers::pi));
+    def.dampingRatio = float(joint.damping / (2 * std::sqrt(joint.stiffness * mass)));
+  }
+
   b2WorldId world_{};
+  b2BodyId ground_ = b2_nullBodyId;
   int subSteps_;
   std::vector<b2BodyId> bodies_;
 };

@@ -4,11 +4,18 @@
 // default bounding-box tree, and when the scene allows sleep: a
 // 0.5 s sleep time at 0.05 m/s idle speed (Impulse's values). Chipmunk has no
 // continuous collision and no restitution threshold: it bounces at any
-// approach speed, where Impulse and Box2D do not below 1 m/s.
+// approach speed, where Impulse and Box2D do not below 1 m/s. Joints: pins
+// are cpPivotJoints, rods cpPinJoints, springs cpDampedSprings, all at
+// Chipmunk's default error bias (rigid joints corrected by 10% per 1/60 s, as
+// its contacts); a joint to the world joins the space's static body. Joined
+// bodies do not collide: Chipmunk's joints do not stop that, so a begin
+// callback rejects their contacts.
 
 #include <chipmunk/chipmunk.h>
 
 #include <cmath>
+#include <set>
+#include <utility>
 
 #include "engine_adapter.h"
 
@@ -28,6 +35,23 @@ cpBool meanMixing(cpArbiter* arbiter, cpSpace*, cpDataPointer) {
   return cpTrue;
 }
 
+using BodyPair = std::pair<const cpBody*, const cpBody*>;
+
+BodyPair ordered(const cpBody* a, const cpBody* b) {
+  return a < b ? BodyPair{a, b} : BodyPair{b, a};
+}
+
+// The handler's data is the set of joined pairs.
+cpBool collideUnlessJoined(cpArbiter* arbiter, cpSpace*, cpDataPointer joined) {
+  cpBody* a = nullptr;
+  cpBody* b = nullptr;
+  cpArbiterGetBodies(arbiter, &a, &b);
+  return static_cast<const std::set<BodyPair>*>(joined)->count(ordered(a, b)) == 0 ? cpTrue
+                                                                                   : cpFalse;
+}
+
+cpVect toCp(const Vec2d& v) { return cpv(v.x, v.y); }
+
 class ChipmunkAdapter final : public EngineAdapter {
  public:
   ChipmunkAdapter(const SceneDescription& scene, int iterations) : space_(cpSpaceNew()) {
@@ -39,12 +63,22 @@ class ChipmunkAdapter final : public EngineAdapter {
       cpSpaceSetIdleSpeedThreshold(space_, 0.05);
     }
     const bool uniform = scene.uniformCoefficients();
-    if (!uniform) cpSpaceAddDefaultCollisionHandler(space_)->preSolveFunc = meanMixing;
+    cpCollisionHandler* handler = cpSpaceAddDefaultCollisionHandler(space_);
+    if (!uniform) handler->preSolveFunc = meanMixing;
     bodies_.reserve(scene.bodies.size());
     for (const BodyDesc& body : scene.bodies) create(body, uniform);
+    for (const JointDesc& joint : scene.joints) createJoint(joint);
+    if (!joined_.empty()) {
+      handler->beginFunc = collideUnlessJoined;
+      handler->userData = &joined_;
+    }
   }
 
   ~ChipmunkAdapter() override {
+    for (cpConstraint* constraint : constraints_) {
+      cpSpaceRemoveConstraint(space_, constraint);
+      cpConstraintFree(constraint);
+    }
     for (cpShape* shape : shapes_) {
       cpSpaceRemoveShape(space_, shape);
       cpShapeFree(shape);
@@ -71,7 +105,7 @@ class ChipmunkAdapter final : public EngineAdapter {
  private:
   void create(const BodyDesc& desc, bool uniform) {
     std::vector<cpVect> vertices;
-    for (const Vec2d& v : desc.shape.vertices) vertices.push_back(cpv(v.x, v.y));
+    for (const Vec2d& v : desc.shape.vertices) vertices.push_back(toCp(v));
     const bool isCircle = desc.shape.kind == ShapeKind::Circle;
     cpBody* body = nullptr;
     if (desc.isStatic) {
@@ -84,10 +118,10 @@ class ChipmunkAdapter final : public EngineAdapter {
       body = cpBodyNew(mass, moment);
     }
     cpSpaceAddBody(space_, body);
-    cpBodySetPosition(body, cpv(desc.position.x, desc.position.y));
+    cpBodySetPosition(body, toCp(desc.position));
     cpBodySetAngle(body, desc.angle);
     if (!desc.isStatic) {
-      cpBodySetVelocity(body, cpv(desc.velocity.x, desc.velocity.y));
+      cpBodySetVelocity(body, toCp(desc.velocity));
       cpBodySetAngularVelocity(body, desc.angularVelocity);
     }
     cpShape* shape = isCircle ? cpCircleShapeNew(body, desc.shape.radius, cpvzero)
@@ -99,9 +133,39 @@ class ChipmunkAdapter final : public EngineAdapter {
     shapes_.push_back(shape);
   }
 
+  cpBody* bodyOf(int index) const {
+    return index == kWorldBody ? cpSpaceGetStaticBody(space_)
+                               : bodies_[static_cast<std::size_t>(index)];
+  }
+
+  void createJoint(const JointDesc& joint) {
+    cpBody* a = bodyOf(joint.bodyA);
+    cpBody* b = bodyOf(joint.bodyB);
+    const cpVect localA = cpBodyWorldToLocal(a, toCp(joint.anchorA));
+    const cpVect localB = cpBodyWorldToLocal(b, toCp(joint.anchorB));
+    cpConstraint* constraint = nullptr;
+    switch (joint.kind) {
+      case JointKind::Pin:
+        constraint = cpPivotJointNew(a, b, toCp(joint.anchorA));
+        break;
+      case JointKind::Rod:
+        constraint = cpPinJointNew(a, b, localA, localB);
+        break;
+      case JointKind::Spring:
+        constraint = cpDampedSpringNew(a, b, localA, localB, joint.restLength, joint.stiffness,
+                                       joint.damping);
+        break;
+    }
+    cpSpaceAddConstraint(space_, constraint);
+    constraints_.push_back(constraint);
+    joined_.insert(ordered(a, b));
+  }
+
   cpSpace* space_;
   std::vector<cpBody*> bodies_;
   std::vector<cpShape*> shapes_;
+  std::vector<cpConstraint*> constraints_;
+  std::set<BodyPair> joined_;
 };
 
 }  // namespace

@@ -1,7 +1,9 @@
 // Impulse: one body per description body, materials as named (with a
 // per-body override wherever a scene sets a coefficient the material does not
 // have), the world's bounds widened to hold the scene. Everything else stays
-// at WorldSettings' defaults except sub-steps and sleep.
+// at WorldSettings' defaults except sub-steps and sleep. Joints: pins are
+// revolute joints, rods distance joints of stiffness 0 (rigid), springs
+// distance joints with the described stiffness and damping.
 
 #include <algorithm>
 #include <stdexcept>
@@ -35,10 +37,16 @@ impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, 
   settings.gravity = toVec(scene.gravity);
   settings.subSteps = subSteps;
   settings.enableSleep = scene.allowSleep;
-  // Bounds only gate creation: fit them around the scene.
-  for (const BodyDesc& body : scene.bodies) {
-    Vec2 p = toVec(body.position);
+  // Bounds only gate creation (of bodies and joint anchors): fit them around
+  // the scene.
+  auto include = [&](const Vec2d& point) {
+    Vec2 p = toVec(point);
     settings.bounds = settings.bounds.unite({p - Vec2(1, 1), p + Vec2(1, 1)});
+  };
+  for (const BodyDesc& body : scene.bodies) include(body.position);
+  for (const JointDesc& joint : scene.joints) {
+    include(joint.anchorA);
+    include(joint.anchorB);
   }
   settings.shapeLimits.maxArea = Real(1e5);
   settings.shapeLimits.maxRadius = Real(1e3);
@@ -61,6 +69,19 @@ impulse::MaterialOverride overrideFor(const BodyDesc& body) {
   return o;
 }
 
+impulse::JointSettings jointSettings(const JointDesc& joint) {
+  switch (joint.kind) {
+    case JointKind::Pin:
+      return impulse::RevoluteJointSettings{};
+    case JointKind::Rod:
+      return impulse::DistanceJointSettings{};
+    case JointKind::Spring:
+      return impulse::DistanceJointSettings{Real(joint.restLength), Real(joint.stiffness),
+                                            Real(joint.damping)};
+  }
+  throw std::logic_error("impulse: unknown joint kind");
+}
+
 class ImpulseAdapter final : public EngineAdapter {
  public:
   ImpulseAdapter(const SceneDescription& scene, int subSteps, bool sse2Only)
@@ -80,6 +101,7 @@ class ImpulseAdapter final : public EngineAdapter {
       if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
       ids_.push_back(created.id);
     }
+    for (const JointDesc& joint : scene.joints) createJoint(joint);
   }
 
   void step(double dt) override { world_.step(Real(dt)); }
@@ -94,6 +116,17 @@ class ImpulseAdapter final : public EngineAdapter {
   }
 
  private:
+  void createJoint(const JointDesc& joint) {
+    impulse::JointDef def;
+    def.bodyA = ids_[static_cast<std::size_t>(joint.bodyA)];
+    if (joint.bodyB != kWorldBody) def.bodyB = ids_[static_cast<std::size_t>(joint.bodyB)];
+    def.anchorA = toVec(joint.anchorA);
+    def.anchorB = toVec(joint.anchorB);
+    def.settings = jointSettings(joint);
+    impulse::JointResult created = world_.createJoint(def);
+    if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
+  }
+
   impulse::World world_;
   std::vector<impulse::BodyId> ids_;
 };
