@@ -67,6 +67,8 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
   rows_.clear();
+  // The tree pass must not keep last step's groups: their rows are gone.
+  tree_.clear();
   if (world.liveJoints == 0) return false;
   gathered_.clear();
   colorOf_.clear();

@@ -33,6 +33,8 @@ class JointTreePass {
   /// solver states, state 0 and massless bodies are the world) and orders
   /// each group's bodies and joints from the leaves to a root.
   void order(std::span<JointRow> rows, std::size_t stateCount);
+  /// Forgets the groups, for a step with no joint on an awake body.
+  void clear() { nodes_.clear(); }
   /// Velocities: the states' real velocities, with position correction; the
   /// impulses join the joints' warm start. PseudoVelocities: the split
   /// impulse's, which only the rows' speeds are taken out of.
@@ -42,8 +44,6 @@ class JointTreePass {
   void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h, Motion motion);
 
  private:
-  using Mat3 = Eigen::Matrix3d;
-  using Vec3 = Eigen::Vector3d;
 
   /// A body or a joint of a group. Joints have up to three rigid rows;
   /// unused rows are identity rows with a zero right-hand side.

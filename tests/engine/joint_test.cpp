@@ -98,6 +98,25 @@ TEST(JointLifetime, CreateDescribeListAndDestroy) {
   EXPECT_FALSE(scene.world.jointState(made.id));
 }
 
+// The joint tree pass groups joints each step; a step after the last joint
+// went must not solve last step's groups (found by world_sequence_fuzzer:
+// a use after free once the joint list grew again).
+TEST(JointLifetime, ABodyFreedFromItsLastPin_FallsFreely) {
+  World world;
+  const BodyId bob = addCircle(world, {.center = Vec2(1, 10), .radius = Real(0.2)});
+  const JointId pin =
+      addJoint(world, bob, BodyId{}, Vec2(1, 10), Vec2(0, 10), RevoluteJointSettings{});
+  simulate(world, 0.5);
+  ASSERT_TRUE(world.destroyJoint(pin));
+  const BodyState released = stateOf(world, bob);
+  const Real seconds = Real(0.5);
+  simulate(world, seconds);
+  const BodyState later = stateOf(world, bob);
+  // Free flight: the velocity gains g t downwards, nothing else acts.
+  EXPECT_NEAR(later.linearVelocity.x(), released.linearVelocity.x(), 1e-4);
+  EXPECT_NEAR(later.linearVelocity.y() - released.linearVelocity.y(), -kG * seconds, 1e-3);
+}
+
 TEST(JointLifetime, RemovingABody_RemovesAndListsItsJoints) {
   TwoBoxes scene;
   JointId first =
