@@ -372,6 +372,7 @@ void Room::broadcastSnapshot() {
   if (subscribers == 0) return;
   SharedFrame delta = subscribers > quantized ? snapshots_.delta(changes) : nullptr;
   SharedFrame quantizedDelta = quantized > 0 ? snapshots_.quantizedDelta(changes) : nullptr;
+  // The plain delta's size when there is one (Pong's last_snapshot_bytes).
   lastSnapshotBytes_ = (delta ? delta : quantizedDelta)->size();
   outbox_.emplace_back(Broadcast{snapshotSequence_, std::move(delta), std::move(quantizedDelta)});
 }

@@ -92,7 +92,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   };
   struct Broadcast {
     std::uint64_t sequence;
-    SharedFrame delta;
+    SharedFrame delta;           ///< null without plain subscribers
     SharedFrame quantizedDelta;  ///< null without quantized subscribers
   };
   /// One subscriber's full snapshot, including broadcasts up to `sequence`.
