@@ -177,9 +177,13 @@ v1::RoomInfo Room::info() const {
   return info;
 }
 
-std::pair<SharedFrame, std::uint64_t> Room::fullSnapshot(bool quantized) {
-  const std::lock_guard lock(worldMutex_);
-  return {quantized ? snapshots_.quantizedFull() : snapshots_.full(), snapshotSequence_};
+void Room::requestFullSnapshot(std::uint32_t client, bool quantized) {
+  onStrand([this, client, quantized] {
+    // Between ticks the strand owns the world: built here, the frame costs
+    // the I/O thread nothing, and it is cached for others asking this tick.
+    SharedFrame frame = quantized ? snapshots_.quantizedFull() : snapshots_.full();
+    outbox_.emplace_back(FullSnapshot{client, std::move(frame), snapshotSequence_});
+  });
 }
 
 // ------------------------------------------------------- I/O-thread delivery
@@ -188,8 +192,10 @@ void Room::deliver(Batch& batch) {
   for (auto& item : batch) {
     if (auto* reply = std::get_if<Reply>(&item)) {
       deliverReply(*reply);
+    } else if (auto* broadcast = std::get_if<Broadcast>(&item)) {
+      deliverBroadcast(*broadcast);
     } else {
-      deliverBroadcast(std::get<Broadcast>(item));
+      deliverFullSnapshot(std::get<FullSnapshot>(item));
     }
   }
 }
@@ -225,12 +231,19 @@ void Room::deliverBroadcast(const Broadcast& broadcast) {
     if (session->subscribed()) broadcastTargets_.push_back(session);
   }
   for (const auto& session : broadcastTargets_) {
-    // A quantized subscriber counted after the tick built no quantized
-    // delta: its null frame becomes a key frame when written.
+    // A subscriber counted after the tick found no delta of its encoding:
+    // its null frame becomes a full snapshot (or key frame) when written.
     session->offerSnapshot(broadcast.sequence,
                            session->quantized() ? broadcast.quantizedDelta : broadcast.delta);
   }
   broadcastTargets_.clear();  // lets closed sessions go
+}
+
+void Room::deliverFullSnapshot(FullSnapshot& snapshot) {
+  // A member that left meanwhile no longer wants it.
+  if (const auto session = member(snapshot.client)) {
+    session->takeFullSnapshot(std::move(snapshot.frame), snapshot.sequence);
+  }
 }
 
 // --------------------------------------------------------------------- ticks
@@ -245,14 +258,11 @@ void Room::scheduleTick() {
 
 void Room::onTimer() {
   if (stopped_) return;
-  {
-    const std::lock_guard lock(worldMutex_);
-    const auto due = schedule_.due(Clock::now());
-    for (int i = 0; i < due.run; ++i) runTick();
-    if (due.skipped > 0) {
-      logLine("room " + name_ + ": overrun: skipped " + std::to_string(due.skipped) +
-              " tick(s) after running " + std::to_string(due.run) + " late");
-    }
+  const auto due = schedule_.due(Clock::now());
+  for (int i = 0; i < due.run; ++i) runTick();
+  if (due.skipped > 0) {
+    logLine("room " + name_ + ": overrun: skipped " + std::to_string(due.skipped) +
+            " tick(s) after running " + std::to_string(due.run) + " late");
   }
   scheduleTick();
 }
@@ -353,14 +363,18 @@ void Room::broadcastSnapshot() {
   ++snapshotSequence_;
   WorldChanges& changes = simulation_.takeChanges();
   // Quantized subscribers share one delta; without any, its baseline lapses.
-  const bool anyQuantized = quantizedSubscribers_.load() > 0;
-  if (!anyQuantized) snapshots_.skipQuantized();
-  // A subscriber joining meanwhile starts from a full snapshot, so nothing is lost.
-  if (subscribers_.load() == 0) return;
-  const auto delta = snapshots_.delta(changes);
-  lastSnapshotBytes_ = delta->size();
-  SharedFrame quantizedDelta = anyQuantized ? snapshots_.quantizedDelta(changes) : nullptr;
-  outbox_.emplace_back(Broadcast{snapshotSequence_, delta, std::move(quantizedDelta)});
+  const std::size_t quantized = quantizedSubscribers_.load();
+  if (quantized == 0) snapshots_.skipQuantized();
+  // A subscriber joining meanwhile starts from a full snapshot, so nothing is
+  // lost; and each encoding is built only for its subscribers (one counted
+  // after this point gets a null frame, which becomes a full snapshot).
+  const std::size_t subscribers = subscribers_.load();
+  if (subscribers == 0) return;
+  SharedFrame delta = subscribers > quantized ? snapshots_.delta(changes) : nullptr;
+  SharedFrame quantizedDelta = quantized > 0 ? snapshots_.quantizedDelta(changes) : nullptr;
+  // The plain delta's size when there is one (Pong's last_snapshot_bytes).
+  lastSnapshotBytes_ = (delta ? delta : quantizedDelta)->size();
+  outbox_.emplace_back(Broadcast{snapshotSequence_, std::move(delta), std::move(quantizedDelta)});
 }
 
 v1::ServerStats Room::stats(bool withStateHash) {

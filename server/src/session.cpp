@@ -222,10 +222,11 @@ void Session::subscribe(SnapshotSource& source) {
 }
 
 void Session::offerSnapshot(std::uint64_t sequence, const SharedFrame& delta) {
-  if (phase_ != Phase::Streaming) return;
+  if (phase_ != Phase::Streaming || fullSnapshotRequested_) return;
   if (unsentSnapshot_) {
     // The client has not taken the previous snapshot yet: instead of queueing
-    // both, the unsent one becomes a full snapshot built when it is written.
+    // both, the unsent one becomes a full snapshot, requested when the
+    // socket is ready for it.
     for (std::size_t i = queue_.size(); i-- > lockedItems();) {
       if (queue_[i].snapshot) {
         queue_[i].frame = nullptr;
@@ -239,6 +240,17 @@ void Session::offerSnapshot(std::uint64_t sequence, const SharedFrame& delta) {
   const bool chained = lastSnapshotSequence_ && *lastSnapshotSequence_ + 1 == sequence;
   if (chained) lastSnapshotSequence_ = sequence;
   push({chained ? delta : nullptr, true});
+}
+
+void Session::takeFullSnapshot(SharedFrame frame, std::uint64_t sequence) {
+  fullSnapshotRequested_ = false;
+  // An Error or a close since the request dropped the snapshot waiting for it.
+  if (phase_ != Phase::Streaming || queue_.empty()) return;
+  auto& front = queue_.front();
+  if (!front.snapshot || front.frame) return;
+  front.frame = std::move(frame);
+  lastSnapshotSequence_ = sequence;
+  writeMore();
 }
 
 void Session::push(Outgoing item) {
@@ -261,26 +273,35 @@ std::size_t Session::lockedItems() const {
   return writeOffset_ > 0 ? 1 : 0;
 }
 
+bool Session::awaitingFullSnapshot() {
+  const auto& front = queue_.front();
+  if (!front.snapshot || front.frame) return false;
+  // Requested only now that the socket is ready for it, so the frame is
+  // written as soon as it comes and no newer broadcast replaces it unsent.
+  if (!fullSnapshotRequested_) {
+    fullSnapshotRequested_ = true;
+    snapshotSource_->requestFullSnapshot(id_, quantized_);
+  }
+  return true;
+}
+
 void Session::writeMore() {
   if (inFlight_ > 0 || phase_ == Phase::Closed) return;
   if (queue_.empty()) {
     if (phase_ == Phase::Flushing) startLinger();
     return;
   }
+  if (awaitingFullSnapshot()) return;
   std::vector<asio::const_buffer> buffers;
-  const std::size_t count = std::min(queue_.size(), kMaxGather);
-  buffers.reserve(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    auto& item = queue_[i];
-    if (item.snapshot) {
-      unsentSnapshot_ = false;
-      if (!item.frame) {
-        auto [frame, sequence] = snapshotSource_->fullSnapshot(quantized_);
-        item.frame = std::move(frame);
-        lastSnapshotSequence_ = sequence;
-      }
-    }
-    const std::size_t skip = i == 0 ? writeOffset_ : 0;
+  const std::size_t available = std::min(queue_.size(), kMaxGather);
+  buffers.reserve(available);
+  std::size_t count = 0;
+  // Gathers up to a full snapshot still to be requested: it waits for the
+  // next call, when everything before it is written.
+  for (; count < available && queue_[count].frame; ++count) {
+    auto& item = queue_[count];
+    if (item.snapshot) unsentSnapshot_ = false;
+    const std::size_t skip = count == 0 ? writeOffset_ : 0;
     buffers.emplace_back(item.frame->data() + skip, item.frame->size() - skip);
   }
   inFlight_ = count;

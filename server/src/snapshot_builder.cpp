@@ -141,11 +141,12 @@ void SnapshotBuilder::startQuantized() {
   encoder_.reset(simulation_.world(), simulation_.tick());
 }
 
-SharedFrame SnapshotBuilder::quantizedDelta(const WorldChanges& changes) {
+SharedFrame SnapshotBuilder::quantizedDelta(WorldChanges& changes) {
   if (changes.wasReplaced() || !encoder_.valid()) {
     startQuantized();
     return quantizedFull();
   }
+  changes.normalise();
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();

@@ -12,6 +12,7 @@
 #include "impulse/wire/bit_writer.h"
 #include "impulse/wire/quantized_decoder.h"
 #include "impulse/wire/quantized_encoder.h"
+#include "impulse/wire/quantized_layout.h"
 #include "impulse/world.h"
 
 namespace impulse::wire {
@@ -46,6 +47,37 @@ TEST(BitCodec, SmallNumbersAreShort) {
   EXPECT_EQ(writer.bitCount(), 4u);
   writer.writeSigned(3);  // zigzag 6: 5 bits
   EXPECT_EQ(writer.bitCount(), 9u);
+}
+
+TEST(BitCodec, ExpGolombOfEveryOrder_ReadsBackAndTakesTheStatedLength) {
+  const std::vector<std::uint64_t> values = {0, 1, 2, 7, 8, 100, 12345, (std::uint64_t(1) << 62) - 1};
+  for (int order = 0; order <= quantized::kMaxOrder; ++order) {
+    BitWriter writer;
+    for (const std::uint64_t value : values) {
+      const std::size_t before = writer.bitCount();
+      writer.writeExpGolomb(value, order);
+      EXPECT_EQ(writer.bitCount() - before, std::size_t(BitWriter::expGolombLength(value, order)));
+    }
+    BitReader reader(writer.bytes());
+    for (const std::uint64_t value : values) EXPECT_EQ(reader.readExpGolomb(order), value) << order;
+    EXPECT_FALSE(reader.failed());
+  }
+  // Order 2: 5 is 1 (EG "010") then 01.
+  BitWriter five;
+  five.writeExpGolomb(5, 2);
+  EXPECT_EQ(five.bitCount(), 5u);
+  EXPECT_EQ(five.bytes(), std::string(1, char(0b01001000)));
+}
+
+TEST(BitCodec, NonZeroResidualsFold_OneMinusOneTwoMinusTwo) {
+  EXPECT_EQ(quantized::foldNonZero(1), 0u);
+  EXPECT_EQ(quantized::foldNonZero(-1), 1u);
+  EXPECT_EQ(quantized::foldNonZero(2), 2u);
+  EXPECT_EQ(quantized::foldNonZero(-2), 3u);
+  for (std::int64_t r = 1; r <= 1000; ++r) {
+    EXPECT_EQ(quantized::unfoldNonZero(quantized::foldNonZero(r)), r);
+    EXPECT_EQ(quantized::unfoldNonZero(quantized::foldNonZero(-r)), -r);
+  }
 }
 
 TEST(BitCodec, ReadingPastTheEndOrAnEndlessCode_Fails) {

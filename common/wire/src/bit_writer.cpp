@@ -1,14 +1,21 @@
 #include "impulse/wire/bit_writer.h"
 
+#include <algorithm>
 #include <bit>
 
 namespace impulse::wire {
 
 void BitWriter::writeBits(std::uint64_t value, int count) {
-  for (int i = count - 1; i >= 0; --i) {
-    if (bitCount_ % 8 == 0) bytes_.push_back('\0');
-    if ((value >> i) & 1) bytes_.back() = char(std::uint8_t(bytes_.back()) | (0x80u >> (bitCount_ % 8)));
-    ++bitCount_;
+  // A byte at a time: the rest of the last byte, then whole ones.
+  while (count > 0) {
+    const int used = int(bitCount_ % 8);
+    if (used == 0) bytes_.push_back('\0');
+    const int room = 8 - used;
+    const int take = std::min(room, count);
+    const unsigned bits = unsigned(value >> (count - take)) & ((1u << take) - 1);
+    bytes_.back() = char(std::uint8_t(bytes_.back()) | (bits << (room - take)));
+    count -= take;
+    bitCount_ += std::size_t(take);
   }
 }
 
@@ -17,6 +24,15 @@ void BitWriter::writeExpGolomb(std::uint64_t value) {
   const int width = std::bit_width(shifted);
   writeBits(0, width - 1);
   writeBits(shifted, width);
+}
+
+void BitWriter::writeExpGolomb(std::uint64_t value, int order) {
+  writeExpGolomb(value >> order);
+  writeBits(value, order);
+}
+
+int BitWriter::expGolombLength(std::uint64_t value, int order) {
+  return 2 * std::bit_width((value >> order) + 1) - 1 + order;
 }
 
 void BitWriter::writeSigned(std::int64_t value) {

@@ -50,6 +50,16 @@ std::optional<std::string> readHeader(BitReader& bits, Header& header) {
   return std::nullopt;
 }
 
+std::optional<std::string> readCorrectionCode(BitReader& bits, CorrectionCode& code) {
+  const std::uint64_t kinds = bits.readExpGolomb();
+  if (bits.failed() || kinds > kRecordKinds) return "quantized_bodies: a kinds table cut short or too long";
+  code.kinds.resize(std::size_t(kinds));
+  for (RecordKind& kind : code.kinds) kind = RecordKind(bits.readBits(kRecordKindBits));
+  for (int& order : code.orders) order = int(bits.readBits(kOrderBits));
+  if (bits.failed()) return "quantized_bodies: the correction code is cut short";
+  return std::nullopt;
+}
+
 bool readWhole(BitReader& bits, State& state) {
   state.awake = bits.readBit();
   for (auto* values : {&state.position, &state.velocity}) {
@@ -64,24 +74,27 @@ bool readWhole(BitReader& bits, State& state) {
          fits(state.velocity, kValueLimit) && fits(state.acceleration, kAccelerationLimit);
 }
 
-bool readCorrection(BitReader& bits, const State& before, std::int64_t ticks,
-                    const Integration& integration, State& state) {
-  const bool awake = bits.readBit();
+}  // namespace
+
+bool Decoder::readCorrection(BitReader& bits, const State& before, std::int64_t ticks,
+                             const Integration& integration, State& state) const {
+  const std::uint64_t rank = bits.readExpGolomb();
+  if (bits.failed() || rank >= code_.kinds.size()) return false;
+  const RecordKind kind = code_.kinds[std::size_t(rank)];
   Residuals residuals{};
-  for (std::int64_t& residual : residuals) residual = bits.readSigned();
-  if (bits.failed()) return false;
   for (std::size_t i = 0; i < residuals.size(); ++i) {
-    if (!withinLimit(residuals[i], kValueLimit / kQuanta[i])) return false;
+    if (!kindSendsResidual(kind, i)) continue;
+    residuals[i] = unfoldNonZero(bits.readExpGolomb(code_.orders[i]));
+    if (bits.failed() || !withinLimit(residuals[i], kValueLimit / kQuanta[i])) return false;
   }
-  state = corrected(predict(before, ticks, integration), residuals, awake, before, ticks, integration);
+  state = corrected(predict(before, ticks, integration), residuals, kindAwake(kind), before, ticks,
+                    integration);
   auto fits = [](const auto& values) {
     return std::all_of(values.begin(), values.end(),
                        [](std::int64_t v) { return withinLimit(v, kValueLimit); });
   };
   return fits(state.position) && fits(state.velocity);
 }
-
-}  // namespace
 
 std::optional<std::string> Decoder::decode(std::string_view bytes, bool full,
                                            std::span<const std::uint32_t> removed,
@@ -113,6 +126,7 @@ std::optional<std::string> Decoder::decode(std::string_view bytes, bool full,
               std::to_string(baseline_.bodies.size());
     }
   }
+  if (!error && !header.key) error = readCorrectionCode(bits, code_);
   if (!error) {
     error = decodeEntries(bits, std::int64_t(header.ticks), header.integration, whole_, moved);
   }

@@ -11,7 +11,11 @@ namespace {
 std::int64_t toUnits(double value, double unit) {
   const double limit = double(kValueLimit / 2);
   const double scaled = std::clamp(value / unit, -limit, limit);
-  return std::llround(scaled);
+  // Halves away from zero, like llround, but inline: the encoder quantizes
+  // every awake body's six components per snapshot. (NaN, which a guarded
+  // world never has, becomes 0 instead of undefined behaviour.)
+  if (std::isnan(scaled)) return 0;
+  return std::int64_t(scaled + (scaled < 0 ? -0.5 : 0.5));
 }
 
 std::int64_t clampValue(std::int64_t value) {

@@ -17,9 +17,9 @@
 ///   replies, snapshot frames) is collected in an outbox and posted back to
 ///   the I/O thread in one batch (deliver()). So a session is only ever
 ///   touched by the I/O thread and a world only by one thread at a time.
-/// The one crossing: a subscriber's full snapshot is built on the I/O
-/// thread when its socket is ready, under worldMutex_, which the strand
-/// holds while it ticks.
+/// A subscriber's full snapshot (or key frame) is asked of the strand too,
+/// and comes back in a batch after the broadcasts it includes: no lock is
+/// shared between a tick and the I/O thread.
 
 #include <asio.hpp>
 #include <asio/thread_pool.hpp>
@@ -28,7 +28,6 @@
 #include <deque>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <set>
 #include <string>
 #include <variant>
@@ -80,7 +79,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   /// Name, members, and the bodies and tick as of the room's last tick.
   v1::RoomInfo info() const;
 
-  std::pair<SharedFrame, std::uint64_t> fullSnapshot(bool quantized) override;
+  void requestFullSnapshot(std::uint32_t client, bool quantized) override;
 
  private:
   // ----------------------------------------------- strand -> I/O thread
@@ -93,10 +92,16 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   };
   struct Broadcast {
     std::uint64_t sequence;
-    SharedFrame delta;
+    SharedFrame delta;           ///< null without plain subscribers
     SharedFrame quantizedDelta;  ///< null without quantized subscribers
   };
-  using Outgoing = std::variant<Reply, Broadcast>;
+  /// One subscriber's full snapshot, including broadcasts up to `sequence`.
+  struct FullSnapshot {
+    std::uint32_t client;
+    SharedFrame frame;
+    std::uint64_t sequence;
+  };
+  using Outgoing = std::variant<Reply, Broadcast, FullSnapshot>;
   using Batch = std::vector<Outgoing>;
 
   /// Runs `work` on the strand, then posts what it produced to the I/O thread.
@@ -106,6 +111,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   void deliver(Batch& batch);
   void deliverReply(Reply& reply);
   void deliverBroadcast(const Broadcast& broadcast);
+  void deliverFullSnapshot(FullSnapshot& snapshot);
   /// A shared owner, so that a session closed by what is sent to it stays
   /// alive until the caller is done with it; null for a non-member.
   std::shared_ptr<Session> member(std::uint32_t client) const;
@@ -166,9 +172,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   std::atomic<std::uint64_t> publishedTick_ = 0;
   std::atomic<std::uint32_t> publishedBodies_ = 0;
 
-  // Strand only, except that fullSnapshot() reads the world and the
-  // snapshot builder on the I/O thread under worldMutex_.
-  std::mutex worldMutex_;
+  // Strand only.
   asio::steady_timer timer_;
   Simulation simulation_;
   SnapshotBuilder snapshots_;

@@ -42,10 +42,10 @@ class SessionHost {
 class SnapshotSource {
  public:
   virtual ~SnapshotSource() = default;
-  /// A full snapshot of the world now (a quantized key frame when
-  /// `quantized`), and the sequence number of the last broadcast whose
-  /// changes it includes.
-  virtual std::pair<SharedFrame, std::uint64_t> fullSnapshot(bool quantized) = 0;
+  /// Asks for a full snapshot of the world (a quantized key frame when
+  /// `quantized`). The answer comes later, on the I/O thread, as
+  /// Session::takeFullSnapshot; the session never waits for the world.
+  virtual void requestFullSnapshot(std::uint32_t client, bool quantized) = 0;
 };
 
 struct SessionLimits {
@@ -79,6 +79,9 @@ class Session : public std::enable_shared_from_this<Session> {
   /// Broadcast `sequence` (delta against broadcast sequence - 1). A session
   /// that did not get every earlier broadcast gets a full snapshot instead.
   void offerSnapshot(std::uint64_t sequence, const SharedFrame& delta);
+  /// The full snapshot requested from the SnapshotSource: it includes the
+  /// changes of every broadcast up to `sequence`.
+  void takeFullSnapshot(SharedFrame frame, std::uint64_t sequence);
   /// Commands of `bytes` were applied: reading may resume.
   void commandsApplied(std::size_t bytes);
   /// Drops the session if it stalled (see SessionLimits) or never said Hello.
@@ -120,7 +123,7 @@ class Session : public std::enable_shared_from_this<Session> {
   void enter(Phase next);
 
   struct Outgoing {
-    SharedFrame frame;  // null: a full snapshot, built when it is written
+    SharedFrame frame;  // null: a full snapshot, requested when it is next to be written
     bool snapshot = false;
   };
 
@@ -135,6 +138,9 @@ class Session : public std::enable_shared_from_this<Session> {
   void startLinger();
   void push(Outgoing item);
   void writeMore();
+  /// The queue's first item is a full snapshot still to be built: asks the
+  /// source for it (once) and returns true while it is awaited.
+  bool awaitingFullSnapshot();
   void onWritten(std::size_t bytes);
   std::size_t lockedItems() const;
   std::string label() const;
@@ -176,6 +182,10 @@ class Session : public std::enable_shared_from_this<Session> {
   Phase phase_ = Phase::AwaitingHello;
   Clock::time_point lingerSince_;
   SnapshotSource* snapshotSource_ = nullptr;
+  /// A full snapshot was requested and has not come yet. Every broadcast
+  /// offered meanwhile is in it: the source answers after the broadcasts it
+  /// made before the request reached it.
+  bool fullSnapshotRequested_ = false;
   /// The broadcast the client's snapshots are up to (none before the first).
   std::optional<std::uint64_t> lastSnapshotSequence_;
   std::uint64_t snapshotsSkipped_ = 0;

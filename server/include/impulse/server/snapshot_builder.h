@@ -35,9 +35,9 @@ class SnapshotBuilder {
   SharedFrame full();
 
   /// The same changes for SNAPSHOT_ENCODING_QUANTIZED subscribers, coded
-  /// against the previous quantized broadcast. Call after delta() (which
-  /// normalises the changes).
-  SharedFrame quantizedDelta(const WorldChanges& changes);
+  /// against the previous quantized broadcast (with or without delta()).
+  /// Normalises `changes` in place.
+  SharedFrame quantizedDelta(WorldChanges& changes);
   /// Every body for a quantized subscriber: a key frame whose states are the
   /// ones the last quantized delta left, so the next delta applies to it.
   SharedFrame quantizedFull();

@@ -16,6 +16,8 @@ class BitReader {
   std::uint64_t readBits(int count);
   bool readBit() { return readBits(1) != 0; }
   std::uint64_t readExpGolomb();
+  /// Exp-Golomb of order k (BitWriter::writeExpGolomb); 2^63 or more fails.
+  std::uint64_t readExpGolomb(int order);
   std::int64_t readSigned();
 
   bool failed() const { return failed_; }

@@ -10,10 +10,6 @@
 
 namespace impulse::wire::quantized {
 
-/// The layout's version, the first 4 bits of every quantized_bodies.
-inline constexpr std::uint64_t kFormatVersion = 1;
-inline constexpr int kFormatVersionBits = 4;
-
 struct Baseline {
   /// By body id, ascending: the order bodies are coded in.
   std::map<std::uint32_t, State> bodies;

@@ -14,6 +14,7 @@
 #include "impulse/body.h"
 #include "impulse/wire/bit_reader.h"
 #include "impulse/wire/quantized_baseline.h"
+#include "impulse/wire/quantized_layout.h"
 
 namespace impulse::wire::quantized {
 
@@ -36,9 +37,13 @@ class Decoder {
                                            const Integration& integration,
                                            std::span<const std::uint32_t> whole,
                                            std::vector<BodyState>& moved);
+  bool readCorrection(BitReader& bits, const State& before, std::int64_t ticks,
+                      const Integration& integration, State& state) const;
 
   Baseline baseline_;
   std::vector<std::uint32_t> whole_;
+  /// The correction code of the delta being decoded.
+  CorrectionCode code_;
 };
 
 }  // namespace impulse::wire::quantized

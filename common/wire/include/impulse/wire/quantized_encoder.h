@@ -11,11 +11,14 @@
 
 #include "impulse/wire/bit_writer.h"
 #include "impulse/wire/quantized_baseline.h"
+#include "impulse/wire/quantized_layout.h"
 #include "impulse/world.h"
 
 namespace impulse::wire::quantized {
 
-/// One snapshot's body lists, as its message carries them (ids ascending).
+/// One snapshot's body lists, as its message carries them. Coding is fastest
+/// with ids ascending and unique (as the server's are); other lists are
+/// sorted first.
 struct SnapshotLists {
   std::uint64_t tick = 0;
   Integration integration;
@@ -45,22 +48,40 @@ class Encoder {
   std::string keyFrame(const World& world, const SnapshotLists& lists);
 
  private:
-  struct Entry {
-    std::uint32_t id = 0;
-    bool whole = false;  // an absolute record (added bodies)
-    bool sent = false;   // a correction record (delta-coded bodies)
-    State state{};
+  /// How a delta codes each body, in id order (a key frame: every body whole).
+  enum class Coding : std::uint8_t { Predicted, Corrected, Whole };
+  struct Correction {
+    RecordKind kind = 0;
     Residuals residuals{};
   };
+  void startEntries();
+  void addWhole(const State& state);
+  /// Moves one baseline body `ticks` on: its prediction, corrected where
+  /// the world says otherwise (asked only when it `mayHaveChanged`), and
+  /// records how the delta codes it.
+  void advance(State& state, const World& world, std::uint32_t id, bool mayHaveChanged,
+               std::uint64_t ticks, const Integration& integration);
+  /// The kinds table and residual orders that code this delta's records in
+  /// the fewest bits.
+  void chooseCorrectionCode();
   void writeHeader(bool key, std::uint64_t tick, const Integration& integration, std::uint64_t ticks,
                    std::size_t count);
+  void writeCorrectionCode();
+  void writeCorrection(const Correction& correction);
   void writeEntries();
 
   Baseline baseline_;
   std::uint64_t generation_ = 0;
-  std::vector<Entry> entries_;
+  // One byte per body, and records only for the bodies that have one: an
+  // awake world whose bodies move as predicted costs little to walk.
+  std::vector<Coding> codings_;
+  std::vector<Correction> corrections_;  ///< the Corrected bodies', in order
+  std::vector<State> wholes_;            ///< the Whole bodies', in order
   std::vector<std::uint32_t> added_;
   std::vector<std::uint32_t> changed_;
+  CorrectionCode code_;
+  /// A kind's place in code_.kinds.
+  std::array<std::uint8_t, kRecordKinds> rankOfKind_{};
   BitWriter bits_;
 };
 
