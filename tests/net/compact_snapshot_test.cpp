@@ -134,11 +134,13 @@ TEST(CompactSnapshots, SettlingScene_AtMostTwoBitsPerBodyPerSnapshot_WithinAQuan
 }
 
 // Staggered rows roll off each other: every residual is busy and wide, and
-// the bits go to information, not to the layout (layout 1: 9.75).
-TEST(CompactSnapshots, StaggeredSettlingScene_AtMostEightAndAQuarterBits_WithinAQuantum) {
+// the bits go to information, not to the layout (layout 1: 9.75; layout 2:
+// 8.05, and 8.40 once the support pass levelled bodies over level contacts
+// only, which changed how the rows settle).
+TEST(CompactSnapshots, StaggeredSettlingScene_AtMostEightAndAHalfBits_WithinAQuantum) {
   const double perBody = settleAndMeasure(0.2);
   ASSERT_FALSE(HasFailure());
-  EXPECT_LE(perBody, 8.25);
+  EXPECT_LE(perBody, 8.5);
 }
 
 }  // namespace
