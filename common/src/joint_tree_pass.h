@@ -44,7 +44,6 @@ class JointTreePass {
   void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h, Motion motion);
 
  private:
-
   /// A body or a joint of a group. Joints have up to three rigid rows;
   /// unused rows are identity rows with a zero right-hand side.
   struct Node {
