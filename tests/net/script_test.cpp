@@ -83,7 +83,8 @@ TEST(CliScript, PropertiesAndNewMaterialsReachTheOptions) {
   EXPECT_EQ(options.linear_damping(), 1.5);
   EXPECT_EQ(options.angular_damping(), 0.75);
   EXPECT_EQ(options.gravity_scale(), -2);
-  const auto& plain = parseOk("polygon 0 0 1 0 1 1 foam").message.spawn_polygon().options();
+  const auto polygon = parseOk("polygon 0 0 1 0 1 1 foam");
+  const auto& plain = polygon.message.spawn_polygon().options();
   EXPECT_EQ(plain.material(), v1::FOAM);
   EXPECT_FALSE(plain.has_density()) << "unset: the material's";
   EXPECT_FALSE(plain.has_gravity_scale());
