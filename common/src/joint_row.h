@@ -31,6 +31,9 @@ struct JointRow {
   /// Its rigid rows belong to the tree pass (joint_tree_pass.h), which solves
   /// them exactly after the soft pass: the soft pass skips them.
   bool inTree = false;
+  /// In a tree and nothing besides its rigid rows (no motor, limit or
+  /// spring): the soft pass has nothing to do for it.
+  bool rigidOnly = false;
 };
 
 /// What every row's pass needs besides the row and its two states.
@@ -61,6 +64,9 @@ void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& 
 /// revolute or rigid weld, a rod's length, a rigid weld's angle, the angle
 /// and offset of a prismatic, the offset (and rigid travel) of a wheel.
 int rigidRowCount(const JointSettings& settings);
+/// Whether a joint of these settings has rows besides its rigid ones (a
+/// motor, a limit, a spring; every rope and mouse joint).
+bool hasSoftRows(const JointSettings& settings);
 /// Fills the first rigidRowCount rows of `out` at the states' geometry.
 void rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out);
 /// The reaction on B (N, N*m) from the last sub-step's impulses.

@@ -411,6 +411,7 @@ void warmStartJoint(JointRow& row, SolverState& a, SolverState& b) {
 }
 
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass) {
+  if (pass.useBias && row.rigidOnly) return;
   Context x{row, a, b, pass, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { solveKind(x, settings); }, row.joint->settings);
 }
@@ -426,6 +427,22 @@ int rigidRowCount(const JointSettings& settings) {
         if constexpr (std::is_same_v<Kind, PrismaticJointSettings>) return 2;
         if constexpr (std::is_same_v<Kind, WheelJointSettings>) return s.stiffness > 0 ? 1 : 2;
         return 0;  // ropes and mouse joints
+      },
+      settings);
+}
+
+bool hasSoftRows(const JointSettings& settings) {
+  return std::visit(
+      [](const auto& s) -> bool {
+        using Kind = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<Kind, DistanceJointSettings>) return s.stiffness > 0;
+        if constexpr (std::is_same_v<Kind, RevoluteJointSettings> ||
+                      std::is_same_v<Kind, PrismaticJointSettings>)
+          return s.enableLimit || s.enableMotor || s.stiffness > 0;
+        if constexpr (std::is_same_v<Kind, WeldJointSettings>)
+          return s.linearStiffness > 0 || s.angularStiffness > 0;
+        if constexpr (std::is_same_v<Kind, WheelJointSettings>) return s.stiffness > 0 || s.enableMotor;
+        return true;  // ropes and mouse joints
       },
       settings);
 }

@@ -94,7 +94,10 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
     }
   }
   for (const Node& node : nodes_) {
-    if (node.isJoint) rows[node.row].inTree = true;
+    if (!node.isJoint) continue;
+    JointRow& row = rows[node.row];
+    row.inTree = true;
+    row.rigidOnly = !hasSoftRows(row.joint->settings);
   }
 }
 
