@@ -66,8 +66,13 @@ TEST(Rooms, EachRoomHasItsOwnWorldAndSubscribers) {
   EXPECT_EQ(redWatcher.mirror().bodies().size(), scenery + 2);  // the full snapshot of red's world
   EXPECT_EQ(red.ping().stats().bodies(), scenery + 2);
   EXPECT_EQ(blue.ping().stats().bodies(), scenery + 1);
-  // Blue's subscriber never hears of red's bodies.
-  blue.poll();
+  // Blue's subscriber hears of its own body (a snapshot after the Ping's
+  // reply, so it is awaited), then a few more snapshots, never of red's.
+  const auto deadline = SteadyClock::now() + milliseconds(3000);
+  while (blue.mirror().bodies().size() < scenery + 1 && SteadyClock::now() < deadline) {
+    blue.awaitSnapshot(milliseconds(200));
+  }
+  for (int i = 0; i < 3; ++i) blue.awaitSnapshot(milliseconds(200));
   EXPECT_EQ(blue.mirror().bodies().size(), scenery + 1);
 
   const auto list = listRooms(blue);
