@@ -1,4 +1,6 @@
 // impulse-server: the authoritative world served over TCP.
+#include <pthread.h>
+
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -10,6 +12,22 @@
 #include "impulse/server/log.h"
 #include "impulse/server/options.h"
 #include "impulse/server/server.h"
+
+namespace {
+
+// timeout(1), and some orchestrators, signal the process group as well as
+// the process: a second SIGTERM can come once the signal set is gone and
+// would kill a server that is already stopping (exit 143 instead of 0).
+// Called when only this thread is left: blocked, it is dropped at exit.
+void blockStopSignals() {
+  sigset_t stops;
+  sigemptyset(&stops);
+  sigaddset(&stops, SIGINT);
+  sigaddset(&stops, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stops, nullptr);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace impulse::server;
@@ -44,6 +62,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     io.run();
     steppers.join();
+    blockStopSignals();
     logLine("stopped");
     return 0;
   } catch (const std::exception& error) {
