@@ -59,6 +59,10 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   row.axis = a.q.apply(joint.localAxisA);
   row.lastAxis = row.axis;
   if (world.settings.enableWarmStarting) row.impulses = joint.impulses;
+  // The count is the rows themselves at the step's start: one definition.
+  RigidRows scratch;
+  row.rigidRowCount = rigidRows(row, SolverState{}, SolverState{}, scratch);
+  row.softRows = hasSoftRows(joint.settings);
   return row;
 }
 

@@ -31,9 +31,10 @@ struct JointRow {
   /// Its rigid rows belong to the tree pass (joint_tree_pass.h), which solves
   /// them exactly after the soft pass: the soft pass skips them.
   bool inTree = false;
-  /// In a tree and nothing besides its rigid rows (no motor, limit or
-  /// spring): the soft pass has nothing to do for it.
-  bool rigidOnly = false;
+  /// How many rigid rows it has (rigidRows), and whether it has others (a
+  /// motor, a limit, a spring): fixed by its settings, found once a step.
+  int rigidRowCount = 0;
+  bool softRows = false;
 };
 
 /// What every row's pass needs besides the row and its two states.
@@ -60,15 +61,14 @@ using RigidRows = std::array<RigidRow, 3>;
 /// The rows of one kind (joint_rows.cpp).
 void warmStartJoint(JointRow& row, SolverState& a, SolverState& b);
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass);
-/// How many rigid rows a joint of these settings has (0 to 3): the pin of a
-/// revolute or rigid weld, a rod's length, a rigid weld's angle, the angle
-/// and offset of a prismatic, the offset (and rigid travel) of a wheel.
-int rigidRowCount(const JointSettings& settings);
 /// Whether a joint of these settings has rows besides its rigid ones (a
 /// motor, a limit, a spring; every rope and mouse joint).
 bool hasSoftRows(const JointSettings& settings);
-/// Fills the first rigidRowCount rows of `out` at the states' geometry.
-void rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out);
+/// Fills `out` with the joint's rigid rows at the states' geometry and
+/// returns how many (0 to 3): the pin of a revolute or rigid weld, a rod's
+/// length, a rigid weld's angle, a prismatic's angle and offset, a wheel's
+/// offset (and its travel when rigid).
+int rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out);
 /// The reaction on B (N, N*m) from the last sub-step's impulses.
 void jointReaction(const JointRow& row, Real invH, Vec2& force, Real& torque);
 /// The joint angle B relative to A since creation, wrapped to [-pi, pi].

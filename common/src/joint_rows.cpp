@@ -411,24 +411,9 @@ void warmStartJoint(JointRow& row, SolverState& a, SolverState& b) {
 }
 
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass) {
-  if (pass.useBias && row.rigidOnly) return;
+  if (pass.useBias && row.inTree && !row.softRows) return;
   Context x{row, a, b, pass, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { solveKind(x, settings); }, row.joint->settings);
-}
-
-int rigidRowCount(const JointSettings& settings) {
-  return std::visit(
-      [](const auto& s) -> int {
-        using Kind = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<Kind, DistanceJointSettings>) return s.stiffness > 0 ? 0 : 1;
-        if constexpr (std::is_same_v<Kind, RevoluteJointSettings>) return 2;
-        if constexpr (std::is_same_v<Kind, WeldJointSettings>)
-          return (s.linearStiffness > 0 ? 0 : 2) + (s.angularStiffness > 0 ? 0 : 1);
-        if constexpr (std::is_same_v<Kind, PrismaticJointSettings>) return 2;
-        if constexpr (std::is_same_v<Kind, WheelJointSettings>) return s.stiffness > 0 ? 1 : 2;
-        return 0;  // ropes and mouse joints
-      },
-      settings);
 }
 
 bool hasSoftRows(const JointSettings& settings) {
@@ -447,10 +432,11 @@ bool hasSoftRows(const JointSettings& settings) {
       settings);
 }
 
-void rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
+int rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
   RigidContext x{row, a, frameOf(row, a, b)};
   RigidRowsOut rows{out};
   std::visit([&](const auto& settings) { addRigid(rows, x, settings); }, row.joint->settings);
+  return rows.count;
 }
 
 void jointReaction(const JointRow& row, Real invH, Vec2& force, Real& torque) {

@@ -84,7 +84,7 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
   for (bool worldJointsOnly : {true, false}) {
     for (std::size_t r = 0; r < rows.size(); ++r) {
       const JointRow& row = rows[r];
-      if (jointTaken_[r]) continue;
+      if (jointTaken_[r] || row.rigidRowCount == 0) continue;
       if (!hasBodyA(row) && !hasBodyB(row)) continue;
       const bool toWorld = hasBodyA(row) != hasBodyB(row);
       if (worldJointsOnly && !toWorld) continue;
@@ -94,10 +94,7 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
     }
   }
   for (const Node& node : nodes_) {
-    if (!node.isJoint) continue;
-    JointRow& row = rows[node.row];
-    row.inTree = true;
-    row.rigidOnly = !hasSoftRows(row.joint->settings);
+    if (node.isJoint) rows[node.row].inTree = true;
   }
 }
 
@@ -111,8 +108,8 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
   loopBodies_.clear();
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const JointRow& row = rows[r];
-    const bool a = hasBodyA(row) && rigidRowCount(row.joint->settings) > 0;
-    const bool b = hasBodyB(row) && rigidRowCount(row.joint->settings) > 0;
+    const bool a = hasBodyA(row) && row.rigidRowCount > 0;
+    const bool b = hasBodyB(row) && row.rigidRowCount > 0;
     if (a) ++jointsStart_[row.stateA + 1];
     if (b) ++jointsStart_[row.stateB + 1];
     if (!a || !b) continue;
@@ -127,7 +124,7 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
   jointsOfBody_.resize(static_cast<std::size_t>(jointsStart_.back()));
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const JointRow& row = rows[r];
-    if (rigidRowCount(row.joint->settings) == 0) continue;
+    if (row.rigidRowCount == 0) continue;
     if (hasBodyA(row)) jointsOfBody_[cursor_[row.stateA]++] = static_cast<std::int32_t>(r);
     if (hasBodyB(row)) jointsOfBody_[cursor_[row.stateB]++] = static_cast<std::int32_t>(r);
   }
@@ -136,7 +133,6 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
 // Breadth first from the root joint, then stored reversed: every node comes
 // before its parent, as the elimination needs.
 void JointTreePass::orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows) {
-  if (rigidRowCount(rows[rootJoint].joint->settings) == 0) return;
   walk_.assign(1, {.row = rootJoint});
   jointTaken_[rootJoint] = 1;
   for (std::size_t at = 0; at < walk_.size(); ++at) {
@@ -209,8 +205,7 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
   const SolverState& a = states[row.stateA];
   const SolverState& b = states[row.stateB];
   RigidRows rigid;
-  const int count = rigidRowCount(row.joint->settings);
-  rigidRows(row, a, b, rigid);
+  const int count = rigidRows(row, a, b, rigid);
   std::array<Eigen::Matrix3d, 2> jacobians{jacobianOn(rigid, count, false),
                                            jacobianOn(rigid, count, true)};
   node.diagonal = Eigen::Matrix3d::Identity();
