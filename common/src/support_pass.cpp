@@ -15,6 +15,8 @@ constexpr std::int32_t kUnreached = -1;
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
 
+bool isLevel(Real upward) { return std::abs(upward) >= kMinUpwardNormal; }
+
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
 bool isJointed(const WorldData& world, std::int32_t state) {
@@ -128,14 +130,13 @@ void SupportPass::store(WorldData& world, std::span<const ConstraintRef> refs) c
 }
 
 // Breadth-first from the static dummy (state 0) over the level contacts
-// (`level` by ref), held as adjacency lists in one array (counted, then
+// (by upward_), held as adjacency lists in one array (counted, then
 // filled). Only level contacts count: a column of circles against a wall
 // touches the static world at every storey, yet stands on the ground alone.
-void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::span<const std::uint8_t> level,
-                              std::size_t stateCount) {
+void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount) {
   edgeStart_.assign(stateCount + 1, 0);
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (!level[i]) continue;
+    if (!isLevel(upward_[i])) continue;
     ++edgeStart_[std::size_t(refs[i].stateA) + 1];
     ++edgeStart_[std::size_t(refs[i].stateB) + 1];
   }
@@ -143,7 +144,7 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::span<con
   neighbours_.resize(std::size_t(edgeStart_[stateCount]));
   cursor_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (!level[i]) continue;
+    if (!isLevel(upward_[i])) continue;
     const ConstraintRef& ref = refs[i];
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateA)]++)] = ref.stateB;
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateB)]++)] = ref.stateA;
@@ -169,19 +170,17 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   if (refs.empty() || gravity.squaredNorm() == 0) return;
   const Vec2 up = -gravity.normalized();
   upward_.resize(refs.size());
-  isLevel_.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
     upward_[i] = world.contacts[refs[i].contact].manifold.normal.dot(up);
-    isLevel_[i] = std::abs(upward_[i]) >= kMinUpwardNormal;
   }
-  levelBodies(refs, isLevel_, stateCount);
+  levelBodies(refs, stateCount);
 
   unsorted_.clear();
   rowLevel_.clear();
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     ConstraintRef& ref = refs[i];
-    if (!isLevel_[i]) continue;
+    if (!isLevel(upward_[i])) continue;
     const bool upperIsB = upward_[i] > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];

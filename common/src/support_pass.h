@@ -68,11 +68,9 @@ class SupportPass {
   void store(WorldData& world, std::span<const ConstraintRef> refs) const;
 
  private:
-  void levelBodies(std::span<const ConstraintRef> refs, std::span<const std::uint8_t> level,
-                   std::size_t stateCount);
+  void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
 
-  std::vector<Real> upward_;           ///< by ref: the normal's share of up
-  std::vector<std::uint8_t> isLevel_;  ///< by ref: within 25 degrees of up
+  std::vector<Real> upward_;  ///< by ref: the normal's share of up
   std::vector<std::int32_t> level_;
   std::vector<std::int32_t> edgeStart_;
   std::vector<std::int32_t> neighbours_;
