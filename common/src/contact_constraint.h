@@ -9,6 +9,7 @@
 
 #include "simd.h"
 #include "solver_data.h"
+#include "wide_support_row.h"
 
 namespace impulse {
 
@@ -84,7 +85,7 @@ struct WideConstraint {
   WidePoint<F> points[2];
 };
 
-// Eight-lane bundles: a type only the AVX2 file completes (see simd_avx2.h
+// Eight-lane bundles (contact and support): a type only the AVX2 file completes (see simd_avx2.h
 // on why no other file may lay them out).
 struct Avx2Bundles;
 struct Avx2BundlesDeleter {
@@ -105,6 +106,11 @@ struct WideContactSet {
   std::vector<ContactConstraint> overflow;
   /// Per ConstraintRef, where its constraint went (the support pass's map).
   std::vector<ContactPlace> placeOf;
+  /// The support pass's rows in bundles of the width in use (eight-lane ones
+  /// in bundles8); support group g is bundles [supportGroupBundle[g],
+  /// supportGroupBundle[g + 1]).
+  std::vector<WideSupportRow<simd::F4>> support4;
+  std::vector<std::int32_t> supportGroupBundle;
   // Scratch for sorting by colour, kept to avoid allocation per step.
   std::vector<std::int32_t> colorOf;
   std::vector<std::int32_t> order;

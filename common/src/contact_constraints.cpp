@@ -55,14 +55,11 @@ void ContactConstraints::warmStart(const SubStep& sub) { kernels_->warmStart(con
 void ContactConstraints::solve(const SubStep& sub) {
   const ContactSolverContext context = contextFor(sub);
   kernels_->solve(context, wide_, true);
-  support_.solve(context.states, context.inverseSubStep, context.reversePointOrder);
+  kernels_->solveSupport(context, wide_, support_);
 }
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }
 void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }
 void ContactConstraints::restitution(const SubStep& sub) { kernels_->restitution(contextFor(sub), wide_); }
-void ContactConstraints::store(WorldData& world) {
-  kernels_->store(wide_, world);
-  support_.store(world, refs_);
-}
+void ContactConstraints::store(WorldData& world) { kernels_->store(wide_, world); }
 
 }  // namespace impulse

@@ -35,13 +35,6 @@ Real overlapForLoad(const Softness& softness, Real normalMass, Real impulse) {
   return stiffness > 0 ? softness.impulseScale * impulse / stiffness : Real(0);
 }
 
-// The soft push may reach the speed that carries last step's load with a
-// margin, and no more: pushing harder turns overlap into velocity, and
-// along a chain of contacts such pushes add up (a packed crowd flew apart at
-// 22 m/s). Deeper overlap is pushed out by the push pass instead.
-constexpr Real kLoadPushMargin = Real(1.5);
-constexpr Real kMinPushSpeed = Real(0.02);
-
 Real pushCapForLoad(const Softness& softness, Real loadOverlap, Real maxPushSpeed) {
   return std::clamp(kLoadPushMargin * softness.biasRate * loadOverlap, kMinPushSpeed,
                     std::max(maxPushSpeed, kMinPushSpeed));

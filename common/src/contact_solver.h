@@ -22,6 +22,13 @@ void warmStartContacts(const ContactSolverContext& context);
 /// approach velocity (relaxation).
 void solveContacts(const ContactSolverContext& context, bool useBias);
 
+/// The soft push may reach the speed that carries last step's load with a
+/// margin, and no more: pushing harder turns overlap into velocity, and
+/// along a chain of contacts such pushes add up (a packed crowd flew apart at
+/// 22 m/s). Deeper overlap is pushed out by the push pass instead.
+inline constexpr Real kLoadPushMargin = Real(1.5);
+inline constexpr Real kMinPushSpeed = Real(0.02);
+
 /// Overlap deeper than a contact's load explains (bodies created or
 /// pushed into each other) beyond this is pushed out by the push pass.
 inline constexpr Real kIntrusionSlop = Real(0.005);

@@ -27,16 +27,23 @@ struct WideContactKernels {
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
   /// The push pass (pushOverlap).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
-  /// Gives each support row its prepared constraint (support_pass.h).
-  void (*loadSupport)(const WideContactSet& set, SupportPass& pass);
+  /// Lays the support pass's rows out in bundles, each lane from its
+  /// prepared constraint (support_pass.h).
+  void (*loadSupport)(WideContactSet& set, const SupportPass& pass);
+  /// The support pass of one sub-step, storey by storey from the ground.
+  void (*solveSupport)(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
-  /// Writes the impulses back into the manifolds for next step's warm start.
+  /// Writes the impulses back into the manifolds for next step's warm start
+  /// (the support pass's last, for next step's friction limit).
   void (*store)(const WideContactSet& set, WorldData& world);
 };
 
 /// The bundle list of width F in a set (defined by the file of that width).
 template <class F>
 std::vector<WideConstraint<F>>& bundlesOf(WideContactSet& set);
+/// The support bundle list of width F in a set (likewise).
+template <class F>
+std::vector<WideSupportRow<F>>& supportBundlesOf(WideContactSet& set);
 
 const WideContactKernels& sse2WideContactKernels();  // contact_solver_wide_sse2.cpp
 const WideContactKernels& avx2WideContactKernels();  // contact_solver_wide_avx2.cpp

@@ -28,6 +28,7 @@ namespace impulse {
 
 struct Avx2Bundles {
   std::vector<WideConstraint<simd::F8>> list;
+  std::vector<WideSupportRow<simd::F8>> support;
 };
 
 // Called only for a set that holds eight-lane bundles, so only after the
@@ -38,6 +39,12 @@ template <>
 std::vector<WideConstraint<simd::F8>>& bundlesOf<simd::F8>(WideContactSet& set) {
   if (!set.bundles8) set.bundles8.reset(new Avx2Bundles);
   return set.bundles8->list;
+}
+
+template <>
+std::vector<WideSupportRow<simd::F8>>& supportBundlesOf<simd::F8>(WideContactSet& set) {
+  if (!set.bundles8) set.bundles8.reset(new Avx2Bundles);
+  return set.bundles8->support;
 }
 
 }  // namespace impulse

@@ -21,47 +21,6 @@ void setLane(F& wide, int lane, float value) {
   wide.v[lane] = value;  // GCC/Clang vector subscript
 }
 
-template <class F>
-void packPoint(WidePoint<F>& w, int lane, const ConstraintPoint& p) {
-  setLane(w.anchorAX, lane, p.anchorA.x());
-  setLane(w.anchorAY, lane, p.anchorA.y());
-  setLane(w.anchorBX, lane, p.anchorB.x());
-  setLane(w.anchorBY, lane, p.anchorB.y());
-  setLane(w.baseSeparation, lane, p.baseSeparation);
-  setLane(w.normalImpulse, lane, p.normalImpulse);
-  setLane(w.tangentImpulse, lane, p.tangentImpulse);
-  setLane(w.totalNormalImpulse, lane, p.totalNormalImpulse);
-  setLane(w.supportImpulse, lane, p.supportImpulse);
-  setLane(w.normalMass, lane, p.normalMass);
-  setLane(w.tangentMass, lane, p.tangentMass);
-  setLane(w.relativeVelocity, lane, p.relativeVelocity);
-  setLane(w.friction, lane, p.friction);
-  setLane(w.loadOverlap, lane, p.loadOverlap);
-  setLane(w.pushCap, lane, p.pushCap);
-}
-
-template <class F>
-void packLane(WideConstraint<F>& w, int lane, const ContactConstraint& c, std::int32_t source) {
-  w.stateA[lane] = c.stateA;
-  w.stateB[lane] = c.stateB;
-  w.source[lane] = source;
-  setLane(w.normalX, lane, c.normal.x());
-  setLane(w.normalY, lane, c.normal.y());
-  setLane(w.invMassA, lane, c.invMassA);
-  setLane(w.invInertiaA, lane, c.invInertiaA);
-  setLane(w.invMassB, lane, c.invMassB);
-  setLane(w.invInertiaB, lane, c.invInertiaB);
-  setLane(w.biasRate, lane, c.softness.biasRate);
-  setLane(w.massScale, lane, c.softness.massScale);
-  setLane(w.impulseScale, lane, c.softness.impulseScale);
-  setLane(w.restitution, lane, c.restitution);
-  setLane(w.rollingResistance, lane, c.rollingResistance);
-  setLane(w.rollingMass, lane, c.rollingMass);
-  setLane(w.rollingImpulse, lane, c.rollingImpulse);
-  // A one-point manifold leaves its second point at zero mass: it never acts.
-  for (int j = 0; j < c.pointCount; ++j) packPoint(w.points[j], lane, c.points[j]);
-}
-
 // An all-zero bundle: padding lanes point at the static dummy with zero mass.
 template <class F>
 WideConstraint<F> emptyBundle() {
@@ -113,16 +72,17 @@ struct Relative {
   F vx, vy;
 };
 
-// Velocity of B's anchor relative to A's anchor.
-template <class F>
-Relative<F> relativeVelocity(const WideBody<F>& a, const WideBody<F>& b, const WidePoint<F>& p) {
+// Velocity of B's anchor relative to A's anchor (P: a contact's or a
+// support row's point, C: its constraint or row).
+template <class F, class P>
+Relative<F> relativeVelocity(const WideBody<F>& a, const WideBody<F>& b, const P& p) {
   return {(b.vx - b.w * p.anchorBY) - (a.vx - a.w * p.anchorAY),
           (b.vy + b.w * p.anchorBX) - (a.vy + a.w * p.anchorAX)};
 }
 
 // The part of that velocity along the contact normal (positive: separating).
-template <class F>
-F normalVelocity(const WideBody<F>& a, const WideBody<F>& b, const WideConstraint<F>& c, const WidePoint<F>& p) {
+template <class F, class C, class P>
+F normalVelocity(const WideBody<F>& a, const WideBody<F>& b, const C& c, const P& p) {
   Relative<F> dv = relativeVelocity(a, b, p);
   return dv.vx * c.normalX + dv.vy * c.normalY;
 }
@@ -156,9 +116,9 @@ Bias<F> contactBias(const WideConstraint<F>& c, const WidePoint<F>& p, F separat
           simd::select(speculative, simd::broadcast<F>(0), c.impulseScale)};
 }
 
-template <class F>
-F currentSeparation(const WideBody<F>& a, const WideBody<F>& b, const WidePoint<F>& p, F dpx, F dpy,
-                     const WideConstraint<F>& c) {
+template <class F, class C, class P>
+F currentSeparation(const WideBody<F>& a, const WideBody<F>& b, const P& p, F dpx, F dpy,
+                    const C& c) {
   F rotatedAX = a.dqc * p.anchorAX - a.dqs * p.anchorAY;
   F rotatedAY = a.dqs * p.anchorAX + a.dqc * p.anchorAY;
   F rotatedBX = b.dqc * p.anchorBX - b.dqs * p.anchorBY;
@@ -213,6 +173,113 @@ ContactSolverContext overflowContext(const ContactSolverContext& context, WideCo
 
 // ---- passes ------------------------------------------------------------------
 
+// What preparing a bundle needs besides the constraint's own fields.
+template <class F>
+struct BundleInputs {
+  F present[2];  ///< all-ones where the manifold has the point
+  F separation[2];  ///< the manifold's
+  F staticFriction, dynamicFriction;
+};
+
+// Copies one contact's numbers into its lane; finishBundle derives the rest.
+template <class F>
+void gatherLane(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
+                WideConstraint<F>& w, BundleInputs<F>& in, int lane) {
+  const Contact& contact = world.contacts[ref.contact];
+  const Body& bodyA = world.bodies[contact.edges.bodyA];
+  const Body& bodyB = world.bodies[contact.edges.bodyB];
+  const Manifold& manifold = contact.manifold;
+  w.stateA[lane] = ref.stateA;
+  w.stateB[lane] = ref.stateB;
+  w.source[lane] = ref.contact;
+  setLane(w.normalX, lane, manifold.normal.x());
+  setLane(w.normalY, lane, manifold.normal.y());
+  setLane(w.invMassA, lane, bodyA.awake ? bodyA.invMass : 0);
+  setLane(w.invInertiaA, lane, bodyA.awake ? bodyA.invInertia : 0);
+  setLane(w.invMassB, lane, bodyB.awake ? bodyB.invMass : 0);
+  setLane(w.invInertiaB, lane, bodyB.awake ? bodyB.invInertia : 0);
+  const Softness& soft = (ref.stateA == 0 || ref.stateB == 0) ? softness.statics : softness.dynamic;
+  setLane(w.biasRate, lane, soft.biasRate);
+  setLane(w.massScale, lane, soft.massScale);
+  setLane(w.impulseScale, lane, soft.impulseScale);
+  setLane(w.restitution, lane, contact.restitution);
+  setLane(w.rollingResistance, lane, contact.rollingResistance);
+  setLane(w.rollingImpulse, lane, manifold.rollingImpulse);
+  setLane(in.staticFriction, lane, contact.staticFriction);
+  setLane(in.dynamicFriction, lane, contact.dynamicFriction);
+  // A one-point manifold leaves its second point at zero: it never acts.
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    const ManifoldPoint& mp = manifold.points[j];
+    WidePoint<F>& p = w.points[j];
+    setLane(p.anchorAX, lane, mp.anchorA.x());
+    setLane(p.anchorAY, lane, mp.anchorA.y());
+    setLane(p.anchorBX, lane, mp.anchorB.x());
+    setLane(p.anchorBY, lane, mp.anchorB.y());
+    setLane(p.normalImpulse, lane, mp.normalImpulse);
+    setLane(p.tangentImpulse, lane, mp.tangentImpulse);
+    setLane(p.supportImpulse, lane, ref.holdsUp ? mp.supportImpulse : Real(0));
+    setLane(in.separation[j], lane, mp.separation);
+    setLane(in.present[j], lane, std::bit_cast<float>(~std::uint32_t(0)));
+  }
+}
+
+// 1 / k where k > 0, else 0 (the quotient of the other lanes is dropped).
+template <class F>
+F inverseOrZero(F k) {
+  const F zero = simd::broadcast<F>(0);
+  return simd::select(simd::greater(k, zero), simd::broadcast<F>(1) / k, zero);
+}
+
+// The response of the pair along direction (dx, dy) at a point, inverted.
+template <class F>
+F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
+  const F ra = p.anchorAX * dy - p.anchorAY * dx;
+  const F rb = p.anchorBX * dy - p.anchorBY * dx;
+  return inverseOrZero(c.invMassA + c.invMassB + c.invInertiaA * ra * ra + c.invInertiaB * rb * rb);
+}
+
+// Everything a bundle derives from its gathered numbers and the bodies'
+// velocities (the scalar prepareContact's rules, lane by lane); returns the
+// lanes with a point deeper than its load explains (hasIntrusion).
+template <class F>
+F finishBundle(std::span<const SolverState> states, const WorldSettings& settings, const BundleInputs<F>& in,
+               WideConstraint<F>& c) {
+  const F zero = simd::broadcast<F>(0);
+  const WideBody<F> a = gather<F>(states, c.stateA);
+  const WideBody<F> b = gather<F>(states, c.stateB);
+  const F tx = c.normalY;
+  const F ty = -c.normalX;
+  c.rollingMass = inverseOrZero(c.invInertiaA + c.invInertiaB);
+  const F stickSpeed = simd::broadcast<F>(settings.stickSpeed);
+  const F minPush = simd::broadcast<F>(kMinPushSpeed);
+  const F maxPush = simd::broadcast<F>(std::max(settings.maxContactPushSpeed, kMinPushSpeed));
+  F intrusion = zero;
+  for (int j = 0; j < 2; ++j) {
+    WidePoint<F>& p = c.points[j];
+    const F present = in.present[j];
+    p.baseSeparation = simd::select(present, in.separation[j] - ((p.anchorBX - p.anchorAX) * c.normalX +
+                                                                 (p.anchorBY - p.anchorAY) * c.normalY), zero);
+    p.normalMass = simd::select(present, effectiveMass(c, p, c.normalX, c.normalY), zero);
+    p.tangentMass = simd::select(present, effectiveMass(c, p, tx, ty), zero);
+    const Relative<F> dv = relativeVelocity(a, b, p);
+    p.relativeVelocity = simd::select(present, dv.vx * c.normalX + dv.vy * c.normalY, zero);
+    // The load includes what the support pass carried, or a held-up body's
+    // resting overlap would read as an intrusion to push out.
+    const F stiffness = p.normalMass * c.massScale * c.biasRate;
+    p.loadOverlap = simd::select(simd::greater(stiffness, zero),
+                                 c.impulseScale * (p.normalImpulse + p.supportImpulse) / stiffness, zero);
+    p.pushCap = simd::select(present, simd::clamp(simd::broadcast<F>(kLoadPushMargin) * c.biasRate * p.loadOverlap,
+                                                  minPush, maxPush), zero);
+    // Coulomb with two coefficients: a contact that is not slipping is held
+    // by static friction; once it slips, dynamic friction opposes it.
+    const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
+    p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
+    const F deep = simd::less(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
+    intrusion = simd::either(intrusion, simd::both(present, deep));
+  }
+  return intrusion;
+}
+
 template <class F>
 bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
                        const ContactSoftness& softness, GraphColoring& coloring, WideContactSet& set) {
@@ -220,32 +287,36 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   for (std::size_t i = 0; i < refs.size(); ++i) set.colorOf[i] = coloring.take(refs[i].stateA, refs[i].stateB);
   const ColorStarts start = sortByColor(set.colorOf, set.order);
 
-  bool intrusion = false;
   set.placeOf.resize(refs.size());
-  auto prepare = [&](std::int32_t k, ContactConstraint& into) {
-    const ConstraintRef& ref = refs[std::size_t(set.order[k])];
-    prepareContact(world, ref, softness, into);
-    intrusion = intrusion || hasIntrusion(into, world.contacts[ref.contact].manifold);
-  };
   auto& bundles = bundlesOf<F>(set);
   bundles.clear();
-  ContactConstraint prepared;
+  F intrusion = simd::broadcast<F>(0);
+  BundleInputs<F> inputs{};
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
     for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
-      int lane = (k - start[color]) % F::kLanes;
-      if (lane == 0) bundles.push_back(emptyBundle<F>());
-      set.placeOf[std::size_t(set.order[k])] = {static_cast<std::int32_t>(bundles.size() - 1), lane};
-      prepare(k, prepared);
-      packLane(bundles.back(), lane, prepared, prepared.contact);
+      const int lane = (k - start[color]) % F::kLanes;
+      if (lane == 0) {
+        bundles.push_back(emptyBundle<F>());
+        inputs = BundleInputs<F>{};
+      }
+      const std::int32_t refIndex = set.order[k];
+      set.placeOf[std::size_t(refIndex)] = {static_cast<std::int32_t>(bundles.size() - 1), lane};
+      gatherLane(world, refs[std::size_t(refIndex)], softness, bundles.back(), inputs, lane);
+      if (lane == F::kLanes - 1 || k + 1 == start[color + 1]) {
+        intrusion = simd::either(intrusion, finishBundle(world.solverStates, world.settings, inputs, bundles.back()));
+      }
     }
   }
+  bool anyIntrusion = simd::any(intrusion);
   set.overflow.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
+    const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     set.placeOf[std::size_t(set.order[k])] = {-1, static_cast<std::int32_t>(set.overflow.size())};
-    set.overflow.emplace_back();
-    prepare(k, set.overflow.back());
+    ContactConstraint& constraint = set.overflow.emplace_back();
+    prepareContact(world, ref, softness, constraint);
+    anyIntrusion = anyIntrusion || hasIntrusion(constraint, world.contacts[ref.contact].manifold);
   }
-  return intrusion;
+  return anyIntrusion;
 }
 
 template <class F>
@@ -310,43 +381,14 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   pushOverlap(overflowContext(context, set));
 }
 
-// One lane as a scalar constraint, with what a support row takes.
-template <class F>
-void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c) {
-  c.stateA = w.stateA[lane];
-  c.stateB = w.stateB[lane];
-  c.pointCount = 2;  // a one-point manifold's second point has zero mass
-  c.normal = Vec2(w.normalX.v[lane], w.normalY.v[lane]);
-  c.invMassA = w.invMassA.v[lane];
-  c.invInertiaA = w.invInertiaA.v[lane];
-  c.invMassB = w.invMassB.v[lane];
-  c.invInertiaB = w.invInertiaB.v[lane];
-  for (int j = 0; j < 2; ++j) {
-    const WidePoint<F>& p = w.points[j];
-    ConstraintPoint& cp = c.points[j];
-    cp.anchorA = Vec2(p.anchorAX.v[lane], p.anchorAY.v[lane]);
-    cp.anchorB = Vec2(p.anchorBX.v[lane], p.anchorBY.v[lane]);
-    cp.baseSeparation = p.baseSeparation.v[lane];
-    cp.normalMass = p.normalMass.v[lane];
-  }
-}
+}  // namespace
+}  // namespace impulse
 
-// Each support row's constraint, from its lane (or the overflow list).
-template <class F>
-void loadSupportWide(const WideContactSet& set, SupportPass& pass) {
-  const auto& bundles = bundlesOf<F>(const_cast<WideContactSet&>(set));
-  ContactConstraint scratch;
-  const std::span<const SupportRow> rows = pass.rows();
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const ContactPlace place = set.placeOf[std::size_t(rows[r].ref)];
-    if (place.bundle < 0) {
-      pass.load(r, set.overflow[std::size_t(place.lane)]);
-      continue;
-    }
-    unpackForSupport(bundles[std::size_t(place.bundle)], place.lane, scratch);
-    pass.load(r, scratch);
-  }
-}
+// The support pass's kernels, on the body gather and scatter above.
+#include "support_pass_wide_impl.h"
+
+namespace impulse {
+namespace {
 
 template <class F>
 void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
@@ -402,13 +444,14 @@ void storeWideImpulses(const WideContactSet& set, WorldData& world) {
     }
   }
   storeImpulses(set.overflow, world);
+  storeSupportWide<F>(const_cast<WideContactSet&>(set), world);
 }
 
 /// This width's passes as a table (contact_solver_wide.h).
 template <class F>
 WideContactKernels makeWideContactKernels() {
-  return {F::kLanes,           &buildWideContacts<F>, &warmStartWide<F>,          &solveWide<F>,
-          &pushWide<F>,        &loadSupportWide<F>,       &restitutionWide<F>,        &storeWideImpulses<F>};
+  return {F::kLanes,        &buildWideContacts<F>, &warmStartWide<F>, &solveWide<F>,        &pushWide<F>,
+          &loadSupportWide<F>, &solveSupportWide<F>, &restitutionWide<F>, &storeWideImpulses<F>};
 }
 
 }  // namespace

@@ -11,6 +11,11 @@ std::vector<WideConstraint<simd::F4>>& bundlesOf<simd::F4>(WideContactSet& set) 
   return set.bundles4;
 }
 
+template <>
+std::vector<WideSupportRow<simd::F4>>& supportBundlesOf<simd::F4>(WideContactSet& set) {
+  return set.support4;
+}
+
 }  // namespace impulse
 
 #include "contact_solver_wide_impl.h"

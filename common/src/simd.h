@@ -20,17 +20,22 @@ inline F4 zero() { return {_mm_setzero_ps()}; }
 inline F4 operator+(F4 a, F4 b) { return {_mm_add_ps(a.v, b.v)}; }
 inline F4 operator-(F4 a, F4 b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline F4 operator*(F4 a, F4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+inline F4 operator/(F4 a, F4 b) { return {_mm_div_ps(a.v, b.v)}; }
 inline F4 operator-(F4 a) { return {_mm_sub_ps(_mm_setzero_ps(), a.v)}; }
 inline F4& operator+=(F4& a, F4 b) { return a = a + b; }
 inline F4& operator-=(F4& a, F4 b) { return a = a - b; }
+/// |a|: the sign bit cleared.
+inline F4 abs(F4 a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
 inline F4 max(F4 a, F4 b) { return {_mm_max_ps(a.v, b.v)}; }
 inline F4 min(F4 a, F4 b) { return {_mm_min_ps(a.v, b.v)}; }
 inline F4 clamp(F4 x, F4 lo, F4 hi) { return min(max(x, lo), hi); }
 /// All-ones lanes where a > b.
 inline F4 greater(F4 a, F4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
 inline F4 less(F4 a, F4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
+inline F4 atLeast(F4 a, F4 b) { return {_mm_cmpge_ps(a.v, b.v)}; }
 inline F4 notEqual(F4 a, F4 b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
 inline F4 both(F4 a, F4 b) { return {_mm_and_ps(a.v, b.v)}; }
+inline F4 either(F4 a, F4 b) { return {_mm_or_ps(a.v, b.v)}; }
 /// mask ? a : b, lane by lane.
 inline F4 select(F4 mask, F4 a, F4 b) {
   return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};

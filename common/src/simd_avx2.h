@@ -26,17 +26,21 @@ inline F8 broadcast<F8>(float x) {
 inline F8 operator+(F8 a, F8 b) { return {_mm256_add_ps(a.v, b.v)}; }
 inline F8 operator-(F8 a, F8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline F8 operator*(F8 a, F8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
+inline F8 operator/(F8 a, F8 b) { return {_mm256_div_ps(a.v, b.v)}; }
 inline F8 operator-(F8 a) { return {_mm256_sub_ps(_mm256_setzero_ps(), a.v)}; }
 inline F8& operator+=(F8& a, F8 b) { return a = a + b; }
 inline F8& operator-=(F8& a, F8 b) { return a = a - b; }
+inline F8 abs(F8 a) { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }
 inline F8 max(F8 a, F8 b) { return {_mm256_max_ps(a.v, b.v)}; }
 inline F8 min(F8 a, F8 b) { return {_mm256_min_ps(a.v, b.v)}; }
 inline F8 clamp(F8 x, F8 lo, F8 hi) { return min(max(x, lo), hi); }
 // Predicates as SSE2's: ordered greater/less, unordered not-equal.
 inline F8 greater(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GT_OS)}; }
 inline F8 less(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OS)}; }
+inline F8 atLeast(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OS)}; }
 inline F8 notEqual(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_NEQ_UQ)}; }
 inline F8 both(F8 a, F8 b) { return {_mm256_and_ps(a.v, b.v)}; }
+inline F8 either(F8 a, F8 b) { return {_mm256_or_ps(a.v, b.v)}; }
 inline F8 select(F8 mask, F8 a, F8 b) {
   return {_mm256_or_ps(_mm256_and_ps(mask.v, a.v), _mm256_andnot_ps(mask.v, b.v))};
 }

@@ -23,110 +23,21 @@ bool isJointed(const WorldData& world, std::int32_t state) {
   return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
 }
 
-// The smallest non-negative impulses (at most two points) that lift every
-// point by its shortfall b: the 2x2 linear complementarity problem by its
-// cases. Solving the two points one after the other instead gives the first
-// a spin the second only half undoes: a box resting flat crept sideways.
-std::array<Real, 2> liftImpulses(const SupportRow& row, Real b1, Real b2) {
-  Real l1 = row.pairInverse11 * b1 + row.pairInverse12 * b2;
-  Real l2 = row.pairInverse12 * b1 + row.pairInverse22 * b2;
-  if (l1 >= 0 && l2 >= 0 && (l1 > 0 || l2 > 0)) return {l1, l2};
-  Real alone1 = b1 * row.singleMass[0];
-  if (alone1 > 0 && row.k12 * alone1 >= b2) return {alone1, 0};
-  Real alone2 = b2 * row.singleMass[1];
-  if (alone2 > 0 && row.k12 * alone2 >= b1) return {0, alone2};
-  return {0, 0};
-}
-
-Vec2 pointVelocity(const SolverState& state, const Vec2& anchor) {
-  return state.linearVelocity + cross(state.angularVelocity, anchor);
-}
-
-// One row: with the lower body immovable, the upper body's points may not
-// approach it (or, when apart, not close more than the gap this sub-step).
-void holdUp(std::span<SolverState> states, Real inverseSubStep, SupportRow& row) {
-  SolverState& a = states[std::size_t(row.stateA)];
-  SolverState& b = states[std::size_t(row.stateB)];
-  const Vec2 deltaPosition = b.deltaPosition - a.deltaPosition;
-  std::array<Real, 2> shortfall{0, 0};
-  for (std::size_t j = 0; j < 2; ++j) {
-    const SupportRow::Point& p = row.points[j];
-    if (!p.present) continue;
-    Vec2 moved = deltaPosition + b.deltaRotation.apply(p.anchorB) - a.deltaRotation.apply(p.anchorA);
-    Real separation = p.baseSeparation + moved.dot(row.normal);
-    Real slowestAllowed = separation > 0 ? -separation * inverseSubStep : Real(0);
-    Real normalSpeed = (pointVelocity(b, p.anchorB) - pointVelocity(a, p.anchorA)).dot(row.normal);
-    shortfall[j] = slowestAllowed - normalSpeed;
-  }
-  if (shortfall[0] <= 0 && shortfall[1] <= 0) {
-    row.impulse = {0, 0};
-    return;
-  }
-  row.impulse = liftImpulses(row, shortfall[0], shortfall[1]);
-  const Real arm0 = row.points[0].arm;
-  const Real arm1 = row.points[1].arm;
-  // The impulse pushes B along the normal and A against it: either way, up.
-  SolverState& upper = row.upperIsB ? b : a;
-  const Real lift = (row.upperIsB ? Real(1) : Real(-1)) * (row.impulse[0] + row.impulse[1]);
-  const Real turn = (row.upperIsB ? Real(1) : Real(-1)) * (arm0 * row.impulse[0] + arm1 * row.impulse[1]);
-  upper.linearVelocity += row.invMass * lift * row.normal;
-  upper.angularVelocity += row.invInertia * turn;
-}
-
-// K_ij = invMass + invInertia * arm_i * arm_j over the present points; a
-// missing point's row and column are left out (it has no shortfall).
-void invertResponse(SupportRow& row) {
-  const std::array<Real, 2> arm{row.points[0].arm, row.points[1].arm};
-  auto k = [&](std::size_t i, std::size_t j) { return row.invMass + row.invInertia * arm[i] * arm[j]; };
-  for (std::size_t j = 0; j < 2; ++j) row.singleMass[j] = row.points[j].present ? 1 / k(j, j) : Real(0);
-  row.k12 = k(0, 1);
-  row.pairInverse11 = row.pairInverse12 = row.pairInverse22 = 0;
-  if (!row.points[0].present || !row.points[1].present) return;
-  const Real det = k(0, 0) * k(1, 1) - row.k12 * row.k12;
-  if (det <= Real(1e-6) * k(0, 0) * k(1, 1)) return;  // the points share one arm
-  row.pairInverse11 = k(1, 1) / det;
-  row.pairInverse12 = -row.k12 / det;
-  row.pairInverse22 = k(0, 0) / det;
-}
-
 }  // namespace
 
-void SupportPass::load(std::size_t index, const ContactConstraint& c) {
-  SupportRow& row = rows_[index];
-  row.stateA = c.stateA;
-  row.stateB = c.stateB;
-  row.normal = c.normal;
-  row.invMass = row.upperIsB ? c.invMassB : c.invMassA;
-  row.invInertia = row.upperIsB ? c.invInertiaB : c.invInertiaA;
-  for (std::size_t j = 0; j < 2; ++j) {
-    const ConstraintPoint& cp = c.points[j];
-    SupportRow::Point& p = row.points[j];
-    // A one-point manifold's second point has zero mass: it never lifts.
-    p.present = int(j) < c.pointCount && cp.normalMass > 0;
-    p.anchorA = cp.anchorA;
-    p.anchorB = cp.anchorB;
-    p.baseSeparation = cp.baseSeparation;
-    p.arm = p.present ? cross(row.upperIsB ? cp.anchorB : cp.anchorA, c.normal) : Real(0);
-    row.impulse[j] = 0;
-  }
-  invertResponse(row);
-}
-
-void SupportPass::solve(std::span<SolverState> states, Real inverseSubStep, bool reverse) {
-  for (std::size_t storey = 0; storey + 1 < storeyStart_.size(); ++storey) {
-    const std::int32_t first = storeyStart_[storey];
-    const std::int32_t end = storeyStart_[storey + 1];
-    for (std::int32_t k = 0; k < end - first; ++k) {
-      holdUp(states, inverseSubStep, rows_[std::size_t(reverse ? end - 1 - k : first + k)]);
-    }
-  }
-}
-
-void SupportPass::store(WorldData& world, std::span<const ConstraintRef> refs) const {
-  for (const SupportRow& row : rows_) {
-    Manifold& manifold = world.contacts[refs[std::size_t(row.ref)].contact].manifold;
-    for (int j = 0; j < manifold.pointCount; ++j) manifold.points[std::size_t(j)].supportImpulse = row.impulse[std::size_t(j)];
-  }
+SupportResponse supportResponse(Real invMass, Real invInertia, std::array<Real, 2> arm,
+                                std::array<bool, 2> present) {
+  auto k = [&](std::size_t i, std::size_t j) { return invMass + invInertia * arm[i] * arm[j]; };
+  SupportResponse response;
+  for (std::size_t j = 0; j < 2; ++j) response.singleMass[j] = present[j] ? 1 / k(j, j) : Real(0);
+  response.k12 = k(0, 1);
+  if (!present[0] || !present[1]) return response;
+  const Real det = k(0, 0) * k(1, 1) - response.k12 * response.k12;
+  if (det <= Real(1e-6) * k(0, 0) * k(1, 1)) return response;  // the points share one arm
+  response.pairInverse11 = k(1, 1) / det;
+  response.pairInverse12 = -response.k12 / det;
+  response.pairInverse22 = k(0, 0) / det;
+  return response;
 }
 
 // Breadth-first from the static dummy (state 0) over the level contacts
@@ -165,7 +76,8 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
 
 void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount) {
   rows_.clear();
-  storeyStart_.assign(1, 0);
+  groupStart_.assign(1, 0);
+  storeyGroupStart_.assign(1, 0);
   const Vec2 gravity = world.settings.gravity;
   if (refs.empty() || gravity.squaredNorm() == 0) return;
   const Vec2 up = -gravity.normalized();
@@ -198,11 +110,45 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   storeyStart_.assign(std::size_t(topLevel) + 2, 0);
   for (std::int32_t level : rowLevel_) ++storeyStart_[std::size_t(level) + 1];
   for (std::size_t l = 1; l < storeyStart_.size(); ++l) storeyStart_[l] += storeyStart_[l - 1];
-  rows_.resize(unsorted_.size());
+  byStorey_.resize(unsorted_.size());
   cursor_.assign(storeyStart_.begin(), storeyStart_.end() - 1);
   for (std::size_t r = 0; r < unsorted_.size(); ++r) {
-    rows_[std::size_t(cursor_[std::size_t(rowLevel_[r])]++)] = unsorted_[r];
+    byStorey_[std::size_t(cursor_[std::size_t(rowLevel_[r])]++)] = unsorted_[r];
   }
+  rows_.resize(byStorey_.size());
+  rowGroup_.resize(byStorey_.size());
+  upperStorey_.assign(stateCount, -1);
+  upperRows_.resize(stateCount);
+  for (std::size_t storey = 0; storey + 1 < storeyStart_.size(); ++storey) {
+    groupStorey(refs, storey);
+  }
+}
+
+// A body's k-th row in the storey goes to group k; the groups are then laid
+// out in order (a stable counting sort), each keeping contact order.
+void SupportPass::groupStorey(std::span<const ConstraintRef> refs, std::size_t storey) {
+  const std::size_t first = std::size_t(storeyStart_[storey]);
+  const std::size_t end = std::size_t(storeyStart_[storey + 1]);
+  std::int32_t groups = 0;
+  for (std::size_t r = first; r < end; ++r) {
+    const ConstraintRef& ref = refs[std::size_t(byStorey_[r].ref)];
+    const std::size_t upper = std::size_t(byStorey_[r].upperIsB ? ref.stateB : ref.stateA);
+    if (upperStorey_[upper] != std::int32_t(storey)) {
+      upperStorey_[upper] = std::int32_t(storey);
+      upperRows_[upper] = 0;
+    }
+    rowGroup_[r] = upperRows_[upper]++;
+    groups = std::max(groups, rowGroup_[r] + 1);
+  }
+  const std::size_t base = groupStart_.size() - 1;  // the storey's first group
+  groupStart_.resize(base + std::size_t(groups) + 1, 0);
+  for (std::size_t r = first; r < end; ++r) ++groupStart_[base + std::size_t(rowGroup_[r]) + 1];
+  for (std::size_t g = base + 1; g < groupStart_.size(); ++g) groupStart_[g] += groupStart_[g - 1];
+  cursor_.assign(groupStart_.begin() + std::ptrdiff_t(base), groupStart_.end() - 1);
+  for (std::size_t r = first; r < end; ++r) {
+    rows_[std::size_t(cursor_[std::size_t(rowGroup_[r])]++)] = byStorey_[r];
+  }
+  storeyGroupStart_.push_back(std::int32_t(groupStart_.size() - 1));
 }
 
 }  // namespace impulse

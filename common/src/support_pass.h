@@ -22,65 +22,71 @@ namespace impulse {
 
 struct WorldData;
 
-/// One supporting contact, with what the pass needs of its constraint.
+/// One supporting contact: its ConstraintRef and which side holds the upper
+/// body.
 struct SupportRow {
-  struct Point {
-    Vec2 anchorA = Vec2::Zero();
-    Vec2 anchorB = Vec2::Zero();
-    Real baseSeparation = 0;
-    /// The upper body's lever arm about the normal; 0 for a missing point.
-    Real arm = 0;
-    bool present = false;
-  };
-  std::int32_t ref = 0;  ///< its ConstraintRef
-  std::int32_t stateA = 0;
-  std::int32_t stateB = 0;
+  std::int32_t ref = 0;
   bool upperIsB = false;
-  Vec2 normal = Vec2::Zero();
-  Real invMass = 0;  ///< the upper body's
-  Real invInertia = 0;
-  std::array<Point, 2> points{};
-  /// The upper body's response K (impulse to normal speed) at the points,
-  /// inverted once per step: both points together (inverse of K, zero when
-  /// singular), and each alone (1 / K_jj).
+};
+
+/// The upper body's response K (impulse to normal speed) at a row's points,
+/// K_ij = invMass + invInertia * arm_i * arm_j, inverted once per step: both
+/// points together (zero when singular), and each alone (1 / K_jj; zero for
+/// a missing point).
+struct SupportResponse {
   Real pairInverse11 = 0, pairInverse12 = 0, pairInverse22 = 0;
   std::array<Real, 2> singleMass{0, 0};
   Real k12 = 0;
-  /// The pass's impulse per point in the last sub-step.
-  std::array<Real, 2> impulse{0, 0};
 };
+SupportResponse supportResponse(Real invMass, Real invInertia, std::array<Real, 2> arm,
+                                std::array<bool, 2> present);
 
+/// Which contacts hold which bodies up, and in what order. The pass itself
+/// runs on bundles of rows (the wide contact kernels, contact_solver_wide.h):
+/// rows are grouped so that the rows of one group share no upper body, and
+/// the lower bodies of a storey are never moved within it, so a group's rows
+/// can be solved side by side with the same result at any lane width.
 class SupportPass {
  public:
   /// Levels every awake body by its distance from the static world over
   /// level contacts (normal within 25 degrees of up: a box on the ground is
   /// 1, a box on it 2), and takes as rows the level contacts whose upper
   /// body is a level above the lower one and has no joints, lowest storey
-  /// first; marks those refs `holdsUp`. No gravity, no rows.
+  /// first; marks those refs `holdsUp`. Within a storey, a body's k-th row
+  /// goes to the storey's k-th group. No gravity, no rows.
   void order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount);
+  /// The rows, group by group.
   std::span<const SupportRow> rows() const { return rows_; }
-  /// Takes a row's geometry from its prepared constraint.
-  void load(std::size_t row, const ContactConstraint& constraint);
-  /// The pass: storey by storey from the ground up, each storey backwards
-  /// when `reverse` (alternate sub-steps, so no side is favoured).
-  void solve(std::span<SolverState> states, Real inverseSubStep, bool reverse);
-  /// Writes the last impulses into the manifolds (for friction next step).
-  void store(WorldData& world, std::span<const ConstraintRef> refs) const;
+  /// Group g holds rows [groupStarts()[g], groupStarts()[g + 1]).
+  std::span<const std::int32_t> groupStarts() const { return groupStart_; }
+  /// Storey s holds groups [storeyStarts()[s], storeyStarts()[s + 1]): the
+  /// pass runs storey by storey from the ground up, each storey's groups
+  /// backwards on alternate sub-steps (so no side is favoured).
+  std::span<const std::int32_t> storeyStarts() const { return storeyGroupStart_; }
 
  private:
   void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
+  void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
 
   std::vector<Real> upward_;  ///< by ref: the normal's share of up
   std::vector<std::int32_t> level_;
   std::vector<std::int32_t> edgeStart_;
   std::vector<std::int32_t> neighbours_;
   std::vector<std::int32_t> queue_;
-  /// Fill positions of a counting sort (adjacency lists, then storeys).
+  /// Fill positions of a counting sort (adjacency lists, storeys, groups).
   std::vector<std::int32_t> cursor_;
   std::vector<SupportRow> unsorted_;
   std::vector<std::int32_t> rowLevel_;
+  /// By storey, then by group: rows sorted by storey, and each row's group.
+  std::vector<SupportRow> byStorey_;
+  std::vector<std::int32_t> rowGroup_;
+  /// Per state: rows seen so far in the storey being grouped, and which.
+  std::vector<std::int32_t> upperRows_;
+  std::vector<std::int32_t> upperStorey_;
   std::vector<std::int32_t> storeyStart_;
   std::vector<SupportRow> rows_;
+  std::vector<std::int32_t> groupStart_;
+  std::vector<std::int32_t> storeyGroupStart_;
 };
 
 }  // namespace impulse

@@ -1,0 +1,206 @@
+#pragma once
+// The support pass (support_pass.h) several rows at a time, written once for
+// any lane type F. Included by contact_solver_wide_impl.h after the body
+// gather and scatter it uses, so it is instantiated by the same two files.
+//
+// A row, with its lower body held immovable, stops its upper body's points
+// from approaching the lower body (or, when apart, from closing more than
+// the gap this sub-step). The rows of one group lift distinct upper bodies
+// and only read their lower ones, which nothing in the storey moves: the
+// lanes of a bundle are independent, and any width gives the same result.
+
+#include <bit>
+#include <cstdint>
+#include <span>
+
+#include "contact_solver_wide.h"
+#include "world_data.h"
+
+namespace impulse {
+namespace {
+
+template <class F>
+WideSupportRow<F> emptySupportBundle() {
+  WideSupportRow<F> row{};  // padding lanes: the static dummy, no points
+  std::fill(std::begin(row.contact), std::end(row.contact), -1);
+  return row;
+}
+
+// What a support row takes of a contact lane.
+template <class F>
+void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c) {
+  c.stateA = w.stateA[lane];
+  c.stateB = w.stateB[lane];
+  c.contact = w.source[lane];
+  c.pointCount = 2;  // a one-point manifold's second point has zero mass
+  c.normal = Vec2(w.normalX.v[lane], w.normalY.v[lane]);
+  c.invMassA = w.invMassA.v[lane];
+  c.invInertiaA = w.invInertiaA.v[lane];
+  c.invMassB = w.invMassB.v[lane];
+  c.invInertiaB = w.invInertiaB.v[lane];
+  for (int j = 0; j < 2; ++j) {
+    const WidePoint<F>& p = w.points[j];
+    ConstraintPoint& cp = c.points[j];
+    cp.anchorA = Vec2(p.anchorAX.v[lane], p.anchorAY.v[lane]);
+    cp.anchorB = Vec2(p.anchorBX.v[lane], p.anchorBY.v[lane]);
+    cp.baseSeparation = p.baseSeparation.v[lane];
+    cp.normalMass = p.normalMass.v[lane];
+  }
+}
+
+// One row into its lane, upper body as B: a row holding up A is swapped and
+// its normal negated, which leaves every separation and normal speed as it
+// was.
+template <class F>
+void packSupportLane(WideSupportRow<F>& w, int lane, const ContactConstraint& c, bool upperIsB) {
+  const Vec2 normal = upperIsB ? c.normal : Vec2(-c.normal);
+  const Real invMass = upperIsB ? c.invMassB : c.invMassA;
+  const Real invInertia = upperIsB ? c.invInertiaB : c.invInertiaA;
+  w.stateA[lane] = upperIsB ? c.stateA : c.stateB;
+  w.stateB[lane] = upperIsB ? c.stateB : c.stateA;
+  w.contact[lane] = c.contact;
+  setLane(w.normalX, lane, normal.x());
+  setLane(w.normalY, lane, normal.y());
+  setLane(w.invMass, lane, invMass);
+  setLane(w.invInertia, lane, invInertia);
+  std::array<Real, 2> arm{0, 0};
+  std::array<bool, 2> present{false, false};
+  for (std::size_t j = 0; j < 2; ++j) {
+    const ConstraintPoint& cp = c.points[j];
+    const Vec2& lower = upperIsB ? cp.anchorA : cp.anchorB;
+    const Vec2& upper = upperIsB ? cp.anchorB : cp.anchorA;
+    present[j] = int(j) < c.pointCount && cp.normalMass > 0;
+    arm[j] = present[j] ? cross(upper, normal) : Real(0);
+    WideSupportPoint<F>& p = w.points[j];
+    setLane(p.anchorAX, lane, lower.x());
+    setLane(p.anchorAY, lane, lower.y());
+    setLane(p.anchorBX, lane, upper.x());
+    setLane(p.anchorBY, lane, upper.y());
+    setLane(p.baseSeparation, lane, cp.baseSeparation);
+    setLane(p.arm, lane, arm[j]);
+    setLane(p.present, lane, present[j] ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
+  }
+  const SupportResponse response = supportResponse(invMass, invInertia, arm, present);
+  setLane(w.pairInverse11, lane, response.pairInverse11);
+  setLane(w.pairInverse12, lane, response.pairInverse12);
+  setLane(w.pairInverse22, lane, response.pairInverse22);
+  setLane(w.k12, lane, response.k12);
+  for (std::size_t j = 0; j < 2; ++j) setLane(w.points[j].singleMass, lane, response.singleMass[j]);
+}
+
+// Lays the rows out group by group, each group in bundles of F::kLanes.
+template <class F>
+void loadSupportWide(WideContactSet& set, const SupportPass& pass) {
+  const std::vector<WideConstraint<F>>& contacts = bundlesOf<F>(set);
+  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
+  bundles.clear();
+  set.supportGroupBundle.clear();
+  const std::span<const SupportRow> rows = pass.rows();
+  const std::span<const std::int32_t> groups = pass.groupStarts();
+  ContactConstraint scratch;
+  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+    set.supportGroupBundle.push_back(static_cast<std::int32_t>(bundles.size()));
+    for (std::int32_t r = groups[g]; r < groups[g + 1]; ++r) {
+      const int lane = (r - groups[g]) % F::kLanes;
+      if (lane == 0) bundles.push_back(emptySupportBundle<F>());
+      const SupportRow& row = rows[std::size_t(r)];
+      const ContactPlace place = set.placeOf[std::size_t(row.ref)];
+      if (place.bundle < 0) {
+        packSupportLane(bundles.back(), lane, set.overflow[std::size_t(place.lane)], row.upperIsB);
+        continue;
+      }
+      unpackForSupport(contacts[std::size_t(place.bundle)], place.lane, scratch);
+      packSupportLane(bundles.back(), lane, scratch, row.upperIsB);
+    }
+  }
+  set.supportGroupBundle.push_back(static_cast<std::int32_t>(bundles.size()));
+}
+
+template <class F>
+struct Lift {
+  F first, second;
+};
+
+// The smallest non-negative impulses (at most two points) that lift every
+// point by its shortfall b: the 2x2 linear complementarity problem by its
+// cases, the first that holds taken. Solving the two points one after the
+// other instead gives the first a spin the second only half undoes: a box
+// resting flat crept sideways. No shortfall, no lift.
+template <class F>
+Lift<F> liftImpulses(const WideSupportRow<F>& row, F b1, F b2) {
+  const F zero = simd::broadcast<F>(0);
+  const F pair1 = row.pairInverse11 * b1 + row.pairInverse12 * b2;
+  const F pair2 = row.pairInverse12 * b1 + row.pairInverse22 * b2;
+  const F pairHolds = simd::both(simd::both(simd::atLeast(pair1, zero), simd::atLeast(pair2, zero)),
+                                 simd::either(simd::greater(pair1, zero), simd::greater(pair2, zero)));
+  const F alone1 = b1 * row.points[0].singleMass;
+  const F alone1Holds = simd::both(simd::greater(alone1, zero), simd::atLeast(row.k12 * alone1, b2));
+  const F alone2 = b2 * row.points[1].singleMass;
+  const F alone2Holds = simd::both(simd::greater(alone2, zero), simd::atLeast(row.k12 * alone2, b1));
+  const F anyShortfall = simd::either(simd::greater(b1, zero), simd::greater(b2, zero));
+  const F first = simd::select(pairHolds, pair1, simd::select(alone1Holds, alone1, zero));
+  const F second =
+      simd::select(pairHolds, pair2, simd::select(alone1Holds, zero, simd::select(alone2Holds, alone2, zero)));
+  return {simd::select(anyShortfall, first, zero), simd::select(anyShortfall, second, zero)};
+}
+
+template <class F>
+void holdUp(std::span<SolverState> states, F inverseSubStep, WideSupportRow<F>& row) {
+  const F zero = simd::broadcast<F>(0);
+  const WideBody<F> lower = gather<F>(states, row.stateA);
+  WideBody<F> upper = gather<F>(states, row.stateB);
+  const F dpx = upper.dpx - lower.dpx;
+  const F dpy = upper.dpy - lower.dpy;
+  F shortfall[2];
+  for (int j = 0; j < 2; ++j) {
+    const WideSupportPoint<F>& p = row.points[j];
+    const F separation = currentSeparation(lower, upper, p, dpx, dpy, row);
+    const F slowestAllowed = simd::select(simd::greater(separation, zero), (-separation) * inverseSubStep, zero);
+    shortfall[j] = simd::select(p.present, slowestAllowed - normalVelocity(lower, upper, row, p), zero);
+  }
+  const Lift<F> lift = liftImpulses(row, shortfall[0], shortfall[1]);
+  row.points[0].impulse = lift.first;
+  row.points[1].impulse = lift.second;
+  const F push = row.invMass * (lift.first + lift.second);
+  upper.vx += push * row.normalX;
+  upper.vy += push * row.normalY;
+  upper.w += row.invInertia * (row.points[0].arm * lift.first + row.points[1].arm * lift.second);
+  scatter<F>(states, row.stateB, upper);
+}
+
+// Storey by storey from the ground; within a storey the groups run
+// backwards on the sub-steps that also reverse the contacts' point order.
+template <class F>
+void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass) {
+  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
+  const F inverseSubStep = simd::broadcast<F>(context.inverseSubStep);
+  const std::span<const std::int32_t> storeys = pass.storeyStarts();
+  for (std::size_t storey = 0; storey + 1 < storeys.size(); ++storey) {
+    const std::int32_t first = storeys[storey];
+    const std::int32_t count = storeys[storey + 1] - first;
+    for (std::int32_t k = 0; k < count; ++k) {
+      const std::size_t group = std::size_t(context.reversePointOrder ? first + count - 1 - k : first + k);
+      for (std::int32_t b = set.supportGroupBundle[group]; b < set.supportGroupBundle[group + 1]; ++b) {
+        holdUp(context.states, inverseSubStep, bundles[std::size_t(b)]);
+      }
+    }
+  }
+}
+
+// The last sub-step's impulses into the manifolds (next step's friction
+// limit and load).
+template <class F>
+void storeSupportWide(WideContactSet& set, WorldData& world) {
+  for (const WideSupportRow<F>& row : supportBundlesOf<F>(set)) {
+    float impulse[2][F::kLanes];
+    for (int j = 0; j < 2; ++j) simd::store(impulse[j], row.points[j].impulse);
+    for (int lane = 0; lane < F::kLanes; ++lane) {
+      if (row.contact[lane] < 0) continue;
+      Manifold& manifold = world.contacts[row.contact[lane]].manifold;
+      for (int j = 0; j < manifold.pointCount; ++j) manifold.points[j].supportImpulse = impulse[j][lane];
+    }
+  }
+}
+
+}  // namespace
+}  // namespace impulse

@@ -1,0 +1,39 @@
+#pragma once
+// Support rows side by side for the SIMD support pass (support_pass.h), as
+// many as the lane type F holds. Each lane is laid out with its upper body
+// as B (a row whose upper body was A is swapped and its normal negated), so
+// a bundle only ever moves its B bodies, and all of them are distinct.
+
+#include <cstdint>
+
+namespace impulse {
+
+template <class F>
+struct WideSupportPoint {
+  F anchorAX, anchorAY, anchorBX, anchorBY;
+  F baseSeparation;
+  /// The upper body's lever arm about the normal.
+  F arm;
+  /// All-ones where the point exists (a one-point manifold's second does not).
+  F present;
+  /// The pass's impulse in the last sub-step.
+  F impulse;
+  /// 1 / K_jj: this point lifting alone.
+  F singleMass;
+};
+
+template <class F>
+struct WideSupportRow {
+  std::int32_t stateA[F::kLanes];  ///< the lower body (read only)
+  std::int32_t stateB[F::kLanes];  ///< the upper body
+  /// The contact each lane came from (-1: padding).
+  std::int32_t contact[F::kLanes];
+  F normalX, normalY;  ///< from the lower body towards the upper one
+  F invMass, invInertia;  ///< the upper body's
+  /// The upper body's response K at both points, inverted (zero when singular).
+  F pairInverse11, pairInverse12, pairInverse22;
+  F k12;
+  WideSupportPoint<F> points[2];
+};
+
+}  // namespace impulse
