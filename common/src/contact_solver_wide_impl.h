@@ -292,11 +292,12 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   bundles.clear();
   F intrusion = simd::broadcast<F>(0);
   BundleInputs<F> inputs{};
+  static const WideConstraint<F> kEmpty = emptyBundle<F>();
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
     for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
       const int lane = (k - start[color]) % F::kLanes;
       if (lane == 0) {
-        bundles.push_back(emptyBundle<F>());
+        bundles.push_back(kEmpty);
         inputs = BundleInputs<F>{};
       }
       const std::int32_t refIndex = set.order[k];

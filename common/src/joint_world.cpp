@@ -167,6 +167,7 @@ void initJoint(const WorldData& world, Joint& joint, const JointDef& def) {
 }
 
 void linkJoint(WorldData& world, std::int32_t index) {
+  ++world.jointLinkChanges;
   for (int side = 0; side < 2; ++side) {
     std::int32_t body = world.joints[index].edges.body(side);
     if (body != kNullIndex) linkEdge(world.joints, world.bodies[body].jointHead, index, side);
@@ -174,6 +175,7 @@ void linkJoint(WorldData& world, std::int32_t index) {
 }
 
 void unlinkJoint(WorldData& world, std::int32_t index) {
+  ++world.jointLinkChanges;
   for (int side = 0; side < 2; ++side) {
     std::int32_t body = world.joints[index].edges.body(side);
     if (body != kNullIndex) unlinkEdge(world.joints, world.bodies[body].jointHead, index, side);

@@ -15,7 +15,6 @@ constexpr std::int32_t kUnreached = -1;
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
 
-bool isLevel(Real upward) { return std::abs(upward) >= kMinUpwardNormal; }
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
@@ -25,29 +24,14 @@ bool isJointed(const WorldData& world, std::int32_t state) {
 
 }  // namespace
 
-SupportResponse supportResponse(Real invMass, Real invInertia, std::array<Real, 2> arm,
-                                std::array<bool, 2> present) {
-  auto k = [&](std::size_t i, std::size_t j) { return invMass + invInertia * arm[i] * arm[j]; };
-  SupportResponse response;
-  for (std::size_t j = 0; j < 2; ++j) response.singleMass[j] = present[j] ? 1 / k(j, j) : Real(0);
-  response.k12 = k(0, 1);
-  if (!present[0] || !present[1]) return response;
-  const Real det = k(0, 0) * k(1, 1) - response.k12 * response.k12;
-  if (det <= Real(1e-6) * k(0, 0) * k(1, 1)) return response;  // the points share one arm
-  response.pairInverse11 = k(1, 1) / det;
-  response.pairInverse12 = -response.k12 / det;
-  response.pairInverse22 = k(0, 0) / det;
-  return response;
-}
-
 // Breadth-first from the static dummy (state 0) over the level contacts
-// (by upward_), held as adjacency lists in one array (counted, then
+// (by facing_), held as adjacency lists in one array (counted, then
 // filled). Only level contacts count: a column of circles against a wall
 // touches the static world at every storey, yet stands on the ground alone.
 void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount) {
   edgeStart_.assign(stateCount + 1, 0);
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (!isLevel(upward_[i])) continue;
+    if (facing_[i] == 0) continue;
     ++edgeStart_[std::size_t(refs[i].stateA) + 1];
     ++edgeStart_[std::size_t(refs[i].stateB) + 1];
   }
@@ -55,7 +39,7 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
   neighbours_.resize(std::size_t(edgeStart_[stateCount]));
   cursor_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (!isLevel(upward_[i])) continue;
+    if (facing_[i] == 0) continue;
     const ConstraintRef& ref = refs[i];
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateA)]++)] = ref.stateB;
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateB)]++)] = ref.stateA;
@@ -74,17 +58,47 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
   }
 }
 
+void SupportPass::classifyContacts(const WorldData& world, std::span<const ConstraintRef> refs) {
+  const Vec2 up = -world.settings.gravity.normalized();
+  facing_.resize(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const Real upward = world.contacts[refs[i].contact].manifold.normal.dot(up);
+    facing_[i] = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+  }
+}
+
+bool SupportPass::sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
+  auto sameRef = [](const ConstraintRef& a, const ConstraintRef& b) {
+    return a.contact == b.contact && a.stateA == b.stateA && a.stateB == b.stateB;
+  };
+  return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ && facing_ == lastFacing_ &&
+         world.awakeBodies == lastAwake_ && std::equal(refs.begin(), refs.end(), lastRefs_.begin(), lastRefs_.end(), sameRef);
+}
+
+void SupportPass::remember(const WorldData& world, std::span<const ConstraintRef> refs) {
+  lastRefs_.assign(refs.begin(), refs.end());
+  lastFacing_ = facing_;
+  lastAwake_ = world.awakeBodies;
+  lastJointLinkChanges_ = world.jointLinkChanges;
+  haveLast_ = true;
+}
+
 void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount) {
+  if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
+    rows_.clear();
+    groupStart_.assign(1, 0);
+    storeyGroupStart_.assign(1, 0);
+    haveLast_ = false;
+    return;
+  }
+  classifyContacts(world, refs);
+  if (sameGraphAsLastStep(world, refs)) {
+    for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
+    return;
+  }
   rows_.clear();
   groupStart_.assign(1, 0);
   storeyGroupStart_.assign(1, 0);
-  const Vec2 gravity = world.settings.gravity;
-  if (refs.empty() || gravity.squaredNorm() == 0) return;
-  const Vec2 up = -gravity.normalized();
-  upward_.resize(refs.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    upward_[i] = world.contacts[refs[i].contact].manifold.normal.dot(up);
-  }
   levelBodies(refs, stateCount);
 
   unsorted_.clear();
@@ -92,8 +106,8 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     ConstraintRef& ref = refs[i];
-    if (!isLevel(upward_[i])) continue;
-    const bool upperIsB = upward_[i] > 0;
+    if (facing_[i] == 0) continue;
+    const bool upperIsB = facing_[i] > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;
@@ -122,6 +136,7 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   for (std::size_t storey = 0; storey + 1 < storeyStart_.size(); ++storey) {
     groupStorey(refs, storey);
   }
+  remember(world, refs);
 }
 
 // A body's k-th row in the storey goes to group k; the groups are then laid

@@ -29,18 +29,6 @@ struct SupportRow {
   bool upperIsB = false;
 };
 
-/// The upper body's response K (impulse to normal speed) at a row's points,
-/// K_ij = invMass + invInertia * arm_i * arm_j, inverted once per step: both
-/// points together (zero when singular), and each alone (1 / K_jj; zero for
-/// a missing point).
-struct SupportResponse {
-  Real pairInverse11 = 0, pairInverse12 = 0, pairInverse22 = 0;
-  std::array<Real, 2> singleMass{0, 0};
-  Real k12 = 0;
-};
-SupportResponse supportResponse(Real invMass, Real invInertia, std::array<Real, 2> arm,
-                                std::array<bool, 2> present);
-
 /// Which contacts hold which bodies up, and in what order. The pass itself
 /// runs on bundles of rows (the wide contact kernels, contact_solver_wide.h):
 /// rows are grouped so that the rows of one group share no upper body, and
@@ -54,6 +42,11 @@ class SupportPass {
   /// body is a level above the lower one and has no joints, lowest storey
   /// first; marks those refs `holdsUp`. Within a storey, a body's k-th row
   /// goes to the storey's k-th group. No gravity, no rows.
+  ///
+  /// The rows depend only on the contacts, which of them are level and
+  /// which way up, the awake bodies and which bodies are jointed: when none
+  /// of these changed since the last step (a resting stack), last step's
+  /// rows are kept.
   void order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount);
   /// The rows, group by group.
   std::span<const SupportRow> rows() const { return rows_; }
@@ -65,10 +58,20 @@ class SupportPass {
   std::span<const std::int32_t> storeyStarts() const { return storeyGroupStart_; }
 
  private:
+  void classifyContacts(const WorldData& world, std::span<const ConstraintRef> refs);
+  bool sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const;
+  void remember(const WorldData& world, std::span<const ConstraintRef> refs);
   void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
 
-  std::vector<Real> upward_;  ///< by ref: the normal's share of up
+  /// By ref: +1 level with B above, -1 level with A above, 0 not level.
+  std::vector<std::int8_t> facing_;
+  /// What last step's rows were built from (sameGraphAsLastStep).
+  std::vector<ConstraintRef> lastRefs_;
+  std::vector<std::int8_t> lastFacing_;
+  std::vector<std::int32_t> lastAwake_;
+  std::uint64_t lastJointLinkChanges_ = 0;
+  bool haveLast_ = false;
   std::vector<std::int32_t> level_;
   std::vector<std::int32_t> edgeStart_;
   std::vector<std::int32_t> neighbours_;

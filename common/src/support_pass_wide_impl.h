@@ -48,44 +48,59 @@ void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c
   }
 }
 
-// One row into its lane, upper body as B: a row holding up A is swapped and
-// its normal negated, which leaves every separation and normal speed as it
-// was.
+// One row's numbers into its lane, upper body as B: a row holding up A is
+// swapped and its normal negated, which leaves every separation and normal
+// speed as it was. finishSupportBundle derives the rest.
 template <class F>
 void packSupportLane(WideSupportRow<F>& w, int lane, const ContactConstraint& c, bool upperIsB) {
   const Vec2 normal = upperIsB ? c.normal : Vec2(-c.normal);
-  const Real invMass = upperIsB ? c.invMassB : c.invMassA;
-  const Real invInertia = upperIsB ? c.invInertiaB : c.invInertiaA;
   w.stateA[lane] = upperIsB ? c.stateA : c.stateB;
   w.stateB[lane] = upperIsB ? c.stateB : c.stateA;
   w.contact[lane] = c.contact;
   setLane(w.normalX, lane, normal.x());
   setLane(w.normalY, lane, normal.y());
-  setLane(w.invMass, lane, invMass);
-  setLane(w.invInertia, lane, invInertia);
-  std::array<Real, 2> arm{0, 0};
-  std::array<bool, 2> present{false, false};
-  for (std::size_t j = 0; j < 2; ++j) {
+  setLane(w.invMass, lane, upperIsB ? c.invMassB : c.invMassA);
+  setLane(w.invInertia, lane, upperIsB ? c.invInertiaB : c.invInertiaA);
+  for (int j = 0; j < 2; ++j) {
     const ConstraintPoint& cp = c.points[j];
     const Vec2& lower = upperIsB ? cp.anchorA : cp.anchorB;
     const Vec2& upper = upperIsB ? cp.anchorB : cp.anchorA;
-    present[j] = int(j) < c.pointCount && cp.normalMass > 0;
-    arm[j] = present[j] ? cross(upper, normal) : Real(0);
     WideSupportPoint<F>& p = w.points[j];
     setLane(p.anchorAX, lane, lower.x());
     setLane(p.anchorAY, lane, lower.y());
     setLane(p.anchorBX, lane, upper.x());
     setLane(p.anchorBY, lane, upper.y());
     setLane(p.baseSeparation, lane, cp.baseSeparation);
-    setLane(p.arm, lane, arm[j]);
-    setLane(p.present, lane, present[j] ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
+    const bool present = j < c.pointCount && cp.normalMass > 0;
+    setLane(p.present, lane, present ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
   }
-  const SupportResponse response = supportResponse(invMass, invInertia, arm, present);
-  setLane(w.pairInverse11, lane, response.pairInverse11);
-  setLane(w.pairInverse12, lane, response.pairInverse12);
-  setLane(w.pairInverse22, lane, response.pairInverse22);
-  setLane(w.k12, lane, response.k12);
-  for (std::size_t j = 0; j < 2; ++j) setLane(w.points[j].singleMass, lane, response.singleMass[j]);
+}
+
+// The upper body's response K (impulse to normal speed) at the points,
+// K_ij = invMass + invInertia * arm_i * arm_j, inverted once per step: both
+// points together (zero when singular or a point is missing), and each
+// alone (1 / K_jj; zero for a missing point).
+template <class F>
+void finishSupportBundle(WideSupportRow<F>& row) {
+  const F zero = simd::broadcast<F>(0);
+  for (WideSupportPoint<F>& p : row.points) {
+    p.arm = simd::select(p.present, p.anchorBX * row.normalY - p.anchorBY * row.normalX, zero);
+  }
+  const F arm0 = row.points[0].arm;
+  const F arm1 = row.points[1].arm;
+  const F k11 = row.invMass + row.invInertia * arm0 * arm0;
+  const F k22 = row.invMass + row.invInertia * arm1 * arm1;
+  row.k12 = row.invMass + row.invInertia * arm0 * arm1;
+  const F one = simd::broadcast<F>(1);
+  row.points[0].singleMass = simd::select(row.points[0].present, one / k11, zero);
+  row.points[1].singleMass = simd::select(row.points[1].present, one / k22, zero);
+  const F det = k11 * k22 - row.k12 * row.k12;
+  // Below this the points share one arm: only one of them can lift.
+  const F regular = simd::greater(det, simd::broadcast<F>(Real(1e-6)) * k11 * k22);
+  const F pair = simd::both(regular, simd::both(row.points[0].present, row.points[1].present));
+  row.pairInverse11 = simd::select(pair, k22 / det, zero);
+  row.pairInverse12 = simd::select(pair, (-row.k12) / det, zero);
+  row.pairInverse22 = simd::select(pair, k11 / det, zero);
 }
 
 // Lays the rows out group by group, each group in bundles of F::kLanes.
@@ -113,6 +128,7 @@ void loadSupportWide(WideContactSet& set, const SupportPass& pass) {
       packSupportLane(bundles.back(), lane, scratch, row.upperIsB);
     }
   }
+  for (WideSupportRow<F>& row : bundles) finishSupportBundle(row);
   set.supportGroupBundle.push_back(static_cast<std::int32_t>(bundles.size()));
 }
 

@@ -46,6 +46,9 @@ struct WorldData {
   FreeList freeJoints;
   int liveJoints = 0;
   std::vector<JointId> removedJoints;
+  /// Counts every joint linked to or unlinked from its bodies: which bodies
+  /// are jointed has not changed while it stays.
+  std::uint64_t jointLinkChanges = 0;
 
   /// In the order they were added, which is the order they apply in.
   std::vector<FieldSlot> fields;
