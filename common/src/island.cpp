@@ -81,20 +81,26 @@ void updateSleep(WorldData& world, Real dt) {
     return;
   }
   updateSleepTimes(world, dt);
+  // An island sleeps only when every body in it has been slow long enough,
+  // so only such bodies need their island walked: a scene in motion walks
+  // nothing.
   ++world.islandStamp;
-  world.stillAwake.clear();
+  const Real timeToSleep = world.settings.timeToSleep;
+  bool anyAsleep = false;
   for (std::int32_t slot : world.awakeBodies) {
-    if (world.bodies[slot].islandMark == world.islandStamp) continue;
-    if (collectIsland(world, slot) >= world.settings.timeToSleep) {
+    const Body& body = world.bodies[slot];
+    if (body.sleepTime < timeToSleep || body.islandMark == world.islandStamp) continue;
+    if (collectIsland(world, slot) >= timeToSleep) {
       putIslandToSleep(world);
-    } else {
-      world.stillAwake.insert(world.stillAwake.end(), world.islandBodies.begin(),
-                              world.islandBodies.end());
+      anyAsleep = true;
     }
   }
-  // Keep slot order so the solver's row order does not depend on traversal.
-  std::sort(world.stillAwake.begin(), world.stillAwake.end());
-  world.awakeBodies.swap(world.stillAwake);
+  if (anyAsleep) std::erase_if(world.awakeBodies, [&](std::int32_t slot) { return !world.bodies[slot].awake; });
+  // Slot order (woken bodies were appended), so the solver's row order does
+  // not depend on traversal.
+  if (!std::is_sorted(world.awakeBodies.begin(), world.awakeBodies.end())) {
+    std::sort(world.awakeBodies.begin(), world.awakeBodies.end());
+  }
   for (std::int32_t slot : world.awakeBodies) world.movedBodies.push_back(world.idOf(slot));
 }
 

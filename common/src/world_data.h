@@ -75,7 +75,6 @@ struct WorldData {
   GraphColoring coloring;
   std::vector<std::int32_t> islandStack;
   std::vector<std::int32_t> islandBodies;
-  std::vector<std::int32_t> stillAwake;
 
   StepProfile profile;
   std::uint64_t stepCount = 0;
