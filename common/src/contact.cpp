@@ -143,11 +143,19 @@ void refreshManifold(Contact& contact, const Body& a, const Body& b) {
   }
 }
 
+// Two circles' manifold is one distance and a normal: cheaper to compute
+// than to check whether it is still current.
+bool carriesManifold(const Contact& contact) {
+  static const CollideFunction circles = collideFunction(ShapeType::Circle, ShapeType::Circle);
+  return contact.collide != circles;
+}
+
 void updateManifold(WorldData& world, std::int32_t index) {
   Contact& contact = world.contacts[index];
   const Body& a = world.bodies[contact.edges.bodyA];
   const Body& b = world.bodies[contact.edges.bodyB];
-  if (manifoldIsCurrent(contact, a, b)) {
+  const bool carried = carriesManifold(contact);
+  if (carried && manifoldIsCurrent(contact, a, b)) {
     refreshManifold(contact, a, b);
     return;
   }
@@ -157,7 +165,7 @@ void updateManifold(WorldData& world, std::int32_t index) {
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
   contact.touching = next.pointCount > 0;
-  recordFrame(contact, a, b);
+  if (carried) recordFrame(contact, a, b);
 }
 
 }  // namespace
