@@ -185,6 +185,8 @@ void updatePairs(WorldData& world, Real /*dt*/) {
 void collideContacts(WorldData& world, Real /*dt*/) {
   world.profile.manifoldUpdates = 0;
   gatherActiveContacts(world);
+  world.touchingContacts.clear();
+  const std::size_t awakeCount = world.awakeBodies.size();
   for (std::int32_t index : world.activeContacts) {
     Contact& contact = world.contacts[index];
     const Body& a = world.bodies[contact.edges.bodyA];
@@ -196,10 +198,14 @@ void collideContacts(WorldData& world, Real /*dt*/) {
     updateManifold(world, index);
     // A touch from an awake body wakes a sleeping one, with its island.
     if (contact.touching) {
+      world.touchingContacts.push_back(index);
       wakeIsland(world, contact.edges.bodyA);
       wakeIsland(world, contact.edges.bodyB);
     }
   }
+  // Unchanged when nothing woke: then the list is what the solver would
+  // collect, in the same order.
+  world.touchingForAwakeCount = awakeCount;
 }
 
 void destroyContact(WorldData& world, std::int32_t index) {

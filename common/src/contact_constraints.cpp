@@ -9,19 +9,29 @@ namespace impulse {
 
 namespace {
 
+// Anything not awake (static) shares the dummy state 0 and gets zero
+// inverse mass, so the dummy's velocity stays zero without checks.
+ConstraintRef refOf(const WorldData& world, std::int32_t index) {
+  const Contact& contact = world.contacts[index];
+  const Body& a = world.bodies[contact.edges.bodyA];
+  const Body& b = world.bodies[contact.edges.bodyB];
+  return {index, a.awake ? a.solverIndex : 0, b.awake ? b.solverIndex : 0};
+}
+
 // The touching contacts the step solves, each once: those of awake bodies
 // (a pair of awake bodies taken by the lower slot), in awake-list order.
+// The narrow phase's list is exactly that unless a body woke since.
 void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs) {
   refs.clear();
+  if (world.touchingForAwakeCount == world.awakeBodies.size()) {
+    for (std::int32_t index : world.touchingContacts) refs.push_back(refOf(world, index));
+    return;
+  }
   for (std::int32_t slot : world.awakeBodies) {
     forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
       std::int32_t other = contact.edges.otherBody(key);
       if (!contact.touching || (world.bodies[other].awake && other < slot)) return;
-      // Anything not awake (static) shares the dummy state 0 and gets zero
-      // inverse mass, so the dummy's velocity stays zero without checks.
-      const Body& a = world.bodies[contact.edges.bodyA];
-      const Body& b = world.bodies[contact.edges.bodyB];
-      refs.push_back({edgeElement(key), a.awake ? a.solverIndex : 0, b.awake ? b.solverIndex : 0});
+      refs.push_back(refOf(world, edgeElement(key)));
     });
   }
 }

@@ -66,6 +66,12 @@ struct WorldData {
   // Scratch reused every step, so the steady state allocates nothing.
   std::vector<ProxyPair> newPairs;
   std::vector<std::int32_t> activeContacts;
+  /// The touching contacts the narrow phase left, in solver order; valid
+  /// while the awake list still has touchingForAwakeCount bodies (a wake
+  /// during the narrow phase appends bodies and makes the solver walk the
+  /// contact lists again).
+  std::vector<std::int32_t> touchingContacts;
+  std::size_t touchingForAwakeCount = 0;
   std::vector<FieldBody> fieldBodies;
   std::vector<FieldBody> fieldStillBodies;
   std::vector<FieldLoad> fieldLoads;
