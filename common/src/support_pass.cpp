@@ -1,7 +1,6 @@
 #include "support_pass.h"
 
 #include <algorithm>
-#include <array>
 
 #include "world_data.h"
 
@@ -14,7 +13,6 @@ constexpr std::int32_t kUnreached = -1;
 // ones lean on their neighbour; among them the 30 degrees of circles packed
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
-
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.

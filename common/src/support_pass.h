@@ -11,7 +11,6 @@
 // what the lower bodies feel); the support pass removes the sinking they
 // leave behind, and its impulse raises the friction limit to the whole load.
 
-#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
