@@ -30,14 +30,14 @@ bool pairLess(const ProxyPair& a, const ProxyPair& b) {
 }
 
 // Appends a pair of `userValue` with every leaf of `tree` overlapping `box`,
-// except `skipNode` (the querying proxy itself).
-void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue,
-                  std::int32_t skipNode, std::vector<ProxyPair>& pairs) {
+// except `skipNode` (the querying proxy itself) and known pairs.
+void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, std::int32_t skipNode,
+                  const BroadPhase::KnownPair& known, std::vector<ProxyPair>& pairs) {
   tree.query(box, [&](std::int32_t node) {
-    if (node != skipNode) {
-      const std::int32_t other = tree.userValue(node);
-      pairs.push_back({std::min(userValue, other), std::max(userValue, other)});
-    }
+    if (node == skipNode) return true;
+    const std::int32_t other = tree.userValue(node);
+    const ProxyPair pair{std::min(userValue, other), std::max(userValue, other)};
+    if (!known || !known(pair.first, pair.second)) pairs.push_back(pair);
     return true;
   });
 }
@@ -74,13 +74,13 @@ bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB) {
 
 void BroadPhase::touchProxy(std::int32_t proxyKey) { moveBuffer_.push_back(proxyKey); }
 
-void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs) {
+void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs, const KnownPair& known) {
   pairs.clear();
   // A proxy both moved and touched is queued twice but needs one query.
   std::sort(moveBuffer_.begin(), moveBuffer_.end());
   moveBuffer_.erase(std::unique(moveBuffer_.begin(), moveBuffer_.end()), moveBuffer_.end());
   for (std::int32_t proxyKey : moveBuffer_) {
-    if (proxyKey != kNullKey) queryPairs(proxyKey, pairs);
+    if (proxyKey != kNullKey) queryPairs(proxyKey, known, pairs);
   }
   // Two queued proxies find each other from both ends; sorting also makes the
   // output independent of tree shape and queue order.
@@ -125,7 +125,7 @@ std::int32_t BroadPhase::leafUserValue(std::int32_t proxyKey) const {
   return tree.isLeafNode(nodeOf(proxyKey)) ? tree.userValue(nodeOf(proxyKey)) : -1;
 }
 
-void BroadPhase::queryPairs(std::int32_t proxyKey, std::vector<ProxyPair>& pairs) const {
+void BroadPhase::queryPairs(std::int32_t proxyKey, const KnownPair& known, std::vector<ProxyPair>& pairs) const {
   const ProxyKind kind = kindOf(proxyKey);
   const std::int32_t node = nodeOf(proxyKey);
   const DynamicTree& own = trees_[treeIndex(kind)];
@@ -133,12 +133,12 @@ void BroadPhase::queryPairs(std::int32_t proxyKey, std::vector<ProxyPair>& pairs
   const std::int32_t userValue = own.userValue(node);
   const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
   if (kind == ProxyKind::Movable) {
-    collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue, DynamicTree::kNull, pairs);
-    collectPairs(movable, box, userValue, node, pairs);
+    collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue, DynamicTree::kNull, known, pairs);
+    collectPairs(movable, box, userValue, node, known, pairs);
   } else {
     // A queued static proxy (touched or teleported) only looks for movable
     // partners: static-static pairs never collide.
-    collectPairs(movable, box, userValue, DynamicTree::kNull, pairs);
+    collectPairs(movable, box, userValue, DynamicTree::kNull, known, pairs);
   }
 }
 

@@ -171,12 +171,13 @@ void updateManifold(WorldData& world, std::int32_t index) {
 }  // namespace
 
 void updatePairs(WorldData& world, Real /*dt*/) {
-  world.broadPhase.findNewPairs(world.newPairs);
+  world.broadPhase.findNewPairs(world.newPairs, [&](std::int32_t first, std::int32_t second) {
+    return world.contactByPair.contains(contactPairKey(first, second));
+  });
   for (const ProxyPair& pair : world.newPairs) {
     const Body& a = world.bodies[pair.first];
     const Body& b = world.bodies[pair.second];
     if (a.isStatic && b.isStatic) continue;
-    if (world.contactByPair.contains(contactPairKey(pair.first, pair.second))) continue;
     if (jointBlocksContact(world, pair.first, pair.second)) continue;
     createContact(world, pair.first, pair.second);
   }

@@ -7,6 +7,7 @@
 /// only proxies marked moved look for new pairs.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "impulse/dynamic_tree.h"
@@ -39,10 +40,16 @@ class BroadPhase {
   /// queued static proxy looks for movable partners only.
   void touchProxy(std::int32_t proxyKey);
 
+  /// Whether a pair of user values (smaller first) is already known to the
+  /// caller (has a contact).
+  using KnownPair = std::function<bool(std::int32_t first, std::int32_t second)>;
+
   /// Finds the pairs whose fat AABBs overlap and involve a queued proxy, sorted
   /// and without duplicates, into `pairs` (cleared first), then empties the
-  /// queue. The caller filters out pairs that already have a contact.
-  void findNewPairs(std::vector<ProxyPair>& pairs);
+  /// queue. Pairs `known` accepts are left out as they are found: in a moving
+  /// pile most overlaps already have their contact, and sorting them was
+  /// most of the work.
+  void findNewPairs(std::vector<ProxyPair>& pairs, const KnownPair& known = nullptr);
 
   bool fatAABBsOverlap(std::int32_t proxyKeyA, std::int32_t proxyKeyB) const;
   const AABB& fatAABB(std::int32_t proxyKey) const;
@@ -78,7 +85,7 @@ class BroadPhase {
   std::int32_t leafUserValue(std::int32_t proxyKey) const;
 
  private:
-  void queryPairs(std::int32_t proxyKey, std::vector<ProxyPair>& pairs) const;
+  void queryPairs(std::int32_t proxyKey, const KnownPair& known, std::vector<ProxyPair>& pairs) const;
 
   DynamicTree trees_[2];
   std::vector<std::int32_t> moveBuffer_;
