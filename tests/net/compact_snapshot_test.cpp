@@ -82,15 +82,23 @@ void startWithKeyFrame(World& world, Stream& stream) {
   ASSERT_EQ(stream.moved.size(), ids.size());
 }
 
-// Codes the settling scene until it sleeps, checking every decoded state;
-// returns the bits per body per snapshot (0 after a failure).
-double settleAndMeasure(double stagger) {
+// What coding a scene until it sleeps took.
+struct SettleCost {
+  double bitsPerBodyPerSnapshot = 0;
+  /// Every delta's bytes, key frame aside, per body: how much the whole
+  /// settle cost, whatever its length.
+  double bytesPerBody = 0;
+};
+
+// Codes the settling scene until it sleeps, checking every decoded state
+// (zeros after a failure).
+SettleCost settleAndMeasure(double stagger) {
   World world;
   const auto circles = buildSettlingScene(world, stagger);
   EXPECT_EQ(circles.size(), 2000u);
   Stream stream;
   startWithKeyFrame(world, stream);
-  if (::testing::Test::HasFailure()) return 0;
+  if (::testing::Test::HasFailure()) return {};
 
   std::size_t bits = 0;
   int snapshots = 0;
@@ -109,7 +117,7 @@ double settleAndMeasure(double stagger) {
     bits += delta.size() * 8;
     ++snapshots;
     for (const BodyState& state : stream.moved) expectWithinQuantum(world, state);
-    if (::testing::Test::HasFailure()) return 0;
+    if (::testing::Test::HasFailure()) return {};
   }
   EXPECT_EQ(world.awakeBodyCount(), 0) << "the scene never fell asleep";
   // Bodies the decoder did not report as moved keep their decoded state:
@@ -117,30 +125,38 @@ double settleAndMeasure(double stagger) {
   for (const std::uint32_t id : circles) {
     expectWithinQuantum(world, dequantize(BodyId{id}, stream.decoder.baseline().bodies.at(id)));
   }
-  const double perBody = double(bits) / (2000.0 * snapshots);
+  const SettleCost cost{double(bits) / (2000.0 * snapshots), double(bits) / 8 / 2000.0};
   std::printf("[ measure ] 2000 bodies settling from rest to sleep (rows staggered %.2f m): "
-              "%d snapshots (%.1f s), %.0f bytes/snapshot, %.3f bits per body per snapshot\n",
-              stagger, snapshots, snapshots / 30.0, double(bits) / 8 / snapshots, perBody);
-  return perBody;
+              "%d snapshots (%.1f s), %.0f bytes/snapshot, %.3f bits per body per snapshot, "
+              "%.1f bytes per body in all\n",
+              stagger, snapshots, snapshots / 30.0, double(bits) / 8 / snapshots, cost.bitsPerBodyPerSnapshot,
+              cost.bytesPerBody);
+  return cost;
 }
 
 // Issue 16's figure: at most 4 bits. The columns land straight, so most
 // corrections are of y and vy alone, which the per-delta kinds table codes
 // in a few bits (layout 1 took 3.62 on this scene, 1.94 now).
 TEST(CompactSnapshots, SettlingScene_AtMostTwoBitsPerBodyPerSnapshot_WithinAQuantum) {
-  const double perBody = settleAndMeasure(0);
+  const SettleCost cost = settleAndMeasure(0);
   ASSERT_FALSE(HasFailure());
-  EXPECT_LE(perBody, 2.0);
+  EXPECT_LE(cost.bitsPerBodyPerSnapshot, 2.0);
 }
 
 // Staggered rows roll off each other: every residual is busy and wide, and
 // the bits go to information, not to the layout (layout 1: 9.75; layout 2:
 // 8.05, and 8.40 once the support pass levelled bodies over level contacts
-// only, which changed how the rows settle).
-TEST(CompactSnapshots, StaggeredSettlingScene_AtMostEightAndAHalfBits_WithinAQuantum) {
-  const double perBody = settleAndMeasure(0.2);
+// only, which changed how the rows settle). Per snapshot the figure follows
+// how long the scene takes to sleep: with exact circle manifolds (issue 10)
+// it sleeps after 4.6 s instead of 5.3, the quiet snapshots at the end are
+// fewer, and the figure rose from 8.49 to 9.63 bits while the whole settle
+// took fewer bytes (166 per body, 168 before). So the whole settle is held
+// to its measure, and the per-snapshot figure to a looser bound.
+TEST(CompactSnapshots, StaggeredSettlingScene_AtMostTenBitsAndHundredSeventyBytesPerBody_WithinAQuantum) {
+  const SettleCost cost = settleAndMeasure(0.2);
   ASSERT_FALSE(HasFailure());
-  EXPECT_LE(perBody, 8.5);
+  EXPECT_LE(cost.bitsPerBodyPerSnapshot, 10.0);
+  EXPECT_LE(cost.bytesPerBody, 170.0);
 }
 
 }  // namespace
