@@ -21,6 +21,12 @@ void setLane(F& wide, int lane, float value) {
   wide.v[lane] = value;  // GCC/Clang vector subscript
 }
 
+// A lane of a mask (simd::select): all ones where `on`.
+template <class F>
+void setLaneFlag(F& mask, int lane, bool on) {
+  setLane(mask, lane, on ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
+}
+
 // An all-zero bundle: padding lanes point at the static dummy with zero mass.
 template <class F>
 WideConstraint<F> emptyBundle() {
@@ -219,7 +225,7 @@ void gatherLane(const WorldData& world, const ConstraintRef& ref, const ContactS
     setLane(p.tangentImpulse, lane, mp.tangentImpulse);
     setLane(p.supportImpulse, lane, ref.holdsUp ? mp.supportImpulse : Real(0));
     setLane(in.separation[j], lane, mp.separation);
-    setLane(in.present[j], lane, std::bit_cast<float>(~std::uint32_t(0)));
+    setLaneFlag(in.present[j], lane, true);
   }
 }
 

@@ -9,7 +9,6 @@
 // and only read their lower ones, which nothing in the storey moves: the
 // lanes of a bundle are independent, and any width gives the same result.
 
-#include <bit>
 #include <cstdint>
 #include <span>
 
@@ -71,8 +70,7 @@ void packSupportLane(WideSupportRow<F>& w, int lane, const ContactConstraint& c,
     setLane(p.anchorBX, lane, upper.x());
     setLane(p.anchorBY, lane, upper.y());
     setLane(p.baseSeparation, lane, cp.baseSeparation);
-    const bool present = j < c.pointCount && cp.normalMass > 0;
-    setLane(p.present, lane, present ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
+    setLaneFlag(p.present, lane, j < c.pointCount && cp.normalMass > 0);
   }
 }
 
@@ -113,11 +111,12 @@ void loadSupportWide(WideContactSet& set, const SupportPass& pass) {
   const std::span<const SupportRow> rows = pass.rows();
   const std::span<const std::int32_t> groups = pass.groupStarts();
   ContactConstraint scratch;
+  static const WideSupportRow<F> kEmpty = emptySupportBundle<F>();
   for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
     set.supportGroupBundle.push_back(static_cast<std::int32_t>(bundles.size()));
     for (std::int32_t r = groups[g]; r < groups[g + 1]; ++r) {
       const int lane = (r - groups[g]) % F::kLanes;
-      if (lane == 0) bundles.push_back(emptySupportBundle<F>());
+      if (lane == 0) bundles.push_back(kEmpty);
       const SupportRow& row = rows[std::size_t(r)];
       const ContactPlace place = set.placeOf[std::size_t(row.ref)];
       if (place.bundle < 0) {
