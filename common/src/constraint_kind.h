@@ -51,6 +51,7 @@ class ConstraintKind {
   virtual void push(const SubStep&) {}
   /// After every kind's push: the exact pass on the pseudo velocities, so a
   /// rigid joint carries one body's push out of an overlap to the other.
+  /// The bodies have not moved since this sub-step's solveExact.
   virtual void pushExact(const SubStep&) {}
   /// Once per step, after the sub-steps: bounces.
   virtual void restitution(const SubStep&) {}

@@ -103,10 +103,10 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
 void JointConstraints::solveExact(const SubStep& sub) {
-  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::Velocities);
+  tree_.solve(rows_, sub.states, pass_.h);
 }
 void JointConstraints::pushExact(const SubStep& sub) {
-  tree_.solve(rows_, sub.states, pass_.h, JointTreePass::Motion::PseudoVelocities);
+  tree_.push(sub.states);
 }
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 

@@ -72,6 +72,13 @@ void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matr
   }
 }
 
+// A rigid row's speed: linear . (vB - vA) + angularB * wB - angularA * wA.
+double rowSpeed(const Vec2& linear, Real angularA, Real angularB, const SolverState& a,
+                const SolverState& b) {
+  return linear.dot(b.linearVelocity - a.linearVelocity) + angularB * b.angularVelocity -
+         angularA * a.angularVelocity;
+}
+
 }  // namespace
 
 void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
@@ -192,12 +199,19 @@ Eigen::Vector3d JointTreePass::bodyMass(std::span<const JointRow> rows, const Vi
   return {1.0 / invMass, 1.0 / invMass, invInertia > 0 ? 1.0 / invInertia : 1e30};
 }
 
-void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h,
-                          Motion motion) {
+void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h) {
   if (nodes_.empty()) return;
-  assemble(rows, states, h, motion);
-  factorAndSolve();
-  apply(states, motion);
+  assemble(rows, states, h);
+  factor();
+  substitute();
+  applyVelocities(states, true);
+}
+
+void JointTreePass::push(std::span<SolverState> states) {
+  if (nodes_.empty()) return;
+  assembleSpeeds(states);
+  substitute();
+  applyVelocities(states, false);
 }
 
 void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
@@ -211,6 +225,8 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
   node.diagonal = Eigen::Matrix3d::Identity();
   node.value.setZero();
   node.impulses = {};
+  node.stateA = row.stateA;
+  node.stateB = row.stateB;
   for (int r = 0; r < count; ++r) {
     const RigidRow& g = rigid[r];
     const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
@@ -222,12 +238,12 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
       continue;
     }
     node.diagonal(r, r) = -kCompliance * inverseMass;
-    const double speed = g.linear.dot(b.linearVelocity - a.linearVelocity) +
-                         g.angularB * b.angularVelocity - g.angularA * a.angularVelocity;
+    const double speed = rowSpeed(g.linear, g.angularA, g.angularB, a, b);
     const double correction =
         std::clamp(errorRate * g.position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
     node.value(r) = -(speed + correction);
     node.impulses[r] = g.impulse;
+    node.jacobian[r] = {g.linear, g.angularA, g.angularB};
   }
   // The joint's rows couple it to its parent body, or its child bodies to it.
   for (std::size_t side = 0; side < 2; ++side) {
@@ -242,9 +258,9 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
 }
 
 // H_ii, H_{i,parent} and the right-hand side at the sub-step's geometry.
-void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h,
-                             Motion motion) {
-  const double errorRate = motion == Motion::Velocities ? kErrorShare / h : 0;
+void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverState> states,
+                             Real h) {
+  const double errorRate = kErrorShare / h;
   for (Node& node : nodes_) {
     if (node.isJoint) {
       assembleJoint(node, rows[node.row], states, errorRate);
@@ -255,27 +271,49 @@ void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverSta
   }
 }
 
-// L D L^T of the tree, leaves first (every child before its parent), then
-// the two substitutions; the solution replaces each node's value: a body's
-// velocity change, a joint's negated impulses.
-void JointTreePass::factorAndSolve() {
+// The push's right-hand side: each used row's speed, without correction.
+void JointTreePass::assembleSpeeds(std::span<const SolverState> states) {
   for (Node& node : nodes_) {
-    const Eigen::Matrix3d inverse = symmetricInverse(node.diagonal);
-    const Eigen::Vector3d reduced = node.value;
-    node.value.noalias() = inverse * reduced;
+    node.value.setZero();
+    if (!node.isJoint) continue;
+    const SolverState& a = states[node.stateA];
+    const SolverState& b = states[node.stateB];
+    for (int r = 0; r < 3; ++r) {
+      if (node.impulses[r] == nullptr) continue;
+      const RowJacobian& g = node.jacobian[r];
+      node.value(r) = -rowSpeed(g.linear, g.angularA, g.angularB, a, b);
+    }
+  }
+}
+
+// L D L^T of the tree, leaves first (every child before its parent): each
+// node keeps D_i^-1 and D_i^-1 H_{i,parent}, all the substitutions need.
+void JointTreePass::factor() {
+  for (Node& node : nodes_) {
+    node.diagonal = symmetricInverse(node.diagonal);
     if (node.parent < 0) continue;
-    Node& parent = nodes_[node.parent];
-    const Eigen::Matrix3d lower = inverse * node.toParent;
-    subtractSymmetricProduct(node.toParent, lower, parent.diagonal);
-    parent.value.noalias() -= lower.transpose() * reduced;
+    const Eigen::Matrix3d lower = node.diagonal * node.toParent;
+    subtractSymmetricProduct(node.toParent, lower, nodes_[node.parent].diagonal);
     node.toParent = lower;
+  }
+}
+
+// The two substitutions; the solution replaces each node's value: a body's
+// velocity change, a joint's negated impulses.
+void JointTreePass::substitute() {
+  for (Node& node : nodes_) {
+    const Eigen::Vector3d reduced = node.value;
+    node.value.noalias() = node.diagonal * reduced;
+    if (node.parent >= 0) nodes_[node.parent].value.noalias() -= node.toParent.transpose() * reduced;
   }
   for (auto node = nodes_.rbegin(); node != nodes_.rend(); ++node) {
     if (node->parent >= 0) node->value.noalias() -= node->toParent * nodes_[node->parent].value;
   }
 }
 
-void JointTreePass::apply(std::span<SolverState> states, Motion motion) {
+// Bodies take their velocity change; joints' impulses join the warm start,
+// except the push's, which belong to pseudo velocities.
+void JointTreePass::applyVelocities(std::span<SolverState> states, bool keepImpulses) {
   for (const Node& node : nodes_) {
     if (!node.isJoint) {
       SolverState& state = states[node.state];
@@ -283,7 +321,7 @@ void JointTreePass::apply(std::span<SolverState> states, Motion motion) {
       state.angularVelocity += Real(node.value(2));
       continue;
     }
-    if (motion == Motion::PseudoVelocities) continue;
+    if (!keepImpulses) continue;
     for (int r = 0; r < 3; ++r) {
       if (node.impulses[r] != nullptr) *node.impulses[r] -= Real(node.value(r));
     }

@@ -35,15 +35,23 @@ class JointTreePass {
   void order(std::span<JointRow> rows, std::size_t stateCount);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() { nodes_.clear(); }
-  /// Velocities: the states' real velocities, with position correction; the
-  /// impulses join the joints' warm start. PseudoVelocities: the split
-  /// impulse's, which only the rows' speeds are taken out of.
-  enum class Motion { Velocities, PseudoVelocities };
-  /// The pass: per group, builds and factors the system at the sub-step's
-  /// geometry, solves it and applies the impulses.
-  void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h, Motion motion);
+  /// The pass on the states' real velocities: per group, builds and factors
+  /// the system at the sub-step's geometry, solves it with position
+  /// correction and applies the impulses, which join the joints' warm start.
+  void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h);
+  /// The pass on the split impulse's pseudo velocities, which only the rows'
+  /// speeds are taken out of. The bodies have not moved since this
+  /// sub-step's `solve`, so its factors are reused: only the right-hand
+  /// side is new.
+  void push(std::span<SolverState> states);
 
  private:
+  /// A rigid row's Jacobian, kept for the push's right-hand side.
+  struct RowJacobian {
+    Vec2 linear = Vec2::Zero();
+    Real angularA = 0;
+    Real angularB = 0;
+  };
   /// A body or a joint of a group. Joints have up to three rigid rows;
   /// unused rows are identity rows with a zero right-hand side.
   struct Node {
@@ -53,10 +61,13 @@ class JointTreePass {
     bool isJoint = false;
     std::array<std::int32_t, 2> sides{-1, -1};  ///< a joint's bodies' nodes (A, B), -1: none
     Eigen::Vector3d mass = Eigen::Vector3d::Zero();      ///< a body's m, m, I
-    Eigen::Matrix3d diagonal = Eigen::Matrix3d::Zero();  ///< H_ii, then D_i
+    Eigen::Matrix3d diagonal = Eigen::Matrix3d::Zero();  ///< H_ii, then D_i, then D_i^-1
     Eigen::Matrix3d toParent = Eigen::Matrix3d::Zero();  ///< H_{i,parent}, then D_i^-1 H_{i,parent}
     Eigen::Vector3d value = Eigen::Vector3d::Zero();     ///< right-hand side, then solution
-    std::array<Real*, 3> impulses{};  ///< a joint's rows' accumulated impulses
+    std::array<Real*, 3> impulses{};  ///< a joint's rows' accumulated impulses; null: unused
+    std::array<RowJacobian, 3> jacobian{};  ///< a joint's rows
+    std::int32_t stateA = 0;  ///< a joint's rows' solver states
+    std::int32_t stateB = 0;
   };
   /// A node as the walk finds it (parent and sides by walk position).
   struct Visit {
@@ -69,12 +80,13 @@ class JointTreePass {
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
   void storeReversed(std::span<const JointRow> rows);
   Eigen::Vector3d bodyMass(std::span<const JointRow> rows, const Visit& body) const;
-  void assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h,
-                Motion motion);
+  void assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h);
   void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
                      double errorRate);
-  void factorAndSolve();
-  void apply(std::span<SolverState> states, Motion motion);
+  void assembleSpeeds(std::span<const SolverState> states);
+  void factor();
+  void substitute();
+  void applyVelocities(std::span<SolverState> states, bool keepImpulses);
 
   std::vector<std::int32_t> bodyGroup_;     ///< union-find over solver states
   std::vector<std::uint8_t> groupHasLoop_;  ///< by union-find root
