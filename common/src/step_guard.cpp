@@ -6,6 +6,7 @@
 #include "step_guard.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace impulse {
 
@@ -50,12 +51,16 @@ void repair(WorldData& world, std::int32_t slot) {
   world.broadPhase.updateProxy(body.proxyKey, bodyAABB(world, slot));
 }
 
+// Scaling a velocity down to the limit can round its length an ulp or two
+// above it; aiming a few ulps below keeps the result within.
+constexpr Real kJustBelowLimit = 1 - 8 * std::numeric_limits<Real>::epsilon();
+
 // True when the body was slowed.
 bool clampSpeeds(Body& body, const InputLimits& limits) {
   bool clamped = false;
   const Real speed = body.linearVelocity.norm();
   if (speed > limits.maxSpeed) {
-    body.linearVelocity *= limits.maxSpeed / speed;
+    body.linearVelocity *= kJustBelowLimit * limits.maxSpeed / speed;
     clamped = true;
   }
   if (std::abs(body.angularVelocity) > limits.maxAngularSpeed) {
