@@ -50,6 +50,7 @@ void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
       std::max(rollingRadius(world.shapes[a]), rollingRadius(world.shapes[b]));
   contact.pairKey = contactPairKey(a, b);
   linkContact(world, index);
+  if (world.bodies[a].awake || world.bodies[b].awake) world.activeContacts.insert(index);
   world.contactByPair.emplace(contact.pairKey, index);
 }
 
@@ -68,19 +69,6 @@ void matchWarmStart(const Manifold& previous, Manifold& next) {
     }
   }
   if (next.pointCount > 0) next.rollingImpulse = previous.rollingImpulse;
-}
-
-// Contacts that involve at least one awake body, each once, in a
-// deterministic order (awake list order, then edge order).
-void gatherActiveContacts(WorldData& world) {
-  world.activeContacts.clear();
-  for (std::int32_t slot : world.awakeBodies) {
-    forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
-      std::int32_t other = contact.edges.otherBody(key);
-      // A contact between two awake bodies is taken by the lower slot.
-      if (!world.bodies[other].awake || slot < other) world.activeContacts.push_back(edgeElement(key));
-    });
-  }
 }
 
 // B's pose in A's frame.
@@ -168,6 +156,37 @@ void updateManifold(WorldData& world, std::int32_t index) {
   if (carried) recordFrame(contact, a, b);
 }
 
+// The lowest slot among the contact's awake bodies.
+std::int32_t firstAwakeBody(const WorldData& world, const Contact& contact) {
+  const std::int32_t a = contact.edges.bodyA;
+  const std::int32_t b = contact.edges.bodyB;
+  if (!world.bodies[a].awake) return b;
+  if (!world.bodies[b].awake) return a;
+  return std::min(a, b);
+}
+
+// The solver colours the touching contacts in list order, and in a stack
+// the order shows: taken body by body from the lowest slot (scenes are
+// mostly built from the ground up), a 100-row pyramid's top drifts 1 mm in
+// 10 s and a heavy box on a pyramid creeps under 4 cm; taken by contact slot
+// alone, 17 mm and 6 cm, always one way. So the list is sorted by body, in
+// linear time (a counting sort; ties keep the walk's order).
+void sortTouchingByBody(WorldData& world) {
+  std::vector<std::int32_t>& list = world.touchingContacts;
+  std::vector<std::int32_t>& keys = world.touchingKeys;
+  std::vector<std::int32_t>& starts = world.touchingStarts;
+  keys.clear();
+  starts.assign(world.bodies.size() + 1, 0);
+  for (std::int32_t index : list) {
+    keys.push_back(firstAwakeBody(world, world.contacts[index]));
+    ++starts[keys.back() + 1];
+  }
+  for (std::size_t body = 1; body < starts.size(); ++body) starts[body] += starts[body - 1];
+  world.touchingSorted.resize(list.size());
+  for (std::size_t k = 0; k < list.size(); ++k) world.touchingSorted[starts[keys[k]]++] = list[k];
+  list.swap(world.touchingSorted);
+}
+
 }  // namespace
 
 void updatePairs(WorldData& world, Real /*dt*/) {
@@ -185,16 +204,18 @@ void updatePairs(WorldData& world, Real /*dt*/) {
 
 void collideContacts(WorldData& world, Real /*dt*/) {
   world.profile.manifoldUpdates = 0;
-  gatherActiveContacts(world);
   world.touchingContacts.clear();
   const std::size_t awakeCount = world.awakeBodies.size();
-  for (std::int32_t index : world.activeContacts) {
+  // A copy: contacts that a wake below activates wait for the next step's
+  // manifold update (their bodies were resting as they are now).
+  world.contactsToCollide.assign(world.activeContacts);
+  world.contactsToCollide.forEachDescending([&](std::int32_t index) {
     Contact& contact = world.contacts[index];
     const Body& a = world.bodies[contact.edges.bodyA];
     const Body& b = world.bodies[contact.edges.bodyB];
     if (!world.broadPhase.fatAABBsOverlap(a.proxyKey, b.proxyKey)) {
       destroyContact(world, index);
-      continue;
+      return;
     }
     updateManifold(world, index);
     // A touch from an awake body wakes a sleeping one, with its island.
@@ -203,10 +224,14 @@ void collideContacts(WorldData& world, Real /*dt*/) {
       wakeIsland(world, contact.edges.bodyA);
       wakeIsland(world, contact.edges.bodyB);
     }
+  });
+  // Woken bodies' touching contacts are solved this step all the same.
+  if (world.awakeBodies.size() != awakeCount) {
+    world.activeContacts.forEachDescendingExcept(world.contactsToCollide, [&](std::int32_t index) {
+      if (world.contacts[index].touching) world.touchingContacts.push_back(index);
+    });
   }
-  // Unchanged when nothing woke: then the list is what the solver would
-  // collect, in the same order.
-  world.touchingForAwakeCount = awakeCount;
+  sortTouchingByBody(world);
 }
 
 void destroyContact(WorldData& world, std::int32_t index) {
@@ -215,7 +240,19 @@ void destroyContact(WorldData& world, std::int32_t index) {
     unlinkEdge(world.contacts, body.contactHead, index, side);
   }
   world.contactByPair.erase(world.contacts[index].pairKey);
+  world.activeContacts.erase(index);
   world.freeContacts.release(index);
+}
+
+void activateBodyContacts(WorldData& world, std::int32_t body) {
+  forEachEdge(world.contacts, world.bodies[body].contactHead,
+              [&](std::int32_t key, const Contact&) { world.activeContacts.insert(edgeElement(key)); });
+}
+
+void deactivateBodyContacts(WorldData& world, std::int32_t body) {
+  forEachEdge(world.contacts, world.bodies[body].contactHead, [&](std::int32_t key, const Contact& contact) {
+    if (!world.bodies[contact.edges.otherBody(key)].awake) world.activeContacts.erase(edgeElement(key));
+  });
 }
 
 void destroyBodyContacts(WorldData& world, std::int32_t body) {

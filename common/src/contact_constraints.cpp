@@ -18,22 +18,10 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index) {
   return {index, a.awake ? a.solverIndex : 0, b.awake ? b.solverIndex : 0};
 }
 
-// The touching contacts the step solves, each once: those of awake bodies
-// (a pair of awake bodies taken by the lower slot), in awake-list order.
-// The narrow phase's list is exactly that unless a body woke since.
+// The touching contacts the step solves: the narrow phase's list.
 void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs) {
   refs.clear();
-  if (world.touchingForAwakeCount == world.awakeBodies.size()) {
-    for (std::int32_t index : world.touchingContacts) refs.push_back(refOf(world, index));
-    return;
-  }
-  for (std::int32_t slot : world.awakeBodies) {
-    forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
-      std::int32_t other = contact.edges.otherBody(key);
-      if (!contact.touching || (world.bodies[other].awake && other < slot)) return;
-      refs.push_back(refOf(world, edgeElement(key)));
-    });
-  }
+  for (std::int32_t index : world.touchingContacts) refs.push_back(refOf(world, index));
 }
 
 ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {

@@ -70,6 +70,8 @@ void putIslandToSleep(WorldData& world) {
     body.angularVelocity = 0;
     world.movedBodies.push_back(world.idOf(slot));
   }
+  // Once the whole island sleeps: a contact inside it has no awake body.
+  for (std::int32_t slot : world.islandBodies) deactivateBodyContacts(world, slot);
 }
 
 }  // namespace
@@ -117,6 +119,7 @@ void wakeIsland(WorldData& world, std::int32_t seed) {
     body.awake = true;
     body.sleepTime = 0;
     world.awakeBodies.push_back(slot);
+    activateBodyContacts(world, slot);
     forEachLinkedBody(world, slot, [&](std::int32_t linked) {
       const Body& neighbour = world.bodies[linked];
       if (!neighbour.isStatic && !neighbour.awake) world.islandStack.push_back(linked);

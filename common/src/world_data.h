@@ -17,6 +17,7 @@
 #include "joint_constraints.h"
 #include "joint_data.h"
 #include "graph_coloring.h"
+#include "slot_bits.h"
 #include "impulse/broad_phase.h"
 #include "impulse/field.h"
 #include "impulse/world.h"
@@ -39,6 +40,9 @@ struct WorldData {
 
   std::vector<Contact> contacts;
   FreeList freeContacts;
+  /// Contacts with an awake body: the narrow phase's work. Kept as contacts
+  /// come and go and bodies wake and sleep.
+  SlotBits activeContacts;
   // Lookup only (never iterated), so its order cannot leak into the step.
   std::unordered_map<std::uint64_t, std::int32_t> contactByPair;
 
@@ -65,13 +69,13 @@ struct WorldData {
 
   // Scratch reused every step, so the steady state allocates nothing.
   std::vector<ProxyPair> newPairs;
-  std::vector<std::int32_t> activeContacts;
-  /// The touching contacts the narrow phase left, in solver order; valid
-  /// while the awake list still has touchingForAwakeCount bodies (a wake
-  /// during the narrow phase appends bodies and makes the solver walk the
-  /// contact lists again).
+  SlotBits contactsToCollide;
+  /// The touching contacts with an awake body, in solver order: the narrow
+  /// phase's list for this step's solve.
   std::vector<std::int32_t> touchingContacts;
-  std::size_t touchingForAwakeCount = 0;
+  std::vector<std::int32_t> touchingKeys;
+  std::vector<std::int32_t> touchingStarts;
+  std::vector<std::int32_t> touchingSorted;
   std::vector<FieldBody> fieldBodies;
   std::vector<FieldBody> fieldStillBodies;
   std::vector<FieldLoad> fieldLoads;
@@ -103,6 +107,11 @@ void updateSleep(WorldData& world, Real dt);      // island.cpp: islands, sleepi
 // Used across stages.
 void destroyContact(WorldData& world, std::int32_t contact);     // contact.cpp
 void destroyBodyContacts(WorldData& world, std::int32_t body);   // contact.cpp
+// contact.cpp: the body woke; its contacts join the active ones.
+void activateBodyContacts(WorldData& world, std::int32_t body);
+// contact.cpp: the body fell asleep; its contacts whose other body is not
+// awake leave the active ones.
+void deactivateBodyContacts(WorldData& world, std::int32_t body);
 void wakeIsland(WorldData& world, std::int32_t body);            // island.cpp
 AABB bodyAABB(const WorldData& world, std::int32_t body);        // world.cpp
 // joint_world.cpp: a joint with collideConnected off between the bodies.

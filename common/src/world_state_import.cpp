@@ -538,6 +538,7 @@ class StateImport {
         return at("body slot", slot) + "awake but not in the awake list";
     }
     w.awakeBodies = state_.awakeBodies;
+    for (std::int32_t slot : w.awakeBodies) activateBodyContacts(w, slot);
     return {};
   }
 

@@ -150,7 +150,8 @@ TEST_P(HeavyLoad, OnBaseTenPyramid_HoldsAndSinksUnderTwoCentimetres) {
   BodyId heavy = addHeavyBox(world, start, Real(GetParam()), materialProperties(Material::Solid).density, 1);
   simulate(world, 10);
   EXPECT_LT(std::abs(sinkOf(world, heavy, start)), 0.02);
-  // It creeps sideways a little (measured 2.3 cm at 180:1): on top still.
+  // It creeps sideways a little (measured 3.0, 1.4 and 2.5 cm at 180, 300
+  // and 1000:1, either way): on top still.
   EXPECT_NEAR(stateOf(world, heavy).position.x(), start.x(), 0.05);
   EXPECT_NEAR(stateOf(world, pyramid.top).position.y(), pyramid.topStart.y(), 0.02);
 }

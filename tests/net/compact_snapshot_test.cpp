@@ -150,12 +150,14 @@ TEST(CompactSnapshots, SettlingScene_AtMostTwoBitsPerBodyPerSnapshot_WithinAQuan
 // how long the scene takes to sleep: with exact circle manifolds (issue 10)
 // it sleeps after 4.6 s instead of 5.3, the quiet snapshots at the end are
 // fewer, and the figure rose from 8.49 to 9.63 bits while the whole settle
-// took fewer bytes (166 per body, 168 before). So the whole settle is held
-// to its measure, and the per-snapshot figure to a looser bound.
-TEST(CompactSnapshots, StaggeredSettlingScene_AtMostTenBitsAndHundredSeventyBytesPerBody_WithinAQuantum) {
+// took fewer bytes (166 per body, 168 before); since the narrow phase walks
+// contacts by slot it sleeps after 4.4 s, at 10.06 bits and 164.7 bytes per
+// body. So the whole settle is held to its measure, and the per-snapshot
+// figure to a looser bound.
+TEST(CompactSnapshots, StaggeredSettlingScene_AtMostTenAndAHalfBitsAndHundredSeventyBytesPerBody_WithinAQuantum) {
   const SettleCost cost = settleAndMeasure(0.2);
   ASSERT_FALSE(HasFailure());
-  EXPECT_LE(cost.bitsPerBodyPerSnapshot, 10.0);
+  EXPECT_LE(cost.bitsPerBodyPerSnapshot, 10.5);
   EXPECT_LE(cost.bytesPerBody, 170.0);
 }
 
