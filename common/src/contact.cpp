@@ -175,12 +175,16 @@ void sortTouchingByBody(WorldData& world) {
   std::vector<std::int32_t>& list = world.touchingContacts;
   std::vector<std::int32_t>& keys = world.touchingKeys;
   std::vector<std::int32_t>& starts = world.touchingStarts;
+  if (list.empty()) return;
   keys.clear();
-  starts.assign(world.bodies.size() + 1, 0);
+  std::int32_t lastKey = 0;
   for (std::int32_t index : list) {
     keys.push_back(firstAwakeBody(world, world.contacts[index]));
-    ++starts[keys.back() + 1];
+    lastKey = std::max(lastKey, keys.back());
   }
+  // Counts up to the highest key only: a sleeping crowd costs nothing here.
+  starts.assign(static_cast<std::size_t>(lastKey) + 2, 0);
+  for (std::int32_t key : keys) ++starts[key + 1];
   for (std::size_t body = 1; body < starts.size(); ++body) starts[body] += starts[body - 1];
   world.touchingSorted.resize(list.size());
   for (std::size_t k = 0; k < list.size(); ++k) world.touchingSorted[starts[keys[k]]++] = list[k];
