@@ -82,7 +82,7 @@ double rowSpeed(const Vec2& linear, Real angularA, Real angularB, const SolverSt
 }  // namespace
 
 void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
-  nodes_.clear();
+  clear();
   buildGroups(rows, stateCount);
   jointTaken_.assign(rows.size(), 0);
   bodyVisit_.assign(stateCount, -1);
@@ -186,6 +186,7 @@ void JointTreePass::storeReversed(std::span<const JointRow> rows) {
     }
     nodes_.push_back(node);
   }
+  groupEnds_.push_back(static_cast<std::int32_t>(nodes_.size()));
 }
 
 // m, m and I of a body, from the joint that reached it or that it reached.
@@ -199,19 +200,32 @@ Eigen::Vector3d JointTreePass::bodyMass(std::span<const JointRow> rows, const Vi
   return {1.0 / invMass, 1.0 / invMass, invInertia > 0 ? 1.0 / invInertia : 1e30};
 }
 
+template <class Pass>
+void JointTreePass::forEachGroup(Pass&& pass) {
+  std::size_t begin = 0;
+  for (const std::int32_t end : groupEnds_) {
+    pass(std::span<Node>(nodes_).subspan(begin, static_cast<std::size_t>(end) - begin));
+    begin = static_cast<std::size_t>(end);
+  }
+}
+
+// Group by group, so that a group's nodes stay in cache through the passes.
 void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h) {
-  if (nodes_.empty()) return;
-  assemble(rows, states, h);
-  factor();
-  substitute();
-  applyVelocities(states, true);
+  const double errorRate = kErrorShare / h;
+  forEachGroup([&](std::span<Node> group) {
+    assemble(group, rows, states, errorRate);
+    factor(group);
+    substitute(group);
+    applyVelocities(group, states, true);
+  });
 }
 
 void JointTreePass::push(std::span<SolverState> states) {
-  if (nodes_.empty()) return;
-  assembleSpeeds(states);
-  substitute();
-  applyVelocities(states, false);
+  forEachGroup([&](std::span<Node> group) {
+    if (!assembleSpeeds(group, states)) return;  // nothing pushed it: no change
+    substitute(group);
+    applyVelocities(group, states, false);
+  });
 }
 
 void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
@@ -258,10 +272,9 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
 }
 
 // H_ii, H_{i,parent} and the right-hand side at the sub-step's geometry.
-void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverState> states,
-                             Real h) {
-  const double errorRate = kErrorShare / h;
-  for (Node& node : nodes_) {
+void JointTreePass::assemble(std::span<Node> group, std::span<JointRow> rows,
+                             std::span<const SolverState> states, double errorRate) {
+  for (Node& node : group) {
     if (node.isJoint) {
       assembleJoint(node, rows[node.row], states, errorRate);
     } else {
@@ -272,8 +285,10 @@ void JointTreePass::assemble(std::span<JointRow> rows, std::span<const SolverSta
 }
 
 // The push's right-hand side: each used row's speed, without correction.
-void JointTreePass::assembleSpeeds(std::span<const SolverState> states) {
-  for (Node& node : nodes_) {
+// Returns whether any row moves.
+bool JointTreePass::assembleSpeeds(std::span<Node> group, std::span<const SolverState> states) {
+  bool moving = false;
+  for (Node& node : group) {
     node.value.setZero();
     if (!node.isJoint) continue;
     const SolverState& a = states[node.stateA];
@@ -282,14 +297,16 @@ void JointTreePass::assembleSpeeds(std::span<const SolverState> states) {
       if (node.impulses[r] == nullptr) continue;
       const RowJacobian& g = node.jacobian[r];
       node.value(r) = -rowSpeed(g.linear, g.angularA, g.angularB, a, b);
+      moving = moving || node.value(r) != 0;
     }
   }
+  return moving;
 }
 
 // L D L^T of the tree, leaves first (every child before its parent): each
 // node keeps D_i^-1 and D_i^-1 H_{i,parent}, all the substitutions need.
-void JointTreePass::factor() {
-  for (Node& node : nodes_) {
+void JointTreePass::factor(std::span<Node> group) {
+  for (Node& node : group) {
     node.diagonal = symmetricInverse(node.diagonal);
     if (node.parent < 0) continue;
     const Eigen::Matrix3d lower = node.diagonal * node.toParent;
@@ -300,21 +317,22 @@ void JointTreePass::factor() {
 
 // The two substitutions; the solution replaces each node's value: a body's
 // velocity change, a joint's negated impulses.
-void JointTreePass::substitute() {
-  for (Node& node : nodes_) {
+void JointTreePass::substitute(std::span<Node> group) {
+  for (Node& node : group) {
     const Eigen::Vector3d reduced = node.value;
     node.value.noalias() = node.diagonal * reduced;
     if (node.parent >= 0) nodes_[node.parent].value.noalias() -= node.toParent.transpose() * reduced;
   }
-  for (auto node = nodes_.rbegin(); node != nodes_.rend(); ++node) {
+  for (auto node = group.rbegin(); node != group.rend(); ++node) {
     if (node->parent >= 0) node->value.noalias() -= node->toParent * nodes_[node->parent].value;
   }
 }
 
 // Bodies take their velocity change; joints' impulses join the warm start,
 // except the push's, which belong to pseudo velocities.
-void JointTreePass::applyVelocities(std::span<SolverState> states, bool keepImpulses) {
-  for (const Node& node : nodes_) {
+void JointTreePass::applyVelocities(std::span<const Node> group, std::span<SolverState> states,
+                                    bool keepImpulses) {
+  for (const Node& node : group) {
     if (!node.isJoint) {
       SolverState& state = states[node.state];
       state.linearVelocity += Vec2(Real(node.value(0)), Real(node.value(1)));

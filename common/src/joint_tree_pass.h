@@ -34,7 +34,10 @@ class JointTreePass {
   /// each group's bodies and joints from the leaves to a root.
   void order(std::span<JointRow> rows, std::size_t stateCount);
   /// Forgets the groups, for a step with no joint on an awake body.
-  void clear() { nodes_.clear(); }
+  void clear() {
+    nodes_.clear();
+    groupEnds_.clear();
+  }
   /// The pass on the states' real velocities: per group, builds and factors
   /// the system at the sub-step's geometry, solves it with position
   /// correction and applies the impulses, which join the joints' warm start.
@@ -80,13 +83,18 @@ class JointTreePass {
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
   void storeReversed(std::span<const JointRow> rows);
   Eigen::Vector3d bodyMass(std::span<const JointRow> rows, const Visit& body) const;
-  void assemble(std::span<JointRow> rows, std::span<const SolverState> states, Real h);
+  /// Runs pass(group) for each group's nodes, a span of nodes_ (whose
+  /// parent and side indices stay positions in nodes_).
+  template <class Pass>
+  void forEachGroup(Pass&& pass);
+  void assemble(std::span<Node> group, std::span<JointRow> rows, std::span<const SolverState> states,
+                double errorRate);
   void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
                      double errorRate);
-  void assembleSpeeds(std::span<const SolverState> states);
-  void factor();
-  void substitute();
-  void applyVelocities(std::span<SolverState> states, bool keepImpulses);
+  bool assembleSpeeds(std::span<Node> group, std::span<const SolverState> states);
+  void factor(std::span<Node> group);
+  void substitute(std::span<Node> group);
+  void applyVelocities(std::span<const Node> group, std::span<SolverState> states, bool keepImpulses);
 
   std::vector<std::int32_t> bodyGroup_;     ///< union-find over solver states
   std::vector<std::uint8_t> groupHasLoop_;  ///< by union-find root
@@ -98,6 +106,7 @@ class JointTreePass {
   std::vector<std::int32_t> loopBodies_;
   std::vector<Visit> walk_;
   std::vector<Node> nodes_;  ///< every group, each leaves first, root last
+  std::vector<std::int32_t> groupEnds_;  ///< where each group's nodes end in nodes_
 };
 
 }  // namespace impulse
