@@ -21,11 +21,6 @@ class SlotBits {
     const auto word = static_cast<std::size_t>(slot) / kBits;
     if (word < words_.size()) words_[word] &= ~bit(slot);
   }
-  bool contains(std::int32_t slot) const {
-    const auto word = static_cast<std::size_t>(slot) / kBits;
-    return word < words_.size() && (words_[word] & bit(slot)) != 0;
-  }
-  void clear() { words_.clear(); }
 
   /// Calls visit(slot) for every member, highest slot first. Members
   /// inserted or erased during the walk are seen or missed depending on
