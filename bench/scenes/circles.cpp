@@ -174,8 +174,11 @@ class RainWatch final : public Measure {
 }  // namespace
 
 void addCircleScenes(SceneList& scenes, bool quick) {
-  addListedScene<ConfinedWatch>(scenes, quick, "confined", confined, {0, 300, 3, 5}, {0, 5, 1, 5});
-  addListedScene<SqueezeWatch>(scenes, quick, "squeeze-900", squeeze, {0, 600, 3, 5}, {0, 5, 1, 5});
+  // Watched every step: their headline is the fastest body, an extreme that
+  // sampling misses (every 5th step read Impulse's confined crowd at
+  // 0.76 m/s; every step, 1.22).
+  addListedScene<ConfinedWatch>(scenes, quick, "confined", confined, {0, 300, 3, 1}, {0, 5, 1, 1});
+  addListedScene<SqueezeWatch>(scenes, quick, "squeeze-900", squeeze, {0, 600, 3, 1}, {0, 5, 1, 1});
   addListedScene<RainWatch>(scenes, quick, "rain-2000", [] { return rainScene(2000); }, {0, 600, 3, 10},
                             {0, 5, 1, 5});
   for (int count : {500, 1000, 2000, 4000, 8000}) {
