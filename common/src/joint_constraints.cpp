@@ -106,7 +106,7 @@ void JointConstraints::solveExact(const SubStep& sub) {
   tree_.solve(rows_, sub.states, pass_.h);
 }
 void JointConstraints::pushExact(const SubStep& sub) {
-  tree_.push(sub.states);
+  tree_.push(rows_, sub.states);
 }
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 

@@ -46,13 +46,24 @@ struct JointPass {
 };
 
 
-/// A rigid (equality) row of a joint at the sub-step's geometry: its speed
-/// is linear . (vB - vA) + angularB * wB - angularA * wA, its error
-/// `position`; `impulse` is where its impulse accumulates.
-struct RigidRow {
+/// A scalar row: Cdot = linear . (vB - vA) + angularB * wB - angularA * wA.
+struct Jacobian {
   Vec2 linear = Vec2::Zero();
   Real angularA = 0;
   Real angularB = 0;
+  Jacobian operator-() const { return {-linear, -angularA, -angularB}; }
+};
+
+/// The row's speed Cdot at the states' velocities.
+inline Real velocity(const Jacobian& j, const SolverState& a, const SolverState& b) {
+  return j.linear.dot(b.linearVelocity - a.linearVelocity) + j.angularB * b.angularVelocity -
+         j.angularA * a.angularVelocity;
+}
+
+/// A rigid (equality) row of a joint at the sub-step's geometry: its error
+/// `position`; `impulse` is where its impulse accumulates.
+struct RigidRow {
+  Jacobian jacobian;
   Real position = 0;
   Real* impulse = nullptr;
 };

@@ -17,14 +17,6 @@ namespace {
 
 using Mat2 = Eigen::Matrix<Real, 2, 2>;
 
-/// A scalar row: Cdot = linear . (vB - vA) + angularB * wB - angularA * wA.
-struct Jacobian {
-  Vec2 linear = Vec2::Zero();
-  Real angularA = 0;
-  Real angularB = 0;
-  Jacobian operator-() const { return {-linear, -angularA, -angularB}; }
-};
-
 /// The joint's geometry now: anchors from the centres, B's anchor minus A's,
 /// and the joint angle. The angle is read only by rows that turn: its atan2
 /// is the costliest part of a frame, and a plain pin never needs it.
@@ -56,11 +48,6 @@ Jacobian slideJacobian(const Frame& f, const Vec2& u) {
 Vec2 unitOr(const Vec2& v, const Vec2& fallback) {
   Real length = v.norm();
   return length > Real(1e-6) ? Vec2(v / length) : fallback;
-}
-
-Real velocity(const Jacobian& j, const SolverState& a, const SolverState& b) {
-  return j.linear.dot(b.linearVelocity - a.linearVelocity) + j.angularB * b.angularVelocity -
-         j.angularA * a.angularVelocity;
 }
 
 void apply(const JointRow& row, const Jacobian& j, Real impulse, SolverState& a, SolverState& b) {
@@ -345,7 +332,7 @@ struct RigidRowsOut {
   RigidRows& rows;
   int count = 0;
   void add(const Jacobian& j, Real position, Real& impulse) {
-    rows[count++] = {j.linear, j.angularA, j.angularB, position, &impulse};
+    rows[count++] = {j, position, &impulse};
   }
   void addPoint(const Frame& f, Vec2& impulse) {
     add({Vec2(1, 0), -f.rA.y(), -f.rB.y()}, f.d.x(), impulse.x());

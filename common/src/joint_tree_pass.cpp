@@ -36,7 +36,7 @@ std::int32_t findGroup(std::vector<std::int32_t>& group, std::int32_t state) {
 Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
   Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
   for (int r = 0; r < count; ++r) {
-    const RigidRow& row = rows[r];
+    const Jacobian& row = rows[r].jacobian;
     const double sign = sideB ? 1 : -1;
     g(r, 0) = sign * row.linear.x();
     g(r, 1) = sign * row.linear.y();
@@ -70,13 +70,6 @@ void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matr
       if (j != i) target(j, i) -= product;
     }
   }
-}
-
-// A rigid row's speed: linear . (vB - vA) + angularB * wB - angularA * wA.
-double rowSpeed(const Vec2& linear, Real angularA, Real angularB, const SolverState& a,
-                const SolverState& b) {
-  return linear.dot(b.linearVelocity - a.linearVelocity) + angularB * b.angularVelocity -
-         angularA * a.angularVelocity;
 }
 
 }  // namespace
@@ -220,9 +213,9 @@ void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> state
   });
 }
 
-void JointTreePass::push(std::span<SolverState> states) {
+void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> states) {
   forEachGroup([&](std::span<Node> group) {
-    if (!assembleSpeeds(group, states)) return;  // nothing pushed it: no change
+    if (!assembleSpeeds(group, rows, states)) return;  // nothing pushed it: no change
     substitute(group);
     applyVelocities(group, states, false);
   });
@@ -239,10 +232,8 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
   node.diagonal = Eigen::Matrix3d::Identity();
   node.value.setZero();
   node.impulses = {};
-  node.stateA = row.stateA;
-  node.stateB = row.stateB;
   for (int r = 0; r < count; ++r) {
-    const RigidRow& g = rigid[r];
+    const Jacobian& g = rigid[r].jacobian;
     const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
                                row.invInertiaA * g.angularA * g.angularA +
                                row.invInertiaB * g.angularB * g.angularB;
@@ -252,12 +243,11 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
       continue;
     }
     node.diagonal(r, r) = -kCompliance * inverseMass;
-    const double speed = rowSpeed(g.linear, g.angularA, g.angularB, a, b);
     const double correction =
-        std::clamp(errorRate * g.position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
-    node.value(r) = -(speed + correction);
-    node.impulses[r] = g.impulse;
-    node.jacobian[r] = {g.linear, g.angularA, g.angularB};
+        std::clamp(errorRate * rigid[r].position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
+    node.value(r) = -(velocity(g, a, b) + correction);
+    node.impulses[r] = rigid[r].impulse;
+    node.jacobian[r] = g;
   }
   // The joint's rows couple it to its parent body, or its child bodies to it.
   for (std::size_t side = 0; side < 2; ++side) {
@@ -286,17 +276,18 @@ void JointTreePass::assemble(std::span<Node> group, std::span<JointRow> rows,
 
 // The push's right-hand side: each used row's speed, without correction.
 // Returns whether any row moves.
-bool JointTreePass::assembleSpeeds(std::span<Node> group, std::span<const SolverState> states) {
+bool JointTreePass::assembleSpeeds(std::span<Node> group, std::span<const JointRow> rows,
+                                   std::span<const SolverState> states) {
   bool moving = false;
   for (Node& node : group) {
     node.value.setZero();
     if (!node.isJoint) continue;
-    const SolverState& a = states[node.stateA];
-    const SolverState& b = states[node.stateB];
+    const JointRow& row = rows[node.row];
+    const SolverState& a = states[row.stateA];
+    const SolverState& b = states[row.stateB];
     for (int r = 0; r < 3; ++r) {
       if (node.impulses[r] == nullptr) continue;
-      const RowJacobian& g = node.jacobian[r];
-      node.value(r) = -rowSpeed(g.linear, g.angularA, g.angularB, a, b);
+      node.value(r) = -velocity(node.jacobian[r], a, b);
       moving = moving || node.value(r) != 0;
     }
   }

@@ -46,15 +46,9 @@ class JointTreePass {
   /// speeds are taken out of. The bodies have not moved since this
   /// sub-step's `solve`, so its factors are reused: only the right-hand
   /// side is new.
-  void push(std::span<SolverState> states);
+  void push(std::span<const JointRow> rows, std::span<SolverState> states);
 
  private:
-  /// A rigid row's Jacobian, kept for the push's right-hand side.
-  struct RowJacobian {
-    Vec2 linear = Vec2::Zero();
-    Real angularA = 0;
-    Real angularB = 0;
-  };
   /// A body or a joint of a group. Joints have up to three rigid rows;
   /// unused rows are identity rows with a zero right-hand side.
   struct Node {
@@ -68,9 +62,7 @@ class JointTreePass {
     Eigen::Matrix3d toParent = Eigen::Matrix3d::Zero();  ///< H_{i,parent}, then D_i^-1 H_{i,parent}
     Eigen::Vector3d value = Eigen::Vector3d::Zero();     ///< right-hand side, then solution
     std::array<Real*, 3> impulses{};  ///< a joint's rows' accumulated impulses; null: unused
-    std::array<RowJacobian, 3> jacobian{};  ///< a joint's rows
-    std::int32_t stateA = 0;  ///< a joint's rows' solver states
-    std::int32_t stateB = 0;
+    std::array<Jacobian, 3> jacobian{};  ///< a joint's rows, kept for the push
   };
   /// A node as the walk finds it (parent and sides by walk position).
   struct Visit {
@@ -91,7 +83,8 @@ class JointTreePass {
                 double errorRate);
   void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
                      double errorRate);
-  bool assembleSpeeds(std::span<Node> group, std::span<const SolverState> states);
+  bool assembleSpeeds(std::span<Node> group, std::span<const JointRow> rows,
+                      std::span<const SolverState> states);
   void factor(std::span<Node> group);
   void substitute(std::span<Node> group);
   void applyVelocities(std::span<const Node> group, std::span<SolverState> states, bool keepImpulses);
