@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "counting_sort.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -174,7 +175,6 @@ std::int32_t firstAwakeBody(const WorldData& world, const Contact& contact) {
 void sortTouchingByBody(WorldData& world) {
   std::vector<std::int32_t>& list = world.touchingContacts;
   std::vector<std::int32_t>& keys = world.touchingKeys;
-  std::vector<std::int32_t>& starts = world.touchingStarts;
   if (list.empty()) return;
   keys.clear();
   std::int32_t lastKey = 0;
@@ -182,12 +182,11 @@ void sortTouchingByBody(WorldData& world) {
     keys.push_back(firstAwakeBody(world, world.contacts[index]));
     lastKey = std::max(lastKey, keys.back());
   }
-  // Counts up to the highest key only: a sleeping crowd costs nothing here.
-  starts.assign(static_cast<std::size_t>(lastKey) + 2, 0);
-  for (std::int32_t key : keys) ++starts[key + 1];
-  for (std::size_t body = 1; body < starts.size(); ++body) starts[body] += starts[body - 1];
-  world.touchingSorted.resize(list.size());
-  for (std::size_t k = 0; k < list.size(); ++k) world.touchingSorted[starts[keys[k]]++] = list[k];
+  // Keys up to the highest only: a sleeping crowd costs nothing here.
+  world.touchingStarts.resize(static_cast<std::size_t>(lastKey) + 2);
+  countingSort(keys, world.touchingStarts, world.touchingOrder);
+  world.touchingSorted.clear();
+  for (std::int32_t position : world.touchingOrder) world.touchingSorted.push_back(list[std::size_t(position)]);
   list.swap(world.touchingSorted);
 }
 

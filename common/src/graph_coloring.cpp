@@ -1,5 +1,7 @@
 #include "graph_coloring.h"
 
+#include "counting_sort.h"
+
 #include <algorithm>
 #include <bit>
 
@@ -15,16 +17,8 @@ int GraphColoring::take(std::int32_t stateA, std::int32_t stateB) {
 }
 
 ColorStarts sortByColor(std::span<const std::int32_t> colorOf, std::vector<std::int32_t>& order) {
-  // Counting sort: one pass to count, one to place.
   ColorStarts start{};
-  for (std::int32_t color : colorOf) ++start[color + 1];
-  for (int color = 0; color <= GraphColoring::kOverflow; ++color) start[color + 1] += start[color];
-  order.resize(colorOf.size());
-  std::array<std::int32_t, GraphColoring::kOverflow + 1> next{};
-  std::copy(start.begin(), start.end() - 1, next.begin());
-  for (std::size_t i = 0; i < colorOf.size(); ++i) {
-    order[next[colorOf[i]]++] = static_cast<std::int32_t>(i);
-  }
+  countingSort(colorOf, start, order);
   return start;
 }
 

@@ -75,6 +75,7 @@ struct WorldData {
   std::vector<std::int32_t> touchingContacts;
   std::vector<std::int32_t> touchingKeys;
   std::vector<std::int32_t> touchingStarts;
+  std::vector<std::int32_t> touchingOrder;
   std::vector<std::int32_t> touchingSorted;
   std::vector<FieldBody> fieldBodies;
   std::vector<FieldBody> fieldStillBodies;

@@ -1,0 +1,30 @@
+#pragma once
+// A stable counting sort of positions by small integer keys, in linear time:
+// the solver orders its constraints by colour and the narrow phase its
+// touching contacts by body this way.
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <span>
+#include <vector>
+
+namespace impulse {
+
+/// Fills `order` with the positions 0..n-1 of `keys`, sorted by key, ties in
+/// position order. `starts` (one entry per possible key, plus one) receives
+/// where each key's positions begin: key k holds [starts[k], starts[k + 1]).
+inline void countingSort(std::span<const std::int32_t> keys, std::span<std::int32_t> starts,
+                         std::vector<std::int32_t>& order) {
+  std::fill(starts.begin(), starts.end(), 0);
+  for (const std::int32_t key : keys) ++starts[static_cast<std::size_t>(key)];
+  // Each entry becomes where its key ends; placing from the back then moves
+  // it to where its key begins, and keeps ties in order.
+  std::partial_sum(starts.begin(), starts.end(), starts.begin());
+  order.resize(keys.size());
+  for (std::size_t i = keys.size(); i-- > 0;) {
+    order[static_cast<std::size_t>(--starts[static_cast<std::size_t>(keys[i])])] = static_cast<std::int32_t>(i);
+  }
+}
+
+}  // namespace impulse
