@@ -71,9 +71,10 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
   rows_.clear();
-  // The tree pass must not keep last step's groups: their rows are gone.
-  tree_.clear();
-  if (world.liveJoints == 0) return false;
+  if (world.liveJoints == 0) {
+    tree_.clear();
+    return false;
+  }
   gathered_.clear();
   colorOf_.clear();
   for (std::size_t index = 0; index < world.joints.size(); ++index) {

@@ -75,7 +75,26 @@ void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matr
 }  // namespace
 
 void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
+  if (!sameRowsAsOrdered(rows)) orderAnew(rows, stateCount);
+  for (const Node& node : nodes_) {
+    if (node.isJoint) rows[node.row].inTree = true;
+  }
+}
+
+JointTreePass::RowShape JointTreePass::shapeOf(const JointRow& row) {
+  return {row.index,    row.stateA,      row.stateB,   row.rigidRowCount,
+          row.invMassA, row.invInertiaA, row.invMassB, row.invInertiaB};
+}
+
+bool JointTreePass::sameRowsAsOrdered(std::span<const JointRow> rows) const {
+  return rows.size() == orderedFrom_.size() &&
+         std::equal(rows.begin(), rows.end(), orderedFrom_.begin(),
+                    [](const JointRow& row, const RowShape& shape) { return shapeOf(row) == shape; });
+}
+
+void JointTreePass::orderAnew(std::span<const JointRow> rows, std::size_t stateCount) {
   clear();
+  for (const JointRow& row : rows) orderedFrom_.push_back(shapeOf(row));
   buildGroups(rows, stateCount);
   jointTaken_.assign(rows.size(), 0);
   bodyVisit_.assign(stateCount, -1);
@@ -92,9 +111,6 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
       if (groupHasLoop_[findGroup(bodyGroup_, body)]) continue;
       orderGroup(static_cast<std::int32_t>(r), rows);
     }
-  }
-  for (const Node& node : nodes_) {
-    if (node.isJoint) rows[node.row].inTree = true;
   }
 }
 

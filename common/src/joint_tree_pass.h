@@ -31,12 +31,15 @@ class JointTreePass {
  public:
   /// Once per step: finds the acyclic groups among `rows` (bodies are their
   /// solver states, state 0 and massless bodies are the world) and orders
-  /// each group's bodies and joints from the leaves to a root.
+  /// each group's bodies and joints from the leaves to a root. Last step's
+  /// groups are kept while every row joins the same states with the same
+  /// masses; either way the rows of the groups are marked `inTree`.
   void order(std::span<JointRow> rows, std::size_t stateCount);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() {
     nodes_.clear();
     groupEnds_.clear();
+    orderedFrom_.clear();
   }
   /// The pass on the states' real velocities: per group, builds and factors
   /// the system at the sub-step's geometry, solves it with position
@@ -64,6 +67,18 @@ class JointTreePass {
     std::array<Real*, 3> impulses{};  ///< a joint's rows' accumulated impulses; null: unused
     std::array<Jacobian, 3> jacobian{};  ///< a joint's rows, kept for the push
   };
+  /// What the groups are built from, per row.
+  struct RowShape {
+    std::int32_t joint = -1;
+    std::int32_t stateA = 0;
+    std::int32_t stateB = 0;
+    int rigidRowCount = 0;
+    Real invMassA = 0;
+    Real invInertiaA = 0;
+    Real invMassB = 0;
+    Real invInertiaB = 0;
+    bool operator==(const RowShape&) const = default;
+  };
   /// A node as the walk finds it (parent and sides by walk position).
   struct Visit {
     std::int32_t parent = -1;
@@ -71,6 +86,9 @@ class JointTreePass {
     std::int32_t row = -1;
   };
 
+  static RowShape shapeOf(const JointRow& row);
+  bool sameRowsAsOrdered(std::span<const JointRow> rows) const;
+  void orderAnew(std::span<const JointRow> rows, std::size_t stateCount);
   void buildGroups(std::span<const JointRow> rows, std::size_t stateCount);
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
   void storeReversed(std::span<const JointRow> rows);
@@ -100,6 +118,7 @@ class JointTreePass {
   std::vector<Visit> walk_;
   std::vector<Node> nodes_;  ///< every group, each leaves first, root last
   std::vector<std::int32_t> groupEnds_;  ///< where each group's nodes end in nodes_
+  std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
 };
 
 }  // namespace impulse
