@@ -65,16 +65,8 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
 Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
                          const Transform& xfB);
 
-using CollideFunction = Manifold (*)(const Shape& a, const Transform& xfA, const Shape& b,
-                                     const Transform& xfB);
-
-/// Dispatch table entry for the ordered type pair, or nullptr when the pair
-/// must be given the other way round (shape A's type must be >= shape B's).
-CollideFunction collideFunction(ShapeType a, ShapeType b);
-
-/// Signed distance between two shapes: the exact gap when they are apart,
-/// and a negative value (minus the depth along the axis of least
-/// penetration) when they overlap. Continuous collision uses it.
-Real computeSeparation(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB);
+/// The manifold of any two shapes, normal from a to b (dispatches on their
+/// types; the world caches the function per contact instead, shape_pair.h).
+Manifold collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB);
 
 }  // namespace impulse
