@@ -4,7 +4,6 @@
 #include <cstdint>
 
 #include "edge_list.h"
-#include "impulse/material.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
 
@@ -24,13 +23,17 @@ struct Body {
   Real gravityScale = 1;
   // Sizes used by sleeping (how fast the rim moves) and continuous collision
   // (how far a body may move in a step before it could skip a thin wall).
+  // Over all of the body's shapes: the farthest point from the centre of
+  // mass, and the thinnest shape's inner radius.
   Real extent = 0;
   Real innerRadius = 0;
   Real sleepTime = 0;
   // Centre at the start of the step (continuous collision sweeps from it).
   Vec2 center0 = Vec2::Zero();
   Rot rotation0;
-  std::int32_t proxyKey = kNullIndex;
+  // First of this body's shapes (ShapeSlot::nextInBody links the rest).
+  std::int32_t shapeHead = kNullIndex;
+  std::int32_t shapeCount = 0;
   // Head of this body's contact edge list (edge_list.h).
   std::int32_t contactHead = kNullIndex;
   // Head of this body's joint edge list.
@@ -40,9 +43,6 @@ struct Body {
   std::uint64_t islandMark = 0;
   std::uint64_t creationOrder = 0;
   std::uint32_t generation = 0;
-  Material material = Material::Solid;
-  /// The material's coefficients with any per-body override applied.
-  MaterialProperties coefficients{};
   bool alive = false;
   bool isStatic = false;
   bool ignoreGravity = false;

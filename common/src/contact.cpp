@@ -12,11 +12,6 @@ namespace impulse {
 
 namespace {
 
-Real rollingRadius(const Shape& shape) {
-  // Only round shapes roll; a polygon's resistance to tipping is geometric.
-  return shape.type == ShapeType::Circle ? shape.circle.radius : Real(0);
-}
-
 std::int32_t allocateContact(WorldData& world) {
   std::int32_t index = world.freeContacts.acquire(world.contacts.size());
   if (index == static_cast<std::int32_t>(world.contacts.size())) world.contacts.emplace_back();
@@ -31,27 +26,32 @@ void linkContact(WorldData& world, std::int32_t index) {
   }
 }
 
-void createContact(WorldData& world, std::int32_t a, std::int32_t b) {
-  // The collide table is filled for shape A's type >= shape B's type.
-  if (collideFunction(world.shapes[a].type, world.shapes[b].type) == nullptr) std::swap(a, b);
-  const MaterialProperties& ma = world.bodies[a].coefficients;
-  const MaterialProperties& mb = world.bodies[b].coefficients;
+void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
+  // The collide table holds each pair of types in one order only.
+  if (collideFunction(world.shapes[shapeA].type(), world.shapes[shapeB].type()) == nullptr) {
+    std::swap(shapeA, shapeB);
+  }
+  const ShapeSlot& sa = world.shapes[shapeA];
+  const ShapeSlot& sb = world.shapes[shapeB];
+  const MaterialProperties& ma = sa.coefficients;
+  const MaterialProperties& mb = sb.coefficients;
 
   std::int32_t index = allocateContact(world);
   Contact& contact = world.contacts[index];
   contact = Contact{};
-  contact.edges.bodyA = a;
-  contact.edges.bodyB = b;
-  contact.collide = collideFunction(world.shapes[a].type, world.shapes[b].type);
+  contact.edges.bodyA = sa.body;
+  contact.edges.bodyB = sb.body;
+  contact.shapeA = shapeA;
+  contact.shapeB = shapeB;
+  contact.collide = collideFunction(sa.type(), sb.type());
   contact.staticFriction = mixCoefficient(ma.staticFriction, mb.staticFriction);
   contact.dynamicFriction = mixCoefficient(ma.dynamicFriction, mb.dynamicFriction);
   contact.restitution = mixCoefficient(ma.restitution, mb.restitution);
-  contact.rollingResistance =
-      mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
-      std::max(rollingRadius(world.shapes[a]), rollingRadius(world.shapes[b]));
-  contact.pairKey = contactPairKey(a, b);
+  contact.rollingResistance = mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
+                              std::max(sa.rollingRadius, sb.rollingRadius);
+  contact.pairKey = contactPairKey(shapeA, shapeB);
   linkContact(world, index);
-  if (world.bodies[a].awake || world.bodies[b].awake) world.activeContacts.insert(index);
+  if (world.bodies[sa.body].awake || world.bodies[sb.body].awake) world.activeContacts.insert(index);
   world.contactByPair.emplace(contact.pairKey, index);
 }
 
@@ -139,6 +139,16 @@ bool carriesManifold(const Contact& contact) {
   return contact.collide != circles;
 }
 
+// Whether the broad phase's pair of shapes may become a contact.
+bool pairMayTouch(const WorldData& world, const ProxyPair& pair) {
+  const ShapeSlot& a = world.shapes[pair.first];
+  const ShapeSlot& b = world.shapes[pair.second];
+  if (a.body == b.body) return false;
+  if (world.bodies[a.body].isStatic && world.bodies[b.body].isStatic) return false;
+  if (!shapesCanCollide(a.type(), b.type())) return false;
+  return !jointBlocksContact(world, a.body, b.body);
+}
+
 void updateManifold(WorldData& world, std::int32_t index) {
   Contact& contact = world.contacts[index];
   const Body& a = world.bodies[contact.edges.bodyA];
@@ -149,8 +159,8 @@ void updateManifold(WorldData& world, std::int32_t index) {
     return;
   }
   ++world.profile.manifoldUpdates;
-  Manifold next = contact.collide(world.shapes[contact.edges.bodyA], a.transform,
-                                  world.shapes[contact.edges.bodyB], b.transform);
+  Manifold next = contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
+                                  world.shapes[contact.shapeB].ref().geometry, b.transform);
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
   contact.touching = next.pointCount > 0;
@@ -197,11 +207,7 @@ void updatePairs(WorldData& world, Real /*dt*/) {
     return world.contactByPair.contains(contactPairKey(first, second));
   });
   for (const ProxyPair& pair : world.newPairs) {
-    const Body& a = world.bodies[pair.first];
-    const Body& b = world.bodies[pair.second];
-    if (a.isStatic && b.isStatic) continue;
-    if (jointBlocksContact(world, pair.first, pair.second)) continue;
-    createContact(world, pair.first, pair.second);
+    if (pairMayTouch(world, pair)) createContact(world, pair.first, pair.second);
   }
 }
 
@@ -216,7 +222,8 @@ void collideContacts(WorldData& world, Real /*dt*/) {
     Contact& contact = world.contacts[index];
     const Body& a = world.bodies[contact.edges.bodyA];
     const Body& b = world.bodies[contact.edges.bodyB];
-    if (!world.broadPhase.fatAABBsOverlap(a.proxyKey, b.proxyKey)) {
+    if (!world.broadPhase.fatAABBsOverlap(world.shapes[contact.shapeA].proxyKey,
+                                          world.shapes[contact.shapeB].proxyKey)) {
       destroyContact(world, index);
       return;
     }
@@ -256,6 +263,25 @@ void deactivateBodyContacts(WorldData& world, std::int32_t body) {
   forEachEdge(world.contacts, world.bodies[body].contactHead, [&](std::int32_t key, const Contact& contact) {
     if (!world.bodies[contact.edges.otherBody(key)].awake) world.activeContacts.erase(edgeElement(key));
   });
+}
+
+void destroyShapeContacts(WorldData& world, std::int32_t shape) {
+  const std::int32_t body = world.shapes[shape].body;
+  std::int32_t key = world.bodies[body].contactHead;
+  while (key != kNullIndex) {
+    const Contact& contact = world.contacts[edgeElement(key)];
+    const std::int32_t next = contact.edges.next[edgeSide(key)];
+    if (contact.shapeA == shape || contact.shapeB == shape) {
+      if (contact.touching) wakeIsland(world, contact.edges.otherBody(key));
+      destroyContact(world, edgeElement(key));
+    }
+    key = next;
+  }
+}
+
+void forgetManifoldFrames(WorldData& world, std::int32_t body) {
+  forEachEdge(world.contacts, world.bodies[body].contactHead,
+              [&](std::int32_t key, const Contact&) { world.contacts[edgeElement(key)].frame.computed = false; });
 }
 
 void destroyBodyContacts(WorldData& world, std::int32_t body) {

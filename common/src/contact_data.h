@@ -1,5 +1,5 @@
 #pragma once
-// A contact: a pair of bodies whose fat boxes overlap, its manifold and the
+// A contact: a pair of shapes whose fat boxes overlap, its manifold and the
 // coefficients mixed from the two materials (contact.cpp keeps them).
 
 #include <algorithm>
@@ -7,10 +7,11 @@
 
 #include "edge_list.h"
 #include "impulse/manifold.h"
+#include "shape_pair.h"
 
 namespace impulse {
 
-/// The key of a pair of body slots in WorldData::contactByPair, either order.
+/// The key of a pair of shape slots in WorldData::contactByPair, either order.
 inline std::uint64_t contactPairKey(std::int32_t a, std::int32_t b) {
   auto lo = static_cast<std::uint64_t>(std::min(a, b));
   auto hi = static_cast<std::uint64_t>(std::max(a, b));
@@ -20,6 +21,9 @@ inline std::uint64_t contactPairKey(std::int32_t a, std::int32_t b) {
 struct Contact {
   /// The two bodies and this contact's place in their edge lists.
   EdgeLinks edges;
+  /// The two shapes (slots), A's on edges.bodyA.
+  std::int32_t shapeA = -1;
+  std::int32_t shapeB = -1;
   Manifold manifold;
   ManifoldFrame frame;
   CollideFunction collide = nullptr;

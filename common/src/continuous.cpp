@@ -52,7 +52,7 @@ bool isFast(const Body& body) {
 // First time in (0, 1] at which the moving shape comes within the target
 // separation of the static one; 0 when it starts the step that close
 // already, 1 when it never comes close.
-Real timeOfImpact(const Shape& moving, const Sweep& sweep, Real extent, const Shape& fixed,
+Real timeOfImpact(ShapeRef moving, const Sweep& sweep, Real extent, ShapeRef fixed,
                   const Transform& fixedTransform) {
   Real maxApproach = (sweep.c1 - sweep.c0).norm() + std::abs(sweep.a1 - sweep.a0) * extent;
   if (maxApproach <= 0) return 1;
@@ -71,33 +71,42 @@ Real timeOfImpact(const Shape& moving, const Sweep& sweep, Real extent, const Sh
 // shape at its start would freeze a body sliding along the wall, so (as Box2D
 // v3 does) only a small core circle around the centroid is swept: the body
 // may graze, but its centre never crosses.
-Real timeOfImpactWithCore(const Shape& moving, const Sweep& sweep, Real extent, Real innerRadius,
-                          const Shape& fixed, const Transform& fixedTransform) {
+Real timeOfImpactWithCore(ShapeRef moving, const Sweep& sweep, Real extent, Real innerRadius,
+                          ShapeRef fixed, const Transform& fixedTransform) {
   Real t = timeOfImpact(moving, sweep, extent, fixed, fixedTransform);
   if (t > 0) return t;
-  Real coreT = timeOfImpact(Shape::makeCircle(Real(0.25) * innerRadius), sweep, 0, fixed,
-                            fixedTransform);
+  const Circle core{Vec2::Zero(), Real(0.25) * innerRadius};
+  Real coreT = timeOfImpact({ShapeType::Circle, &core}, sweep, 0, fixed, fixedTransform);
   return coreT > 0 ? coreT : Real(1);
+}
+
+// The first time in (0, 1] at which one of the body's shapes comes within
+// the target separation of a static shape.
+Real firstStaticHit(const WorldData& world, const Body& body, const Sweep& sweep, std::int32_t shape) {
+  const ShapeSlot& moving = world.shapes[shape];
+  AABB start = computeAABB(moving.shape, {sweep.c0, body.rotation0});
+  AABB swept = start.unite(computeAABB(moving.shape, body.transform));
+  Real firstHit = 1;
+  world.broadPhase.query(swept, [&](std::int32_t other) {
+    const ShapeSlot& candidate = world.shapes[other];
+    const Body& owner = world.bodies[candidate.body];
+    if (owner.isStatic && shapesCanCollide(moving.type(), candidate.type())) {
+      firstHit = std::min(firstHit, timeOfImpactWithCore(moving.ref(), sweep, body.extent, body.innerRadius,
+                                                         candidate.ref(), owner.transform));
+    }
+    return true;
+  });
+  return firstHit;
 }
 
 void sweepAgainstStatics(WorldData& world, std::int32_t slot) {
   Body& body = world.bodies[slot];
-  const Shape& shape = world.shapes[slot];
-  Sweep sweep = sweepOf(body);
-  AABB start = computeAABB(shape, {sweep.c0, body.rotation0});
-  AABB swept = start.unite(computeAABB(shape, body.transform));
+  const Sweep sweep = sweepOf(body);
   Real firstHit = 1;
-  world.broadPhase.query(swept, [&](std::int32_t other) {
-    const Body& candidate = world.bodies[other];
-    if (candidate.isStatic) {
-      firstHit = std::min(firstHit, timeOfImpactWithCore(shape, sweep, body.extent, body.innerRadius,
-                                                         world.shapes[other], candidate.transform));
-    }
-    return true;
-  });
+  world.forEachShape(slot, [&](std::int32_t s) { firstHit = std::min(firstHit, firstStaticHit(world, body, sweep, s)); });
   if (firstHit >= 1) return;
   body.transform = sweep.at(firstHit);
-  world.broadPhase.updateProxy(body.proxyKey, bodyAABB(world, slot));
+  moveBodyProxies(world, slot);
 }
 
 }  // namespace

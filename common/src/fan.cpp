@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <numbers>
 
 #include "input_limits.h"
@@ -39,17 +40,46 @@ std::string checkFan(const FanDef& def) {
   return {};
 }
 
-// Width of a shape across a flow along unit `along`.
-Real widthAcross(const Shape& shape, const Rot& rotation, const Vec2& along) {
-  if (shape.type == ShapeType::Circle) return 2 * shape.circle.radius;
-  const Vec2 across = rotation.applyInverse(Vec2(-along.y(), along.x()));
-  Real low = 0, high = 0;
-  for (int i = 0; i < shape.polygon.count; ++i) {
-    const Real offset = shape.polygon.vertices[i].dot(across);
-    low = std::min(low, offset);
-    high = std::max(high, offset);
+// Where a shape's points project on the unit `direction` (body frame): its
+// core's points widened by its radius.
+struct Projection {
+  Real low = std::numeric_limits<Real>::max();
+  Real high = -std::numeric_limits<Real>::max();
+  void add(const Vec2& point, Real radius, const Vec2& direction) {
+    low = std::min(low, point.dot(direction) - radius);
+    high = std::max(high, point.dot(direction) + radius);
   }
-  return high - low;
+};
+
+void project(const Shape& shape, const Vec2& direction, Projection& projection) {
+  switch (shape.type()) {
+    case ShapeType::Circle: projection.add(shape.circle().center, shape.circle().radius, direction); return;
+    case ShapeType::Capsule:
+      projection.add(shape.capsule().center1, shape.capsule().radius, direction);
+      projection.add(shape.capsule().center2, shape.capsule().radius, direction);
+      return;
+    case ShapeType::Segment:
+      projection.add(shape.segment().point1, 0, direction);
+      projection.add(shape.segment().point2, 0, direction);
+      return;
+    case ShapeType::Polygon:
+      for (int i = 0; i < shape.polygon().count; ++i) {
+        projection.add(shape.polygon().vertices[i], shape.polygon().radius, direction);
+      }
+      return;
+    case ShapeType::ChainSegment:
+      projection.add(shape.chainSegment().segment.point1, 0, direction);
+      projection.add(shape.chainSegment().segment.point2, 0, direction);
+      return;
+  }
+}
+
+// Width of a body's shapes across a flow along unit `along`.
+Real widthAcross(std::span<const Shape* const> shapes, const Rot& rotation, const Vec2& along) {
+  const Vec2 across = rotation.applyInverse(Vec2(-along.y(), along.x()));
+  Projection projection;
+  for (const Shape* shape : shapes) project(*shape, across, projection);
+  return projection.high - projection.low;
 }
 
 }  // namespace
@@ -76,7 +106,7 @@ Vec2 Fan::dragOn(const FieldBody& body, Real dt) const {
   const Vec2 relative = airVelocity(body.transform.p) - body.linearVelocity;
   const Real speed = relative.norm();
   if (speed == 0 || body.mass <= 0) return Vec2::Zero();
-  const Real width = widthAcross(*body.shape, body.transform.q, relative / speed);
+  const Real width = widthAcross(body.shapes, body.transform.q, relative / speed);
   Real force = Real(0.5) * kAirDensity * kDragCoefficient * width * speed * speed;
   // The air can bring a body up to its own speed, not past it in one step.
   if (dt > 0) force = std::min(force, body.mass * speed / dt);

@@ -10,28 +10,46 @@ namespace impulse {
 
 namespace {
 
-FieldBody fieldBodyOf(const WorldData& world, std::int32_t slot, Real mass) {
+// `shapes` was reserved for every live shape, so the spans handed out stay
+// valid while it fills.
+FieldBody fieldBodyOf(const WorldData& world, std::int32_t slot, Real mass, std::vector<const Shape*>& shapes) {
   const Body& body = world.bodies[slot];
+  const std::size_t first = shapes.size();
+  world.forEachShape(slot, [&](std::int32_t s) { shapes.push_back(&world.shapes[s].shape); });
   return {world.idOf(slot), body.transform, body.linearVelocity, body.angularVelocity, mass,
-          body.mass.inertia, &world.shapes[slot], body.material, body.mass.area, body.extent};
+          body.mass.inertia, std::span(shapes).subspan(first), body.mass.area, body.extent};
 }
 
 void gatherMovingBodies(WorldData& world) {
   world.fieldBodies.clear();
+  world.fieldBodyShapes.clear();
+  world.fieldBodyShapes.reserve(std::size_t(world.liveShapes));
   for (std::int32_t slot : world.awakeBodies) {
-    world.fieldBodies.push_back(fieldBodyOf(world, slot, world.bodies[slot].mass.mass));
+    world.fieldBodies.push_back(fieldBodyOf(world, slot, world.bodies[slot].mass.mass, world.fieldBodyShapes));
   }
   world.fieldLoads.assign(world.fieldBodies.size(), FieldLoad{});
+}
+
+// What a static body weighs here: its area times density, shape by shape.
+Real staticMass(const WorldData& world, std::int32_t slot) {
+  Real mass = 0;
+  world.forEachShape(slot, [&](std::int32_t s) {
+    const ShapeSlot& shape = world.shapes[s];
+    mass += computeMassProperties(shape.shape, shape.coefficients.density).mass;
+  });
+  return mass;
 }
 
 // Static bodies weigh their area times density here: they pull without moving.
 void gatherStillBodies(WorldData& world) {
   world.fieldStillBodies.clear();
+  world.fieldStillShapes.clear();
+  world.fieldStillShapes.reserve(std::size_t(world.liveShapes));
   for (std::int32_t slot = 0; slot < static_cast<std::int32_t>(world.bodies.size()); ++slot) {
     const Body& body = world.bodies[slot];
     if (!body.alive || (body.awake && !body.isStatic)) continue;
-    Real mass = body.isStatic ? body.mass.area * body.coefficients.density : body.mass.mass;
-    world.fieldStillBodies.push_back(fieldBodyOf(world, slot, mass));
+    Real mass = body.isStatic ? staticMass(world, slot) : body.mass.mass;
+    world.fieldStillBodies.push_back(fieldBodyOf(world, slot, mass, world.fieldStillShapes));
   }
 }
 

@@ -77,7 +77,7 @@ FluidRegion::FluidRegion(const FluidDef& def) : def_(def) {
 }
 
 FieldLoad FluidRegion::loadOn(const FieldBody& body, const FieldStep& step) const {
-  const SubmergedPart part = submergedPart(*body.shape, body.transform, def_.polygon);
+  const SubmergedPart part = submergedPart(body.shapes, body.transform, def_.polygon);
   if (part.area <= 0 || body.area <= 0 || body.mass <= 0) return {};
   const Real share = std::min(Real(1), Real(part.area / body.area));
   const Vec2 arm = part.centroid - body.transform.p;

@@ -203,8 +203,8 @@ void destroyContactsBetween(WorldData& world, std::int32_t a, std::int32_t b) {
 void rediscoverPair(WorldData& world, const Joint& joint) {
   if (joint.collideConnected || joint.edges.bodyB == kNullIndex) return;
   for (int side = 0; side < 2; ++side) {
-    const Body& body = world.bodies[joint.edges.body(side)];
-    if (!body.isStatic) world.broadPhase.touchProxy(body.proxyKey);
+    const std::int32_t body = joint.edges.body(side);
+    if (!world.bodies[body].isStatic) touchBodyProxies(world, body);
   }
 }
 

@@ -48,7 +48,7 @@ void repair(WorldData& world, std::int32_t slot) {
   body.force.setZero();
   body.torque = 0;
   forgetImpulses(world, body);
-  world.broadPhase.updateProxy(body.proxyKey, bodyAABB(world, slot));
+  moveBodyProxies(world, slot);
 }
 
 // Scaling a velocity down to the limit can round its length an ulp or two

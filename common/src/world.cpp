@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "body_shapes.h"
 #include "input_limits.h"
 #include "step_guard.h"
 #include "world_data.h"
@@ -73,29 +74,66 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
 
 std::int32_t allocateBody(WorldData& world) {
   std::int32_t slot = world.freeBodies.acquire(world.bodies.size());
-  if (slot == static_cast<std::int32_t>(world.bodies.size())) {
-    world.bodies.emplace_back();
-    world.shapes.emplace_back();
-  }
+  if (slot == static_cast<std::int32_t>(world.bodies.size())) world.bodies.emplace_back();
   return slot;
 }
 
-void setMass(Body& body, const Shape& shape, Real density) {
-  body.mass = computeMassProperties(shape, density);
-  if (body.isStatic) {
-    body.mass.mass = 0;
-    body.mass.inertia = 0;
-    return;
+// The body's shapes, the first made of the body's own material.
+std::vector<ShapeDef> shapeDefsOf(const BodyDef& def) {
+  std::vector<ShapeDef> shapes;
+  shapes.reserve(def.extraShapes.size() + 1);
+  shapes.push_back({def.shape, def.material, def.materialOverride});
+  shapes.insert(shapes.end(), def.extraShapes.begin(), def.extraShapes.end());
+  return shapes;
+}
+
+std::string checkShapeDefs(const WorldData& world, const BodyDef& def) {
+  if (def.extraShapes.size() + 1 > std::size_t(kMaxShapesPerBody)) {
+    return "a body carries at most " + std::to_string(kMaxShapesPerBody) + " shapes (" +
+           std::to_string(def.extraShapes.size() + 1) + " given)";
   }
-  body.invMass = body.mass.mass > 0 ? 1 / body.mass.mass : 0;
-  body.invInertia = body.mass.inertia > 0 ? 1 / body.mass.inertia : 0;
+  for (const ShapeDef& shape : shapeDefsOf(def)) {
+    if (std::string error = checkShapeDef(world, shape); !error.empty()) return error;
+  }
+  return {};
+}
+
+std::string checkBodyExtent(const Body& body) {
+  if (body.extent <= kMaxBodyExtent) return {};
+  return "the body's shapes reach " + describeNumber(body.extent) +
+         " m from its centre of mass: they must stay within " + describeNumber(kMaxBodyExtent) + " m of it";
+}
+
+// Undoes a body creation that failed a check made after its shapes were
+// attached (the shapes have no proxy yet).
+void discardNewBody(WorldData& world, std::int32_t slot) {
+  while (world.bodies[slot].shapeHead != kNullIndex) detachShape(world, world.bodies[slot].shapeHead);
+  world.bodies[slot].alive = false;
+  world.freeBodies.release(slot);
+  --world.liveBodies;
+}
+
+// After a shape came or went: new mass and sizes; the centre of mass moved
+// with the shapes, so the velocity is the same material motion's at the new
+// centre, and the contacts' cached frames are stale.
+std::string reshapeBody(WorldData& world, std::int32_t slot) {
+  Body& body = world.bodies[slot];
+  const Vec2 shift = updateBodyMass(world, slot);
+  const Vec2 arm = body.transform.q.apply(shift);
+  body.linearVelocity += body.angularVelocity * Vec2(-arm.y(), arm.x());
+  body.center0 = body.transform.p;
+  body.rotation0 = body.transform.q;
+  forgetManifoldFrames(world, slot);
+  moveBodyProxies(world, slot);
+  wakeIsland(world, slot);
+  return checkBodyExtent(body);
 }
 
 // A new static body may overlap sleeping bodies that would never look for it
 // (only moving proxies search for pairs): wake them.
 void wakeBodiesUnder(WorldData& world, const AABB& box) {
-  world.broadPhase.query(box, [&](std::int32_t other) {
-    wakeIsland(world, other);
+  world.broadPhase.query(box, [&](std::int32_t shape) {
+    wakeIsland(world, world.shapes[shape].body);
     return true;
   });
 }
@@ -107,9 +145,7 @@ void wakeAll(WorldData& world) {
 // The solve stage; then the broad phase learns where the bodies went.
 void solveAndMoveProxies(WorldData& world, Real dt) {
   solve(world, dt);
-  for (std::int32_t slot : world.awakeBodies) {
-    world.broadPhase.updateProxy(world.bodies[slot].proxyKey, bodyAABB(world, slot));
-  }
+  for (std::int32_t slot : world.awakeBodies) moveBodyProxies(world, slot);
 }
 
 /// One stage of the step: what it runs and where its time is recorded.
@@ -143,8 +179,22 @@ void hashBits(std::uint64_t& hash, const T& value) {
 Body* WorldData::find(BodyId id) { return findLive(bodies, id); }
 const Body* WorldData::find(BodyId id) const { return findLive(bodies, id); }
 
-AABB bodyAABB(const WorldData& world, std::int32_t slot) {
-  return computeAABB(world.shapes[slot], world.bodies[slot].transform);
+ShapeSlot* WorldData::find(ShapeId id) { return findLive(shapes, id); }
+const ShapeSlot* WorldData::find(ShapeId id) const { return findLive(shapes, id); }
+
+AABB shapeAABB(const WorldData& world, std::int32_t shape) {
+  const ShapeSlot& slot = world.shapes[shape];
+  return computeAABB(slot.shape, world.bodies[slot.body].transform);
+}
+
+void moveBodyProxies(WorldData& world, std::int32_t body) {
+  world.forEachShape(body, [&](std::int32_t s) {
+    world.broadPhase.updateProxy(world.shapes[s].proxyKey, shapeAABB(world, s));
+  });
+}
+
+void touchBodyProxies(WorldData& world, std::int32_t body) {
+  world.forEachShape(body, [&](std::int32_t s) { world.broadPhase.touchProxy(world.shapes[s].proxyKey); });
 }
 
 World::World(const WorldSettings& settings) : impl_(std::make_unique<WorldData>()) {
@@ -157,6 +207,7 @@ World& World::operator=(World&&) noexcept = default;
 CreateResult World::createBody(const BodyDef& def) {
   WorldData& w = *impl_;
   if (std::string error = validateDef(w, def); !error.empty()) return {{}, error};
+  if (std::string error = checkShapeDefs(w, def); !error.empty()) return {{}, error};
 
   std::int32_t slot = allocateBody(w);
   Body& body = w.bodies[slot];
@@ -166,31 +217,64 @@ CreateResult World::createBody(const BodyDef& def) {
   body.alive = true;
   body.isStatic = def.isStatic;
   body.ignoreGravity = def.ignoreGravity;
-  body.material = def.material;
-  body.coefficients = resolveCoefficients(def.material, def.materialOverride);
   body.transform = {def.position, Rot::fromAngle(def.angle)};
   body.linearDrag = def.linearDrag;
   body.angularDrag = def.angularDrag;
   body.gravityScale = def.gravityScale;
-  body.creationOrder = w.nextCreationOrder++;
-  w.shapes[slot] = def.shape;
-  setMass(body, def.shape, body.coefficients.density);
-  body.extent = computeExtent(def.shape);
-  body.innerRadius = computeInnerRadius(def.shape);
   ++w.liveBodies;
+  for (const ShapeDef& shape : shapeDefsOf(def)) attachShape(w, slot, shape);
+  updateBodyMass(w, slot);
+  if (std::string error = checkBodyExtent(body); !error.empty()) {
+    discardNewBody(w, slot);
+    return {{}, error};
+  }
+  body.creationOrder = w.nextCreationOrder++;
+  w.forEachShape(slot, [&](std::int32_t s) { createShapeProxy(w, s); });
 
-  AABB box = bodyAABB(w, slot);
   if (def.isStatic) {
-    body.proxyKey = w.broadPhase.createProxy(box, slot, BroadPhase::ProxyKind::Static);
-    wakeBodiesUnder(w, box);
+    w.forEachShape(slot, [&](std::int32_t s) { wakeBodiesUnder(w, shapeAABB(w, s)); });
   } else {
     body.linearVelocity = def.linearVelocity;
     body.angularVelocity = def.angularVelocity;
     body.awake = true;
     w.awakeBodies.push_back(slot);
-    body.proxyKey = w.broadPhase.createProxy(box, slot, BroadPhase::ProxyKind::Movable);
   }
   return {w.idOf(slot), {}};
+}
+
+ShapeResult World::createShape(BodyId id, const ShapeDef& def) {
+  WorldData& w = *impl_;
+  Body* body = w.find(id);
+  if (body == nullptr) return {{}, "no body " + std::to_string(id.value)};
+  if (body->shapeCount >= kMaxShapesPerBody) {
+    return {{}, "body " + std::to_string(id.value) + " already carries " + std::to_string(kMaxShapesPerBody) +
+                    " shapes, the most a body may"};
+  }
+  if (std::string error = checkShapeDef(w, def); !error.empty()) return {{}, error};
+  const std::int32_t slot = id.slot();
+  const std::int32_t s = attachShape(w, slot, def);
+  createShapeProxy(w, s);
+  if (std::string error = reshapeBody(w, slot); !error.empty()) {
+    detachShape(w, s);
+    reshapeBody(w, slot);
+    return {{}, error};
+  }
+  if (w.bodies[slot].isStatic) wakeBodiesUnder(w, shapeAABB(w, s));
+  return {w.shapeIdOf(s), {}};
+}
+
+InputResult World::destroyShape(ShapeId id) {
+  WorldData& w = *impl_;
+  const ShapeSlot* shape = w.find(id);
+  if (shape == nullptr) return {"no shape " + std::to_string(id.value)};
+  const std::int32_t body = shape->body;
+  if (w.bodies[body].shapeCount == 1) {
+    return {"shape " + std::to_string(id.value) + " is its body's only shape: remove the body instead"};
+  }
+  destroyShapeContacts(w, id.slot());
+  detachShape(w, id.slot());
+  reshapeBody(w, body);
+  return {};
 }
 
 CreateResult World::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
@@ -206,6 +290,20 @@ CreateResult World::createPolygon(std::span<const Vec2> points, const BodyOption
   return createBody(makeBodyDef(Shape::makePolygon(build.polygon), build.centroid, options));
 }
 
+CreateResult World::createConcavePolygon(std::span<const Vec2> points, const BodyOptions& options) {
+  ConvexDecomposition split = decomposePolygon(points, impl_->settings.shapeLimits);
+  if (split.error != ShapeError::None) return {{}, std::string(describe(split.error))};
+  // The pieces are in the points' frame; the body starts at the first point
+  // (inside the bounds check) and moves to the union's centroid.
+  const Vec2 origin = points.front();
+  auto piece = [&](std::size_t i) { return translated(Shape::makePolygon(split.pieces[i]), -origin); };
+  BodyDef def = makeBodyDef(piece(0), origin, options);
+  for (std::size_t i = 1; i < split.pieces.size(); ++i) {
+    def.extraShapes.push_back({piece(i), options.material, options.materialOverride});
+  }
+  return createBody(def);
+}
+
 namespace {
 
 // Removes a body with its contacts and joints (added to removedJoints).
@@ -215,7 +313,7 @@ bool removeBody(WorldData& w, BodyId id) {
   std::int32_t slot = id.slot();
   destroyBodyJoints(w, slot);
   destroyBodyContacts(w, slot);
-  w.broadPhase.destroyProxy(body->proxyKey);
+  while (body->shapeHead != kNullIndex) detachShape(w, body->shapeHead);
   if (body->awake) std::erase(w.awakeBodies, slot);
   body->alive = false;
   body->awake = false;
@@ -249,24 +347,39 @@ std::optional<BodyState> World::bodyState(BodyId id) const {
 }
 
 std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
-  const Body* body = impl_->find(id);
+  const WorldData& w = *impl_;
+  const Body* body = w.find(id);
   if (body == nullptr) return std::nullopt;
-  const MaterialProperties& c = body->coefficients;
-  return BodyDescription{id,
-                         impl_->shapes[id.slot()],
-                         body->material,
-                         body->isStatic,
-                         body->ignoreGravity,
-                         body->mass,
-                         c.restitution,
-                         c.staticFriction,
-                         c.dynamicFriction,
-                         c.rollingResistance,
-                         c.density,
-                         body->linearDrag,
-                         body->angularDrag,
-                         body->gravityScale};
+  BodyDescription out;
+  out.id = id;
+  w.forEachShape(id.slot(), [&](std::int32_t s) {
+    const ShapeSlot& shape = w.shapes[s];
+    out.shapes.push_back({w.shapeIdOf(s), shape.shape, shape.material, shape.coefficients});
+  });
+  const ShapeDescription& first = out.shapes.front();
+  out.shape = first.shape;
+  out.material = first.material;
+  out.restitution = first.coefficients.restitution;
+  out.staticFriction = first.coefficients.staticFriction;
+  out.dynamicFriction = first.coefficients.dynamicFriction;
+  out.rollingResistance = first.coefficients.rollingResistance;
+  out.density = first.coefficients.density;
+  out.isStatic = body->isStatic;
+  out.ignoreGravity = body->ignoreGravity;
+  out.mass = body->mass;
+  out.linearDrag = body->linearDrag;
+  out.angularDrag = body->angularDrag;
+  out.gravityScale = body->gravityScale;
+  return out;
 }
+
+std::optional<BodyId> World::shapeBody(ShapeId id) const {
+  const ShapeSlot* shape = impl_->find(id);
+  if (shape == nullptr) return std::nullopt;
+  return impl_->idOf(shape->body);
+}
+
+int World::shapeCount() const { return impl_->liveShapes; }
 
 std::vector<BodyId> World::bodyIds() const { return liveIds<BodyId>(impl_->bodies, impl_->liveBodies); }
 
@@ -320,9 +433,10 @@ std::optional<BodyId> World::queryPoint(const Vec2& point) const {
   if (!isFinite(point)) return std::nullopt;
   const WorldData& w = *impl_;
   std::optional<std::int32_t> best;
-  w.broadPhase.query(AABB{point, point}, [&](std::int32_t slot) {
+  w.broadPhase.query(AABB{point, point}, [&](std::int32_t shape) {
+    const std::int32_t slot = w.shapes[shape].body;
     bool newer = !best || w.bodies[slot].creationOrder > w.bodies[*best].creationOrder;
-    if (newer && containsPoint(w.shapes[slot], w.bodies[slot].transform, point)) best = slot;
+    if (newer && containsPoint(w.shapes[shape].shape, w.bodies[slot].transform, point)) best = slot;
     return true;
   });
   if (!best) return std::nullopt;

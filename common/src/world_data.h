@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "body_data.h"
+#include "shape_data.h"
 #include "contact_constraints.h"
 #include "contact_data.h"
 #include "free_list.h"
@@ -33,9 +34,11 @@ struct FieldSlot {
 struct WorldData {
   WorldSettings settings;
   std::vector<Body> bodies;
-  std::vector<Shape> shapes;
   FreeList freeBodies;
   int liveBodies = 0;
+  std::vector<ShapeSlot> shapes;
+  FreeList freeShapes;
+  int liveShapes = 0;
   std::uint64_t nextCreationOrder = 1;
 
   std::vector<Contact> contacts;
@@ -79,6 +82,8 @@ struct WorldData {
   std::vector<std::int32_t> touchingSorted;
   std::vector<FieldBody> fieldBodies;
   std::vector<FieldBody> fieldStillBodies;
+  std::vector<const Shape*> fieldBodyShapes;
+  std::vector<const Shape*> fieldStillShapes;
   std::vector<FieldLoad> fieldLoads;
   std::vector<SolverState> solverStates;
   std::vector<SolverIntegration> solverIntegration;
@@ -93,8 +98,18 @@ struct WorldData {
   double time = 0;
 
   BodyId idOf(std::int32_t slot) const { return BodyId::make(slot, bodies[slot].generation); }
+  ShapeId shapeIdOf(std::int32_t slot) const { return ShapeId::make(slot, shapes[slot].generation); }
   Body* find(BodyId id);
   const Body* find(BodyId id) const;
+  ShapeSlot* find(ShapeId id);
+  const ShapeSlot* find(ShapeId id) const;
+
+  /// Calls visit(shapeSlot) for each of the body's shapes, in the order they
+  /// were added.
+  template <typename Visit>
+  void forEachShape(std::int32_t body, Visit&& visit) const {
+    for (std::int32_t s = bodies[body].shapeHead; s != kNullIndex; s = shapes[s].nextInBody) visit(s);
+  }
 };
 
 // The stages of the step, in order, one file each (World::step runs them).
@@ -108,13 +123,21 @@ void updateSleep(WorldData& world, Real dt);      // island.cpp: islands, sleepi
 // Used across stages.
 void destroyContact(WorldData& world, std::int32_t contact);     // contact.cpp
 void destroyBodyContacts(WorldData& world, std::int32_t body);   // contact.cpp
+void destroyShapeContacts(WorldData& world, std::int32_t shape); // contact.cpp
+// contact.cpp: the body's shapes changed; its manifolds are recomputed.
+void forgetManifoldFrames(WorldData& world, std::int32_t body);
 // contact.cpp: the body woke; its contacts join the active ones.
 void activateBodyContacts(WorldData& world, std::int32_t body);
 // contact.cpp: the body fell asleep; its contacts whose other body is not
 // awake leave the active ones.
 void deactivateBodyContacts(WorldData& world, std::int32_t body);
 void wakeIsland(WorldData& world, std::int32_t body);            // island.cpp
-AABB bodyAABB(const WorldData& world, std::int32_t body);        // world.cpp
+// world.cpp: the shape's tight box where its body is now.
+AABB shapeAABB(const WorldData& world, std::int32_t shape);
+// world.cpp: the broad phase learns where the body went (every shape's proxy).
+void moveBodyProxies(WorldData& world, std::int32_t body);
+// world.cpp: the body's proxies look for new pairs without having moved.
+void touchBodyProxies(WorldData& world, std::int32_t body);
 // joint_world.cpp: a joint with collideConnected off between the bodies.
 bool jointBlocksContact(const WorldData& world, std::int32_t bodyA, std::int32_t bodyB);
 // joint_world.cpp: removes the body's joints, listing them in removedJoints.

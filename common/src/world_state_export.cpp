@@ -36,31 +36,41 @@ BodySlotState exportBody(const WorldData& world, std::int32_t slot) {
   out.alive = body.alive;
   out.generation = body.generation;
   if (!body.alive) return out;
-  out.shape = world.shapes[std::size_t(slot)];
+  world.forEachShape(slot, [&](std::int32_t s) { out.shapes.push_back(s); });
   out.transform = body.transform;
   out.linearVelocity = body.linearVelocity;
   out.angularVelocity = body.angularVelocity;
   out.force = body.force;
   out.torque = body.torque;
-  out.material = body.material;
-  out.density = body.coefficients.density;
-  out.restitution = body.coefficients.restitution;
-  out.staticFriction = body.coefficients.staticFriction;
-  out.dynamicFriction = body.coefficients.dynamicFriction;
-  out.rollingResistance = body.coefficients.rollingResistance;
   out.linearDrag = body.linearDrag;
   out.gravityScale = body.gravityScale;
   out.angularDrag = body.angularDrag;
   out.sleepTime = body.sleepTime;
   out.center0 = body.center0;
   out.rotation0 = body.rotation0;
-  out.proxyKey = body.proxyKey;
   out.creationOrder = body.creationOrder;
   out.isStatic = body.isStatic;
   out.ignoreGravity = body.ignoreGravity;
   out.awake = body.awake;
   out.contactEdges = edgeKeys(world.contacts, body.contactHead);
   out.jointEdges = edgeKeys(world.joints, body.jointHead);
+  return out;
+}
+
+ShapeSlotState exportShape(const ShapeSlot& shape) {
+  ShapeSlotState out;
+  out.alive = shape.alive;
+  out.generation = shape.generation;
+  if (!shape.alive) return out;
+  out.body = shape.body;
+  out.shape = shape.shape;
+  out.material = shape.material;
+  out.density = shape.coefficients.density;
+  out.restitution = shape.coefficients.restitution;
+  out.staticFriction = shape.coefficients.staticFriction;
+  out.dynamicFriction = shape.coefficients.dynamicFriction;
+  out.rollingResistance = shape.coefficients.rollingResistance;
+  out.proxyKey = shape.proxyKey;
   return out;
 }
 
@@ -74,6 +84,8 @@ std::vector<bool> liveContactSlots(const WorldData& world) {
 ContactSlotState exportContact(const Contact& contact) {
   ContactSlotState out;
   out.alive = true;
+  out.shapeA = contact.shapeA;
+  out.shapeB = contact.shapeB;
   out.bodyA = contact.edges.bodyA;
   out.bodyB = contact.edges.bodyB;
   out.manifold = contact.manifold;
@@ -120,6 +132,8 @@ WorldState World::exportState() const {
   }
   state.freeBodies = w.freeBodies.slots();
   state.nextCreationOrder = w.nextCreationOrder;
+  for (const ShapeSlot& shape : w.shapes) state.shapes.push_back(exportShape(shape));
+  state.freeShapes = w.freeShapes.slots();
   const std::vector<bool> liveContacts = liveContactSlots(w);
   for (std::size_t slot = 0; slot < w.contacts.size(); ++slot) {
     state.contacts.push_back(liveContacts[slot] ? exportContact(w.contacts[slot])

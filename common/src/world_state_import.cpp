@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "body_shapes.h"
 #include "input_limits.h"
 #include "world_data.h"
 
@@ -79,8 +80,8 @@ std::string applySolverSettings(const SolverSettingsState& s, WorldSettings& set
 
 // A saved polygon is kept as it is (rebuilding it would move its bits), so
 // it is checked instead: convex and in range (buildPolygon), anticlockwise
-// with each normal the unit outward normal of its edge, centroid at the
-// origin.
+// with each normal the unit outward normal of its edge, its stored centroid
+// its centroid.
 std::string checkPolygon(const Polygon& polygon, const ShapeLimits& limits) {
   if (polygon.count < 3 || polygon.count > kMaxPolygonVertices) {
     return "polygon must have 3 to " + std::to_string(kMaxPolygonVertices) + " vertices";
@@ -89,9 +90,11 @@ std::string checkPolygon(const Polygon& polygon, const ShapeLimits& limits) {
   const PolygonBuild build = buildPolygon(vertices, limits);
   if (build.error != ShapeError::None) return "polygon: " + std::string(describe(build.error));
   const Real extent = computeExtent(Shape::makePolygon(polygon));
-  if (build.centroid.norm() > kUnitTolerance * (1 + extent)) {
-    return "polygon's centroid must be at the body's origin (vertices are local to the centre of "
-           "mass)";
+  if ((build.centroid - polygon.centroid).norm() > kUnitTolerance * (1 + extent)) {
+    return "polygon's stored centroid must be the centroid of its vertices";
+  }
+  if (ShapeError error = validateShape(Shape::makePolygon(polygon), limits); error != ShapeError::None) {
+    return "polygon: " + std::string(describe(error));
   }
   for (int i = 0; i < polygon.count; ++i) {
     const Vec2 edge =
@@ -99,7 +102,7 @@ std::string checkPolygon(const Polygon& polygon, const ShapeLimits& limits) {
     const Vec2 outward = Vec2(edge.y(), -edge.x()).normalized();
     const Vec2& normal = polygon.normals[std::size_t(i)];
     if (!isFinite(normal) || (normal - outward).norm() > kUnitTolerance ||
-        normal.dot(polygon.vertices[std::size_t(i)]) <= 0) {
+        normal.dot(polygon.vertices[std::size_t(i)] - polygon.centroid) <= 0) {
       return "polygon normal " + std::to_string(i) +
              " must be the unit outward normal of its edge (vertices anticlockwise)";
     }
@@ -108,26 +111,39 @@ std::string checkPolygon(const Polygon& polygon, const ShapeLimits& limits) {
 }
 
 std::string checkShape(const Shape& shape, const ShapeLimits& limits) {
-  if (shape.type == ShapeType::Circle) {
-    const ShapeError error = validateCircle(shape.circle.radius, limits);
-    return error == ShapeError::None ? std::string() : "circle: " + std::string(describe(error));
-  }
-  return checkPolygon(shape.polygon, limits);
+  if (shape.type() == ShapeType::Polygon) return checkPolygon(shape.polygon(), limits);
+  const ShapeError error = validateShape(shape, limits);
+  return error == ShapeError::None ? std::string() : std::string(describe(error));
 }
 
-MaterialOverride coefficientsOf(const BodySlotState& b) {
-  return {b.density, b.restitution, b.staticFriction, b.dynamicFriction, b.rollingResistance};
+MaterialOverride coefficientsOf(const ShapeSlotState& s) {
+  return {s.density, s.restitution, s.staticFriction, s.dynamicFriction, s.rollingResistance};
+}
+
+std::string checkShapeSlot(const WorldSettings& settings, const ShapeSlotState& s) {
+  if (static_cast<int>(s.material) >= kMaterialCount) return "unknown material";
+  return firstOf(checkShape(s.shape, settings.shapeLimits), validateMaterialOverride(coefficientsOf(s)));
+}
+
+ShapeSlot buildShape(const ShapeSlotState& s) {
+  ShapeSlot shape;
+  shape.alive = true;
+  shape.generation = s.generation;
+  shape.body = s.body;
+  shape.shape = s.shape;
+  shape.material = s.material;
+  shape.coefficients = resolveCoefficients(s.material, coefficientsOf(s));
+  shape.rollingRadius = rollingRadiusOf(s.shape);
+  shape.proxyKey = s.proxyKey;
+  return shape;
 }
 
 std::string checkBody(const WorldSettings& settings, const BodySlotState& b) {
   const InputLimits& limits = settings.inputLimits;
-  if (static_cast<int>(b.material) >= kMaterialCount) return "unknown material";
   std::string error =
-      firstOf(checkShape(b.shape, settings.shapeLimits),
-              checkApplicationPoint(limits, settings.bounds, b.transform.p, "position"),
+      firstOf(checkApplicationPoint(limits, settings.bounds, b.transform.p, "position"),
               checkRotation("rotation", b.transform.q),
               checkBodyMotion(limits, b.linearVelocity, b.angularVelocity),
-              validateMaterialOverride(coefficientsOf(b)),
               checkRange("linearDrag", b.linearDrag, 0, kMaxRate),
               checkRange("angularDrag", b.angularDrag, 0, kMaxRate),
               checkRange("gravityScale", b.gravityScale, -kMaxGravityScale, kMaxGravityScale),
@@ -149,15 +165,13 @@ std::string checkForces(const InputLimits& limits, const BodySlotState& b,
 }
 
 // The body as createBody would have made it, with the saved motion and
-// solver state.
-Body buildBody(const WorldSettings& settings, const BodySlotState& b, std::string& error) {
+// solver state; its mass comes with its shapes (StateImport::shapes).
+Body buildBody(const BodySlotState& b) {
   Body body;
   body.alive = true;
   body.generation = b.generation;
   body.isStatic = b.isStatic;
   body.ignoreGravity = b.ignoreGravity;
-  body.material = b.material;
-  body.coefficients = resolveCoefficients(b.material, coefficientsOf(b));
   body.transform = b.transform;
   body.linearVelocity = b.linearVelocity;
   body.angularVelocity = b.angularVelocity;
@@ -169,20 +183,8 @@ Body buildBody(const WorldSettings& settings, const BodySlotState& b, std::strin
   body.sleepTime = b.sleepTime;
   body.center0 = b.center0;
   body.rotation0 = b.rotation0;
-  body.proxyKey = b.proxyKey;
   body.creationOrder = b.creationOrder;
   body.awake = b.awake;
-  body.mass = computeMassProperties(b.shape, body.coefficients.density);
-  if (body.isStatic) {
-    body.mass.mass = 0;
-    body.mass.inertia = 0;
-  } else {
-    body.invMass = body.mass.mass > 0 ? 1 / body.mass.mass : 0;
-    body.invInertia = body.mass.inertia > 0 ? 1 / body.mass.inertia : 0;
-  }
-  body.extent = computeExtent(b.shape);
-  body.innerRadius = computeInnerRadius(b.shape);
-  error = checkForces(settings.inputLimits, b, body.mass);
   return body;
 }
 
@@ -213,7 +215,7 @@ class StateImport {
 
   // The stages in order: each relies on the ones before it.
   std::string run() {
-    for (auto stage : {&StateImport::settings, &StateImport::bodies, &StateImport::broadPhase,
+    for (auto stage : {&StateImport::settings, &StateImport::bodies, &StateImport::shapes, &StateImport::broadPhase,
                        &StateImport::contacts, &StateImport::joints, &StateImport::fields, &StateImport::edges,
                        &StateImport::awakeList, &StateImport::clock}) {
       if (std::string error = (this->*stage)(); !error.empty()) return error;
@@ -261,13 +263,10 @@ class StateImport {
         if (b.creationOrder >= state_.nextCreationOrder) {
           return at("body slot", slot) + "creationOrder must be below nextCreationOrder";
         }
-        std::string error;
-        body = buildBody(w.settings, b, error);
-        if (!error.empty()) return at("body slot", slot) + error;
+        body = buildBody(b);
         ++w.liveBodies;
       }
       w.bodies.push_back(body);
-      w.shapes.push_back(b.alive ? b.shape : Shape{});
     }
     if (w.liveBodies > w.settings.maxBodies) {
       return "body limit reached (" + std::to_string(w.settings.maxBodies) + " bodies)";
@@ -279,25 +278,88 @@ class StateImport {
     return {};
   }
 
-  // Every live body owns exactly one leaf, in the tree of its kind, whose
-  // user value is its slot; no other leaf exists.
+  // Every live shape belongs to a live body, which lists it once; the
+  // bodies' masses follow from their shapes.
+  std::string shapes() {
+    WorldData& w = *next_;
+    if (state_.shapes.size() > BodyId::kIndexMask) return "too many shape slots";
+    std::vector<bool> alive;
+    for (std::size_t slot = 0; slot < state_.shapes.size(); ++slot) {
+      const ShapeSlotState& s = state_.shapes[slot];
+      alive.push_back(s.alive);
+      ShapeSlot shape;
+      shape.generation = s.generation;
+      if (s.alive) {
+        if (!liveBody(s.body)) return at("shape slot", slot) + "body must be a live body";
+        if (std::string error = checkShapeSlot(w.settings, s); !error.empty()) return at("shape slot", slot) + error;
+        shape = buildShape(s);
+        ++w.liveShapes;
+      }
+      w.shapes.push_back(shape);
+    }
+    if (std::string error = checkFreeList("shape", state_.freeShapes, alive); !error.empty()) return error;
+    w.freeShapes.assign(state_.freeShapes);
+    return linkBodyShapes();
+  }
+
+  std::string linkBodyShapes() {
+    WorldData& w = *next_;
+    std::vector<bool> listed(w.shapes.size(), false);
+    for (std::size_t slot = 0; slot < w.bodies.size(); ++slot) {
+      if (!w.bodies[slot].alive) continue;
+      const BodySlotState& b = state_.bodies[slot];
+      if (b.shapes.empty() || b.shapes.size() > std::size_t(kMaxShapesPerBody)) {
+        return at("body slot", slot) + "a body has 1 to " + std::to_string(kMaxShapesPerBody) + " shapes";
+      }
+      std::int32_t* link = &w.bodies[slot].shapeHead;
+      for (std::int32_t s : b.shapes) {
+        if (s < 0 || std::size_t(s) >= w.shapes.size() || !w.shapes[std::size_t(s)].alive ||
+            w.shapes[std::size_t(s)].body != std::int32_t(slot) || listed[std::size_t(s)]) {
+          return at("body slot", slot) + "shapes must name its own live shapes, each once";
+        }
+        listed[std::size_t(s)] = true;
+        *link = s;
+        link = &w.shapes[std::size_t(s)].nextInBody;
+      }
+      w.bodies[slot].shapeCount = std::int32_t(b.shapes.size());
+      if (std::string error = massFromShapes(std::int32_t(slot)); !error.empty()) return at("body slot", slot) + error;
+    }
+    return {};
+  }
+
+  std::string massFromShapes(std::int32_t slot) {
+    WorldData& w = *next_;
+    Body& body = w.bodies[std::size_t(slot)];
+    const Vec2 center = setMassFromShapes(w, slot);
+    if (center.norm() > kUnitTolerance * (1 + body.extent)) {
+      return "the shapes' centroid must be the body's origin (shapes are local to the centre of mass)";
+    }
+    if (body.extent > kMaxBodyExtent) return "shapes must lie within " + std::to_string(int(kMaxBodyExtent)) + " m";
+    return checkForces(w.settings.inputLimits, state_.bodies[std::size_t(slot)], body.mass);
+  }
+
+  // Every live shape owns exactly one leaf, in the tree of its body's kind,
+  // whose user value is its slot; no other leaf exists.
   std::string broadPhase() {
     WorldData& w = *next_;
     if (!w.broadPhase.restore(state_.broadPhase)) {
       return "broad phase: a tree is not a valid tree, or the queue names a node that is no leaf";
     }
-    if (w.broadPhase.proxyCount() != w.liveBodies)
-      return "broad phase: one leaf per live body is needed";
-    for (std::size_t slot = 0; slot < w.bodies.size(); ++slot) {
-      const Body& body = w.bodies[slot];
-      if (!body.alive) continue;
-      const bool staticKey = (body.proxyKey & 1) == static_cast<int>(BroadPhase::ProxyKind::Static);
-      if (w.broadPhase.leafUserValue(body.proxyKey) != std::int32_t(slot) ||
-          staticKey != body.isStatic) {
-        return at("body slot", slot) + "proxyKey must name its own leaf in the tree of its kind";
+    if (w.broadPhase.proxyCount() != w.liveShapes) return "broad phase: one leaf per live shape is needed";
+    for (std::size_t slot = 0; slot < w.shapes.size(); ++slot) {
+      const ShapeSlot& shape = w.shapes[slot];
+      if (!shape.alive) continue;
+      const bool staticKey = (shape.proxyKey & 1) == static_cast<int>(BroadPhase::ProxyKind::Static);
+      if (w.broadPhase.leafUserValue(shape.proxyKey) != std::int32_t(slot) ||
+          staticKey != w.bodies[std::size_t(shape.body)].isStatic) {
+        return at("shape slot", slot) + "proxyKey must name its own leaf in the tree of its body's kind";
       }
     }
     return {};
+  }
+
+  bool liveShape(std::int32_t slot) const {
+    return slot >= 0 && std::size_t(slot) < next_->shapes.size() && next_->shapes[std::size_t(slot)].alive;
   }
 
   bool liveBody(std::int32_t slot) const {
@@ -307,15 +369,17 @@ class StateImport {
 
   std::string checkContact(const ContactSlotState& c) const {
     const WorldData& w = *next_;
-    if (!liveBody(c.bodyA) || !liveBody(c.bodyB) || c.bodyA == c.bodyB) {
-      return "bodyA and bodyB must be two live bodies";
+    if (!liveShape(c.shapeA) || !liveShape(c.shapeB)) return "shapeA and shapeB must be live shapes";
+    const ShapeSlot& a = w.shapes[std::size_t(c.shapeA)];
+    const ShapeSlot& b = w.shapes[std::size_t(c.shapeB)];
+    if (a.body != c.bodyA || b.body != c.bodyB || c.bodyA == c.bodyB) {
+      return "bodyA and bodyB must be the shapes' bodies, two different ones";
     }
     if (w.bodies[std::size_t(c.bodyA)].isStatic && w.bodies[std::size_t(c.bodyB)].isStatic) {
       return "two static bodies have no contact";
     }
-    if (collideFunction(w.shapes[std::size_t(c.bodyA)].type, w.shapes[std::size_t(c.bodyB)].type) ==
-        nullptr) {
-      return "bodyA's shape must be the polygon when the shapes differ";
+    if (collideFunction(a.type(), b.type()) == nullptr || !shapesCanCollide(a.type(), b.type())) {
+      return "the shapes must collide, in the order the collide table holds their types";
     }
     if (c.manifold.pointCount < 0 || c.manifold.pointCount > 2)
       return "a manifold has 0 to 2 points";
@@ -358,18 +422,20 @@ class StateImport {
           return at("contact slot", slot) + error;
         contact.edges.bodyA = c.bodyA;
         contact.edges.bodyB = c.bodyB;
+        contact.shapeA = c.shapeA;
+        contact.shapeB = c.shapeB;
         contact.manifold = c.manifold;
         contact.frame = c.frame;
-        contact.collide = collideFunction(w.shapes[std::size_t(c.bodyA)].type,
-                                          w.shapes[std::size_t(c.bodyB)].type);
+        contact.collide = collideFunction(w.shapes[std::size_t(c.shapeA)].type(),
+                                          w.shapes[std::size_t(c.shapeB)].type());
         contact.staticFriction = c.staticFriction;
         contact.dynamicFriction = c.dynamicFriction;
         contact.restitution = c.restitution;
         contact.rollingResistance = c.rollingResistance;
-        contact.pairKey = contactPairKey(c.bodyA, c.bodyB);
+        contact.pairKey = contactPairKey(c.shapeA, c.shapeB);
         contact.touching = c.touching;
         if (!w.contactByPair.emplace(contact.pairKey, std::int32_t(slot)).second) {
-          return at("contact slot", slot) + "a pair of bodies has one contact";
+          return at("contact slot", slot) + "a pair of shapes has one contact";
         }
       }
       w.contacts.push_back(contact);

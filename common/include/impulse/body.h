@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "impulse/material.h"
 #include "impulse/math.h"
@@ -32,6 +33,21 @@ struct BodyId {
   friend auto operator<=>(BodyId, BodyId) = default;
 };
 
+/// Stable shape handle, with BodyId's layout: 0 is null, a generation
+/// recognises a stale id.
+struct ShapeId {
+  std::uint32_t value = 0;
+
+  static ShapeId make(std::int32_t slot, std::uint32_t generation) {
+    return {BodyId::make(slot, generation).value};
+  }
+  bool isNull() const { return value == 0; }
+  std::int32_t slot() const { return BodyId{value}.slot(); }
+  std::uint32_t generation() const { return BodyId{value}.generation(); }
+  friend bool operator==(ShapeId, ShapeId) = default;
+  friend auto operator<=>(ShapeId, ShapeId) = default;
+};
+
 /// Coefficients that replace the material's for one body, for scenes that
 /// need values outside the material table (tools, benchmarks). Unset fields
 /// keep the material's value.
@@ -43,10 +59,27 @@ struct MaterialOverride {
   std::optional<Real> rollingResistance = std::nullopt;  ///< >= 0
 };
 
-/// Everything needed to create a body. The shape is local to the centroid,
-/// and `position` is where the centroid goes.
-struct BodyDef {
+/// One shape of a body: its geometry in the body's frame and its material.
+struct ShapeDef {
   Shape shape;
+  Material material = Material::Solid;
+  MaterialOverride materialOverride;
+};
+
+/// Most shapes one body may carry, and how far (m) any point of a body's
+/// shapes may lie from its centre of mass.
+inline constexpr int kMaxShapesPerBody = 64;
+inline constexpr Real kMaxBodyExtent = 50;
+
+/// Everything needed to create a body. Its shapes are given in a frame whose
+/// origin is `position`, turned by `angle`; the body's centre of mass is the
+/// union's centroid, and the shapes are kept relative to it. A body of one
+/// shape centred on the origin (the usual case) has its centre at `position`.
+struct BodyDef {
+  /// The first shape, made of `material` (with `materialOverride`).
+  Shape shape;
+  /// Further shapes, each with a material of its own (compound bodies).
+  std::vector<ShapeDef> extraShapes;
   Vec2 position = Vec2::Zero();
   Real angle = 0;
   Vec2 linearVelocity = Vec2::Zero();
@@ -102,7 +135,17 @@ struct BodyState {
   bool awake = false;
 };
 
-/// What does not change over a body's life.
+/// One shape of a body as the world holds it: geometry relative to the
+/// body's centre of mass and the coefficients in force.
+struct ShapeDescription {
+  ShapeId id;
+  Shape shape;
+  Material material = Material::Solid;
+  MaterialProperties coefficients{};
+};
+
+/// What does not change over a body's life. The shape, material and
+/// coefficients are its first shape's; `shapes` lists every shape.
 struct BodyDescription {
   BodyId id;
   Shape shape;
@@ -118,6 +161,7 @@ struct BodyDescription {
   Real linearDrag = 0;
   Real angularDrag = 0;
   Real gravityScale = 1;
+  std::vector<ShapeDescription> shapes;
 };
 
 }  // namespace impulse

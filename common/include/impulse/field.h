@@ -28,10 +28,10 @@ struct FieldBody {
   Real angularVelocity = 0;
   Real mass = 0;
   Real inertia = 0;  ///< about the centre of mass
-  const Shape* shape = nullptr;  ///< local to the centre of mass
-  Material material = Material::Solid;
+  /// The body's shapes, local to the centre of mass (valid for the step).
+  std::span<const Shape* const> shapes;
   Real area = 0;
-  Real extent = 0;  ///< largest distance from the centre of mass to the shape
+  Real extent = 0;  ///< largest distance from the centre of mass to a shape
 };
 
 /// What a field adds to one body for the coming step.

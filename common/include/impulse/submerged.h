@@ -17,6 +17,12 @@ struct SubmergedPart {
 };
 
 /// `region`: a convex polygon in world coordinates, anticlockwise.
+/// Exact for circles and polygons; capsules and rounded polygons are clipped
+/// with their arcs in steps of pi/16. Segments have no area.
 SubmergedPart submergedPart(const Shape& shape, const Transform& transform, std::span<const Vec2> region);
+/// The union of a body's shapes (they do not overlap, or the overlap counts
+/// twice, as it does in the body's mass).
+SubmergedPart submergedPart(std::span<const Shape* const> shapes, const Transform& transform,
+                            std::span<const Vec2> region);
 
 }  // namespace impulse

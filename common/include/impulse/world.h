@@ -89,6 +89,13 @@ struct CreateResult {
   bool ok() const { return error.empty(); }
 };
 
+/// Outcome of a shape creation: an id, or a message that says what was wrong.
+struct ShapeResult {
+  ShapeId id;
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
 class World {
  public:
   explicit World(const WorldSettings& settings = {});
@@ -104,6 +111,22 @@ class World {
   CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options = {});
   /// A polygon from world-space points in either winding.
   CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options = {});
+  /// A simple polygon (not self-intersecting), convex or not, from
+  /// world-space points in either winding: one body of convex pieces.
+  CreateResult createConcavePolygon(std::span<const Vec2> points, const BodyOptions& options = {});
+  /// Adds a shape to a live body; its geometry is in the body's frame as it
+  /// is now (origin at bodyState's position, turned by its angle). The body's
+  /// centre of mass moves to the new union's centroid and every shape stays
+  /// where it is in the world. Refused, with the reason, past
+  /// kMaxShapesPerBody, for an invalid shape, or when the shapes would reach
+  /// past kMaxBodyExtent from the centre.
+  ShapeResult createShape(BodyId body, const ShapeDef& def);
+  /// Removes a shape and its contacts; the body's mass follows. Refused for
+  /// an unknown id and for a body's last shape (remove the body instead).
+  InputResult destroyShape(ShapeId id);
+  /// The body that carries the shape.
+  std::optional<BodyId> shapeBody(ShapeId id) const;
+  int shapeCount() const;
   /// Removes a body and wakes what touched it. False for an unknown id.
   bool destroyBody(BodyId id);
   /// Removes every body.

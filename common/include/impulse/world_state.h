@@ -51,26 +51,36 @@ struct SolverSettingsState {
   bool enableContinuous = true;
 };
 
+/// One shape slot. A free slot keeps only its generation.
+struct ShapeSlotState {
+  bool alive = false;
+  std::uint32_t generation = 0;
+  std::int32_t body = -1;
+  /// Local to the body's centre of mass; polygon normals are kept as they are.
+  Shape shape;
+  Material material = Material::Solid;
+  /// Coefficients in force (the material's, or overridden); the body's mass
+  /// follows from its shapes and their densities.
+  Real density = 0;
+  Real restitution = 0;
+  Real staticFriction = 0;
+  Real dynamicFriction = 0;
+  Real rollingResistance = 0;
+  std::int32_t proxyKey = -1;
+};
+
 /// One body slot. A free slot keeps only its generation.
 struct BodySlotState {
   bool alive = false;
   std::uint32_t generation = 0;
-  /// Local to the centre of mass; polygon normals are kept as they are.
-  Shape shape;
+  /// The body's shape slots, in the order they were added.
+  std::vector<std::int32_t> shapes;
   Transform transform;
   Vec2 linearVelocity = Vec2::Zero();
   Real angularVelocity = 0;
   /// Forces applied for the next step.
   Vec2 force = Vec2::Zero();
   Real torque = 0;
-  Material material = Material::Solid;
-  /// Coefficients in force (the material's, or overridden); mass follows
-  /// from the shape and this density.
-  Real density = 0;
-  Real restitution = 0;
-  Real staticFriction = 0;
-  Real dynamicFriction = 0;
-  Real rollingResistance = 0;
   Real linearDrag = 0;
   Real angularDrag = 0;
   Real gravityScale = 1;
@@ -78,7 +88,6 @@ struct BodySlotState {
   /// Pose at the start of the last step.
   Vec2 center0 = Vec2::Zero();
   Rot rotation0;
-  std::int32_t proxyKey = -1;
   std::uint64_t creationOrder = 0;
   bool isStatic = false;
   bool ignoreGravity = false;
@@ -89,9 +98,12 @@ struct BodySlotState {
   std::vector<std::int32_t> jointEdges;
 };
 
-/// One contact slot between body slots bodyA and bodyB.
+/// One contact slot between shape slots shapeA and shapeB (their bodies'
+/// slots are bodyA and bodyB).
 struct ContactSlotState {
   bool alive = false;
+  std::int32_t shapeA = -1;
+  std::int32_t shapeB = -1;
   std::int32_t bodyA = -1;
   std::int32_t bodyB = -1;
   Manifold manifold;
@@ -137,6 +149,8 @@ struct WorldState {
   /// Free slots in the order they are handed out again (last first).
   std::vector<std::int32_t> freeBodies;
   std::uint64_t nextCreationOrder = 1;
+  std::vector<ShapeSlotState> shapes;
+  std::vector<std::int32_t> freeShapes;
   std::vector<ContactSlotState> contacts;
   std::vector<std::int32_t> freeContacts;
   std::vector<JointSlotState> joints;

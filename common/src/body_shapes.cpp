@@ -1,0 +1,168 @@
+// A body's shapes: checking a shape definition, attaching a shape to a body
+// (slot, body list, broad-phase proxy), detaching it, and the body's mass,
+// centre of mass and sizes from the union of its shapes.
+
+#include "body_shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+namespace impulse {
+
+namespace {
+
+std::int32_t allocateShape(WorldData& world) {
+  std::int32_t slot = world.freeShapes.acquire(world.shapes.size());
+  if (slot == static_cast<std::int32_t>(world.shapes.size())) world.shapes.emplace_back();
+  return slot;
+}
+
+// The point a shape is built around, exact in its own numbers: the centroid a
+// shape of its type stores. A body of one shape puts its centre of mass there,
+// so a circle or a polygon centred on the origin keeps its origin bit for bit.
+Vec2 storedCentroid(const Shape& shape) {
+  switch (shape.type()) {
+    case ShapeType::Circle: return shape.circle().center;
+    case ShapeType::Capsule: return Real(0.5) * (shape.capsule().center1 + shape.capsule().center2);
+    case ShapeType::Polygon: return shape.polygon().centroid;
+    case ShapeType::Segment:
+    case ShapeType::ChainSegment: return Vec2::Zero();
+  }
+  return Vec2::Zero();
+}
+
+BroadPhase::ProxyKind proxyKindOf(const Body& body) {
+  return body.isStatic ? BroadPhase::ProxyKind::Static : BroadPhase::ProxyKind::Movable;
+}
+
+// Moves every shape of the body by `offset` in its frame.
+void translateShapes(WorldData& world, std::int32_t body, const Vec2& offset) {
+  world.forEachShape(body, [&](std::int32_t s) {
+    world.shapes[s].shape = translated(world.shapes[s].shape, offset);
+  });
+}
+
+// The union's mass properties in the body's frame, each shape weighed with
+// its own density.
+MassProperties unionMass(const WorldData& world, std::int32_t body) {
+  std::array<MassProperties, kMaxShapesPerBody> parts;
+  std::size_t count = 0;
+  std::int32_t solidShapes = 0;
+  Vec2 onlyCentroid = Vec2::Zero();
+  world.forEachShape(body, [&](std::int32_t s) {
+    const ShapeSlot& slot = world.shapes[s];
+    parts[count++] = computeMassProperties(slot.shape, slot.coefficients.density);
+    if (isSolid(slot.type())) {
+      ++solidShapes;
+      onlyCentroid = storedCentroid(slot.shape);
+    }
+  });
+  MassProperties total = combineMassProperties(std::span(parts.data(), count));
+  if (solidShapes == 1) total.center = onlyCentroid;
+  if (solidShapes == 0) total.center = Vec2::Zero();
+  return total;
+}
+
+}  // namespace
+
+Real rollingRadiusOf(const Shape& shape) {
+  switch (shape.type()) {
+    case ShapeType::Circle: return shape.circle().radius;
+    case ShapeType::Capsule: return shape.capsule().radius;
+    case ShapeType::Segment:
+    case ShapeType::Polygon:
+    case ShapeType::ChainSegment: return 0;
+  }
+  return 0;
+}
+
+std::string checkShapeDef(const WorldData& world, const ShapeDef& def) {
+  if (ShapeError error = validateShape(def.shape, world.settings.shapeLimits); error != ShapeError::None) {
+    return std::string(describe(error));
+  }
+  if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
+  return validateMaterialOverride(def.materialOverride);
+}
+
+std::int32_t attachShape(WorldData& world, std::int32_t body, const ShapeDef& def) {
+  const std::int32_t s = allocateShape(world);
+  ShapeSlot& slot = world.shapes[s];
+  const std::uint32_t generation = slot.generation;
+  slot = ShapeSlot{};
+  slot.generation = generation;
+  slot.alive = true;
+  slot.shape = def.shape;
+  slot.material = def.material;
+  slot.coefficients = resolveCoefficients(def.material, def.materialOverride);
+  slot.rollingRadius = rollingRadiusOf(def.shape);
+  slot.body = body;
+  // Appended, so a body's shapes keep the order they were given in.
+  std::int32_t* link = &world.bodies[body].shapeHead;
+  while (*link != kNullIndex) link = &world.shapes[*link].nextInBody;
+  *link = s;
+  ++world.bodies[body].shapeCount;
+  ++world.liveShapes;
+  return s;
+}
+
+void createShapeProxy(WorldData& world, std::int32_t s) {
+  ShapeSlot& slot = world.shapes[s];
+  slot.proxyKey = world.broadPhase.createProxy(shapeAABB(world, s), s, proxyKindOf(world.bodies[slot.body]));
+}
+
+void detachShape(WorldData& world, std::int32_t s) {
+  ShapeSlot& slot = world.shapes[s];
+  Body& body = world.bodies[slot.body];
+  std::int32_t* link = &body.shapeHead;
+  while (*link != s) link = &world.shapes[*link].nextInBody;
+  *link = slot.nextInBody;
+  --body.shapeCount;
+  if (slot.proxyKey != kNullIndex) world.broadPhase.destroyProxy(slot.proxyKey);
+  slot.alive = false;
+  ++slot.generation;
+  world.freeShapes.release(s);
+  --world.liveShapes;
+}
+
+Vec2 updateBodyMass(WorldData& world, std::int32_t b) {
+  Body& body = world.bodies[b];
+  const Vec2 shift = unionMass(world, b).center;
+  if (shift != Vec2::Zero()) {
+    translateShapes(world, b, -shift);
+    body.transform.p += body.transform.q.apply(shift);
+  }
+  // From the shapes as they are kept, as a saved world's bodies get it.
+  setMassFromShapes(world, b);
+  return shift;
+}
+
+Vec2 setMassFromShapes(WorldData& world, std::int32_t b) {
+  Body& body = world.bodies[b];
+  const MassProperties total = unionMass(world, b);
+  body.mass = total;
+  body.mass.center = Vec2::Zero();
+  body.invMass = 0;
+  body.invInertia = 0;
+  if (body.isStatic) {
+    body.mass.mass = 0;
+    body.mass.inertia = 0;
+  } else {
+    body.invMass = body.mass.mass > 0 ? 1 / body.mass.mass : 0;
+    body.invInertia = body.mass.inertia > 0 ? 1 / body.mass.inertia : 0;
+  }
+  body.extent = 0;
+  body.innerRadius = 0;
+  bool anySolid = false;
+  world.forEachShape(b, [&](std::int32_t s) {
+    const Shape& shape = world.shapes[s].shape;
+    body.extent = std::max(body.extent, computeExtent(shape));
+    if (!isSolid(shape.type())) return;
+    const Real inner = computeInnerRadius(shape);
+    body.innerRadius = anySolid ? std::min(body.innerRadius, inner) : inner;
+    anySolid = true;
+  });
+  return total.center;
+}
+
+}  // namespace impulse
