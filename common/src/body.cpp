@@ -13,6 +13,7 @@ BodyDef makeBodyDef(const Shape& shape, const Vec2& position, const BodyOptions&
   def.angularVelocity = options.angularVelocity;
   def.material = options.material;
   def.isStatic = options.isStatic;
+  def.isKinematic = options.isKinematic;
   def.ignoreGravity = options.ignoreGravity;
   def.linearDrag = options.linearDrag;
   def.angularDrag = options.angularDrag;

@@ -10,6 +10,8 @@
 namespace impulse {
 
 struct Body {
+  bool isDynamic() const { return !isStatic && !isKinematic; }
+
   Transform transform;
   Vec2 linearVelocity = Vec2::Zero();
   Real angularVelocity = 0;
@@ -45,6 +47,8 @@ struct Body {
   std::uint32_t generation = 0;
   bool alive = false;
   bool isStatic = false;
+  // Moved by its velocity only: infinite mass, no gravity, forces or drag.
+  bool isKinematic = false;
   bool ignoreGravity = false;
   bool awake = false;
 };

@@ -147,7 +147,7 @@ Vec2 setMassFromShapes(WorldData& world, std::int32_t b) {
   if (body.isStatic) {
     body.mass.mass = 0;
     body.mass.inertia = 0;
-  } else {
+  } else if (body.isDynamic()) {
     body.invMass = body.mass.mass > 0 ? 1 / body.mass.mass : 0;
     body.invInertia = body.mass.inertia > 0 ? 1 / body.mass.inertia : 0;
   }

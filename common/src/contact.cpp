@@ -144,7 +144,8 @@ bool pairMayTouch(const WorldData& world, const ProxyPair& pair) {
   const ShapeSlot& a = world.shapes[pair.first];
   const ShapeSlot& b = world.shapes[pair.second];
   if (a.body == b.body) return false;
-  if (world.bodies[a.body].isStatic && world.bodies[b.body].isStatic) return false;
+  // Static and kinematic bodies push; only a dynamic body can be pushed.
+  if (!world.bodies[a.body].isDynamic() && !world.bodies[b.body].isDynamic()) return false;
   if (!shapesCanCollide(a.type(), b.type())) return false;
   return !jointBlocksContact(world, a.body, b.body);
 }

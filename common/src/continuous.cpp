@@ -114,7 +114,9 @@ void sweepAgainstStatics(WorldData& world, std::int32_t slot) {
 void solveContinuous(WorldData& world, Real /*dt*/) {
   if (!world.settings.enableContinuous) return;
   for (std::int32_t slot : world.awakeBodies) {
-    if (isFast(world.bodies[slot])) sweepAgainstStatics(world, slot);
+    // Kinematic bodies go where their velocity takes them, walls or not.
+    const Body& body = world.bodies[slot];
+    if (body.isDynamic() && isFast(body)) sweepAgainstStatics(world, slot);
   }
 }
 

@@ -31,6 +31,16 @@ std::string pushTarget(const WorldData& world, BodyId id, const Body*& body) {
   return {};
 }
 
+// A push (impulse or force) moves dynamic bodies only.
+std::string pushableTarget(const WorldData& world, BodyId id, const Body*& body) {
+  if (std::string error = pushTarget(world, id, body); !error.empty()) return error;
+  if (body->isKinematic) {
+    return "body " + std::to_string(id.value) +
+           " is kinematic: it moves by its velocity only (set its velocity or its target instead)";
+  }
+  return {};
+}
+
 std::string checkFinite(const Vec2& value, const char* field) {
   if (isFinite(value)) return {};
   return std::string(field) + " is not a finite number (NaN or infinity)";
@@ -117,7 +127,7 @@ std::string checkResultingMotion(const InputLimits& limits, const MotionCheck& m
 std::string checkImpulse(const WorldData& world, BodyId id, const Vec2& impulse,
                          const std::optional<Vec2>& point) {
   const Body* body = nullptr;
-  if (std::string error = pushTarget(world, id, body); !error.empty()) return error;
+  if (std::string error = pushableTarget(world, id, body); !error.empty()) return error;
   if (std::string error = checkPush(world, impulse, point, "impulse", "impulse point");
       !error.empty()) {
     return error;
@@ -133,7 +143,7 @@ std::string checkImpulse(const WorldData& world, BodyId id, const Vec2& impulse,
 std::string checkForce(const WorldData& world, BodyId id, const Vec2& force,
                        const std::optional<Vec2>& point) {
   const Body* body = nullptr;
-  if (std::string error = pushTarget(world, id, body); !error.empty()) return error;
+  if (std::string error = pushableTarget(world, id, body); !error.empty()) return error;
   if (std::string error = checkPush(world, force, point, "force", "force point"); !error.empty()) {
     return error;
   }

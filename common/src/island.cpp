@@ -13,15 +13,21 @@ namespace impulse {
 namespace {
 
 // The island graph: calls visit(other) for every body joined to `slot` by a
-// constraint that links islands: touching contacts and joints.
+// constraint that links islands: touching contacts and joints. Kinematic
+// bodies link nothing, as static ones: a platform would otherwise join all
+// it carries into one island (they stay awake by moving with it).
 template <class Visit>
 void forEachLinkedBody(const WorldData& world, std::int32_t slot, Visit&& visit) {
+  if (world.bodies[slot].isKinematic) return;
+  auto visitDynamic = [&](std::int32_t other) {
+    if (!world.bodies[other].isKinematic) visit(other);
+  };
   forEachEdge(world.contacts, world.bodies[slot].contactHead, [&](std::int32_t key, const Contact& contact) {
-    if (contact.touching) visit(contact.edges.otherBody(key));
+    if (contact.touching) visitDynamic(contact.edges.otherBody(key));
   });
   // A joint to the world has no body on its other side.
   forEachEdge(world.joints, world.bodies[slot].jointHead, [&](std::int32_t key, const Joint& joint) {
-    if (joint.edges.otherBody(key) != kNullIndex) visit(joint.edges.otherBody(key));
+    if (joint.edges.otherBody(key) != kNullIndex) visitDynamic(joint.edges.otherBody(key));
   });
 }
 

@@ -94,10 +94,10 @@ std::string validateJoint(const WorldData& world, const JointDef& def) {
   if (a == nullptr) return "bodyA is not a live body (unknown or removed)";
   if (!def.bodyB.isNull() && b == nullptr) return "bodyB is not a live body (unknown or removed)";
   if (def.bodyA == def.bodyB) return "bodyA and bodyB are the same body";
-  if (a->isStatic && (b == nullptr || b->isStatic))
-    return "a joint needs a dynamic body (both ends are static or the world)";
-  if (std::holds_alternative<MouseJointSettings>(def.settings) && a->isStatic)
-    return "a mouse joint pulls bodyA, which is static";
+  if (!a->isDynamic() && (b == nullptr || !b->isDynamic()))
+    return "a joint needs a dynamic body (both ends are static, kinematic or the world)";
+  if (std::holds_alternative<MouseJointSettings>(def.settings) && !a->isDynamic())
+    return "a mouse joint pulls bodyA, which is static or kinematic";
   return firstError(checkPoint(world, "anchorA", def.anchorA),
                     checkPoint(world, "anchorB", def.anchorB),
                     checkJointSettings(def.settings));

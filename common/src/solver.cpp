@@ -49,11 +49,12 @@ void loadStates(WorldData& world, Real h) {
     SolverIntegration& in = world.solverIntegration[k + 1];
     in.body = slot;
     in.linearAcceleration = body.invMass * body.force;
-    if (!body.ignoreGravity) in.linearAcceleration += body.gravityScale * world.settings.gravity;
+    if (body.isDynamic() && !body.ignoreGravity) in.linearAcceleration += body.gravityScale * world.settings.gravity;
     in.angularAcceleration = body.invInertia * body.torque;
     // Exact exponential decay over h: the same drag whatever the tick rate.
-    in.linearDamping = body.linearDrag > 0 ? std::exp(-body.linearDrag * h) : Real(1);
-    in.angularDamping = body.angularDrag > 0 ? std::exp(-body.angularDrag * h) : Real(1);
+    const bool drags = body.isDynamic();
+    in.linearDamping = drags && body.linearDrag > 0 ? std::exp(-body.linearDrag * h) : Real(1);
+    in.angularDamping = drags && body.angularDrag > 0 ? std::exp(-body.angularDrag * h) : Real(1);
   }
 }
 

@@ -65,6 +65,7 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
   }
   if (std::string error = checkDragAndGravityScale(def); !error.empty()) return error;
   if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
+  if (def.isStatic && def.isKinematic) return "a body is static or kinematic, not both";
   if (std::string error = validateMaterialOverride(def.materialOverride); !error.empty()) return error;
   if (world.liveBodies >= world.settings.maxBodies) {
     return "body limit reached (" + std::to_string(world.settings.maxBodies) + " bodies)";
@@ -216,6 +217,7 @@ CreateResult World::createBody(const BodyDef& def) {
   body.generation = generation;
   body.alive = true;
   body.isStatic = def.isStatic;
+  body.isKinematic = def.isKinematic;
   body.ignoreGravity = def.ignoreGravity;
   body.transform = {def.position, Rot::fromAngle(def.angle)};
   body.linearDrag = def.linearDrag;
@@ -365,6 +367,7 @@ std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
   out.rollingResistance = first.coefficients.rollingResistance;
   out.density = first.coefficients.density;
   out.isStatic = body->isStatic;
+  out.isKinematic = body->isKinematic;
   out.ignoreGravity = body->ignoreGravity;
   out.mass = body->mass;
   out.linearDrag = body->linearDrag;
@@ -427,6 +430,17 @@ InputResult World::setVelocity(BodyId id, const Vec2& linear, Real angular) {
   body->linearVelocity = linear;
   body->angularVelocity = angular;
   return {};
+}
+
+InputResult World::setTargetTransform(BodyId id, const Vec2& position, Real angle, Real dt) {
+  if (!(dt > 0) || !isFinite(dt)) return {"dt must be a positive number of seconds"};
+  if (!isFinite(position) || !isFinite(angle)) return {"target position and angle must be finite numbers"};
+  const Body* body = impl_->find(id);
+  if (body == nullptr) return {"unknown body id " + std::to_string(id.value)};
+  const Vec2 linear = (position - body->transform.p) / dt;
+  // The shorter way round.
+  const Real turn = relativeRotation(body->transform.q, Rot::fromAngle(angle)).angle();
+  return setVelocity(id, linear, turn / dt);
 }
 
 std::optional<BodyId> World::queryPoint(const Vec2& point) const {

@@ -50,6 +50,7 @@ BodySlotState exportBody(const WorldData& world, std::int32_t slot) {
   out.rotation0 = body.rotation0;
   out.creationOrder = body.creationOrder;
   out.isStatic = body.isStatic;
+  out.isKinematic = body.isKinematic;
   out.ignoreGravity = body.ignoreGravity;
   out.awake = body.awake;
   out.contactEdges = edgeKeys(world.contacts, body.contactHead);

@@ -152,6 +152,7 @@ std::string checkBody(const WorldSettings& settings, const BodySlotState& b) {
               checkRotation("rotation0", b.rotation0));
   if (!error.empty()) return error;
   if (b.isStatic && b.awake) return "a static body cannot be awake";
+  if (b.isStatic && b.isKinematic) return "a body is static or kinematic, not both";
   return {};
 }
 
@@ -171,6 +172,7 @@ Body buildBody(const BodySlotState& b) {
   body.alive = true;
   body.generation = b.generation;
   body.isStatic = b.isStatic;
+  body.isKinematic = b.isKinematic;
   body.ignoreGravity = b.ignoreGravity;
   body.transform = b.transform;
   body.linearVelocity = b.linearVelocity;

@@ -87,6 +87,9 @@ struct BodyDef {
   Material material = Material::Solid;
   MaterialOverride materialOverride;
   bool isStatic = false;
+  /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
+  /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
+  bool isKinematic = false;
   bool ignoreGravity = false;
   /// Air drag rates in 1/s: dv/dt = -linearDrag * v, exact over any dt.
   Real linearDrag = 0;
@@ -104,6 +107,9 @@ inline constexpr Real kMaxGravityScale = 10;   ///< |gravityScale|
 struct BodyOptions {
   Material material = Material::Solid;
   bool isStatic = false;
+  /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
+  /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
+  bool isKinematic = false;
   bool ignoreGravity = false;
   Vec2 linearVelocity = Vec2::Zero();
   Real angularVelocity = 0;
@@ -151,6 +157,7 @@ struct BodyDescription {
   Shape shape;
   Material material = Material::Solid;
   bool isStatic = false;
+  bool isKinematic = false;
   bool ignoreGravity = false;
   MassProperties mass;  ///< zero mass and inertia for static bodies
   Real restitution = 0;

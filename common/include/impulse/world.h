@@ -158,6 +158,12 @@ class World {
   /// on the body would exceed InputLimits' accelerations.
   InputResult applyForce(BodyId id, const Vec2& force, std::optional<Vec2> point = std::nullopt);
   InputResult setVelocity(BodyId id, const Vec2& linear, Real angular);
+  /// Gives the body the velocity that takes it to `position` and `angle`
+  /// over the next step of `dt` seconds (b2Body_SetTargetTransform): how a
+  /// kinematic platform, door or pusher follows a path. Refused, with the
+  /// reason, as setVelocity is (speeds past the limits included) and for a
+  /// dt that is not positive.
+  InputResult setTargetTransform(BodyId id, const Vec2& position, Real angle, Real dt);
 
   /// Validates the definition (live, distinct bodies; finite numbers in
   /// range) before anything changes. Wakes both bodies.

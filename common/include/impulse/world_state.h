@@ -90,6 +90,7 @@ struct BodySlotState {
   Rot rotation0;
   std::uint64_t creationOrder = 0;
   bool isStatic = false;
+  bool isKinematic = false;
   bool ignoreGravity = false;
   bool awake = false;
   /// Edge keys (element * 2 + side) of the body's contact and joint lists,

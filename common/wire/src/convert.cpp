@@ -30,15 +30,38 @@ v1::Material toWire(Material material) {
   return static_cast<v1::Material>(static_cast<int>(material) + 1);
 }
 
+void toWire(const Segment& segment, v1::Segment* out) {
+  toWire(segment.point1, out->mutable_point1());
+  toWire(segment.point2, out->mutable_point2());
+}
+
 void toWire(const Shape& shape, v1::Shape* out) {
-  if (shape.type == ShapeType::Circle) {
-    out->mutable_circle()->set_radius(shape.circle.radius);
-    return;
-  }
-  auto* polygon = out->mutable_polygon();
-  polygon->mutable_vertices()->Reserve(shape.polygon.count);
-  for (int i = 0; i < shape.polygon.count; ++i) {
-    toWire(shape.polygon.vertices[std::size_t(i)], polygon->add_vertices());
+  switch (shape.type()) {
+    case ShapeType::Circle:
+      out->mutable_circle()->set_radius(shape.circle().radius);
+      // Left unset at the centre, as a one-shape body's circle always is.
+      if (shape.circle().center != Vec2::Zero()) toWire(shape.circle().center, out->mutable_circle()->mutable_center());
+      return;
+    case ShapeType::Polygon: {
+      auto* polygon = out->mutable_polygon();
+      polygon->mutable_vertices()->Reserve(shape.polygon().count);
+      for (int i = 0; i < shape.polygon().count; ++i) {
+        toWire(shape.polygon().vertices[std::size_t(i)], polygon->add_vertices());
+      }
+      polygon->set_radius(shape.polygon().radius);
+      return;
+    }
+    case ShapeType::Capsule:
+      toWire(shape.capsule().center1, out->mutable_capsule()->mutable_center1());
+      toWire(shape.capsule().center2, out->mutable_capsule()->mutable_center2());
+      out->mutable_capsule()->set_radius(shape.capsule().radius);
+      return;
+    case ShapeType::Segment: toWire(shape.segment(), out->mutable_segment()); return;
+    case ShapeType::ChainSegment:
+      toWire(shape.chainSegment().ghost1, out->mutable_chain_segment()->mutable_ghost1());
+      toWire(shape.chainSegment().segment, out->mutable_chain_segment()->mutable_segment());
+      toWire(shape.chainSegment().ghost2, out->mutable_chain_segment()->mutable_ghost2());
+      return;
   }
 }
 
@@ -64,6 +87,9 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
   out->set_linear_damping(description.linearDrag);
   out->set_angular_damping(description.angularDrag);
   out->set_gravity_scale(description.gravityScale);
+  for (std::size_t i = 1; i < description.shapes.size(); ++i) {
+    toWire(description.shapes[i].shape, out->add_extra_shapes());
+  }
 }
 
 void toWire(const PresetInfo& preset, v1::PresetInfo* out) {
@@ -189,39 +215,89 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   return Decoded<BodyOptions>::success(result);
 }
 
+namespace {
+
+Decoded<Shape> polygonFromWire(const v1::Polygon& wire) {
+  const auto& vertices = wire.vertices();
+  if (vertices.size() < kMinPolygonVertices || vertices.size() > kMaxPolygonVertices) {
+    return Decoded<Shape>::failure("shape.polygon has " + std::to_string(vertices.size()) + " vertices (3-16 allowed)");
+  }
+  Polygon polygon;
+  polygon.count = vertices.size();
+  for (int i = 0; i < polygon.count; ++i) {
+    auto v = vecFromWire(vertices[i], "shape.polygon.vertex");
+    if (!v.ok()) return Decoded<Shape>::failure(std::move(v.error));
+    polygon.vertices[std::size_t(i)] = *v.value;
+  }
+  for (int i = 0; i < polygon.count; ++i) {
+    const Vec2 edge = polygon.vertices[std::size_t((i + 1) % polygon.count)] - polygon.vertices[std::size_t(i)];
+    const Real length = edge.norm();
+    polygon.normals[std::size_t(i)] = length > 0 ? Vec2(rightPerp(edge) / length) : Vec2(Vec2::Zero());
+  }
+  auto radius = realFromWire(wire.radius(), "shape.polygon.radius");
+  if (!radius.ok()) return Decoded<Shape>::failure(std::move(radius.error));
+  polygon.radius = *radius.value;
+  return Decoded<Shape>::success(Shape::makePolygon(polygon));
+}
+
+// Every vector of a shape message decoded, or the first error.
+struct ShapePoints {
+  std::vector<Vec2> points;
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
+ShapePoints pointsFromWire(std::initializer_list<std::pair<const v1::Vec2*, const char*>> fields) {
+  ShapePoints out;
+  for (const auto& [vector, name] : fields) {
+    auto v = vecFromWire(*vector, name);
+    if (!v.ok()) return {{}, std::move(v.error)};
+    out.points.push_back(*v.value);
+  }
+  return out;
+}
+
+}  // namespace
+
 Decoded<Shape> shapeFromWire(const v1::Shape& shape) {
   switch (shape.kind_case()) {
     case v1::Shape::kCircle: {
       auto radius = realFromWire(shape.circle().radius(), "shape.circle.radius");
       if (!radius.ok()) return Decoded<Shape>::failure(std::move(radius.error));
-      return Decoded<Shape>::success(Shape::makeCircle(*radius.value));
+      ShapePoints center = pointsFromWire({{&shape.circle().center(), "shape.circle.center"}});
+      if (!center.ok()) return Decoded<Shape>::failure(std::move(center.error));
+      return Decoded<Shape>::success(Shape::makeCircle(*radius.value, center.points[0]));
     }
-    case v1::Shape::kPolygon: {
-      const auto& vertices = shape.polygon().vertices();
-      if (vertices.size() < kMinPolygonVertices || vertices.size() > kMaxPolygonVertices) {
-        return Decoded<Shape>::failure("shape.polygon has " + std::to_string(vertices.size()) +
-                                       " vertices (3-16 allowed)");
-      }
-      Polygon polygon;
-      polygon.count = vertices.size();
-      for (int i = 0; i < polygon.count; ++i) {
-        auto v = vecFromWire(vertices[i], "shape.polygon.vertex");
-        if (!v.ok()) return Decoded<Shape>::failure(std::move(v.error));
-        polygon.vertices[std::size_t(i)] = *v.value;
-      }
-      for (int i = 0; i < polygon.count; ++i) {
-        const Vec2 edge = polygon.vertices[std::size_t((i + 1) % polygon.count)] -
-                          polygon.vertices[std::size_t(i)];
-        const Real length = edge.norm();
-        polygon.normals[std::size_t(i)] =
-            length > 0 ? Vec2(rightPerp(edge) / length) : Vec2(Vec2::Zero());
-      }
-      return Decoded<Shape>::success(Shape::makePolygon(polygon));
+    case v1::Shape::kPolygon: return polygonFromWire(shape.polygon());
+    case v1::Shape::kCapsule: {
+      const v1::Capsule& capsule = shape.capsule();
+      auto radius = realFromWire(capsule.radius(), "shape.capsule.radius");
+      if (!radius.ok()) return Decoded<Shape>::failure(std::move(radius.error));
+      ShapePoints ends = pointsFromWire({{&capsule.center1(), "shape.capsule.center1"},
+                                         {&capsule.center2(), "shape.capsule.center2"}});
+      if (!ends.ok()) return Decoded<Shape>::failure(std::move(ends.error));
+      return Decoded<Shape>::success(Shape::makeCapsule(ends.points[0], ends.points[1], *radius.value));
+    }
+    case v1::Shape::kSegment: {
+      ShapePoints ends = pointsFromWire({{&shape.segment().point1(), "shape.segment.point1"},
+                                         {&shape.segment().point2(), "shape.segment.point2"}});
+      if (!ends.ok()) return Decoded<Shape>::failure(std::move(ends.error));
+      return Decoded<Shape>::success(Shape::makeSegment(ends.points[0], ends.points[1]));
+    }
+    case v1::Shape::kChainSegment: {
+      const v1::ChainSegment& chain = shape.chain_segment();
+      ShapePoints points = pointsFromWire({{&chain.ghost1(), "shape.chain_segment.ghost1"},
+                                           {&chain.segment().point1(), "shape.chain_segment.segment.point1"},
+                                           {&chain.segment().point2(), "shape.chain_segment.segment.point2"},
+                                           {&chain.ghost2(), "shape.chain_segment.ghost2"}});
+      if (!points.ok()) return Decoded<Shape>::failure(std::move(points.error));
+      return Decoded<Shape>::success(
+          Shape{ChainSegment{points.points[0], {points.points[1], points.points[2]}, points.points[3]}});
     }
     case v1::Shape::KIND_NOT_SET:
       break;
   }
-  return Decoded<Shape>::failure("shape has neither a circle nor a polygon");
+  return Decoded<Shape>::failure("shape has no kind (circle, polygon, capsule, segment or chain_segment)");
 }
 
 Vec2 vecFromWireUnchecked(const v1::Vec2& v) { return Vec2(Real(v.x()), Real(v.y())); }

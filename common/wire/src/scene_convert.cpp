@@ -40,44 +40,79 @@ void putSettings(const SolverSettingsState& s, v1::SceneSettings* out) {
   out->set_enable_continuous(s.enableContinuous);
 }
 
-void putShape(const Shape& shape, v1::SceneBody* out) {
-  if (shape.type == ShapeType::Circle) {
-    out->set_circle_radius(shape.circle.radius);
-    return;
+void put(const Segment& segment, v1::SceneSegment* out) {
+  put(segment.point1, out->mutable_point1());
+  put(segment.point2, out->mutable_point2());
+}
+
+void putGeometry(const Shape& shape, v1::SceneShape* out) {
+  switch (shape.type()) {
+    case ShapeType::Circle:
+      put(shape.circle().center, out->mutable_circle()->mutable_center());
+      out->mutable_circle()->set_radius(shape.circle().radius);
+      return;
+    case ShapeType::Capsule:
+      put(shape.capsule().center1, out->mutable_capsule()->mutable_center1());
+      put(shape.capsule().center2, out->mutable_capsule()->mutable_center2());
+      out->mutable_capsule()->set_radius(shape.capsule().radius);
+      return;
+    case ShapeType::Segment: put(shape.segment(), out->mutable_segment()); return;
+    case ShapeType::Polygon: {
+      v1::ScenePolygon* polygon = out->mutable_polygon();
+      for (int i = 0; i < shape.polygon().count; ++i) {
+        put(shape.polygon().vertices[std::size_t(i)], polygon->add_vertices());
+        put(shape.polygon().normals[std::size_t(i)], polygon->add_normals());
+      }
+      put(shape.polygon().centroid, polygon->mutable_centroid());
+      polygon->set_radius(shape.polygon().radius);
+      return;
+    }
+    case ShapeType::ChainSegment: {
+      const ChainSegment& chain = shape.chainSegment();
+      put(chain.ghost1, out->mutable_chain_segment()->mutable_ghost1());
+      put(chain.segment, out->mutable_chain_segment()->mutable_segment());
+      put(chain.ghost2, out->mutable_chain_segment()->mutable_ghost2());
+      out->mutable_chain_segment()->set_chain_id(chain.chainId);
+      return;
+    }
   }
-  v1::ScenePolygon* polygon = out->mutable_polygon();
-  for (int i = 0; i < shape.polygon.count; ++i) {
-    put(shape.polygon.vertices[std::size_t(i)], polygon->add_vertices());
-    put(shape.polygon.normals[std::size_t(i)], polygon->add_normals());
-  }
+}
+
+void putShape(const ShapeSlotState& s, v1::SceneShape* out) {
+  out->set_alive(s.alive);
+  out->set_generation(s.generation);
+  if (!s.alive) return;
+  out->set_body(s.body);
+  putGeometry(s.shape, out);
+  out->set_material(toWire(s.material));
+  out->set_density(s.density);
+  out->set_restitution(s.restitution);
+  out->set_static_friction(s.staticFriction);
+  out->set_dynamic_friction(s.dynamicFriction);
+  out->set_rolling_resistance(s.rollingResistance);
+  out->set_proxy_key(s.proxyKey);
 }
 
 void putBody(const BodySlotState& b, v1::SceneBody* out) {
   out->set_alive(b.alive);
   out->set_generation(b.generation);
   if (!b.alive) return;
-  putShape(b.shape, out);
+  for (std::int32_t shape : b.shapes) out->add_shapes(shape);
   put(b.transform.p, out->mutable_position());
   put(b.transform.q, out->mutable_rotation());
   put(b.linearVelocity, out->mutable_velocity());
   out->set_angular_velocity(b.angularVelocity);
   put(b.force, out->mutable_force());
   out->set_torque(b.torque);
-  out->set_material(toWire(b.material));
-  out->set_density(b.density);
-  out->set_restitution(b.restitution);
-  out->set_static_friction(b.staticFriction);
-  out->set_dynamic_friction(b.dynamicFriction);
-  out->set_rolling_resistance(b.rollingResistance);
   out->set_linear_drag(b.linearDrag);
   out->set_gravity_scale(b.gravityScale);
   out->set_angular_drag(b.angularDrag);
   out->set_sleep_time(b.sleepTime);
   put(b.center0, out->mutable_start_center());
   put(b.rotation0, out->mutable_start_rotation());
-  out->set_proxy_key(b.proxyKey);
   out->set_creation_order(b.creationOrder);
   out->set_is_static(b.isStatic);
+  out->set_is_kinematic(b.isKinematic);
   out->set_ignore_gravity(b.ignoreGravity);
   out->set_awake(b.awake);
   for (std::int32_t key : b.contactEdges) out->add_contact_edges(key);
@@ -87,6 +122,8 @@ void putBody(const BodySlotState& b, v1::SceneBody* out) {
 void putContact(const ContactSlotState& c, v1::SceneContact* out) {
   out->set_alive(c.alive);
   if (!c.alive) return;
+  out->set_shape_a(c.shapeA);
+  out->set_shape_b(c.shapeB);
   out->set_body_a(c.bodyA);
   out->set_body_b(c.bodyB);
   put(c.manifold.normal, out->mutable_normal());
@@ -186,60 +223,108 @@ SolverSettingsState getSettings(const v1::SceneSettings& s) {
           s.enable_continuous()};
 }
 
-std::string getShape(const v1::SceneBody& b, Shape& shape) {
-  switch (b.shape_case()) {
-    case v1::SceneBody::kCircleRadius:
-      shape = Shape::makeCircle(b.circle_radius());
+Segment get(const v1::SceneSegment& s) { return {get(s.point1()), get(s.point2())}; }
+
+std::string getPolygon(const v1::ScenePolygon& p, Shape& shape) {
+  if (p.vertices_size() < 3 || p.vertices_size() > kMaxPolygonVertices || p.normals_size() != p.vertices_size()) {
+    return "polygon must have 3 to " + std::to_string(kMaxPolygonVertices) + " vertices, a normal each";
+  }
+  Polygon polygon;
+  polygon.count = p.vertices_size();
+  for (int i = 0; i < polygon.count; ++i) {
+    polygon.vertices[std::size_t(i)] = get(p.vertices(i));
+    polygon.normals[std::size_t(i)] = get(p.normals(i));
+  }
+  polygon.centroid = get(p.centroid());
+  polygon.radius = p.radius();
+  shape = Shape::makePolygon(polygon);
+  return {};
+}
+
+std::string getGeometry(const v1::SceneShape& in, Shape& shape) {
+  switch (in.geometry_case()) {
+    case v1::SceneShape::kCircle:
+      shape = Shape::makeCircle(in.circle().radius(), get(in.circle().center()));
       return {};
-    case v1::SceneBody::kPolygon: {
-      const v1::ScenePolygon& p = b.polygon();
-      if (p.vertices_size() < 3 || p.vertices_size() > kMaxPolygonVertices ||
-          p.normals_size() != p.vertices_size()) {
-        return "polygon must have 3 to " + std::to_string(kMaxPolygonVertices) +
-               " vertices, a normal each";
-      }
-      Polygon polygon;
-      polygon.count = p.vertices_size();
-      for (int i = 0; i < polygon.count; ++i) {
-        polygon.vertices[std::size_t(i)] = get(p.vertices(i));
-        polygon.normals[std::size_t(i)] = get(p.normals(i));
-      }
-      shape = Shape::makePolygon(polygon);
+    case v1::SceneShape::kCapsule:
+      shape = Shape::makeCapsule(get(in.capsule().center1()), get(in.capsule().center2()), in.capsule().radius());
+      return {};
+    case v1::SceneShape::kSegment:
+      shape = Shape{get(in.segment())};
+      return {};
+    case v1::SceneShape::kPolygon: return getPolygon(in.polygon(), shape);
+    case v1::SceneShape::kChainSegment: {
+      const v1::SceneChainSegment& c = in.chain_segment();
+      shape = Shape{ChainSegment{get(c.ghost1()), get(c.segment()), get(c.ghost2()), c.chain_id()}};
       return {};
     }
-    case v1::SceneBody::SHAPE_NOT_SET:
-      break;
+    case v1::SceneShape::GEOMETRY_NOT_SET: break;
   }
-  return "a live body needs a shape (circle_radius or polygon)";
+  return "a live shape needs a geometry (circle, capsule, segment, polygon or chain_segment)";
+}
+
+std::string getShape(const v1::SceneShape& in, ShapeSlotState& s) {
+  s.alive = in.alive();
+  s.generation = in.generation();
+  if (!s.alive) return {};
+  if (std::string error = getGeometry(in, s.shape); !error.empty()) return error;
+  const std::optional<Material> material = materialFromWire(in.material());
+  if (!material) return "material must be one of the Material enum";
+  s.body = in.body();
+  s.material = *material;
+  s.density = in.density();
+  s.restitution = in.restitution();
+  s.staticFriction = in.static_friction();
+  s.dynamicFriction = in.dynamic_friction();
+  s.rollingResistance = in.rolling_resistance();
+  s.proxyKey = in.proxy_key();
+  return {};
+}
+
+// Versions 1-2: a body's one shape is part of the body message; it becomes
+// the shape slot of the body's own index.
+std::string getVersion2Shape(const v1::SceneBody& in, std::int32_t slot, ShapeSlotState& s) {
+  s.alive = in.alive();
+  if (!s.alive) return {};
+  switch (in.shape_case()) {
+    case v1::SceneBody::kCircleRadius: s.shape = Shape::makeCircle(in.circle_radius()); break;
+    case v1::SceneBody::kPolygon:
+      if (std::string error = getPolygon(in.polygon(), s.shape); !error.empty()) return error;
+      break;
+    case v1::SceneBody::SHAPE_NOT_SET: return "a live body needs a shape (circle_radius or polygon)";
+  }
+  const std::optional<Material> material = materialFromWire(in.material());
+  if (!material) return "material must be one of the Material enum";
+  s.body = slot;
+  s.material = *material;
+  s.density = in.density();
+  s.restitution = in.restitution();
+  s.staticFriction = in.static_friction();
+  s.dynamicFriction = in.dynamic_friction();
+  s.rollingResistance = in.rolling_resistance();
+  s.proxyKey = in.proxy_key();
+  return {};
 }
 
 std::string getBody(const v1::SceneBody& in, BodySlotState& b) {
   b.alive = in.alive();
   b.generation = in.generation();
   if (!b.alive) return {};
-  if (std::string error = getShape(in, b.shape); !error.empty()) return error;
-  const std::optional<Material> material = materialFromWire(in.material());
-  if (!material) return "material must be one of the Material enum";
+  b.shapes.assign(in.shapes().begin(), in.shapes().end());
   b.transform = {get(in.position()), get(in.rotation())};
   b.linearVelocity = get(in.velocity());
   b.angularVelocity = in.angular_velocity();
   b.force = get(in.force());
   b.torque = in.torque();
-  b.material = *material;
-  b.density = in.density();
-  b.restitution = in.restitution();
-  b.staticFriction = in.static_friction();
-  b.dynamicFriction = in.dynamic_friction();
-  b.rollingResistance = in.rolling_resistance();
   b.linearDrag = in.linear_drag();
   b.gravityScale = in.has_gravity_scale() ? in.gravity_scale() : 1;
   b.angularDrag = in.angular_drag();
   b.sleepTime = in.sleep_time();
   b.center0 = get(in.start_center());
   b.rotation0 = get(in.start_rotation());
-  b.proxyKey = in.proxy_key();
   b.creationOrder = in.creation_order();
   b.isStatic = in.is_static();
+  b.isKinematic = in.is_kinematic();
   b.ignoreGravity = in.ignore_gravity();
   b.awake = in.awake();
   b.contactEdges.assign(in.contact_edges().begin(), in.contact_edges().end());
@@ -251,6 +336,8 @@ std::string getContact(const v1::SceneContact& in, ContactSlotState& c) {
   c.alive = in.alive();
   if (!c.alive) return {};
   if (in.points_size() > 2) return "a manifold has at most 2 points";
+  c.shapeA = in.shape_a();
+  c.shapeB = in.shape_b();
   c.bodyA = in.body_a();
   c.bodyB = in.body_b();
   c.manifold.normal = get(in.normal());
@@ -337,6 +424,36 @@ std::string at(const char* kind, int index) {
   return std::string(kind) + " " + std::to_string(index) + ": ";
 }
 
+std::string getShapes(const v1::Scene& scene, WorldState& state) {
+  if (scene.version() >= 3) {
+    state.shapes.resize(std::size_t(scene.shapes_size()));
+    for (int i = 0; i < scene.shapes_size(); ++i) {
+      if (std::string error = getShape(scene.shapes(i), state.shapes[std::size_t(i)]); !error.empty()) {
+        return at("shape slot", i) + error;
+      }
+    }
+    state.freeShapes.assign(scene.free_shapes().begin(), scene.free_shapes().end());
+    return {};
+  }
+  state.shapes.resize(state.bodies.size());
+  for (int i = 0; i < scene.bodies_size(); ++i) {
+    if (std::string error = getVersion2Shape(scene.bodies(i), i, state.shapes[std::size_t(i)]); !error.empty()) {
+      return at("body slot", i) + error;
+    }
+    if (state.bodies[std::size_t(i)].alive) state.bodies[std::size_t(i)].shapes = {i};
+  }
+  state.freeShapes = state.freeBodies;
+  return {};
+}
+
+// Versions 1-2: shape slot i is body slot i's only shape.
+void nameVersion2ContactShapes(WorldState& state) {
+  for (ContactSlotState& contact : state.contacts) {
+    contact.shapeA = contact.bodyA;
+    contact.shapeB = contact.bodyB;
+  }
+}
+
 }  // namespace
 
 void toWire(const WorldState& state, v1::Scene* out) {
@@ -345,6 +462,8 @@ void toWire(const WorldState& state, v1::Scene* out) {
   for (const BodySlotState& body : state.bodies) putBody(body, out->add_bodies());
   putSlots(state.freeBodies, out->mutable_free_bodies());
   out->set_next_creation_order(state.nextCreationOrder);
+  for (const ShapeSlotState& shape : state.shapes) putShape(shape, out->add_shapes());
+  putSlots(state.freeShapes, out->mutable_free_shapes());
   for (const ContactSlotState& contact : state.contacts) putContact(contact, out->add_contacts());
   putSlots(state.freeContacts, out->mutable_free_contacts());
   for (const JointSlotState& joint : state.joints) putJoint(joint, out->add_joints());
@@ -383,6 +502,7 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
   }
   state.freeBodies.assign(scene.free_bodies().begin(), scene.free_bodies().end());
   state.nextCreationOrder = scene.next_creation_order();
+  if (std::string error = getShapes(scene, state); !error.empty()) return Result::failure(error);
   state.contacts.resize(std::size_t(scene.contacts_size()));
   for (int i = 0; i < scene.contacts_size(); ++i) {
     if (std::string error = getContact(scene.contacts(i), state.contacts[std::size_t(i)]);
@@ -391,6 +511,7 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
     }
   }
   state.freeContacts.assign(scene.free_contacts().begin(), scene.free_contacts().end());
+  if (scene.version() < 3) nameVersion2ContactShapes(state);
   state.joints.resize(std::size_t(scene.joints_size()));
   for (int i = 0; i < scene.joints_size(); ++i) {
     if (std::string error = getJoint(scene.joints(i), state.joints[std::size_t(i)]);

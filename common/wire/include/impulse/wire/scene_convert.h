@@ -15,7 +15,7 @@
 namespace impulse::wire {
 
 /// The version this build writes; a scene with a higher one is refused.
-inline constexpr std::uint32_t kSceneVersion = 2;  // 2: fields
+inline constexpr std::uint32_t kSceneVersion = 3;  // 2: fields; 3: shapes of their own
 
 void toWire(const WorldState& state, v1::Scene* out);
 /// The world's whole state, serialised.
