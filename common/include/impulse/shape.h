@@ -19,7 +19,13 @@ namespace impulse {
 /// The kinds of shape, in the order of Shape's alternatives. The collide
 /// table (shape_pair.cpp) is indexed by two of these and checked at compile
 /// time to hold an entry for every pair.
-enum class ShapeType : std::uint8_t { Circle = 0, Capsule = 1, Segment = 2, Polygon = 3, ChainSegment = 4 };
+enum class ShapeType : std::uint8_t {
+  Circle = 0,
+  Capsule = 1,
+  Segment = 2,
+  Polygon = 3,
+  ChainSegment = 4
+};
 inline constexpr int kShapeTypeCount = 5;
 
 /// Circle in the body's frame.
@@ -76,12 +82,16 @@ struct Shape {
   const Polygon& polygon() const { return std::get<Polygon>(geometry); }
   const ChainSegment& chainSegment() const { return std::get<ChainSegment>(geometry); }
 
-  static Shape makeCircle(Real radius, const Vec2& center = Vec2::Zero()) { return {Circle{center, radius}}; }
+  static Shape makeCircle(Real radius, const Vec2& center = Vec2::Zero()) {
+    return {Circle{center, radius}};
+  }
   static Shape makePolygon(const Polygon& polygon) { return {polygon}; }
   static Shape makeCapsule(const Vec2& center1, const Vec2& center2, Real radius) {
     return {Capsule{center1, center2, radius}};
   }
-  static Shape makeSegment(const Vec2& point1, const Vec2& point2) { return {Segment{point1, point2}}; }
+  static Shape makeSegment(const Vec2& point1, const Vec2& point2) {
+    return {Segment{point1, point2}};
+  }
 };
 
 /// Shape types with area (and so mass): circles, capsules and polygons.
@@ -94,7 +104,7 @@ constexpr bool isSolid(ShapeType type) {
 struct MassProperties {
   Real area = 0;
   Real mass = 0;
-  Real inertia = 0;  ///< about `center`
+  Real inertia = 0;            ///< about `center`
   Vec2 center = Vec2::Zero();  ///< centroid in the body's frame
 };
 
@@ -121,6 +131,12 @@ enum class ShapeError : std::uint8_t {
   SegmentTooShort,    ///< segment, or a capsule's centres, closer than the linear slop
   ChainTooFewPoints,  ///< a chain needs 4 points or more
   ChainTooManyPoints,
+  ChainCrossing,             ///< two segments of a chain cross or fold back
+  CapsuleRadiusOutOfRange,   ///< outside [minRadius, maxRadius]
+  RoundingRadiusOutOfRange,  ///< a polygon's rounding radius outside [0, maxRadius]
+  Clockwise,                 ///< a stored polygon's vertices run clockwise
+  BadNormals,                ///< a stored polygon's normals are not its edges' outward unit normals
+  TooManyConcavePoints,      ///< decomposePolygon takes at most kMaxConcavePoints
 };
 
 /// A readable sentence naming the problem, suitable to show to a user as is.
@@ -154,7 +170,10 @@ Polygon makeBox(Real halfWidth, Real halfHeight);
 Polygon makeRegularPolygon(int count, Real radius);
 
 /// Validates any shape: finite numbers, radii and areas in range, segments
-/// and capsules longer than the linear slop, polygons convex with normals.
+/// and capsules longer than the linear slop, polygons anticlockwise,
+/// strictly convex, with distinct points and their edges' outward unit
+/// normals (three nearly collinear points pass: unlike a user's drawing, a
+/// stored polygon such as a decomposition's piece may have them).
 ShapeError validateShape(const Shape& shape, const ShapeLimits& limits = {});
 
 /// A chain's points, in order, made into one-sided segments with ghost
@@ -171,11 +190,16 @@ inline constexpr int kMaxChainPoints = 1024;
 ChainBuild buildChain(std::span<const Vec2> points, bool loop);
 
 /// A simple (not self-intersecting) polygon, convex or not, split into
-/// convex pieces of at most kMaxPolygonVertices vertices, in the input frame.
+/// convex pieces of at most kMaxPolygonVertices vertices, in the input frame
+/// (each piece anticlockwise, its centroid field set). Ear clipping, then
+/// Hertel-Mehlhorn merging: at most four times the fewest pieces possible.
+/// Refused like buildPolygon (duplicate, collinear, crossing points); the
+/// area range applies to the whole polygon, not to each piece.
 struct ConvexDecomposition {
   ShapeError error = ShapeError::None;
   std::vector<Polygon> pieces;
 };
+inline constexpr int kMaxConcavePoints = 256;
 ConvexDecomposition decomposePolygon(std::span<const Vec2> points, const ShapeLimits& limits = {});
 
 /// Exact area, mass (= area x density), centroid and inertia about the
