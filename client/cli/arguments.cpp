@@ -105,12 +105,14 @@ bool Arguments::bodyFlags(std::size_t from, client::SpawnOptions& options) {
       }
     } else if (word == "static") {
       options.isStatic = true;
+    } else if (word == "kinematic") {
+      options.isKinematic = true;
     } else if (word == "nograv") {
       options.ignoreGravity = true;
     } else if (const auto material = wire::materialFromName(word)) {
       options.material = *material;
     } else {
-      note("unexpected " + quoted(word, " (material, static or nograv)"));
+      note("unexpected " + quoted(word, " (material, static, kinematic or nograv)"));
       return false;
     }
   }

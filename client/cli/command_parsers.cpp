@@ -69,28 +69,126 @@ std::optional<std::tuple<client::Point, double, client::SpawnOptions>> parseCirc
   return std::tuple{client::Point{*x, *y}, *r, options};
 }
 
-std::optional<std::tuple<std::vector<client::Point>, client::SpawnOptions>> parsePolygon(
-    Arguments& line) {
+// The X Y pairs from word `i` on, up to the first word that is not a
+// number; `i` ends past them. Nothing (noted) when a pair lacks its y or
+// there is none.
+std::optional<std::vector<client::Point>> readPoints(Arguments& line, std::size_t& i) {
   std::vector<client::Point> points;
-  std::size_t i = 1;
   while (i < line.size() && wire::parseNumber<double>(line.word(i))) {
     const auto x = line.numberAt(i), y = line.numberAt(i + 1);
     if (!y) {
-      line.refuse("vertex " + std::to_string(points.size() + 1) + " has no y");
+      line.refuse("point " + std::to_string(points.size() + 1) + " has no y");
       return std::nullopt;
     }
     points.push_back({*x, *y});
     i += 2;
   }
   if (points.empty()) {
-    line.refuse("no vertices");
+    line.refuse("no points");
     return std::nullopt;
   }
+  return points;
+}
+
+std::optional<std::tuple<std::vector<client::Point>, client::SpawnOptions>> parsePolygon(
+    Arguments& line) {
+  std::size_t i = 1;
+  auto points = readPoints(line, i);
+  if (!points) return std::nullopt;
   client::SpawnOptions options;
   if (!line.bodyFlags(i, options)) return std::nullopt;
   // Too few or too many vertices are for the server to judge, with the
   // same message every client gets.
-  return std::tuple{std::move(points), options};
+  return std::tuple{std::move(*points), options};
+}
+
+std::optional<std::tuple<client::Point, client::Point, double, client::SpawnOptions>> parseCapsule(
+    Arguments& line) {
+  const auto x1 = line.numberAt(1), y1 = line.numberAt(2), x2 = line.numberAt(3), y2 = line.numberAt(4);
+  const auto r = line.numberAt(5);
+  if (!x1 || !y1 || !x2 || !y2 || !r) return std::nullopt;
+  client::SpawnOptions options;
+  if (!line.bodyFlags(6, options)) return std::nullopt;
+  return std::tuple{client::Point{*x1, *y1}, client::Point{*x2, *y2}, *r, options};
+}
+
+std::optional<std::tuple<client::Point, client::Point, client::SpawnOptions>> parseSegment(Arguments& line) {
+  const auto x1 = line.numberAt(1), y1 = line.numberAt(2), x2 = line.numberAt(3), y2 = line.numberAt(4);
+  if (!x1 || !y1 || !x2 || !y2) return std::nullopt;
+  client::SpawnOptions options;
+  if (!line.bodyFlags(5, options)) return std::nullopt;
+  return std::tuple{client::Point{*x1, *y1}, client::Point{*x2, *y2}, options};
+}
+
+std::optional<std::tuple<std::vector<client::Point>, bool, client::SpawnOptions>> parseChain(Arguments& line) {
+  std::size_t i = 1;
+  auto points = readPoints(line, i);
+  if (!points) return std::nullopt;
+  const bool loop = i < line.size() && line.word(i) == "loop";
+  client::SpawnOptions options;
+  if (!line.bodyFlags(loop ? i + 1 : i, options)) return std::nullopt;
+  return std::tuple{std::move(*points), loop, options};
+}
+
+// One PART of `body`: circle CX CY R | box CX CY HW HH | capsule X1 Y1 X2 Y2 R,
+// from word `i` (which ends past it).
+std::optional<client::BodyPart> readBodyPart(Arguments& line, std::size_t& i) {
+  using Kind = client::BodyPart::Kind;
+  static const std::array<std::tuple<std::string_view, Kind, int>, 3> kinds{
+      {{"circle", Kind::Circle, 3}, {"box", Kind::Box, 4}, {"capsule", Kind::Capsule, 5}}};
+  for (const auto& [word, kind, count] : kinds) {
+    if (line.word(i) != word) continue;
+    std::array<double, 5> n{};
+    for (int k = 0; k < count; ++k) {
+      const auto value = line.numberAt(i + 1 + std::size_t(k));
+      if (!value) return std::nullopt;
+      n[std::size_t(k)] = *value;
+    }
+    i += std::size_t(count) + 1;
+    if (kind == Kind::Circle) return client::BodyPart{kind, {n[0], n[1]}, {}, n[2]};
+    if (kind == Kind::Box) return client::BodyPart{kind, {n[0], n[1]}, {n[2], n[3]}, 0};
+    return client::BodyPart{kind, {n[0], n[1]}, {n[2], n[3]}, n[4]};
+  }
+  return std::nullopt;
+}
+
+std::optional<std::tuple<client::Point, double, std::vector<client::BodyPart>, client::SpawnOptions>> parseBody(
+    Arguments& line) {
+  const auto x = line.numberAt(1), y = line.numberAt(2), angle = line.numberAt(3);
+  if (!x || !y || !angle) return std::nullopt;
+  std::vector<client::BodyPart> parts;
+  std::size_t i = 4;
+  while (i < line.size()) {
+    auto part = readBodyPart(line, i);
+    if (!part) break;
+    parts.push_back(*part);
+  }
+  if (parts.empty()) {
+    line.refuse("no parts (circle CX CY R, box CX CY HW HH or capsule X1 Y1 X2 Y2 R)");
+    return std::nullopt;
+  }
+  client::SpawnOptions options;
+  if (!line.bodyFlags(i, options)) return std::nullopt;
+  for (client::BodyPart& part : parts) part.material = options.material;
+  return std::tuple{client::Point{*x, *y}, *angle, std::move(parts), options};
+}
+
+std::optional<std::tuple<std::uint32_t, client::Point, double>> parseTarget(Arguments& line) {
+  const auto id = line.integerAt(1);
+  const auto x = line.numberAt(2), y = line.numberAt(3);
+  if (!id || !x || !y) return std::nullopt;
+  double angle = 0;
+  if (line.size() > 4) {
+    const auto given = line.numberAt(4);
+    if (!given) return std::nullopt;
+    angle = *given;
+  }
+  if (!line.maxWords(5)) return std::nullopt;
+  if (*id < 0 || *id > 0xffffffffLL) {
+    line.refuse("body id out of range");
+    return std::nullopt;
+  }
+  return std::tuple{std::uint32_t(*id), client::Point{*x, *y}, angle};
 }
 
 std::optional<std::tuple<client::Point>> parsePoint(Arguments& line) {

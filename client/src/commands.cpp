@@ -14,6 +14,7 @@ void setPoint(Point p, v1::Vec2* out) {
 void setOptions(const SpawnOptions& options, v1::BodyOptions* out) {
   out->set_material(wire::toWire(options.material));
   out->set_is_static(options.isStatic);
+  out->set_is_kinematic(options.isKinematic);
   out->set_ignore_gravity(options.ignoreGravity);
   setPoint({options.velocityX, options.velocityY}, out->mutable_velocity());
   out->set_angular_velocity(options.angularVelocity);
@@ -56,6 +57,82 @@ v1::ClientMessage spawnPolygon(std::span<const Point> vertices, const SpawnOptio
   auto* command = message.mutable_spawn_polygon();
   for (const Point& p : vertices) setPoint(p, command->add_vertices());
   setOptions(options, command->mutable_options());
+  return message;
+}
+
+v1::ClientMessage spawnCapsule(Point center1, Point center2, double radius, const SpawnOptions& options) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_spawn_capsule();
+  setPoint(center1, command->mutable_center1());
+  setPoint(center2, command->mutable_center2());
+  command->set_radius(radius);
+  setOptions(options, command->mutable_options());
+  return message;
+}
+
+v1::ClientMessage spawnSegment(Point point1, Point point2, const SpawnOptions& options) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_spawn_segment();
+  setPoint(point1, command->mutable_point1());
+  setPoint(point2, command->mutable_point2());
+  setOptions(options, command->mutable_options());
+  return message;
+}
+
+v1::ClientMessage spawnChain(std::span<const Point> points, bool loop, const SpawnOptions& options) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_spawn_chain();
+  for (const Point& p : points) setPoint(p, command->add_points());
+  command->set_loop(loop);
+  setOptions(options, command->mutable_options());
+  return message;
+}
+
+namespace {
+
+void setPart(const BodyPart& part, v1::ShapePart* out) {
+  out->set_material(wire::toWire(part.material));
+  v1::Shape* shape = out->mutable_shape();
+  switch (part.kind) {
+    case BodyPart::Kind::Circle:
+      shape->mutable_circle()->set_radius(part.radius);
+      setPoint(part.point1, shape->mutable_circle()->mutable_center());
+      return;
+    case BodyPart::Kind::Box: {
+      const Point c = part.point1, h = part.point2;
+      for (Point corner : {Point{c.x - h.x, c.y - h.y}, Point{c.x + h.x, c.y - h.y}, Point{c.x + h.x, c.y + h.y},
+                           Point{c.x - h.x, c.y + h.y}}) {
+        setPoint(corner, shape->mutable_polygon()->add_vertices());
+      }
+      return;
+    }
+    case BodyPart::Kind::Capsule:
+      setPoint(part.point1, shape->mutable_capsule()->mutable_center1());
+      setPoint(part.point2, shape->mutable_capsule()->mutable_center2());
+      shape->mutable_capsule()->set_radius(part.radius);
+      return;
+  }
+}
+
+}  // namespace
+
+v1::ClientMessage spawnBody(Point position, double angle, std::span<const BodyPart> parts,
+                            const SpawnOptions& options) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_spawn_body();
+  setPoint(position, command->mutable_position());
+  command->set_angle(angle);
+  for (const BodyPart& part : parts) setPart(part, command->add_parts());
+  setOptions(options, command->mutable_options());
+  return message;
+}
+
+v1::ClientMessage setTargetTransform(std::uint32_t body, Point position, double angle) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_set_target_transform();
+  command->set_body_id(body);
+  setPoint(position, command->mutable_position());
+  command->set_angle(angle);
   return message;
 }
 

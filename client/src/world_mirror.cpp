@@ -35,6 +35,12 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
     MirrorBody body;
     body.id = BodyId{descriptor.id()};
     body.shape = *shape.value;
+    for (const auto& extra : descriptor.extra_shapes()) {
+      auto decoded = wire::shapeFromWire(extra);
+      if (!decoded.ok()) return failed("body " + std::to_string(descriptor.id()) + ": " + decoded.error);
+      body.extraShapes.push_back(*decoded.value);
+    }
+    body.isKinematic = descriptor.is_kinematic();
     body.material = material.value_or(Material::Solid);
     body.isStatic = descriptor.is_static();
     body.ignoreGravity = descriptor.ignore_gravity();

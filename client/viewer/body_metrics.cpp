@@ -26,8 +26,8 @@ double kineticEnergy(std::span<const DrawnBody> bodies) {
 
 std::string describeShape(const Shape& shape) {
   using client::formatNumber;
-  if (shape.type == ShapeType::Circle) {
-    return "circle, radius " + formatNumber(shape.circle.radius, 3) + " m";
+  if (shape.type() == ShapeType::Circle) {
+    return "circle, radius " + formatNumber(shape.circle().radius, 3) + " m";
   }
   const Polygon& polygon = shape.polygon;
   Vec2 lower = polygon.vertices[0];

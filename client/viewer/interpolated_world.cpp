@@ -40,7 +40,7 @@ void InterpolatedWorld::reset(double snapshotInterval) {
 
 void InterpolatedWorld::seed(const client::WorldMirror& mirror, double now) {
   for (const auto& [id, body] : mirror.bodies()) {
-    looks_[id] = {body.shape, body.material, body.isStatic, body.ignoreGravity};
+    looks_[id] = {body.shape, body.extraShapes, body.material, body.isStatic, body.isKinematic, body.ignoreGravity};
   }
   record(mirror, mirror.simTime(), mirror.timeScale(), true, mirror.paused(), now);
 }

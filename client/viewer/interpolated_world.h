@@ -19,8 +19,11 @@ namespace impulse::viewer {
 /// How a body looks (what its descriptor said).
 struct BodyLook {
   Shape shape;
+  /// A compound body's further shapes.
+  std::vector<Shape> extraShapes;
   Material material = Material::Solid;
   bool isStatic = false;
+  bool isKinematic = false;
   bool ignoreGravity = false;
 };
 

@@ -87,50 +87,129 @@ void WorldRenderer::begin(ImDrawList& list, const ViewTransform& view) {
 
 void WorldRenderer::end(ImDrawList& list) { list.PopClipRect(); }
 
+namespace {
+
+// A rounded corner: the arc of `radius` around `corner` from the outward
+// normal `from` to `to` (anticlockwise), in about 8 steps per quarter turn.
+void appendArc(std::vector<Vec2>& outline, const Vec2& corner, Real radius, const Vec2& from, const Vec2& to) {
+  Real start = std::atan2(from.y(), from.x());
+  Real end = std::atan2(to.y(), to.x());
+  if (end < start) end += 2 * std::numbers::pi_v<Real>;
+  const int steps = std::max(1, int(std::ceil((end - start) / (std::numbers::pi_v<Real> / 16))));
+  for (int i = 0; i <= steps; ++i) outline.push_back(corner + radius * unit(start + (end - start) * Real(i) / Real(steps)));
+}
+
+// The outline (body-local, anticlockwise) of a convex core rounded by `radius`.
+void roundedOutline(std::span<const Vec2> core, std::span<const Vec2> normals, Real radius, std::vector<Vec2>& outline) {
+  outline.clear();
+  const std::size_t n = core.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (radius <= 0) {
+      outline.push_back(core[i]);
+    } else {
+      appendArc(outline, core[i], radius, normals[(i + n - 1) % n], normals[i]);
+    }
+  }
+}
+
+// The outline of a solid, non-circular shape (polygon or capsule).
+void solidOutline(const Shape& shape, std::vector<Vec2>& outline) {
+  if (shape.type() == ShapeType::Polygon) {
+    const Polygon& polygon = shape.polygon();
+    roundedOutline(std::span(polygon.vertices.data(), std::size_t(polygon.count)),
+                   std::span(polygon.normals.data(), std::size_t(polygon.count)), polygon.radius, outline);
+    return;
+  }
+  const Capsule& capsule = shape.capsule();
+  const Vec2 axis = (capsule.center2 - capsule.center1).normalized();
+  const Vec2 right(axis.y(), -axis.x());
+  const std::array<Vec2, 2> core{capsule.center1, capsule.center2};
+  const std::array<Vec2, 2> normals{right, -right};
+  roundedOutline(core, normals, capsule.radius, outline);
+}
+
+// The two ends of a boundary shape (segment or chain segment).
+std::array<Vec2, 2> boundaryEnds(const Shape& shape) {
+  const Segment& segment = shape.type() == ShapeType::Segment ? shape.segment() : shape.chainSegment().segment;
+  return {segment.point1, segment.point2};
+}
+
+// Where the rotation mark (a line from the centre of mass) ends, body-local:
+// a circle's rim along its local x axis, a polygon's first edge's middle,
+// else the rim along x.
+Vec2 rotationMark(const Shape& first, Real extent) {
+  if (first.type() == ShapeType::Circle) return first.circle().center + Vec2(first.circle().radius, 0);
+  if (first.type() == ShapeType::Polygon) return Real(0.5) * (first.polygon().vertices[0] + first.polygon().vertices[1]);
+  return Vec2(extent, 0);
+}
+
+}  // namespace
+
+void WorldRenderer::drawShape(ImDrawList& list, const ViewTransform& view, const Transform& xf, const Shape& shape,
+                              const ShapeColours& colours) {
+  switch (shape.type()) {
+    case ShapeType::Circle: {
+      const ImVec2 centre = pixel(view, xf.apply(shape.circle().center));
+      const float pixels = shape.circle().radius * view.scale();
+      const int segments = circleSegments(pixels);
+      if (colours.small) {
+        without(list, ImDrawListFlags_AntiAliasedFill, [&] {
+          list.AddCircleFilled(centre, pixels, colours.edge, segments);
+          list.AddCircleFilled(centre, pixels - std::min(colours.thickness, 1.5f), colours.fill, segments);
+        });
+      } else {
+        // Fills go without ImGui's anti-aliased fringe: the anti-aliased
+        // outline covers every edge, and the fringe would double the triangles.
+        without(list, ImDrawListFlags_AntiAliasedFill,
+                [&] { list.AddCircleFilled(centre, pixels, colours.fill, segments); });
+        list.AddCircle(centre, pixels, colours.edge, segments, colours.thickness);
+      }
+      return;
+    }
+    case ShapeType::Segment:
+    case ShapeType::ChainSegment: {
+      const auto ends = boundaryEnds(shape);
+      list.AddLine(pixel(view, xf.apply(ends[0])), pixel(view, xf.apply(ends[1])), colours.edge,
+                   std::max(colours.thickness, 2.0f));
+      return;
+    }
+    case ShapeType::Polygon:
+    case ShapeType::Capsule: break;
+  }
+  solidOutline(shape, outline_);
+  points_.clear();
+  for (const Vec2& vertex : outline_) points_.push_back(pixel(view, xf.apply(vertex)));
+  if (colours.small) {
+    insetConvex(points_, std::min(colours.thickness, 1.5f), inset_);
+    without(list, ImDrawListFlags_AntiAliasedFill, [&] {
+      list.AddConvexPolyFilled(points_.data(), int(points_.size()), colours.edge);
+      list.AddConvexPolyFilled(inset_.data(), int(inset_.size()), colours.fill);
+    });
+  } else {
+    without(list, ImDrawListFlags_AntiAliasedFill,
+            [&] { list.AddConvexPolyFilled(points_.data(), int(points_.size()), colours.fill); });
+    list.AddPolyline(points_.data(), int(points_.size()), colours.edge, ImDrawFlags_Closed, colours.thickness);
+  }
+}
+
 void WorldRenderer::drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
                              Colour outline, float thickness) {
   const BodyLook& look = *body.look;
-  const ImU32 fill = packed(bodyFill(look.material, look.isStatic));
-  const ImU32 edge = packed(outline);
   const Transform xf{body.state.position, Rot::fromAngle(body.state.angle)};
-  const ImVec2 centre = pixel(view, xf.p);
-  Vec2 mark;  // the rotation mark runs from the centre to here
-  const bool small = 2 * computeExtent(look.shape) * view.scale() < kSmallBody;
-  if (look.shape.type == ShapeType::Circle) {
-    const float pixels = look.shape.circle.radius * view.scale();
-    const int segments = circleSegments(pixels);
-    mark = xf.p + look.shape.circle.radius * unit(body.state.angle);
-    if (small) {
-      without(list, ImDrawListFlags_AntiAliasedFill, [&] {
-        list.AddCircleFilled(centre, pixels, edge, segments);
-        list.AddCircleFilled(centre, pixels - std::min(thickness, 1.5f), fill, segments);
-      });
-    } else {
-      // Fills go without ImGui's anti-aliased fringe: the anti-aliased
-      // outline covers every edge, and the fringe would double the triangles.
-      without(list, ImDrawListFlags_AntiAliasedFill,
-              [&] { list.AddCircleFilled(centre, pixels, fill, segments); });
-      list.AddCircle(centre, pixels, edge, segments, thickness);
-    }
-  } else {
-    const Polygon& polygon = look.shape.polygon;
-    points_.clear();
-    for (int i = 0; i < polygon.count; ++i) points_.push_back(pixel(view, xf.apply(polygon.vertices[i])));
-    mark = xf.apply(Real(0.5) * (polygon.vertices[0] + polygon.vertices[1]));
-    if (small) {
-      insetConvex(points_, std::min(thickness, 1.5f), inset_);
-      without(list, ImDrawListFlags_AntiAliasedFill, [&] {
-        list.AddConvexPolyFilled(points_.data(), int(points_.size()), edge);
-        list.AddConvexPolyFilled(inset_.data(), int(inset_.size()), fill);
-      });
-    } else {
-      without(list, ImDrawListFlags_AntiAliasedFill, [&] {
-        list.AddConvexPolyFilled(points_.data(), int(points_.size()), fill);
-      });
-      list.AddPolyline(points_.data(), int(points_.size()), edge, ImDrawFlags_Closed, thickness);
-    }
+  Real extent = computeExtent(look.shape);
+  for (const Shape& extra : look.extraShapes) extent = std::max(extent, computeExtent(extra));
+  const ShapeColours colours{packed(bodyFill(look.material, look.isStatic || look.isKinematic)), packed(outline),
+                             thickness, 2 * extent * view.scale() < kSmallBody};
+  drawShape(list, view, xf, look.shape, colours);
+  for (const Shape& extra : look.extraShapes) drawShape(list, view, xf, extra, colours);
+  if (look.isStatic) return;
+  const Vec2 mark = xf.apply(rotationMark(look.shape, extent));
+  list.AddLine(pixel(view, xf.p), pixel(view, mark), colours.edge, colours.small ? 1.0f : thickness);
+  // Kinematic bodies (platforms, doors) carry a second, crossing mark.
+  if (look.isKinematic) {
+    list.AddLine(pixel(view, xf.apply(Vec2(0, -extent))), pixel(view, xf.apply(Vec2(0, extent))), colours.edge,
+                 colours.small ? 1.0f : thickness);
   }
-  if (!look.isStatic) list.AddLine(centre, pixel(view, mark), edge, small ? 1.0f : thickness);
 }
 
 void WorldRenderer::drawBodies(ImDrawList& list, const ViewTransform& view,

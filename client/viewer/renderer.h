@@ -47,8 +47,17 @@ class WorldRenderer {
   void drawPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 
  private:
+  /// How one body's shapes are drawn.
+  struct ShapeColours {
+    ImU32 fill = 0;
+    ImU32 edge = 0;
+    float thickness = 1;
+    bool small = false;  ///< too small on screen for an outline of its own
+  };
   void drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
                 Colour outline, float thickness);
+  void drawShape(ImDrawList& list, const ViewTransform& view, const Transform& xf, const Shape& shape,
+                 const ShapeColours& colours);
   void drawFluid(ImDrawList& list, const ViewTransform& view, const FluidDef& fluid);
   void drawFan(ImDrawList& list, const ViewTransform& view, const FanDef& fan);
   void drawGravitationMarker(ImDrawList& list, const ViewTransform& view);
@@ -56,6 +65,7 @@ class WorldRenderer {
   void drawCirclePreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 
   std::vector<ImVec2> points_;
+  std::vector<Vec2> outline_;
   std::vector<Vec2> springPoints_;
   std::vector<ImVec2> inset_;
 };

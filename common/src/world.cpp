@@ -99,8 +99,15 @@ std::string checkShapeDefs(const WorldData& world, const BodyDef& def) {
   return {};
 }
 
-std::string checkBodyExtent(const Body& body) {
-  if (body.extent <= kMaxBodyExtent) return {};
+// What a body's shapes must add up to: a dynamic body needs mass, and no
+// shape may reach far from the centre.
+std::string checkBodyShapes(const Body& body) {
+  if (body.isDynamic() && !(body.mass.mass > 0)) {
+    return "a dynamic body needs a shape with area (circle, capsule or polygon): segments and chains have none";
+  }
+  // A moving body's shapes stay together; static scenery (terrain, a long
+  // floor) may reach as far as its shapes do.
+  if (body.isStatic || body.extent <= kMaxBodyExtent) return {};
   return "the body's shapes reach " + describeNumber(body.extent) +
          " m from its centre of mass: they must stay within " + describeNumber(kMaxBodyExtent) + " m of it";
 }
@@ -127,7 +134,7 @@ std::string reshapeBody(WorldData& world, std::int32_t slot) {
   forgetManifoldFrames(world, slot);
   moveBodyProxies(world, slot);
   wakeIsland(world, slot);
-  return checkBodyExtent(body);
+  return checkBodyShapes(body);
 }
 
 // A new static body may overlap sleeping bodies that would never look for it
@@ -226,7 +233,7 @@ CreateResult World::createBody(const BodyDef& def) {
   ++w.liveBodies;
   for (const ShapeDef& shape : shapeDefsOf(def)) attachShape(w, slot, shape);
   updateBodyMass(w, slot);
-  if (std::string error = checkBodyExtent(body); !error.empty()) {
+  if (std::string error = checkBodyShapes(body); !error.empty()) {
     discardNewBody(w, slot);
     return {{}, error};
   }
@@ -273,6 +280,13 @@ InputResult World::destroyShape(ShapeId id) {
   if (w.bodies[body].shapeCount == 1) {
     return {"shape " + std::to_string(id.value) + " is its body's only shape: remove the body instead"};
   }
+  if (w.bodies[body].isDynamic() && isSolid(shape->type())) {
+    int solidShapes = 0;
+    w.forEachShape(body, [&](std::int32_t s) { solidShapes += isSolid(w.shapes[s].type()) ? 1 : 0; });
+    if (solidShapes == 1) {
+      return {"shape " + std::to_string(id.value) + " is the only one with area on a dynamic body: it would have no mass"};
+    }
+  }
   destroyShapeContacts(w, id.slot());
   detachShape(w, id.slot());
   reshapeBody(w, body);
@@ -288,8 +302,41 @@ CreateResult World::createCircle(const Vec2& center, Real radius, const BodyOpti
 
 CreateResult World::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
   PolygonBuild build = buildPolygon(points, impl_->settings.shapeLimits);
+  // A simple outline that is not convex becomes a body of convex pieces.
+  if (build.error == ShapeError::NonConvex) return createConcavePolygon(points, options);
   if (build.error != ShapeError::None) return {{}, std::string(describe(build.error))};
   return createBody(makeBodyDef(Shape::makePolygon(build.polygon), build.centroid, options));
+}
+
+CreateResult World::createCapsule(const Vec2& center1, const Vec2& center2, Real radius,
+                                  const BodyOptions& options) {
+  const Vec2 middle = Real(0.5) * (center1 + center2);
+  return createBody(makeBodyDef(Shape::makeCapsule(center1 - middle, center2 - middle, radius), middle, options));
+}
+
+CreateResult World::createSegment(const Vec2& point1, const Vec2& point2, const BodyOptions& options) {
+  BodyDef def = makeBodyDef(Shape::makeSegment(Vec2::Zero(), point2 - point1), point1, options);
+  def.isStatic = !options.isKinematic;
+  return createBody(def);
+}
+
+CreateResult World::createChain(std::span<const Vec2> points, bool loop, const BodyOptions& options) {
+  ChainBuild chain = buildChain(points, loop);
+  if (chain.error != ShapeError::None) return {{}, std::string(describe(chain.error))};
+  if (chain.segments.size() > std::size_t(kMaxShapesPerBody)) {
+    return {{}, "a chain makes at most " + std::to_string(kMaxShapesPerBody) + " segments (" +
+                    std::to_string(chain.segments.size()) + " asked)"};
+  }
+  // The segments stay where the points put them: the body's origin is the
+  // first point, and a chain has no mass to centre.
+  const Vec2 origin = points.front();
+  auto segment = [&](std::size_t i) { return translated(Shape{chain.segments[i]}, -origin); };
+  BodyDef def = makeBodyDef(segment(0), origin, options);
+  def.isStatic = !options.isKinematic;
+  for (std::size_t i = 1; i < chain.segments.size(); ++i) {
+    def.extraShapes.push_back({segment(i), options.material, options.materialOverride});
+  }
+  return createBody(def);
 }
 
 CreateResult World::createConcavePolygon(std::span<const Vec2> points, const BodyOptions& options) {

@@ -336,7 +336,9 @@ class StateImport {
     if (center.norm() > kUnitTolerance * (1 + body.extent)) {
       return "the shapes' centroid must be the body's origin (shapes are local to the centre of mass)";
     }
-    if (body.extent > kMaxBodyExtent) return "shapes must lie within " + std::to_string(int(kMaxBodyExtent)) + " m";
+    if (!body.isStatic && body.extent > kMaxBodyExtent) {
+      return "a moving body's shapes must lie within " + std::to_string(int(kMaxBodyExtent)) + " m of its centre";
+    }
     return checkForces(w.settings.inputLimits, state_.bodies[std::size_t(slot)], body.mass);
   }
 

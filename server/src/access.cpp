@@ -21,10 +21,16 @@ bool sameSecret(std::string_view a, std::string_view b) {
   return difference == 0;
 }
 
-// The body a remove_body or apply_impulse acts on.
+// The body a remove_body, apply_impulse or set_target_transform acts on.
 std::uint32_t targetBody(const v1::ClientMessage& message) {
-  return message.has_remove_body() ? message.remove_body().body_id()
-                                   : message.apply_impulse().body_id();
+  if (message.has_remove_body()) return message.remove_body().body_id();
+  if (message.has_set_target_transform()) return message.set_target_transform().body_id();
+  return message.apply_impulse().body_id();
+}
+
+bool spawnsBody(const v1::ClientMessage& message) {
+  return message.has_spawn_circle() || message.has_spawn_polygon() || message.has_spawn_capsule() ||
+         message.has_spawn_segment() || message.has_spawn_chain() || message.has_spawn_body();
 }
 
 // The joint an update_joint or remove_joint acts on.
@@ -56,7 +62,7 @@ std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint
            ": refused for the player role (it changes everyone's world: the admin role, "
            "Hello.token = the admin token, is needed)";
   }
-  if (message.has_remove_body() || message.has_apply_impulse()) {
+  if (message.has_remove_body() || message.has_apply_impulse() || message.has_set_target_transform()) {
     return ownershipRefusal(command, targetBody(message), client);
   }
   if (message.has_create_joint()) {
@@ -93,7 +99,7 @@ std::string Ownership::jointRefusal(std::string_view command, std::uint32_t join
 void Ownership::recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
                               std::uint32_t client, const World& world) {
   if (!reply.has_command_result() || !reply.command_result().ok()) return;
-  if (message.has_spawn_circle() || message.has_spawn_polygon()) {
+  if (spawnsBody(message)) {
     ownerOf_[reply.command_result().body_id()] = client;
   } else if (message.has_remove_body()) {
     ownerOf_.erase(message.remove_body().body_id());

@@ -82,6 +82,127 @@ void spawnPolygon(CommandContext& context, const v1::SpawnPolygon& command) {
   created(context, context.simulation.createPolygon(points, *options.value), "spawn_polygon");
 }
 
+namespace {
+
+// The points of a repeated Vec2 field, each checked, or the first error.
+std::optional<std::vector<Vec2>> pointsOf(CommandContext& context,
+                                          const google::protobuf::RepeatedPtrField<v1::Vec2>& wirePoints,
+                                          const std::string& field, int maxCount) {
+  if (wirePoints.size() > maxCount) {
+    context.fail(field + ": " + std::to_string(wirePoints.size()) + " points given, at most " +
+                 std::to_string(maxCount));
+    return std::nullopt;
+  }
+  std::vector<Vec2> points;
+  points.reserve(std::size_t(wirePoints.size()));
+  for (int i = 0; i < wirePoints.size(); ++i) {
+    const auto point = wire::vecFromWire(wirePoints[i], field + "[" + std::to_string(i) + "]");
+    if (!point.ok()) {
+      context.fail(point.error);
+      return std::nullopt;
+    }
+    points.push_back(*point.value);
+  }
+  return points;
+}
+
+// A required vector field: its value, or the failure naming it.
+std::optional<Vec2> requiredPoint(CommandContext& context, bool present, const v1::Vec2& value,
+                                  const std::string& field) {
+  if (!present) {
+    context.fail(field + " is missing");
+    return std::nullopt;
+  }
+  const auto point = wire::vecFromWire(value, field);
+  if (!point.ok()) {
+    context.fail(point.error);
+    return std::nullopt;
+  }
+  return *point.value;
+}
+
+std::optional<BodyOptions> optionsOf(CommandContext& context, const v1::BodyOptions& options,
+                                     const std::string& command) {
+  auto decoded = wire::optionsFromWire(options);
+  if (!decoded.ok()) {
+    context.fail(command + "." + decoded.error);
+    return std::nullopt;
+  }
+  return *decoded.value;
+}
+
+}  // namespace
+
+void spawnCapsule(CommandContext& context, const v1::SpawnCapsule& command) {
+  const auto center1 = requiredPoint(context, command.has_center1(), command.center1(), "spawn_capsule.center1");
+  if (!center1) return;
+  const auto center2 = requiredPoint(context, command.has_center2(), command.center2(), "spawn_capsule.center2");
+  if (!center2) return;
+  const auto radius = wire::realFromWire(command.radius(), "spawn_capsule.radius");
+  if (!radius.ok()) return context.fail(radius.error);
+  const auto options = optionsOf(context, command.options(), "spawn_capsule");
+  if (!options) return;
+  created(context, context.simulation.createCapsule(*center1, *center2, *radius.value, *options), "spawn_capsule");
+}
+
+void spawnSegment(CommandContext& context, const v1::SpawnSegment& command) {
+  const auto point1 = requiredPoint(context, command.has_point1(), command.point1(), "spawn_segment.point1");
+  if (!point1) return;
+  const auto point2 = requiredPoint(context, command.has_point2(), command.point2(), "spawn_segment.point2");
+  if (!point2) return;
+  const auto options = optionsOf(context, command.options(), "spawn_segment");
+  if (!options) return;
+  created(context, context.simulation.createSegment(*point1, *point2, *options), "spawn_segment");
+}
+
+void spawnChain(CommandContext& context, const v1::SpawnChain& command) {
+  const auto points = pointsOf(context, command.points(), "spawn_chain.points", kMaxChainPoints);
+  if (!points) return;
+  const auto options = optionsOf(context, command.options(), "spawn_chain");
+  if (!options) return;
+  created(context, context.simulation.createChain(*points, command.loop(), *options), "spawn_chain");
+}
+
+void spawnBody(CommandContext& context, const v1::SpawnBody& command) {
+  if (command.parts_size() == 0 || command.parts_size() > kMaxShapesPerBody) {
+    return context.fail("spawn_body: " + std::to_string(command.parts_size()) + " parts given: a body has 1 to " +
+                        std::to_string(kMaxShapesPerBody));
+  }
+  const auto position = requiredPoint(context, command.has_position(), command.position(), "spawn_body.position");
+  if (!position) return;
+  const auto angle = wire::realFromWire(command.angle(), "spawn_body.angle");
+  if (!angle.ok()) return context.fail(angle.error);
+  const auto options = optionsOf(context, command.options(), "spawn_body");
+  if (!options) return;
+  std::vector<ShapeDef> parts;
+  for (int i = 0; i < command.parts_size(); ++i) {
+    const std::string name = "spawn_body.parts[" + std::to_string(i) + "]";
+    const auto shape = wire::shapeFromWire(command.parts(i).shape());
+    if (!shape.ok()) return context.fail(name + "." + shape.error);
+    const auto material = wire::materialFromWire(command.parts(i).material());
+    if (!material) return context.fail(name + ".material is not a material " + wire::materialRange());
+    parts.push_back({*shape.value, *material, options->materialOverride});
+  }
+  BodyDef def = makeBodyDef(parts.front().shape, *position, *options);
+  def.angle = *angle.value;
+  def.material = parts.front().material;
+  def.extraShapes.assign(parts.begin() + 1, parts.end());
+  created(context, context.simulation.createBody(def), "spawn_body");
+}
+
+void setTargetTransform(CommandContext& context, const v1::SetTargetTransform& command) {
+  const auto position =
+      requiredPoint(context, command.has_position(), command.position(), "set_target_transform.position");
+  if (!position) return;
+  const auto angle = wire::realFromWire(command.angle(), "set_target_transform.angle");
+  if (!angle.ok()) return context.fail(angle.error);
+  const BodyId id{command.body_id()};
+  if (InputResult moved = context.simulation.setTargetTransform(id, *position, *angle.value); !moved) {
+    return context.fail("set_target_transform: " + moved.error);
+  }
+  context.succeed();
+}
+
 void loadPreset(CommandContext& context, const v1::LoadPreset& command) {
   const auto material = wire::materialFromWire(command.material());
   if (!material) {

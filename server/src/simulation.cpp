@@ -50,6 +50,27 @@ CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyO
   return recordCreated(world_.createPolygon(points, options));
 }
 
+CreateResult Simulation::createCapsule(const Vec2& center1, const Vec2& center2, Real radius,
+                                       const BodyOptions& options) {
+  return recordCreated(world_.createCapsule(center1, center2, radius, options));
+}
+
+CreateResult Simulation::createSegment(const Vec2& point1, const Vec2& point2, const BodyOptions& options) {
+  return recordCreated(world_.createSegment(point1, point2, options));
+}
+
+CreateResult Simulation::createChain(std::span<const Vec2> points, bool loop, const BodyOptions& options) {
+  return recordCreated(world_.createChain(points, loop, options));
+}
+
+CreateResult Simulation::createBody(const BodyDef& def) { return recordCreated(world_.createBody(def)); }
+
+InputResult Simulation::setTargetTransform(BodyId id, const Vec2& position, Real angle) {
+  const InputResult moved = world_.setTargetTransform(id, position, angle, Real(1 / tickHz_));
+  if (moved) changedBody(id);
+  return moved;
+}
+
 CreateResult Simulation::recordCreated(CreateResult created) {
   if (created.ok()) {
     changes_.added(created.id);

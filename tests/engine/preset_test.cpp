@@ -43,7 +43,7 @@ LoadedPreset load(int id, Material selected = Material::Solid) {
 }
 
 double radiusOf(const World& world, BodyId id) {
-  return world.bodyDescription(id)->shape.circle.radius;
+  return world.bodyDescription(id)->shape.circle().radius;
 }
 
 // ---- Information ----

@@ -5,6 +5,7 @@
 
 #include <limits>
 
+#include "body_shapes.h"
 #include "step_guard.h"
 
 namespace impulse {
@@ -17,14 +18,12 @@ const Real kNaN = std::numeric_limits<Real>::quiet_NaN();
 std::int32_t addMovedCircle(WorldData& world, const Vec2& start) {
   const auto slot = static_cast<std::int32_t>(world.bodies.size());
   world.bodies.emplace_back();
-  world.shapes.push_back(Shape::makeCircle(Real(0.5)));
   Body& body = world.bodies.back();
   body.alive = true;
   body.awake = true;
   body.center0 = start;
   body.transform.p = start;
-  body.proxyKey = world.broadPhase.createProxy(bodyAABB(world, slot), slot,
-                                               BroadPhase::ProxyKind::Movable);
+  createShapeProxy(world, attachShape(world, slot, {Shape::makeCircle(Real(0.5))}));
   world.awakeBodies.push_back(slot);
   world.movedBodies.push_back(world.idOf(slot));
   return slot;
@@ -51,7 +50,8 @@ TEST(StepGuard, NonFiniteBody_IsPutBackWhereItsStepBegan_AtRest) {
   EXPECT_EQ(repaired.angularVelocity, 0);
   EXPECT_EQ(report.repairedBodies, 1u);
   // The broad phase holds the repaired box again.
-  EXPECT_TRUE(world.broadPhase.fatAABB(repaired.proxyKey).contains(bodyAABB(world, broken)));
+  const std::int32_t shape = repaired.shapeHead;
+  EXPECT_TRUE(world.broadPhase.fatAABB(world.shapes[shape].proxyKey).contains(shapeAABB(world, shape)));
   // Healthy bodies are left alone.
   EXPECT_EQ(world.bodies[healthy].linearVelocity, Vec2(3, 4));
   EXPECT_TRUE(report.escaped.empty());

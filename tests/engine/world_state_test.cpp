@@ -60,12 +60,20 @@ std::uint64_t stateFingerprint(const WorldState& s) {
     h.add(b.angularVelocity);
     h.add(b.sleepTime);
     h.add(b.awake);
-    h.add(b.proxyKey);
+    for (std::int32_t shape : b.shapes) h.add(shape);
     for (std::int32_t key : b.contactEdges) h.add(key);
     for (std::int32_t key : b.jointEdges) h.add(key);
   }
+  for (const ShapeSlotState& shape : s.shapes) {
+    h.add(shape.alive);
+    h.add(shape.generation);
+    h.add(shape.body);
+    h.add(shape.proxyKey);
+  }
   for (const ContactSlotState& c : s.contacts) {
     h.add(c.alive);
+    h.add(c.shapeA);
+    h.add(c.shapeB);
     h.add(c.bodyA);
     h.add(c.bodyB);
     h.add(c.touching);
@@ -303,7 +311,8 @@ TEST(WorldState, RefusesBodyOutOfRange_WorldUnchanged) {
 TEST(WorldState, RefusesBadPolygon_WorldUnchanged) {
   World source;
   WorldState state = pileState(source);
-  Polygon& polygon = state.bodies[std::size_t(firstDynamicSlot(state))].shape.polygon;
+  const std::int32_t shape = state.bodies[std::size_t(firstDynamicSlot(state))].shapes.front();
+  Polygon& polygon = std::get<Polygon>(state.shapes[std::size_t(shape)].shape.geometry);
   ASSERT_EQ(polygon.count, 4);
   polygon.vertices[2] = Vec2(Real(0.1), Real(0.1));  // a dent: not convex
   expectRefused(state, "polygon");

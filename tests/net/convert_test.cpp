@@ -150,11 +150,11 @@ TEST(Convert, PolygonShapeRoundTripKeepsVerticesAndNormals) {
   const auto back = shapeFromWire(message);
   ASSERT_TRUE(back.ok()) << back.error;
   ASSERT_EQ(back.value->type, ShapeType::Polygon);
-  ASSERT_EQ(back.value->polygon.count, 6);
+  ASSERT_EQ(back.value->polygon().count, 6);
   for (int i = 0; i < 6; ++i) {
-    EXPECT_EQ(back.value->polygon.vertices[i], box.polygon.vertices[i]);
-    EXPECT_NEAR(back.value->polygon.normals[i].x(), box.polygon.normals[i].x(), 1e-6);
-    EXPECT_NEAR(back.value->polygon.normals[i].y(), box.polygon.normals[i].y(), 1e-6);
+    EXPECT_EQ(back.value->polygon().vertices[i], box.polygon().vertices[i]);
+    EXPECT_NEAR(back.value->polygon().normals[i].x(), box.polygon().normals[i].x(), 1e-6);
+    EXPECT_NEAR(back.value->polygon().normals[i].y(), box.polygon().normals[i].y(), 1e-6);
   }
 }
 

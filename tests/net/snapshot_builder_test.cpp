@@ -37,7 +37,7 @@ void expectMirrorEqualsWorld(const client::WorldMirror& mirror, const World& wor
     EXPECT_EQ(body->state.linearVelocity, state.linearVelocity) << id.value;
     EXPECT_EQ(body->state.angularVelocity, state.angularVelocity) << id.value;
     EXPECT_EQ(body->state.awake, state.awake) << id.value;
-    EXPECT_EQ(body->shape.type, world.bodyDescription(id)->shape.type);
+    EXPECT_EQ(body->shape.type(), world.bodyDescription(id)->shape.type());
   }
 }
 

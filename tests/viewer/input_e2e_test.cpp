@@ -28,7 +28,7 @@ class InputEndToEnd : public ::testing::Test {
 
   const client::MirrorBody* find(ShapeType type, bool isStatic) {
     for (const auto& [id, body] : observer.mirror().bodies()) {
-      if (body.shape.type == type && body.isStatic == isStatic && id > sceneMaxId) return &body;
+      if (body.shape.type() == type && body.isStatic == isStatic && id > sceneMaxId) return &body;
     }
     return nullptr;
   }
@@ -72,10 +72,10 @@ TEST_F(InputEndToEnd, DrawsAPolygonAndACircle_TheServerGetsBoth) {
     return find(ShapeType::Polygon, false) != nullptr && find(ShapeType::Circle, true) != nullptr;
   }));
   const auto* polygon = find(ShapeType::Polygon, false);
-  EXPECT_EQ(polygon->shape.polygon.count, 4);
+  EXPECT_EQ(polygon->shape.polygon().count, 4);
   EXPECT_NEAR(polygon->state.position.x(), 9, 0.1);
   const auto* circle = find(ShapeType::Circle, true);
-  EXPECT_NEAR(circle->shape.circle.radius, 1.5, 0.05);
+  EXPECT_NEAR(circle->shape.circle().radius, 1.5, 0.05);
   EXPECT_NEAR(circle->state.position.x(), 15, 0.05);
   EXPECT_NEAR(circle->state.position.y(), 10, 0.05);
   EXPECT_EQ(circle->material, Material::Metal);

@@ -37,8 +37,8 @@ class SceneKeysEndToEnd : public ::testing::Test {
   std::vector<const client::MirrorBody*> polygons() {
     std::vector<const client::MirrorBody*> found;
     for (const auto& [id, body] : observer.mirror().bodies()) {
-      if (body.shape.type == ShapeType::Polygon && !body.isStatic &&
-          body.shape.polygon.count == 3) {
+      if (body.shape.type() == ShapeType::Polygon && !body.isStatic &&
+          body.shape.polygon().count == 3) {
         found.push_back(&body);
       }
     }

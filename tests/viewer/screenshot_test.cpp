@@ -17,7 +17,7 @@ using std::chrono::milliseconds;
 // The ramp preset's ball as the server has it.
 const client::MirrorBody* findBall(const client::Client& observer) {
   for (const auto& [id, body] : observer.mirror().bodies()) {
-    if (!body.isStatic && body.shape.type == ShapeType::Circle) return &body;
+    if (!body.isStatic && body.shape.type() == ShapeType::Circle) return &body;
   }
   return nullptr;
 }
@@ -57,7 +57,7 @@ TEST_P(PausedRampScreenshot, BallColourAppearsWhereItsBodyIs) {
   ASSERT_EQ(shot->h, height);
 
   const auto view = viewer.app().view();
-  const float r = ball->shape.circle.radius * view.scale();
+  const float r = ball->shape.circle().radius * view.scale();
   const auto centre = view.toPixels(ball->state.position);
   // Half way to the rim, across from the radius line (which has the outline colour).
   const float a = ball->state.angle;
@@ -111,8 +111,8 @@ TEST(RunningScreenshot, EveryDynamicBodyIsDrawnInItsColourWhereTheViewerShowsIt)
   int checked = 0;
   int matched = 0;
   for (const viewer::DrawnBody& body : drawn) {
-    if (body.look->isStatic || body.look->shape.type != ShapeType::Circle) continue;
-    const float r = body.look->shape.circle.radius * view.scale();
+    if (body.look->isStatic || body.look->shape.type() != ShapeType::Circle) continue;
+    const float r = body.look->shape.circle().radius * view.scale();
     if (r < 6) continue;
     const auto c = view.toPixels(body.state.position);
     const float a = body.state.angle;

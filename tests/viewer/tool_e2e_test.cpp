@@ -84,7 +84,7 @@ SDL_Rect rect(const viewer::PixelRect& r) { return {int(r.x), int(r.y), int(r.w)
 // Half way to the rim, across from the rotation mark.
 viewer::Colour fillPixel(SDL_Surface* shot, const viewer::ViewTransform& view,
                          const viewer::DrawnBody& body) {
-  const float r = body.look->shape.circle.radius * view.scale();
+  const float r = body.look->shape.circle().radius * view.scale();
   const auto c = view.toPixels(body.state.position);
   const float a = body.state.angle;
   return pixelAt(shot, int(std::lround(c.x + 0.5f * r * std::sin(a))),
@@ -174,7 +174,7 @@ TEST(Materials, SleepingBodiesKeepTheirFillAndGetTheSleepOutline) {
     EXPECT_LE(colourDistance(fillPixel(shot.get(), view, body),
                              viewer::bodyFill(body.look->material, false)),
               8);
-    const float r = body.look->shape.circle.radius * view.scale();
+    const float r = body.look->shape.circle().radius * view.scale();
     const auto c = view.toPixels(body.state.position);
     const SDL_Rect box{int(c.x - r - 2), int(c.y - r - 2), int(2 * r + 4), int(2 * r + 4)};
     EXPECT_GT(countNear(shot.get(), box, viewer::palette::kSleep, 40), int(3 * r)) << r;

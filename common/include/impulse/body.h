@@ -66,9 +66,9 @@ struct ShapeDef {
   MaterialOverride materialOverride;
 };
 
-/// Most shapes one body may carry, and how far (m) any point of a body's
-/// shapes may lie from its centre of mass.
-inline constexpr int kMaxShapesPerBody = 64;
+/// Most shapes one body may carry, and how far (m) any point of a moving
+/// (dynamic or kinematic) body's shapes may lie from its centre of mass.
+inline constexpr int kMaxShapesPerBody = 1024;
 inline constexpr Real kMaxBodyExtent = 50;
 
 /// Everything needed to create a body. Its shapes are given in a frame whose

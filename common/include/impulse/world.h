@@ -109,8 +109,20 @@ class World {
   CreateResult createBody(const BodyDef& def);
   /// A circle centred at `center` (world).
   CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options = {});
-  /// A polygon from world-space points in either winding.
+  /// A polygon from world-space points in either winding. A simple outline
+  /// that is not convex is split (createConcavePolygon).
   CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options = {});
+  /// A capsule between world points center1 and center2; its centre of mass
+  /// is their midpoint.
+  CreateResult createCapsule(const Vec2& center1, const Vec2& center2, Real radius, const BodyOptions& options = {});
+  /// A segment between world points: static, or kinematic if the options
+  /// say so (a segment has no area, so no mass to be dynamic with).
+  CreateResult createSegment(const Vec2& point1, const Vec2& point2, const BodyOptions& options = {});
+  /// A chain of one-sided segments through world-space points (terrain):
+  /// open, or a loop whose outside collides when anticlockwise. One body of
+  /// up to kMaxShapesPerBody segments; static unless the options say
+  /// kinematic. Refused as buildChain refuses.
+  CreateResult createChain(std::span<const Vec2> points, bool loop, const BodyOptions& options = {});
   /// A simple polygon (not self-intersecting), convex or not, from
   /// world-space points in either winding: one body of convex pieces.
   CreateResult createConcavePolygon(std::span<const Vec2> points, const BodyOptions& options = {});

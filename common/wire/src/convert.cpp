@@ -79,6 +79,7 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
   toWire(description.shape, out->mutable_shape());
   out->set_material(toWire(description.material));
   out->set_is_static(description.isStatic);
+  out->set_is_kinematic(description.isKinematic);
   out->set_ignore_gravity(description.ignoreGravity);
   out->set_density(description.density);
   out->set_restitution(description.restitution);
@@ -202,6 +203,7 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   }
   result.material = *material;
   result.isStatic = options.is_static();
+  result.isKinematic = options.is_kinematic();
   result.ignoreGravity = options.ignore_gravity();
   auto velocity = vecFromWire(options.velocity(), "options.velocity");
   if (!velocity.ok()) return Decoded<BodyOptions>::failure(std::move(velocity.error));

@@ -17,6 +17,7 @@ namespace impulse::client {
 struct SpawnOptions {
   Material material = Material::Solid;
   bool isStatic = false;
+  bool isKinematic = false;
   bool ignoreGravity = false;
   double velocityX = 0;
   double velocityY = 0;
@@ -37,6 +38,22 @@ struct Point {
 
 v1::ClientMessage spawnCircle(Point center, double radius, const SpawnOptions& options = {});
 v1::ClientMessage spawnPolygon(std::span<const Point> vertices, const SpawnOptions& options = {});
+v1::ClientMessage spawnCapsule(Point center1, Point center2, double radius, const SpawnOptions& options = {});
+v1::ClientMessage spawnSegment(Point point1, Point point2, const SpawnOptions& options = {});
+v1::ClientMessage spawnChain(std::span<const Point> points, bool loop, const SpawnOptions& options = {});
+
+/// One shape of a compound body: a circle, box or capsule in the body's
+/// frame, with its material.
+struct BodyPart {
+  enum class Kind { Circle, Box, Capsule } kind = Kind::Circle;
+  Point point1;        ///< circle or box centre, capsule's first centre
+  Point point2;        ///< box half extents, capsule's second centre
+  double radius = 0;   ///< circle and capsule
+  Material material = Material::Solid;
+};
+v1::ClientMessage spawnBody(Point position, double angle, std::span<const BodyPart> parts,
+                            const SpawnOptions& options = {});
+v1::ClientMessage setTargetTransform(std::uint32_t body, Point position, double angle);
 v1::ClientMessage loadPreset(int preset, Material material = Material::Solid);
 v1::ClientMessage setGravity(Point gravity);
 v1::ClientMessage nudgeGravity(Point delta);

@@ -22,9 +22,12 @@ namespace impulse::client {
 /// One body as the server described it, with its latest state.
 struct MirrorBody {
   BodyId id;
-  Shape shape;  ///< body-local, centroid at the origin
+  Shape shape;  ///< body-local (its origin the body's centre of mass)
+  /// A compound body's further shapes, body-local.
+  std::vector<Shape> extraShapes;
   Material material = Material::Solid;
   bool isStatic = false;
+  bool isKinematic = false;
   bool ignoreGravity = false;
   BodyState state;
 };

@@ -55,6 +55,13 @@ class Simulation {
   void step();
   CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options);
   CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options);
+  CreateResult createCapsule(const Vec2& center1, const Vec2& center2, Real radius, const BodyOptions& options);
+  CreateResult createSegment(const Vec2& point1, const Vec2& point2, const BodyOptions& options);
+  CreateResult createChain(std::span<const Vec2> points, bool loop, const BodyOptions& options);
+  /// A body of any shapes (World::createBody).
+  CreateResult createBody(const BodyDef& def);
+  /// The velocity that takes the body to the pose over the next world step.
+  InputResult setTargetTransform(BodyId id, const Vec2& position, Real angle);
   /// False for an unknown id.
   bool removeBody(BodyId id);
   InputResult applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point);

@@ -46,6 +46,27 @@
       "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv] [NAME=VALUE...]",       \
       "spawn a convex polygon (world coordinates, either winding, 3-16 vertices)",        \
       parsePolygon, client::spawnPolygon)                                                 \
+  ROW(SpawnCapsule, spawn_capsule, Anyone, spawnCapsule, "capsule",                       \
+      "capsule X1 Y1 X2 Y2 R [MATERIAL] [static|kinematic] [nograv] [NAME=VALUE...]",     \
+      "spawn a capsule: the points within R of the segment X1 Y1 - X2 Y2",                \
+      parseCapsule, client::spawnCapsule)                                                 \
+  ROW(SpawnSegment, spawn_segment, Anyone, spawnSegment, "segment",                       \
+      "segment X1 Y1 X2 Y2 [MATERIAL] [kinematic]",                                       \
+      "spawn a static (or kinematic) segment: a wall or a piece of terrain",              \
+      parseSegment, client::spawnSegment)                                                 \
+  ROW(SpawnChain, spawn_chain, Anyone, spawnChain, "chain",                               \
+      "chain X1 Y1 X2 Y2 X3 Y3 X4 Y4 ... [loop] [MATERIAL] [kinematic]",                  \
+      "spawn terrain: one-sided segments through 4 or more points (loop: closed)",        \
+      parseChain, client::spawnChain)                                                     \
+  ROW(SpawnBody, spawn_body, Anyone, spawnBody, "body",                                   \
+      "body X Y ANGLE PART... [MATERIAL] [static|kinematic] [nograv] [NAME=VALUE...]",    \
+      "spawn a compound body; PART: circle CX CY R | box CX CY HW HH | "                  \
+      "capsule X1 Y1 X2 Y2 R (body-local)",                                               \
+      parseBody, client::spawnBody)                                                       \
+  ROW(SetTargetTransform, set_target_transform, Anyone, setTargetTransform, "target",     \
+      "target ID X Y [ANGLE]",                                                            \
+      "move a body (a kinematic platform) to X Y, ANGLE over the next tick",              \
+      parseTarget, client::setTargetTransform)                                            \
   ROW(SetGravity, set_gravity, Admin, setGravity, "gravity", "gravity GX GY",             \
       "set gravity", parsePoint, client::setGravity)                                      \
   ROW(NudgeGravity, nudge_gravity, Admin, nudgeGravity, "nudge", "nudge DX DY",           \
