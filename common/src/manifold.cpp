@@ -5,48 +5,10 @@
 #include <limits>
 #include <span>
 
+#include "manifold_internal.h"
+
 namespace impulse {
-namespace {
-
-// Reference face hysteresis: B's face is used only when it separates clearly
-// more than A's, so that two nearly equal faces (a box resting flat on a box)
-// do not swap roles, and contact ids, from one step to the next.
-constexpr Real kFaceTolerance = Real(0.1) * kLinearSlop;
-
-// Below a micrometre, float round-off in scene coordinates of tens of metres
-// dominates a vector, so its direction is noise and normalising it could
-// divide by zero.
-constexpr Real kMinDirectionLength = Real(1e-6);
-
-// A contact point in A's local frame, before conversion to world.
-struct LocalPoint {
-  Vec2 point = Vec2::Zero();
-  Real separation = 0;
-  std::uint16_t id = 0;
-};
-
-// Face of a polygon that separates the other shape the most.
-struct FaceQuery {
-  int index = 0;
-  Real separation = -std::numeric_limits<Real>::max();
-};
-
-// Contacts of a reference face with an incident edge, in A's frame, with the
-// normal pointing out of the reference face and ids in (reference, incident)
-// order.
-struct EdgeContacts {
-  Vec2 normal = Vec2::Zero();
-  std::array<LocalPoint, 2> points{};
-  int count = 0;
-};
-
-int nextIndex(int i, int count) { return i + 1 < count ? i + 1 : 0; }
-
-// B's transform in A's frame. Working there keeps the numbers near the origin
-// even when both bodies are far from the world origin.
-Transform relativeTransform(const Transform& xfA, const Transform& xfB) {
-  return {xfA.q.applyInverse(xfB.p - xfA.p), relativeRotation(xfA.q, xfB.q)};
-}
+namespace narrow {
 
 Polygon transformPolygon(const Polygon& polygon, const Transform& xf) {
   Polygon result;
@@ -55,7 +17,21 @@ Polygon transformPolygon(const Polygon& polygon, const Transform& xf) {
     result.vertices[i] = xf.apply(polygon.vertices[i]);
     result.normals[i] = xf.q.apply(polygon.normals[i]);
   }
+  result.centroid = placeInA(xf, polygon.centroid);
+  result.radius = polygon.radius;
   return result;
+}
+
+Polygon makeTwoSidedPolygon(const Vec2& point1, const Vec2& point2, Real radius) {
+  Polygon polygon;
+  polygon.count = 2;
+  polygon.vertices[0] = point1;
+  polygon.vertices[1] = point2;
+  polygon.normals[0] = rightPerp(point2 - point1).normalized();
+  polygon.normals[1] = -polygon.normals[0];
+  polygon.centroid = Real(0.5) * (point1 + point2);
+  polygon.radius = radius;
+  return polygon;
 }
 
 Vec2 closestPointOnSegment(const Vec2& p, const Vec2& s1, const Vec2& s2) {
@@ -125,12 +101,19 @@ int findIncidentEdge(const Polygon& incident, const Vec2& referenceNormal) {
   return best;
 }
 
-// Contact between point `incidentPoint` and the reference face along normal,
-// placed midway between the two surfaces.
+// Contact between point `incidentPoint` of the incident core and the
+// reference face along normal, placed midway between the two surfaces (each
+// core's surface lies its radius out along the normal).
 LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const Vec2& normal,
-                       std::uint16_t id) {
+                       std::uint16_t id, Real referenceRadius, Real incidentRadius) {
   Real separation = normal.dot(incidentPoint - faceVertex);
-  return {incidentPoint - Real(0.5) * separation * normal, separation, id};
+  Vec2 point = incidentPoint - Real(0.5) * separation * normal;
+  // Sharp polygons skip the term, so their contacts keep the bits they had
+  // before shapes had radii.
+  if (referenceRadius != 0 || incidentRadius != 0) {
+    point += (Real(0.5) * (referenceRadius - incidentRadius)) * normal;
+  }
+  return {point, separation - referenceRadius - incidentRadius, id};
 }
 
 // The incident edge lies wholly beside the reference face, so the nearest
@@ -140,7 +123,8 @@ LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const 
 // speculative contact.
 EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
                            const Vec2& incident1, const Vec2& incident2,
-                           const Vec2& nearestIncidentVertex, std::uint16_t id) {
+                           const Vec2& nearestIncidentVertex, std::uint16_t id,
+                           Real referenceRadius, Real incidentRadius) {
   Vec2 closest = closestPointOnSegment(referenceVertex, incident1, incident2);
   Vec2 gap = closest - referenceVertex;
   EdgeContacts contacts;
@@ -148,12 +132,17 @@ EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
   if (faceNormal.dot(gap) > kMinDirectionLength) {
     Real distance = gap.norm();
     contacts.normal = gap / distance;
-    contacts.points[0] = {referenceVertex + Real(0.5) * gap, distance, id};
+    Vec2 point = referenceVertex + Real(0.5) * gap;
+    if (referenceRadius != 0 || incidentRadius != 0) {
+      point += (Real(0.5) * (referenceRadius - incidentRadius)) * contacts.normal;
+    }
+    contacts.points[0] = {point, distance - referenceRadius - incidentRadius, id};
   } else {
     // Corners touching within round-off: the gap is too short to give a
     // direction, so push along the face, as clipping would.
     contacts.normal = faceNormal;
-    contacts.points[0] = faceContact(nearestIncidentVertex, referenceVertex, faceNormal, id);
+    contacts.points[0] = faceContact(nearestIncidentVertex, referenceVertex, faceNormal, id,
+                                     referenceRadius, incidentRadius);
   }
   return contacts;
 }
@@ -172,16 +161,18 @@ EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const
   const Vec2& w1 = incident.vertices[i21];
   const Vec2& w2 = incident.vertices[i22];
   const Vec2& normal = reference.normals[i11];
+  const Real r1 = reference.radius;
+  const Real r2 = incident.radius;
 
   Vec2 tangent = leftPerp(normal);
   Real faceLength = tangent.dot(v12 - v11);
   Real lower = tangent.dot(w2 - v11);
   Real upper = tangent.dot(w1 - v11);
   if (upper < 0) {
-    return cornerContact(normal, v11, w1, w2, w1, makeFeatureId(i11, i21));
+    return cornerContact(normal, v11, w1, w2, w1, makeFeatureId(i11, i21), r1, r2);
   }
   if (lower > faceLength) {
-    return cornerContact(normal, v12, w1, w2, w2, makeFeatureId(i12, i22));
+    return cornerContact(normal, v12, w1, w2, w2, makeFeatureId(i12, i22), r1, r2);
   }
 
   // Each interpolation happens only when the incident edge crosses that side
@@ -193,15 +184,13 @@ EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const
   EdgeContacts contacts;
   contacts.normal = normal;
   contacts.count = 2;
-  contacts.points[0] = faceContact(pointLower, v11, normal, makeFeatureId(i11, i22));
-  contacts.points[1] = faceContact(pointUpper, v11, normal, makeFeatureId(i12, i21));
+  contacts.points[0] = faceContact(pointLower, v11, normal, makeFeatureId(i11, i22), r1, r2);
+  contacts.points[1] = faceContact(pointUpper, v11, normal, makeFeatureId(i12, i21), r1, r2);
   return contacts;
 }
 
 std::uint16_t swapFeatures(std::uint16_t id) { return makeFeatureId(id & 0xFF, id >> 8); }
 
-// Converts contacts computed in A's frame to world, keeping only those within
-// the speculative distance.
 Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, const Transform& xfA,
                  const Transform& xfB) {
   Manifold manifold;
@@ -222,144 +211,25 @@ Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, co
   return manifold;
 }
 
-// Single-point contact between a point of A's surface and the centre of a
-// circle B along a unit normal (A's frame). Circle contacts keep id 0 whichever
-// feature of A they touch, so a circle rolling over a polygon's vertex keeps
-// its warm-start impulse.
-Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
-                       Real separation, const Transform& xfA, const Transform& xfB) {
-  Vec2 surfaceB = centerB - radiusB * normal;
-  LocalPoint point{Real(0.5) * (surfaceA + surfaceB), separation, makeFeatureId(0, 0)};
-  return toWorld(normal, std::span(&point, 1), xfA, xfB);
-}
-
-// Circle B whose centre lies in the Voronoi region of a vertex of A.
-Manifold circleVertexContact(const Vec2& vertex, const Vec2& centerB, Real radiusB,
-                             const Transform& xfA, const Transform& xfB) {
-  Vec2 offset = centerB - vertex;
-  Real distance = offset.norm();
-  return circleContact(vertex, centerB, radiusB, offset / distance, distance - radiusB, xfA, xfB);
-}
-
-Real polygonCircleSeparation(const Polygon& a, const Transform& xfA, const Circle& b,
-                             const Transform& xfB) {
-  Vec2 center = relativeTransform(xfA, xfB).p;
-  Real faceSeparation = findMaxSeparation(a, center).separation;
-  // Inside (or on) the polygon, the nearest face gives the depth; outside,
-  // the nearest edge or vertex gives the exact gap.
-  Real centerDistance = faceSeparation <= 0 ? faceSeparation : distanceToBoundary(a, center);
-  return centerDistance - b.radius;
-}
-
-Real polygonsSeparation(const Polygon& a, const Transform& xfA, const Polygon& b,
-                        const Transform& xfB) {
-  Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
-  Real satSeparation =
-      std::max(findMaxSeparation(a, localB).separation, findMaxSeparation(localB, a).separation);
-  if (satSeparation <= 0) {
-    return satSeparation;
-  }
-  // Separated convex polygons have a closest pair made of a vertex of one and
-  // an edge of the other.
-  Real distance = std::numeric_limits<Real>::max();
-  for (int i = 0; i < a.count; ++i) {
-    distance = std::min(distance, distanceToBoundary(localB, a.vertices[i]));
-  }
-  for (int i = 0; i < localB.count; ++i) {
-    distance = std::min(distance, distanceToBoundary(a, localB.vertices[i]));
-  }
-  return distance;
-}
-
-Manifold collideCircleShapes(const Shape& a, const Transform& xfA, const Shape& b,
-                             const Transform& xfB) {
-  return collideCircles(a.circle, xfA, b.circle, xfB);
-}
-
-Manifold collidePolygonAndCircleShapes(const Shape& a, const Transform& xfA, const Shape& b,
-                                       const Transform& xfB) {
-  return collidePolygonAndCircle(a.polygon, xfA, b.circle, xfB);
-}
-
-Manifold collidePolygonShapes(const Shape& a, const Transform& xfA, const Shape& b,
-                              const Transform& xfB) {
-  return collidePolygons(a.polygon, xfA, b.polygon, xfB);
-}
-
-// Indexed [type of A][type of B]. (Circle, Polygon) stays empty: the caller
-// swaps the pair so that each function handles one order only.
-constexpr std::array<std::array<CollideFunction, kShapeTypeCount>, kShapeTypeCount>
-    kCollideFunctions = {{
-        {collideCircleShapes, nullptr},
-        {collidePolygonAndCircleShapes, collidePolygonShapes},
-    }};
-
-}  // namespace
-
-// In A's frame: the normal is the unit vector from A's centre to B's, the
-// separation is the centre distance minus both radii, and the point lies
-// midway between the two surface points along the normal.
-Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
-                        const Transform& xfB) {
-  Vec2 centerB = relativeTransform(xfA, xfB).p;
-  Real distance = centerB.norm();
-  // Concentric circles have no preferred direction; any unit normal gives a
-  // valid push apart, and A's local up is as good as any.
-  Vec2 normal = distance > kMinDirectionLength ? Vec2(centerB / distance) : Vec2(0, 1);
-  return circleContact(a.radius * normal, centerB, b.radius, normal, distance - a.radius - b.radius,
-                       xfA, xfB);
-}
-
-// In A's frame, with c the circle centre and r its radius:
-//   face i = argmax n_i . (c - v_i)           (max separation s)
-//   if s > r + speculative distance: no contact
-//   if c lies outside the polygon (s > 0) beyond either end of face i:
-//     vertex region: normal = (c - v) / |c - v|, separation = |c - v| - r
-//   else (face region, also when c is inside):
-//     normal = n_i, separation = s - r
-Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
-                                 const Transform& xfB) {
-  Vec2 center = relativeTransform(xfA, xfB).p;
-  FaceQuery face = findMaxSeparation(a, center);
-  if (face.separation - b.radius >= kSpeculativeDistance) {
-    return {};
-  }
-
-  const Vec2& v1 = a.vertices[face.index];
-  const Vec2& v2 = a.vertices[nextIndex(face.index, a.count)];
-  // Only a centre clearly outside gives a well defined vertex direction;
-  // |c - v| >= s then guarantees a length to normalise.
-  if (face.separation > kMinDirectionLength) {
-    if ((center - v1).dot(v2 - v1) < 0) {
-      return circleVertexContact(v1, center, b.radius, xfA, xfB);
-    }
-    if ((center - v2).dot(v1 - v2) < 0) {
-      return circleVertexContact(v2, center, b.radius, xfA, xfB);
-    }
-  }
-
-  const Vec2& normal = a.normals[face.index];
-  Vec2 onFace = center - face.separation * normal;
-  return circleContact(onFace, center, b.radius, normal, face.separation - b.radius, xfA, xfB);
-}
-
-// In A's frame (B transformed into it):
-//   sA, faceA = max separation over A's edge normals (SAT); sB, faceB likewise
-//   if max(sA, sB) > speculative distance: no contact
+// In A's frame (B transformed into it), each polygon the points within its
+// radius of its core:
+//   sA, faceA = max separation of the cores over A's edge normals (SAT);
+//   sB, faceB likewise
+//   if max(sA, sB) - radii > speculative distance: no contact
 //   reference face = faceA unless sB > sA + tolerance (then faceB, flipped)
 //   incident edge = edge of the other polygon most anti-parallel to it
 //   if the incident edge lies wholly beside the reference face:
 //     one point between the face's end vertex and the incident edge
 //   else clip the incident edge to the face's side planes: two points, each
-//     with separation measured along the reference normal
+//     with separation measured along the reference normal, minus the radii
 //   keep the points within the speculative distance
 //   flipped: negate the normal so it points from A to B, swap id features
-Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
-                         const Transform& xfB) {
-  Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
+Manifold collideLocalPolygons(const Polygon& a, const Polygon& localB, const Transform& xfA,
+                              const Transform& xfB) {
   FaceQuery faceA = findMaxSeparation(a, localB);
   FaceQuery faceB = findMaxSeparation(localB, a);
-  if (std::max(faceA.separation, faceB.separation) >= kSpeculativeDistance) {
+  if (std::max(faceA.separation, faceB.separation) - (a.radius + localB.radius) >=
+      kSpeculativeDistance) {
     return {};
   }
 
@@ -378,26 +248,102 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
   return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB);
 }
 
-CollideFunction collideFunction(ShapeType a, ShapeType b) {
-  auto indexA = static_cast<std::size_t>(a);
-  auto indexB = static_cast<std::size_t>(b);
-  // Types may come from decoded network data: an unknown value has no function.
-  if (indexA >= kCollideFunctions.size() || indexB >= kCollideFunctions[indexA].size()) {
-    return nullptr;
-  }
-  return kCollideFunctions[indexA][indexB];
+}  // namespace narrow
+
+namespace {
+
+using namespace narrow;
+
+// Single-point contact between a point of A's surface and the centre of a
+// circle B along a unit normal (A's frame). Circle contacts keep id 0 whichever
+// feature of A they touch, so a circle rolling over a polygon's vertex keeps
+// its warm-start impulse.
+Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
+                       Real separation, const Transform& xfA, const Transform& xfB) {
+  Vec2 surfaceB = centerB - radiusB * normal;
+  LocalPoint point{Real(0.5) * (surfaceA + surfaceB), separation, makeFeatureId(0, 0)};
+  return toWorld(normal, std::span(&point, 1), xfA, xfB);
 }
 
-Real computeSeparation(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB) {
-  if (a.type == ShapeType::Circle && b.type == ShapeType::Circle) {
-    return (xfB.p - xfA.p).norm() - a.circle.radius - b.circle.radius;
+// Circle B whose centre lies in the Voronoi region of a vertex of A (a core
+// vertex, `radiusA` out from A's surface).
+Manifold circleVertexContact(const Vec2& vertex, Real radiusA, const Vec2& centerB, Real radiusB,
+                             const Transform& xfA, const Transform& xfB) {
+  Vec2 offset = centerB - vertex;
+  Real distance = offset.norm();
+  Vec2 normal = offset / distance;
+  Vec2 surfaceA = radiusA != 0 ? Vec2(vertex + radiusA * normal) : vertex;
+  return circleContact(surfaceA, centerB, radiusB, normal, distance - radiusA - radiusB, xfA, xfB);
+}
+
+}  // namespace
+
+// In A's frame: the normal is the unit vector from A's centre to B's, the
+// separation is the centre distance minus both radii, and the point lies
+// midway between the two surface points along the normal.
+Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
+                        const Transform& xfB) {
+  Vec2 centerB = placeInA(relativeTransform(xfA, xfB), b.center);
+  Vec2 offset = a.center.isZero() ? centerB : Vec2(centerB - a.center);
+  Real distance = offset.norm();
+  // Concentric circles have no preferred direction; any unit normal gives a
+  // valid push apart, and A's local up is as good as any.
+  Vec2 normal = distance > kMinDirectionLength ? Vec2(offset / distance) : Vec2(0, 1);
+  Vec2 surfaceA = a.center.isZero() ? Vec2(a.radius * normal) : Vec2(a.center + a.radius * normal);
+  return circleContact(surfaceA, centerB, b.radius, normal, distance - a.radius - b.radius, xfA,
+                       xfB);
+}
+
+// In A's frame, with c the circle centre, r its radius and R A's rounding:
+//   face i = argmax n_i . (c - v_i)           (max separation s)
+//   if s > r + R + speculative distance: no contact
+//   if c lies outside the core (s > 0) beyond either end of face i:
+//     vertex region: normal = (c - v) / |c - v|, separation = |c - v| - r - R
+//   else (face region, also when c is inside):
+//     normal = n_i, separation = s - r - R
+Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB) {
+  Vec2 center = placeInA(relativeTransform(xfA, xfB), b.center);
+  FaceQuery face = findMaxSeparation(a, center);
+  if (face.separation - b.radius - a.radius >= kSpeculativeDistance) {
+    return {};
   }
-  if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon) {
-    return polygonsSeparation(a.polygon, xfA, b.polygon, xfB);
+
+  const Vec2& v1 = a.vertices[face.index];
+  const Vec2& v2 = a.vertices[nextIndex(face.index, a.count)];
+  // Only a centre clearly outside gives a well defined vertex direction;
+  // |c - v| >= s then guarantees a length to normalise.
+  if (face.separation > kMinDirectionLength) {
+    if ((center - v1).dot(v2 - v1) < 0) {
+      return circleVertexContact(v1, a.radius, center, b.radius, xfA, xfB);
+    }
+    if ((center - v2).dot(v1 - v2) < 0) {
+      return circleVertexContact(v2, a.radius, center, b.radius, xfA, xfB);
+    }
   }
-  // The distance is symmetric, so a circle A is handled as the polygon's partner.
-  return a.type == ShapeType::Polygon ? polygonCircleSeparation(a.polygon, xfA, b.circle, xfB)
-                                      : polygonCircleSeparation(b.polygon, xfB, a.circle, xfA);
+
+  const Vec2& normal = a.normals[face.index];
+  Vec2 onFace = center - face.separation * normal;
+  if (a.radius != 0) onFace += a.radius * normal;
+  return circleContact(onFace, center, b.radius, normal, face.separation - b.radius - a.radius, xfA,
+                       xfB);
+}
+
+Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
+                         const Transform& xfB) {
+  return collideLocalPolygons(a, transformPolygon(b, relativeTransform(xfA, xfB)), xfA, xfB);
+}
+
+// A capsule is a rounded two-vertex polygon.
+Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b,
+                                  const Transform& xfB) {
+  return collidePolygons(a, xfA, makeTwoSidedPolygon(b.center1, b.center2, b.radius), xfB);
+}
+
+// A segment is a two-vertex polygon of radius 0.
+Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b,
+                                  const Transform& xfB) {
+  return collidePolygons(makeTwoSidedPolygon(a.point1, a.point2, 0), xfA, b, xfB);
 }
 
 }  // namespace impulse
