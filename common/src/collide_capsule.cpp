@@ -11,42 +11,6 @@ namespace {
 
 using namespace narrow;
 
-// Closest points of segments p1-q1 and p2-q2 as fractions along each
-// (Ericson, Real-Time Collision Detection 5.1.9): the unclamped minimum on
-// the first, the second's point nearest to it clamped, and the first redone
-// when the second was clamped.
-struct ClosestPoints {
-  Real fraction1 = 0;
-  Real fraction2 = 0;
-  Vec2 point1 = Vec2::Zero();
-  Vec2 point2 = Vec2::Zero();
-};
-
-ClosestPoints closestPoints(const Vec2& p1, const Vec2& q1, const Vec2& p2, const Vec2& q2) {
-  Vec2 d1 = q1 - p1;
-  Vec2 d2 = q2 - p2;
-  Vec2 r = p1 - p2;
-  Real dd1 = d1.squaredNorm();
-  Real dd2 = d2.squaredNorm();
-  Real rd1 = d1.dot(r);
-  Real rd2 = d2.dot(r);
-  Real d12 = d1.dot(d2);
-  // Validated capsules are at least a linear slop long; a zero length here
-  // still gives a point, never a division by zero.
-  Real denominator = dd1 * dd2 - d12 * d12;
-  Real f1 = denominator > 0 ? std::clamp((d12 * rd2 - rd1 * dd2) / denominator, Real(0), Real(1))
-                            : Real(0);
-  Real f2 = dd2 > 0 ? (d12 * f1 + rd2) / dd2 : Real(0);
-  if (f2 < 0) {
-    f2 = 0;
-    f1 = dd1 > 0 ? std::clamp(-rd1 / dd1, Real(0), Real(1)) : Real(0);
-  } else if (f2 > 1) {
-    f2 = 1;
-    f1 = dd1 > 0 ? std::clamp((d12 - rd1) / dd1, Real(0), Real(1)) : Real(0);
-  }
-  return {f1, f2, p1 + f1 * d1, p2 + f2 * d2};
-}
-
 // The part of segment x-y whose projection on `axis` (from `origin`) lies in
 // [0, length]; the caller knows the two overlap.
 struct Clipped {
@@ -108,7 +72,7 @@ LocalPoint midwayPoint(const Vec2& c, const Vec2& n, Real s, Real referenceRadiu
 //   else one point midway between c1 and c2, normal along c2 - c1
 Manifold collideCores(const Vec2& p1, const Vec2& q1, Real rA, const Vec2& p2, const Vec2& q2,
                       Real rB, const Transform& xfA, const Transform& xfB) {
-  ClosestPoints closest = closestPoints(p1, q1, p2, q2);
+  SegmentClosestPoints closest = closestPoints(p1, q1, p2, q2);
   Vec2 gap = closest.point2 - closest.point1;
   Real distance = gap.norm();
   if (distance - rA - rB >= kSpeculativeDistance) {

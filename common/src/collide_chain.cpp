@@ -55,10 +55,14 @@ enum class NormalKind {
   Snap,   // towards a flat or concave join: only the face normal belongs here
 };
 
+bool nearFaceNormal(const Joins& joins, const Vec2& normal) {
+  return normal.dot(joins.normal) > 0 && std::abs(cross(joins.normal, normal)) < kNormalSine;
+}
+
 // Where a contact normal (from the segment to the other shape) falls on the
 // Gauss map of the segment and its joins.
 NormalKind classify(const Joins& joins, const Vec2& normal) {
-  if (normal.dot(joins.normal) > 0 && std::abs(cross(joins.normal, normal)) < kNormalSine) {
+  if (nearFaceNormal(joins, normal)) {
     return NormalKind::Admit;
   }
   if (normal.dot(joins.tangent) <= 0) {
@@ -87,6 +91,24 @@ bool neighbourIsIncident(const Joins& joins, const Vec2& faceNormal, const Vec2&
   const Vec2& neighbour = point1Deeper ? (joins.convex1 ? joins.normal0 : joins.normal)
                                        : (joins.convex2 ? joins.normal2 : joins.normal);
   return neighbour.dot(faceNormal) < joins.normal.dot(faceNormal);
+}
+
+// When the polygon's incident edge lies wholly past an end of the segment,
+// the contact is a vertex's, and it is this segment's only if the edge lies
+// in front of the segment: past the end and below the segment's line, the
+// polygon rests on the neighbour (clipping would measure it along this
+// face's normal, deep and wrong).
+bool reachesFromTheFront(const Joins& joins, const Polygon& polygon, int incidentEdge) {
+  const Vec2& w1 = polygon.vertices[incidentEdge];
+  const Vec2& w2 = polygon.vertices[nextIndex(incidentEdge, polygon.count)];
+  // The incident edge runs against the tangent: w2 is its lower end.
+  Real length = joins.tangent.dot(joins.point2 - joins.point1);
+  bool beforePoint1 = joins.tangent.dot(w1 - joins.point1) < 0;
+  bool pastPoint2 = joins.tangent.dot(w2 - joins.point1) > length;
+  if (!beforePoint1 && !pastPoint2) return true;
+  const Vec2& vertex = beforePoint1 ? joins.point1 : joins.point2;
+  Vec2 gap = closestPointOnSegment(vertex, w1, w2) - vertex;
+  return joins.normal.dot(gap) > kMinDirectionLength;
 }
 
 }  // namespace
@@ -137,8 +159,10 @@ Manifold collideChainSegmentAndCircle(const ChainSegment& a, const Transform& xf
 //   whose reversed normal this segment admits
 //   polygon face clearly best: clip the segment to it, unless a neighbour
 //   faces it more directly at the deeper end
-//   else the segment's face: clip the polygon's incident edge to it
-//   a single corner point whose normal the segment does not admit: none
+//   else the segment's face: clip the polygon's incident edge to it, unless
+//   that edge lies wholly past an end and not in front of the segment
+//   a single corner point whose normal the segment does not admit: none;
+//   within a sine of 0.01 of the face normal: the face normal
 Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform& xfA,
                                        const Polygon& b, const Transform& xfB) {
   Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
@@ -189,10 +213,20 @@ Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform& x
     if (neighbourSeparation > faceSeparation) {
       return {};
     }
-    contacts = clipIncidentEdge(segment, 0, localB, findIncidentEdge(localB, joins.normal));
+    int incidentEdge = findIncidentEdge(localB, joins.normal);
+    if (!reachesFromTheFront(joins, localB, incidentEdge)) {
+      return {};
+    }
+    contacts = clipIncidentEdge(segment, 0, localB, incidentEdge);
   }
-  if (contacts.count == 1 && classify(joins, contacts.normal) != NormalKind::Admit) {
-    return {};
+  if (contacts.count == 1) {
+    if (classify(joins, contacts.normal) != NormalKind::Admit) {
+      return {};
+    }
+    // A vertex's normal this close to the face's is the face's: otherwise a
+    // body resting across a flat join would be tilted by where round-off
+    // puts the vertex.
+    if (nearFaceNormal(joins, contacts.normal)) contacts.normal = joins.normal;
   }
   return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB);
 }

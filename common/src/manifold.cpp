@@ -44,6 +44,34 @@ Vec2 closestPointOnSegment(const Vec2& p, const Vec2& s1, const Vec2& s2) {
   return s1 + fraction * edge;
 }
 
+// Ericson, Real-Time Collision Detection 5.1.9: the unclamped minimum on
+// the first, the second's point nearest to it clamped, and the first redone
+// when the second was clamped.
+SegmentClosestPoints closestPoints(const Vec2& p1, const Vec2& q1, const Vec2& p2, const Vec2& q2) {
+  Vec2 d1 = q1 - p1;
+  Vec2 d2 = q2 - p2;
+  Vec2 r = p1 - p2;
+  Real dd1 = d1.squaredNorm();
+  Real dd2 = d2.squaredNorm();
+  Real rd1 = d1.dot(r);
+  Real rd2 = d2.dot(r);
+  Real d12 = d1.dot(d2);
+  // Validated capsules are at least a linear slop long; a zero length here
+  // still gives a point, never a division by zero.
+  Real denominator = dd1 * dd2 - d12 * d12;
+  Real f1 = denominator > 0 ? std::clamp((d12 * rd2 - rd1 * dd2) / denominator, Real(0), Real(1))
+                            : Real(0);
+  Real f2 = dd2 > 0 ? (d12 * f1 + rd2) / dd2 : Real(0);
+  if (f2 < 0) {
+    f2 = 0;
+    f1 = dd1 > 0 ? std::clamp(-rd1 / dd1, Real(0), Real(1)) : Real(0);
+  } else if (f2 > 1) {
+    f2 = 1;
+    f1 = dd1 > 0 ? std::clamp((d12 - rd1) / dd1, Real(0), Real(1)) : Real(0);
+  }
+  return {f1, f2, p1 + f1 * d1, p2 + f2 * d2};
+}
+
 // Distance from a point to the polygon's boundary.
 Real distanceToBoundary(const Polygon& polygon, const Vec2& p) {
   Real distance = std::numeric_limits<Real>::max();
@@ -211,6 +239,38 @@ Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, co
   return manifold;
 }
 
+// Cores separated by a tenth of the slop at least: the direction between
+// their nearest points is well defined.
+constexpr Real kCoresApart = Real(0.1) * kLinearSlop;
+
+// When the cores are apart and the nearest points of the reference and
+// incident edges are a vertex of each, the contact is between those two
+// vertices, along the line joining them (false otherwise).
+static bool closestVertexPair(const Polygon& reference, int referenceEdge, const Polygon& incident,
+                              int incidentEdge, EdgeContacts& contacts) {
+  int i11 = referenceEdge;
+  int i12 = nextIndex(i11, reference.count);
+  int i21 = incidentEdge;
+  int i22 = nextIndex(i21, incident.count);
+  SegmentClosestPoints closest = closestPoints(reference.vertices[i11], reference.vertices[i12],
+                                               incident.vertices[i21], incident.vertices[i22]);
+  bool atVertex1 = closest.fraction1 == 0 || closest.fraction1 == 1;
+  bool atVertex2 = closest.fraction2 == 0 || closest.fraction2 == 1;
+  Vec2 gap = closest.point2 - closest.point1;
+  Real distance = gap.norm();
+  if (!atVertex1 || !atVertex2 || distance <= kCoresApart) {
+    return false;
+  }
+  contacts.normal = gap / distance;
+  contacts.count = 1;
+  Vec2 surface1 = closest.point1 + reference.radius * contacts.normal;
+  Vec2 surface2 = closest.point2 - incident.radius * contacts.normal;
+  contacts.points[0] = {
+      Real(0.5) * (surface1 + surface2), distance - reference.radius - incident.radius,
+      makeFeatureId(closest.fraction1 == 0 ? i11 : i12, closest.fraction2 == 0 ? i21 : i22)};
+  return true;
+}
+
 // In A's frame (B transformed into it), each polygon the points within its
 // radius of its core:
 //   sA, faceA = max separation of the cores over A's edge normals (SAT);
@@ -218,7 +278,9 @@ Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, co
 //   if max(sA, sB) - radii > speculative distance: no contact
 //   reference face = faceA unless sB > sA + tolerance (then faceB, flipped)
 //   incident edge = edge of the other polygon most anti-parallel to it
-//   if the incident edge lies wholly beside the reference face:
+//   (rounded or two-vertex polygons) if the nearest points of the two edges
+//   are a vertex of each, apart: one point between them
+//   else if the incident edge lies wholly beside the reference face:
 //     one point between the face's end vertex and the incident edge
 //   else clip the incident edge to the face's side planes: two points, each
 //     with separation measured along the reference normal, minus the radii
@@ -238,7 +300,18 @@ Manifold collideLocalPolygons(const Polygon& a, const Polygon& localB, const Tra
   const Polygon& incident = flip ? a : localB;
   int referenceEdge = flip ? faceB.index : faceA.index;
   int incidentEdge = findIncidentEdge(incident, reference.normals[referenceEdge]);
-  EdgeContacts contacts = clipIncidentEdge(reference, referenceEdge, incident, incidentEdge);
+  EdgeContacts contacts;
+  // Rounded shapes, capsules and segments may touch at two vertices while
+  // their cores are apart, where clipping would cut the nearest vertex away.
+  // Sharp polygons of three vertices or more keep the corner logic of
+  // clipIncidentEdge, and their bits.
+  bool vertexPairPossible =
+      (a.radius > 0 || localB.radius > 0 || a.count == 2 || localB.count == 2) &&
+      std::max(faceA.separation, faceB.separation) > kCoresApart;
+  if (!(vertexPairPossible &&
+        closestVertexPair(reference, referenceEdge, incident, incidentEdge, contacts))) {
+    contacts = clipIncidentEdge(reference, referenceEdge, incident, incidentEdge);
+  }
   if (flip) {
     contacts.normal = -contacts.normal;
     for (LocalPoint& point : contacts.points) {

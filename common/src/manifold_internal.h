@@ -68,6 +68,15 @@ Polygon makeTwoSidedPolygon(const Vec2& point1, const Vec2& point2, Real radius)
 
 Vec2 closestPointOnSegment(const Vec2& p, const Vec2& s1, const Vec2& s2);
 
+// Closest points of segments p1-q1 and p2-q2, with their fractions along each.
+struct SegmentClosestPoints {
+  Real fraction1 = 0;
+  Real fraction2 = 0;
+  Vec2 point1 = Vec2::Zero();
+  Vec2 point2 = Vec2::Zero();
+};
+SegmentClosestPoints closestPoints(const Vec2& p1, const Vec2& q1, const Vec2& p2, const Vec2& q2);
+
 // Distance from a point to the polygon's core boundary.
 Real distanceToBoundary(const Polygon& polygon, const Vec2& p);
 
