@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace impulse {
@@ -290,6 +291,8 @@ std::string_view describe(ShapeError error) {
       return "polygon normals are not the outward unit normals of its edges";
     case ShapeError::TooManyConcavePoints:
       return "concave polygon has more than 256 points";
+    case ShapeError::BadCentroid:
+      return "polygon centroid is not the centroid of its vertices";
   }
   return "unknown shape error";
 }
@@ -471,6 +474,10 @@ bool finitePolygon(const Polygon& polygon) {
 // Stored normals within this of the recomputed ones pass (float round-off
 // of the caller's own computation is far below it).
 constexpr double kNormalTolerance = 1e-3;
+// A stored centroid may be off by this per metre of the polygon's size: far
+// above float round-off, far below anything that changes how it collides
+// (chain segments use it to tell which side a polygon is on).
+constexpr double kCentroidTolerance = 1e-3;
 
 ShapeError validatePolygon(const Polygon& polygon, const ShapeLimits& limits) {
   if (polygon.count < kMinPolygonVertices) return ShapeError::TooFewVertices;
@@ -495,6 +502,13 @@ ShapeError validatePolygon(const Polygon& polygon, const ShapeLimits& limits) {
     if ((toPoint(polygon.normals[i]) - normal).norm() > kNormalTolerance) {
       return ShapeError::BadNormals;
     }
+  }
+  std::array<Point, kMaxPolygonVertices> points;
+  for (int i = 0; i < polygon.count; ++i) points[i] = outline.points[i] + outline.offset;
+  const AreaMoments core = computeAreaMoments(std::span(points.data(), outline.count));
+  if ((core.centroid - toPoint(polygon.centroid)).norm() >
+      kCentroidTolerance * std::sqrt(core.area)) {
+    return ShapeError::BadCentroid;
   }
   const double area = computeMassProperties(Shape::makePolygon(polygon), 1).area;
   if (area < limits.minArea || area > limits.maxArea) return ShapeError::AreaOutOfRange;

@@ -223,6 +223,27 @@ TEST(CollidePolygonAndCapsule, CapsuleLyingOnABox_TwoPointsAtTheRoundedSurface) 
   expectVecNear(end.points[0].point, Vec2(Real(0.3), Real(0.505)), kTolerance);
 }
 
+TEST(CollidePolygonAndCapsule, RestingCapsuleIds_StableUnderTinyPerturbation) {
+  const Shape box = Shape::makePolygon(makeBox(2, Real(0.5)));
+  const Shape capsule = Shape::makeCapsule(Vec2(-Real(0.5), 0), Vec2(Real(0.5), 0), Real(0.25));
+  const Manifold before = collideChecked(box, {}, capsule, makeTransform(Real(0.3), Real(0.746)));
+  const Manifold after =
+      collideChecked(box, {}, capsule, makeTransform(Real(0.3002), Real(0.7462), Real(1e-4)));
+  ASSERT_EQ(before.pointCount, 2);
+  ASSERT_EQ(after.pointCount, 2);
+  EXPECT_EQ(before.points[0].id, after.points[0].id);
+  EXPECT_EQ(before.points[1].id, after.points[1].id);
+  EXPECT_NE(before.points[0].id, before.points[1].id);
+  const Manifold lying =
+      collideChecked(capsule, {}, capsule, makeTransform(Real(0.3), Real(0.496)));
+  const Manifold moved =
+      collideChecked(capsule, {}, capsule, makeTransform(Real(0.3002), Real(0.4962), Real(1e-4)));
+  ASSERT_EQ(lying.pointCount, 2);
+  ASSERT_EQ(moved.pointCount, 2);
+  EXPECT_EQ(lying.points[0].id, moved.points[0].id);
+  EXPECT_EQ(lying.points[1].id, moved.points[1].id);
+}
+
 // ---- Rounded polygons ----
 
 TEST(CollideRoundedPolygons, RoundedBoxRestingOnABox_TwoPointsAtTheRoundedBottom) {
@@ -374,6 +395,27 @@ TEST(CollideChainSegment, BoxAndCapsuleSlidingAlong100Segments_NeverCatchOnAJoin
     }
   }
   EXPECT_GT(manifolds, 6 * 4900);
+}
+
+// A circle rolling along the same chain, 5 mm into it: at every position
+// exactly one segment gives one point (a join's vertex region belongs to
+// one side only), straight up within 1e-4, 5 mm deep within 1e-4.
+TEST(CollideChainSegment, CircleRollingAlong100Segments_AlwaysOnePointStraightUp) {
+  const ChainBuild chain = flatChain(100, Real(0.5));
+  const Shape circle = Shape::makeCircle(Real(0.25));
+  for (int step = 0; step <= 4950; ++step) {
+    const Real x = Real(0.25) + Real(0.01) * Real(step);
+    const Transform xf = makeTransform(x, Real(0.25) - kLinearSlop);
+    int points = 0;
+    for (const ChainSegment& segment : chain.segments) {
+      const Manifold m = collideChecked(Shape{segment}, {}, circle, xf);
+      if (m.pointCount == 0) continue;
+      points += m.pointCount;
+      expectVecNear(m.normal, Vec2(0, 1), Real(1e-4));
+      EXPECT_NEAR(m.points[0].separation, -kLinearSlop, Real(1e-4));
+    }
+    EXPECT_EQ(points, 1) << "x = " << x;
+  }
 }
 
 // A box pushed sideways into a join while sunk 5 mm: the next segment's
