@@ -418,6 +418,54 @@ TEST(CollideChainSegment, CircleRollingAlong100Segments_AlwaysOnePointStraightUp
   }
 }
 
+// Chains along arcs of radius 20 m, 0.6 degrees per segment (convex joins
+// on a hill, concave in a bowl): a box sliding along, sunk 5 mm at its
+// middle (hill) or corners (bowl), only ever gets normals within 0.03 rad
+// of the radial direction under it (it spans 1.7 degrees of arc), never a
+// side push from a join, and is always held.
+TEST(CollideChainSegment, BoxSlidingOverAHillAndThroughABowl_NormalsStayRadial) {
+  constexpr double kRadius = 20, kStep = 0.6 * std::numbers::pi / 180;
+  const Real halfWidth = Real(0.3), halfHeight = Real(0.2);
+  const Shape box = Shape::makePolygon(makeBox(halfWidth, halfHeight));
+  for (const bool hill : {true, false}) {
+    SCOPED_TRACE(hill ? "hill" : "bowl");
+    // Hill: centre below, points from 60 to 120 degrees (right to left on
+    // top: the right side is outwards). Bowl: centre above, from -60 to
+    // -120 degrees (right to left along the bottom: the right side is in).
+    const Vec2 center(0, Real(hill ? -kRadius : kRadius));
+    std::vector<Vec2> points;
+    for (int i = 0; i <= 100; ++i) {
+      const double angle =
+          hill ? std::numbers::pi / 3 + i * kStep : -std::numbers::pi / 3 - i * kStep;
+      points.push_back(center +
+                       Vec2(Real(kRadius * std::cos(angle)), Real(kRadius * std::sin(angle))));
+    }
+    const ChainBuild chain = buildChain(points, false);
+    ASSERT_EQ(chain.error, ShapeError::None);
+    for (int k = 10; k <= 90; ++k) {
+      const double angle = hill ? std::numbers::pi / 3 + (k + 0.37) * kStep
+                                : -std::numbers::pi / 3 - (k + 0.37) * kStep;
+      const Vec2 radial(Real(std::cos(angle)), Real(std::sin(angle)));
+      const Vec2 inward = hill ? radial : Vec2(-radial);  // the chain's normal under the box
+      // Corners of the flat bottom rise off a hill by w^2 / 2R and dip into a bowl.
+      const double sag = double(halfWidth) * halfWidth / (2 * kRadius);
+      const double bottom = hill ? kRadius - kLinearSlop : kRadius - sag - kLinearSlop;
+      const double distance = hill ? bottom + halfHeight : bottom - halfHeight;
+      const Vec2 position = center + Real(distance) * radial;
+      const Transform xf{position, Rot::fromAngle(Real(std::atan2(inward.y(), inward.x()) -
+                                                       std::numbers::pi / 2))};
+      int held = 0;
+      for (const ChainSegment& segment : chain.segments) {
+        const Manifold m = collideChecked(Shape{segment}, {}, box, xf, kFarTolerance);
+        if (m.pointCount == 0) continue;
+        held += m.pointCount;
+        EXPECT_GT(m.normal.dot(inward), std::cos(0.03)) << "k = " << k;
+      }
+      EXPECT_GE(held, 1) << "k = " << k;
+    }
+  }
+}
+
 // A box pushed sideways into a join while sunk 5 mm: the next segment's
 // normal is still up, never the box's side face (which a two-sided segment
 // would report, stopping the box).
