@@ -132,8 +132,8 @@ int findIncidentEdge(const Polygon& incident, const Vec2& referenceNormal) {
 // Contact between point `incidentPoint` of the incident core and the
 // reference face along normal, placed midway between the two surfaces (each
 // core's surface lies its radius out along the normal).
-LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const Vec2& normal,
-                       std::uint16_t id, Real referenceRadius, Real incidentRadius) {
+static LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const Vec2& normal,
+                              std::uint16_t id, Real referenceRadius, Real incidentRadius) {
   Real separation = normal.dot(incidentPoint - faceVertex);
   Vec2 point = incidentPoint - Real(0.5) * separation * normal;
   // Sharp polygons skip the term, so their contacts keep the bits they had
@@ -149,10 +149,10 @@ LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const 
 // true direction between them is the normal: the face normal would
 // under-report the gap and make a corner sliding past a corner snag on a
 // speculative contact.
-EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
-                           const Vec2& incident1, const Vec2& incident2,
-                           const Vec2& nearestIncidentVertex, std::uint16_t id,
-                           Real referenceRadius, Real incidentRadius) {
+static EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
+                                  const Vec2& incident1, const Vec2& incident2,
+                                  const Vec2& nearestIncidentVertex, std::uint16_t id,
+                                  Real referenceRadius, Real incidentRadius) {
   Vec2 closest = closestPointOnSegment(referenceVertex, incident1, incident2);
   Vec2 gap = closest - referenceVertex;
   EdgeContacts contacts;
