@@ -503,11 +503,9 @@ ShapeError validatePolygon(const Polygon& polygon, const ShapeLimits& limits) {
       return ShapeError::BadNormals;
     }
   }
-  std::array<Point, kMaxPolygonVertices> points;
-  for (int i = 0; i < polygon.count; ++i) points[i] = outline.points[i] + outline.offset;
-  const AreaMoments core = computeAreaMoments(std::span(points.data(), outline.count));
-  if ((core.centroid - toPoint(polygon.centroid)).norm() >
-      kCentroidTolerance * std::sqrt(core.area)) {
+  const AreaMoments core = computeAreaMoments(std::span(outline.points.data(), outline.count));
+  const Point centroid = core.centroid + outline.offset;
+  if ((centroid - toPoint(polygon.centroid)).norm() > kCentroidTolerance * std::sqrt(core.area)) {
     return ShapeError::BadCentroid;
   }
   const double area = computeMassProperties(Shape::makePolygon(polygon), 1).area;
@@ -524,6 +522,17 @@ ShapeError validateLine(const Segment& segment) {
 }
 
 }  // namespace
+
+Vec2 computePolygonCentroid(const Polygon& polygon) {
+  // Counts outside the array come from unchecked input: no centroid to give.
+  if (polygon.count < kMinPolygonVertices || polygon.count > kMaxPolygonVertices) {
+    return Vec2::Zero();
+  }
+  const Outline outline =
+      makeOutline(std::span(polygon.vertices.data(), static_cast<std::size_t>(polygon.count)));
+  const AreaMoments core = computeAreaMoments(std::span(outline.points.data(), outline.count));
+  return (core.centroid + outline.offset).cast<Real>();
+}
 
 ShapeError validateShape(const Shape& shape, const ShapeLimits& limits) {
   return std::visit(

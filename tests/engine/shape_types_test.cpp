@@ -325,6 +325,13 @@ TEST(ShapeTypesValidation, EachTypeIsRefusedForItsOwnProblem) {
   Polygon offCentre = makeBox(1, 1);
   offCentre.centroid = Vec2(Real(0.01), 0);
   EXPECT_EQ(validateShape(Shape::makePolygon(offCentre)), ShapeError::BadCentroid);
+  // Points in another frame: the helper gives the centroid to store.
+  Polygon moved = makeBox(1, Real(0.5));
+  for (int i = 0; i < 4; ++i) moved.vertices[i] += Vec2(7, -3);
+  EXPECT_EQ(validateShape(Shape::makePolygon(moved)), ShapeError::BadCentroid);
+  expectVecNear(computePolygonCentroid(moved), Vec2(7, -3), 1e-6);
+  moved.centroid = computePolygonCentroid(moved);
+  EXPECT_EQ(validateShape(Shape::makePolygon(moved)), ShapeError::None);
   EXPECT_EQ(validateShape(translated(Shape::makePolygon(makeBox(1, 1)), Vec2(30, -40))),
             ShapeError::None);
   Polygon two;

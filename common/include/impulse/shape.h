@@ -170,6 +170,12 @@ Polygon makeBox(Real halfWidth, Real halfHeight);
 /// Regular polygon with `count` vertices on a circle of `radius` around the origin.
 Polygon makeRegularPolygon(int count, Real radius);
 
+/// The area centroid of a polygon's core (its vertices), whatever their
+/// frame: what Polygon::centroid must hold when a polygon is made from points
+/// that buildPolygon did not centre (validateShape refuses a stale one).
+/// Zero for a count outside 3..16.
+Vec2 computePolygonCentroid(const Polygon& polygon);
+
 /// Validates any shape: finite numbers, radii and areas in range, segments
 /// and capsules longer than the linear slop, polygons anticlockwise,
 /// strictly convex, with distinct points, their edges' outward unit normals
