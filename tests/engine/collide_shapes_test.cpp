@@ -535,6 +535,32 @@ TEST(CollideChainSegment, ConcaveJoin_BothFacesAndNoVertexContact) {
   }
 }
 
+// An anticlockwise loop collides on its outside, a clockwise one (a
+// container) on its inside: a box 5 mm into the bottom edge from either side.
+TEST(CollideChainSegment, Loops_AnticlockwiseHoldsOutsideClockwiseHoldsInside) {
+  const std::vector<Vec2> square = {Vec2(0, 0), Vec2(4, 0), Vec2(4, 4), Vec2(0, 4)};
+  const std::vector<Vec2> reversed(square.rbegin(), square.rend());
+  const Shape box = Shape::makePolygon(makeBox(Real(0.5), Real(0.5)));
+  const Transform inside = makeTransform(2, Real(0.495));
+  const Transform outside = makeTransform(2, Real(-0.495));
+  for (const bool anticlockwise : {true, false}) {
+    SCOPED_TRACE(anticlockwise ? "anticlockwise" : "clockwise");
+    const ChainBuild loop = buildChain(anticlockwise ? square : reversed, true);
+    ASSERT_EQ(loop.error, ShapeError::None);
+    int insidePoints = 0, outsidePoints = 0;
+    for (const ChainSegment& segment : loop.segments) {
+      const Manifold in = collideChecked(Shape{segment}, {}, box, inside);
+      const Manifold out = collideChecked(Shape{segment}, {}, box, outside);
+      insidePoints += in.pointCount;
+      outsidePoints += out.pointCount;
+      if (in.pointCount > 0) expectVecNear(in.normal, Vec2(0, 1), kTolerance);
+      if (out.pointCount > 0) expectVecNear(out.normal, Vec2(0, -1), kTolerance);
+    }
+    EXPECT_EQ(insidePoints, anticlockwise ? 0 : 2);
+    EXPECT_EQ(outsidePoints, anticlockwise ? 2 : 0);
+  }
+}
+
 TEST(CollideChainSegment, CapsuleFromBehind_HasNoContactAndFromTheFrontTwoPoints) {
   const ChainBuild chain = flatChain(3, 1);
   const Shape middle{chain.segments[1]};
