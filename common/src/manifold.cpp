@@ -5,48 +5,10 @@
 #include <limits>
 #include <span>
 
+#include "manifold_internal.h"
+
 namespace impulse {
-namespace {
-
-// Reference face hysteresis: B's face is used only when it separates clearly
-// more than A's, so that two nearly equal faces (a box resting flat on a box)
-// do not swap roles, and contact ids, from one step to the next.
-constexpr Real kFaceTolerance = Real(0.1) * kLinearSlop;
-
-// Below a micrometre, float round-off in scene coordinates of tens of metres
-// dominates a vector, so its direction is noise and normalising it could
-// divide by zero.
-constexpr Real kMinDirectionLength = Real(1e-6);
-
-// A contact point in A's local frame, before conversion to world.
-struct LocalPoint {
-  Vec2 point = Vec2::Zero();
-  Real separation = 0;
-  std::uint16_t id = 0;
-};
-
-// Face of a polygon that separates the other shape the most.
-struct FaceQuery {
-  int index = 0;
-  Real separation = -std::numeric_limits<Real>::max();
-};
-
-// Contacts of a reference face with an incident edge, in A's frame, with the
-// normal pointing out of the reference face and ids in (reference, incident)
-// order.
-struct EdgeContacts {
-  Vec2 normal = Vec2::Zero();
-  std::array<LocalPoint, 2> points{};
-  int count = 0;
-};
-
-int nextIndex(int i, int count) { return i + 1 < count ? i + 1 : 0; }
-
-// B's transform in A's frame. Working there keeps the numbers near the origin
-// even when both bodies are far from the world origin.
-Transform relativeTransform(const Transform& xfA, const Transform& xfB) {
-  return {xfA.q.applyInverse(xfB.p - xfA.p), relativeRotation(xfA.q, xfB.q)};
-}
+namespace narrow {
 
 Polygon transformPolygon(const Polygon& polygon, const Transform& xf) {
   Polygon result;
@@ -55,7 +17,21 @@ Polygon transformPolygon(const Polygon& polygon, const Transform& xf) {
     result.vertices[i] = xf.apply(polygon.vertices[i]);
     result.normals[i] = xf.q.apply(polygon.normals[i]);
   }
+  result.centroid = placeInA(xf, polygon.centroid);
+  result.radius = polygon.radius;
   return result;
+}
+
+Polygon makeTwoSidedPolygon(const Vec2& point1, const Vec2& point2, Real radius) {
+  Polygon polygon;
+  polygon.count = 2;
+  polygon.vertices[0] = point1;
+  polygon.vertices[1] = point2;
+  polygon.normals[0] = rightPerp(point2 - point1).normalized();
+  polygon.normals[1] = -polygon.normals[0];
+  polygon.centroid = Real(0.5) * (point1 + point2);
+  polygon.radius = radius;
+  return polygon;
 }
 
 Vec2 closestPointOnSegment(const Vec2& p, const Vec2& s1, const Vec2& s2) {
@@ -66,6 +42,34 @@ Vec2 closestPointOnSegment(const Vec2& p, const Vec2& s1, const Vec2& s2) {
                       ? std::clamp((p - s1).dot(edge) / lengthSquared, Real(0), Real(1))
                       : Real(0);
   return s1 + fraction * edge;
+}
+
+// Ericson, Real-Time Collision Detection 5.1.9: the unclamped minimum on
+// the first, the second's point nearest to it clamped, and the first redone
+// when the second was clamped.
+SegmentClosestPoints closestPoints(const Vec2& p1, const Vec2& q1, const Vec2& p2, const Vec2& q2) {
+  Vec2 d1 = q1 - p1;
+  Vec2 d2 = q2 - p2;
+  Vec2 r = p1 - p2;
+  Real dd1 = d1.squaredNorm();
+  Real dd2 = d2.squaredNorm();
+  Real rd1 = d1.dot(r);
+  Real rd2 = d2.dot(r);
+  Real d12 = d1.dot(d2);
+  // Validated capsules are at least a linear slop long; a zero length here
+  // still gives a point, never a division by zero.
+  Real denominator = dd1 * dd2 - d12 * d12;
+  Real f1 = denominator > 0 ? std::clamp((d12 * rd2 - rd1 * dd2) / denominator, Real(0), Real(1))
+                            : Real(0);
+  Real f2 = dd2 > 0 ? (d12 * f1 + rd2) / dd2 : Real(0);
+  if (f2 < 0) {
+    f2 = 0;
+    f1 = dd1 > 0 ? std::clamp(-rd1 / dd1, Real(0), Real(1)) : Real(0);
+  } else if (f2 > 1) {
+    f2 = 1;
+    f1 = dd1 > 0 ? std::clamp((d12 - rd1) / dd1, Real(0), Real(1)) : Real(0);
+  }
+  return {f1, f2, p1 + f1 * d1, p2 + f2 * d2};
 }
 
 // Distance from a point to the polygon's boundary.
@@ -125,12 +129,19 @@ int findIncidentEdge(const Polygon& incident, const Vec2& referenceNormal) {
   return best;
 }
 
-// Contact between point `incidentPoint` and the reference face along normal,
-// placed midway between the two surfaces.
-LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const Vec2& normal,
-                       std::uint16_t id) {
+// Contact between point `incidentPoint` of the incident core and the
+// reference face along normal, placed midway between the two surfaces (each
+// core's surface lies its radius out along the normal).
+static LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const Vec2& normal,
+                              std::uint16_t id, Real referenceRadius, Real incidentRadius) {
   Real separation = normal.dot(incidentPoint - faceVertex);
-  return {incidentPoint - Real(0.5) * separation * normal, separation, id};
+  Vec2 point = incidentPoint - Real(0.5) * separation * normal;
+  // Sharp polygons skip the term, so their contacts keep the bits they had
+  // before shapes had radii.
+  if (referenceRadius != 0 || incidentRadius != 0) {
+    point += (Real(0.5) * (referenceRadius - incidentRadius)) * normal;
+  }
+  return {point, separation - referenceRadius - incidentRadius, id};
 }
 
 // The incident edge lies wholly beside the reference face, so the nearest
@@ -138,9 +149,10 @@ LocalPoint faceContact(const Vec2& incidentPoint, const Vec2& faceVertex, const 
 // true direction between them is the normal: the face normal would
 // under-report the gap and make a corner sliding past a corner snag on a
 // speculative contact.
-EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
-                           const Vec2& incident1, const Vec2& incident2,
-                           const Vec2& nearestIncidentVertex, std::uint16_t id) {
+static EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
+                                  const Vec2& incident1, const Vec2& incident2,
+                                  const Vec2& nearestIncidentVertex, std::uint16_t id,
+                                  Real referenceRadius, Real incidentRadius) {
   Vec2 closest = closestPointOnSegment(referenceVertex, incident1, incident2);
   Vec2 gap = closest - referenceVertex;
   EdgeContacts contacts;
@@ -148,12 +160,17 @@ EdgeContacts cornerContact(const Vec2& faceNormal, const Vec2& referenceVertex,
   if (faceNormal.dot(gap) > kMinDirectionLength) {
     Real distance = gap.norm();
     contacts.normal = gap / distance;
-    contacts.points[0] = {referenceVertex + Real(0.5) * gap, distance, id};
+    Vec2 point = referenceVertex + Real(0.5) * gap;
+    if (referenceRadius != 0 || incidentRadius != 0) {
+      point += (Real(0.5) * (referenceRadius - incidentRadius)) * contacts.normal;
+    }
+    contacts.points[0] = {point, distance - referenceRadius - incidentRadius, id};
   } else {
     // Corners touching within round-off: the gap is too short to give a
     // direction, so push along the face, as clipping would.
     contacts.normal = faceNormal;
-    contacts.points[0] = faceContact(nearestIncidentVertex, referenceVertex, faceNormal, id);
+    contacts.points[0] = faceContact(nearestIncidentVertex, referenceVertex, faceNormal, id,
+                                     referenceRadius, incidentRadius);
   }
   return contacts;
 }
@@ -172,16 +189,18 @@ EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const
   const Vec2& w1 = incident.vertices[i21];
   const Vec2& w2 = incident.vertices[i22];
   const Vec2& normal = reference.normals[i11];
+  const Real r1 = reference.radius;
+  const Real r2 = incident.radius;
 
   Vec2 tangent = leftPerp(normal);
   Real faceLength = tangent.dot(v12 - v11);
   Real lower = tangent.dot(w2 - v11);
   Real upper = tangent.dot(w1 - v11);
   if (upper < 0) {
-    return cornerContact(normal, v11, w1, w2, w1, makeFeatureId(i11, i21));
+    return cornerContact(normal, v11, w1, w2, w1, makeFeatureId(i11, i21), r1, r2);
   }
   if (lower > faceLength) {
-    return cornerContact(normal, v12, w1, w2, w2, makeFeatureId(i12, i22));
+    return cornerContact(normal, v12, w1, w2, w2, makeFeatureId(i12, i22), r1, r2);
   }
 
   // Each interpolation happens only when the incident edge crosses that side
@@ -193,15 +212,13 @@ EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const
   EdgeContacts contacts;
   contacts.normal = normal;
   contacts.count = 2;
-  contacts.points[0] = faceContact(pointLower, v11, normal, makeFeatureId(i11, i22));
-  contacts.points[1] = faceContact(pointUpper, v11, normal, makeFeatureId(i12, i21));
+  contacts.points[0] = faceContact(pointLower, v11, normal, makeFeatureId(i11, i22), r1, r2);
+  contacts.points[1] = faceContact(pointUpper, v11, normal, makeFeatureId(i12, i21), r1, r2);
   return contacts;
 }
 
 std::uint16_t swapFeatures(std::uint16_t id) { return makeFeatureId(id & 0xFF, id >> 8); }
 
-// Converts contacts computed in A's frame to world, keeping only those within
-// the speculative distance.
 Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, const Transform& xfA,
                  const Transform& xfB) {
   Manifold manifold;
@@ -222,6 +239,94 @@ Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, co
   return manifold;
 }
 
+// Cores separated by a tenth of the slop at least: the direction between
+// their nearest points is well defined.
+constexpr Real kCoresApart = Real(0.1) * kLinearSlop;
+
+// When the cores are apart and the nearest points of the reference and
+// incident edges are a vertex of each, the contact is between those two
+// vertices, along the line joining them (false otherwise).
+static bool closestVertexPair(const Polygon& reference, int referenceEdge, const Polygon& incident,
+                              int incidentEdge, EdgeContacts& contacts) {
+  int i11 = referenceEdge;
+  int i12 = nextIndex(i11, reference.count);
+  int i21 = incidentEdge;
+  int i22 = nextIndex(i21, incident.count);
+  SegmentClosestPoints closest = closestPoints(reference.vertices[i11], reference.vertices[i12],
+                                               incident.vertices[i21], incident.vertices[i22]);
+  bool atVertex1 = closest.fraction1 == 0 || closest.fraction1 == 1;
+  bool atVertex2 = closest.fraction2 == 0 || closest.fraction2 == 1;
+  Vec2 gap = closest.point2 - closest.point1;
+  Real distance = gap.norm();
+  if (!atVertex1 || !atVertex2 || distance <= kCoresApart) {
+    return false;
+  }
+  contacts.normal = gap / distance;
+  contacts.count = 1;
+  Vec2 surface1 = closest.point1 + reference.radius * contacts.normal;
+  Vec2 surface2 = closest.point2 - incident.radius * contacts.normal;
+  contacts.points[0] = {
+      Real(0.5) * (surface1 + surface2), distance - reference.radius - incident.radius,
+      makeFeatureId(closest.fraction1 == 0 ? i11 : i12, closest.fraction2 == 0 ? i21 : i22)};
+  return true;
+}
+
+// In A's frame (B transformed into it), each polygon the points within its
+// radius of its core:
+//   sA, faceA = max separation of the cores over A's edge normals (SAT);
+//   sB, faceB likewise
+//   if max(sA, sB) - radii > speculative distance: no contact
+//   reference face = faceA unless sB > sA + tolerance (then faceB, flipped)
+//   incident edge = edge of the other polygon most anti-parallel to it
+//   (rounded or two-vertex polygons) if the nearest points of the two edges
+//   are a vertex of each, apart: one point between them
+//   else if the incident edge lies wholly beside the reference face:
+//     one point between the face's end vertex and the incident edge
+//   else clip the incident edge to the face's side planes: two points, each
+//     with separation measured along the reference normal, minus the radii
+//   keep the points within the speculative distance
+//   flipped: negate the normal so it points from A to B, swap id features
+Manifold collideLocalPolygons(const Polygon& a, const Polygon& localB, const Transform& xfA,
+                              const Transform& xfB) {
+  FaceQuery faceA = findMaxSeparation(a, localB);
+  FaceQuery faceB = findMaxSeparation(localB, a);
+  if (std::max(faceA.separation, faceB.separation) - (a.radius + localB.radius) >=
+      kSpeculativeDistance) {
+    return {};
+  }
+
+  bool flip = faceB.separation > faceA.separation + kFaceTolerance;
+  const Polygon& reference = flip ? localB : a;
+  const Polygon& incident = flip ? a : localB;
+  int referenceEdge = flip ? faceB.index : faceA.index;
+  int incidentEdge = findIncidentEdge(incident, reference.normals[referenceEdge]);
+  EdgeContacts contacts;
+  // Rounded shapes, capsules and segments may touch at two vertices while
+  // their cores are apart, where clipping would cut the nearest vertex away.
+  // Sharp polygons of three vertices or more keep the corner logic of
+  // clipIncidentEdge, and their bits.
+  bool vertexPairPossible =
+      (a.radius > 0 || localB.radius > 0 || a.count == 2 || localB.count == 2) &&
+      std::max(faceA.separation, faceB.separation) > kCoresApart;
+  if (!(vertexPairPossible &&
+        closestVertexPair(reference, referenceEdge, incident, incidentEdge, contacts))) {
+    contacts = clipIncidentEdge(reference, referenceEdge, incident, incidentEdge);
+  }
+  if (flip) {
+    contacts.normal = -contacts.normal;
+    for (LocalPoint& point : contacts.points) {
+      point.id = swapFeatures(point.id);
+    }
+  }
+  return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB);
+}
+
+}  // namespace narrow
+
+namespace {
+
+using namespace narrow;
+
 // Single-point contact between a point of A's surface and the centre of a
 // circle B along a unit normal (A's frame). Circle contacts keep id 0 whichever
 // feature of A they touch, so a circle rolling over a polygon's vertex keeps
@@ -233,66 +338,16 @@ Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, 
   return toWorld(normal, std::span(&point, 1), xfA, xfB);
 }
 
-// Circle B whose centre lies in the Voronoi region of a vertex of A.
-Manifold circleVertexContact(const Vec2& vertex, const Vec2& centerB, Real radiusB,
+// Circle B whose centre lies in the Voronoi region of a vertex of A (a core
+// vertex, `radiusA` out from A's surface).
+Manifold circleVertexContact(const Vec2& vertex, Real radiusA, const Vec2& centerB, Real radiusB,
                              const Transform& xfA, const Transform& xfB) {
   Vec2 offset = centerB - vertex;
   Real distance = offset.norm();
-  return circleContact(vertex, centerB, radiusB, offset / distance, distance - radiusB, xfA, xfB);
+  Vec2 normal = offset / distance;
+  Vec2 surfaceA = radiusA != 0 ? Vec2(vertex + radiusA * normal) : vertex;
+  return circleContact(surfaceA, centerB, radiusB, normal, distance - radiusA - radiusB, xfA, xfB);
 }
-
-Real polygonCircleSeparation(const Polygon& a, const Transform& xfA, const Circle& b,
-                             const Transform& xfB) {
-  Vec2 center = relativeTransform(xfA, xfB).p;
-  Real faceSeparation = findMaxSeparation(a, center).separation;
-  // Inside (or on) the polygon, the nearest face gives the depth; outside,
-  // the nearest edge or vertex gives the exact gap.
-  Real centerDistance = faceSeparation <= 0 ? faceSeparation : distanceToBoundary(a, center);
-  return centerDistance - b.radius;
-}
-
-Real polygonsSeparation(const Polygon& a, const Transform& xfA, const Polygon& b,
-                        const Transform& xfB) {
-  Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
-  Real satSeparation =
-      std::max(findMaxSeparation(a, localB).separation, findMaxSeparation(localB, a).separation);
-  if (satSeparation <= 0) {
-    return satSeparation;
-  }
-  // Separated convex polygons have a closest pair made of a vertex of one and
-  // an edge of the other.
-  Real distance = std::numeric_limits<Real>::max();
-  for (int i = 0; i < a.count; ++i) {
-    distance = std::min(distance, distanceToBoundary(localB, a.vertices[i]));
-  }
-  for (int i = 0; i < localB.count; ++i) {
-    distance = std::min(distance, distanceToBoundary(a, localB.vertices[i]));
-  }
-  return distance;
-}
-
-Manifold collideCircleShapes(const Shape& a, const Transform& xfA, const Shape& b,
-                             const Transform& xfB) {
-  return collideCircles(a.circle, xfA, b.circle, xfB);
-}
-
-Manifold collidePolygonAndCircleShapes(const Shape& a, const Transform& xfA, const Shape& b,
-                                       const Transform& xfB) {
-  return collidePolygonAndCircle(a.polygon, xfA, b.circle, xfB);
-}
-
-Manifold collidePolygonShapes(const Shape& a, const Transform& xfA, const Shape& b,
-                              const Transform& xfB) {
-  return collidePolygons(a.polygon, xfA, b.polygon, xfB);
-}
-
-// Indexed [type of A][type of B]. (Circle, Polygon) stays empty: the caller
-// swaps the pair so that each function handles one order only.
-constexpr std::array<std::array<CollideFunction, kShapeTypeCount>, kShapeTypeCount>
-    kCollideFunctions = {{
-        {collideCircleShapes, nullptr},
-        {collidePolygonAndCircleShapes, collidePolygonShapes},
-    }};
 
 }  // namespace
 
@@ -301,27 +356,29 @@ constexpr std::array<std::array<CollideFunction, kShapeTypeCount>, kShapeTypeCou
 // midway between the two surface points along the normal.
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
                         const Transform& xfB) {
-  Vec2 centerB = relativeTransform(xfA, xfB).p;
-  Real distance = centerB.norm();
+  Vec2 centerB = placeInA(relativeTransform(xfA, xfB), b.center);
+  Vec2 offset = a.center.isZero() ? centerB : Vec2(centerB - a.center);
+  Real distance = offset.norm();
   // Concentric circles have no preferred direction; any unit normal gives a
   // valid push apart, and A's local up is as good as any.
-  Vec2 normal = distance > kMinDirectionLength ? Vec2(centerB / distance) : Vec2(0, 1);
-  return circleContact(a.radius * normal, centerB, b.radius, normal, distance - a.radius - b.radius,
-                       xfA, xfB);
+  Vec2 normal = distance > kMinDirectionLength ? Vec2(offset / distance) : Vec2(0, 1);
+  Vec2 surfaceA = a.center.isZero() ? Vec2(a.radius * normal) : Vec2(a.center + a.radius * normal);
+  return circleContact(surfaceA, centerB, b.radius, normal, distance - a.radius - b.radius, xfA,
+                       xfB);
 }
 
-// In A's frame, with c the circle centre and r its radius:
+// In A's frame, with c the circle centre, r its radius and R A's rounding:
 //   face i = argmax n_i . (c - v_i)           (max separation s)
-//   if s > r + speculative distance: no contact
-//   if c lies outside the polygon (s > 0) beyond either end of face i:
-//     vertex region: normal = (c - v) / |c - v|, separation = |c - v| - r
+//   if s > r + R + speculative distance: no contact
+//   if c lies outside the core (s > 0) beyond either end of face i:
+//     vertex region: normal = (c - v) / |c - v|, separation = |c - v| - r - R
 //   else (face region, also when c is inside):
-//     normal = n_i, separation = s - r
+//     normal = n_i, separation = s - r - R
 Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
                                  const Transform& xfB) {
-  Vec2 center = relativeTransform(xfA, xfB).p;
+  Vec2 center = placeInA(relativeTransform(xfA, xfB), b.center);
   FaceQuery face = findMaxSeparation(a, center);
-  if (face.separation - b.radius >= kSpeculativeDistance) {
+  if (face.separation - b.radius - a.radius >= kSpeculativeDistance) {
     return {};
   }
 
@@ -331,73 +388,35 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
   // |c - v| >= s then guarantees a length to normalise.
   if (face.separation > kMinDirectionLength) {
     if ((center - v1).dot(v2 - v1) < 0) {
-      return circleVertexContact(v1, center, b.radius, xfA, xfB);
+      return circleVertexContact(v1, a.radius, center, b.radius, xfA, xfB);
     }
     if ((center - v2).dot(v1 - v2) < 0) {
-      return circleVertexContact(v2, center, b.radius, xfA, xfB);
+      return circleVertexContact(v2, a.radius, center, b.radius, xfA, xfB);
     }
   }
 
   const Vec2& normal = a.normals[face.index];
   Vec2 onFace = center - face.separation * normal;
-  return circleContact(onFace, center, b.radius, normal, face.separation - b.radius, xfA, xfB);
+  if (a.radius != 0) onFace += a.radius * normal;
+  return circleContact(onFace, center, b.radius, normal, face.separation - b.radius - a.radius, xfA,
+                       xfB);
 }
 
-// In A's frame (B transformed into it):
-//   sA, faceA = max separation over A's edge normals (SAT); sB, faceB likewise
-//   if max(sA, sB) > speculative distance: no contact
-//   reference face = faceA unless sB > sA + tolerance (then faceB, flipped)
-//   incident edge = edge of the other polygon most anti-parallel to it
-//   if the incident edge lies wholly beside the reference face:
-//     one point between the face's end vertex and the incident edge
-//   else clip the incident edge to the face's side planes: two points, each
-//     with separation measured along the reference normal
-//   keep the points within the speculative distance
-//   flipped: negate the normal so it points from A to B, swap id features
 Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
                          const Transform& xfB) {
-  Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
-  FaceQuery faceA = findMaxSeparation(a, localB);
-  FaceQuery faceB = findMaxSeparation(localB, a);
-  if (std::max(faceA.separation, faceB.separation) >= kSpeculativeDistance) {
-    return {};
-  }
-
-  bool flip = faceB.separation > faceA.separation + kFaceTolerance;
-  const Polygon& reference = flip ? localB : a;
-  const Polygon& incident = flip ? a : localB;
-  int referenceEdge = flip ? faceB.index : faceA.index;
-  int incidentEdge = findIncidentEdge(incident, reference.normals[referenceEdge]);
-  EdgeContacts contacts = clipIncidentEdge(reference, referenceEdge, incident, incidentEdge);
-  if (flip) {
-    contacts.normal = -contacts.normal;
-    for (LocalPoint& point : contacts.points) {
-      point.id = swapFeatures(point.id);
-    }
-  }
-  return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB);
+  return collideLocalPolygons(a, transformPolygon(b, relativeTransform(xfA, xfB)), xfA, xfB);
 }
 
-CollideFunction collideFunction(ShapeType a, ShapeType b) {
-  auto indexA = static_cast<std::size_t>(a);
-  auto indexB = static_cast<std::size_t>(b);
-  // Types may come from decoded network data: an unknown value has no function.
-  if (indexA >= kCollideFunctions.size() || indexB >= kCollideFunctions[indexA].size()) {
-    return nullptr;
-  }
-  return kCollideFunctions[indexA][indexB];
+// A capsule is a rounded two-vertex polygon.
+Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b,
+                                  const Transform& xfB) {
+  return collidePolygons(a, xfA, makeTwoSidedPolygon(b.center1, b.center2, b.radius), xfB);
 }
 
-Real computeSeparation(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB) {
-  if (a.type == ShapeType::Circle && b.type == ShapeType::Circle) {
-    return (xfB.p - xfA.p).norm() - a.circle.radius - b.circle.radius;
-  }
-  if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon) {
-    return polygonsSeparation(a.polygon, xfA, b.polygon, xfB);
-  }
-  // The distance is symmetric, so a circle A is handled as the polygon's partner.
-  return a.type == ShapeType::Polygon ? polygonCircleSeparation(a.polygon, xfA, b.circle, xfB)
-                                      : polygonCircleSeparation(b.polygon, xfB, a.circle, xfA);
+// A segment is a two-vertex polygon of radius 0.
+Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b,
+                                  const Transform& xfB) {
+  return collidePolygons(makeTwoSidedPolygon(a.point1, a.point2, 0), xfA, b, xfB);
 }
 
 }  // namespace impulse

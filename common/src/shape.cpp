@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace impulse {
@@ -290,6 +291,8 @@ std::string_view describe(ShapeError error) {
       return "polygon normals are not the outward unit normals of its edges";
     case ShapeError::TooManyConcavePoints:
       return "concave polygon has more than 256 points";
+    case ShapeError::BadCentroid:
+      return "polygon centroid is not the centroid of its vertices";
   }
   return "unknown shape error";
 }
@@ -471,6 +474,10 @@ bool finitePolygon(const Polygon& polygon) {
 // Stored normals within this of the recomputed ones pass (float round-off
 // of the caller's own computation is far below it).
 constexpr double kNormalTolerance = 1e-3;
+// A stored centroid may be off by this per metre of the polygon's size: far
+// above float round-off, far below anything that changes how it collides
+// (chain segments use it to tell which side a polygon is on).
+constexpr double kCentroidTolerance = 1e-3;
 
 ShapeError validatePolygon(const Polygon& polygon, const ShapeLimits& limits) {
   if (polygon.count < kMinPolygonVertices) return ShapeError::TooFewVertices;
@@ -496,6 +503,11 @@ ShapeError validatePolygon(const Polygon& polygon, const ShapeLimits& limits) {
       return ShapeError::BadNormals;
     }
   }
+  const AreaMoments core = computeAreaMoments(std::span(outline.points.data(), outline.count));
+  const Point centroid = core.centroid + outline.offset;
+  if ((centroid - toPoint(polygon.centroid)).norm() > kCentroidTolerance * std::sqrt(core.area)) {
+    return ShapeError::BadCentroid;
+  }
   const double area = computeMassProperties(Shape::makePolygon(polygon), 1).area;
   if (area < limits.minArea || area > limits.maxArea) return ShapeError::AreaOutOfRange;
   return ShapeError::None;
@@ -510,6 +522,17 @@ ShapeError validateLine(const Segment& segment) {
 }
 
 }  // namespace
+
+Vec2 computePolygonCentroid(const Polygon& polygon) {
+  // Counts outside the array come from unchecked input: no centroid to give.
+  if (polygon.count < kMinPolygonVertices || polygon.count > kMaxPolygonVertices) {
+    return Vec2::Zero();
+  }
+  const Outline outline =
+      makeOutline(std::span(polygon.vertices.data(), static_cast<std::size_t>(polygon.count)));
+  const AreaMoments core = computeAreaMoments(std::span(outline.points.data(), outline.count));
+  return (core.centroid + outline.offset).cast<Real>();
+}
 
 ShapeError validateShape(const Shape& shape, const ShapeLimits& limits) {
   return std::visit(

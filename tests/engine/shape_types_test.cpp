@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -321,12 +322,36 @@ TEST(ShapeTypesValidation, EachTypeIsRefusedForItsOwnProblem) {
   Polygon dent = makeBox(1, 1);
   dent.vertices[2] = Vec2(Real(-0.5), Real(-0.5));
   EXPECT_EQ(validateShape(Shape::makePolygon(dent)), ShapeError::NonConvex);
+  Polygon offCentre = makeBox(1, 1);
+  offCentre.centroid = Vec2(Real(0.01), 0);
+  EXPECT_EQ(validateShape(Shape::makePolygon(offCentre)), ShapeError::BadCentroid);
+  // Points in another frame: the helper gives the centroid to store.
+  Polygon moved = makeBox(1, Real(0.5));
+  for (int i = 0; i < 4; ++i) moved.vertices[i] += Vec2(7, -3);
+  EXPECT_EQ(validateShape(Shape::makePolygon(moved)), ShapeError::BadCentroid);
+  expectVecNear(computePolygonCentroid(moved), Vec2(7, -3), 1e-6);
+  moved.centroid = computePolygonCentroid(moved);
+  EXPECT_EQ(validateShape(Shape::makePolygon(moved)), ShapeError::None);
+  EXPECT_EQ(validateShape(translated(Shape::makePolygon(makeBox(1, 1)), Vec2(30, -40))),
+            ShapeError::None);
   Polygon two;
   two.count = 2;
   EXPECT_EQ(validateShape(Shape::makePolygon(two)), ShapeError::TooFewVertices);
 
   const ChainSegment chain{Vec2(-1, 0), Segment{Vec2(0, 0), Vec2(Real(0.001), 0)}, Vec2(2, 0), -1};
   EXPECT_EQ(validateShape(Shape{chain}), ShapeError::SegmentTooShort);
+}
+
+TEST(ShapeTypesValidation, EveryErrorHasItsOwnMessage) {
+  std::set<std::string_view> messages;
+  const int last = static_cast<int>(ShapeError::BadCentroid);
+  for (int e = 0; e <= last; ++e) {
+    const std::string_view message = describe(static_cast<ShapeError>(e));
+    EXPECT_FALSE(message.empty());
+    EXPECT_NE(message, "unknown shape error") << e;
+    messages.insert(message);
+  }
+  EXPECT_EQ(messages.size(), std::size_t(last + 1));
 }
 
 TEST(ShapeTypesValidation, NewMessagesNameTheProblemInTheUsersWords) {

@@ -44,9 +44,9 @@ struct Manifold {
 /// while the bodies move only a little (contact.cpp). Solver
 /// state like the impulses: a saved scene keeps it.
 struct ManifoldFrame {
-  bool computed = false;  ///< false until the narrow phase first ran
-  Transform relative;     ///< B's pose in A's frame when it ran
-  Vec2 localNormal = Vec2::Zero();  ///< in A's frame
+  bool computed = false;                               ///< false until the narrow phase first ran
+  Transform relative;                                  ///< B's pose in A's frame when it ran
+  Vec2 localNormal = Vec2::Zero();                     ///< in A's frame
   Vec2 localPointA[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on A
   Vec2 localPointB[2] = {Vec2::Zero(), Vec2::Zero()};  ///< material point on B
   Real offset[2] = {0, 0};  ///< separation minus the points' gap along the normal
@@ -59,11 +59,33 @@ constexpr std::uint16_t makeFeatureId(int a, int b) {
 
 // Each function returns the points whose separation is below
 // kSpeculativeDistance (speculative contacts), and no points otherwise.
-Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB);
+Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
+                        const Transform& xfB);
 Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
                                  const Transform& xfB);
 Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
                          const Transform& xfB);
+Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB);
+/// Two points when the capsules lie along each other, one otherwise.
+Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& b,
+                         const Transform& xfB);
+Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b,
+                                  const Transform& xfB);
+Manifold collideSegmentAndCircle(const Segment& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB);
+Manifold collideSegmentAndCapsule(const Segment& a, const Transform& xfA, const Capsule& b,
+                                  const Transform& xfB);
+Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b,
+                                  const Transform& xfB);
+/// Chain segments collide on their right side only, and leave to their
+/// neighbours (through the ghost vertices) the contacts that belong to them.
+Manifold collideChainSegmentAndCircle(const ChainSegment& a, const Transform& xfA, const Circle& b,
+                                      const Transform& xfB);
+Manifold collideChainSegmentAndCapsule(const ChainSegment& a, const Transform& xfA,
+                                       const Capsule& b, const Transform& xfB);
+Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform& xfA,
+                                       const Polygon& b, const Transform& xfB);
 
 /// The manifold of any two shapes, normal from a to b (dispatches on their
 /// types; the world caches the function per contact instead, shape_pair.h).

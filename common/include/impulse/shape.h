@@ -137,6 +137,7 @@ enum class ShapeError : std::uint8_t {
   Clockwise,                 ///< a stored polygon's vertices run clockwise
   BadNormals,                ///< a stored polygon's normals are not its edges' outward unit normals
   TooManyConcavePoints,      ///< decomposePolygon takes at most kMaxConcavePoints
+  BadCentroid,               ///< a stored polygon's centroid is not its vertices' centroid
 };
 
 /// A readable sentence naming the problem, suitable to show to a user as is.
@@ -169,11 +170,18 @@ Polygon makeBox(Real halfWidth, Real halfHeight);
 /// Regular polygon with `count` vertices on a circle of `radius` around the origin.
 Polygon makeRegularPolygon(int count, Real radius);
 
+/// The area centroid of a polygon's core (its vertices), whatever their
+/// frame: what Polygon::centroid must hold when a polygon is made from points
+/// that buildPolygon did not centre (validateShape refuses a stale one).
+/// Zero for a count outside 3..16.
+Vec2 computePolygonCentroid(const Polygon& polygon);
+
 /// Validates any shape: finite numbers, radii and areas in range, segments
 /// and capsules longer than the linear slop, polygons anticlockwise,
-/// strictly convex, with distinct points and their edges' outward unit
-/// normals (three nearly collinear points pass: unlike a user's drawing, a
-/// stored polygon such as a decomposition's piece may have them).
+/// strictly convex, with distinct points, their edges' outward unit normals
+/// and their vertices' centroid (within 1 mm per metre of size). Unlike a
+/// user's drawing, a stored polygon (a decomposition's piece) may have three
+/// nearly collinear points.
 ShapeError validateShape(const Shape& shape, const ShapeLimits& limits = {});
 
 /// A chain's points, in order, made into one-sided segments with ghost
