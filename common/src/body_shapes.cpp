@@ -18,20 +18,6 @@ std::int32_t allocateShape(WorldData& world) {
   return slot;
 }
 
-// The point a shape is built around, exact in its own numbers: the centroid a
-// shape of its type stores. A body of one shape puts its centre of mass there,
-// so a circle or a polygon centred on the origin keeps its origin bit for bit.
-Vec2 storedCentroid(const Shape& shape) {
-  switch (shape.type()) {
-    case ShapeType::Circle: return shape.circle().center;
-    case ShapeType::Capsule: return Real(0.5) * (shape.capsule().center1 + shape.capsule().center2);
-    case ShapeType::Polygon: return shape.polygon().centroid;
-    case ShapeType::Segment:
-    case ShapeType::ChainSegment: return Vec2::Zero();
-  }
-  return Vec2::Zero();
-}
-
 BroadPhase::ProxyKind proxyKindOf(const Body& body) {
   return body.isStatic ? BroadPhase::ProxyKind::Static : BroadPhase::ProxyKind::Movable;
 }
@@ -45,23 +31,18 @@ void translateShapes(WorldData& world, std::int32_t body, const Vec2& offset) {
 
 // The union's mass properties in the body's frame, each shape weighed with
 // its own density.
-MassProperties unionMass(const WorldData& world, std::int32_t body) {
-  std::array<MassProperties, kMaxShapesPerBody> parts;
-  std::size_t count = 0;
-  std::int32_t solidShapes = 0;
-  Vec2 onlyCentroid = Vec2::Zero();
+MassProperties unionMass(WorldData& world, std::int32_t body) {
+  // Only shapes with mass count: a body of segments alone (a static chain)
+  // keeps its origin. A single part comes back unchanged, so a circle or
+  // polygon centred on the origin keeps its origin bit for bit.
+  std::vector<MassProperties>& parts = world.massParts;
+  parts.clear();
   world.forEachShape(body, [&](std::int32_t s) {
     const ShapeSlot& slot = world.shapes[s];
-    parts[count++] = computeMassProperties(slot.shape, slot.coefficients.density);
-    if (isSolid(slot.type())) {
-      ++solidShapes;
-      onlyCentroid = storedCentroid(slot.shape);
-    }
+    if (isSolid(slot.type())) parts.push_back(computeMassProperties(slot.shape, slot.coefficients.density));
   });
-  MassProperties total = combineMassProperties(std::span(parts.data(), count));
-  if (solidShapes == 1) total.center = onlyCentroid;
-  if (solidShapes == 0) total.center = Vec2::Zero();
-  return total;
+  if (parts.empty()) return {};
+  return combineMassProperties(parts);
 }
 
 }  // namespace

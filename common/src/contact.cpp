@@ -221,8 +221,6 @@ void collideContacts(WorldData& world, Real /*dt*/) {
   world.contactsToCollide.assign(world.activeContacts);
   world.contactsToCollide.forEachDescending([&](std::int32_t index) {
     Contact& contact = world.contacts[index];
-    const Body& a = world.bodies[contact.edges.bodyA];
-    const Body& b = world.bodies[contact.edges.bodyB];
     if (!world.broadPhase.fatAABBsOverlap(world.shapes[contact.shapeA].proxyKey,
                                           world.shapes[contact.shapeB].proxyKey)) {
       destroyContact(world, index);

@@ -91,6 +91,7 @@ struct WorldData {
   GraphColoring coloring;
   std::vector<std::int32_t> islandStack;
   std::vector<std::int32_t> islandBodies;
+  std::vector<MassProperties> massParts;
 
   StepProfile profile;
   std::uint64_t stepCount = 0;

@@ -77,7 +77,7 @@ TEST(PresetLoading, OutOfRangeIdReturnsNothing_AndLeavesWorldUntouched) {
     EXPECT_EQ(world.bodyCount(), bodies);
     EXPECT_EQ(world.gravity(), Vec2(1, -2));
   }
-  EXPECT_EQ(kPresetCount, 18);
+  EXPECT_EQ(kPresetCount, 22);
 }
 
 TEST(PresetLoading, LoadingAPresetReplacesThePreviousScene_AndResetsGravity) {

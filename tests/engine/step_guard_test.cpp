@@ -23,7 +23,9 @@ std::int32_t addMovedCircle(WorldData& world, const Vec2& start) {
   body.awake = true;
   body.center0 = start;
   body.transform.p = start;
-  createShapeProxy(world, attachShape(world, slot, {Shape::makeCircle(Real(0.5))}));
+  ShapeDef circle;
+  circle.shape = Shape::makeCircle(Real(0.5));
+  createShapeProxy(world, attachShape(world, slot, circle));
   world.awakeBodies.push_back(slot);
   world.movedBodies.push_back(world.idOf(slot));
   return slot;

@@ -119,7 +119,8 @@ class World {
   /// say so (a segment has no area, so no mass to be dynamic with).
   CreateResult createSegment(const Vec2& point1, const Vec2& point2, const BodyOptions& options = {});
   /// A chain of one-sided segments through world-space points (terrain):
-  /// open, or a loop whose outside collides when anticlockwise. One body of
+  /// bodies collide on the right of the way the points run (terrain runs
+  /// right to left; an anticlockwise loop holds bodies outside it). One body of
   /// up to kMaxShapesPerBody segments; static unless the options say
   /// kinematic. Refused as buildChain refuses.
   CreateResult createChain(std::span<const Vec2> points, bool loop, const BodyOptions& options = {});

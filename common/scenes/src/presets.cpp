@@ -9,17 +9,20 @@
 #include "impulse/field_kinds.h"
 #include "impulse/scenes/field_scenes.h"
 #include "impulse/scenes/presets.h"
+#include "shape_presets.h"
 
 namespace impulse {
 
 namespace {
 
-constexpr Real kBorder = Real(0.78125);  // visible wall and floor thickness
+constexpr Real kBorder = kSceneBorder;
 constexpr Real kFloor = kBorder;         // top of the floor
 constexpr Real kBallRadius = Real(0.625);
 // The seed's balls roll to a stop on the floor; ours do it with real rolling
 // resistance (in the material) plus this air drag, in 1/s.
 constexpr Real kAirDrag = Real(0.25);
+
+}  // namespace
 
 void addStaticBox(World& world, Vec2 lower, Vec2 upper) {
   std::array<Vec2, 4> corners = {lower, Vec2(upper.x(), lower.y()), upper, Vec2(lower.x(), upper.y())};
@@ -33,6 +36,8 @@ void addBoundary(World& world) {
   addStaticBox(world, Vec2(-kBorder, 0), Vec2(kBorder, size.y()));
   addStaticBox(world, Vec2(size.x() - kBorder, 0), Vec2(size.x() + kBorder, size.y()));
 }
+
+namespace {
 
 void addCeiling(World& world) {
   const Vec2 size = kSceneSize;
@@ -83,7 +88,7 @@ void addShelf(World& world) {
 
 PresetInfo sandbox(World& world) {
   addBoundary(world);
-  return {0, "Sandbox", {"Draw polygons (P) and circles (O); X shows the controls."}, {}, true};
+  return {0, "Sandbox", {"Draw polygons (P) and circles (O); X shows the controls."}, {}, true, {}};
 }
 
 PresetInfo rampPreset(World& world) {
@@ -97,7 +102,7 @@ PresetInfo rampPreset(World& world) {
            "It stops well short of the right wall: rolling resistance at the contact",
            "and air drag take its kinetic energy."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo valleyPreset(World& world) {
@@ -117,7 +122,7 @@ PresetInfo valleyPreset(World& world) {
            "rolling resistance and drag, so it cannot climb as high on the other side.",
            "It rolls back, oscillates with shrinking amplitude and rests in the middle."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo polygonTutorial(World& world) {
@@ -132,7 +137,7 @@ PresetInfo polygonTutorial(World& world) {
           {{Vec2(Real(12.5), Real(9.375)), r},
            {Vec2(Real(15.625), Real(10.9375)), r},
            {Vec2(Real(18.75), Real(9.375)), r}},
-          true};
+          true, {}};
 }
 
 PresetInfo circleTutorial(World& world) {
@@ -144,7 +149,7 @@ PresetInfo circleTutorial(World& world) {
            "Press and drag: the press sets the centre, the drag the radius.",
            "Press O again to create the circle. Try it with the two markers."},
           {{centre, Real(0.3125)}, {centre, Real(1.25)}},
-          true};
+          true, {}};
 }
 
 PresetInfo collisionPreset(World& world) {
@@ -159,7 +164,7 @@ PresetInfo collisionPreset(World& world) {
            "The first slows down and the second moves off: momentum is conserved,",
            "and the restitution of the material decides how much energy is kept."},
           {},
-          false};
+          false, {}};
 }
 
 /// Two levels, each a ramp with a ball and a target ball at the same place.
@@ -185,7 +190,7 @@ PresetInfo massPreset(World& world) {
            "The lower target has twice the radius, so four times the mass:",
            "the same impulse gives it less speed and it ends nearer its start."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo speedPreset(World& world) {
@@ -196,7 +201,7 @@ PresetInfo speedPreset(World& world) {
            "A faster ball exerts a greater impulse on an equal target,",
            "which then travels further."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo weightlessCrowd(World& world) {
@@ -218,7 +223,7 @@ PresetInfo weightlessCrowd(World& world) {
            "Many simultaneous collisions: everything settles and nothing",
            "leaves the box."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo frictionPreset(World& world, Material selected) {
@@ -229,7 +234,7 @@ PresetInfo frictionPreset(World& world, Material selected) {
            "of the material selected now (keypad 1-5 or F5-F9, then reload).",
            "Friction and rolling resistance decide how far each rolls."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo restitutionPreset(World& world) {
@@ -245,7 +250,7 @@ PresetInfo restitutionPreset(World& world) {
           {"Five balls, one per material, dropped from the same height.",
            "Each bounces back by its restitution: RUBBER highest, METAL lowest."},
           {},
-          false};
+          false, {}};
 }
 
 
@@ -279,7 +284,7 @@ PresetInfo springPreset(World& world) {
            "Its period is 2*pi*sqrt(m/k) = 2 s whatever the amplitude, and gravity",
            "only moves the middle of the swing down by m*g/k."},
           {},
-          false};
+          false, {}};
 }
 
 /// One ball of the cradle or the pendulum hanging by a rod from `pivot`.
@@ -315,7 +320,7 @@ PresetInfo pendulumPreset(World& world) {
            "Right: Newton's cradle. The first ball strikes the row and its momentum",
            "passes through the three at rest to the last, which swings out."},
           {},
-          false};
+          false, {}};
 }
 
 /// A plank of `length` from `from` at `angle`, 0.2 m thick below the line.
@@ -365,7 +370,7 @@ PresetInfo chainBridgePreset(World& world) {
            "into a chain curve. The posts carry the whole weight: the vertical forces",
            "of the two end pins add up to the weight of the planks and the balls."},
           {},
-          false};
+          false, {}};
 }
 
 /// Uneven ground: bumps of alternating heights on the floor.
@@ -382,13 +387,13 @@ void addBumps(World& world) {
 constexpr Real kCarWheelSpeed = -6;
 constexpr Real kCarWheelRadius = Real(0.5);
 
-PresetInfo carPreset(World& world) {
-  addBoundary(world);
-  addBumps(world);
-  const Real axle = kFloor + kCarWheelRadius;
+}  // namespace
+
+BodyId addCar(World& world, Real left, Real ground) {
+  const Real axle = ground + kCarWheelRadius;
   const Real chassisBottom = axle + Real(0.3);
-  std::array<Vec2, 4> body = {Vec2(2, chassisBottom), Vec2(5, chassisBottom),
-                              Vec2(5, chassisBottom + Real(0.5)), Vec2(2, chassisBottom + Real(0.5))};
+  std::array<Vec2, 4> body = {Vec2(left, chassisBottom), Vec2(left + 3, chassisBottom),
+                              Vec2(left + 3, chassisBottom + Real(0.5)), Vec2(left, chassisBottom + Real(0.5))};
   const BodyId chassis = world.createPolygon(body, {.material = Material::Wood}).id;
   // Springs and motors from the masses: each axle carries half the chassis
   // on a 1.5 Hz suspension damped at 0.7 of critical; the motors could
@@ -397,7 +402,7 @@ PresetInfo carPreset(World& world) {
   const Real omega = 2 * std::numbers::pi_v<Real> * Real(1.5);
   WheelJointSettings axleSettings{Vec2(0, 1), share * omega * omega,
                                   2 * Real(0.7) * share * omega, true, kCarWheelSpeed, 0};
-  for (const Real x : {Real(2.5), Real(4.5)}) {
+  for (const Real x : {left + Real(0.5), left + Real(2.5)}) {
     const Vec2 centre(x, axle);
     const BodyId wheel =
         world.createCircle(centre, kCarWheelRadius, {.material = Material::Rubber}).id;
@@ -405,13 +410,22 @@ PresetInfo carPreset(World& world) {
     axleSettings.maxMotorTorque = Real(0.6) * carried * Real(9.81) * kCarWheelRadius;
     world.createJoint({chassis, wheel, centre, centre, false, axleSettings});
   }
+  return chassis;
+}
+
+namespace {
+
+PresetInfo carPreset(World& world) {
+  addBoundary(world);
+  addBumps(world);
+  addCar(world, 2, kFloor);
   return {14,
           "Car",
           {"A car with two motorised wheels on sprung axles drives over bumps.",
            "The motors hold the wheels at 6 rad/s; rolling without slipping the car",
            "moves at wheel speed times radius, 3 m/s, and the springs soak up the bumps."},
           {},
-          false};
+          false, {}};
 }
 
 // ------------------------------------------------------------ field scenes
@@ -440,7 +454,7 @@ PresetInfo orbitsPreset(World& world) {
            "Kepler: T = 2*pi*sqrt(r^3 / (G M)), so radii 3, 5 and 7.5 m give periods",
            "of 8 s, 17.2 s and 31.7 s. The step is symplectic: the orbits do not spiral."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo floatingPreset(World& world) {
@@ -470,7 +484,7 @@ PresetInfo floatingPreset(World& world) {
            "ICE floats 10 % under, RUBBER 20 %, SOLID 50 %, WOOD 70 %; METAL (2000)",
            "sinks. The plank lands tilted and rights itself: its metacentre is high."},
           {},
-          false};
+          false, {}};
 }
 
 PresetInfo fansPreset(World& world) {
@@ -500,7 +514,7 @@ PresetInfo fansPreset(World& world) {
            "Light ICE balls hover where the drag 1/2 rho w u^2 equals their weight;",
            "balls behind others are in their shadow and drop. Outside the cones: no air."},
           {},
-          false};
+          false, {}};
 }
 
 }  // namespace
@@ -527,7 +541,11 @@ std::optional<PresetInfo> loadPreset(World& world, int id, Material selected) {
     case 14: return carPreset(world);
     case 15: return orbitsPreset(world);
     case 16: return floatingPreset(world);
-    default: return fansPreset(world);
+    case 17: return fansPreset(world);
+    case 18: return terrainCarPreset(world);
+    case 19: return elevatorPreset(world);
+    case 20: return tumblerPreset(world);
+    default: return ragdollStairsPreset(world);
   }
 }
 

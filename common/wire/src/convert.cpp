@@ -239,6 +239,7 @@ Decoded<Shape> polygonFromWire(const v1::Polygon& wire) {
   auto radius = realFromWire(wire.radius(), "shape.polygon.radius");
   if (!radius.ok()) return Decoded<Shape>::failure(std::move(radius.error));
   polygon.radius = *radius.value;
+  polygon.centroid = computePolygonCentroid(polygon);
   return Decoded<Shape>::success(Shape::makePolygon(polygon));
 }
 

@@ -2,6 +2,7 @@
 /// The scenes of SPEC.md (presets 0-10) and the joint scenes (11-14), built
 /// into a world. Server, tests and benchmark share them.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,15 +25,22 @@ struct PresetInfo {
   std::vector<Marker> markers;
   /// Whether users may draw shapes in this scene (sandbox and tutorials).
   bool drawingAllowed = false;
+  /// The scene's script, for scenes with moving parts (a kinematic
+  /// elevator): run before every step with the simulated time at the step's
+  /// start and the step's length. Unset for most scenes; a world replaced by
+  /// a clear or a scene load drops it.
+  std::function<void(World& world, double time, Real dt)> drive;
 };
 
 /// 0-10 are SPEC.md's; 11-14 show joints (spring, pendulum and cradle, chain
-/// bridge, car); 15-17 fields (orbits, floating, fans).
-inline constexpr int kPresetCount = 18;
+/// bridge, car); 15-17 fields (orbits, floating, fans); 18-21 shapes (a car
+/// on chain terrain, a kinematic elevator, a tumbler, capsule ragdolls on
+/// stairs).
+inline constexpr int kPresetCount = 22;
 /// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
 inline const Vec2 kSceneSize = Vec2(25, Real(18.75));
 
-/// Clears the world, resets gravity and builds preset `id` (0..17).
+/// Clears the world, resets gravity and builds preset `id` (0..21).
 /// `selected` is the viewer's current material (preset 9 uses it).
 /// Returns nothing for an id out of range, leaving the world untouched.
 std::optional<PresetInfo> loadPreset(World& world, int id, Material selected = Material::Solid);
