@@ -31,7 +31,9 @@ Simulation::Simulation(const SimulationSettings& settings)
 
 void Simulation::step() {
   const auto start = std::chrono::steady_clock::now();
-  world_.step(Real(1.0 / tickHz_));
+  const Real dt = Real(1.0 / tickHz_);
+  if (preset_.drive) preset_.drive(world_, world_.simulatedTime(), dt);
+  world_.step(dt);
   ++tick_;
   stepTimes_.record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
@@ -167,6 +169,7 @@ bool Simulation::loadPreset(int id, Material selected) {
 
 void Simulation::clear() {
   world_.clear();
+  preset_.drive = nullptr;
   changes_.replaced();
   ++version_;
 }
@@ -174,6 +177,8 @@ void Simulation::clear() {
 InputResult Simulation::loadScene(std::string_view data) {
   InputResult loaded = wire::loadScene(world_, data);
   if (!loaded) return loaded;
+  // The scene's bodies are not the ones the preset's script moved.
+  preset_.drive = nullptr;
   changes_.replaced();
   ++version_;
   return loaded;
