@@ -1,5 +1,5 @@
 #pragma once
-/// The scenes of SPEC.md (presets 0-10) and the joint scenes (11-14), built
+/// The scenes of docs/product.md (presets 0-10) and the joint scenes (11-14), built
 /// into a world. Server, tests and benchmark share them.
 
 #include <string>
@@ -26,7 +26,7 @@ struct PresetInfo {
   bool drawingAllowed = false;
 };
 
-/// 0-10 are SPEC.md's; 11-14 show joints (spring, pendulum and cradle, chain
+/// 0-10 are docs/product.md's; 11-14 show joints (spring, pendulum and cradle, chain
 /// bridge, car); 15-17 fields (orbits, floating, fans).
 inline constexpr int kPresetCount = 18;
 /// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
