@@ -4,7 +4,7 @@
 IMPULSE_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 IMPULSE_PACKAGES=(cmake g++ make ccache pkg-config libeigen3-dev libgtest-dev libbenchmark-dev
   libasio-dev libprotobuf-dev protobuf-compiler libsdl2-dev libimgui-dev libcli11-dev
-  nlohmann-json3-dev fonts-dejavu-core
+  nlohmann-json3-dev fonts-dejavu-core python3-protobuf
   xvfb libbox2d-dev libchipmunk-dev clang libclang-rt-14-dev)
 
 install_missing_packages() {

@@ -17,7 +17,7 @@
 
 namespace load {
 
-/// What a subscriber asks for in Hello (PROTOCOL.md, "Compact snapshots").
+/// What a subscriber asks for in Hello (docs/protocol.md, "Compact snapshots").
 enum class Encoding { Plain, Quantized };
 
 /// "plain" or "quantized"; false for a name this build does not know.

@@ -60,7 +60,7 @@ bool Arguments::maxWords(std::size_t count) {
 
 namespace {
 
-// NAME=VALUE words of the per-body properties (PROTOCOL.md), each setting
+// NAME=VALUE words of the per-body properties (docs/protocol.md), each setting
 // one SpawnOptions field; ranges are the server's to judge.
 struct PropertyWord {
   std::string_view name;

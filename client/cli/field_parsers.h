@@ -1,5 +1,5 @@
 #pragma once
-// The script words that add force fields (PROTOCOL.md, "Fields"), one per
+// The script words that add force fields (docs/protocol.md, "Fields"), one per
 // kind; rows of the command table (impulse/wire/command_table.h).
 
 #include <optional>

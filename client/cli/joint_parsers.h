@@ -1,5 +1,5 @@
 #pragma once
-// The script words that create and change joints (PROTOCOL.md, "Joints"),
+// The script words that create and change joints (docs/protocol.md, "Joints"),
 // one per joint kind; rows of the command table (impulse/wire/command_table.h).
 
 #include <cstdint>

@@ -340,7 +340,7 @@ void Controls::pinSelected(const ControlContext& context, double now) {
 }
 
 void Controls::scaleTime(const ControlContext& context, double factor, double now) {
-  // The server's range (PROTOCOL.md, "Time"): 0.01x to 16x.
+  // The server's range (docs/protocol.md, "Time"): 0.01x to 16x.
   constexpr double kSlowest = 0.01;
   constexpr double kFastest = 16;
   const double wanted = std::clamp(context.timeScale * factor, kSlowest, kFastest);

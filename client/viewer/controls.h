@@ -1,5 +1,5 @@
 #pragma once
-/// The viewer's controls (SPEC.md's table plus time, hands, view and debug
+/// The viewer's controls (docs/product.md's table plus time, hands, view and debug
 /// keys) as a state machine without a window: abstract key and pointer
 /// events in, protocol commands and view state out. key_map.h turns SDL keys
 /// into Control values.
@@ -267,7 +267,7 @@ class Controls {
   bool dragging_ = false;
 };
 
-/// The material's name as SPEC.md writes it (SOLID, ICE, ...).
+/// The material's name as docs/product.md writes it (SOLID, ICE, ...).
 std::string materialLabel(Material material);
 
 }  // namespace impulse::viewer

@@ -7,7 +7,7 @@ namespace impulse::viewer {
 
 namespace {
 
-// SPEC.md's control table and the viewer's own keys, as the panel shows them.
+// docs/product.md's control table and the viewer's own keys, as the panel shows them.
 constexpr std::array<std::pair<const char*, const char*>, 31> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},

@@ -1,5 +1,5 @@
 #pragma once
-/// SPEC.md's key table: SDL keys to the viewer's controls.
+/// docs/product.md's key table: SDL keys to the viewer's controls.
 
 #include <SDL_keycode.h>
 

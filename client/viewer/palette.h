@@ -1,5 +1,5 @@
 #pragma once
-/// Colours of the viewer: SPEC.md's material colours and how static and
+/// Colours of the viewer: docs/product.md's material colours and how static and
 /// sleeping bodies are shown. Tests use the same functions to find bodies in
 /// screenshots.
 
@@ -17,7 +17,7 @@ struct Colour {
   friend bool operator==(const Colour&, const Colour&) = default;
 };
 
-/// SPEC.md: SOLID white, ICE light blue, WOOD brown, METAL grey, RUBBER orange;
+/// docs/product.md: SOLID white, ICE light blue, WOOD brown, METAL grey, RUBBER orange;
 /// issue 15: STONE dark taupe, GLASS pale aqua, FOAM cream.
 Colour materialColour(Material material);
 

@@ -52,7 +52,7 @@ std::string secretFlag(std::string_view name, std::string_view text, std::string
   return {};
 }
 
-// Empty when the access settings are consistent (PROTOCOL.md, Access).
+// Empty when the access settings are consistent (docs/protocol.md, Access).
 std::string checkAccess(const ServerOptions& options) {
   if (!isLoopbackAddress(options.bind) && options.token.empty()) {
     return "refusing to bind " + options.bind +

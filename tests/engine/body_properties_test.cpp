@@ -1,4 +1,4 @@
-// Per-body properties given through BodyOptions (PROTOCOL.md "Per-body
+// Per-body properties given through BodyOptions (docs/protocol.md "Per-body
 // properties"): density, friction, restitution, damping and gravity scale,
 // checked against closed forms and reported back by bodyDescription.
 

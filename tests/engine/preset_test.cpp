@@ -1,4 +1,4 @@
-// Every preset's outcome in SPEC.md, asserted from body states.
+// Every preset's outcome in docs/product.md, asserted from body states.
 
 #include "impulse/scenes/presets.h"
 
@@ -18,7 +18,7 @@ namespace {
 
 using namespace impulse::test;
 
-// Layout figures of SPEC.md (the seed's canvas at 32 px/m).
+// Layout figures of docs/product.md (the seed's canvas at 32 px/m).
 constexpr double kBorder = 0.78125;  // wall and floor thickness
 constexpr double kFloorTop = kBorder;
 constexpr double kRightWallFace = 25 - kBorder;   // inner face of the right wall

@@ -1,4 +1,4 @@
-// Access at start (PROTOCOL.md, "Access"): a server bound beyond loopback
+// Access at start (docs/protocol.md, "Access"): a server bound beyond loopback
 // without a token refuses to start, saying how to give one; a token from
 // the environment (the Docker image's way) is enough.
 #include <sys/wait.h>

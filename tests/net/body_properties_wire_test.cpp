@@ -1,4 +1,4 @@
-// Per-body properties over the wire (PROTOCOL.md, "Per-body properties"):
+// Per-body properties over the wire (docs/protocol.md, "Per-body properties"):
 // spawn options reach the engine, and BodyDescriptor and BodyInfo report the
 // values in force; bad numbers are refused naming the field.
 #include "net_test_support.h"

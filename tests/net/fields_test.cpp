@@ -1,4 +1,4 @@
-// Fields on the wire (PROTOCOL.md, "Fields"): each kind added through the
+// Fields on the wire (docs/protocol.md, "Fields"): each kind added through the
 // client library and answered with a field_id, carried by snapshots (added,
 // removed, every field in a full snapshot), refused with the field and its
 // range, and the CLI words; presets 15-17 bring their fields.

@@ -1,4 +1,4 @@
-// Joints on the wire (PROTOCOL.md, "Joints"): each command accepted and
+// Joints on the wire (docs/protocol.md, "Joints"): each command accepted and
 // answered, refused with an error naming the field, and carried by
 // snapshots (added, removed, every joint in a full snapshot, and the joints
 // a removed body takes with it).

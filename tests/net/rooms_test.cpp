@@ -1,4 +1,4 @@
-// Rooms (PROTOCOL.md, "Rooms"; docs/server.md): Hello.room, ListRooms,
+// Rooms (docs/protocol.md, "Rooms"; docs/server.md): Hello.room, ListRooms,
 // rooms made on first join and dropped when empty, the limits on rooms and
 // on bodies per room, room names, and rooms ticking in parallel.
 #include <algorithm>

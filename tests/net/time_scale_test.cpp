@@ -1,4 +1,4 @@
-// SetTimeScale (PROTOCOL.md, "Time") at the Simulation: N wall ticks at
+// SetTimeScale (docs/protocol.md, "Time") at the Simulation: N wall ticks at
 // scale s run floor(s N) world steps of the unchanged tick dt, so simulated
 // time advances by s N dt within one step, whatever s.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Material colours: every pair of the eight materials (SPEC.md's five and
+// Material colours: every pair of the eight materials (docs/product.md's five and
 // issue 15's STONE, GLASS, FOAM) tells apart at a glance, and none is the
 // sleep outline's violet.
 #include "palette.h"

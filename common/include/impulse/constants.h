@@ -14,7 +14,7 @@ inline constexpr Real kSpeculativeDistance = 4 * kLinearSlop;
 /// Fat AABB margin: a moving proxy is re-inserted in the tree only after it
 /// leaves its enlarged box.
 inline constexpr Real kAabbMargin = Real(0.1);
-/// Polygon vertex limits of SPEC.md.
+/// Polygon vertex limits of docs/product.md.
 inline constexpr int kMinPolygonVertices = 3;
 inline constexpr int kMaxPolygonVertices = 16;
 

@@ -1,5 +1,5 @@
 #pragma once
-/// Materials of SPEC.md and how two materials combine at a contact.
+/// Materials of docs/product.md and how two materials combine at a contact.
 
 #include <cstdint>
 #include <optional>

@@ -1,4 +1,4 @@
-// The scenes of SPEC.md. Layout follows the seed's 800x600 px canvas at
+// The scenes of docs/product.md. Layout follows the seed's 800x600 px canvas at
 // 32 px/m: a floor and two walls whose visible parts are 25 px (0.78 m) thick,
 // ramps as static triangles, balls of 20 px (0.625 m) radius.
 

@@ -164,7 +164,7 @@ std::string optionalFromWire(bool present, double value, std::string_view what,
   return {};
 }
 
-// The per-body properties (PROTOCOL.md) checked for finiteness here; their
+// The per-body properties (docs/protocol.md) checked for finiteness here; their
 // ranges are the engine's to judge (World::createBody names the field).
 std::string propertiesFromWire(const v1::BodyOptions& options, BodyOptions& result) {
   MaterialOverride& o = result.materialOverride;

@@ -1,4 +1,4 @@
-// Fields on the wire (PROTOCOL.md, "Fields"). AddField and FieldDescriptor
+// Fields on the wire (docs/protocol.md, "Fields"). AddField and FieldDescriptor
 // carry the same oneof of kinds under the same names, so one template per
 // direction serves both. Here numbers are checked to be finite and fit a
 // float; their ranges are the engine's to judge (makeField).

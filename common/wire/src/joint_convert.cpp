@@ -1,4 +1,4 @@
-// Joints on the wire (PROTOCOL.md, "Joints"). CreateJoint and JointDescriptor
+// Joints on the wire (docs/protocol.md, "Joints"). CreateJoint and JointDescriptor
 // carry the same oneof of kinds under the same names, so one template per
 // direction serves both.
 #include <type_traits>

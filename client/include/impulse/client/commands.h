@@ -22,7 +22,7 @@ struct SpawnOptions {
   double velocityX = 0;
   double velocityY = 0;
   float angularVelocity = 0;
-  /// Per-body properties (PROTOCOL.md); unset: the material's values.
+  /// Per-body properties (docs/protocol.md); unset: the material's values.
   std::optional<double> density{};
   std::optional<double> friction{};
   std::optional<double> restitution{};
@@ -65,7 +65,7 @@ v1::ClientMessage applyImpulse(std::uint32_t id, Point impulse,
 v1::ClientMessage setPaused(bool paused);
 v1::ClientMessage step(std::uint32_t ticks);
 v1::ClientMessage queryBody(std::uint32_t id);
-/// The two ends of a new joint (PROTOCOL.md, "Joints"): anchors are world
+/// The two ends of a new joint (docs/protocol.md, "Joints"): anchors are world
 /// points now; bodyB 0 fixes the joint to the world at anchorB.
 struct JointEnds {
   std::uint32_t bodyA = 0;
@@ -105,7 +105,7 @@ v1::ClientMessage fanField(const v1::Fan& fan);
 v1::ClientMessage removeField(std::uint32_t field);
 /// With `wantStateHash` the Pong's stats carry the world's state hash.
 v1::ClientMessage ping(std::uint64_t clientTimeUs, bool wantStateHash = false);
-/// Simulated seconds per wall second, 0.01..16 (PROTOCOL.md, "Time").
+/// Simulated seconds per wall second, 0.01..16 (docs/protocol.md, "Time").
 v1::ClientMessage setTimeScale(double scale);
 
 /// Answered by a RoomList: every room of the server.

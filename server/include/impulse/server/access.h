@@ -1,5 +1,5 @@
 #pragma once
-/// Access (PROTOCOL.md): tokens at Hello, the admin and player roles, and
+/// Access (docs/protocol.md): tokens at Hello, the admin and player roles, and
 /// which bodies a player created.
 ///
 /// Without tokens every client is admin (the loopback default). With an admin

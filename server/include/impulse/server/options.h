@@ -34,12 +34,12 @@ struct ServerOptions {
   /// tool spawning a few thousand bodies at once). Past it a command is
   /// answered with an error at once and not applied.
   int maxCommandsPerSecond = 2000;
-  /// Access (PROTOCOL.md): required in Hello when set; required to bind
+  /// Access (docs/protocol.md): required in Hello when set; required to bind
   /// anything but loopback.
   std::string token;
   /// Grants the admin role; without it every client is admin.
   std::string adminToken;
-  /// Rooms (PROTOCOL.md): at most this many at once; a Hello naming a new
+  /// Rooms (docs/protocol.md): at most this many at once; a Hello naming a new
   /// room past it is refused. --max-bodies is per room.
   int maxRooms = 16;
   /// Threads stepping the rooms (each room on one thread at a time).

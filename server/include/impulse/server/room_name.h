@@ -1,5 +1,5 @@
 #pragma once
-/// Room names (PROTOCOL.md, Rooms): what Hello.room may hold.
+/// Room names (docs/protocol.md, Rooms): what Hello.room may hold.
 
 #include <cstddef>
 #include <string>

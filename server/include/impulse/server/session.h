@@ -89,7 +89,7 @@ class Session : public std::enable_shared_from_this<Session> {
   void close(const std::string& reason);
 
   std::uint32_t id() const { return id_; }
-  /// The role granted at Hello (PROTOCOL.md, Access).
+  /// The role granted at Hello (docs/protocol.md, Access).
   bool admin() const { return admin_; }
   void setAdmin(bool admin) { admin_ = admin; }
   /// Hello.snapshot_encoding was SNAPSHOT_ENCODING_QUANTIZED.

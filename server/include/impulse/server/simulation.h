@@ -33,7 +33,7 @@ struct SimulationSettings {
   bool paused = false;
 };
 
-/// Range of SetTimeScale (PROTOCOL.md, "Time").
+/// Range of SetTimeScale (docs/protocol.md, "Time").
 inline constexpr double kMinTimeScale = 0.01;
 inline constexpr double kMaxTimeScale = 16;
 

@@ -1,5 +1,5 @@
 #pragma once
-/// The scenes of SPEC.md (presets 0-10) and the joint scenes (11-14), built
+/// The scenes of docs/product.md (presets 0-10) and the joint scenes (11-14), built
 /// into a world. Server, tests and benchmark share them.
 
 #include <functional>
@@ -32,10 +32,10 @@ struct PresetInfo {
   std::function<void(World& world, double time, Real dt)> drive;
 };
 
-/// 0-10 are SPEC.md's; 11-14 show joints (spring, pendulum and cradle, chain
-/// bridge, car); 15-17 fields (orbits, floating, fans); 18-21 shapes (a car
-/// on chain terrain, a kinematic elevator, a tumbler, capsule ragdolls on
-/// stairs).
+/// 0-10 are docs/product.md's; 11-14 show joints (spring, pendulum and
+/// cradle, chain bridge, car); 15-17 fields (orbits, floating, fans); 18-21
+/// shapes (a car on chain terrain, a kinematic elevator, a tumbler, capsule
+/// ragdolls on stairs).
 inline constexpr int kPresetCount = 22;
 /// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
 inline const Vec2 kSceneSize = Vec2(25, Real(18.75));

@@ -1,5 +1,5 @@
 #pragma once
-/// Stress scenes shared by tests and the benchmark (the SPEC.md presets are in
+/// Stress scenes shared by tests and the benchmark (the docs/product.md presets are in
 /// presets.h).
 
 #include <vector>

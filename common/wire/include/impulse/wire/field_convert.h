@@ -1,6 +1,6 @@
 #pragma once
 /// Fields between the engine's FieldDef and the wire's AddField and
-/// FieldDescriptor (PROTOCOL.md, "Fields").
+/// FieldDescriptor (docs/protocol.md, "Fields").
 
 #include <optional>
 #include <string_view>

@@ -18,7 +18,7 @@ namespace impulse::wire {
 
 /// The protocol version this code speaks (Hello/Welcome.protocol_version).
 inline constexpr std::uint32_t kProtocolVersion = 1;
-/// Default cap on one frame's payload (PROTOCOL.md: 1 MiB).
+/// Default cap on one frame's payload (docs/protocol.md: 1 MiB).
 inline constexpr std::size_t kDefaultMaxFrameBytes = std::size_t(1) << 20;
 /// A base-128 varint of a 64-bit value never needs more bytes than this.
 inline constexpr int kMaxVarintBytes = 10;
