@@ -332,7 +332,7 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
     }
   }
   auto outcome = applyCommand(simulation_, message, limits_);
-  ownership_.recordOutcome(message, outcome.reply, client, simulation_.world());
+  ownership_.recordOutcome(message, outcome.reply, client, simulation_);
   if (outcome.ticksToStep > 0) {
     // The client's later commands wait for its Step, keeping their order.
     commands_.hold(client);

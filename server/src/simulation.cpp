@@ -139,22 +139,25 @@ bool Simulation::loadPreset(int id, Material selected) {
   const auto info = impulse::loadPreset(world_, id, selected);
   if (!info) return false;
   preset_ = *info;
-  changes_.replaced();
-  ++version_;
+  recordReplaced();
   return true;
 }
 
 void Simulation::clear() {
   world_.clear();
+  recordReplaced();
+}
+
+void Simulation::recordReplaced() {
   changes_.replaced();
   ++version_;
+  ++worldGeneration_;
 }
 
 InputResult Simulation::loadScene(std::string_view data) {
   InputResult loaded = wire::loadScene(world_, data);
   if (!loaded) return loaded;
-  changes_.replaced();
-  ++version_;
+  recordReplaced();
   return loaded;
 }
 

@@ -94,6 +94,9 @@ class Simulation {
   const PresetInfo& preset() const { return preset_; }
   /// Changes with every change of the world or its meta: names its state.
   std::uint64_t version() const { return version_; }
+  /// Changes each time the world is replaced (clear, preset, scene), after
+  /// which body and joint ids start over.
+  std::uint64_t worldGeneration() const { return worldGeneration_; }
   /// The changes since the last call, forgotten here. Valid until the next
   /// call: two buffers take turns, so a broadcast allocates no new lists.
   WorldChanges& takeChanges();
@@ -113,6 +116,8 @@ class Simulation {
   /// Records the joints the world removed with their bodies (last
   /// destroyBody call or step).
   void recordRemovedJoints();
+  /// After the world was replaced: the next snapshot is full.
+  void recordReplaced();
 
   double tickHz_;
   World world_;
@@ -121,6 +126,7 @@ class Simulation {
   WorldChanges taken_;
   PresetInfo preset_;
   std::uint64_t version_ = 0;
+  std::uint64_t worldGeneration_ = 0;
   std::uint64_t tick_ = 0;
   bool paused_ = false;
   double timeScale_ = 1;
