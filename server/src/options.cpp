@@ -103,6 +103,16 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 200000, o.maxBodies);
        }},
+      {"--max-fields", true, "N  force fields each room may hold (default 64)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 0, 10000, o.maxFields);
+       }},
+      {"--max-field-cost", true,
+       "N  body interactions per step a room's fields may cost: gravitation n(n-1)/2, "
+       "others n (default 1000000)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 0, 1'000'000'000'000LL, o.maxFieldCost);
+       }},
       {"--max-frame-bytes", true, "N  largest accepted message (default 1048576)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 64, 64 << 20, o.maxFrameBytes);

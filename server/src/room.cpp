@@ -24,7 +24,8 @@ SimulationSettings simulationSettings(const ServerOptions& options) {
           .subSteps = options.subSteps,
           .maxBodies = options.maxBodies,
           .preset = options.preset,
-          .paused = options.paused};
+          .paused = options.paused,
+          .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost}};
 }
 
 // A CommandResult refusing a command before it reached the world.

@@ -23,6 +23,7 @@ WorldSettings worldSettings(const SimulationSettings& settings) {
 
 Simulation::Simulation(const SimulationSettings& settings)
     : tickHz_(settings.tickHz),
+      fieldLimits_(settings.fieldLimits),
       world_(worldSettings(settings)),
       paused_(settings.paused),
       stepTimes_(std::size_t(settings.tickHz + 0.5)) {
@@ -43,10 +44,16 @@ void Simulation::step() {
 }
 
 CreateResult Simulation::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
+  if (std::string refusal = bodyRefusal(world_, fieldLimits_); !refusal.empty()) {
+    return {{}, std::move(refusal)};
+  }
   return recordCreated(world_.createCircle(center, radius, options));
 }
 
 CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
+  if (std::string refusal = bodyRefusal(world_, fieldLimits_); !refusal.empty()) {
+    return {{}, std::move(refusal)};
+  }
   return recordCreated(world_.createPolygon(points, options));
 }
 
@@ -71,6 +78,14 @@ void Simulation::recordRemovedJoints() {
 }
 
 JointResult Simulation::createJoint(const JointDef& def) {
+  // The joint slots a scene may carry (wire::sceneSlotLimits): a world
+  // always reloads its own save.
+  const std::size_t maxJoints = wire::sceneSlotLimits(world_.settings().maxBodies).joints;
+  if (std::size_t(world_.jointCount()) >= maxJoints) {
+    return {{},
+            "joint limit reached: a room holds at most " + std::to_string(maxJoints) + " joints (" +
+                std::to_string(wire::kJointSlotsPerBody) + " per body of --max-bodies)"};
+  }
   const auto created = world_.createJoint(def);
   if (created.ok()) {
     changes_.jointAdded(created.id);
@@ -121,6 +136,9 @@ InputResult Simulation::setGravity(const Vec2& gravity) {
 FieldResult Simulation::addField(const FieldDef& def) {
   FieldBuild build = makeField(def);
   if (!build.ok()) return {{}, build.error};
+  if (std::string refusal = fieldRefusal(world_, def, fieldLimits_); !refusal.empty()) {
+    return {{}, std::move(refusal)};
+  }
   const FieldId id = world_.addField(std::move(build.field));
   // The bodies it wakes go out with the next step's moved bodies.
   changes_.fieldAdded(id);
@@ -155,8 +173,14 @@ void Simulation::recordReplaced() {
 }
 
 InputResult Simulation::loadScene(std::string_view data) {
-  InputResult loaded = wire::loadScene(world_, data);
+  // Loaded beside the world, which stays as it is unless every check passes.
+  World candidate(world_.settings());
+  InputResult loaded = wire::loadScene(candidate, data);
   if (!loaded) return loaded;
+  if (std::string refusal = worldRefusal(candidate, fieldLimits_); !refusal.empty()) {
+    return {"scene refused: " + refusal};
+  }
+  world_ = std::move(candidate);
   recordReplaced();
   return loaded;
 }

@@ -21,6 +21,10 @@ struct ServerOptions {
   bool paused = false;
   int maxClients = 64;
   int maxBodies = 10000;
+  /// Force fields per room, and the body interactions per step they may
+  /// cost together (field_budget.h).
+  int maxFields = 64;
+  std::uint64_t maxFieldCost = 1'000'000;
   std::size_t maxFrameBytes = std::size_t(1) << 20;
   /// A client with unsent data that accepts no byte for this long is
   /// disconnected; so is one that has not said Hello by then.

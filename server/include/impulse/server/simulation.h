@@ -12,6 +12,7 @@
 #include "impulse/field_kinds.h"
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
+#include "impulse/server/field_budget.h"
 #include "impulse/server/tick_schedule.h"
 #include "impulse/server/world_changes.h"
 #include "impulse/world.h"
@@ -31,6 +32,7 @@ struct SimulationSettings {
   int maxBodies = 10000;
   int preset = 0;
   bool paused = false;
+  FieldLimits fieldLimits{};
 };
 
 /// Range of SetTimeScale (PROTOCOL.md, "Time").
@@ -53,6 +55,8 @@ class Simulation {
 
   /// Advances one tick.
   void step();
+  /// Bodies are refused past the body limit, and past the fields' cost
+  /// budget (field_budget.h) when the world has fields.
   CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options);
   CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options);
   /// False for an unknown id.
@@ -63,7 +67,8 @@ class Simulation {
   /// False for an unknown id.
   bool removeJoint(JointId id);
   InputResult updateJoint(JointId id, const JointUpdate& update);
-  /// The field, or the error naming the refused number (world unchanged).
+  /// The field, or the error naming the refused number, or the field limit
+  /// or cost budget it would break (world unchanged).
   FieldResult addField(const FieldDef& def);
   /// False for an unknown id.
   bool removeField(FieldId id);
@@ -72,8 +77,8 @@ class Simulation {
   /// Removes every body.
   void clear();
   /// Replaces the world with a serialised Scene (docs/scenes.md); refused,
-  /// with the reason and the world untouched, when it does not parse or
-  /// the engine refuses its state.
+  /// with the reason and the world untouched, when it does not parse, the
+  /// engine refuses its state, or its fields break the field limits.
   InputResult loadScene(std::string_view data);
   void setPaused(bool paused);
   /// Simulated seconds per wall second, kMinTimeScale..kMaxTimeScale; an
@@ -120,6 +125,7 @@ class Simulation {
   void recordReplaced();
 
   double tickHz_;
+  FieldLimits fieldLimits_;
   World world_;
   WorldChanges changes_;
   /// The changes last taken (takeChanges), kept for their lists' capacity.
