@@ -118,7 +118,7 @@ const std::vector<Flag>& flags() {
          return intFlag(f, v, 64, 64 << 20, o.maxFrameBytes);
        }},
       {"--idle-timeout", true,
-       "SECONDS  drop a client that sends nothing and subscribes to nothing for this long "
+       "SECONDS  drop a client that sends nothing for this long, unless snapshots flow to it "
        "(default 30)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return realFlag(f, v, 0.1, 86400, o.idleTimeoutSeconds);
@@ -150,6 +150,11 @@ const std::vector<Flag>& flags() {
       {"--max-rooms", true, "N  rooms at once, 1-1000; a Hello naming a new room past it is refused (default 16)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 1000, o.maxRooms);
+       }},
+      {"--max-rooms-per-address", true,
+       "N  rooms one address may have made and still hold, 1-1000 (default 4)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 1000, o.maxRoomsPerAddress);
        }},
       {"--health-port", true,
        "N  answer HTTP GET /healthz and /readyz on this port (0 picks a free one; default none)",

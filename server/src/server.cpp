@@ -2,6 +2,7 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "impulse/server/log.h"
@@ -84,7 +85,8 @@ void Server::stop() {
 
 // -------------------------------------------------------------------- rooms
 
-std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello& hello) {
+std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello& hello,
+                                                                 const std::string& address) {
   if (std::string refusal = roomNameRefusal(hello.room()); !refusal.empty()) return refusal;
   const std::string name = roomNameOf(hello.room());
   if (const auto it = rooms_.find(name); it != rooms_.end()) return it->second;
@@ -92,8 +94,16 @@ std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello
     return "room limit reached: this server holds at most " + std::to_string(options_.maxRooms) +
            " rooms (--max-rooms); join an existing one (ListRooms) or another server";
   }
+  const auto made =
+      std::ranges::count_if(roomMaker_, [&](const auto& entry) { return entry.second == address; });
+  if (made >= options_.maxRoomsPerAddress) {
+    return "room limit for " + address + " reached: it made " + std::to_string(made) +
+           " rooms that are still open (at most " + std::to_string(options_.maxRoomsPerAddress) +
+           " per address, --max-rooms-per-address); join an existing one (ListRooms)";
+  }
   auto room = std::make_shared<Room>(name, io_, steppers_, options_, *this);
   rooms_[name] = room;
+  roomMaker_[name] = address;
   room->start();
   logLine("room " + name + " made (" + std::to_string(rooms_.size()) + " rooms)");
   return room;
@@ -183,7 +193,7 @@ std::string Server::admissionRefusal(const Session& newcomer) {
 void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& hello) {
   const Admission admission = admit(tokens_, hello.token());
   if (!admission.error.empty()) return session->reject(admission.error);
-  auto room = roomFor(hello);
+  auto room = roomFor(hello, session->address());
   if (const auto* refusal = std::get_if<std::string>(&room)) return session->reject(*refusal);
   session->setAdmin(admission.admin);
   const auto& joined = std::get<std::shared_ptr<Room>>(room);
@@ -204,6 +214,7 @@ void Server::onClosed(Session& session) {
     if (room->empty() && room->name() != kDefaultRoom && !stopped_) {
       room->stop();
       rooms_.erase(room->name());
+      roomMaker_.erase(room->name());
       logLine("room " + room->name() + " dropped: its last client left");
     }
   }

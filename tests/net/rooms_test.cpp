@@ -132,6 +132,52 @@ TEST(Rooms, RoomLimitIsRefusedWithAClearError) {
   EXPECT_EQ(listRooms(joiner).rooms_size(), 2);
 }
 
+// Issue 30: 15 silent connections from one address took every room. An
+// address may hold the rooms it made up to its share; joining is not limited.
+TEST(Rooms, OneAddressMakesAtMostItsShareOfRooms) {
+  ServerProcess server({"--max-rooms-per-address", "2"});
+  std::optional<client::Client> a(inRoom(server.port(), "a"));
+  client::Client b(inRoom(server.port(), "b"));
+  const auto error = helloError(server.port(), "c");
+  ASSERT_TRUE(error);
+  EXPECT_EQ(*error,
+            "room limit for 127.0.0.1 reached: it made 2 rooms that are still open (at most 2 per "
+            "address, --max-rooms-per-address); join an existing one (ListRooms)");
+  client::Client joiner(inRoom(server.port(), "b"));
+  // A room dropped (its last client left) gives its share back.
+  a.reset();
+  const auto deadline = SteadyClock::now() + milliseconds(3000);
+  while (findRoom(listRooms(joiner), "a") && SteadyClock::now() < deadline) {
+    std::this_thread::sleep_for(milliseconds(20));
+  }
+  client::Client c(inRoom(server.port(), "c"));
+  EXPECT_TRUE(findRoom(listRooms(c), "c"));
+}
+
+// Issue 30: subscribers were exempt from the idle limit and a paused room
+// sends nothing, so silent subscribers held rooms forever. Now one that is
+// sent nothing either times out; a subscriber of a running room does not.
+TEST(Rooms, SilentSubscriberOfAPausedRoomTimesOut_OneOfARunningRoomStays) {
+  ServerProcess server({"--paused", "--idle-timeout", "1"});
+  RawConnection silent(server.port());
+  const auto start = SteadyClock::now();
+  silent.sendHello(1, true);
+  const auto error = silent.receiveError(milliseconds(5000));
+  const double seconds = std::chrono::duration<double>(SteadyClock::now() - start).count();
+  ASSERT_TRUE(error);
+  EXPECT_EQ(*error,
+            "idle: sent nothing and was sent no snapshot (its room is paused) for 1.000000 s");
+  EXPECT_GE(seconds, 1.0);
+  EXPECT_LT(seconds, 2.5);
+
+  client::Client watcher(inRoom(server.port(), "running", true));
+  ASSERT_TRUE(result(watcher.request(client::setPaused(false))).ok());
+  const auto until = SteadyClock::now() + milliseconds(3000);
+  while (SteadyClock::now() < until) watcher.poll(milliseconds(50));
+  EXPECT_GT(watcher.mirror().tick(), 100u);
+  EXPECT_NO_THROW(watcher.ping());
+}
+
 TEST(Rooms, BadRoomNamesAreRefused) {
   ServerProcess server;
   const std::string rule = "room names are 1-64 characters of A-Z a-z 0-9 _ - .";

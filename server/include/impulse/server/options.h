@@ -29,8 +29,8 @@ struct ServerOptions {
   /// A client with unsent data that accepts no byte for this long is
   /// disconnected; so is one that has not said Hello by then.
   double stallTimeoutSeconds = 10;
-  /// A client past Hello that sends nothing and subscribes to nothing for
-  /// this long is disconnected (subscribers are covered by the stall timeout).
+  /// A client past Hello that sends nothing for this long is disconnected,
+  /// unless it subscribes and snapshots flow to it (its room runs).
   double idleTimeoutSeconds = 30;
   /// Simultaneous connections from one IP address.
   int maxClientsPerAddress = 16;
@@ -46,6 +46,8 @@ struct ServerOptions {
   /// Rooms (PROTOCOL.md): at most this many at once; a Hello naming a new
   /// room past it is refused. --max-bodies is per room.
   int maxRooms = 16;
+  /// Rooms one IP address may have made and still hold at once.
+  int maxRoomsPerAddress = 4;
   /// Threads stepping the rooms (each room on one thread at a time).
   int roomThreads = 2;
   /// The HTTP health probes' port on the bind address (health_endpoint.h);

@@ -51,7 +51,9 @@ class Server final : public SessionHost, public RoomHost {
   /// by evicting an idle connection when it can.
   std::string admissionRefusal(const Session& newcomer);
   /// The room Hello names, made if it is new; or why the client may not join.
-  std::variant<std::shared_ptr<Room>, std::string> roomFor(const v1::Hello& hello);
+  /// The room a Hello names, made if new; or why not.
+  std::variant<std::shared_ptr<Room>, std::string> roomFor(const v1::Hello& hello,
+                                                           const std::string& address);
   /// The room a client joined; null before Hello.
   std::shared_ptr<Room> roomOf(const Session& session) const;
   void scheduleHousekeeping();
@@ -75,6 +77,8 @@ class Server final : public SessionHost, public RoomHost {
   /// dropped when its last member leaves.
   std::map<std::string, std::shared_ptr<Room>> rooms_;
   std::map<std::uint32_t, std::shared_ptr<Room>> roomOfClient_;
+  /// The address that made each room it holds (the default room has none).
+  std::map<std::string, std::string> roomMaker_;
 
   std::map<std::uint32_t, std::shared_ptr<Session>> sessions_;
   std::uint32_t nextClientId_ = 1;

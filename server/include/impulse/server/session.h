@@ -5,7 +5,8 @@
 ///
 /// Memory per session is bounded whatever the peer does: one read buffer, one
 /// frame of at most max-frame-bytes, queued command bytes up to a cap (reading
-/// pauses beyond it), replies up to a cap (the session is dropped beyond it)
+/// pauses beyond it), replies up to a cap (the session is dropped beyond it;
+/// one reply larger than the cap may wait beside them)
 /// and at most one unsent snapshot, which a newer one replaces.
 
 #include <asio.hpp>
@@ -51,11 +52,16 @@ class SnapshotSource {
 struct SessionLimits {
   std::size_t maxFrameBytes = wire::kDefaultMaxFrameBytes;
   /// Replies waiting to be sent; a client past this is not reading: dropped.
+  /// Besides them, one reply larger than this may wait (a client is never
+  /// closed for the size of what it asked for); a scene that fits neither
+  /// is answered by a refusal.
   std::size_t maxQueuedReplyBytes = std::size_t(1) << 20;
   /// Commands waiting for the next tick; reading pauses past this.
   std::size_t maxPendingCommandBytes = std::size_t(1) << 20;
   Clock::duration stallTimeout = std::chrono::seconds(10);
-  /// A client past Hello that neither sends nor subscribes for this long is dropped.
+  /// A client past Hello that sends nothing for this long is dropped: one
+  /// that subscribes to nothing, or a subscriber that was offered no
+  /// snapshot either (its room is paused).
   Clock::duration idleTimeout = std::chrono::seconds(30);
   /// Commands per second before commands are refused, after a burst of
   /// two seconds' worth.
@@ -137,6 +143,12 @@ class Session : public std::enable_shared_from_this<Session> {
   /// After the Error is flushed: half-close and drain input until EOF.
   void startLinger();
   void push(Outgoing item);
+  /// A reply of `bytes` may join the queue (see SessionLimits::maxQueuedReplyBytes).
+  bool replyFits(std::size_t bytes) const;
+  /// The counter a reply of `bytes` is counted in.
+  std::size_t& replyBytesOf(std::size_t bytes);
+  /// The CommandResult answering a SaveScene whose scene does not fit.
+  v1::ServerMessage sceneNotQueued(std::uint64_t requestId, std::size_t bytes) const;
   void writeMore();
   /// The queue's first item is a full snapshot still to be built: asks the
   /// source for it (once) and returns true while it is awaited.
@@ -170,7 +182,10 @@ class Session : public std::enable_shared_from_this<Session> {
   std::size_t pendingCommandBytes_ = 0;
 
   std::deque<Outgoing> queue_;
+  /// Replies queued, within SessionLimits::maxQueuedReplyBytes...
   std::size_t queuedReplyBytes_ = 0;
+  /// ...and the one reply larger than that cap which may wait beside them.
+  std::size_t oversizedReplyBytes_ = 0;
   /// Queue items in the write call in flight (0: none in flight).
   std::size_t inFlight_ = 0;
   std::size_t writeOffset_ = 0;
@@ -188,6 +203,8 @@ class Session : public std::enable_shared_from_this<Session> {
   bool fullSnapshotRequested_ = false;
   /// The broadcast the client's snapshots are up to (none before the first).
   std::optional<std::uint64_t> lastSnapshotSequence_;
+  /// When a snapshot was last offered (or the stream started).
+  Clock::time_point lastSnapshot_;
   std::uint64_t snapshotsSkipped_ = 0;
 };
 
