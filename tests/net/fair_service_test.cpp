@@ -120,11 +120,13 @@ TEST(Ownership, PlayersMayPushAndRemoveWhatTheySpawned) {
             std::string::npos);
   // Body 1 is the preset's floor: the admin's, not the player's.
   EXPECT_FALSE(ownership.playerRefusal(client::removeBody(1), kPlayer).empty());
-  EXPECT_NE(ownership.playerRefusal(client::clearWorld(), kPlayer).find("refused for the player role"),
-            std::string::npos);
+  EXPECT_NE(
+      ownership.playerRefusal(client::clearWorld(), kPlayer).find("refused for the player role"),
+      std::string::npos);
   EXPECT_TRUE(ownership.playerRefusal(client::queryBody(body), 8).empty());
   // Removed: no longer the player's to push.
-  ASSERT_TRUE(applyAs(simulation, ownership, client::removeBody(body), kPlayer).command_result().ok());
+  ASSERT_TRUE(
+      applyAs(simulation, ownership, client::removeBody(body), kPlayer).command_result().ok());
   EXPECT_FALSE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), kPlayer).empty());
 }
 
@@ -150,10 +152,11 @@ TEST(Ownership, EveryWorldReplacementForgetsOwners) {
 
     ASSERT_TRUE(applyAs(simulation, ownership, replacement, kAdmin).command_result().ok());
     // The admin's new bodies and joint take the ids the player had.
-    for (int i = 0; i < 6; ++i) applyAs(simulation, ownership, client::spawnCircle({3.0 + i, 3}, 0.4), kAdmin);
+    for (int i = 0; i < 6; ++i)
+      applyAs(simulation, ownership, client::spawnCircle({3.0 + i, 3}, 0.4), kAdmin);
     ASSERT_TRUE(simulation.world().isValid(BodyId{body}));
-    const auto adminJoint =
-        applyAs(simulation, ownership, client::distanceJoint({body, 0, {5, 3}, {5, 4}}, {}), kAdmin);
+    const auto adminJoint = applyAs(simulation, ownership,
+                                    client::distanceJoint({body, 0, {5, 3}, {5, 4}}, {}), kAdmin);
     ASSERT_EQ(adminJoint.command_result().joint_id(), joint);
 
     EXPECT_NE(errorOf(applyAs(simulation, ownership, client::applyImpulse(body, {1, 0}), kPlayer))

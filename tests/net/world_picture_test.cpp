@@ -182,10 +182,10 @@ Subscriber subscribe(std::uint16_t port, std::string label, bool quantized, bool
     subscriber.view =
         std::make_unique<viewer::InterpolatedWorld>(1.0 / client.welcome().snapshot_hz());
     subscriber.view->seed(client.mirror(), localSeconds());
-    client.onSnapshot([view = subscriber.view.get(), &client](const v1::Snapshot& snapshot,
-                                                              std::size_t) {
-      view->onSnapshot(client.mirror(), snapshot, localSeconds());
-    });
+    client.onSnapshot(
+        [view = subscriber.view.get(), &client](const v1::Snapshot& snapshot, std::size_t) {
+          view->onSnapshot(client.mirror(), snapshot, localSeconds());
+        });
   }
   return subscriber;
 }
@@ -295,8 +295,7 @@ class BurstMaker {
     const std::uint32_t b = uniform(0, 2) == 0 ? 0 : anyBody(world);
     auto position = [&](std::uint32_t id) {
       const MirrorBody* body = world.find(BodyId{id});
-      return body ? client::Point{body->state.position.x(), body->state.position.y()}
-                  : somewhere();
+      return body ? client::Point{body->state.position.x(), body->state.position.y()} : somewhere();
     };
     client::JointEnds ends{a, b, position(a), position(b)};
     if (b == 0) ends.anchorB = {ends.anchorA.x, ends.anchorA.y + 1};
@@ -326,29 +325,43 @@ class BurstMaker {
 
   v1::ClientMessage command(const WorldMirror& world, const std::vector<std::string>& scenes) {
     switch (uniform(0, 16)) {
-      case 0: return client::loadPreset(uniform(0, kPresetCount - 1));
-      case 1: return client::setPaused(true);
-      case 2: return client::setPaused(false);
+      case 0:
+        return client::loadPreset(uniform(0, kPresetCount - 1));
+      case 1:
+        return client::setPaused(true);
+      case 2:
+        return client::setPaused(false);
       case 3:
       case 4: {
         client::SpawnOptions options;
         options.material = Material::Rubber;
         return client::spawnCircle(somewhere(), real(0.2, 1.0), options);
       }
-      case 5: return polygon();
-      case 6: return client::removeBody(anyBody(world));
-      case 7: return client::applyImpulse(anyBody(world), {real(-5, 5), real(0, 10)});
-      case 8: return client::clearWorld();
-      case 9: return client::step(std::uint32_t(uniform(1, 4)));
-      case 10: return client::saveScene();
+      case 5:
+        return polygon();
+      case 6:
+        return client::removeBody(anyBody(world));
+      case 7:
+        return client::applyImpulse(anyBody(world), {real(-5, 5), real(0, 10)});
+      case 8:
+        return client::clearWorld();
+      case 9:
+        return client::step(std::uint32_t(uniform(1, 4)));
+      case 10:
+        return client::saveScene();
       case 11:
         if (scenes.empty()) return client::saveScene();
         return client::loadScene(scenes[std::size_t(uniform(0, int(scenes.size()) - 1))]);
-      case 12: return joint(world);
-      case 13: return client::removeJoint(anyOf(world.joints()));
-      case 14: return field();
-      case 15: return client::removeField(anyOf(world.fields()));
-      default: return client::setGravity({real(-2, 2), real(-12, -2)});
+      case 12:
+        return joint(world);
+      case 13:
+        return client::removeJoint(anyOf(world.joints()));
+      case 14:
+        return field();
+      case 15:
+        return client::removeField(anyOf(world.fields()));
+      default:
+        return client::setGravity({real(-2, 2), real(-12, -2)});
     }
   }
 
@@ -358,7 +371,8 @@ class BurstMaker {
 };
 
 std::uint32_t propertySeed() {
-  if (const char* text = std::getenv("IMPULSE_PROPERTY_SEED")) return std::uint32_t(std::atol(text));
+  if (const char* text = std::getenv("IMPULSE_PROPERTY_SEED"))
+    return std::uint32_t(std::atol(text));
   return 30;
 }
 
@@ -442,8 +456,8 @@ TEST(WorldPicture, EverySubscribersPictureIsTheWorldAfterEveryBurst) {
       if (difference.empty()) continue;
       ++subscriber.mismatches;
       if (firstMismatch.empty()) {
-        firstMismatch = "burst " + std::to_string(burst) + ", " + subscriber.label + ": " +
-                        difference;
+        firstMismatch =
+            "burst " + std::to_string(burst) + ", " + subscriber.label + ": " + difference;
       }
     }
   }
