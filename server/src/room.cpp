@@ -131,6 +131,7 @@ void Room::leave(Session& session) {
   subscriberIds_.erase(session.id());
   countSubscribers();
   snapshotsSkippedByLeavers_ += session.snapshotsSkipped();
+  rateWaitsByLeavers_ += session.rateWaits();
   onStrand([this, client = session.id()] {
     clients_.erase(client);
     commands_.dropClient(client);
@@ -152,17 +153,7 @@ void Room::countSubscribers() {
 }
 
 void Room::enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes) {
-  if (!session.withinRate()) {
-    // Answered at once and never queued, so a flood costs the tick nothing.
-    ++commandsRateLimited_;
-    session.send(refusal(message,
-                         std::string(commandName(message)) + ": rate limit exceeded (at most " +
-                             std::to_string(options_.maxCommandsPerSecond) +
-                             " commands per second per client); not applied",
-                         publishedTick_.load()));
-    session.commandsApplied(bytes);
-    return;
-  }
+  // The session keeps to its rate by reading no faster (Session::rateAllowsACommand).
   onStrand([this, client = session.id(), message = std::move(message), bytes]() mutable {
     // A leaver's commands are dropped: its leave was posted after them.
     if (clients_.contains(client)) commands_.push(client, std::move(message), bytes);
@@ -210,9 +201,13 @@ void Room::deliverReply(Reply& reply) {
     auto* stats = message.mutable_pong()->mutable_stats();
     stats->set_clients(std::uint32_t(host_.connectionCount()));
     std::uint64_t skipped = snapshotsSkippedByLeavers_;
-    for (const auto& [id, other] : members_) skipped += other->snapshotsSkipped();
+    std::uint64_t rateWaits = rateWaitsByLeavers_;
+    for (const auto& [id, other] : members_) {
+      skipped += other->snapshotsSkipped();
+      rateWaits += other->rateWaits();
+    }
     stats->set_snapshots_skipped(skipped);
-    stats->set_commands_rate_limited(commandsRateLimited_);
+    stats->set_commands_rate_limited(rateWaits);
   }
   if (message.has_room_list()) host_.listRooms(*message.mutable_room_list());
   session->send(message);

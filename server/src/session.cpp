@@ -40,6 +40,7 @@ Session::Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t 
       connectedAt_(Clock::now()),
       lastActive_(connectedAt_),
       rate_(limits.commandsPerSecond, 2 * limits.commandsPerSecond, connectedAt_),
+      rateTimer_(socket_.get_executor()),
       readBuffer_(kMinReadBuffer),
       reader_(limits.maxFrameBytes),
       lastWriteProgress_(connectedAt_) {
@@ -97,7 +98,10 @@ void Session::reject(const std::string& message) { fatal(message); }
 void Session::readMore() {
   if (reading_ || phase_ == Phase::Closed) return;
   if (phase_ != Phase::Lingering) {
-    if (!acceptingTraffic() || pendingCommandBytes_ >= limits_.maxPendingCommandBytes) return;
+    if (!acceptingTraffic() || pendingCommandBytes_ >= limits_.maxPendingCommandBytes ||
+        waitingForRate_) {
+      return;
+    }
     if (readBegin_ < readEnd_) return processBuffered();
   }
   sizeReadBuffer();
@@ -144,6 +148,7 @@ void Session::processBuffered() {
   // until commandsApplied() resumes reading.
   while (readBegin_ < readEnd_ && acceptingTraffic() &&
          pendingCommandBytes_ < limits_.maxPendingCommandBytes) {
+    if (phase_ != Phase::AwaitingHello && !rateAllowsACommand()) return;
     const auto result =
         reader_.feed(std::span<const char>(readBuffer_.data() + readBegin_, readEnd_ - readBegin_));
     readBegin_ += result.consumed;
@@ -181,21 +186,24 @@ void Session::handleFrame(std::string_view payload) {
     host_.onHello(shared_from_this(), hello);
     return;
   }
+  rate_.take(Clock::now());
   pendingCommandBytes_ += payload.size();
   host_.onCommand(shared_from_this(), std::move(message), payload.size());
 }
 
-bool Session::withinRate() {
-  if (rate_.take(Clock::now())) {
-    refusedInARow_ = 0;
-    return true;
-  }
-  // Answering a flood with errors costs the server as much as serving it.
-  if (++refusedInARow_ > 4 * std::size_t(limits_.commandsPerSecond)) {
-    fatal("closed: " + std::to_string(refusedInARow_) +
-          " commands in a row past the rate limit of " +
-          std::to_string(std::size_t(limits_.commandsPerSecond)) + " per second");
-  }
+bool Session::rateAllowsACommand() {
+  const auto wait = rate_.untilAvailable(Clock::now());
+  if (wait == Clock::duration::zero()) return true;
+  // Past its rate, the client is slowed, not refused: its bytes stay in the
+  // socket (and TCP stops it) until a command's worth of budget refilled,
+  // so its commands are applied and answered in the order it sent them.
+  waitingForRate_ = true;
+  ++rateWaits_;
+  rateTimer_.expires_after(wait);
+  rateTimer_.async_wait([self = shared_from_this()](const asio::error_code& ec) {
+    self->waitingForRate_ = false;
+    if (!ec) self->readMore();
+  });
   return false;
 }
 
@@ -435,6 +443,7 @@ void Session::evict(Clock::time_point now) {
 void Session::close(const std::string& reason) {
   if (phase_ == Phase::Closed) return;
   enter(Phase::Closed);
+  rateTimer_.cancel();
   logLine(label() + " closed: " + reason);
   asio::error_code ignored;
   socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);

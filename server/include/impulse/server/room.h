@@ -73,8 +73,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   /// A member closed: its queued commands and its Step in progress are dropped.
   void leave(Session& session);
   bool empty() const { return members_.empty(); }
-  /// A member's command, applied at a coming tick; refused at once past the
-  /// client's rate.
+  /// A member's command, applied at a coming tick (the session reads no
+  /// faster than the client's rate).
   void enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes);
   /// Name, members, and the bodies and tick as of the room's last tick.
   v1::RoomInfo info() const;
@@ -159,7 +159,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   std::vector<std::shared_ptr<Session>> broadcastTargets_;
   /// Snapshots skipped by members that left.
   std::uint64_t snapshotsSkippedByLeavers_ = 0;
-  std::uint64_t commandsRateLimited_ = 0;
+  /// Rate-limit pauses of members that left.
+  std::uint64_t rateWaitsByLeavers_ = 0;
   /// Ticks the clock ran unpaused (the snapshot grid) and the steps a time
   /// scale owed that did not fit their tick.
   std::uint64_t runningTicks_ = 0;

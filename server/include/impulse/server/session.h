@@ -63,8 +63,9 @@ struct SessionLimits {
   /// that subscribes to nothing, or a subscriber that was offered no
   /// snapshot either (its room is paused).
   Clock::duration idleTimeout = std::chrono::seconds(30);
-  /// Commands per second before commands are refused, after a burst of
-  /// two seconds' worth.
+  /// Commands per second, after a burst of two seconds' worth. Past it the
+  /// session stops reading until the budget refills: TCP flow control slows
+  /// the client, nothing is refused and replies stay in order.
   double commandsPerSecond = 2000;
 };
 
@@ -100,10 +101,6 @@ class Session : public std::enable_shared_from_this<Session> {
   void setAdmin(bool admin) { admin_ = admin; }
   /// Hello.snapshot_encoding was SNAPSHOT_ENCODING_QUANTIZED.
   bool quantized() const { return quantized_; }
-  /// Takes one command from the client's rate budget: false when over it.
-  /// A client refused four seconds' worth of commands in a row is not
-  /// slowing down: it is closed with an Error.
-  bool withinRate();
   /// When the peer last sent bytes or had a command applied (or connected).
   Clock::time_point lastActive() const { return lastActive_; }
   /// Silent for a while, not subscribed, nothing queued either way: may be
@@ -117,6 +114,8 @@ class Session : public std::enable_shared_from_this<Session> {
   bool acceptingTraffic() const { return phase_ <= Phase::Streaming; }
   const std::string& name() const { return name_; }
   std::uint64_t snapshotsSkipped() const { return snapshotsSkipped_; }
+  /// Times reading paused because the client was past its command rate.
+  std::uint64_t rateWaits() const { return rateWaits_; }
 
  private:
   /// The session's life, in order: a phase only ever moves forward.
@@ -134,6 +133,9 @@ class Session : public std::enable_shared_from_this<Session> {
   };
 
   void readMore();
+  /// True when the rate budget has a command; otherwise pauses reading
+  /// until it will have one.
+  bool rateAllowsACommand();
   void sizeReadBuffer();
   void onRead(const asio::error_code& ec, std::size_t bytes);
   void processBuffered();
@@ -167,7 +169,9 @@ class Session : public std::enable_shared_from_this<Session> {
   Clock::time_point connectedAt_;
   Clock::time_point lastActive_;
   RateLimiter rate_;
-  std::size_t refusedInARow_ = 0;
+  asio::steady_timer rateTimer_;
+  bool waitingForRate_ = false;
+  std::uint64_t rateWaits_ = 0;
   bool admin_ = false;
   bool quantized_ = false;
 
