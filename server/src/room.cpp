@@ -78,7 +78,7 @@ void Room::start() {
     schedule_ = TickSchedule(periodOf(options_.tickHz), now);
     lastStatsLog_ = now;
     lastSnapshotSlot_ = snapshotSlot();
-    scheduleTick();
+    scheduleTick(schedule_.nextDeadline());
   });
 }
 
@@ -244,8 +244,8 @@ void Room::deliverFullSnapshot(FullSnapshot& snapshot) {
 
 // --------------------------------------------------------------------- ticks
 
-void Room::scheduleTick() {
-  timer_.expires_at(schedule_.nextDeadline());
+void Room::scheduleTick(Clock::time_point at) {
+  timer_.expires_at(at);
   timer_.async_wait([self = shared_from_this()](const asio::error_code& ec) {
     if (ec || self->stopped_) return;
     self->onStrand([self] { self->onTimer(); });
@@ -254,13 +254,26 @@ void Room::scheduleTick() {
 
 void Room::onTimer() {
   if (stopped_) return;
-  const auto due = schedule_.due(Clock::now());
+  const auto start = Clock::now();
+  auto due = schedule_.due(start);
+  // A room whose last wakeup overran its period runs one tick, not a
+  // catch-up, and then rests as long as it worked: it takes at most half a
+  // stepping thread and runs in slow motion (ticks_skipped), and the other
+  // rooms' ticks, Pongs and Welcomes get their turn on the pool.
+  if (overrunning_ && due.run > 1) {
+    schedule_.skip(due.run - 1);
+    due.skipped += due.run - 1;
+    due.run = 1;
+  }
   for (int i = 0; i < due.run; ++i) runTick();
+  const auto worked = Clock::now() - start;
   if (due.skipped > 0) {
     logLine("room " + name_ + ": overrun: skipped " + std::to_string(due.skipped) +
             " tick(s) after running " + std::to_string(due.run) + " late");
   }
-  scheduleTick();
+  overrunning_ = worked > schedule_.period();
+  const auto next = schedule_.nextDeadline();
+  scheduleTick(overrunning_ ? std::max(next, Clock::now() + worked) : next);
 }
 
 void Room::runTick() {

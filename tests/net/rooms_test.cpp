@@ -3,6 +3,7 @@
 // on bodies per room, room names, and rooms ticking in parallel.
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <thread>
@@ -277,6 +278,48 @@ TEST(Rooms, SlowRoomDoesNotDelayAnother) {
   EXPECT_GT(heavyAfter.ticks_skipped(), heavyBefore.ticks_skipped());
   // ... and the light room holds its rate (5 % for a shared machine).
   EXPECT_GT(lightRate, 0.95 * tickHz);
+}
+
+// Issue 30: three rooms of 10 000 bodies with gravitation delayed a light
+// room's Pings 3.9-9.4 s and a newcomer's Welcome 7-13 s, on 2 stepping
+// threads. An overrunning room now runs one tick per wakeup and rests as
+// long as it worked (slow motion, counted in ticks_skipped).
+TEST(Rooms, ThreeOverrunningRoomsLeaveTheOthersServed) {
+  ServerProcess server({"--snapshot-hz", "10", "--substeps", "64", "--room-threads", "2",
+                        "--max-commands-per-second", "1000000", "--max-rooms-per-address", "5"});
+  std::vector<std::unique_ptr<client::Client>> heavy;
+  for (const char* name : {"heavy-1", "heavy-2", "heavy-3"}) {
+    heavy.push_back(std::make_unique<client::Client>(inRoom(server.port(), name)));
+    std::vector<v1::ClientMessage> pile;
+    for (int i = 0; i < 3000; ++i) {
+      pile.push_back(client::spawnCircle({-20 + 0.5 * (i % 60), 2 + 0.5 * (i / 60)}, 0.2));
+    }
+    requestAll(*heavy.back(), pile);
+  }
+  client::Client light(inRoom(server.port(), "light"));
+  std::this_thread::sleep_for(milliseconds(500));  // the piles fall and overload their rooms
+
+  double worstPingMs = 0;
+  for (int i = 0; i < 10; ++i) {
+    const auto sent = SteadyClock::now();
+    light.ping();
+    worstPingMs = std::max(
+        worstPingMs, std::chrono::duration<double, std::milli>(SteadyClock::now() - sent).count());
+    std::this_thread::sleep_for(milliseconds(200));
+  }
+  const auto joining = SteadyClock::now();
+  client::Client newcomer(inRoom(server.port(), "newcomer"));
+  const double welcomeMs =
+      std::chrono::duration<double, std::milli>(SteadyClock::now() - joining).count();
+  const auto stats = heavy.front()->ping().stats();
+  std::printf("[ measure ] 3 rooms of 3000 bodies at 64 substeps (mean tick %.1f ms, %llu ticks "
+              "skipped): light room's worst Ping %.0f ms of 10, a newcomer's Welcome %.0f ms\n",
+              stats.mean_tick_ms(), static_cast<unsigned long long>(stats.ticks_skipped()),
+              worstPingMs, welcomeMs);
+  ASSERT_GT(stats.mean_tick_ms(), 1000.0 / 60);  // the heavy rooms really overrun
+  EXPECT_GT(stats.ticks_skipped(), 0u);
+  EXPECT_LT(worstPingMs, 250.0);
+  EXPECT_LT(welcomeMs, 2000.0);
 }
 
 }  // namespace

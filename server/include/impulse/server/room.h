@@ -120,7 +120,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
 
   // ------------------------------------------------------- strand side
   void welcome(std::uint32_t client, bool admin, bool wantSnapshots);
-  void scheduleTick();
+  /// Arms the tick timer for `at`.
+  void scheduleTick(Clock::time_point at);
   void onTimer();
   void runTick();
   /// The world steps the time scale owes this tick, as many as fit before
@@ -182,6 +183,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   TickSchedule schedule_;
   TickTimes tickTimes_;
   bool stopped_ = false;
+  /// The last wakeup's ticks took longer than a tick period.
+  bool overrunning_ = false;
   /// The members as the strand knows them, with their role (true: admin).
   std::map<std::uint32_t, bool> clients_;
   FairQueue commands_;
