@@ -164,6 +164,11 @@ const std::vector<Flag>& flags() {
          if (error.empty()) o.healthPort = port;
          return error;
        }},
+      {"--room-stall-seconds", true,
+       "SECONDS  /healthz answers 503 once a room finished no tick for this long (default 10)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return realFlag(f, v, 0.01, 3600, o.roomStallSeconds);
+       }},
       {"--room-threads", true, "N  threads stepping the rooms, 1-64 (default 2)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 64, o.roomThreads);

@@ -57,6 +57,7 @@ Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
       snapshots_(simulation_),
       schedule_(periodOf(options.tickHz), Clock::now()),
       tickTimes_(std::size_t(std::ceil(options.tickHz))) {
+  publishedTickEnd_ = Clock::now().time_since_epoch().count();
   publish();
 }
 
@@ -169,6 +170,10 @@ v1::RoomInfo Room::info() const {
   return info;
 }
 
+Clock::duration Room::sinceLastTick(Clock::time_point now) const {
+  return now - Clock::time_point(Clock::duration(publishedTickEnd_.load()));
+}
+
 void Room::requestFullSnapshot(std::uint32_t client, bool quantized) {
   onStrand([this, client, quantized] {
     // Between ticks the strand owns the world: built here, the frame costs
@@ -272,6 +277,8 @@ void Room::onTimer() {
             " tick(s) after running " + std::to_string(due.run) + " late");
   }
   overrunning_ = worked > schedule_.period();
+  publishedOverrunning_ = overrunning_;
+  publishedTickEnd_ = Clock::now().time_since_epoch().count();
   const auto next = schedule_.nextDeadline();
   scheduleTick(overrunning_ ? std::max(next, Clock::now() + worked) : next);
 }

@@ -49,7 +49,7 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
   if (options.healthPort) {
     health_ = std::make_unique<HealthEndpoint>(
         io, asio::ip::tcp::endpoint(endpoint.address(), *options.healthPort),
-        [this] { return readiness(); });
+        [this] { return liveness(); }, [this] { return readiness(); });
   }
 }
 
@@ -114,11 +114,35 @@ std::shared_ptr<Room> Server::roomOf(const Session& session) const {
   return it == roomOfClient_.end() ? nullptr : it->second;
 }
 
-Readiness Server::readiness() const {
+ProbeStatus Server::liveness() const {
+  const auto now = Clock::now();
+  const auto stallAfter = std::chrono::duration<double>(options_.roomStallSeconds);
+  for (const auto& [name, room] : rooms_) {
+    const std::chrono::duration<double> since = room->sinceLastTick(now);
+    if (since > stallAfter) {
+      return {false, "stalled: room " + name + " finished no tick for " +
+                         std::to_string(since.count()) + " s (--room-stall-seconds " +
+                         std::to_string(options_.roomStallSeconds) + ")"};
+    }
+  }
+  return {true, "ok"};
+}
+
+ProbeStatus Server::readiness() const {
   const std::string rooms = std::to_string(rooms_.size()) + " of " +
                             std::to_string(options_.maxRooms) + " rooms";
   if (stopped_) return {false, "stopping"};
   if (rooms_.size() >= std::size_t(options_.maxRooms)) return {false, "full: " + rooms};
+  const auto overrunning = std::ranges::count_if(
+      rooms_, [](const auto& entry) { return entry.second->overrunning(); });
+  if (overrunning >= 2 * options_.roomThreads) {
+    return {false, "busy: " + std::to_string(overrunning) +
+                       " rooms overrunning their tick budget take the " +
+                       std::to_string(options_.roomThreads) + " stepping thread(s); " + rooms};
+  }
+  if (overrunning > 0) {
+    return {true, "ready: " + rooms + ", " + std::to_string(overrunning) + " overrunning"};
+  }
   return {true, "ready: " + rooms};
 }
 

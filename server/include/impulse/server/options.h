@@ -53,6 +53,8 @@ struct ServerOptions {
   /// The HTTP health probes' port on the bind address (health_endpoint.h);
   /// none without --health-port, 0 picks a free one.
   std::optional<std::uint16_t> healthPort;
+  /// /healthz fails once a room finished no tick for this long.
+  double roomStallSeconds = 10;
 };
 
 /// Outcome of parsing: options, a request for help, or an error message.

@@ -78,6 +78,10 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   void enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes);
   /// Name, members, and the bodies and tick as of the room's last tick.
   v1::RoomInfo info() const;
+  /// How long ago the room last finished a wakeup's ticks.
+  Clock::duration sinceLastTick(Clock::time_point now) const;
+  /// Its last wakeup took longer than a tick period (slow motion).
+  bool overrunning() const { return publishedOverrunning_.load(); }
 
   void requestFullSnapshot(std::uint32_t client, bool quantized) override;
 
@@ -173,6 +177,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   // Written by the strand, read by the I/O thread.
   std::atomic<std::uint64_t> publishedTick_ = 0;
   std::atomic<std::uint32_t> publishedBodies_ = 0;
+  std::atomic<Clock::rep> publishedTickEnd_;
+  std::atomic<bool> publishedOverrunning_ = false;
 
   // Strand only.
   asio::steady_timer timer_;

@@ -62,7 +62,11 @@ class Server final : public SessionHost, public RoomHost {
   /// of them would otherwise leave the process large).
   void releaseMemory(Clock::time_point now);
   /// /readyz: ready while a new room can be made.
-  Readiness readiness() const;
+  /// Not ok once a room finished no tick for --room-stall-seconds.
+  ProbeStatus liveness() const;
+  /// Not ok when no new room fits (--max-rooms) or the overrunning rooms
+  /// take every stepping thread (each takes up to half of one).
+  ProbeStatus readiness() const;
 
   asio::io_context& io_;
   ServerOptions options_;
