@@ -103,6 +103,10 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 200000, o.maxBodies);
        }},
+      {"--max-total-bodies", true, "N  bodies all rooms together may hold (default 40000)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 10000000, o.maxTotalBodies);
+       }},
       {"--max-fields", true, "N  force fields each room may hold (default 64)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 0, 10000, o.maxFields);

@@ -19,13 +19,15 @@ Clock::duration periodOf(double hz) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
 }
 
-SimulationSettings simulationSettings(const ServerOptions& options) {
+SimulationSettings simulationSettings(const ServerOptions& options,
+                                      std::shared_ptr<ServerBodies> serverBodies) {
   return {.tickHz = options.tickHz,
           .subSteps = options.subSteps,
           .maxBodies = options.maxBodies,
           .preset = options.preset,
           .paused = options.paused,
-          .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost}};
+          .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost},
+          .serverBodies = std::move(serverBodies)};
 }
 
 // A CommandResult refusing a command before it reached the world.
@@ -53,7 +55,7 @@ Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
       options_(options),
       host_(host),
       timer_(strand_),
-      simulation_(simulationSettings(options)),
+      simulation_(simulationSettings(options, host.serverBodies())),
       snapshots_(simulation_),
       schedule_(periodOf(options.tickHz), Clock::now()),
       tickTimes_(std::size_t(std::ceil(options.tickHz))) {

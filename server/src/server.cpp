@@ -38,7 +38,8 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
       housekeepingTimer_(io),
       sessionLimits_(sessionLimits(options)),
       tokens_{options.token, options.adminToken},
-      steppers_(steppers) {
+      steppers_(steppers),
+      serverBodies_(std::make_shared<ServerBodies>(options.maxTotalBodies)) {
   const std::string defaultRoom(kDefaultRoom);
   rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, options_, *this);
   const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);

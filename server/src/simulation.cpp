@@ -25,6 +25,7 @@ Simulation::Simulation(const SimulationSettings& settings)
     : tickHz_(settings.tickHz),
       fieldLimits_(settings.fieldLimits),
       world_(worldSettings(settings)),
+      serverShare_(settings.serverBodies),
       paused_(settings.paused),
       stepTimes_(std::size_t(settings.tickHz + 0.5)) {
   loadPreset(settings.preset, Material::Solid);
@@ -38,22 +39,24 @@ void Simulation::step() {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   changes_.changed(world_.movedBodies(), world_.bodyCount());
   for (const BodyId id : world_.escapedBodies()) changes_.leftWorld(id);
+  if (!world_.escapedBodies().empty()) serverShare_.set(world_.bodyCount());
   recordRemovedJoints();
   bodiesLeftWorld_ += world_.escapedBodies().size();
   ++version_;
 }
 
+std::string Simulation::spawnRefusal() const {
+  std::string refusal = bodyRefusal(world_, fieldLimits_);
+  return refusal.empty() ? serverShare_.refusal(1) : refusal;
+}
+
 CreateResult Simulation::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
-  if (std::string refusal = bodyRefusal(world_, fieldLimits_); !refusal.empty()) {
-    return {{}, std::move(refusal)};
-  }
+  if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
   return recordCreated(world_.createCircle(center, radius, options));
 }
 
 CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
-  if (std::string refusal = bodyRefusal(world_, fieldLimits_); !refusal.empty()) {
-    return {{}, std::move(refusal)};
-  }
+  if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
   return recordCreated(world_.createPolygon(points, options));
 }
 
@@ -61,12 +64,14 @@ CreateResult Simulation::recordCreated(CreateResult created) {
   if (created.ok()) {
     changes_.added(created.id);
     ++version_;
+    serverShare_.set(world_.bodyCount());
   }
   return created;
 }
 
 bool Simulation::removeBody(BodyId id) {
   if (!world_.destroyBody(id)) return false;
+  serverShare_.set(world_.bodyCount());
   changes_.removed(id);
   recordRemovedJoints();
   ++version_;
@@ -167,6 +172,7 @@ void Simulation::clear() {
 }
 
 void Simulation::recordReplaced() {
+  serverShare_.set(world_.bodyCount());
   changes_.replaced();
   ++version_;
   ++worldGeneration_;
@@ -177,9 +183,9 @@ InputResult Simulation::loadScene(std::string_view data) {
   World candidate(world_.settings());
   InputResult loaded = wire::loadScene(candidate, data);
   if (!loaded) return loaded;
-  if (std::string refusal = worldRefusal(candidate, fieldLimits_); !refusal.empty()) {
-    return {"scene refused: " + refusal};
-  }
+  std::string refusal = worldRefusal(candidate, fieldLimits_);
+  if (refusal.empty()) refusal = serverShare_.refusal(candidate.bodyCount() - world_.bodyCount());
+  if (!refusal.empty()) return {"scene refused: " + refusal};
   world_ = std::move(candidate);
   recordReplaced();
   return loaded;

@@ -106,7 +106,7 @@ TEST(ServerOptions, HelpListsEveryFlag) {
   for (const char* flag :
        {"--bind", "--port", "--tick-hz", "--snapshot-hz", "--substeps", "--preset", "--paused",
         "--max-clients", "--max-bodies", "--max-frame-bytes", "--max-fields", "--max-field-cost",
-        "--max-rooms-per-address", "--room-stall-seconds", "--help"}) {
+        "--max-rooms-per-address", "--room-stall-seconds", "--max-total-bodies", "--help"}) {
     EXPECT_NE(text.find(flag), std::string::npos) << flag;
   }
 }

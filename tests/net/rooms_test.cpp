@@ -179,6 +179,30 @@ TEST(Rooms, SilentSubscriberOfAPausedRoomTimesOut_OneOfARunningRoomStays) {
   EXPECT_NO_THROW(watcher.ping());
 }
 
+// Issue 30: --max-bodies is per room and players may make rooms, so nothing
+// bounded the server's total. Spawns (and scenes) past --max-total-bodies
+// are refused by name; a room that leaves gives its bodies back.
+TEST(Rooms, AllRoomsTogetherHoldAtMostTheServersBodies) {
+  ServerProcess server({"--max-total-bodies", "100", "--paused"});
+  std::optional<client::Client> a(inRoom(server.port(), "a"));
+  client::Client b(inRoom(server.port(), "b"));
+  // Three rooms (default, a, b) of the sandbox's 3 bodies: 9.
+  for (int i = 0; i < 60; ++i) spawnedBody(*a, 1 + 0.4 * (i % 50), 5 + 0.4 * (i / 50));
+  for (int i = 0; i < 31; ++i) spawnedBody(b, 1 + 0.4 * (i % 50), 5 + 0.4 * (i / 50));
+  const auto refused = b.request(client::spawnCircle({10, 10}, 0.5));
+  EXPECT_EQ(result(refused).error(),
+            "spawn_circle: server body limit reached: the rooms together hold 100 bodies of at "
+            "most 100 (--max-total-bodies); this room holds 34, adding 1 would pass it");
+  a.reset();  // room a and its 63 bodies go
+  const auto deadline = SteadyClock::now() + milliseconds(3000);
+  std::uint32_t spawned = 0;
+  while (spawned == 0 && SteadyClock::now() < deadline) {
+    spawned = b.request(client::spawnCircle({10, 10}, 0.5)).command_result().body_id();
+    std::this_thread::sleep_for(milliseconds(20));
+  }
+  EXPECT_NE(spawned, 0u);
+}
+
 TEST(Rooms, BadRoomNamesAreRefused) {
   ServerProcess server;
   const std::string rule = "room names are 1-64 characters of A-Z a-z 0-9 _ - .";

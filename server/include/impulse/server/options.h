@@ -21,6 +21,8 @@ struct ServerOptions {
   bool paused = false;
   int maxClients = 64;
   int maxBodies = 10000;
+  /// Bodies all rooms together may hold (server_bodies.h).
+  int maxTotalBodies = 40000;
   /// Force fields per room, and the body interactions per step they may
   /// cost together (field_budget.h).
   int maxFields = 64;

@@ -53,6 +53,8 @@ class RoomHost {
   virtual std::size_t connectionCount() const = 0;
   /// Every room of the server, for a RoomList.
   virtual void listRooms(v1::RoomList& list) const = 0;
+  /// The bodies of all rooms, against --max-total-bodies.
+  virtual std::shared_ptr<ServerBodies> serverBodies() = 0;
 };
 
 class Room final : public SnapshotSource, public std::enable_shared_from_this<Room> {

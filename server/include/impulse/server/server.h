@@ -44,14 +44,14 @@ class Server final : public SessionHost, public RoomHost {
   void onClosed(Session& session) override;
   std::size_t connectionCount() const override { return sessions_.size(); }
   void listRooms(v1::RoomList& list) const override;
+  std::shared_ptr<ServerBodies> serverBodies() override { return serverBodies_; }
 
  private:
   void accept();
   /// Why a new connection may not be served ("" when it may); makes room
   /// by evicting an idle connection when it can.
   std::string admissionRefusal(const Session& newcomer);
-  /// The room Hello names, made if it is new; or why the client may not join.
-  /// The room a Hello names, made if new; or why not.
+  /// The room a Hello names, made if new; or why the client may not join.
   std::variant<std::shared_ptr<Room>, std::string> roomFor(const v1::Hello& hello,
                                                            const std::string& address);
   /// The room a client joined; null before Hello.
@@ -61,7 +61,6 @@ class Server final : public SessionHost, public RoomHost {
   /// Gives freed heap back to the system after connections closed (a flood
   /// of them would otherwise leave the process large).
   void releaseMemory(Clock::time_point now);
-  /// /readyz: ready while a new room can be made.
   /// Not ok once a room finished no tick for --room-stall-seconds.
   ProbeStatus liveness() const;
   /// Not ok when no new room fits (--max-rooms) or the overrunning rooms
@@ -77,6 +76,7 @@ class Server final : public SessionHost, public RoomHost {
   /// The probes' endpoint, with --health-port.
   std::unique_ptr<HealthEndpoint> health_;
   asio::thread_pool& steppers_;
+  std::shared_ptr<ServerBodies> serverBodies_;
   /// By name. The default room lives as long as the server; any other is
   /// dropped when its last member leaves.
   std::map<std::string, std::shared_ptr<Room>> rooms_;

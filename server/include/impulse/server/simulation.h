@@ -13,6 +13,7 @@
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
 #include "impulse/server/field_budget.h"
+#include "impulse/server/server_bodies.h"
 #include "impulse/server/tick_schedule.h"
 #include "impulse/server/world_changes.h"
 #include "impulse/world.h"
@@ -33,6 +34,8 @@ struct SimulationSettings {
   int preset = 0;
   bool paused = false;
   FieldLimits fieldLimits{};
+  /// The server-wide body count this world is part of; none: unbounded.
+  std::shared_ptr<ServerBodies> serverBodies = nullptr;
 };
 
 /// Range of SetTimeScale (PROTOCOL.md, "Time").
@@ -55,8 +58,9 @@ class Simulation {
 
   /// Advances one tick.
   void step();
-  /// Bodies are refused past the body limit, and past the fields' cost
-  /// budget (field_budget.h) when the world has fields.
+  /// Bodies are refused past the body limit, past the fields' cost budget
+  /// (field_budget.h) when the world has fields, and past the server-wide
+  /// limit (server_bodies.h).
   CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options);
   CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options);
   /// False for an unknown id.
@@ -123,10 +127,14 @@ class Simulation {
   void recordRemovedJoints();
   /// After the world was replaced: the next snapshot is full.
   void recordReplaced();
+  /// Why one more body may not be made (fields' cost, server-wide limit).
+  std::string spawnRefusal() const;
 
   double tickHz_;
   FieldLimits fieldLimits_;
   World world_;
+  /// This world's bodies in the server's total (after every change).
+  ServerBodies::Share serverShare_;
   WorldChanges changes_;
   /// The changes last taken (takeChanges), kept for their lists' capacity.
   WorldChanges taken_;
