@@ -262,8 +262,10 @@ void Room::scheduleTick(Clock::time_point at) {
 void Room::onTimer() {
   if (stopped_) return;
   const auto start = Clock::now();
+  const auto period = schedule_.period();
   auto due = schedule_.due(start);
-  // A room whose last wakeup overran its period runs one tick, not a
+  // A room whose ticks overrun its period (over the last second: a moment
+  // of CPU contention is caught up as before) runs one tick, not a
   // catch-up, and then rests as long as it worked: it takes at most half a
   // stepping thread and runs in slow motion (ticks_skipped), and the other
   // rooms' ticks, Pongs and Welcomes get their turn on the pool.
@@ -278,7 +280,7 @@ void Room::onTimer() {
     logLine("room " + name_ + ": overrun: skipped " + std::to_string(due.skipped) +
             " tick(s) after running " + std::to_string(due.run) + " late");
   }
-  overrunning_ = worked > schedule_.period();
+  overrunning_ = tickTimes_.mean() > std::chrono::duration<double, std::milli>(period).count();
   publishedOverrunning_ = overrunning_;
   publishedTickEnd_ = Clock::now().time_since_epoch().count();
   const auto next = schedule_.nextDeadline();

@@ -82,7 +82,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   v1::RoomInfo info() const;
   /// How long ago the room last finished a wakeup's ticks.
   Clock::duration sinceLastTick(Clock::time_point now) const;
-  /// Its last wakeup took longer than a tick period (slow motion).
+  /// Its ticks overrun their period (it runs in slow motion).
   bool overrunning() const { return publishedOverrunning_.load(); }
 
   void requestFullSnapshot(std::uint32_t client, bool quantized) override;
@@ -191,7 +191,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   TickSchedule schedule_;
   TickTimes tickTimes_;
   bool stopped_ = false;
-  /// The last wakeup's ticks took longer than a tick period.
+  /// Its ticks took longer than a tick period, on average over the last second.
   bool overrunning_ = false;
   /// The members as the strand knows them, with their role (true: admin).
   std::map<std::uint32_t, bool> clients_;
