@@ -69,7 +69,7 @@ void applyOne(Simulation& simulation, impulse::server::Ownership& ownership,
     FUZZ_CHECK(simulation.world().bodyCount() == bodiesBefore);
     FUZZ_CHECK(simulation.world().gravity() == gravityBefore);
   }
-  ownership.recordOutcome(message, outcome.reply, kPlayer, simulation.world());
+  ownership.recordOutcome(message, outcome.reply, kPlayer, simulation);
   checkWorldSane(simulation.world());
 }
 

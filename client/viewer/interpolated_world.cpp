@@ -32,7 +32,7 @@ void InterpolatedWorld::reset(double snapshotInterval) {
   snapshotInterval_ = snapshotInterval;
   timeScale_ = 1;
   looks_.clear();
-  departed_.clear();
+  retired_.clear();
   drawn_.clear();
   samples_.clear();
   mode_ = SampleMode::Empty;
@@ -49,11 +49,11 @@ void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
                                    const v1::Snapshot& snapshot, double now) {
   const double time = snapshot.sim_time();
   if (snapshot.full()) {
-    for (const auto& [id, look] : looks_) {
-      if (mirror.bodies().count(id) == 0) departed_.emplace_back(id, time);
-    }
+    // Every body is described again, maybe a new one under an old id.
+    retired_.push_back({time, std::move(looks_)});
+    looks_.clear();
   }
-  for (const std::uint32_t id : snapshot.removed()) departed_.emplace_back(id, time);
+  for (const std::uint32_t id : snapshot.removed()) retire(id, time);
   for (const auto& descriptor : snapshot.added()) {
     if (const auto* body = mirror.find(BodyId{descriptor.id()})) {
       looks_[descriptor.id()] = {body->shape, body->material, body->isStatic,
@@ -61,6 +61,23 @@ void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
     }
   }
   record(mirror, time, mirror.timeScale(), snapshot.full(), snapshot.paused(), now);
+}
+
+void InterpolatedWorld::retire(std::uint32_t id, double time) {
+  const auto it = looks_.find(id);
+  if (it == looks_.end()) return;
+  if (retired_.empty() || retired_.back().until != time) retired_.push_back({time, {}});
+  retired_.back().looks.insert_or_assign(id, std::move(it->second));
+  looks_.erase(it);
+}
+
+const BodyLook* InterpolatedWorld::lookAt(std::uint32_t id, double time) const {
+  for (const RetiredLooks& retired : retired_) {
+    if (time >= retired.until) continue;
+    if (const auto it = retired.looks.find(id); it != retired.looks.end()) return &it->second;
+  }
+  const auto it = looks_.find(id);
+  return it == looks_.end() ? nullptr : &it->second;
 }
 
 void InterpolatedWorld::fitSnapshotInterval(const client::WorldMirror& mirror, double timeScale) {
@@ -92,20 +109,15 @@ void InterpolatedWorld::update(double now) {
   buffer_.discardBefore(renderTime_);
   mode_ = buffer_.sample(renderTime_, samples_);
 
-  // A departed body's look is kept while a buffered frame still shows it
-  // (frames older than its departure).
+  // A retired look is kept while a buffered frame still shows its body
+  // (frames older than its retirement).
   const double oldest = buffer_.oldestTime();
-  std::erase_if(departed_, [&](const std::pair<std::uint32_t, double>& gone) {
-    if (gone.second > oldest) return false;
-    looks_.erase(gone.first);
-    return true;
-  });
+  while (!retired_.empty() && retired_.front().until <= oldest) retired_.pop_front();
 
   drawn_.clear();
   drawn_.reserve(samples_.size());
   for (const BodySample& sample : samples_) {
-    const auto it = looks_.find(sample.id);
-    if (it != looks_.end()) drawn_.push_back({sample, &it->second});
+    if (const BodyLook* look = lookAt(sample.id, renderTime_)) drawn_.push_back({sample, look});
   }
 }
 

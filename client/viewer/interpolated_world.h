@@ -3,8 +3,13 @@
 /// recorded into the snapshot buffer, timed by the playout clock, and each
 /// frame samples the buffer at the playout time. Shapes and materials are
 /// kept for as long as a buffered frame still shows their body.
+///
+/// Body ids start over when the world is replaced (preset, clear, scene), so
+/// one id may name one body in older frames and another in newer ones: each
+/// frame is drawn with the looks in force at its time.
 
 #include <cstdint>
+#include <deque>
 #include <unordered_map>
 #include <vector>
 
@@ -69,9 +74,21 @@ class InterpolatedWorld {
   PlayoutTimeBase timeBase_;
   double snapshotInterval_;
   double timeScale_ = 1;
-  std::unordered_map<std::uint32_t, BodyLook> looks_;
-  /// Bodies gone from the server, with the server time they went at.
-  std::vector<std::pair<std::uint32_t, double>> departed_;
+  using Looks = std::unordered_map<std::uint32_t, BodyLook>;
+  /// Looks of bodies gone from the server by server time `until`: a full
+  /// snapshot retires every look at once, a removal one.
+  struct RetiredLooks {
+    double until;
+    Looks looks;
+  };
+  /// The look of body `id` in frames sampled at server time `time`, or null.
+  const BodyLook* lookAt(std::uint32_t id, double time) const;
+  void retire(std::uint32_t id, double time);
+
+  /// The bodies of the newest snapshot.
+  Looks looks_;
+  /// Oldest first; dropped once no buffered frame is older.
+  std::deque<RetiredLooks> retired_;
   std::vector<BodySample> samples_;
   std::vector<DrawnBody> drawn_;
   SampleMode mode_ = SampleMode::Empty;

@@ -21,22 +21,16 @@ bool sameSecret(std::string_view a, std::string_view b) {
   return difference == 0;
 }
 
-// The body a remove_body, apply_impulse or set_target_transform acts on.
-std::uint32_t targetBody(const v1::ClientMessage& message) {
-  if (message.has_remove_body()) return message.remove_body().body_id();
-  if (message.has_set_target_transform()) return message.set_target_transform().body_id();
-  return message.apply_impulse().body_id();
+std::string notCreatedBy(std::string_view command, const char* kind, std::uint32_t id) {
+  return std::string(command) + ": refused for the player role: " + kind + " " +
+         std::to_string(id) + " was not created by this client (players act on their own " + kind +
+         "s only)";
 }
 
-bool spawnsBody(const v1::ClientMessage& message) {
-  return message.has_spawn_circle() || message.has_spawn_polygon() || message.has_spawn_capsule() ||
-         message.has_spawn_segment() || message.has_spawn_chain() || message.has_spawn_body();
-}
-
-// The joint an update_joint or remove_joint acts on.
-std::uint32_t targetJoint(const v1::ClientMessage& message) {
-  return message.has_update_joint() ? message.update_joint().joint_id()
-                                    : message.remove_joint().joint_id();
+bool ownedBy(const std::unordered_map<std::uint32_t, std::uint32_t>& owners, std::uint32_t id,
+             std::uint32_t client) {
+  const auto it = owners.find(id);
+  return it != owners.end() && it->second == client;
 }
 
 }  // namespace
@@ -57,59 +51,49 @@ bool isLoopbackAddress(std::string_view address) {
 
 std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint32_t client) const {
   const std::string_view command = commandName(message);
-  if (changesEveryonesWorld(message)) {
-    return std::string(command) +
-           ": refused for the player role (it changes everyone's world: the admin role, "
-           "Hello.token = the admin token, is needed)";
+  switch (commandRole(message)) {
+    case CommandRole::Anyone:
+      return {};
+    case CommandRole::Admin:
+      return std::string(command) +
+             ": refused for the player role (it changes everyone's world: the admin role, "
+             "Hello.token = the admin token, is needed)";
+    case CommandRole::Owner:
+      break;
   }
-  if (message.has_remove_body() || message.has_apply_impulse() || message.has_set_target_transform()) {
-    return ownershipRefusal(command, targetBody(message), client);
+  // Body 0 (the world, which a player may pin its own bodies to) is not a target.
+  const CommandTargets targets = commandTargets(message);
+  for (const std::uint32_t body : targets.bodies) {
+    if (!ownedBy(ownerOf_, body, client)) return notCreatedBy(command, "body", body);
   }
-  if (message.has_create_joint()) {
-    // Body 0 is the world, which a player may pin its own bodies to.
-    const auto& joint = message.create_joint();
-    std::string refusal = ownershipRefusal(command, joint.body_a(), client);
-    if (refusal.empty() && joint.body_b() != 0) {
-      refusal = ownershipRefusal(command, joint.body_b(), client);
-    }
-    return refusal;
-  }
-  if (message.has_update_joint() || message.has_remove_joint()) {
-    return jointRefusal(command, targetJoint(message), client);
+  for (const std::uint32_t joint : targets.joints) {
+    if (!ownedBy(jointOwnerOf_, joint, client)) return notCreatedBy(command, "joint", joint);
   }
   return {};
 }
 
-std::string Ownership::ownershipRefusal(std::string_view command, std::uint32_t body,
-                                        std::uint32_t client) const {
-  const auto it = ownerOf_.find(body);
-  if (it != ownerOf_.end() && it->second == client) return {};
-  return std::string(command) + ": refused for the player role: body " + std::to_string(body) +
-         " was not created by this client (players act on their own bodies only)";
-}
-
-std::string Ownership::jointRefusal(std::string_view command, std::uint32_t joint,
-                                    std::uint32_t client) const {
-  const auto it = jointOwnerOf_.find(joint);
-  if (it != jointOwnerOf_.end() && it->second == client) return {};
-  return std::string(command) + ": refused for the player role: joint " + std::to_string(joint) +
-         " was not created by this client (players act on their own joints only)";
-}
-
 void Ownership::recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
-                              std::uint32_t client, const World& world) {
-  if (!reply.has_command_result() || !reply.command_result().ok()) return;
-  if (spawnsBody(message)) {
-    ownerOf_[reply.command_result().body_id()] = client;
-  } else if (message.has_remove_body()) {
-    ownerOf_.erase(message.remove_body().body_id());
-  } else if (message.has_create_joint()) {
-    jointOwnerOf_[reply.command_result().joint_id()] = client;
-  } else if (message.has_remove_joint()) {
-    jointOwnerOf_.erase(message.remove_joint().joint_id());
-  } else if (message.has_clear() || message.has_load_preset()) {
+                              std::uint32_t client, const Simulation& simulation) {
+  if (simulation.worldGeneration() != worldGeneration_) {
+    worldGeneration_ = simulation.worldGeneration();
     ownerOf_.clear();
     jointOwnerOf_.clear();
+  }
+  if (!reply.has_command_result() || !reply.command_result().ok()) return;
+  const World& world = simulation.world();
+  // What a command creates is named in its result.
+  const auto& result = reply.command_result();
+  if (result.body_id() != 0) ownerOf_[result.body_id()] = client;
+  if (result.joint_id() != 0) jointOwnerOf_[result.joint_id()] = client;
+  // What it removed is forgotten now: a freed id may come back once its generation wraps.
+  if (commandRole(message) == CommandRole::Owner) {
+    const CommandTargets targets = commandTargets(message);
+    for (const std::uint32_t body : targets.bodies) {
+      if (!world.isValid(BodyId{body})) ownerOf_.erase(body);
+    }
+    for (const std::uint32_t joint : targets.joints) {
+      if (!world.jointDescription(JointId{joint})) jointOwnerOf_.erase(joint);
+    }
   }
   sweep(world);
 }

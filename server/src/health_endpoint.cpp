@@ -27,8 +27,12 @@ struct Probe {
 }  // namespace
 
 HealthEndpoint::HealthEndpoint(asio::io_context& io, const asio::ip::tcp::endpoint& endpoint,
-                               std::function<Readiness()> readiness)
-    : acceptor_(io), retry_(io), readiness_(std::move(readiness)) {
+                               std::function<ProbeStatus()> liveness,
+                               std::function<ProbeStatus()> readiness)
+    : acceptor_(io),
+      retry_(io),
+      liveness_(std::move(liveness)),
+      readiness_(std::move(readiness)) {
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
   acceptor_.bind(endpoint);
@@ -86,12 +90,11 @@ void HealthEndpoint::accept() {
 }
 
 std::string HealthEndpoint::respond(const std::string& requestLine) const {
-  if (requestLine.starts_with("GET /healthz ")) return httpResponse("200 OK", "ok\n");
-  if (requestLine.starts_with("GET /readyz ")) {
-    const Readiness readiness = readiness_();
-    return httpResponse(readiness.ready ? "200 OK" : "503 Service Unavailable",
-                        readiness.text + "\n");
-  }
+  auto answer = [](const ProbeStatus& status) {
+    return httpResponse(status.ok ? "200 OK" : "503 Service Unavailable", status.text + "\n");
+  };
+  if (requestLine.starts_with("GET /healthz ")) return answer(liveness_());
+  if (requestLine.starts_with("GET /readyz ")) return answer(readiness_());
   return httpResponse("404 Not Found", "GET /healthz or GET /readyz\n");
 }
 

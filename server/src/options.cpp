@@ -103,12 +103,26 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 200000, o.maxBodies);
        }},
+      {"--max-total-bodies", true, "N  bodies all rooms together may hold (default 40000)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 10000000, o.maxTotalBodies);
+       }},
+      {"--max-fields", true, "N  force fields each room may hold (default 64)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 0, 10000, o.maxFields);
+       }},
+      {"--max-field-cost", true,
+       "N  body interactions per step a room's fields may cost: gravitation n(n-1)/2, "
+       "others n (default 1000000)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 0, 1'000'000'000'000LL, o.maxFieldCost);
+       }},
       {"--max-frame-bytes", true, "N  largest accepted message (default 1048576)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 64, 64 << 20, o.maxFrameBytes);
        }},
       {"--idle-timeout", true,
-       "SECONDS  drop a client that sends nothing and subscribes to nothing for this long "
+       "SECONDS  drop a client that sends nothing for this long, unless snapshots flow to it "
        "(default 30)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return realFlag(f, v, 0.1, 86400, o.idleTimeoutSeconds);
@@ -141,6 +155,11 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 1000, o.maxRooms);
        }},
+      {"--max-rooms-per-address", true,
+       "N  rooms one address may have made and still hold, 1-1000 (default 4)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 1, 1000, o.maxRoomsPerAddress);
+       }},
       {"--health-port", true,
        "N  answer HTTP GET /healthz and /readyz on this port (0 picks a free one; default none)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
@@ -148,6 +167,11 @@ const std::vector<Flag>& flags() {
          std::string error = intFlag(f, v, 0, 65535, port);
          if (error.empty()) o.healthPort = port;
          return error;
+       }},
+      {"--room-stall-seconds", true,
+       "SECONDS  /healthz answers 503 once a room finished no tick for this long (default 10)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return realFlag(f, v, 0.01, 3600, o.roomStallSeconds);
        }},
       {"--room-threads", true, "N  threads stepping the rooms, 1-64 (default 2)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {

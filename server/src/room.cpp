@@ -19,12 +19,15 @@ Clock::duration periodOf(double hz) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
 }
 
-SimulationSettings simulationSettings(const ServerOptions& options) {
+SimulationSettings simulationSettings(const ServerOptions& options,
+                                      std::shared_ptr<ServerBodies> serverBodies) {
   return {.tickHz = options.tickHz,
           .subSteps = options.subSteps,
           .maxBodies = options.maxBodies,
           .preset = options.preset,
-          .paused = options.paused};
+          .paused = options.paused,
+          .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost},
+          .serverBodies = std::move(serverBodies)};
 }
 
 // A CommandResult refusing a command before it reached the world.
@@ -52,10 +55,11 @@ Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
       options_(options),
       host_(host),
       timer_(strand_),
-      simulation_(simulationSettings(options)),
+      simulation_(simulationSettings(options, host.serverBodies())),
       snapshots_(simulation_),
       schedule_(periodOf(options.tickHz), Clock::now()),
       tickTimes_(std::size_t(std::ceil(options.tickHz))) {
+  publishedTickEnd_ = Clock::now().time_since_epoch().count();
   publish();
 }
 
@@ -77,7 +81,7 @@ void Room::start() {
     schedule_ = TickSchedule(periodOf(options_.tickHz), now);
     lastStatsLog_ = now;
     lastSnapshotSlot_ = snapshotSlot();
-    scheduleTick();
+    scheduleTick(schedule_.nextDeadline());
   });
 }
 
@@ -130,6 +134,7 @@ void Room::leave(Session& session) {
   subscriberIds_.erase(session.id());
   countSubscribers();
   snapshotsSkippedByLeavers_ += session.snapshotsSkipped();
+  rateWaitsByLeavers_ += session.rateWaits();
   onStrand([this, client = session.id()] {
     clients_.erase(client);
     commands_.dropClient(client);
@@ -151,17 +156,7 @@ void Room::countSubscribers() {
 }
 
 void Room::enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes) {
-  if (!session.withinRate()) {
-    // Answered at once and never queued, so a flood costs the tick nothing.
-    ++commandsRateLimited_;
-    session.send(refusal(message,
-                         std::string(commandName(message)) + ": rate limit exceeded (at most " +
-                             std::to_string(options_.maxCommandsPerSecond) +
-                             " commands per second per client); not applied",
-                         publishedTick_.load()));
-    session.commandsApplied(bytes);
-    return;
-  }
+  // The session keeps to its rate by reading no faster (Session::rateAllowsACommand).
   onStrand([this, client = session.id(), message = std::move(message), bytes]() mutable {
     // A leaver's commands are dropped: its leave was posted after them.
     if (clients_.contains(client)) commands_.push(client, std::move(message), bytes);
@@ -175,6 +170,10 @@ v1::RoomInfo Room::info() const {
   info.set_bodies(publishedBodies_.load());
   info.set_tick(publishedTick_.load());
   return info;
+}
+
+Clock::duration Room::sinceLastTick(Clock::time_point now) const {
+  return now - Clock::time_point(Clock::duration(publishedTickEnd_.load()));
 }
 
 void Room::requestFullSnapshot(std::uint32_t client, bool quantized) {
@@ -209,9 +208,13 @@ void Room::deliverReply(Reply& reply) {
     auto* stats = message.mutable_pong()->mutable_stats();
     stats->set_clients(std::uint32_t(host_.connectionCount()));
     std::uint64_t skipped = snapshotsSkippedByLeavers_;
-    for (const auto& [id, other] : members_) skipped += other->snapshotsSkipped();
+    std::uint64_t rateWaits = rateWaitsByLeavers_;
+    for (const auto& [id, other] : members_) {
+      skipped += other->snapshotsSkipped();
+      rateWaits += other->rateWaits();
+    }
     stats->set_snapshots_skipped(skipped);
-    stats->set_commands_rate_limited(commandsRateLimited_);
+    stats->set_commands_rate_limited(rateWaits);
   }
   if (message.has_room_list()) host_.listRooms(*message.mutable_room_list());
   session->send(message);
@@ -248,8 +251,8 @@ void Room::deliverFullSnapshot(FullSnapshot& snapshot) {
 
 // --------------------------------------------------------------------- ticks
 
-void Room::scheduleTick() {
-  timer_.expires_at(schedule_.nextDeadline());
+void Room::scheduleTick(Clock::time_point at) {
+  timer_.expires_at(at);
   timer_.async_wait([self = shared_from_this()](const asio::error_code& ec) {
     if (ec || self->stopped_) return;
     self->onStrand([self] { self->onTimer(); });
@@ -258,13 +261,30 @@ void Room::scheduleTick() {
 
 void Room::onTimer() {
   if (stopped_) return;
-  const auto due = schedule_.due(Clock::now());
+  const auto start = Clock::now();
+  const auto period = schedule_.period();
+  auto due = schedule_.due(start);
+  // A room whose ticks overrun its period (over the last second: a moment
+  // of CPU contention is caught up as before) runs one tick, not a
+  // catch-up, and then rests as long as it worked: it takes at most half a
+  // stepping thread and runs in slow motion (ticks_skipped), and the other
+  // rooms' ticks, Pongs and Welcomes get their turn on the pool.
+  if (overrunning_ && due.run > 1) {
+    schedule_.skip(due.run - 1);
+    due.skipped += due.run - 1;
+    due.run = 1;
+  }
   for (int i = 0; i < due.run; ++i) runTick();
+  const auto worked = Clock::now() - start;
   if (due.skipped > 0) {
     logLine("room " + name_ + ": overrun: skipped " + std::to_string(due.skipped) +
             " tick(s) after running " + std::to_string(due.run) + " late");
   }
-  scheduleTick();
+  overrunning_ = tickTimes_.mean() > std::chrono::duration<double, std::milli>(period).count();
+  publishedOverrunning_ = overrunning_;
+  publishedTickEnd_ = Clock::now().time_since_epoch().count();
+  const auto next = schedule_.nextDeadline();
+  scheduleTick(overrunning_ ? std::max(next, Clock::now() + worked) : next);
 }
 
 void Room::runTick() {
@@ -332,7 +352,7 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
     }
   }
   auto outcome = applyCommand(simulation_, message, limits_);
-  ownership_.recordOutcome(message, outcome.reply, client, simulation_.world());
+  ownership_.recordOutcome(message, outcome.reply, client, simulation_);
   if (outcome.ticksToStep > 0) {
     // The client's later commands wait for its Step, keeping their order.
     commands_.hold(client);

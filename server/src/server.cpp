@@ -2,6 +2,7 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "impulse/server/log.h"
@@ -37,7 +38,8 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
       housekeepingTimer_(io),
       sessionLimits_(sessionLimits(options)),
       tokens_{options.token, options.adminToken},
-      steppers_(steppers) {
+      steppers_(steppers),
+      serverBodies_(std::make_shared<ServerBodies>(options.maxTotalBodies)) {
   const std::string defaultRoom(kDefaultRoom);
   rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, options_, *this);
   const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);
@@ -48,7 +50,7 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
   if (options.healthPort) {
     health_ = std::make_unique<HealthEndpoint>(
         io, asio::ip::tcp::endpoint(endpoint.address(), *options.healthPort),
-        [this] { return readiness(); });
+        [this] { return liveness(); }, [this] { return readiness(); });
   }
 }
 
@@ -84,7 +86,8 @@ void Server::stop() {
 
 // -------------------------------------------------------------------- rooms
 
-std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello& hello) {
+std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello& hello,
+                                                                 const std::string& address) {
   if (std::string refusal = roomNameRefusal(hello.room()); !refusal.empty()) return refusal;
   const std::string name = roomNameOf(hello.room());
   if (const auto it = rooms_.find(name); it != rooms_.end()) return it->second;
@@ -92,8 +95,16 @@ std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello
     return "room limit reached: this server holds at most " + std::to_string(options_.maxRooms) +
            " rooms (--max-rooms); join an existing one (ListRooms) or another server";
   }
+  const auto made =
+      std::ranges::count_if(roomMaker_, [&](const auto& entry) { return entry.second == address; });
+  if (made >= options_.maxRoomsPerAddress) {
+    return "room limit for " + address + " reached: it made " + std::to_string(made) +
+           " rooms that are still open (at most " + std::to_string(options_.maxRoomsPerAddress) +
+           " per address, --max-rooms-per-address); join an existing one (ListRooms)";
+  }
   auto room = std::make_shared<Room>(name, io_, steppers_, options_, *this);
   rooms_[name] = room;
+  roomMaker_[name] = address;
   room->start();
   logLine("room " + name + " made (" + std::to_string(rooms_.size()) + " rooms)");
   return room;
@@ -104,11 +115,35 @@ std::shared_ptr<Room> Server::roomOf(const Session& session) const {
   return it == roomOfClient_.end() ? nullptr : it->second;
 }
 
-Readiness Server::readiness() const {
+ProbeStatus Server::liveness() const {
+  const auto now = Clock::now();
+  const auto stallAfter = std::chrono::duration<double>(options_.roomStallSeconds);
+  for (const auto& [name, room] : rooms_) {
+    const std::chrono::duration<double> since = room->sinceLastTick(now);
+    if (since > stallAfter) {
+      return {false, "stalled: room " + name + " finished no tick for " +
+                         std::to_string(since.count()) + " s (--room-stall-seconds " +
+                         std::to_string(options_.roomStallSeconds) + ")"};
+    }
+  }
+  return {true, "ok"};
+}
+
+ProbeStatus Server::readiness() const {
   const std::string rooms = std::to_string(rooms_.size()) + " of " +
                             std::to_string(options_.maxRooms) + " rooms";
   if (stopped_) return {false, "stopping"};
   if (rooms_.size() >= std::size_t(options_.maxRooms)) return {false, "full: " + rooms};
+  const auto overrunning = std::ranges::count_if(
+      rooms_, [](const auto& entry) { return entry.second->overrunning(); });
+  if (overrunning >= 2 * options_.roomThreads) {
+    return {false, "busy: " + std::to_string(overrunning) +
+                       " rooms overrunning their tick budget take the " +
+                       std::to_string(options_.roomThreads) + " stepping thread(s); " + rooms};
+  }
+  if (overrunning > 0) {
+    return {true, "ready: " + rooms + ", " + std::to_string(overrunning) + " overrunning"};
+  }
   return {true, "ready: " + rooms};
 }
 
@@ -183,7 +218,7 @@ std::string Server::admissionRefusal(const Session& newcomer) {
 void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& hello) {
   const Admission admission = admit(tokens_, hello.token());
   if (!admission.error.empty()) return session->reject(admission.error);
-  auto room = roomFor(hello);
+  auto room = roomFor(hello, session->address());
   if (const auto* refusal = std::get_if<std::string>(&room)) return session->reject(*refusal);
   session->setAdmin(admission.admin);
   const auto& joined = std::get<std::shared_ptr<Room>>(room);
@@ -204,6 +239,7 @@ void Server::onClosed(Session& session) {
     if (room->empty() && room->name() != kDefaultRoom && !stopped_) {
       room->stop();
       rooms_.erase(room->name());
+      roomMaker_.erase(room->name());
       logLine("room " + room->name() + " dropped: its last client left");
     }
   }

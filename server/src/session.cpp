@@ -40,6 +40,7 @@ Session::Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t 
       connectedAt_(Clock::now()),
       lastActive_(connectedAt_),
       rate_(limits.commandsPerSecond, 2 * limits.commandsPerSecond, connectedAt_),
+      rateTimer_(socket_.get_executor()),
       readBuffer_(kMinReadBuffer),
       reader_(limits.maxFrameBytes),
       lastWriteProgress_(connectedAt_) {
@@ -97,7 +98,10 @@ void Session::reject(const std::string& message) { fatal(message); }
 void Session::readMore() {
   if (reading_ || phase_ == Phase::Closed) return;
   if (phase_ != Phase::Lingering) {
-    if (!acceptingTraffic() || pendingCommandBytes_ >= limits_.maxPendingCommandBytes) return;
+    if (!acceptingTraffic() || pendingCommandBytes_ >= limits_.maxPendingCommandBytes ||
+        waitingForRate_) {
+      return;
+    }
     if (readBegin_ < readEnd_) return processBuffered();
   }
   sizeReadBuffer();
@@ -144,6 +148,7 @@ void Session::processBuffered() {
   // until commandsApplied() resumes reading.
   while (readBegin_ < readEnd_ && acceptingTraffic() &&
          pendingCommandBytes_ < limits_.maxPendingCommandBytes) {
+    if (phase_ != Phase::AwaitingHello && !rateAllowsACommand()) return;
     const auto result =
         reader_.feed(std::span<const char>(readBuffer_.data() + readBegin_, readEnd_ - readBegin_));
     readBegin_ += result.consumed;
@@ -181,21 +186,24 @@ void Session::handleFrame(std::string_view payload) {
     host_.onHello(shared_from_this(), hello);
     return;
   }
+  rate_.take(Clock::now());
   pendingCommandBytes_ += payload.size();
   host_.onCommand(shared_from_this(), std::move(message), payload.size());
 }
 
-bool Session::withinRate() {
-  if (rate_.take(Clock::now())) {
-    refusedInARow_ = 0;
-    return true;
-  }
-  // Answering a flood with errors costs the server as much as serving it.
-  if (++refusedInARow_ > 4 * std::size_t(limits_.commandsPerSecond)) {
-    fatal("closed: " + std::to_string(refusedInARow_) +
-          " commands in a row past the rate limit of " +
-          std::to_string(std::size_t(limits_.commandsPerSecond)) + " per second");
-  }
+bool Session::rateAllowsACommand() {
+  const auto wait = rate_.untilAvailable(Clock::now());
+  if (wait == Clock::duration::zero()) return true;
+  // Past its rate, the client is slowed, not refused: its bytes stay in the
+  // socket (and TCP stops it) until a command's worth of budget refilled,
+  // so its commands are applied and answered in the order it sent them.
+  waitingForRate_ = true;
+  ++rateWaits_;
+  rateTimer_.expires_after(wait);
+  rateTimer_.async_wait([self = shared_from_this()](const asio::error_code& ec) {
+    self->waitingForRate_ = false;
+    if (!ec) self->readMore();
+  });
   return false;
 }
 
@@ -211,18 +219,53 @@ void Session::commandsApplied(std::size_t bytes) {
 
 void Session::send(const v1::ServerMessage& message) {
   if (phase_ == Phase::Closed) return;
-  push({wire::encodeSharedFrame(message), false});
+  SharedFrame frame = wire::encodeSharedFrame(message);
+  // A scene is the one reply that can be large: behind an unread backlog it
+  // is answered by a short refusal instead, and the client stays.
+  if (message.has_scene_data() && !replyFits(frame->size())) {
+    frame =
+        wire::encodeSharedFrame(sceneNotQueued(message.scene_data().request_id(), frame->size()));
+  }
+  push({std::move(frame), false});
+}
+
+bool Session::replyFits(std::size_t bytes) const {
+  // One reply larger than the cap may wait beside the capped ones: a client
+  // is never closed for the size of what it asked for.
+  if (bytes > limits_.maxQueuedReplyBytes) return oversizedReplyBytes_ == 0;
+  return queuedReplyBytes_ + bytes <= limits_.maxQueuedReplyBytes;
+}
+
+std::size_t& Session::replyBytesOf(std::size_t bytes) {
+  return bytes > limits_.maxQueuedReplyBytes ? oversizedReplyBytes_ : queuedReplyBytes_;
+}
+
+v1::ServerMessage Session::sceneNotQueued(std::uint64_t requestId, std::size_t bytes) const {
+  v1::ServerMessage refusal;
+  auto* result = refusal.mutable_command_result();
+  result->set_request_id(requestId);
+  result->set_ok(false);
+  result->set_error("save_scene: the scene (" + std::to_string(bytes) +
+                    " bytes) was not sent: " +
+                    std::to_string(queuedReplyBytes_ + oversizedReplyBytes_) +
+                    " bytes of earlier replies are still unread (at most " +
+                    std::to_string(limits_.maxQueuedReplyBytes) +
+                    " may wait); read them, then ask again");
+  return refusal;
 }
 
 void Session::subscribe(SnapshotSource& source) {
   if (phase_ != Phase::Serving) return;
   enter(Phase::Streaming);
   snapshotSource_ = &source;
+  lastSnapshot_ = Clock::now();
   push({nullptr, true});
 }
 
 void Session::offerSnapshot(std::uint64_t sequence, const SharedFrame& delta) {
-  if (phase_ != Phase::Streaming || fullSnapshotRequested_) return;
+  if (phase_ != Phase::Streaming) return;
+  lastSnapshot_ = Clock::now();
+  if (fullSnapshotRequested_) return;
   if (unsentSnapshot_) {
     // The client has not taken the previous snapshot yet: instead of queueing
     // both, the unsent one becomes a full snapshot, requested when the
@@ -258,11 +301,11 @@ void Session::push(Outgoing item) {
   if (item.snapshot) {
     unsentSnapshot_ = true;
   } else {
-    queuedReplyBytes_ += item.frame->size();
-    if (queuedReplyBytes_ > limits_.maxQueuedReplyBytes) {
-      return close("not reading its replies (" + std::to_string(queuedReplyBytes_) +
-                   " bytes queued)");
+    if (!replyFits(item.frame->size())) {
+      return close("not reading its replies (" +
+                   std::to_string(queuedReplyBytes_ + item.frame->size()) + " bytes queued)");
     }
+    replyBytesOf(item.frame->size()) += item.frame->size();
   }
   queue_.push_back(std::move(item));
   writeMore();
@@ -326,7 +369,7 @@ void Session::onWritten(std::size_t bytes) {
     }
     bytes -= remaining;
     writeOffset_ = 0;
-    if (!front.snapshot) queuedReplyBytes_ -= front.frame->size();
+    if (!front.snapshot) replyBytesOf(front.frame->size()) -= front.frame->size();
     queue_.pop_front();
   }
   writeMore();
@@ -342,13 +385,14 @@ void Session::fatal(const std::string& message) {
   // Nothing else is worth sending: the error goes next, then the socket closes.
   queue_.erase(queue_.begin() + std::ptrdiff_t(lockedItems()), queue_.end());
   queuedReplyBytes_ = 0;
+  oversizedReplyBytes_ = 0;
   for (const auto& item : queue_) {
-    if (!item.snapshot) queuedReplyBytes_ += item.frame->size();
+    if (!item.snapshot) replyBytesOf(item.frame->size()) += item.frame->size();
   }
   unsentSnapshot_ = false;
   enter(Phase::Flushing);
   queue_.push_back({wire::encodeSharedFrame(error), false});
-  queuedReplyBytes_ += queue_.back().frame->size();
+  replyBytesOf(queue_.back().frame->size()) += queue_.back().frame->size();
   writeMore();
 }
 
@@ -373,11 +417,16 @@ void Session::checkTimeouts(Clock::time_point now) {
   if (phase_ == Phase::AwaitingHello && now - connectedAt_ > limits_.stallTimeout) {
     return fatal("no Hello within " + seconds(limits_.stallTimeout));
   }
-  // Subscribers are exempt: reading snapshots is their business, and the
-  // stall timeout drops them when they stop.
-  if (phase_ == Phase::Serving && pendingCommandBytes_ == 0 &&
-      now - lastActive_ > limits_.idleTimeout) {
+  // A subscriber is busy while snapshots flow (the stall timeout drops it
+  // when it stops reading them); one of a paused room that neither sends
+  // nor gets anything holds the room open for nothing.
+  if (pendingCommandBytes_ > 0) return;
+  if (phase_ == Phase::Serving && now - lastActive_ > limits_.idleTimeout) {
     fatal("idle: sent nothing for " + seconds(limits_.idleTimeout) + " and subscribes to nothing");
+  } else if (phase_ == Phase::Streaming &&
+             now - std::max(lastActive_, lastSnapshot_) > limits_.idleTimeout) {
+    fatal("idle: sent nothing and was sent no snapshot (its room is paused) for " +
+          seconds(limits_.idleTimeout));
   }
 }
 
@@ -394,6 +443,7 @@ void Session::evict(Clock::time_point now) {
 void Session::close(const std::string& reason) {
   if (phase_ == Phase::Closed) return;
   enter(Phase::Closed);
+  rateTimer_.cancel();
   logLine(label() + " closed: " + reason);
   asio::error_code ignored;
   socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);

@@ -23,7 +23,9 @@ WorldSettings worldSettings(const SimulationSettings& settings) {
 
 Simulation::Simulation(const SimulationSettings& settings)
     : tickHz_(settings.tickHz),
+      fieldLimits_(settings.fieldLimits),
       world_(worldSettings(settings)),
+      serverShare_(settings.serverBodies),
       paused_(settings.paused),
       stepTimes_(std::size_t(settings.tickHz + 0.5)) {
   loadPreset(settings.preset, Material::Solid);
@@ -39,16 +41,24 @@ void Simulation::step() {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   changes_.changed(world_.movedBodies(), world_.bodyCount());
   for (const BodyId id : world_.escapedBodies()) changes_.leftWorld(id);
+  if (!world_.escapedBodies().empty()) serverShare_.set(world_.bodyCount());
   recordRemovedJoints();
   bodiesLeftWorld_ += world_.escapedBodies().size();
   ++version_;
 }
 
+std::string Simulation::spawnRefusal() const {
+  std::string refusal = bodyRefusal(world_, fieldLimits_);
+  return refusal.empty() ? serverShare_.refusal(1) : refusal;
+}
+
 CreateResult Simulation::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
+  if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
   return recordCreated(world_.createCircle(center, radius, options));
 }
 
 CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
+  if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
   return recordCreated(world_.createPolygon(points, options));
 }
 
@@ -77,12 +87,14 @@ CreateResult Simulation::recordCreated(CreateResult created) {
   if (created.ok()) {
     changes_.added(created.id);
     ++version_;
+    serverShare_.set(world_.bodyCount());
   }
   return created;
 }
 
 bool Simulation::removeBody(BodyId id) {
   if (!world_.destroyBody(id)) return false;
+  serverShare_.set(world_.bodyCount());
   changes_.removed(id);
   recordRemovedJoints();
   ++version_;
@@ -94,6 +106,14 @@ void Simulation::recordRemovedJoints() {
 }
 
 JointResult Simulation::createJoint(const JointDef& def) {
+  // The joint slots a scene may carry (wire::sceneSlotLimits): a world
+  // always reloads its own save.
+  const std::size_t maxJoints = wire::sceneSlotLimits(world_.settings().maxBodies).joints;
+  if (std::size_t(world_.jointCount()) >= maxJoints) {
+    return {{},
+            "joint limit reached: a room holds at most " + std::to_string(maxJoints) + " joints (" +
+                std::to_string(wire::kJointSlotsPerBody) + " per body of --max-bodies)"};
+  }
   const auto created = world_.createJoint(def);
   if (created.ok()) {
     changes_.jointAdded(created.id);
@@ -144,6 +164,9 @@ InputResult Simulation::setGravity(const Vec2& gravity) {
 FieldResult Simulation::addField(const FieldDef& def) {
   FieldBuild build = makeField(def);
   if (!build.ok()) return {{}, build.error};
+  if (std::string refusal = fieldRefusal(world_, def, fieldLimits_); !refusal.empty()) {
+    return {{}, std::move(refusal)};
+  }
   const FieldId id = world_.addField(std::move(build.field));
   // The bodies it wakes go out with the next step's moved bodies.
   changes_.fieldAdded(id);
@@ -162,25 +185,36 @@ bool Simulation::loadPreset(int id, Material selected) {
   const auto info = impulse::loadPreset(world_, id, selected);
   if (!info) return false;
   preset_ = *info;
-  changes_.replaced();
-  ++version_;
+  recordReplaced();
   return true;
 }
 
 void Simulation::clear() {
   world_.clear();
+  // The cleared world has none of the bodies the preset's script moved.
   preset_.drive = nullptr;
+  recordReplaced();
+}
+
+void Simulation::recordReplaced() {
+  serverShare_.set(world_.bodyCount());
   changes_.replaced();
   ++version_;
+  ++worldGeneration_;
 }
 
 InputResult Simulation::loadScene(std::string_view data) {
-  InputResult loaded = wire::loadScene(world_, data);
+  // Loaded beside the world, which stays as it is unless every check passes.
+  World candidate(world_.settings());
+  InputResult loaded = wire::loadScene(candidate, data);
   if (!loaded) return loaded;
+  std::string refusal = worldRefusal(candidate, fieldLimits_);
+  if (refusal.empty()) refusal = serverShare_.refusal(candidate.bodyCount() - world_.bodyCount());
+  if (!refusal.empty()) return {"scene refused: " + refusal};
+  world_ = std::move(candidate);
   // The scene's bodies are not the ones the preset's script moved.
   preset_.drive = nullptr;
-  changes_.replaced();
-  ++version_;
+  recordReplaced();
   return loaded;
 }
 

@@ -4,8 +4,10 @@
 
 #include "impulse/client/commands.h"
 #include "impulse/server/access.h"
+#include "impulse/server/commands.h"
 #include "impulse/server/fair_queue.h"
 #include "impulse/server/rate_limiter.h"
+#include "impulse/wire/scene_convert.h"
 
 namespace impulse::server {
 namespace {
@@ -84,28 +86,86 @@ TEST(Access, LoopbackAddresses) {
   EXPECT_FALSE(isLoopbackAddress("10.0.0.1"));
 }
 
-TEST(Ownership, PlayersMayPushAndRemoveWhatTheySpawned) {
-  World world;
-  Ownership ownership;
-  const auto spawn = client::spawnCircle({5, 5}, 0.5);
-  ASSERT_TRUE(ownership.playerRefusal(spawn, 7).empty());
-  const CreateResult body = world.createCircle(Vec2(5, 5), 0.5f);
-  v1::ServerMessage reply;
-  reply.mutable_command_result()->set_ok(true);
-  reply.mutable_command_result()->set_body_id(body.id.value);
-  ownership.recordOutcome(spawn, reply, 7, world);
+constexpr std::uint32_t kPlayer = 7;
+constexpr std::uint32_t kAdmin = 1;
 
-  EXPECT_TRUE(ownership.playerRefusal(client::applyImpulse(body.id.value, {1, 0}), 7).empty());
-  EXPECT_NE(ownership.playerRefusal(client::applyImpulse(body.id.value, {1, 0}), 8)
-                .find("was not created by this client"),
+// Applies `message` for `client` as the room does: refused when the player
+// may not, else applied and its outcome recorded. The reply.
+v1::ServerMessage applyAs(Simulation& simulation, Ownership& ownership,
+                          const v1::ClientMessage& message, std::uint32_t client) {
+  if (client == kPlayer) {
+    if (std::string refusal = ownership.playerRefusal(message, client); !refusal.empty()) {
+      v1::ServerMessage reply;
+      reply.mutable_command_result()->set_error(refusal);
+      return reply;
+    }
+  }
+  auto outcome = applyCommand(simulation, message, CommandLimits{});
+  ownership.recordOutcome(message, outcome.reply, client, simulation);
+  return outcome.reply;
+}
+
+std::string errorOf(const v1::ServerMessage& reply) { return reply.command_result().error(); }
+
+TEST(Ownership, PlayersMayPushAndRemoveWhatTheySpawned) {
+  Simulation simulation(SimulationSettings{.preset = 0});
+  Ownership ownership;
+  const auto spawned = applyAs(simulation, ownership, client::spawnCircle({5, 5}, 0.5), kPlayer);
+  const std::uint32_t body = spawned.command_result().body_id();
+  ASSERT_TRUE(spawned.command_result().ok()) << errorOf(spawned);
+
+  EXPECT_TRUE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), kPlayer).empty());
+  EXPECT_NE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), 8)
+                .find("body " + std::to_string(body) + " was not created by this client"),
             std::string::npos);
-  EXPECT_NE(ownership.playerRefusal(client::clearWorld(), 7).find("refused for the player role"),
-            std::string::npos);
-  EXPECT_TRUE(ownership.playerRefusal(client::queryBody(body.id.value), 8).empty());
+  // Body 1 is the preset's floor: the admin's, not the player's.
+  EXPECT_FALSE(ownership.playerRefusal(client::removeBody(1), kPlayer).empty());
+  EXPECT_NE(
+      ownership.playerRefusal(client::clearWorld(), kPlayer).find("refused for the player role"),
+      std::string::npos);
+  EXPECT_TRUE(ownership.playerRefusal(client::queryBody(body), 8).empty());
   // Removed: no longer the player's to push.
-  const auto remove = client::removeBody(body.id.value);
-  ownership.recordOutcome(remove, reply, 7, world);
-  EXPECT_FALSE(ownership.playerRefusal(client::applyImpulse(body.id.value, {1, 0}), 7).empty());
+  ASSERT_TRUE(
+      applyAs(simulation, ownership, client::removeBody(body), kPlayer).command_result().ok());
+  EXPECT_FALSE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), kPlayer).empty());
+}
+
+// Ids start over with each world, so a player who created body (or joint)
+// N must not act on whatever body N the next world has: clear, preset and
+// scene loads all forget owners.
+TEST(Ownership, EveryWorldReplacementForgetsOwners) {
+  const std::string scene = wire::saveScene(Simulation(SimulationSettings{.preset = 0}).world());
+  const std::vector<v1::ClientMessage> replacements = {client::clearWorld(), client::loadPreset(0),
+                                                       client::loadScene(scene)};
+  for (const auto& replacement : replacements) {
+    SCOPED_TRACE(std::string(commandName(replacement)));
+    Simulation simulation(SimulationSettings{.preset = 0});
+    Ownership ownership;
+    const auto spawned = applyAs(simulation, ownership, client::spawnCircle({5, 5}, 0.5), kPlayer);
+    const std::uint32_t body = spawned.command_result().body_id();
+    const auto pinned = applyAs(simulation, ownership,
+                                client::distanceJoint({body, 0, {5, 5}, {5, 6}}, {}), kPlayer);
+    const std::uint32_t joint = pinned.command_result().joint_id();
+    ASSERT_TRUE(pinned.command_result().ok()) << errorOf(pinned);
+    ASSERT_TRUE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), kPlayer).empty());
+    ASSERT_TRUE(ownership.playerRefusal(client::removeJoint(joint), kPlayer).empty());
+
+    ASSERT_TRUE(applyAs(simulation, ownership, replacement, kAdmin).command_result().ok());
+    // The admin's new bodies and joint take the ids the player had.
+    for (int i = 0; i < 6; ++i)
+      applyAs(simulation, ownership, client::spawnCircle({3.0 + i, 3}, 0.4), kAdmin);
+    ASSERT_TRUE(simulation.world().isValid(BodyId{body}));
+    const auto adminJoint = applyAs(simulation, ownership,
+                                    client::distanceJoint({body, 0, {5, 3}, {5, 4}}, {}), kAdmin);
+    ASSERT_EQ(adminJoint.command_result().joint_id(), joint);
+
+    EXPECT_NE(errorOf(applyAs(simulation, ownership, client::applyImpulse(body, {1, 0}), kPlayer))
+                  .find("body " + std::to_string(body) + " was not created by this client"),
+              std::string::npos);
+    EXPECT_NE(errorOf(applyAs(simulation, ownership, client::removeJoint(joint), kPlayer))
+                  .find("joint " + std::to_string(joint) + " was not created by this client"),
+              std::string::npos);
+  }
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
+#include <memory>
 #include <string>
 #include <thread>
 
@@ -96,6 +98,53 @@ TEST(HealthProbes, SilentProbeIsCutOff) {
   EXPECT_GT(seconds, 1.5);
   EXPECT_LT(seconds, 5.0);
   EXPECT_EQ(body(get(port, "/healthz")), "ok\n");
+}
+
+// The first body `path` answers with that starts with `prefix`, probing
+// every 50 ms for at most `seconds`; the last body otherwise.
+std::string awaitBody(std::uint16_t port, const std::string& path, const std::string& prefix,
+                      double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  std::string last;
+  do {
+    last = body(get(port, path));
+    if (last.starts_with(prefix)) break;
+    std::this_thread::sleep_for(milliseconds(50));
+  } while (std::chrono::steady_clock::now() < deadline);
+  return last;
+}
+
+// Issue 30: /healthz and /readyz answered 200 while heavy rooms stalled
+// every room. Readiness now says busy once overrunning rooms take the
+// stepping threads (each up to half of one), and liveness names a room that
+// finished no tick for --room-stall-seconds.
+TEST(HealthProbes, OverrunningRoomsMakeTheServerBusy_AStalledRoomFailsLiveness) {
+  ServerProcess server({"--health-port", "0", "--room-threads", "1", "--substeps", "64",
+                        "--room-stall-seconds", "0.03", "--max-commands-per-second", "1000000"});
+  const auto port = probePort(server);
+  ASSERT_NE(port, 0) << server.log();
+  EXPECT_EQ(awaitBody(port, "/healthz", "ok", 3), "ok\n");
+  EXPECT_EQ(awaitBody(port, "/readyz", "ready", 3), "ready: 1 of 16 rooms\n");
+
+  std::vector<std::unique_ptr<client::Client>> heavy;
+  for (const char* name : {"heavy-1", "heavy-2"}) {
+    auto options = localClient(server.port(), name, false);
+    options.room = name;
+    heavy.push_back(std::make_unique<client::Client>(options));
+    std::vector<v1::ClientMessage> pile;
+    for (int i = 0; i < 3000; ++i) {
+      pile.push_back(client::spawnCircle({-20 + 0.5 * (i % 60), 2 + 0.5 * (i / 60)}, 0.2));
+    }
+    requestAll(*heavy.back(), pile);
+  }
+  EXPECT_EQ(awaitBody(port, "/readyz", "busy", 5),
+            "busy: 2 rooms overrunning their tick budget take the 1 stepping thread(s); 3 of 16 "
+            "rooms\n");
+  EXPECT_EQ(statusLine(get(port, "/readyz")), "HTTP/1.1 503 Service Unavailable");
+  const std::string stalled = awaitBody(port, "/healthz", "stalled", 5);
+  std::printf("[ measure ] /healthz: %s", stalled.c_str());
+  EXPECT_TRUE(mentions(stalled, "stalled: room ")) << stalled;
+  EXPECT_TRUE(mentions(stalled, " s (--room-stall-seconds 0.030000)")) << stalled;
 }
 
 }  // namespace

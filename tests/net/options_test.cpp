@@ -81,12 +81,32 @@ TEST(ServerOptions, RefusesBadValuesWithTheFlagName) {
   }
 }
 
+// Issue 30's limits: fields per room, their cost, rooms per address.
+TEST(ServerOptions, RoomLimitsOfIssue30) {
+  const auto defaults = parse({});
+  ASSERT_TRUE(defaults.options);
+  EXPECT_EQ(defaults.options->maxFields, 64);
+  EXPECT_EQ(defaults.options->maxFieldCost, 1'000'000u);
+  EXPECT_EQ(defaults.options->maxRoomsPerAddress, 4);
+  const auto parsed =
+      parse({"--max-fields", "3", "--max-field-cost=5000", "--max-rooms-per-address", "2"});
+  ASSERT_TRUE(parsed.options) << parsed.error;
+  EXPECT_EQ(parsed.options->maxFields, 3);
+  EXPECT_EQ(parsed.options->maxFieldCost, 5000u);
+  EXPECT_EQ(parsed.options->maxRoomsPerAddress, 2);
+  EXPECT_EQ(parse({"--max-rooms-per-address", "0"}).error,
+            "--max-rooms-per-address expects an integer in 1..1000, got '0'");
+  EXPECT_EQ(parse({"--max-fields", "-1"}).error,
+            "--max-fields expects an integer in 0..10000, got '-1'");
+}
+
 TEST(ServerOptions, HelpListsEveryFlag) {
   EXPECT_TRUE(parse({"--help"}).help);
   const std::string text = usage();
   for (const char* flag :
        {"--bind", "--port", "--tick-hz", "--snapshot-hz", "--substeps", "--preset", "--paused",
-        "--max-clients", "--max-bodies", "--max-frame-bytes", "--help"}) {
+        "--max-clients", "--max-bodies", "--max-frame-bytes", "--max-fields", "--max-field-cost",
+        "--max-rooms-per-address", "--room-stall-seconds", "--max-total-bodies", "--help"}) {
     EXPECT_NE(text.find(flag), std::string::npos) << flag;
   }
 }

@@ -4,6 +4,7 @@
 // world untouched.
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "impulse/client/scene_file.h"
 #include "impulse/wire/scene_convert.h"
@@ -113,6 +114,56 @@ TEST(Scenes, BadScenesAreRefusedAndTheWorldStaysAsItWas) {
     EXPECT_TRUE(mentions(result(reply).error(), message)) << result(reply).error();
     EXPECT_EQ(savedScene(client), before) << message;
   }
+}
+
+// Issue 30: SaveScene of a settled pile of 3 000 bodies (a 1.4 MB reply,
+// over the 1 MiB reply cap) closed the requester. Here 6 000 bodies apart
+// (no contacts: about 194 bytes each). A reply it asked for is always sent;
+// a second scene pipelined behind the unread first is refused by name, and
+// the client stays.
+TEST(Scenes, SceneLargerThanTheReplyCapIsSent_ASecondBehindItIsRefusedByName) {
+  ServerProcess server({"--paused", "--max-commands-per-second", "100000"});
+  Client client(localClient(server.port(), "saver", false));
+  ASSERT_TRUE(result(client.request(client::clearWorld())).ok());
+  std::vector<v1::ClientMessage> spawns;
+  for (const double dx : {0.0, 25.0, -24.5}) {
+    for (auto& spawn : circleGrid(false)) {
+      auto* center = spawn.mutable_spawn_circle()->mutable_center();
+      center->set_x(center->x() + dx);
+      spawns.push_back(std::move(spawn));
+    }
+  }
+  for (const auto& reply : requestAll(client, spawns)) {
+    ASSERT_TRUE(result(reply).ok()) << result(reply).error();
+  }
+
+  // A client that reads nothing until both scenes are answered.
+  RawConnection reader(server.port(), 4096);
+  reader.sendHello();
+  for (std::uint64_t id : {1, 2}) {
+    auto save = client::saveScene();
+    save.set_request_id(id);
+    reader.sendMessage(save);
+  }
+  std::this_thread::sleep_for(milliseconds(1000));
+  std::optional<v1::ServerMessage> first;
+  std::optional<v1::ServerMessage> second;
+  while (!second) {
+    auto message = reader.receive(milliseconds(10000));
+    ASSERT_TRUE(message) << "a SaveScene was not answered";
+    if (message->has_welcome()) continue;
+    (first ? second : first) = std::move(*message);
+  }
+  ASSERT_TRUE(first->has_scene_data());
+  const std::string& scene = first->scene_data().data();
+  EXPECT_GT(scene.size(), std::size_t(1) << 20);
+  EXPECT_EQ(result(*second).request_id(), 2u);
+  EXPECT_FALSE(result(*second).ok());
+  EXPECT_TRUE(mentions(result(*second).error(), "was not sent: ")) << result(*second).error();
+  EXPECT_TRUE(mentions(result(*second).error(), "bytes of earlier replies are still unread"));
+  // Both still connected, and the scene is the world.
+  EXPECT_EQ(client.ping().stats().clients(), 2u);
+  EXPECT_EQ(savedScene(client), scene);
 }
 
 }  // namespace

@@ -122,7 +122,9 @@ constexpr long kFloodGrowthKb = 16 * 1024;
 #endif
 
 TEST(SlowClients, ClientThatFloodsCommandsWithoutReadingIsBounded) {
-  ServerProcess server({"--stall-timeout", "3"});
+  // No rate limit to speak of: the rate would slow the flooder down to a
+  // trickle (HostileClients), and this is about the reply cap.
+  ServerProcess server({"--stall-timeout", "3", "--max-commands-per-second", "1000000"});
   Client observer(localClient(server.port(), "observer", false));
   const long before = server.residentKb();
   RawConnection flooder(server.port(), 4096);

@@ -88,7 +88,7 @@ std::uint64_t runChurn(std::uint16_t port, Clock::time_point end) {
 }
 
 // Hello, then pings as fast as the socket takes them, never reading; the
-// server rate-limits and finally drops it. Reconnects each time.
+// server reads them no faster than the rate limit. Reconnects every 2 s.
 std::uint64_t runFlood(std::uint16_t port, Clock::time_point end) {
   std::string burst;
   for (int i = 0; i < 1000; ++i) burst += wire::encodeFrame(client::ping(std::uint64_t(i)));

@@ -6,6 +6,7 @@
 
 #include "impulse/wire/field_convert.h"
 
+#include <algorithm>
 #include <string>
 
 namespace impulse::wire {
@@ -541,11 +542,73 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
   return Result::success(std::move(state));
 }
 
+SceneSlotLimits sceneSlotLimits(int maxBodies) {
+  const auto bodies = std::size_t(std::max(maxBodies, 0));
+  // A tree holds 2n - 1 nodes for n proxies and grows its array by doubling.
+  return {bodies, kContactSlotsPerBody * bodies, kJointSlotsPerBody * bodies, 4 * bodies + 16};
+}
+
+namespace {
+
+std::string tooMany(const char* what, std::size_t count, std::size_t limit) {
+  return std::to_string(count) + " " + what + " (live or free), over the " + std::to_string(limit) +
+         " this world allows for its body limit";
+}
+
+std::string checkSlotCounts(const v1::Scene& scene, const SceneSlotLimits& limits) {
+  const std::size_t bodies = std::size_t(scene.bodies_size());
+  if (bodies > limits.bodies) return tooMany("body slots", bodies, limits.bodies);
+  const std::size_t contacts = std::size_t(scene.contacts_size());
+  if (contacts > limits.contacts) return tooMany("contact slots", contacts, limits.contacts);
+  const std::size_t joints = std::size_t(scene.joints_size());
+  if (joints > limits.joints) return tooMany("joint slots", joints, limits.joints);
+  for (const auto* tree : {&scene.static_tree(), &scene.movable_tree()}) {
+    const std::size_t nodes = std::size_t(tree->nodes_size());
+    if (nodes > limits.treeNodes) return tooMany("broad-phase tree nodes", nodes, limits.treeNodes);
+  }
+  return {};
+}
+
+// Counters that would wrap in the world's life, or hand out an id in use.
+std::string checkCounters(const v1::Scene& scene) {
+  if (scene.next_creation_order() > kMaxNextCreationOrder) {
+    return "next_creation_order " + std::to_string(scene.next_creation_order()) + " is past " +
+           std::to_string(kMaxNextCreationOrder) + " (it would wrap)";
+  }
+  for (int i = 0; i < scene.bodies_size(); ++i) {
+    const auto& body = scene.bodies(i);
+    if (body.alive() && body.creation_order() >= scene.next_creation_order()) {
+      return at("body slot", i) + "creation_order " + std::to_string(body.creation_order()) +
+             " is not below next_creation_order " + std::to_string(scene.next_creation_order());
+    }
+  }
+  if (scene.version() < 2) return {};
+  if (scene.next_field_id() > kMaxNextFieldId) {
+    return "next_field_id " + std::to_string(scene.next_field_id()) + " is past " +
+           std::to_string(kMaxNextFieldId) + " (field ids would wrap)";
+  }
+  for (int i = 0; i < scene.fields_size(); ++i) {
+    const std::uint32_t id = scene.fields(i).id();
+    if (id == 0 || id >= scene.next_field_id()) {
+      return at("field", i) + "id " + std::to_string(id) + " must be 1 to next_field_id - 1 (" +
+             std::to_string(scene.next_field_id()) + " - 1)";
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 InputResult loadScene(World& world, std::string_view bytes) {
   v1::Scene scene;
   if (!scene.ParseFromArray(bytes.data(), static_cast<int>(bytes.size()))) {
     return {"scene refused: the data does not parse as a Scene message"};
   }
+  const SceneSlotLimits limits = sceneSlotLimits(world.settings().maxBodies);
+  if (std::string error = checkSlotCounts(scene, limits); !error.empty()) {
+    return {"scene refused: " + error};
+  }
+  if (std::string error = checkCounters(scene); !error.empty()) return {"scene refused: " + error};
   Decoded<WorldState> state = stateFromWire(scene);
   if (!state.ok()) return {"scene refused: " + state.error};
   return world.importState(*state.value);

@@ -6,7 +6,8 @@
 /// token configured, clients that did not present it are players: they may
 /// spawn, push and remove only the bodies they created, join them with
 /// joints (and change or remove only the joints they created), query and ping;
-/// world-wide commands (clear, presets, pause, step, gravity) are refused.
+/// world-wide commands (clear, presets, scenes, pause, step, gravity, fields)
+/// are refused.
 
 #include <cstdint>
 #include <string>
@@ -14,6 +15,7 @@
 #include <unordered_map>
 
 #include "impulse.pb.h"
+#include "impulse/server/simulation.h"
 #include "impulse/world.h"
 
 namespace impulse::server {
@@ -36,22 +38,20 @@ Admission admit(const AccessTokens& tokens, std::string_view offered);
 /// True for an address the loopback default may bind ("127.x", "::1", "localhost").
 bool isLoopbackAddress(std::string_view address);
 
-/// Bodies created by player clients, by body id.
+/// Bodies and joints created by player clients, by id. What a player may do
+/// follows from the command table's role column (commandRole): Admin
+/// commands are refused, Owner commands only on what the player created.
 class Ownership {
  public:
   /// Why a player may not run this command (empty when it may).
   std::string playerRefusal(const v1::ClientMessage& message, std::uint32_t client) const;
-  /// After a command was applied: remembers what a client spawned and
-  /// forgets what a command removed. Bounded by the world's body limit.
+  /// After a command was applied: remembers what a client created and
+  /// forgets what left the world; forgets everything once the world was
+  /// replaced (its ids start over). Bounded by the world's body limit.
   void recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
-                     std::uint32_t client, const World& world);
+                     std::uint32_t client, const Simulation& simulation);
 
  private:
-  std::string ownershipRefusal(std::string_view command, std::uint32_t body,
-                               std::uint32_t client) const;
-
-  std::string jointRefusal(std::string_view command, std::uint32_t joint,
-                           std::uint32_t client) const;
   /// Forgets bodies and joints the world no longer has (they also leave by
   /// falling out of the world, or with their bodies), once the maps could
   /// outgrow the body limit.
@@ -59,6 +59,8 @@ class Ownership {
 
   std::unordered_map<std::uint32_t, std::uint32_t> ownerOf_;
   std::unordered_map<std::uint32_t, std::uint32_t> jointOwnerOf_;
+  /// The world the owners were recorded in (Simulation::worldGeneration).
+  std::uint64_t worldGeneration_ = 0;
 };
 
 }  // namespace impulse::server

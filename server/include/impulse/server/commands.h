@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 #include "impulse.pb.h"
 #include "impulse/server/simulation.h"
@@ -35,7 +36,19 @@ CommandOutcome applyCommand(Simulation& simulation, const v1::ClientMessage& mes
 /// The wire name of a command ("spawn_circle", "clear", ...).
 std::string_view commandName(const v1::ClientMessage& message);
 
-/// True for commands that change everyone's world (the admin role's).
-bool changesEveryonesWorld(const v1::ClientMessage& message);
+/// Who may run a command: the command table's role column.
+enum class CommandRole {
+  Anyone,  ///< reads, or makes something new
+  Owner,   ///< acts on the bodies or joints it names: a player's own only
+  Admin,   ///< changes everyone's world
+};
+CommandRole commandRole(const v1::ClientMessage& message);
+
+/// The bodies and joints a command names (body 0, the world, left out).
+struct CommandTargets {
+  std::vector<std::uint32_t> bodies;
+  std::vector<std::uint32_t> joints;
+};
+CommandTargets commandTargets(const v1::ClientMessage& message);
 
 }  // namespace impulse::server

@@ -1,10 +1,13 @@
 #pragma once
 /// The orchestrator's probes (docs/server.md, "Health probes"): a tiny HTTP
 /// endpoint on its own port (--health-port), on the I/O thread.
-///   GET /healthz  200 "ok": the I/O thread is serving (a wedged server
-///                 cannot answer, so the liveness probe restarts it).
-///   GET /readyz   200 when a new room can be made, else 503 (a server full
-///                 of rooms takes no new match but keeps its players).
+///   GET /healthz  200 "ok" while the I/O thread serves and every room
+///                 ticks; 503 naming a stalled room (a wedged server cannot
+///                 answer at all: either way the liveness probe restarts it).
+///   GET /readyz   200 when a new room can be made and served, else 503 (a
+///                 server full of rooms, or whose stepping threads are taken
+///                 by overrunning rooms, takes no new match but keeps its
+///                 players).
 /// One request per connection: the request line is read (at most 1 KiB,
 /// within 2 s), answered, and the connection closed.
 
@@ -15,16 +18,17 @@
 
 namespace impulse::server {
 
-struct Readiness {
-  bool ready = false;
-  std::string text;  // the response body, one line
+/// A probe's answer: 200 or 503, and the response body (one line).
+struct ProbeStatus {
+  bool ok = false;
+  std::string text;
 };
 
 class HealthEndpoint {
  public:
   /// Binds `endpoint` (throws asio::system_error on failure).
   HealthEndpoint(asio::io_context& io, const asio::ip::tcp::endpoint& endpoint,
-                 std::function<Readiness()> readiness);
+                 std::function<ProbeStatus()> liveness, std::function<ProbeStatus()> readiness);
 
   asio::ip::tcp::endpoint endpoint() const { return acceptor_.local_endpoint(); }
   void start();
@@ -37,7 +41,8 @@ class HealthEndpoint {
 
   asio::ip::tcp::acceptor acceptor_;
   asio::steady_timer retry_;
-  std::function<Readiness()> readiness_;
+  std::function<ProbeStatus()> liveness_;
+  std::function<ProbeStatus()> readiness_;
   bool stopped_ = false;
 };
 

@@ -21,12 +21,18 @@ struct ServerOptions {
   bool paused = false;
   int maxClients = 64;
   int maxBodies = 10000;
+  /// Bodies all rooms together may hold (server_bodies.h).
+  int maxTotalBodies = 40000;
+  /// Force fields per room, and the body interactions per step they may
+  /// cost together (field_budget.h).
+  int maxFields = 64;
+  std::uint64_t maxFieldCost = 1'000'000;
   std::size_t maxFrameBytes = std::size_t(1) << 20;
   /// A client with unsent data that accepts no byte for this long is
   /// disconnected; so is one that has not said Hello by then.
   double stallTimeoutSeconds = 10;
-  /// A client past Hello that sends nothing and subscribes to nothing for
-  /// this long is disconnected (subscribers are covered by the stall timeout).
+  /// A client past Hello that sends nothing for this long is disconnected,
+  /// unless it subscribes and snapshots flow to it (its room runs).
   double idleTimeoutSeconds = 30;
   /// Simultaneous connections from one IP address.
   int maxClientsPerAddress = 16;
@@ -42,11 +48,15 @@ struct ServerOptions {
   /// Rooms (docs/protocol.md): at most this many at once; a Hello naming a new
   /// room past it is refused. --max-bodies is per room.
   int maxRooms = 16;
+  /// Rooms one IP address may have made and still hold at once.
+  int maxRoomsPerAddress = 4;
   /// Threads stepping the rooms (each room on one thread at a time).
   int roomThreads = 2;
   /// The HTTP health probes' port on the bind address (health_endpoint.h);
   /// none without --health-port, 0 picks a free one.
   std::optional<std::uint16_t> healthPort;
+  /// /healthz fails once a room finished no tick for this long.
+  double roomStallSeconds = 10;
 };
 
 /// Outcome of parsing: options, a request for help, or an error message.

@@ -53,6 +53,8 @@ class RoomHost {
   virtual std::size_t connectionCount() const = 0;
   /// Every room of the server, for a RoomList.
   virtual void listRooms(v1::RoomList& list) const = 0;
+  /// The bodies of all rooms, against --max-total-bodies.
+  virtual std::shared_ptr<ServerBodies> serverBodies() = 0;
 };
 
 class Room final : public SnapshotSource, public std::enable_shared_from_this<Room> {
@@ -73,11 +75,15 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   /// A member closed: its queued commands and its Step in progress are dropped.
   void leave(Session& session);
   bool empty() const { return members_.empty(); }
-  /// A member's command, applied at a coming tick; refused at once past the
-  /// client's rate.
+  /// A member's command, applied at a coming tick (the session reads no
+  /// faster than the client's rate).
   void enqueue(Session& session, v1::ClientMessage&& message, std::size_t bytes);
   /// Name, members, and the bodies and tick as of the room's last tick.
   v1::RoomInfo info() const;
+  /// How long ago the room last finished a wakeup's ticks.
+  Clock::duration sinceLastTick(Clock::time_point now) const;
+  /// Its ticks overrun their period (it runs in slow motion).
+  bool overrunning() const { return publishedOverrunning_.load(); }
 
   void requestFullSnapshot(std::uint32_t client, bool quantized) override;
 
@@ -120,7 +126,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
 
   // ------------------------------------------------------- strand side
   void welcome(std::uint32_t client, bool admin, bool wantSnapshots);
-  void scheduleTick();
+  /// Arms the tick timer for `at`.
+  void scheduleTick(Clock::time_point at);
   void onTimer();
   void runTick();
   /// The world steps the time scale owes this tick, as many as fit before
@@ -159,7 +166,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   std::vector<std::shared_ptr<Session>> broadcastTargets_;
   /// Snapshots skipped by members that left.
   std::uint64_t snapshotsSkippedByLeavers_ = 0;
-  std::uint64_t commandsRateLimited_ = 0;
+  /// Rate-limit pauses of members that left.
+  std::uint64_t rateWaitsByLeavers_ = 0;
   /// Ticks the clock ran unpaused (the snapshot grid) and the steps a time
   /// scale owed that did not fit their tick.
   std::uint64_t runningTicks_ = 0;
@@ -171,6 +179,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   // Written by the strand, read by the I/O thread.
   std::atomic<std::uint64_t> publishedTick_ = 0;
   std::atomic<std::uint32_t> publishedBodies_ = 0;
+  std::atomic<Clock::rep> publishedTickEnd_;
+  std::atomic<bool> publishedOverrunning_ = false;
 
   // Strand only.
   asio::steady_timer timer_;
@@ -181,6 +191,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   TickSchedule schedule_;
   TickTimes tickTimes_;
   bool stopped_ = false;
+  /// Its ticks took longer than a tick period, on average over the last second.
+  bool overrunning_ = false;
   /// The members as the strand knows them, with their role (true: admin).
   std::map<std::uint32_t, bool> clients_;
   FairQueue commands_;

@@ -44,14 +44,16 @@ class Server final : public SessionHost, public RoomHost {
   void onClosed(Session& session) override;
   std::size_t connectionCount() const override { return sessions_.size(); }
   void listRooms(v1::RoomList& list) const override;
+  std::shared_ptr<ServerBodies> serverBodies() override { return serverBodies_; }
 
  private:
   void accept();
   /// Why a new connection may not be served ("" when it may); makes room
   /// by evicting an idle connection when it can.
   std::string admissionRefusal(const Session& newcomer);
-  /// The room Hello names, made if it is new; or why the client may not join.
-  std::variant<std::shared_ptr<Room>, std::string> roomFor(const v1::Hello& hello);
+  /// The room a Hello names, made if new; or why the client may not join.
+  std::variant<std::shared_ptr<Room>, std::string> roomFor(const v1::Hello& hello,
+                                                           const std::string& address);
   /// The room a client joined; null before Hello.
   std::shared_ptr<Room> roomOf(const Session& session) const;
   void scheduleHousekeeping();
@@ -59,8 +61,11 @@ class Server final : public SessionHost, public RoomHost {
   /// Gives freed heap back to the system after connections closed (a flood
   /// of them would otherwise leave the process large).
   void releaseMemory(Clock::time_point now);
-  /// /readyz: ready while a new room can be made.
-  Readiness readiness() const;
+  /// Not ok once a room finished no tick for --room-stall-seconds.
+  ProbeStatus liveness() const;
+  /// Not ok when no new room fits (--max-rooms) or the overrunning rooms
+  /// take every stepping thread (each takes up to half of one).
+  ProbeStatus readiness() const;
 
   asio::io_context& io_;
   ServerOptions options_;
@@ -71,10 +76,13 @@ class Server final : public SessionHost, public RoomHost {
   /// The probes' endpoint, with --health-port.
   std::unique_ptr<HealthEndpoint> health_;
   asio::thread_pool& steppers_;
+  std::shared_ptr<ServerBodies> serverBodies_;
   /// By name. The default room lives as long as the server; any other is
   /// dropped when its last member leaves.
   std::map<std::string, std::shared_ptr<Room>> rooms_;
   std::map<std::uint32_t, std::shared_ptr<Room>> roomOfClient_;
+  /// The address that made each room it holds (the default room has none).
+  std::map<std::string, std::string> roomMaker_;
 
   std::map<std::uint32_t, std::shared_ptr<Session>> sessions_;
   std::uint32_t nextClientId_ = 1;

@@ -5,7 +5,8 @@
 ///
 /// Memory per session is bounded whatever the peer does: one read buffer, one
 /// frame of at most max-frame-bytes, queued command bytes up to a cap (reading
-/// pauses beyond it), replies up to a cap (the session is dropped beyond it)
+/// pauses beyond it), replies up to a cap (the session is dropped beyond it;
+/// one reply larger than the cap may wait beside them)
 /// and at most one unsent snapshot, which a newer one replaces.
 
 #include <asio.hpp>
@@ -51,14 +52,20 @@ class SnapshotSource {
 struct SessionLimits {
   std::size_t maxFrameBytes = wire::kDefaultMaxFrameBytes;
   /// Replies waiting to be sent; a client past this is not reading: dropped.
+  /// Besides them, one reply larger than this may wait (a client is never
+  /// closed for the size of what it asked for); a scene that fits neither
+  /// is answered by a refusal.
   std::size_t maxQueuedReplyBytes = std::size_t(1) << 20;
   /// Commands waiting for the next tick; reading pauses past this.
   std::size_t maxPendingCommandBytes = std::size_t(1) << 20;
   Clock::duration stallTimeout = std::chrono::seconds(10);
-  /// A client past Hello that neither sends nor subscribes for this long is dropped.
+  /// A client past Hello that sends nothing for this long is dropped: one
+  /// that subscribes to nothing, or a subscriber that was offered no
+  /// snapshot either (its room is paused).
   Clock::duration idleTimeout = std::chrono::seconds(30);
-  /// Commands per second before commands are refused, after a burst of
-  /// two seconds' worth.
+  /// Commands per second, after a burst of two seconds' worth. Past it the
+  /// session stops reading until the budget refills: TCP flow control slows
+  /// the client, nothing is refused and replies stay in order.
   double commandsPerSecond = 2000;
 };
 
@@ -94,10 +101,6 @@ class Session : public std::enable_shared_from_this<Session> {
   void setAdmin(bool admin) { admin_ = admin; }
   /// Hello.snapshot_encoding was SNAPSHOT_ENCODING_QUANTIZED.
   bool quantized() const { return quantized_; }
-  /// Takes one command from the client's rate budget: false when over it.
-  /// A client refused four seconds' worth of commands in a row is not
-  /// slowing down: it is closed with an Error.
-  bool withinRate();
   /// When the peer last sent bytes or had a command applied (or connected).
   Clock::time_point lastActive() const { return lastActive_; }
   /// Silent for a while, not subscribed, nothing queued either way: may be
@@ -111,6 +114,8 @@ class Session : public std::enable_shared_from_this<Session> {
   bool acceptingTraffic() const { return phase_ <= Phase::Streaming; }
   const std::string& name() const { return name_; }
   std::uint64_t snapshotsSkipped() const { return snapshotsSkipped_; }
+  /// Times reading paused because the client was past its command rate.
+  std::uint64_t rateWaits() const { return rateWaits_; }
 
  private:
   /// The session's life, in order: a phase only ever moves forward.
@@ -128,6 +133,9 @@ class Session : public std::enable_shared_from_this<Session> {
   };
 
   void readMore();
+  /// True when the rate budget has a command; otherwise pauses reading
+  /// until it will have one.
+  bool rateAllowsACommand();
   void sizeReadBuffer();
   void onRead(const asio::error_code& ec, std::size_t bytes);
   void processBuffered();
@@ -137,6 +145,12 @@ class Session : public std::enable_shared_from_this<Session> {
   /// After the Error is flushed: half-close and drain input until EOF.
   void startLinger();
   void push(Outgoing item);
+  /// A reply of `bytes` may join the queue (see SessionLimits::maxQueuedReplyBytes).
+  bool replyFits(std::size_t bytes) const;
+  /// The counter a reply of `bytes` is counted in.
+  std::size_t& replyBytesOf(std::size_t bytes);
+  /// The CommandResult answering a SaveScene whose scene does not fit.
+  v1::ServerMessage sceneNotQueued(std::uint64_t requestId, std::size_t bytes) const;
   void writeMore();
   /// The queue's first item is a full snapshot still to be built: asks the
   /// source for it (once) and returns true while it is awaited.
@@ -155,7 +169,9 @@ class Session : public std::enable_shared_from_this<Session> {
   Clock::time_point connectedAt_;
   Clock::time_point lastActive_;
   RateLimiter rate_;
-  std::size_t refusedInARow_ = 0;
+  asio::steady_timer rateTimer_;
+  bool waitingForRate_ = false;
+  std::uint64_t rateWaits_ = 0;
   bool admin_ = false;
   bool quantized_ = false;
 
@@ -170,7 +186,10 @@ class Session : public std::enable_shared_from_this<Session> {
   std::size_t pendingCommandBytes_ = 0;
 
   std::deque<Outgoing> queue_;
+  /// Replies queued, within SessionLimits::maxQueuedReplyBytes...
   std::size_t queuedReplyBytes_ = 0;
+  /// ...and the one reply larger than that cap which may wait beside them.
+  std::size_t oversizedReplyBytes_ = 0;
   /// Queue items in the write call in flight (0: none in flight).
   std::size_t inFlight_ = 0;
   std::size_t writeOffset_ = 0;
@@ -188,6 +207,8 @@ class Session : public std::enable_shared_from_this<Session> {
   bool fullSnapshotRequested_ = false;
   /// The broadcast the client's snapshots are up to (none before the first).
   std::optional<std::uint64_t> lastSnapshotSequence_;
+  /// When a snapshot was last offered (or the stream started).
+  Clock::time_point lastSnapshot_;
   std::uint64_t snapshotsSkipped_ = 0;
 };
 

@@ -12,6 +12,8 @@
 #include "impulse/field_kinds.h"
 #include "impulse/material.h"
 #include "impulse/scenes/presets.h"
+#include "impulse/server/field_budget.h"
+#include "impulse/server/server_bodies.h"
 #include "impulse/server/tick_schedule.h"
 #include "impulse/server/world_changes.h"
 #include "impulse/world.h"
@@ -31,6 +33,9 @@ struct SimulationSettings {
   int maxBodies = 10000;
   int preset = 0;
   bool paused = false;
+  FieldLimits fieldLimits{};
+  /// The server-wide body count this world is part of; none: unbounded.
+  std::shared_ptr<ServerBodies> serverBodies = nullptr;
 };
 
 /// Range of SetTimeScale (docs/protocol.md, "Time").
@@ -53,6 +58,9 @@ class Simulation {
 
   /// Advances one tick.
   void step();
+  /// Bodies are refused past the body limit, past the fields' cost budget
+  /// (field_budget.h) when the world has fields, and past the server-wide
+  /// limit (server_bodies.h).
   CreateResult createCircle(const Vec2& center, Real radius, const BodyOptions& options);
   CreateResult createPolygon(std::span<const Vec2> points, const BodyOptions& options);
   CreateResult createCapsule(const Vec2& center1, const Vec2& center2, Real radius, const BodyOptions& options);
@@ -70,7 +78,8 @@ class Simulation {
   /// False for an unknown id.
   bool removeJoint(JointId id);
   InputResult updateJoint(JointId id, const JointUpdate& update);
-  /// The field, or the error naming the refused number (world unchanged).
+  /// The field, or the error naming the refused number, or the field limit
+  /// or cost budget it would break (world unchanged).
   FieldResult addField(const FieldDef& def);
   /// False for an unknown id.
   bool removeField(FieldId id);
@@ -79,8 +88,8 @@ class Simulation {
   /// Removes every body.
   void clear();
   /// Replaces the world with a serialised Scene (docs/scenes.md); refused,
-  /// with the reason and the world untouched, when it does not parse or
-  /// the engine refuses its state.
+  /// with the reason and the world untouched, when it does not parse, the
+  /// engine refuses its state, or its fields break the field limits.
   InputResult loadScene(std::string_view data);
   void setPaused(bool paused);
   /// Simulated seconds per wall second, kMinTimeScale..kMaxTimeScale; an
@@ -101,6 +110,9 @@ class Simulation {
   const PresetInfo& preset() const { return preset_; }
   /// Changes with every change of the world or its meta: names its state.
   std::uint64_t version() const { return version_; }
+  /// Changes each time the world is replaced (clear, preset, scene), after
+  /// which body and joint ids start over.
+  std::uint64_t worldGeneration() const { return worldGeneration_; }
   /// The changes since the last call, forgotten here. Valid until the next
   /// call: two buffers take turns, so a broadcast allocates no new lists.
   WorldChanges& takeChanges();
@@ -120,14 +132,22 @@ class Simulation {
   /// Records the joints the world removed with their bodies (last
   /// destroyBody call or step).
   void recordRemovedJoints();
+  /// After the world was replaced: the next snapshot is full.
+  void recordReplaced();
+  /// Why one more body may not be made (fields' cost, server-wide limit).
+  std::string spawnRefusal() const;
 
   double tickHz_;
+  FieldLimits fieldLimits_;
   World world_;
+  /// This world's bodies in the server's total (after every change).
+  ServerBodies::Share serverShare_;
   WorldChanges changes_;
   /// The changes last taken (takeChanges), kept for their lists' capacity.
   WorldChanges taken_;
   PresetInfo preset_;
   std::uint64_t version_ = 0;
+  std::uint64_t worldGeneration_ = 0;
   std::uint64_t tick_ = 0;
   bool paused_ = false;
   double timeScale_ = 1;

@@ -26,6 +26,8 @@ class TickSchedule {
   Due due(Clock::time_point now);
   /// When the next tick is due.
   Clock::time_point nextDeadline() const;
+  /// Counts `ticks` of those due() returned to run as skipped instead.
+  void skip(int ticks) { skipped_ += ticks; }
   /// Tick slots consumed so far (run + skipped).
   std::int64_t slots() const { return next_; }
   std::int64_t skipped() const { return skipped_; }

@@ -13,7 +13,9 @@
 ///
 ///   Case     the ClientMessage oneof case without its `k` (kStep: Step)
 ///   field    the oneof field; also the command's wire name ("step")
-///   role     Anyone, or Admin for commands that change everyone's world
+///   role     Anyone; Owner for commands acting on the bodies or joints they
+///            name (body_id, body_a, body_b, joint_id: a player must have
+///            created them); Admin for commands that change everyone's world
 ///   handler  the server function applying it: server/src/command_handlers.cpp
 ///   word     the impulse-cli word
 ///   usage    its script grammar
@@ -63,7 +65,7 @@
       "spawn a compound body; PART: circle CX CY R | box CX CY HW HH | "                  \
       "capsule X1 Y1 X2 Y2 R (body-local)",                                               \
       parseBody, client::spawnBody)                                                       \
-  ROW(SetTargetTransform, set_target_transform, Anyone, setTargetTransform, "target",     \
+  ROW(SetTargetTransform, set_target_transform, Owner, setTargetTransform, "target",      \
       "target ID X Y [ANGLE]",                                                            \
       "move a body (a kinematic platform) to X Y, ANGLE over the next tick",              \
       parseTarget, client::setTargetTransform)                                            \
@@ -75,48 +77,48 @@
       "reset gravity to (0, -9.81)", parseNoArguments, client::resetGravity)              \
   ROW(Clear, clear, Admin, clear, "clear", "clear",                                       \
       "remove every body", parseNoArguments, client::clearWorld)                          \
-  ROW(RemoveBody, remove_body, Anyone, removeBody, "remove", "remove ID",                 \
+  ROW(RemoveBody, remove_body, Owner,  removeBody, "remove", "remove ID",                 \
       "remove a body", parseBodyId, client::removeBody)                                   \
-  ROW(ApplyImpulse, apply_impulse, Anyone, applyImpulse, "impulse",                       \
+  ROW(ApplyImpulse, apply_impulse, Owner,  applyImpulse, "impulse",                       \
       "impulse ID JX JY [PX PY]", "apply an impulse (at a world point)",                  \
       parseImpulse, client::applyImpulse)                                                 \
   ROW(QueryBody, query_body, Anyone, queryBody, "query", "query ID",                      \
       "description, state and mass properties of a body", parseBodyId, client::queryBody) \
   ROW(Ping, ping, Anyone, ping, "ping", "ping",                                           \
       "round trip and server statistics", parsePing, client::ping)                        \
-  ROW(CreateJoint, create_joint, Anyone, createJoint, "distance",                         \
+  ROW(CreateJoint, create_joint, Owner,  createJoint, "distance",                         \
       "distance A B AX AY BX BY [LENGTH [K [DAMPING]]] [collide]",                        \
       "join A and B (B 0: the world) by a rod, or a spring of K N/m; reply has joint_id", \
       parseDistance, client::distanceJoint)                                               \
-  ROW(CreateJoint, create_joint, Anyone, createJoint, "rope",                             \
+  ROW(CreateJoint, create_joint, Owner,  createJoint, "rope",                             \
       "rope A B AX AY BX BY [MAX_LENGTH] [collide]",                                      \
       "a rope: slack below MAX_LENGTH (default: the anchors' distance), never longer",    \
       parseRope, client::ropeJoint)                                                       \
-  ROW(CreateJoint, create_joint, Anyone, createJoint, "revolute",                         \
+  ROW(CreateJoint, create_joint, Owner,  createJoint, "revolute",                         \
       "revolute A B X Y [limit LO HI] [motor SPEED TORQUE] [spring K D] [collide]",       \
       "a pin at X Y (angles in rad, SPEED in rad/s)", parseRevolute,                      \
       client::revoluteJoint)                                                              \
-  ROW(CreateJoint, create_joint, Anyone, createJoint, "prismatic",                        \
+  ROW(CreateJoint, create_joint, Owner,  createJoint, "prismatic",                        \
       "prismatic A B X Y DX DY [limit LO HI] [motor SPEED FORCE] [spring K D] [collide]", \
       "B slides along the axis DX DY through X Y, without turning", parsePrismatic,       \
       client::prismaticJoint)                                                             \
-  ROW(CreateJoint, create_joint, Anyone, createJoint, "weld", "weld A B X Y [KL KA] [collide]", \
+  ROW(CreateJoint, create_joint, Owner,  createJoint, "weld", "weld A B X Y [KL KA] [collide]", \
       "glue B to A at X Y (stiffness KL N/m, KA N*m/rad; 0 or none: rigid)", parseWeld,   \
       client::weldJoint)                                                                  \
-  ROW(CreateJoint, create_joint, Anyone, createJoint, "wheel",                            \
+  ROW(CreateJoint, create_joint, Owner,  createJoint, "wheel",                            \
       "wheel A B X Y DX DY [spring K D] [motor SPEED TORQUE] [collide]",                  \
       "wheel B at X Y on a suspension along DX DY of car body A", parseWheel,             \
       client::wheelJoint)                                                                 \
-  ROW(CreateJoint, create_joint, Anyone, createJoint, "mouse",                            \
+  ROW(CreateJoint, create_joint, Owner,  createJoint, "mouse",                            \
       "mouse A X Y MAX_FORCE [K D]",                                                      \
       "pull A's point X Y towards a target (first X Y; move it with target)",            \
       parseMouse, client::mouseJoint)                                                     \
-  ROW(UpdateJoint, update_joint, Anyone, updateJoint, "target", "target J X Y",           \
+  ROW(UpdateJoint, update_joint, Owner,  updateJoint, "target", "target J X Y",           \
       "move mouse joint J's target", parseJointTarget, client::setJointTarget)            \
-  ROW(UpdateJoint, update_joint, Anyone, updateJoint, "motor", "motor J SPEED [MAX]",     \
+  ROW(UpdateJoint, update_joint, Owner,  updateJoint, "motor", "motor J SPEED [MAX]",     \
       "set joint J's motor speed (and max torque or force)", parseJointMotor,             \
       client::setJointMotor)                                                              \
-  ROW(RemoveJoint, remove_joint, Anyone, removeJoint, "remove-joint", "remove-joint J",   \
+  ROW(RemoveJoint, remove_joint, Owner,  removeJoint, "remove-joint", "remove-joint J",   \
       "remove a joint", parseBodyId, client::removeJoint)                                \
   ROW(QueryJoint, query_joint, Anyone, queryJoint, "query-joint", "query-joint J",        \
       "a joint's description, reaction force and torque, length, angle", parseBodyId,   \
