@@ -165,6 +165,8 @@ void App::handleButton(const SDL_MouseButtonEvent& button) {
   const bool down = button.type == SDL_MOUSEBUTTONDOWN;
   const Vec2 at = view().toWorld(float(button.x), float(button.y));
   if (button.button == SDL_BUTTON_LEFT) {
+    leftHeld_ = down;
+    leftPressed_ = leftPressed_ || down;
     // Presses on the panel belong to its widgets; a release always ends a drag.
     if (!down) {
       controls_.pointerReleased(at);
@@ -324,7 +326,9 @@ void App::drawScene(ImDrawList& list, const ViewTransform& view) {
 }
 
 void App::draw() {
-  gui_->beginFrame();
+  // A click shorter than a frame still reaches the panel as a press.
+  gui_->beginFrame({pointerX_, pointerY_, leftHeld_ || leftPressed_});
+  leftPressed_ = false;
   const ViewTransform v = view();
   drawScene(*ImGui::GetBackgroundDrawList(), v);
 
@@ -359,7 +363,8 @@ void App::draw() {
                              [this](const std::string& file) {
                                controls_.notify(sceneFiles_.load(file), now());
                              }};
-  drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input, actions);
+  drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input, actions,
+                panelShown_);
 
   SDL_SetRenderDrawColor(renderer_, palette::kBackground.r, palette::kBackground.g,
                          palette::kBackground.b, 255);

@@ -23,6 +23,7 @@
 #include "overlays.h"
 #include "preset_catalogue.h"
 #include "renderer.h"
+#include "side_panel.h"
 #include "scene_files.h"
 #include "view_transform.h"
 
@@ -67,6 +68,8 @@ class App {
   const History& energyHistory() const { return energy_; }
   /// Seconds since the app started (the clock of every component).
   double now() const;
+  /// Where the last frame's panel drew its scene picker entries.
+  const PanelShown& panelShown() const { return panelShown_; }
   /// Frames drawn per second over the last second or so.
   double framesPerSecond() const { return framesPerSecond_; }
 
@@ -119,6 +122,8 @@ class App {
   float pointerX_ = 0;
   float pointerY_ = 0;
   std::optional<SDL_Point> altPressedAt_;
+  bool leftHeld_ = false;
+  bool leftPressed_ = false;  ///< since the last frame
   bool altDragged_ = false;
   std::optional<std::string> capturePath_;
   FrameTiming timing_;
@@ -130,6 +135,7 @@ class App {
   /// Every preset's title and explanation, for the scene picker.
   std::vector<PresetInfo> presets_ = presetCatalogue();
   std::vector<std::string> sceneFileList_;
+  PanelShown panelShown_;
   bool quit_ = false;
 };
 

@@ -200,7 +200,7 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     case Control::CancelOrQuit: cancelOrQuit(now); break;
     case Control::SlowerTime: scaleTime(context, 0.5, now); break;
     case Control::FasterTime: scaleTime(context, 2, now); break;
-    case Control::NormalTime: scaleTime(context, 1 / timeScale(context), now); break;
+    case Control::NormalTime: scaleTime(context, 1 / timeScale(context, now), now); break;
     case Control::StandardShape: spawnStandardShape(key.index); break;
     case Control::ShapeSmaller: resizeShapes(1 / kShapeSizeFactor, now); break;
     case Control::ShapeLarger: resizeShapes(kShapeSizeFactor, now); break;
@@ -327,10 +327,16 @@ void Controls::pinSelected(const ControlContext& context, double now) {
   send(client::revoluteJoint({*selected_, 0, toPoint(pivot), toPoint(pivot), false}, {}), "pin");
 }
 
-double Controls::timeScale(const ControlContext& context) const {
-  // Until the server's scale changes, a press builds on the one asked for
-  // last: quick (or held, repeating) presses each count.
-  if (askedScale_ && askedScale_->serverScale == context.timeScale) return askedScale_->wanted;
+double Controls::timeScale(const ControlContext& context, double now) const {
+  // Until the server shows the scale asked for last, a press builds on it:
+  // quick (or held, repeating) presses each count, though the server's
+  // answers to the earlier ones arrive in between. A scale the server never
+  // shows (refused, or another client's change won) is let go after a while.
+  constexpr double kAnswerSeconds = 1;
+  if (askedScale_ && context.timeScale != askedScale_->wanted &&
+      now - askedScale_->at < kAnswerSeconds) {
+    return askedScale_->wanted;
+  }
   return context.timeScale;
 }
 
@@ -338,14 +344,14 @@ void Controls::scaleTime(const ControlContext& context, double factor, double no
   // The server's range (PROTOCOL.md, "Time"): 0.01x to 16x.
   constexpr double kSlowest = 0.01;
   constexpr double kFastest = 16;
-  const double current = timeScale(context);
+  const double current = timeScale(context, now);
   const double wanted = std::clamp(current * factor, kSlowest, kFastest);
   if (wanted == current) {
     notify("Time scale stays " + client::formatNumber(wanted, 2) + "x (0.01x to 16x)", now);
     return;
   }
   send(client::setTimeScale(wanted), "time scale");
-  askedScale_ = AskedScale{wanted, context.timeScale};
+  askedScale_ = AskedScale{wanted, now};
 }
 
 void Controls::spawnStandardShape(int sides) {

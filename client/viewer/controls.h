@@ -232,8 +232,8 @@ class Controls {
   /// Asks for the time scale times `factor`, kept in the server's range.
   void scaleTime(const ControlContext& context, double factor, double now);
   /// The time scale a time key starts from: the server's, or the one asked
-  /// for last while the server has not changed since.
-  double timeScale(const ControlContext& context) const;
+  /// for last while the server has not shown it yet (for a second at most).
+  double timeScale(const ControlContext& context, double now) const;
   void spawnStandardShape(int sides);
   void resizeShapes(Real factor, double now);
   /// Acts once for a repeating key; false when the key does not repeat.
@@ -253,10 +253,10 @@ class Controls {
   bool inspectorVisible_ = false;
   std::optional<std::uint32_t> selected_;
   std::optional<Grab> grab_;
-  /// The last time scale asked for, and the server's scale then.
+  /// The last time scale asked for, and when.
   struct AskedScale {
     double wanted;
-    double serverScale;
+    double at;
   };
   std::optional<AskedScale> askedScale_;
   /// Drag joints asked for by grabs that ended before the server answered:

@@ -31,7 +31,7 @@ void explanationTooltip(const PresetInfo& preset) {
   ImGui::EndTooltip();
 }
 
-void drawPresetList(const PanelInput& input, const PanelActions& actions) {
+void drawPresetList(const PanelInput& input, const PanelActions& actions, PanelShown& shown) {
   if (input.presets == nullptr) return;
   const int current = input.preset != nullptr ? input.preset->id : -1;
   for (const PresetInfo& preset : *input.presets) {
@@ -42,6 +42,10 @@ void drawPresetList(const PanelInput& input, const PanelActions& actions) {
       actions.key({Control::LoadPreset, preset.id});
     }
     explanationTooltip(preset);
+    if (ImGui::IsItemVisible()) {
+      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+      shown.presetEntries.push_back({preset.id, {min.x, min.y, max.x - min.x, max.y - min.y}});
+    }
     ImGui::PopID();
   }
 }
@@ -61,13 +65,13 @@ void drawSceneFiles(const PanelInput& input, const PanelActions& actions) {
 
 }  // namespace
 
-void drawScenePicker(const PanelInput& input, const PanelActions& actions) {
+void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelShown& shown) {
   if (input.preset != nullptr) {
     dimWrapped(paragraph(input.preset->explanation));
     ImGui::Spacing();
   }
   dimWrapped("Presets (hover for what each shows; drawing works in all):");
-  drawPresetList(input, actions);
+  drawPresetList(input, actions, shown);
   ImGui::Spacing();
   drawSceneFiles(input, actions);
 }

@@ -195,8 +195,9 @@ void sameLineIfFits(float width) {
 }
 
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
-                   const PanelInput& input, const PanelActions& actions) {
+                   const PanelInput& input, const PanelActions& actions, PanelShown& shown) {
   const auto& act = actions.key;
+  shown = {};
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.w, rect.h});
   ImGui::Begin("##side panel", nullptr,
@@ -207,7 +208,7 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   ImGui::BeginChild("##sections");
   // Most looked-at first: the scene, the selected body, the live figures.
   if (ImGui::CollapsingHeader("Scenes", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawScenePicker(input, actions);
+    drawScenePicker(input, actions, shown);
   }
   drawControlsSection(controls, act);
   if (controls.inspectorVisible() &&

@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "controls.h"
@@ -66,16 +67,22 @@ struct PanelActions {
   std::function<void(const std::string&)> loadScene;
 };
 
-/// Draws the panel into `rect`.
+/// Where the panel drew what a test or a tool may want to point at.
+struct PanelShown {
+  /// Each preset entry of the scene picker that is on screen: id, window pixels.
+  std::vector<std::pair<int, PixelRect>> presetEntries;
+};
+
+/// Draws the panel into `rect`; `shown` is refilled.
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
-                   const PanelInput& input, const PanelActions& actions);
+                   const PanelInput& input, const PanelActions& actions, PanelShown& shown);
 
 /// SameLine() when an item `width` pixels wide still fits on this line;
 /// otherwise the item goes on the next line (rows that fit any width).
 void sameLineIfFits(float width);
 
 // The sections, one file each.
-void drawScenePicker(const PanelInput& input, const PanelActions& actions);
+void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelShown& shown);
 void drawInspectorSection(const Controls& controls, const PanelInput& input);
 void drawStatsSection(const PanelInput& input);
 void drawControlsTable();
