@@ -1,10 +1,9 @@
 #include "server_wording.h"
 
-#include <algorithm>
 #include <array>
 #include <utility>
 
-#include "impulse/client/number_format.h"
+#include "impulse/wire/plain_numbers.h"
 
 namespace impulse::cli {
 
@@ -72,38 +71,12 @@ std::string polygonVertices(std::string text) {
   return text;
 }
 
-// std::to_string's six fixed decimals ("-25.000000", "0.100000").
-std::string tidyNumbers(const std::string& text) {
-  std::string out;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const std::size_t start = i;
-    std::size_t end = i + (text[i] == '-' ? 1 : 0);
-    const std::size_t integer = end;
-    while (end < text.size() && isDigit(text[end])) ++end;
-    const bool fixedSix = end > integer && end + 7 <= text.size() && text[end] == '.' &&
-                          std::all_of(text.begin() + std::ptrdiff_t(end) + 1,
-                                      text.begin() + std::ptrdiff_t(end) + 7, isDigit) &&
-                          (end + 7 == text.size() || !isDigit(text[end + 7]));
-    if (fixedSix) {
-      out += client::formatNumber(std::stod(text.substr(start, end + 7 - start)));
-      i = end + 7;
-    } else {
-      // Copy through the whole run of digits, so no number is cut in two.
-      const std::size_t stop = std::max(end, start + 1);
-      out.append(text, start, stop - start);
-      i = stop;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string scriptWording(std::string_view serverError) {
   std::string text = polygonVertices(std::string(serverError));
   for (const auto& [field, words] : kFieldWords) text = replaceAll(std::move(text), field, words);
-  return tidyNumbers(text);
+  return wire::plainNumbers(text);
 }
 
 }  // namespace impulse::cli
