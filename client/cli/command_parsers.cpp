@@ -119,6 +119,15 @@ std::optional<std::tuple<std::uint32_t, client::Point, std::optional<client::Poi
   return std::tuple{*id, client::Point{*jx, *jy}, point};
 }
 
+std::optional<std::tuple<std::uint32_t, client::Point, double>> parseVelocity(Arguments& line) {
+  const auto id = line.idAt(1);
+  const auto vx = line.numberAt(2), vy = line.numberAt(3);
+  if (!id || !vx || !vy) return std::nullopt;
+  const auto angular = line.size() > 4 ? line.numberAt(4) : std::optional<double>(0);
+  if (!angular || !line.maxWords(5)) return std::nullopt;
+  return std::tuple{*id, client::Point{*vx, *vy}, *angular};
+}
+
 std::optional<std::tuple<std::uint64_t, bool>> parsePing(Arguments& line) {
   if (!parseNoArguments(line)) return std::nullopt;
   const bool wantStateHash = false;

@@ -11,7 +11,7 @@ namespace {
 
 // Protocol field paths and the script words for them; longer paths first,
 // so a path is replaced before its command's prefix.
-constexpr std::array<std::pair<const char*, const char*>, 26> kFieldWords{{
+constexpr std::array<std::pair<const char*, const char*>, 29> kFieldWords{{
     {"spawn_circle.center.x", "circle X"},
     {"spawn_circle.center.y", "circle Y"},
     {"spawn_circle.center", "circle X Y"},
@@ -33,6 +33,9 @@ constexpr std::array<std::pair<const char*, const char*>, 26> kFieldWords{{
     {"apply_impulse.point.x", "impulse PX"},
     {"apply_impulse.point.y", "impulse PY"},
     {"apply_impulse", "impulse"},
+    {"set_velocity.velocity.x", "velocity VX"},
+    {"set_velocity.velocity.y", "velocity VY"},
+    {"set_velocity", "velocity"},
     {"remove_body", "remove"},
     {"query_body", "query"},
     // Joint errors keep their protocol paths (create_joint.distance.stiffness):

@@ -362,9 +362,14 @@ void App::draw() {
   const PanelActions actions{[this](ControlKey key) { act(key); },
                              [this](const std::string& file) {
                                controls_.notify(sceneFiles_.load(file), now());
+                             },
+                             [this](v1::ClientMessage message, std::string what) {
+                               if (!connection_->send(std::move(message), what)) {
+                                 controls_.notify("Not connected: " + what + " not sent", now());
+                               }
                              }};
   drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input, actions,
-                panelShown_);
+                panelState_);
 
   SDL_SetRenderDrawColor(renderer_, palette::kBackground.r, palette::kBackground.g,
                          palette::kBackground.b, 255);

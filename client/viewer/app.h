@@ -69,7 +69,7 @@ class App {
   /// Seconds since the app started (the clock of every component).
   double now() const;
   /// Where the last frame's panel drew its scene picker entries.
-  const PanelShown& panelShown() const { return panelShown_; }
+  const PanelState& panelState() const { return panelState_; }
   /// Frames drawn per second over the last second or so.
   double framesPerSecond() const { return framesPerSecond_; }
 
@@ -135,7 +135,7 @@ class App {
   /// Every preset's title and explanation, for the scene picker.
   std::vector<PresetInfo> presets_ = presetCatalogue();
   std::vector<std::string> sceneFileList_;
-  PanelShown panelShown_;
+  PanelState panelState_;
   bool quit_ = false;
 };
 

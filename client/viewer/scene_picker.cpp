@@ -31,7 +31,7 @@ void explanationTooltip(const PresetInfo& preset) {
   ImGui::EndTooltip();
 }
 
-void drawPresetList(const PanelInput& input, const PanelActions& actions, PanelShown& shown) {
+void drawPresetList(const PanelInput& input, const PanelActions& actions, PanelState& state) {
   if (input.presets == nullptr) return;
   const int current = input.preset != nullptr ? input.preset->id : -1;
   for (const PresetInfo& preset : *input.presets) {
@@ -44,7 +44,7 @@ void drawPresetList(const PanelInput& input, const PanelActions& actions, PanelS
     explanationTooltip(preset);
     if (ImGui::IsItemVisible()) {
       const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-      shown.presetEntries.push_back({preset.id, {min.x, min.y, max.x - min.x, max.y - min.y}});
+      state.presetEntries.push_back({preset.id, {min.x, min.y, max.x - min.x, max.y - min.y}});
     }
     ImGui::PopID();
   }
@@ -65,13 +65,13 @@ void drawSceneFiles(const PanelInput& input, const PanelActions& actions) {
 
 }  // namespace
 
-void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelShown& shown) {
+void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelState& state) {
   if (input.preset != nullptr) {
     dimWrapped(paragraph(input.preset->explanation));
     ImGui::Spacing();
   }
   dimWrapped("Presets (hover for what each shows; drawing works in all):");
-  drawPresetList(input, actions, shown);
+  drawPresetList(input, actions, state);
   ImGui::Spacing();
   drawSceneFiles(input, actions);
 }

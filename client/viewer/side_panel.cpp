@@ -195,9 +195,10 @@ void sameLineIfFits(float width) {
 }
 
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
-                   const PanelInput& input, const PanelActions& actions, PanelShown& shown) {
+                   const PanelInput& input, const PanelActions& actions, PanelState& state) {
   const auto& act = actions.key;
-  shown = {};
+  state.presetEntries.clear();
+  state.stopButton.reset();
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.w, rect.h});
   ImGui::Begin("##side panel", nullptr,
@@ -206,15 +207,16 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   ImGui::Separator();
   // Only the sections scroll; the header above stays.
   ImGui::BeginChild("##sections");
-  // Most looked-at first: the scene, the selected body, the live figures.
-  if (ImGui::CollapsingHeader("Scenes", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawScenePicker(input, actions, shown);
-  }
-  drawControlsSection(controls, act);
+  // Most looked-at first: the selected body while the inspector is on (it
+  // is what the person works on), the scenes, the live figures.
   if (controls.inspectorVisible() &&
       ImGui::CollapsingHeader("Inspector (M)", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawInspectorSection(controls, input);
+    drawInspectorSection(controls, input, actions, state);
   }
+  if (ImGui::CollapsingHeader("Scenes", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawScenePicker(input, actions, state);
+  }
+  drawControlsSection(controls, act);
   if (ImGui::CollapsingHeader("Server and viewer", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawStatsSection(input);
   }

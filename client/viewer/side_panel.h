@@ -61,29 +61,43 @@ struct PanelFonts {
 };
 
 /// What the panel's widgets do: `key` acts as the key would, `loadScene`
-/// loads a scene file.
+/// loads a scene file, `send` sends a command (`what` names it in errors).
 struct PanelActions {
   std::function<void(ControlKey)> key;
   std::function<void(const std::string&)> loadScene;
+  std::function<void(v1::ClientMessage message, std::string what)> send;
 };
 
-/// Where the panel drew what a test or a tool may want to point at.
-struct PanelShown {
+/// The inspector's velocity fields while a person edits them: the server's
+/// figures (five a second) would overwrite the typing otherwise.
+struct VelocityEdit {
+  std::uint32_t body = 0;
+  float values[3] = {};  ///< vx, vy (m/s), angular (rad/s)
+  bool editing = false;
+};
+
+/// What the panel keeps from frame to frame, and where it drew what a test
+/// may want to point at.
+struct PanelState {
   /// Each preset entry of the scene picker that is on screen: id, window pixels.
   std::vector<std::pair<int, PixelRect>> presetEntries;
+  /// The inspector's Stop button, when it is on screen.
+  std::optional<PixelRect> stopButton;
+  VelocityEdit velocityEdit;
 };
 
-/// Draws the panel into `rect`; `shown` is refilled.
+/// Draws the panel into `rect`; `state`'s positions are refilled.
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
-                   const PanelInput& input, const PanelActions& actions, PanelShown& shown);
+                   const PanelInput& input, const PanelActions& actions, PanelState& state);
 
 /// SameLine() when an item `width` pixels wide still fits on this line;
 /// otherwise the item goes on the next line (rows that fit any width).
 void sameLineIfFits(float width);
 
 // The sections, one file each.
-void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelShown& shown);
-void drawInspectorSection(const Controls& controls, const PanelInput& input);
+void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelState& state);
+void drawInspectorSection(const Controls& controls, const PanelInput& input,
+                          const PanelActions& actions, PanelState& state);
 void drawStatsSection(const PanelInput& input);
 void drawControlsTable();
 

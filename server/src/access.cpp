@@ -21,8 +21,9 @@ bool sameSecret(std::string_view a, std::string_view b) {
   return difference == 0;
 }
 
-// The body a remove_body or apply_impulse acts on.
+// The body a remove_body, apply_impulse or set_velocity acts on.
 std::uint32_t targetBody(const v1::ClientMessage& message) {
+  if (message.has_set_velocity()) return message.set_velocity().body_id();
   return message.has_remove_body() ? message.remove_body().body_id()
                                    : message.apply_impulse().body_id();
 }
@@ -56,7 +57,7 @@ std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint
            ": refused for the player role (it changes everyone's world: the admin role, "
            "Hello.token = the admin token, is needed)";
   }
-  if (message.has_remove_body() || message.has_apply_impulse()) {
+  if (message.has_remove_body() || message.has_apply_impulse() || message.has_set_velocity()) {
     return ownershipRefusal(command, targetBody(message), client);
   }
   if (message.has_create_joint()) {

@@ -402,6 +402,26 @@ TEST(Cli, AHandEditedLevelFileLoads_AndABadOneIsRefusedWithItsReason) {
   EXPECT_TRUE(contains(bad.lines[1], "radius")) << bad.lines[1];
 }
 
+TEST(Cli, VelocitySetsABodysVelocity_AndRefusalsSayWhy) {
+  ServerProcess server({"--paused"});
+  const std::string script =
+      "$ball = circle 5 10 0.5\n"
+      "velocity $ball 3 -1 2\n"
+      "query $ball\n"
+      "velocity $ball nan 0\n"
+      "velocity 1 1 1\n";
+  const auto run = runCli(server.port(), script);
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 6u);
+  EXPECT_TRUE(contains(run.lines[2], R"({"line":2,"command":"velocity","ok":true)")) << run.lines[2];
+  EXPECT_EQ(member(run.lines[3], "velocity"), "[3,-1]") << run.lines[3];
+  EXPECT_EQ(member(run.lines[3], "angular_velocity"), "2") << run.lines[3];
+  EXPECT_TRUE(contains(run.lines[4], "line 4: velocity VX is not a finite number")) << run.lines[4];
+  // Body 1 is the sandbox's floor: static bodies do not move.
+  EXPECT_TRUE(contains(run.lines[5], R"("line":5,"command":"velocity","ok":false,"error":"line 5: velocity: )"))
+      << run.lines[5];
+}
+
 TEST(Cli, BadFlagValuesNameTheFlag) {
   const std::string command = std::string(IMPULSE_CLI_BINARY) + " --timeout -5 2>&1";
   FILE* pipe = popen(command.c_str(), "r");

@@ -16,7 +16,7 @@ namespace {
 using std::chrono::milliseconds;
 
 const viewer::PixelRect* presetEntry(viewer::App& app, int id) {
-  for (const auto& [preset, rect] : app.panelShown().presetEntries) {
+  for (const auto& [preset, rect] : app.panelState().presetEntries) {
     if (preset == id) return &rect;
   }
   return nullptr;
@@ -36,7 +36,7 @@ TEST(ScenePicker, AClickOnAPresetLoadsIt_TheTitleAndHeaderNameTheRoom) {
   EXPECT_NE(title.find("room studio"), std::string::npos) << title;
   ASSERT_TRUE(viewer.runUntil([&] { return presetEntry(viewer.app(), 7) != nullptr; }));
   // Every preset is offered by name, with the key that loads it.
-  EXPECT_GE(viewer.app().panelShown().presetEntries.size(), 10u);
+  EXPECT_GE(viewer.app().panelState().presetEntries.size(), 10u);
 
   const viewer::PixelRect speed = *presetEntry(viewer.app(), 7);
   const float x = speed.x + speed.w / 2, y = speed.y + speed.h / 2;
@@ -139,6 +139,45 @@ TEST(Hands, TheGrabLineRunsFromTheHeldPointToTheCursor) {
   EXPECT_EQ(linePixels(held, pressed, 0.7f), 0);
   viewer.mouseButton(to.x, to.y, false);
   viewer.app().frame();
+}
+
+TEST(Inspector, TheSelectedBodysVelocityIsEditable_StopSetsItToZero) {
+  net_test::ServerProcess server({"--paused"});
+  ViewerHarness viewer(server.port());
+  client::Client observer(observerOptions(server.port()));
+  const auto spawned = observer.request(client::spawnCircle({8, 8}, 0.6));
+  ASSERT_TRUE(spawned.command_result().ok());
+  const std::uint32_t id = spawned.command_result().body_id();
+  ASSERT_TRUE(observer.request(client::setVelocity(id, {2, 1}, 3)).command_result().ok());
+  ASSERT_TRUE(viewer.runUntil([&] {
+    for (const auto& body : viewer.app().world().bodies()) {
+      if (body.state.id == id) return true;
+    }
+    return false;
+  }));
+  viewer.tap(SDLK_m);
+  viewer.click(Vec2(8, 8));
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().panelState().stopButton.has_value(); }));
+  viewer.runFrames(3);
+  auto shot = viewer.capture(screenshotPath("inspector_editable.bmp"));
+  ASSERT_NE(shot, nullptr);
+  // The Stop button is drawn under the velocity fields (its face is not
+  // the panel's background).
+  const viewer::PixelRect stop = *viewer.app().panelState().stopButton;
+  EXPECT_GT(markedPixels(shot.get(), stop), int(stop.w * stop.h / 2));
+
+  const float x = stop.x + stop.w / 2, y = stop.y + stop.h / 2;
+  viewer.mouseMove(x, y);
+  viewer.runFrames(2);
+  viewer.mouseButton(x, y, true);
+  viewer.runFrames(2);
+  viewer.mouseButton(x, y, false);
+  viewer.runFrames(2);
+  ASSERT_TRUE(viewer.runUntil([&] {
+    const auto info = observer.request(client::queryBody(id)).body_info();
+    return info.state().velocity().x() == 0 && info.state().velocity().y() == 0 &&
+           info.state().angular_velocity() == 0;
+  }));
 }
 
 TEST(FrameRate, ThePanelsFigureCountsTheFramesOfTheLastSecond) {
