@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "impulse/client/commands.h"
-#include "impulse/client/scene_file.h"
 #include "impulse/wire/command_table.h"
 #include "impulse/wire/convert.h"
 #include "impulse/wire/parse_number.h"
@@ -218,6 +217,15 @@ std::optional<std::tuple<std::uint32_t, client::Point, std::optional<client::Poi
   return std::tuple{*id, client::Point{*jx, *jy}, point};
 }
 
+std::optional<std::tuple<std::uint32_t, client::Point, double>> parseVelocity(Arguments& line) {
+  const auto id = line.idAt(1);
+  const auto vx = line.numberAt(2), vy = line.numberAt(3);
+  if (!id || !vx || !vy) return std::nullopt;
+  const auto angular = line.size() > 4 ? line.numberAt(4) : std::optional<double>(0);
+  if (!angular || !line.maxWords(5)) return std::nullopt;
+  return std::tuple{*id, client::Point{*vx, *vy}, *angular};
+}
+
 std::optional<std::tuple<std::uint64_t, bool>> parsePing(Arguments& line) {
   if (!parseNoArguments(line)) return std::nullopt;
   const bool wantStateHash = false;
@@ -230,23 +238,17 @@ std::optional<std::tuple<double>> parseTimeScale(Arguments& line) {
   return std::tuple{*scale};
 }
 
-// save FILE: the file is the CLI's (ScriptCommand::file), the message empty.
+// save FILE and load FILE: the file is the CLI's (ScriptCommand::file). A
+// load's bytes are read when its line runs, after the lines before it.
 std::optional<std::tuple<>> parseSceneFileName(Arguments& line) {
   if (line.size() < 2) line.note("FILE is missing");
   if (line.size() < 2 || !line.maxWords(2)) return std::nullopt;
   return std::tuple{};
 }
 
-// load FILE: the file's bytes go in the message.
 std::optional<std::tuple<std::string>> parseSceneFile(Arguments& line) {
   if (!parseSceneFileName(line)) return std::nullopt;
-  std::string error;
-  auto data = client::readSceneFile(std::string(line.word(1)), error);
-  if (!data) {
-    line.refuse(error);
-    return std::nullopt;
-  }
-  return std::tuple{std::move(*data)};
+  return std::tuple{std::string()};
 }
 
 // A row's parser composed with its builder.

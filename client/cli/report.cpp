@@ -80,6 +80,12 @@ Json number(double value) {
   return wire::parseNumber<double>(std::string_view(text, std::size_t(end - text))).value_or(value);
 }
 
+void printReport(const std::string& json) {
+  std::fputs(json.c_str(), stdout);
+  std::fputc('\n', stdout);
+  std::fflush(stdout);
+}
+
 Json lineReport(std::size_t line, std::string_view command) {
   return {{"line", line}, {"command", command}};
 }

@@ -21,6 +21,9 @@ using Json = nlohmann::ordered_json;
 /// "5.074563503265381"); anything else as the shortest exact double.
 Json number(double value);
 
+/// Writes one report line to stdout, flushed (a person may be watching).
+void printReport(const std::string& json);
+
 /// {"line":N,"command":NAME}, for a caller to add members to.
 Json lineReport(std::size_t line, std::string_view command);
 /// A failed line: {"line":N,"command":NAME,"ok":false,"error":"line N: ..."}.

@@ -5,6 +5,8 @@
 
 #include "arguments.h"
 #include "command_parsers.h"
+#include "impulse/wire/parse_number.h"
+#include "variables.h"
 
 namespace impulse::cli {
 
@@ -22,6 +24,18 @@ constexpr std::array kLocalWords{
                "the newest snapshot received since the last command was sent, or else the next "
                "one to arrive, summarised (tick, full, counts, bytes)"},
               ScriptCommand::Kind::WaitSnapshot},
+};
+
+// The language around the commands: variables and loops (script_runner.h
+// runs them).
+constexpr std::array kLanguageWords{
+    ScriptWord{"$NAME", "$NAME = COMMAND",
+               "keep the id in COMMAND's reply (body, joint or field); $NAME = NUMBER, or A OP B "
+               "with OP one of + - * /, keeps a number; $NAME then stands for it wherever a "
+               "number goes (density=$NAME too)"},
+    ScriptWord{"repeat", "repeat N [$I] { ... }",
+               "run the lines up to the matching } (a line of its own) N times; $I counts the "
+               "passes, 1 to N"},
 };
 
 // Where the help column starts in scriptGrammar(); longer usages put their
@@ -54,7 +68,9 @@ ParsedLine parseProtocolWord(const ProtocolWord& row, Arguments& arguments) {
   if (!message) return refused(row.text.usage, arguments.problem());
   ScriptCommand command{std::string(row.text.word), ScriptCommand::Kind::Server,
                         std::move(*message)};
-  if (command.message.has_save_scene()) command.file = std::string(arguments.word(1));
+  if (command.message.has_save_scene() || command.message.has_load_scene()) {
+    command.file = std::string(arguments.word(1));
+  }
   return {std::move(command)};
 }
 
@@ -86,10 +102,43 @@ ParsedLine parseScriptLine(std::string_view line) {
   return parsed;
 }
 
+LineShape lineShape(std::string_view line) {
+  const auto words = splitWords(line);
+  if (words.size() == 1 && words.front() == "}") return LineShape::ClosesBlock;
+  if (words.size() >= 2 && words.front() == "repeat" && words.back() == "{") {
+    return LineShape::OpensBlock;
+  }
+  return LineShape::Plain;
+}
+
+RepeatWords parseRepeat(std::string_view line) {
+  const auto words = splitWords(line);
+  const std::string usage = "repeat N [$I] {: ";
+  if (words.size() < 3 || words.size() > 4) return {{}, {}, usage + "expected 2 or 3 words before {"};
+  RepeatWords repeat{std::string(words[1]), {}, {}};
+  if (words.size() == 4) {
+    if (!words[2].starts_with('$') || !isVariableName(words[2].substr(1))) {
+      repeat.error = usage + quoted(words[2], " is not a $name to count the passes in");
+    }
+    repeat.counter = std::string(words[2].substr(1));
+  }
+  return repeat;
+}
+
+std::optional<long long> repeatCount(std::string_view count, std::string& error) {
+  const auto value = wire::parseNumber<long long>(count);
+  if (!value || *value < 0) {
+    error = "repeat N [$I] {: N must be a whole number, 0 or more, not " + quoted(count, "");
+    return std::nullopt;
+  }
+  return value;
+}
+
 std::vector<ScriptWord> scriptWords() {
   std::vector<ScriptWord> words;
   for (const ProtocolWord& row : protocolWords()) words.push_back(row.text);
   for (const LocalWord& row : kLocalWords) words.push_back(row.text);
+  for (const ScriptWord& word : kLanguageWords) words.push_back(word);
   return words;
 }
 

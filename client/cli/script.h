@@ -27,7 +27,9 @@ struct ScriptCommand {
   std::string name;  // first word, as typed
   Kind kind = Kind::Server;
   v1::ClientMessage message;  // for Kind::Server
-  std::string file{};         // for `save`: where the reply's scene goes
+  /// `save`: where the reply's scene goes; `load`: the scene file, read
+  /// when the line runs (after the lines before it, which may write it).
+  std::string file{};
 };
 
 struct ParsedLine {
@@ -38,6 +40,23 @@ struct ParsedLine {
 
 /// Parses one line. Errors say what was expected and what was wrong.
 ParsedLine parseScriptLine(std::string_view line);
+
+/// How a line stands in the block structure: `repeat N [$I] {` opens a
+/// block, a line of `}` alone closes one.
+enum class LineShape { Plain, OpensBlock, ClosesBlock };
+LineShape lineShape(std::string_view line);
+
+/// The words of a line that opens a block: the count as written (a number
+/// or a variable) and the counter's name without '$' (empty when none).
+struct RepeatWords {
+  std::string count;
+  std::string counter;
+  std::string error;  // set when the words do not fit `repeat N [$I] {`
+};
+RepeatWords parseRepeat(std::string_view line);
+/// The count of a `repeat` after its variables were replaced, or nothing
+/// with `error` saying why.
+std::optional<long long> repeatCount(std::string_view count, std::string& error);
 
 /// Every script word: the command table's, in its order, then the CLI's own.
 std::vector<ScriptWord> scriptWords();

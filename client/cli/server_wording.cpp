@@ -1,10 +1,9 @@
 #include "server_wording.h"
 
-#include <algorithm>
 #include <array>
 #include <utility>
 
-#include "impulse/client/number_format.h"
+#include "impulse/wire/plain_numbers.h"
 
 namespace impulse::cli {
 
@@ -12,7 +11,7 @@ namespace {
 
 // Protocol field paths and the script words for them; longer paths first,
 // so a path is replaced before its command's prefix.
-constexpr std::array<std::pair<const char*, const char*>, 26> kFieldWords{{
+constexpr std::array<std::pair<const char*, const char*>, 29> kFieldWords{{
     {"spawn_circle.center.x", "circle X"},
     {"spawn_circle.center.y", "circle Y"},
     {"spawn_circle.center", "circle X Y"},
@@ -34,6 +33,9 @@ constexpr std::array<std::pair<const char*, const char*>, 26> kFieldWords{{
     {"apply_impulse.point.x", "impulse PX"},
     {"apply_impulse.point.y", "impulse PY"},
     {"apply_impulse", "impulse"},
+    {"set_velocity.velocity.x", "velocity VX"},
+    {"set_velocity.velocity.y", "velocity VY"},
+    {"set_velocity", "velocity"},
     {"remove_body", "remove"},
     {"query_body", "query"},
     // Joint errors keep their protocol paths (create_joint.distance.stiffness):
@@ -72,38 +74,12 @@ std::string polygonVertices(std::string text) {
   return text;
 }
 
-// std::to_string's six fixed decimals ("-25.000000", "0.100000").
-std::string tidyNumbers(const std::string& text) {
-  std::string out;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const std::size_t start = i;
-    std::size_t end = i + (text[i] == '-' ? 1 : 0);
-    const std::size_t integer = end;
-    while (end < text.size() && isDigit(text[end])) ++end;
-    const bool fixedSix = end > integer && end + 7 <= text.size() && text[end] == '.' &&
-                          std::all_of(text.begin() + std::ptrdiff_t(end) + 1,
-                                      text.begin() + std::ptrdiff_t(end) + 7, isDigit) &&
-                          (end + 7 == text.size() || !isDigit(text[end + 7]));
-    if (fixedSix) {
-      out += client::formatNumber(std::stod(text.substr(start, end + 7 - start)));
-      i = end + 7;
-    } else {
-      // Copy through the whole run of digits, so no number is cut in two.
-      const std::size_t stop = std::max(end, start + 1);
-      out.append(text, start, stop - start);
-      i = stop;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string scriptWording(std::string_view serverError) {
   std::string text = polygonVertices(std::string(serverError));
   for (const auto& [field, words] : kFieldWords) text = replaceAll(std::move(text), field, words);
-  return tidyNumbers(text);
+  return wire::plainNumbers(text);
 }
 
 }  // namespace impulse::cli

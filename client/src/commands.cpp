@@ -182,6 +182,15 @@ v1::ClientMessage applyImpulse(std::uint32_t id, Point impulse, std::optional<Po
   return message;
 }
 
+v1::ClientMessage setVelocity(std::uint32_t id, Point velocity, double angular) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_set_velocity();
+  command->set_body_id(id);
+  setPoint(velocity, command->mutable_velocity());
+  command->set_angular_velocity(angular);
+  return message;
+}
+
 v1::ClientMessage setPaused(bool paused) {
   v1::ClientMessage message;
   message.mutable_set_paused()->set_paused(paused);

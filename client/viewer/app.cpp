@@ -31,7 +31,7 @@ std::runtime_error sdlError(const std::string& what) {
 App::App(ViewerOptions options)
     : options_(std::move(options)), sceneFiles_(options_.sceneFile, options_.shapeFile) {
   if (SDL_Init(SDL_INIT_VIDEO) != 0) throw sdlError("SDL_Init");
-  const std::string title = "Impulse - " + options_.connect.host + ":" +
+  const std::string title = "Impulse - room " + roomName() + " - " + options_.connect.host + ":" +
                             std::to_string(options_.connect.port);
   window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                              options_.width, options_.height, SDL_WINDOW_RESIZABLE);
@@ -79,10 +79,6 @@ const client::MirrorBody* App::mirrored(std::uint32_t id) const {
 ControlContext App::context() const {
   ControlContext context;
   const client::Client* client = connection_->client();
-  const auto* preset = client != nullptr && client->mirror().preset()
-                           ? &*client->mirror().preset()
-                           : nullptr;
-  context.drawingAllowed = preset != nullptr && preset->drawingAllowed;
   if (client != nullptr) {
     context.serverPaused = client->mirror().paused();
     context.gravity = client->mirror().gravity();
@@ -99,7 +95,8 @@ ControlContext App::context() const {
   if (const auto grabbed = controls_.grabbedBody()) {
     if (const client::MirrorBody* body = mirrored(*grabbed)) {
       BodyLook look{body->shape, body->material, body->isStatic, body->ignoreGravity};
-      context.grabbed = GrabbedBody{body->state.position, double(massOf(look).mass)};
+      context.grabbed =
+          GrabbedBody{body->state.position, double(massOf(look).mass), body->state.angle};
     }
   }
   if (const auto selected = controls_.selectedBody()) {
@@ -125,7 +122,7 @@ std::optional<BodyHit> App::bodyAt(const Vec2& point) const {
   for (auto it = world_.bodies().rbegin(); it != world_.bodies().rend(); ++it) {
     const Transform xf{it->state.position, Rot::fromAngle(it->state.angle)};
     if (!containsPoint(it->look->shape, xf, point)) continue;
-    const BodyHit hit{it->state.id, it->look->isStatic, it->state.position};
+    const BodyHit hit{it->state.id, it->look->isStatic, it->state.position, it->state.angle};
     if (!hit.isStatic) return hit;
     if (!staticHit) staticHit = hit;
   }
@@ -142,9 +139,6 @@ void App::actOnScene(SceneKey key) {
     case SceneAction::SaveShape:
       return controls_.notify(sceneFiles_.saveShape(c.polygonPoints()), now());
     case SceneAction::StampShape:
-      if (!context().drawingAllowed) {
-        return controls_.notify("This scene does not allow drawing", now());
-      }
       return controls_.notify(sceneFiles_.stamp(std::size_t(key.index), c.pointer(),
                                                 {.material = c.material(),
                                                  .isStatic = c.nextStatic(),
@@ -154,14 +148,12 @@ void App::actOnScene(SceneKey key) {
 }
 
 void App::handleKey(const SDL_KeyboardEvent& key) {
-  // Held keys repeat at the controls' own steady rate, not the OS's.
-  if (key.repeat != 0) return;
   if (const auto sceneKey = sceneKeyFor(key.keysym.sym, key.keysym.mod)) {
-    if (key.type == SDL_KEYDOWN) actOnScene(*sceneKey);
+    if (key.type == SDL_KEYDOWN && key.repeat == 0) actOnScene(*sceneKey);
     return;
   }
   const auto control = controlForKey(key.keysym.sym, key.keysym.mod);
-  if (!control) return;
+  if (!control || (key.repeat != 0 && !followsKeyRepeat(control->control))) return;
   if (key.type == SDL_KEYDOWN) {
     act(*control);
   } else {
@@ -173,6 +165,8 @@ void App::handleButton(const SDL_MouseButtonEvent& button) {
   const bool down = button.type == SDL_MOUSEBUTTONDOWN;
   const Vec2 at = view().toWorld(float(button.x), float(button.y));
   if (button.button == SDL_BUTTON_LEFT) {
+    leftHeld_ = down;
+    leftPressed_ = leftPressed_ || down;
     // Presses on the panel belong to its widgets; a release always ends a drag.
     if (!down) {
       controls_.pointerReleased(at);
@@ -268,7 +262,7 @@ void App::handleReplies() {
     if (!reply.message.has_command_result()) continue;
     const v1::CommandResult& result = reply.message.command_result();
     if (reply.what == "load scene" && result.ok()) {
-      controls_.notify("Scene loaded from " + sceneFiles_.sceneFile(), now());
+      controls_.notify("Scene loaded from " + sceneFiles_.loadingFile(), now());
     }
     if (reply.what == "drag") {
       controls_.dragJointAnswered(result.ok() ? std::optional(result.joint_id()) : std::nullopt);
@@ -299,6 +293,9 @@ void App::updateJointFigures() {
   const client::Client* client = connection_->client();
   if (client == nullptr) return;
   for (const auto& [id, joint] : client->mirror().joints()) {
+    // The drag's own joint is drawn as the grab line, to the cursor: the
+    // mirror keeps the target the joint was made with.
+    if (id == controls_.dragJoint()) continue;
     if (auto figure = jointFigure(joint, world_.find(joint.bodyA.value), world_.find(joint.bodyB.value))) {
       jointFigures_.push_back(*figure);
     }
@@ -320,7 +317,8 @@ void App::drawScene(ImDrawList& list, const ViewTransform& view) {
   if (const auto grabbed = controls_.grabbedBody()) {
     for (const DrawnBody& body : world_.bodies()) {
       if (body.state.id != *grabbed) continue;
-      scene_.drawGrab(list, view, body.state.position + *controls_.grabOffset(), controls_.pointer());
+      scene_.drawGrab(list, view, *controls_.heldPoint(body.state.position, body.state.angle),
+                      controls_.pointer());
     }
   }
   scene_.drawPreview(list, view, controls_);
@@ -328,7 +326,9 @@ void App::drawScene(ImDrawList& list, const ViewTransform& view) {
 }
 
 void App::draw() {
-  gui_->beginFrame();
+  // A click shorter than a frame still reaches the panel as a press.
+  gui_->beginFrame({pointerX_, pointerY_, leftHeld_ || leftPressed_});
+  leftPressed_ = false;
   const ViewTransform v = view();
   drawScene(*ImGui::GetBackgroundDrawList(), v);
 
@@ -339,6 +339,10 @@ void App::draw() {
   input.snapshotsPerSecond = connection_->snapshotsPerSecond();
   input.playoutDelayMs = world_.clock().delay() * 1000;
   input.frameMs = frameMs_;
+  input.framesPerSecond = framesPerSecond_;
+  input.room = roomName();
+  input.presets = &presets_;
+  input.sceneFiles = sceneFileList_;
   input.zoom = controls_.camera().zoom;
   input.bodies = world_.bodies().size();
   input.notice = controls_.notice(now());
@@ -355,8 +359,17 @@ void App::draw() {
     input.timeScale = mirror.timeScale();
   }
   if (inspected_) input.inspected = &*inspected_;
-  drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input,
-                [this](ControlKey key) { act(key); });
+  const PanelActions actions{[this](ControlKey key) { act(key); },
+                             [this](const std::string& file) {
+                               controls_.notify(sceneFiles_.load(file), now());
+                             },
+                             [this](v1::ClientMessage message, std::string what) {
+                               if (!connection_->send(std::move(message), what)) {
+                                 controls_.notify("Not connected: " + what + " not sent", now());
+                               }
+                             }};
+  drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input, actions,
+                panelState_);
 
   SDL_SetRenderDrawColor(renderer_, palette::kBackground.r, palette::kBackground.g,
                          palette::kBackground.b, 255);
@@ -378,6 +391,22 @@ bool App::saveCapture(const std::string& path) {
   return ok;
 }
 
+std::string App::roomName() const {
+  return options_.connect.room.empty() ? "default" : options_.connect.room;
+}
+
+void App::countFrame(double at) {
+  // Frames counted over about a second: a steady figure, not one frame's.
+  ++windowFrames_;
+  if (at - windowStart_ < 1) return;
+  framesPerSecond_ = windowFrames_ / (at - windowStart_);
+  windowStart_ = at;
+  windowFrames_ = 0;
+  // The scene files beside the scene file, for the picker: once a second
+  // is often enough for files a person saves.
+  sceneFileList_ = sceneFiles_.filesBeside();
+}
+
 bool App::frame() {
   const double begin = now();
   SDL_Event event;
@@ -397,6 +426,7 @@ bool App::frame() {
   // The panel shows the work of a frame, without the wait for vsync.
   frameMs_ = timing_.update + timing_.draw;
   ++frames_;
+  countFrame(end);
   return !quit_ && !controls_.quitRequested();
 }
 

@@ -21,7 +21,9 @@
 #include "layout.h"
 #include "options.h"
 #include "overlays.h"
+#include "preset_catalogue.h"
 #include "renderer.h"
+#include "side_panel.h"
 #include "scene_files.h"
 #include "view_transform.h"
 
@@ -66,6 +68,10 @@ class App {
   const History& energyHistory() const { return energy_; }
   /// Seconds since the app started (the clock of every component).
   double now() const;
+  /// Where the last frame's panel drew its scene picker entries.
+  const PanelState& panelState() const { return panelState_; }
+  /// Frames drawn per second over the last second or so.
+  double framesPerSecond() const { return framesPerSecond_; }
 
  private:
   void handleEvent(const SDL_Event& event);
@@ -84,6 +90,10 @@ class App {
   /// jointFigures_ (reused every frame).
   void updateJointFigures();
   bool saveCapture(const std::string& path);
+  /// The room joined, "default" when none was named.
+  std::string roomName() const;
+  /// Counts a frame that ended `at`; updates the frame rate once a second.
+  void countFrame(double at);
   const client::MirrorBody* mirrored(std::uint32_t id) const;
   std::optional<BodyHit> bodyAt(const Vec2& point) const;
   std::vector<std::uint32_t> userBodies() const;
@@ -112,11 +122,20 @@ class App {
   float pointerX_ = 0;
   float pointerY_ = 0;
   std::optional<SDL_Point> altPressedAt_;
+  bool leftHeld_ = false;
+  bool leftPressed_ = false;  ///< since the last frame
   bool altDragged_ = false;
   std::optional<std::string> capturePath_;
   FrameTiming timing_;
   double frameMs_ = 0;
   std::uint64_t frames_ = 0;
+  double framesPerSecond_ = 0;
+  double windowStart_ = 0;
+  int windowFrames_ = 0;
+  /// Every preset's title and explanation, for the scene picker.
+  std::vector<PresetInfo> presets_ = presetCatalogue();
+  std::vector<std::string> sceneFileList_;
+  PanelState panelState_;
   bool quit_ = false;
 };
 

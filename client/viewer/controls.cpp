@@ -90,12 +90,6 @@ void Controls::cancelDrawing() {
   dragging_ = false;
 }
 
-bool Controls::checkDrawingAllowed(const ControlContext& context, double now) {
-  if (context.drawingAllowed) return true;
-  notify("Drawing is allowed in the sandbox (0) and presets 3 and 4 only", now);
-  return false;
-}
-
 client::SpawnOptions Controls::spawnOptions() const {
   client::SpawnOptions options;
   options.material = material_;
@@ -104,9 +98,8 @@ client::SpawnOptions Controls::spawnOptions() const {
   return options;
 }
 
-void Controls::togglePolygon(const ControlContext& context, double now) {
+void Controls::togglePolygon(double now) {
   if (mode_ != DrawMode::Polygon) {
-    if (!checkDrawingAllowed(context, now)) return;
     cancelDrawing();
     mode_ = DrawMode::Polygon;
     return;
@@ -121,9 +114,8 @@ void Controls::togglePolygon(const ControlContext& context, double now) {
   cancelDrawing();
 }
 
-void Controls::toggleCircle(const ControlContext& context, double now) {
+void Controls::toggleCircle(double now) {
   if (mode_ != DrawMode::Circle) {
-    if (!checkDrawingAllowed(context, now)) return;
     cancelDrawing();
     mode_ = DrawMode::Circle;
     return;
@@ -170,8 +162,8 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     return;
   }
   switch (key.control) {
-    case Control::PolygonMode: togglePolygon(context, now); break;
-    case Control::CircleMode: toggleCircle(context, now); break;
+    case Control::PolygonMode: togglePolygon(now); break;
+    case Control::CircleMode: toggleCircle(now); break;
     case Control::ClearUserBodies: clearUserBodies(context, now); break;
     case Control::ClearAll:
       send(client::clearWorld(), "clear");
@@ -208,8 +200,8 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     case Control::CancelOrQuit: cancelOrQuit(now); break;
     case Control::SlowerTime: scaleTime(context, 0.5, now); break;
     case Control::FasterTime: scaleTime(context, 2, now); break;
-    case Control::NormalTime: scaleTime(context, 1 / context.timeScale, now); break;
-    case Control::StandardShape: spawnStandardShape(key.index, context, now); break;
+    case Control::NormalTime: scaleTime(context, 1 / timeScale(context, now), now); break;
+    case Control::StandardShape: spawnStandardShape(key.index); break;
     case Control::ShapeSmaller: resizeShapes(1 / kShapeSizeFactor, now); break;
     case Control::ShapeLarger: resizeShapes(kShapeSizeFactor, now); break;
     default: break;
@@ -272,10 +264,6 @@ void Controls::keyReleased(ControlKey key) {
 }
 
 void Controls::update(const ControlContext& context, double now) {
-  if (mode_ != DrawMode::None && !context.drawingAllowed) {
-    cancelDrawing();
-    notify("Drawing ended: this scene does not allow it", now);
-  }
   repeatHeldKeys(context, now);
   steerGrabbed(context, now);
 }
@@ -298,7 +286,7 @@ void Controls::steerGrabbed(const ControlContext& context, double now) {
   if (!grab_ || !grab_->dragging || !context.grabbed) return;
   if (!grab_->jointRequested) {
     // The held point where the body is now (it may have moved since the press).
-    const Vec2 held = context.grabbed->position + grab_->offset;
+    const Vec2 held = *heldPoint(context.grabbed->position, context.grabbed->angle);
     send(client::mouseJoint(grab_->body, toPoint(held), mouseSpring(context.grabbed->mass,
                                                                      settings_.grab)),
          "drag");
@@ -339,20 +327,34 @@ void Controls::pinSelected(const ControlContext& context, double now) {
   send(client::revoluteJoint({*selected_, 0, toPoint(pivot), toPoint(pivot), false}, {}), "pin");
 }
 
+double Controls::timeScale(const ControlContext& context, double now) const {
+  // Until the server shows the scale asked for last, a press builds on it:
+  // quick (or held, repeating) presses each count, though the server's
+  // answers to the earlier ones arrive in between. A scale the server never
+  // shows (refused, or another client's change won) is let go after a while.
+  constexpr double kAnswerSeconds = 1;
+  if (askedScale_ && context.timeScale != askedScale_->wanted &&
+      now - askedScale_->at < kAnswerSeconds) {
+    return askedScale_->wanted;
+  }
+  return context.timeScale;
+}
+
 void Controls::scaleTime(const ControlContext& context, double factor, double now) {
   // The server's range (docs/protocol.md, "Time"): 0.01x to 16x.
   constexpr double kSlowest = 0.01;
   constexpr double kFastest = 16;
-  const double wanted = std::clamp(context.timeScale * factor, kSlowest, kFastest);
-  if (wanted == context.timeScale) {
+  const double current = timeScale(context, now);
+  const double wanted = std::clamp(current * factor, kSlowest, kFastest);
+  if (wanted == current) {
     notify("Time scale stays " + client::formatNumber(wanted, 2) + "x (0.01x to 16x)", now);
     return;
   }
   send(client::setTimeScale(wanted), "time scale");
+  askedScale_ = AskedScale{wanted, now};
 }
 
-void Controls::spawnStandardShape(int sides, const ControlContext& context, double now) {
-  if (!checkDrawingAllowed(context, now)) return;
+void Controls::spawnStandardShape(int sides) {
   std::vector<client::Point> vertices;
   for (const Vec2& v : regularPolygon(sides, pointer_, shapeSize_)) vertices.push_back(toPoint(v));
   send(client::spawnPolygon(vertices, spawnOptions()), std::string(standardShapeName(sides)));
@@ -368,9 +370,14 @@ std::optional<std::uint32_t> Controls::grabbedBody() const {
   return grab_->body;
 }
 
-std::optional<Vec2> Controls::grabOffset() const {
+std::optional<Vec2> Controls::heldPoint(const Vec2& position, Real angle) const {
   if (!grab_) return std::nullopt;
-  return grab_->offset;
+  return position + Rot::fromAngle(angle).apply(grab_->offset);
+}
+
+std::optional<std::uint32_t> Controls::dragJoint() const {
+  if (!grab_) return std::nullopt;
+  return grab_->joint;
 }
 
 void Controls::zoomAt(float factor, float px, float py, const PixelRect& viewport) {
@@ -401,7 +408,7 @@ void Controls::pointerPressed(const Vec2& at, std::optional<BodyHit> hit, double
       if (hit && !hit->isStatic) {
         grab_ = Grab{};
         grab_->body = hit->id;
-        grab_->offset = at - hit->position;
+        grab_->offset = Rot::fromAngle(hit->angle).applyInverse(at - hit->position);
         grab_->pressedAt = at;
       }
       return;

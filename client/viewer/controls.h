@@ -72,12 +72,11 @@ enum class DrawMode { None, Polygon, Circle };
 struct GrabbedBody {
   Vec2 position = Vec2::Zero();  ///< centre of mass
   double mass = 0;
+  Real angle = 0;
 };
 
 /// What the controls need to know about the world when an event happens.
 struct ControlContext {
-  /// The current scene allows drawing (sandbox, presets 3 and 4).
-  bool drawingAllowed = true;
   /// Mass of the selected body (0 for a static one), once the server told.
   std::optional<double> selectedMass{};
   bool serverPaused = false;
@@ -102,6 +101,7 @@ struct BodyHit {
   std::uint32_t id = 0;
   bool isStatic = false;
   Vec2 position = Vec2::Zero();  ///< its centre of mass
+  Real angle = 0;
 };
 
 /// A command for the server and what to call it in an error message.
@@ -147,8 +147,7 @@ class Controls {
   void pointerReleased(const Vec2& at);
   /// A right click (not a drag) on `body`, or on empty space: removes it.
   void removeClicked(std::optional<std::uint32_t> body, double now);
-  /// Once per frame: repeats held keys, steers a grabbed body, ends drawing
-  /// where it is not allowed.
+  /// Once per frame: repeats held keys, steers a grabbed body.
   void update(const ControlContext& context, double now);
 
   /// The server's answer to the drag's CreateJoint (`what` "drag"): the
@@ -177,8 +176,12 @@ class Controls {
   void pan(float dx, float dy);
   /// The body being dragged by hand, if any.
   std::optional<std::uint32_t> grabbedBody() const;
-  /// Where on the grabbed body it is held, from its centre (world axes).
-  std::optional<Vec2> grabOffset() const;
+  /// Where the grabbed body is held, in world coordinates, when its centre
+  /// of mass is at `position` and it is turned by `angle`: the held point
+  /// turns with the body.
+  std::optional<Vec2> heldPoint(const Vec2& position, Real angle) const;
+  /// The mouse joint of the drag, once the server named it.
+  std::optional<std::uint32_t> dragJoint() const;
 
   // Next shape.
   DrawMode mode() const { return mode_; }
@@ -204,7 +207,7 @@ class Controls {
   };
   struct Grab {
     std::uint32_t body = 0;
-    Vec2 offset = Vec2::Zero();     ///< grabbed point minus the body's centre at the press
+    Vec2 offset = Vec2::Zero();     ///< the grabbed point in the body's frame
     Vec2 pressedAt = Vec2::Zero();  ///< where the press was, world
     bool dragging = false;
     bool jointRequested = false;
@@ -213,9 +216,8 @@ class Controls {
     double nextTarget = 0;
   };
 
-  void togglePolygon(const ControlContext& context, double now);
-  void toggleCircle(const ControlContext& context, double now);
-  bool checkDrawingAllowed(const ControlContext& context, double now);
+  void togglePolygon(double now);
+  void toggleCircle(double now);
   void cancelDrawing();
   void cancelOrQuit(double now);
   void clearUserBodies(const ControlContext& context, double now);
@@ -227,9 +229,12 @@ class Controls {
   /// the body).
   void endGrab(bool bodyGone = false);
   void pinSelected(const ControlContext& context, double now);
-  /// Asks for the server's time scale times `factor`, kept in its range.
+  /// Asks for the time scale times `factor`, kept in the server's range.
   void scaleTime(const ControlContext& context, double factor, double now);
-  void spawnStandardShape(int sides, const ControlContext& context, double now);
+  /// The time scale a time key starts from: the server's, or the one asked
+  /// for last while the server has not shown it yet (for a second at most).
+  double timeScale(const ControlContext& context, double now) const;
+  void spawnStandardShape(int sides);
   void resizeShapes(Real factor, double now);
   /// Acts once for a repeating key; false when the key does not repeat.
   bool repeatAction(ControlKey key, const ControlContext& context, double now);
@@ -248,6 +253,12 @@ class Controls {
   bool inspectorVisible_ = false;
   std::optional<std::uint32_t> selected_;
   std::optional<Grab> grab_;
+  /// The last time scale asked for, and when.
+  struct AskedScale {
+    double wanted;
+    double at;
+  };
+  std::optional<AskedScale> askedScale_;
   /// Drag joints asked for by grabs that ended before the server answered:
   /// removed as their ids arrive (answers come in order).
   int abandonedJoints_ = 0;

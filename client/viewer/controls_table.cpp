@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // docs/product.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 31> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 30> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
@@ -34,8 +34,7 @@ constexpr std::array<std::pair<const char*, const char*>, 31> kControlRows{{
     {"Shift+5-7", "orbits, floating, fans"},
     {"W A S D", "nudge gravity while held"},
     {"Enter", "reset gravity"},
-    {"", "drawing: sandbox and presets 3, 4"},
-    {"[ ] \\", "time: half, double, 1x speed (0.01x-16x)"},
+    {"[ ] \\", "time: half, double (held: repeats), 1x speed (0.01x-16x)"},
     {"T Y U I", "triangle, square, pentagon, hexagon at the cursor"},
     {"- =", "standard shapes smaller, larger"},
     {"Ctrl+S / Ctrl+O", "save the scene to its file / load it back"},

@@ -57,8 +57,15 @@ Gui::~Gui() {
 
 void Gui::processEvent(const SDL_Event& event) { ImGui_ImplSDL2_ProcessEvent(&event); }
 
-void Gui::beginFrame() {
+void Gui::beginFrame(const Pointer& pointer) {
   ImGui_ImplSDL2_NewFrame();
+  // The panel sees the pointer the scene sees, from the same events. Dear
+  // ImGui 1.86's SDL backend polls SDL's pointer instead, and only over a
+  // window with the mouse focus, which a window without a display (the
+  // offscreen driver the end-to-end tests use) never gets.
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = {pointer.x, pointer.y};
+  io.MouseDown[0] = pointer.leftDown;
   ImGui::NewFrame();
 }
 

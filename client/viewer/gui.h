@@ -23,9 +23,16 @@ class Gui {
   Gui& operator=(const Gui&) = delete;
 
   void processEvent(const SDL_Event& event);
+  /// The left button and pointer as the viewer's own event handling saw
+  /// them this frame.
+  struct Pointer {
+    float x = 0;
+    float y = 0;
+    bool leftDown = false;  ///< held, or pressed at any time since the last frame
+  };
   /// Starts a frame: every ImGui call of the frame goes between this and
   /// render(). The scene goes into ImGui's background list, shapes only.
-  void beginFrame();
+  void beginFrame(const Pointer& pointer);
   void render();
   ImFont* textFont() const { return text_; }
   ImFont* titleFont() const { return title_; }

@@ -1,6 +1,7 @@
 #include <numbers>
 
 #include "body_metrics.h"
+#include "impulse/client/commands.h"
 #include "impulse/client/number_format.h"
 #include "impulse/wire/convert.h"
 #include "side_panel.h"
@@ -63,9 +64,38 @@ void drawBodyTable(const v1::BodyInfo& info) {
   ImGui::EndTable();
 }
 
+// Velocity and angular velocity, editable: Enter sends them (SetVelocity),
+// Stop sends zeros. Position, angle, material and static stay read-only:
+// the engine has no call to change them on a live body yet.
+void drawVelocityEditor(const v1::BodyInfo& info, const PanelActions& actions,
+                        PanelState& state) {
+  const std::uint32_t id = info.descriptor().id();
+  VelocityEdit& edit = state.velocityEdit;
+  if (edit.body != id || !edit.editing) {
+    const auto& s = info.state();
+    edit = {id, {float(s.velocity().x()), float(s.velocity().y()), float(s.angular_velocity())},
+            false};
+  }
+  ImGui::TextDisabled("set vx, vy (m/s), angular (rad/s); Enter sends:");
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  const bool entered = ImGui::InputFloat3("##velocity", edit.values, "%.3f",
+                                          ImGuiInputTextFlags_EnterReturnsTrue);
+  edit.editing = ImGui::IsItemActive();
+  const auto send = [&](float vx, float vy, float angular) {
+    actions.send(client::setVelocity(id, {vx, vy}, angular), "velocity");
+  };
+  if (entered) send(edit.values[0], edit.values[1], edit.values[2]);
+  if (ImGui::Button("Stop")) send(0, 0, 0);
+  if (ImGui::IsItemVisible()) {
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    state.stopButton = PixelRect{min.x, min.y, max.x - min.x, max.y - min.y};
+  }
+}
+
 }  // namespace
 
-void drawInspectorSection(const Controls& controls, const PanelInput& input) {
+void drawInspectorSection(const Controls& controls, const PanelInput& input,
+                          const PanelActions& actions, PanelState& state) {
   if (!controls.selectedBody()) {
     ImGui::TextDisabled("click a body to select it");
     return;
@@ -75,6 +105,7 @@ void drawInspectorSection(const Controls& controls, const PanelInput& input) {
     return;
   }
   drawBodyTable(*input.inspected);
+  if (!input.inspected->descriptor().is_static()) drawVelocityEditor(*input.inspected, actions, state);
   ImGui::TextDisabled("arrows push it, Delete removes it");
 }
 

@@ -1,5 +1,7 @@
 #include "key_map.h"
 
+#include <SDL_keyboard.h>
+
 namespace impulse::viewer {
 
 std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
@@ -65,6 +67,28 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     case SDLK_EQUALS:
     case SDLK_KP_PLUS: return ControlKey{Control::ShapeLarger};
     default: return std::nullopt;
+  }
+}
+
+std::string presetKeyName(int id) {
+  constexpr SDL_Keycode kPresetKeys[] = {SDLK_0, SDLK_1, SDLK_2, SDLK_3, SDLK_4, SDLK_5,
+                                         SDLK_6, SDLK_7, SDLK_8, SDLK_9, SDLK_F1};
+  for (const Uint16 modifiers : {Uint16(KMOD_NONE), Uint16(KMOD_SHIFT)}) {
+    for (const SDL_Keycode key : kPresetKeys) {
+      if (controlForKey(key, modifiers) != ControlKey{Control::LoadPreset, id}) continue;
+      return std::string(modifiers == KMOD_NONE ? "" : "Shift+") + SDL_GetKeyName(key);
+    }
+  }
+  return {};
+}
+
+bool followsKeyRepeat(Control control) {
+  switch (control) {
+    case Control::SlowerTime:
+    case Control::FasterTime:
+    case Control::ShapeSmaller:
+    case Control::ShapeLarger: return true;
+    default: return false;
   }
 }
 

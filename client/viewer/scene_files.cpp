@@ -1,11 +1,14 @@
 #include "scene_files.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <utility>
 
 #include "impulse/client/scene_file.h"
 #include "impulse/shape.h"
+#include "impulse/wire/scene_text.h"
 
 namespace impulse::viewer {
 
@@ -74,19 +77,40 @@ std::string SceneFiles::save() {
 }
 
 std::string SceneFiles::sceneArrived(const std::string& data) {
-  if (std::string error = client::writeSceneFile(sceneFile_, data); !error.empty()) {
-    return "Scene not saved: " + error;
-  }
-  return "Scene saved to " + sceneFile_ + " (" + std::to_string(data.size()) +
+  std::string error;
+  const auto content = wire::sceneFileContent(sceneFile_, data, error);
+  if (content) error = client::writeSceneFile(sceneFile_, *content);
+  if (!error.empty()) return "Scene not saved: " + error;
+  return "Scene saved to " + sceneFile_ + " (" + std::to_string(content->size()) +
          " bytes): Ctrl+O loads it";
 }
 
-std::string SceneFiles::load() {
+std::string SceneFiles::load() { return load(sceneFile_); }
+
+std::string SceneFiles::load(const std::string& path) {
   std::string error;
-  auto data = client::readSceneFile(sceneFile_, error);
+  auto content = client::readSceneFile(path, error);
+  auto data = content ? wire::sceneFromFileContent(path, std::move(*content), error)
+                      : std::nullopt;
   if (!data) return "Scene not loaded: " + error;
   outbox_.push_back({client::loadScene(std::move(*data)), "load scene"});
-  return "Loading the scene from " + sceneFile_;
+  loading_ = path;
+  return "Loading the scene from " + path;
+}
+
+std::vector<std::string> SceneFiles::filesBeside() const {
+  const auto directory = std::filesystem::path(sceneFile_).parent_path();
+  std::error_code error;
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(
+           directory.empty() ? std::filesystem::path(".") : directory, error)) {
+    const auto extension = entry.path().extension();
+    if (entry.is_regular_file(error) && (extension == ".scene" || extension == ".json")) {
+      files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 std::string SceneFiles::saveShape(std::span<const Vec2> drawing) {

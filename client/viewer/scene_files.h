@@ -1,6 +1,7 @@
 #pragma once
 /// The viewer's files: the scene file (Ctrl+S saves the server's world into
-/// it, Ctrl+O loads it back) and the shape library (Ctrl+D keeps a drawn
+/// it, Ctrl+O loads it back; a ".json" name means a level file, text), the
+/// scene files beside it that the scene picker offers, and the shape library (Ctrl+D keeps a drawn
 /// polygon, Ctrl+1..9 stamp one at the cursor). No window: commands go out
 /// through takeCommands(), and each action returns the line to show.
 
@@ -50,6 +51,10 @@ class SceneFiles {
   std::string sceneArrived(const std::string& data);
   /// Ctrl+O: sends the scene file's world to the server.
   std::string load();
+  /// The scene picker: sends the world in `path` (binary or level file).
+  std::string load(const std::string& path);
+  /// Scene files (".scene", ".json") in the scene file's directory, by name.
+  std::vector<std::string> filesBeside() const;
 
   /// Ctrl+D: keeps `drawing` (the polygon being drawn) when it has three
   /// points or more, else the last polygon this viewer spawned.
@@ -61,10 +66,13 @@ class SceneFiles {
 
   std::vector<Outgoing> takeCommands();
   const std::string& sceneFile() const { return sceneFile_; }
+  /// The file of the last load sent.
+  const std::string& loadingFile() const { return loading_; }
   const ShapeLibrary& shapes() const { return shapes_; }
 
  private:
   std::string sceneFile_;
+  std::string loading_;
   ShapeLibrary shapes_;
   std::vector<Vec2> lastDrawn_;
   std::vector<Outgoing> outbox_;

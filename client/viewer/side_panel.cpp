@@ -39,36 +39,20 @@ ImVec4 linkColour(LinkState link) {
   return colourOf(palette::kInvalid);
 }
 
-void drawTitle(const PanelFonts& fonts, const PanelInput& input) {
-  ImGui::PushFont(fonts.title);
-  ImGui::TextWrapped("%s", input.preset != nullptr ? input.preset->title.c_str() : "Impulse");
-  ImGui::PopFont();
-  if (input.preset != nullptr) {
-    ImGui::PushStyleColor(ImGuiCol_Text, colourOf(palette::kDimText));
-    for (const std::string& line : input.preset->explanation) ImGui::TextWrapped("%s", line.c_str());
-    ImGui::PopStyleColor();
-  }
-  // The link first: without it nothing else on the panel means anything.
-  ImGui::PushStyleColor(ImGuiCol_Text, linkColour(input.link));
-  ImGui::TextWrapped("%s", input.linkText.c_str());
-  ImGui::PopStyleColor();
-  if (input.notice) {
-    ImGui::PushStyleColor(ImGuiCol_Text, colourOf(palette::kWarning));
-    ImGui::TextWrapped("%s", input.notice->c_str());
-    ImGui::PopStyleColor();
-  }
+// A button that joins the row when it fits.
+bool rowButton(const char* label) {
+  sameLineIfFits(ImGui::CalcTextSize(label, nullptr, true).x +
+                 2 * ImGui::GetStyle().FramePadding.x);
+  return ImGui::Button(label);
 }
 
 void drawTimeScale(const PanelInput& input, const std::function<void(ControlKey)>& act) {
   // Slow motion and fast forward keep the step size: only the pace changes.
   const ImVec4 colour = colourOf(input.timeScale == 1 ? palette::kText : palette::kWarning);
   ImGui::TextColored(colour, "speed %sx", formatNumber(input.timeScale, 2).c_str());
-  ImGui::SameLine();
-  if (ImGui::Button("slower ([)")) act({Control::SlowerTime});
-  ImGui::SameLine();
-  if (ImGui::Button("1x (\\)")) act({Control::NormalTime});
-  ImGui::SameLine();
-  if (ImGui::Button("faster (])")) act({Control::FasterTime});
+  if (rowButton("slower ([)")) act({Control::SlowerTime});
+  if (rowButton("1x (\\)")) act({Control::NormalTime});
+  if (rowButton("faster (])")) act({Control::FasterTime});
 }
 
 void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& act) {
@@ -82,16 +66,32 @@ void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& ac
     ImGui::TextColored(colourOf(palette::kValid), "RUNNING");
   }
   ImGui::SameLine();
-  ImGui::Text("tick %llu, t = %s s", static_cast<unsigned long long>(input.tick),
-              formatNumber(input.simTime, 2).c_str());
+  ImGui::TextWrapped("tick %llu, t = %s s", static_cast<unsigned long long>(input.tick),
+                     formatNumber(input.simTime, 2).c_str());
   if (ImGui::Button(input.serverPaused ? "Resume (Space)" : "Pause (Space)")) {
     act({Control::TogglePause});
   }
-  ImGui::SameLine();
   ImGui::BeginDisabled(!input.serverPaused);
-  if (ImGui::Button("Step (.)")) act({Control::StepOnce});
+  if (rowButton("Step (.)")) act({Control::StepOnce});
   ImGui::EndDisabled();
   drawTimeScale(input, act);
+}
+
+// The part of the panel that never scrolls: what is shown, where, and when.
+void drawHeader(const PanelFonts& fonts, const PanelInput& input,
+                const std::function<void(ControlKey)>& act) {
+  ImGui::PushFont(fonts.title);
+  ImGui::TextWrapped("%s", input.preset != nullptr ? input.preset->title.c_str() : "Impulse");
+  ImGui::PopFont();
+  ImGui::PushStyleColor(ImGuiCol_Text, linkColour(input.link));
+  ImGui::TextWrapped("room %s: %s", input.room.c_str(), input.linkText.c_str());
+  ImGui::PopStyleColor();
+  drawTime(input, act);
+  if (input.notice) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colourOf(palette::kWarning));
+    ImGui::TextWrapped("%s", input.notice->c_str());
+    ImGui::PopStyleColor();
+  }
 }
 
 void swatch(Colour fill, Colour outline, float thickness) {
@@ -126,14 +126,15 @@ void drawLegend(const Controls& controls, const std::function<void(ControlKey)>&
 }
 
 void drawNextShape(const Controls& controls, const std::function<void(ControlKey)>& act) {
-  ImGui::Text("Mode: %s", modeName(controls.mode()).c_str());
+  ImGui::TextWrapped("Mode: %s", modeName(controls.mode()).c_str());
   bool isStatic = controls.nextStatic();
   if (ImGui::Checkbox("Static (Q)", &isStatic)) act({Control::ToggleStatic});
-  ImGui::SameLine();
   bool gravity = controls.nextFeelsGravity();
+  sameLineIfFits(ImGui::CalcTextSize("Gravity (G)").x + ImGui::GetFrameHeight() +
+                 ImGui::GetStyle().ItemInnerSpacing.x);
   if (ImGui::Checkbox("Gravity (G)", &gravity)) act({Control::ToggleGravity});
-  ImGui::Text("Shapes at the cursor (T Y U I): %s m to a corner (- =)",
-              formatNumber(controls.shapeSize(), 2).c_str());
+  ImGui::TextWrapped("Shapes at the cursor (T Y U I): %s m to a corner (- =)",
+                     formatNumber(controls.shapeSize(), 2).c_str());
   ImGui::TextUnformatted("Material (KP 1-8, F5-F12):");
   drawLegend(controls, act);
 }
@@ -163,8 +164,8 @@ void drawGravityDial(const Vec2& gravity) {
   ImGui::Dummy({2 * radius + 4, 2 * radius + 4});
   ImGui::SameLine();
   ImGui::BeginGroup();
-  ImGui::Text("g = (%s, %s) m/s2", formatNumber(gravity.x(), 2).c_str(),
-              formatNumber(gravity.y(), 2).c_str());
+  ImGui::TextWrapped("g = (%s, %s) m/s2", formatNumber(gravity.x(), 2).c_str(),
+                     formatNumber(gravity.y(), 2).c_str());
   ImGui::TextDisabled("W A S D nudge");
   ImGui::TextDisabled("Enter resets");
   ImGui::EndGroup();
@@ -187,19 +188,35 @@ void drawControlsSection(Controls& controls, const std::function<void(ControlKey
 
 }  // namespace
 
+void sameLineIfFits(float width) {
+  ImGui::SameLine();
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
+}
+
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
-                   const PanelInput& input, const std::function<void(ControlKey)>& act) {
+                   const PanelInput& input, const PanelActions& actions, PanelState& state) {
+  const auto& act = actions.key;
+  state.presetEntries.clear();
+  state.stopButton.reset();
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.w, rect.h});
-  ImGui::Begin("##side panel", nullptr, kPanelFlags);
-  drawTitle(fonts, input);
-  // Most looked-at first: time, the selected body, the live figures.
-  if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) drawTime(input, act);
-  drawControlsSection(controls, act);
+  ImGui::Begin("##side panel", nullptr,
+               kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  drawHeader(fonts, input, act);
+  ImGui::Separator();
+  // Only the sections scroll; the header above stays.
+  ImGui::BeginChild("##sections");
+  // Most looked-at first: the selected body while the inspector is on (it
+  // is what the person works on), the scenes, the live figures.
   if (controls.inspectorVisible() &&
       ImGui::CollapsingHeader("Inspector (M)", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawInspectorSection(controls, input);
+    drawInspectorSection(controls, input, actions, state);
   }
+  if (ImGui::CollapsingHeader("Scenes", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawScenePicker(input, actions, state);
+  }
+  drawControlsSection(controls, act);
   if (ImGui::CollapsingHeader("Server and viewer", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawStatsSection(input);
   }
@@ -212,6 +229,7 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   if (ImGui::CollapsingHeader("Gravity", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawGravityDial(input.gravity);
   }
+  ImGui::EndChild();
   ImGui::End();
 }
 

@@ -1,7 +1,10 @@
 #pragma once
-/// The side panel beside the scene (never over it): title and explanation,
-/// notices, time, next shape with the material legend, gravity, inspector,
-/// server and viewer figures with live plots, debug overlays, the controls.
+/// The side panel beside the scene (never over it), docked to the window's
+/// right edge: a fixed header (title, room, connection, notices, time) that
+/// never scrolls away, then sections that scroll under it and wrap to its
+/// width: the scene picker with the explanation, inspector, server and
+/// viewer figures with live plots, debug overlays, next shape with the
+/// material legend, gravity, the controls.
 
 #include <imgui.h>
 
@@ -9,6 +12,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "controls.h"
 #include "history.h"
@@ -22,6 +27,10 @@ namespace impulse::viewer {
 /// Everything the panel shows that is not in Controls.
 struct PanelInput {
   const PresetInfo* preset = nullptr;
+  std::string room;  ///< the room joined
+  /// What the scene picker offers: every preset, and the scene files.
+  const std::vector<PresetInfo>* presets = nullptr;
+  std::vector<std::string> sceneFiles;
   Vec2 gravity = Vec2::Zero();
   bool serverPaused = false;
   std::uint64_t tick = 0;
@@ -36,6 +45,7 @@ struct PanelInput {
   double snapshotsPerSecond = 0;
   double playoutDelayMs = 0;
   double frameMs = 0;
+  double framesPerSecond = 0;
   float zoom = 1;
   /// The server's health from its last Pong.
   const v1::ServerStats* stats = nullptr;
@@ -50,12 +60,44 @@ struct PanelFonts {
   ImFont* title = nullptr;
 };
 
-/// Draws the panel into `rect`; buttons act through `act` as the keys would.
+/// What the panel's widgets do: `key` acts as the key would, `loadScene`
+/// loads a scene file, `send` sends a command (`what` names it in errors).
+struct PanelActions {
+  std::function<void(ControlKey)> key;
+  std::function<void(const std::string&)> loadScene;
+  std::function<void(v1::ClientMessage message, std::string what)> send;
+};
+
+/// The inspector's velocity fields while a person edits them: the server's
+/// figures (five a second) would overwrite the typing otherwise.
+struct VelocityEdit {
+  std::uint32_t body = 0;
+  float values[3] = {};  ///< vx, vy (m/s), angular (rad/s)
+  bool editing = false;
+};
+
+/// What the panel keeps from frame to frame, and where it drew what a test
+/// may want to point at.
+struct PanelState {
+  /// Each preset entry of the scene picker that is on screen: id, window pixels.
+  std::vector<std::pair<int, PixelRect>> presetEntries;
+  /// The inspector's Stop button, when it is on screen.
+  std::optional<PixelRect> stopButton;
+  VelocityEdit velocityEdit;
+};
+
+/// Draws the panel into `rect`; `state`'s positions are refilled.
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
-                   const PanelInput& input, const std::function<void(ControlKey)>& act);
+                   const PanelInput& input, const PanelActions& actions, PanelState& state);
+
+/// SameLine() when an item `width` pixels wide still fits on this line;
+/// otherwise the item goes on the next line (rows that fit any width).
+void sameLineIfFits(float width);
 
 // The sections, one file each.
-void drawInspectorSection(const Controls& controls, const PanelInput& input);
+void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelState& state);
+void drawInspectorSection(const Controls& controls, const PanelInput& input,
+                          const PanelActions& actions, PanelState& state);
 void drawStatsSection(const PanelInput& input);
 void drawControlsTable();
 

@@ -268,6 +268,18 @@ void applyImpulse(CommandContext& context, const v1::ApplyImpulse& command) {
   context.succeed();
 }
 
+void setVelocity(CommandContext& context, const v1::SetVelocity& command) {
+  if (!command.has_velocity()) return context.fail("set_velocity: velocity is missing");
+  const auto velocity = wire::vecFromWire(command.velocity(), "set_velocity.velocity");
+  if (!velocity.ok()) return context.fail(velocity.error);
+  const BodyId id{command.body_id()};
+  const Real angular = Real(command.angular_velocity());
+  if (InputResult set = context.simulation.setVelocity(id, *velocity.value, angular); !set) {
+    return context.fail("set_velocity: " + set.error);
+  }
+  context.succeed();
+}
+
 void setPaused(CommandContext& context, const v1::SetPaused& command) {
   context.simulation.setPaused(command.paused());
   context.succeed();

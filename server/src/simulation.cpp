@@ -149,6 +149,12 @@ InputResult Simulation::applyImpulse(BodyId id, const Vec2& impulse, std::option
   return applied;
 }
 
+InputResult Simulation::setVelocity(BodyId id, const Vec2& linear, Real angular) {
+  InputResult set = world_.setVelocity(id, linear, angular);
+  if (set) changedBody(id);
+  return set;
+}
+
 void Simulation::changedBody(BodyId id) {
   changes_.changed(std::span(&id, 1), world_.bodyCount());
   ++version_;

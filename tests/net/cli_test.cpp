@@ -2,9 +2,15 @@
 // that name the line, and exit codes.
 #include <sys/wait.h>
 
+#include <unistd.h>
+
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
+#include "impulse/wire/scene_text.h"
 #include "net_test_support.h"
 
 namespace impulse::net_test {
@@ -27,6 +33,40 @@ bool hasLongFraction(const std::string& line) {
     if (digits >= 10) return true;
   }
   return false;
+}
+
+// A fresh directory for a test's files, removed with it.
+class ScratchDirectory {
+ public:
+  ScratchDirectory()
+      : path_(std::filesystem::temp_directory_path() /
+              ("impulse-cli-test-" + std::to_string(getpid()) + "-" +
+               std::to_string(counter_++))) {
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDirectory() { std::filesystem::remove_all(path_); }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  static inline int counter_ = 0;
+  std::filesystem::path path_;
+};
+
+std::string readFile(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// The text of member `name` in a one-line JSON report ("[4,10]" for an
+// array, "4" for a number), empty when absent.
+std::string member(const std::string& line, const std::string& name) {
+  const auto at = line.find("\"" + name + "\":");
+  if (at == std::string::npos) return {};
+  const auto begin = at + name.size() + 3;
+  const auto end = line[begin] == '[' ? line.find(']', begin) + 1 : line.find_first_of(",}", begin);
+  return line.substr(begin, end - begin);
 }
 
 TEST(Cli, RunsEveryCommandAndPrintsOneJsonLineEach) {
@@ -186,6 +226,200 @@ TEST(Cli, HelpListsTheFlagsInAlignedColumnsAndTheScriptGrammar) {
     EXPECT_EQ(description, column) << flag;
   }
   EXPECT_TRUE(contains(help, "polygon X1 Y1 X2 Y2 X3 Y3")) << help;
+}
+
+TEST(Cli, HelpListsEveryMaterialTheLimitsAndTheLanguage) {
+  FILE* pipe = popen((std::string(IMPULSE_CLI_BINARY) + " --help").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string help;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) help += buffer;
+  EXPECT_EQ(pclose(pipe), 0);
+  for (const char* material : {"solid (500", "ice (100", "wood (700", "metal (2000",
+                               "rubber (200", "stone (", "glass (", "foam ("}) {
+    EXPECT_TRUE(contains(help, material)) << material << " in\n" << help;
+  }
+  EXPECT_TRUE(contains(help, "polygons 3-16 vertices, radius 0.02-20 m")) << help;
+  EXPECT_TRUE(contains(help, "max_step_ticks")) << help;
+  EXPECT_TRUE(contains(help, "repeat N [$I] { ... }")) << help;
+  EXPECT_TRUE(contains(help, "$NAME = COMMAND")) << help;
+}
+
+TEST(Cli, SaveThenLoadOfTheSameFileInOneScriptLoadsWhatWasSaved) {
+  ServerProcess server({"--paused"});
+  const ScratchDirectory directory;
+  for (const std::string name : {"world.scene", "level.json"}) {
+    SCOPED_TRACE(name);
+    const std::string file = directory.file(name);
+    // The file does not exist before the script: the load must wait for
+    // the save's reply, which writes it.
+    const std::string script = "clear\n"
+                               "$ball = circle 5 10 0.5\n"
+                               "save " + file + "\n"
+                               "step 60\n"
+                               "load " + file + "\n"
+                               "query $ball\n";
+    const auto run = runCli(server.port(), script);
+    EXPECT_EQ(run.exitCode, 0);
+    ASSERT_EQ(run.lines.size(), 7u);
+    EXPECT_TRUE(contains(run.lines[3], R"("command":"save","ok":true)")) << run.lines[3];
+    EXPECT_TRUE(contains(run.lines[5], R"({"line":5,"command":"load","ok":true)")) << run.lines[5];
+    // Back where it was saved, at rest: not where a second of falling took it.
+    EXPECT_EQ(member(run.lines[6], "position"), "[5,10]") << run.lines[6];
+    EXPECT_EQ(member(run.lines[6], "velocity"), "[0,0]") << run.lines[6];
+  }
+}
+
+TEST(Cli, VariablesKeepIdsAndNumbers_RepeatRunsABlockWithItsCounter) {
+  ServerProcess server({"--paused"});
+  const std::string script =
+      "$x = 4               # a number\n"
+      "repeat 4 $i {\n"
+      "  $ball = circle $x 10 0.4 rubber\n"
+      "  impulse $ball 0 $i\n"
+      "  $x = $x + 2.5\n"
+      "}\n"
+      "$hook = circle 12.5 16 0.3 static\n"
+      "$rod = distance $hook $ball 12.5 16 11.5 10\n"
+      "query-joint $rod\n"
+      "query $ball\n";
+  const auto run = runCli(server.port(), script);
+  EXPECT_EQ(run.exitCode, 0);
+  ASSERT_EQ(run.lines.size(), 13u);
+  // Four passes of two lines each, under their own line numbers; the
+  // sandbox holds bodies 1-3, so the balls are 4-7.
+  for (int pass = 0; pass < 4; ++pass) {
+    const std::string& circle = run.lines[1 + 2 * pass];
+    EXPECT_TRUE(contains(circle, R"({"line":3,"command":"circle","ok":true,"body_id":)" +
+                                     std::to_string(4 + pass)))
+        << circle;
+    EXPECT_TRUE(contains(run.lines[2 + 2 * pass], R"({"line":4,"command":"impulse","ok":true)"));
+  }
+  EXPECT_TRUE(contains(run.lines[9], R"("body_id":8)")) << run.lines[9];
+  EXPECT_TRUE(contains(run.lines[10], R"("joint_id":1)")) << run.lines[10];
+  EXPECT_TRUE(contains(run.lines[11], R"("joint":{"id":1,"body_a":8,"body_b":7)"))
+      << run.lines[11];
+  // The last ball: x = 4 + 3 * 2.5, pushed up by 4 N*s in the last pass.
+  EXPECT_TRUE(contains(run.lines[12], R"("id":7,"shape":"circle")")) << run.lines[12];
+  EXPECT_EQ(member(run.lines[12], "position"), "[11.5,10]") << run.lines[12];
+  EXPECT_NE(member(run.lines[12], "velocity"), "[0,0]") << run.lines[12];
+}
+
+TEST(Cli, VariablesWithoutAValueAndUnbalancedBlocksAreLineErrors) {
+  ServerProcess server({"--paused"});
+  const std::string script =
+      "circle $nowhere 5 1\n"
+      "$bad = circle 5 5\n"
+      "query $bad\n"
+      "$tick = step 1\n"
+      "}\n"
+      "repeat many {\n"
+      "}\n"
+      "repeat 2 {\n"
+      "ping\n";
+  const auto run = runCli(server.port(), script);
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 8u);
+  EXPECT_TRUE(contains(run.lines[1], R"({"line":1,"command":"circle","ok":false,"error":"line 1: )"
+                                     R"($nowhere has no value)"))
+      << run.lines[1];
+  EXPECT_TRUE(contains(run.lines[2], "line 2: circle X Y R")) << run.lines[2];
+  EXPECT_TRUE(contains(run.lines[3], "line 3: $bad has no value: line 2, which sets it, failed"))
+      << run.lines[3];
+  EXPECT_TRUE(contains(run.lines[4], "line 4: $tick = step: its reply has no id")) << run.lines[4];
+  EXPECT_TRUE(contains(run.lines[5], R"({"line":5,"command":"}","ok":false)")) << run.lines[5];
+  EXPECT_TRUE(contains(run.lines[6], "line 6: repeat N [$I] {: N must be a whole number"))
+      << run.lines[6];
+  // The unclosed block never runs: its ping has no line.
+  EXPECT_TRUE(contains(run.lines[7], "line 8: no } closes this repeat")) << run.lines[7];
+}
+
+TEST(Cli, StepOfAnyLengthGoesInTheServersPiecesAndIsOneLine) {
+  ServerProcess server({"--paused"});
+  const auto run = runCli(server.port(), "step 1500\nstep 7\n");
+  EXPECT_EQ(run.exitCode, 0);
+  ASSERT_EQ(run.lines.size(), 3u);
+  EXPECT_TRUE(contains(run.lines[0], R"("tick":0)")) << run.lines[0];
+  EXPECT_TRUE(contains(run.lines[1], R"({"line":1,"command":"step","ok":true,"tick":1500,)"))
+      << run.lines[1];
+  EXPECT_TRUE(contains(run.lines[2], R"("tick":1507)")) << run.lines[2];
+}
+
+// Level files are the binary scene in protobuf's JSON mapping: each form
+// converts to the other bit-exactly, for scenes with joints, contacts,
+// fields and sleeping bodies.
+TEST(Cli, LevelFilesRoundTripBitExactlyThroughTheBinaryForm) {
+  ServerProcess server({"--paused"});
+  const ScratchDirectory directory;
+  for (const int preset : {1, 8, 13, 14, 16}) {
+    SCOPED_TRACE(preset);
+    const std::string binary = directory.file("scene.bin");
+    const std::string text = directory.file("scene.json");
+    const auto run = runCli(server.port(), "preset " + std::to_string(preset) +
+                                               "\nstep 90\nsave " + binary + "\nsave " + text +
+                                               "\n");
+    ASSERT_EQ(run.exitCode, 0) << run.lines.back();
+    const std::string bytes = readFile(binary);
+    const std::string json = readFile(text);
+    ASSERT_GT(bytes.size(), 100u);
+    EXPECT_TRUE(contains(json, "\"bodies\": [")) << json.substr(0, 200);
+    std::string error;
+    EXPECT_EQ(wire::sceneFromJson(json, error), bytes) << error;
+    EXPECT_EQ(wire::sceneToJson(bytes, error), json) << error;
+  }
+}
+
+TEST(Cli, AHandEditedLevelFileLoads_AndABadOneIsRefusedWithItsReason) {
+  ServerProcess server({"--paused"});
+  const ScratchDirectory directory;
+  const std::string level = directory.file("level.json");
+  ASSERT_EQ(runCli(server.port(), "clear\ncircle 5 10 0.5 rubber\nsave " + level + "\n").exitCode,
+            0);
+  std::string json = readFile(level);
+  // A designer moves the ball and makes it larger (its mass follows from
+  // the radius and its density when the scene loads).
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"\"x\": 5", "\"x\": 7.5"},
+        {"\"circle_radius\": 0.5", "\"circle_radius\": 0.8"}}) {
+    const auto at = json.find(from);
+    ASSERT_NE(at, std::string::npos) << from << " in\n" << json;
+    json.replace(at, from.size(), to);
+  }
+  std::ofstream(level) << json;
+  const auto run = runCli(server.port(), "load " + level + "\nquery 1\n");
+  EXPECT_EQ(run.exitCode, 0) << run.lines.back();
+  ASSERT_EQ(run.lines.size(), 3u);
+  EXPECT_EQ(member(run.lines[2], "position"), "[7.5,10]") << run.lines[2];
+  EXPECT_EQ(member(run.lines[2], "radius"), "0.8") << run.lines[2];
+  // 200 kg/m2 (rubber) * pi * 0.8^2
+  EXPECT_NEAR(std::stod(member(run.lines[2], "mass")), 402.124, 0.01) << run.lines[2];
+
+  std::ofstream(level) << "{\"bodies\": [{\"radius\": 2}]}";
+  const auto bad = runCli(server.port(), "load " + level + "\n");
+  EXPECT_EQ(bad.exitCode, 1);
+  ASSERT_EQ(bad.lines.size(), 2u);
+  EXPECT_TRUE(contains(bad.lines[1], "line 1: load FILE: not a scene in JSON:")) << bad.lines[1];
+  EXPECT_TRUE(contains(bad.lines[1], "radius")) << bad.lines[1];
+}
+
+TEST(Cli, VelocitySetsABodysVelocity_AndRefusalsSayWhy) {
+  ServerProcess server({"--paused"});
+  const std::string script =
+      "$ball = circle 5 10 0.5\n"
+      "velocity $ball 3 -1 2\n"
+      "query $ball\n"
+      "velocity $ball nan 0\n"
+      "velocity 1 1 1\n";
+  const auto run = runCli(server.port(), script);
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 6u);
+  EXPECT_TRUE(contains(run.lines[2], R"({"line":2,"command":"velocity","ok":true)")) << run.lines[2];
+  EXPECT_EQ(member(run.lines[3], "velocity"), "[3,-1]") << run.lines[3];
+  EXPECT_EQ(member(run.lines[3], "angular_velocity"), "2") << run.lines[3];
+  EXPECT_TRUE(contains(run.lines[4], "line 4: velocity VX is not a finite number")) << run.lines[4];
+  // Body 1 is the sandbox's floor: static bodies do not move.
+  EXPECT_TRUE(contains(run.lines[5], R"("line":5,"command":"velocity","ok":false,"error":"line 5: velocity: )"))
+      << run.lines[5];
 }
 
 TEST(Cli, BadFlagValuesNameTheFlag) {

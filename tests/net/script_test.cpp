@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "variables.h"
+
 #include <cmath>
 
 namespace impulse::cli {
@@ -117,6 +119,63 @@ TEST(CliScript, ErrorsNameTheUsageAndTheProblem) {
   EXPECT_EQ(parseError("query -1"), "query ID: body id -1 out of range");
   EXPECT_EQ(parseError("pause now"), "pause: unexpected 'now'");
   EXPECT_EQ(parseError("jump 3"), "unknown command 'jump'");
+}
+
+TEST(CliScript, LoadNamesItsFileAndReadsNothingYet) {
+  // The file is read when the line runs (after an earlier save wrote it),
+  // so a file that does not exist yet parses.
+  const auto command = parseOk("load not-written-yet.json");
+  EXPECT_EQ(command.file, "not-written-yet.json");
+  EXPECT_TRUE(command.message.load_scene().data().empty());
+  EXPECT_EQ(parseError("load"), "load FILE: FILE is missing");
+}
+
+TEST(CliVariables, AssignmentsSplitOffTheirName) {
+  const auto assignment = splitAssignment("  $ball_2 =circle 1 2 3");
+  ASSERT_TRUE(assignment.has_value());
+  EXPECT_EQ(assignment->variable, "ball_2");
+  EXPECT_EQ(assignment->command, "circle 1 2 3");
+  EXPECT_FALSE(splitAssignment("circle $x 1 1").has_value());
+  EXPECT_FALSE(splitAssignment("$ = circle 1 1 1").has_value());
+  EXPECT_FALSE(splitAssignment("$x circle").has_value());
+}
+
+TEST(CliVariables, ValuesReplaceEveryReferenceBeforeTheComment) {
+  Variables variables;
+  variables.set("x", "2.5");
+  variables.set("ball", "7");
+  const auto done = variables.substitute("impulse $ball $x 0 density=$x  # not $here");
+  EXPECT_TRUE(done.error.empty()) << done.error;
+  EXPECT_EQ(done.text, "impulse 7 2.5 0 density=2.5  # not $here");
+}
+
+TEST(CliVariables, WaitingFailedAndUnknownVariablesAreTold) {
+  Variables variables;
+  variables.await("ball", 3);
+  EXPECT_TRUE(variables.substitute("query $ball").waiting);
+  variables.fail("ball", 3);
+  EXPECT_EQ(variables.substitute("query $ball").error,
+            "$ball has no value: line 3, which sets it, failed");
+  EXPECT_EQ(variables.substitute("query $box").error,
+            "$box has no value (set it with $box = COMMAND or $box = NUMBER)");
+  EXPECT_EQ(variables.substitute("query $ 1").error, "'$' without a variable name after it");
+}
+
+TEST(CliScript, RepeatLinesOpenBlocksAndBracesCloseThem) {
+  EXPECT_EQ(lineShape("repeat 3 {"), LineShape::OpensBlock);
+  EXPECT_EQ(lineShape("  repeat $n $i {  # comment"), LineShape::OpensBlock);
+  EXPECT_EQ(lineShape(" } "), LineShape::ClosesBlock);
+  EXPECT_EQ(lineShape("repeat 3"), LineShape::Plain);
+  const auto words = parseRepeat("repeat $n $i {");
+  EXPECT_TRUE(words.error.empty()) << words.error;
+  EXPECT_EQ(words.count, "$n");
+  EXPECT_EQ(words.counter, "i");
+  EXPECT_EQ(parseRepeat("repeat 3 i {").error,
+            "repeat N [$I] {: 'i' is not a $name to count the passes in");
+  std::string error;
+  EXPECT_EQ(repeatCount("12", error), 12);
+  EXPECT_FALSE(repeatCount("-1", error).has_value());
+  EXPECT_EQ(error, "repeat N [$I] {: N must be a whole number, 0 or more, not '-1'");
 }
 
 }  // namespace

@@ -7,8 +7,7 @@
 namespace impulse::viewer {
 namespace {
 
-const ControlContext kSandbox{.drawingAllowed = true};
-const ControlContext kLocked{.drawingAllowed = false};
+const ControlContext kSandbox{};
 
 ControlKey key(Control control, int index = 0) { return {control, index}; }
 
@@ -137,17 +136,11 @@ TEST_F(ControlsTest, Circle_WithoutDragCancels) {
   EXPECT_EQ(controls.mode(), DrawMode::None);
 }
 
-TEST_F(ControlsTest, DrawingLockedOutsideSandboxAndTutorials_ShowsNotice) {
-  press(Control::PolygonMode, kLocked);
-  EXPECT_EQ(controls.mode(), DrawMode::None);
+TEST_F(ControlsTest, NoticesShowForAFewSeconds) {
+  press(Control::PolygonMode);
+  press(Control::PolygonMode);  // fewer than 3 points: cancelled, and told
   EXPECT_TRUE(controls.notice(now).has_value());
   EXPECT_FALSE(controls.notice(now + 10).has_value());
-  press(Control::CircleMode, kLocked);
-  EXPECT_EQ(controls.mode(), DrawMode::None);
-  // A scene change while drawing ends the drawing.
-  press(Control::PolygonMode);
-  controls.update(kLocked, now);
-  EXPECT_EQ(controls.mode(), DrawMode::None);
 }
 
 TEST_F(ControlsTest, GravityKeys_RepeatAtASteadyRateWhileHeld) {

@@ -23,7 +23,8 @@ client::ConnectOptions observerOptions(std::uint16_t port) {
   return options;
 }
 
-ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::string token) {
+ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::string token,
+                             std::string room) {
   // No display in CI: SDL's offscreen driver and its software renderer,
   // drawing straight into the window surface (without framebuffer
   // acceleration SDL never loads Mesa through EGL, whose unloaded drivers
@@ -35,6 +36,7 @@ ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::str
   options.connect.port = port;
   options.connect.name = "viewer-under-test";
   options.connect.token = std::move(token);
+  options.connect.room = std::move(room);
   options.width = width;
   options.height = height;
   options.fontPath = viewer::defaultFontPath();
@@ -73,9 +75,10 @@ std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> ViewerHarness::capture(
   return {converted, SDL_FreeSurface};
 }
 
-void ViewerHarness::key(SDL_Keycode key, bool down, Uint16 modifiers) {
+void ViewerHarness::key(SDL_Keycode key, bool down, Uint16 modifiers, bool repeat) {
   SDL_Event event{};
   event.type = down ? SDL_KEYDOWN : SDL_KEYUP;
+  event.key.repeat = repeat ? 1 : 0;
   event.key.state = down ? SDL_PRESSED : SDL_RELEASED;
   event.key.keysym.sym = key;
   event.key.keysym.scancode = SDL_GetScancodeFromKey(key);

@@ -23,9 +23,10 @@ client::ConnectOptions observerOptions(std::uint16_t port);
 
 class ViewerHarness {
  public:
-  /// `token` is sent in Hello, as --token would send it.
+  /// `token` is sent in Hello, as --token would send it; `room` is joined
+  /// as --room would.
   explicit ViewerHarness(std::uint16_t port, int width = 1280, int height = 720,
-                         std::string token = {});
+                         std::string token = {}, std::string room = {});
 
   viewer::App& app() { return *app_; }
   /// Runs frames (about 60 per second) until `done` or `timeout`; true if done.
@@ -36,7 +37,8 @@ class ViewerHarness {
   std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> capture(const std::string& path);
 
   // Synthetic input, as SDL would deliver it from a window.
-  void key(SDL_Keycode key, bool down, Uint16 modifiers = KMOD_NONE);
+  /// `repeat`: the keyboard's own repeat of a held key.
+  void key(SDL_Keycode key, bool down, Uint16 modifiers = KMOD_NONE, bool repeat = false);
   void tap(SDL_Keycode key, Uint16 modifiers = KMOD_NONE);
   void mouseMove(float px, float py);
   void mouseButton(float px, float py, bool down, Uint8 button = SDL_BUTTON_LEFT);

@@ -62,6 +62,8 @@ v1::ClientMessage clearWorld();
 v1::ClientMessage removeBody(std::uint32_t id);
 v1::ClientMessage applyImpulse(std::uint32_t id, Point impulse,
                                std::optional<Point> point = std::nullopt);
+/// `angular` in rad/s.
+v1::ClientMessage setVelocity(std::uint32_t id, Point velocity, double angular = 0);
 v1::ClientMessage setPaused(bool paused);
 v1::ClientMessage step(std::uint32_t ticks);
 v1::ClientMessage queryBody(std::uint32_t id);

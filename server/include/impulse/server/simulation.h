@@ -73,6 +73,7 @@ class Simulation {
   /// False for an unknown id.
   bool removeBody(BodyId id);
   InputResult applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point);
+  InputResult setVelocity(BodyId id, const Vec2& linear, Real angular);
   InputResult setGravity(const Vec2& gravity);
   JointResult createJoint(const JointDef& def);
   /// False for an unknown id.

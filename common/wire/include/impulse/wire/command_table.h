@@ -82,6 +82,9 @@
   ROW(ApplyImpulse, apply_impulse, Owner,  applyImpulse, "impulse",                       \
       "impulse ID JX JY [PX PY]", "apply an impulse (at a world point)",                  \
       parseImpulse, client::applyImpulse)                                                 \
+  ROW(SetVelocity, set_velocity, Owner, setVelocity, "velocity", "velocity ID VX VY [W]",   \
+      "set a body's velocity (m/s) and angular velocity W (rad/s, default 0)",            \
+      parseVelocity, client::setVelocity)                                                 \
   ROW(QueryBody, query_body, Anyone, queryBody, "query", "query ID",                      \
       "description, state and mass properties of a body", parseBodyId, client::queryBody) \
   ROW(Ping, ping, Anyone, ping, "ping", "ping",                                           \
