@@ -119,7 +119,10 @@ std::string awaitBody(std::uint16_t port, const std::string& path, const std::st
 // stepping threads (each up to half of one), and liveness names a room that
 // finished no tick for --room-stall-seconds.
 TEST(HealthProbes, OverrunningRoomsMakeTheServerBusy_AStalledRoomFailsLiveness) {
+  // 240 Hz: a falling pile of 3 000 at 64 sub-steps overruns its 4.2 ms
+  // period for as long as the test runs, however busy the machine.
   ServerProcess server({"--health-port", "0", "--room-threads", "1", "--substeps", "64",
+                        "--tick-hz", "240",
                         "--room-stall-seconds", "0.03", "--max-commands-per-second", "1000000"});
   const auto port = probePort(server);
   ASSERT_NE(port, 0) << server.log();
@@ -137,7 +140,9 @@ TEST(HealthProbes, OverrunningRoomsMakeTheServerBusy_AStalledRoomFailsLiveness) 
     }
     requestAll(*heavy.back(), pile);
   }
-  EXPECT_EQ(awaitBody(port, "/readyz", "busy", 5),
+  const std::string busy = awaitBody(port, "/readyz", "busy", 10);
+  std::printf("[ measure ] /readyz: %s", busy.c_str());
+  EXPECT_EQ(busy,
             "busy: 2 rooms overrunning their tick budget take the 1 stepping thread(s); 3 of 16 "
             "rooms\n");
   EXPECT_EQ(statusLine(get(port, "/readyz")), "HTTP/1.1 503 Service Unavailable");
