@@ -94,7 +94,8 @@ ControlContext App::context() const {
   // the server has the body.
   if (const auto grabbed = controls_.grabbedBody()) {
     if (const client::MirrorBody* body = mirrored(*grabbed)) {
-      BodyLook look{body->shape, body->material, body->isStatic, body->ignoreGravity};
+      BodyLook look{body->shape,    body->extraShapes, body->material,
+                    body->isStatic, body->isKinematic, body->ignoreGravity};
       context.grabbed =
           GrabbedBody{body->state.position, double(massOf(look).mass), body->state.angle};
     }

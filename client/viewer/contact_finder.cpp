@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 #include "impulse/manifold.h"
 
@@ -13,27 +14,36 @@ Transform transformOf(const DrawnBody& body) {
   return {body.state.position, Rot::fromAngle(body.state.angle)};
 }
 
-void collidePair(const DrawnBody& a, const DrawnBody& b, Real tolerance,
-                 std::vector<ShownContact>& out) {
-  const Shape* first = &a.look->shape;
-  const Shape* second = &b.look->shape;
-  Transform xfFirst = transformOf(a);
-  Transform xfSecond = transformOf(b);
-  Real flip = 1;
-  // The dispatch table wants the pair in one order; the normal then points
-  // the other way.
-  CollideFunction collide = collideFunction(first->type, second->type);
-  if (collide == nullptr) {
-    std::swap(first, second);
-    std::swap(xfFirst, xfSecond);
-    collide = collideFunction(first->type, second->type);
-    flip = -1;
-  }
-  const Manifold manifold = collide(*first, xfFirst, *second, xfSecond);
-  for (int i = 0; i < manifold.pointCount; ++i) {
-    if (manifold.points[i].separation > tolerance) continue;
-    out.push_back({manifold.points[i].point, flip * manifold.normal});
-  }
+// Calls visit(shape) for each of the body's shapes.
+template <class Visit>
+void forEachShape(const BodyLook& look, Visit&& visit) {
+  visit(look.shape);
+  for (const Shape& extra : look.extraShapes) visit(extra);
+}
+
+AABB boundsOf(const DrawnBody& body) {
+  const Transform xf = transformOf(body);
+  std::optional<AABB> box;
+  forEachShape(*body.look, [&](const Shape& shape) {
+    const AABB shapeBox = computeAABB(shape, xf);
+    box = box ? box->unite(shapeBox) : shapeBox;
+  });
+  return *box;
+}
+
+// Every shape of one body against every shape of the other.
+void collidePair(const DrawnBody& a, const DrawnBody& b, Real tolerance, std::vector<ShownContact>& out) {
+  const Transform xfA = transformOf(a);
+  const Transform xfB = transformOf(b);
+  forEachShape(*a.look, [&](const Shape& first) {
+    forEachShape(*b.look, [&](const Shape& second) {
+      const Manifold manifold = collide(first, xfA, second, xfB);
+      for (int i = 0; i < manifold.pointCount; ++i) {
+        if (manifold.points[i].separation > tolerance) continue;
+        out.push_back({manifold.points[i].point, manifold.normal});
+      }
+    });
+  });
 }
 
 }  // namespace
@@ -43,7 +53,7 @@ void findContacts(std::span<const DrawnBody> bodies, std::vector<ShownContact>& 
   out.clear();
   std::vector<AABB> boxes(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    boxes[i] = computeAABB(bodies[i].look->shape, transformOf(bodies[i]));
+    boxes[i] = boundsOf(bodies[i]);
   }
   std::vector<std::size_t> order(bodies.size());
   std::iota(order.begin(), order.end(), std::size_t(0));

@@ -43,8 +43,11 @@ void drawBodyTable(const v1::BodyInfo& info) {
   if (!ImGui::BeginTable("body", 2, ImGuiTableFlags_SizingStretchProp)) return;
   row("id", std::to_string(d.id()));
   row("shape", shapeText(d.shape()));
+  // A compound body lists every shape, one row each.
+  for (int i = 0; i < d.extra_shapes_size(); ++i) row("+ shape", shapeText(d.extra_shapes(i)));
   row("material", materialLabel(material));
   row("static", yesNo(d.is_static()));
+  row("kinematic", yesNo(d.is_kinematic()));
   row("awake", yesNo(s.awake()));
   row("gravity", d.ignore_gravity() ? "ignored" : "felt");
   row("position", vec(s.position(), 3) + " m");

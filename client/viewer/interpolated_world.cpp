@@ -56,8 +56,8 @@ void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
   for (const std::uint32_t id : snapshot.removed()) retire(id, time);
   for (const auto& descriptor : snapshot.added()) {
     if (const auto* body = mirror.find(BodyId{descriptor.id()})) {
-      looks_[descriptor.id()] = {body->shape, body->material, body->isStatic,
-                                 body->ignoreGravity};
+      looks_[descriptor.id()] = {body->shape,    body->extraShapes, body->material,
+                                 body->isStatic, body->isKinematic, body->ignoreGravity};
     }
   }
   record(mirror, time, mirror.timeScale(), snapshot.full(), snapshot.paused(), now);

@@ -746,7 +746,8 @@ ShapeError validateCircle(Real radius, const ShapeLimits& limits) {
 ShapeError checkPolygonInProgress(std::span<const Vec2> points) {
   if (points.size() > kMaxPolygonVertices) return ShapeError::TooManyVertices;
   if (!allFinite(points)) return ShapeError::NonFinite;
-  return checkOutline(makeOutline(points));
+  // Concave outlines are welcome (the world splits them); crossing ones not.
+  return checkSimple(makeOutline(points).ring());
 }
 
 namespace {

@@ -88,11 +88,20 @@ std::vector<ShapeDef> shapeDefsOf(const BodyDef& def) {
   return shapes;
 }
 
+// The world's shape limit: kShapesPerBodyOfLimit per body of its body limit.
+std::string checkShapeRoom(const WorldData& world, std::size_t added) {
+  const std::size_t limit = std::size_t(kShapesPerBodyOfLimit) * std::size_t(std::max(world.settings.maxBodies, 0));
+  if (std::size_t(world.liveShapes) + added <= limit) return {};
+  return "shape limit reached (" + std::to_string(limit) + " shapes: " + std::to_string(kShapesPerBodyOfLimit) +
+         " per body of the body limit)";
+}
+
 std::string checkShapeDefs(const WorldData& world, const BodyDef& def) {
   if (def.extraShapes.size() + 1 > std::size_t(kMaxShapesPerBody)) {
     return "a body carries at most " + std::to_string(kMaxShapesPerBody) + " shapes (" +
            std::to_string(def.extraShapes.size() + 1) + " given)";
   }
+  if (std::string error = checkShapeRoom(world, def.extraShapes.size() + 1); !error.empty()) return error;
   for (const ShapeDef& shape : shapeDefsOf(def)) {
     if (std::string error = checkShapeDef(world, shape); !error.empty()) return error;
   }
@@ -260,6 +269,7 @@ ShapeResult World::createShape(BodyId id, const ShapeDef& def) {
                     " shapes, the most a body may"};
   }
   if (std::string error = checkShapeDef(w, def); !error.empty()) return {{}, error};
+  if (std::string error = checkShapeRoom(w, 1); !error.empty()) return {{}, error};
   const std::int32_t slot = id.slot();
   const std::int32_t s = attachShape(w, slot, def);
   createShapeProxy(w, s);

@@ -285,6 +285,7 @@ class StateImport {
   std::string shapes() {
     WorldData& w = *next_;
     if (state_.shapes.size() > BodyId::kIndexMask) return "too many shape slots";
+    const std::size_t limit = std::size_t(kShapesPerBodyOfLimit) * std::size_t(std::max(w.settings.maxBodies, 0));
     std::vector<bool> alive;
     for (std::size_t slot = 0; slot < state_.shapes.size(); ++slot) {
       const ShapeSlotState& s = state_.shapes[slot];
@@ -298,6 +299,10 @@ class StateImport {
         ++w.liveShapes;
       }
       w.shapes.push_back(shape);
+    }
+    if (std::size_t(w.liveShapes) > limit) {
+      return "shape limit reached (" + std::to_string(limit) + " shapes: " + std::to_string(kShapesPerBodyOfLimit) +
+             " per body of the body limit)";
     }
     if (std::string error = checkFreeList("shape", state_.freeShapes, alive); !error.empty()) return error;
     w.freeShapes.assign(state_.freeShapes);

@@ -149,7 +149,7 @@ TEST(Convert, PolygonShapeRoundTripKeepsVerticesAndNormals) {
   ASSERT_EQ(message.polygon().vertices_size(), 6);
   const auto back = shapeFromWire(message);
   ASSERT_TRUE(back.ok()) << back.error;
-  ASSERT_EQ(back.value->type, ShapeType::Polygon);
+  ASSERT_EQ(back.value->type(), ShapeType::Polygon);
   ASSERT_EQ(back.value->polygon().count, 6);
   for (int i = 0; i < 6; ++i) {
     EXPECT_EQ(back.value->polygon().vertices[i], box.polygon().vertices[i]);

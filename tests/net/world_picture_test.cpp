@@ -12,6 +12,7 @@
 #include <random>
 #include <sstream>
 
+#include "impulse/wire/convert.h"
 #include "impulse/wire/quantized_state.h"
 #include "interpolated_world.h"
 #include "net_test_support.h"
@@ -41,14 +42,13 @@ constexpr Tolerance kExact{};
 const Tolerance kQuantum{double(q::kPositionQuantum) * q::kPositionUnit,
                          double(q::kVelocityQuantum) * q::kVelocityUnit};
 
+// Two shapes are the same when they say the same on the wire (every kind,
+// every number).
 bool sameShape(const Shape& a, const Shape& b) {
-  if (a.type != b.type) return false;
-  if (a.type == ShapeType::Circle) return a.circle.radius == b.circle.radius;
-  if (a.polygon.count != b.polygon.count) return false;
-  for (int i = 0; i < a.polygon.count; ++i) {
-    if (a.polygon.vertices[std::size_t(i)] != b.polygon.vertices[std::size_t(i)]) return false;
-  }
-  return true;
+  v1::Shape wireA, wireB;
+  wire::toWire(a, &wireA);
+  wire::toWire(b, &wireB);
+  return wireA.SerializeAsString() == wireB.SerializeAsString();
 }
 
 bool near(const Vec2& a, const Vec2& b, double tolerance) {
@@ -215,7 +215,7 @@ v1::Snapshot snapshotAt(int tick, bool full,
 
 double drawnRadius(const viewer::InterpolatedWorld& view, std::uint32_t id) {
   for (const auto& body : view.bodies()) {
-    if (body.state.id == id) return body.look->shape.circle.radius;
+    if (body.state.id == id) return body.look->shape.circle().radius;
   }
   return 0;
 }

@@ -69,6 +69,9 @@ struct ShapeDef {
 /// Most shapes one body may carry, and how far (m) any point of a moving
 /// (dynamic or kinematic) body's shapes may lie from its centre of mass.
 inline constexpr int kMaxShapesPerBody = 1024;
+/// A world holds at most this many shapes per body of its body limit
+/// (WorldSettings::maxBodies), however they are spread over its bodies.
+inline constexpr int kShapesPerBodyOfLimit = 4;
 inline constexpr Real kMaxBodyExtent = 50;
 
 /// Everything needed to create a body. Its shapes are given in a frame whose

@@ -159,8 +159,9 @@ PolygonBuild buildPolygon(std::span<const Vec2> points, const ShapeLimits& limit
 ShapeError validateCircle(Real radius, const ShapeLimits& limits = {});
 
 /// For interactive drawing: ShapeError::None when the points placed so far
-/// (in order, either winding) still form, or can close into, a convex polygon
-/// with no duplicate or collinear points. Fewer than 3 points only need to be
+/// (in order, either winding) still form, or can close into, a simple polygon
+/// (convex or not: World::createPolygon splits a concave one) with no
+/// crossing edges and no duplicate or collinear points. Fewer than 3 points only need to be
 /// finite and distinct. The area range is not checked here.
 ShapeError checkPolygonInProgress(std::span<const Vec2> points);
 

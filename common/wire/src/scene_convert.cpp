@@ -544,8 +544,10 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
 
 SceneSlotLimits sceneSlotLimits(int maxBodies) {
   const auto bodies = std::size_t(std::max(maxBodies, 0));
-  // A tree holds 2n - 1 nodes for n proxies and grows its array by doubling.
-  return {bodies, kContactSlotsPerBody * bodies, kJointSlotsPerBody * bodies, 4 * bodies + 16};
+  const std::size_t shapes = std::size_t(kShapesPerBodyOfLimit) * bodies;
+  // A tree holds 2n - 1 nodes for n proxies (one per shape) and grows its
+  // array by doubling.
+  return {bodies, shapes, kContactSlotsPerShape * shapes, kJointSlotsPerBody * bodies, 4 * shapes + 16};
 }
 
 namespace {
@@ -558,6 +560,8 @@ std::string tooMany(const char* what, std::size_t count, std::size_t limit) {
 std::string checkSlotCounts(const v1::Scene& scene, const SceneSlotLimits& limits) {
   const std::size_t bodies = std::size_t(scene.bodies_size());
   if (bodies > limits.bodies) return tooMany("body slots", bodies, limits.bodies);
+  const std::size_t shapes = std::size_t(scene.shapes_size());
+  if (shapes > limits.shapes) return tooMany("shape slots", shapes, limits.shapes);
   const std::size_t contacts = std::size_t(scene.contacts_size());
   if (contacts > limits.contacts) return tooMany("contact slots", contacts, limits.contacts);
   const std::size_t joints = std::size_t(scene.joints_size());

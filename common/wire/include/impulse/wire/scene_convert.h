@@ -32,11 +32,12 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene);
 /// bodies within it).
 struct SceneSlotLimits {
   std::size_t bodies;    ///< body slots, live or free: the body limit
-  std::size_t contacts;  ///< contact slots: kContactSlotsPerBody per body
+  std::size_t shapes;    ///< shape slots: the world's shape limit (kShapesPerBodyOfLimit per body)
+  std::size_t contacts;  ///< contact slots: kContactSlotsPerShape per shape
   std::size_t joints;    ///< joint slots: kJointSlotsPerBody per body
   std::size_t treeNodes; ///< nodes of each broad-phase tree, free ones included
 };
-inline constexpr std::size_t kContactSlotsPerBody = 16;
+inline constexpr std::size_t kContactSlotsPerShape = 16;
 inline constexpr std::size_t kJointSlotsPerBody = 4;
 SceneSlotLimits sceneSlotLimits(int maxBodies);
 
