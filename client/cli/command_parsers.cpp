@@ -68,22 +68,28 @@ std::optional<std::tuple<client::Point, double, client::SpawnOptions>> parseCirc
   return std::tuple{client::Point{*x, *y}, *r, options};
 }
 
+// What a parser calls the points it reads, in errors.
+struct Noun {
+  const char* one;
+  const char* many;
+};
+
 // The X Y pairs from word `i` on, up to the first word that is not a
-// number; `i` ends past them. Nothing (noted) when a pair lacks its y or
-// there is none.
-std::optional<std::vector<client::Point>> readPoints(Arguments& line, std::size_t& i) {
+// number; `i` ends past them. Nothing (noted, calling each a `noun`) when a
+// pair lacks its y or there is none.
+std::optional<std::vector<client::Point>> readPoints(Arguments& line, std::size_t& i, const Noun& noun) {
   std::vector<client::Point> points;
   while (i < line.size() && wire::parseNumber<double>(line.word(i))) {
     const auto x = line.numberAt(i), y = line.numberAt(i + 1);
     if (!y) {
-      line.refuse("point " + std::to_string(points.size() + 1) + " has no y");
+      line.refuse(std::string(noun.one) + " " + std::to_string(points.size() + 1) + " has no y");
       return std::nullopt;
     }
     points.push_back({*x, *y});
     i += 2;
   }
   if (points.empty()) {
-    line.refuse("no points");
+    line.refuse(std::string("no ") + noun.many);
     return std::nullopt;
   }
   return points;
@@ -92,7 +98,7 @@ std::optional<std::vector<client::Point>> readPoints(Arguments& line, std::size_
 std::optional<std::tuple<std::vector<client::Point>, client::SpawnOptions>> parsePolygon(
     Arguments& line) {
   std::size_t i = 1;
-  auto points = readPoints(line, i);
+  auto points = readPoints(line, i, {"vertex", "vertices"});
   if (!points) return std::nullopt;
   client::SpawnOptions options;
   if (!line.bodyFlags(i, options)) return std::nullopt;
@@ -121,7 +127,7 @@ std::optional<std::tuple<client::Point, client::Point, client::SpawnOptions>> pa
 
 std::optional<std::tuple<std::vector<client::Point>, bool, client::SpawnOptions>> parseChain(Arguments& line) {
   std::size_t i = 1;
-  auto points = readPoints(line, i);
+  auto points = readPoints(line, i, {"point", "points"});
   if (!points) return std::nullopt;
   const bool loop = i < line.size() && line.word(i) == "loop";
   client::SpawnOptions options;

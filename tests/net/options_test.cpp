@@ -68,7 +68,7 @@ TEST(ServerOptions, RefusesBadValuesWithTheFlagName) {
       {{"--port", "70000"}, "--port"},
       {{"--tick-hz", "0"}, "--tick-hz"},
       {{"--tick-hz", "abc"}, "--tick-hz"},
-      {{"--preset", "18"}, "--preset"},
+      {{"--preset", "22"}, "--preset"},
       {{"--snapshot-hz", "90"}, "--snapshot-hz may not exceed --tick-hz"},
       {{"--port"}, "--port needs a value"},
       {{"--paused=yes"}, "--paused takes no value"},

@@ -29,7 +29,8 @@ TEST(SceneLimits, SlotCountsPastTheBodyLimitAreRefusedBeforeAnythingIsBuilt) {
   const v1::Scene saved = savedScene(simulation);
   const auto limits = wire::sceneSlotLimits(1000);
   EXPECT_EQ(limits.bodies, 1000u);
-  EXPECT_EQ(limits.contacts, 16000u);
+  EXPECT_EQ(limits.shapes, 4000u);
+  EXPECT_EQ(limits.contacts, 64000u);
   EXPECT_EQ(limits.joints, 4000u);
 
   v1::Scene freeBodies = saved;
@@ -38,15 +39,18 @@ TEST(SceneLimits, SlotCountsPastTheBodyLimitAreRefusedBeforeAnythingIsBuilt) {
             "scene refused: 1001 body slots (live or free), over the 1000 this world allows for "
             "its body limit");
   v1::Scene freeContacts = saved;
-  while (freeContacts.contacts_size() < 16001) freeContacts.add_contacts();
-  EXPECT_NE(loadError(simulation, freeContacts).find("16001 contact slots"), std::string::npos);
+  while (freeContacts.contacts_size() < 64001) freeContacts.add_contacts();
+  EXPECT_NE(loadError(simulation, freeContacts).find("64001 contact slots"), std::string::npos);
+  v1::Scene freeShapes = saved;
+  while (freeShapes.shapes_size() < 4001) freeShapes.add_shapes();
+  EXPECT_NE(loadError(simulation, freeShapes).find("4001 shape slots"), std::string::npos);
   v1::Scene freeJoints = saved;
   while (freeJoints.joints_size() < 4001) freeJoints.add_joints();
   EXPECT_NE(loadError(simulation, freeJoints).find("4001 joint slots"), std::string::npos);
   v1::Scene treeNodes = saved;
-  while (treeNodes.movable_tree().nodes_size() < 4017)
+  while (treeNodes.movable_tree().nodes_size() < 16017)
     treeNodes.mutable_movable_tree()->add_nodes();
-  EXPECT_NE(loadError(simulation, treeNodes).find("4017 broad-phase tree nodes"),
+  EXPECT_NE(loadError(simulation, treeNodes).find("16017 broad-phase tree nodes"),
             std::string::npos);
   // The world is untouched by every refusal.
   EXPECT_EQ(savedScene(simulation).SerializeAsString(), saved.SerializeAsString());

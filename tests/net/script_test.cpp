@@ -104,7 +104,7 @@ TEST(CliScript, ErrorsNameTheUsageAndTheProblem) {
   EXPECT_EQ(parseError("circle 1 2"), circle + "missing argument 3");
   EXPECT_EQ(parseError("circle 1 x 3"), circle + "'x' is not a number");
   EXPECT_EQ(parseError("circle 1 2 3 plastic"),
-            circle + "unexpected 'plastic' (material, static or nograv)");
+            circle + "unexpected 'plastic' (material, static, kinematic or nograv)");
   EXPECT_EQ(parseError("circle 1 2 3 colour=4"),
             circle + "unexpected 'colour=4' (density=, friction=, restitution=, damping=, "
                      "angular-damping= or gravity-scale=)");

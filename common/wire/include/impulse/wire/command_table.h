@@ -30,7 +30,7 @@
 // clang-format off
 #define IMPULSE_COMMAND_TABLE(ROW)                                                        \
   ROW(LoadPreset, load_preset, Admin, loadPreset, "preset", "preset N [MATERIAL]",        \
-      "load preset 0-17 (MATERIAL: the one preset 9 compares with SOLID)",                \
+      "load preset 0-21 (MATERIAL: the one preset 9 compares with SOLID)",                \
       parsePreset, client::loadPreset)                                                    \
   ROW(SetPaused, set_paused, Admin, setPaused, "pause", "pause",                          \
       "stop the tick clock", parsePause, client::setPaused)                               \
@@ -65,8 +65,8 @@
       "spawn a compound body; PART: circle CX CY R | box CX CY HW HH | "                  \
       "capsule X1 Y1 X2 Y2 R (body-local)",                                               \
       parseBody, client::spawnBody)                                                       \
-  ROW(SetTargetTransform, set_target_transform, Owner, setTargetTransform, "target",      \
-      "target ID X Y [ANGLE]",                                                            \
+  ROW(SetTargetTransform, set_target_transform, Owner, setTargetTransform, "move-to",     \
+      "move-to ID X Y [ANGLE]",                                                           \
       "move a body (a kinematic platform) to X Y, ANGLE over the next tick",              \
       parseTarget, client::setTargetTransform)                                            \
   ROW(SetGravity, set_gravity, Admin, setGravity, "gravity", "gravity GX GY",             \
