@@ -91,8 +91,8 @@ DrawnBody drawn(const BodyLook& look, std::uint32_t id, Vec2 position, Vec2 velo
 }
 
 TEST(ContactFinder, FindsTouchingPairsWithTheirNormal_SkipsSeparatedAndStaticPairs) {
-  const BodyLook ball{Shape::makeCircle(1), Material::Solid, false, false};
-  const BodyLook floor{Shape::makePolygon(makeBox(10, 0.5f)), Material::Solid, true, false};
+  const BodyLook ball{Shape::makeCircle(1), {}, Material::Solid, false, false, false};
+  const BodyLook floor{Shape::makePolygon(makeBox(10, 0.5f)), {}, Material::Solid, true, false, false};
   const std::vector<DrawnBody> bodies{
       drawn(ball, 1, Vec2(0, 1.5f)),     // resting on the floor
       drawn(floor, 2, Vec2(0, 0)),       // the floor
@@ -117,8 +117,8 @@ TEST(ContactFinder, FindsTouchingPairsWithTheirNormal_SkipsSeparatedAndStaticPai
 }
 
 TEST(BodyMetrics, KineticEnergyCountsMovingAndSpinningDynamicBodiesOnly) {
-  const BodyLook ball{Shape::makeCircle(1), Material::Solid, false, false};
-  const BodyLook wall{Shape::makeCircle(1), Material::Solid, true, false};
+  const BodyLook ball{Shape::makeCircle(1), {}, Material::Solid, false, false, false};
+  const BodyLook wall{Shape::makeCircle(1), {}, Material::Solid, true, false, false};
   const MassProperties mass = massOf(ball);
   EXPECT_NEAR(mass.mass, 500 * 3.14159265f, 0.5f);
   const std::vector<DrawnBody> bodies{drawn(ball, 1, Vec2::Zero(), Vec2(2, 0), 0),
