@@ -11,6 +11,7 @@ SceneList allScenes(bool quick) {
   addClosedFormScenes(scenes, quick);
   addSleepingScenes(scenes, quick);
   addJointScenes(scenes, quick);
+  addBox2DSuiteScenes(scenes, quick);
   return scenes;
 }
 

@@ -58,6 +58,7 @@ void addBulletScene(SceneList& scenes, bool quick);
 void addClosedFormScenes(SceneList& scenes, bool quick);  // free fall, incline, rolling, bounce
 void addSleepingScenes(SceneList& scenes, bool quick);
 void addJointScenes(SceneList& scenes, bool quick);  // chains, bridge, pendulum, spring, ragdolls
+void addBox2DSuiteScenes(SceneList& scenes, bool quick);  // the ten of Box2D v3's benchmark, "v3-*"
 
 SceneList allScenes(bool quick);
 

@@ -160,6 +160,9 @@ class Box2DAdapter final : public EngineAdapter {
 
 std::unique_ptr<EngineAdapter> makeBox2DAdapter(const SceneDescription& scene, int velocityIterations,
                                                 int positionIterations) {
+  // Only the first bench's scenes so far: the Box2D v3 suite's compound,
+  // capsule, chain and kinematic bodies are not translated for this engine.
+  requirePlainScene(scene, "box2d 2.4.1");
   return std::make_unique<Box2DAdapter>(scene, velocityIterations, positionIterations);
 }
 

@@ -171,6 +171,9 @@ class ChipmunkAdapter final : public EngineAdapter {
 }  // namespace
 
 std::unique_ptr<EngineAdapter> makeChipmunkAdapter(const SceneDescription& scene, int iterations) {
+  // Only the first bench's scenes so far: the Box2D v3 suite's compound,
+  // capsule, chain and kinematic bodies are not translated for this engine.
+  requirePlainScene(scene, "chipmunk");
   return std::make_unique<ChipmunkAdapter>(scene, iterations);
 }
 
