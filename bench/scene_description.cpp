@@ -84,8 +84,10 @@ double ShapeDesc::extent() const {
 }
 
 bool SceneDescription::uniformCoefficients() const {
+  auto ownFriction = [](const ShapeDesc& shape) { return shape.friction.has_value(); };
   return std::all_of(bodies.begin(), bodies.end(), [&](const BodyDesc& body) {
-    return body.friction == bodies.front().friction && body.restitution == bodies.front().restitution;
+    return body.friction == bodies.front().friction && body.restitution == bodies.front().restitution &&
+           !ownFriction(body.shape) && std::none_of(body.extraShapes.begin(), body.extraShapes.end(), ownFriction);
   });
 }
 

@@ -20,6 +20,7 @@
 
 #include "engine_adapter.h"
 #include "impulse/world.h"
+#include "spawn_schedule.h"
 
 namespace bench {
 
@@ -142,7 +143,7 @@ bool anyFilter(const SceneDescription& scene) {
 class ImpulseAdapter final : public EngineAdapter {
  public:
   ImpulseAdapter(const SceneDescription& scene, int subSteps, bool sse2Only)
-      : scene_(scene), world_(settingsFor(scene, subSteps, sse2Only)) {
+      : scene_(scene), world_(settingsFor(scene, subSteps, sse2Only)), schedule_(scene) {
     bodies_.reserve(scene.bodies.size());
     spawnDue();
   }
@@ -181,24 +182,10 @@ class ImpulseAdapter final : public EngineAdapter {
     Vec2 originToCentre;  ///< from the described origin to Impulse's centre of mass, in the body's frame
   };
 
-  static Pose describedPose(const BodyDesc& body) {
-    return {body.position, body.angle, body.velocity, body.angularVelocity, true};
-  }
-
-  // Bodies whose spawn step has come, then the joints whose bodies all exist
-  // (both in description order).
   void spawnDue() {
-    while (bodies_.size() < scene_.bodies.size() && scene_.bodies[bodies_.size()].spawnStep <= stepCount_) {
-      create(scene_.bodies[bodies_.size()]);
-    }
-    while (jointCount_ < scene_.joints.size() && exists(scene_.joints[jointCount_])) {
-      createJoint(scene_.joints[jointCount_++]);
-    }
-  }
-
-  bool exists(const JointDesc& joint) const {
-    auto made = [&](int body) { return body == kWorldBody || static_cast<std::size_t>(body) < bodies_.size(); };
-    return made(joint.bodyA) && made(joint.bodyB);
+    schedule_.spawnDue(
+        stepCount_, [this](const BodyDesc& body) { create(body); },
+        [this](const JointDesc& joint) { createJoint(joint); });
   }
 
   void create(const BodyDesc& body) {
@@ -275,8 +262,8 @@ class ImpulseAdapter final : public EngineAdapter {
 
   const SceneDescription& scene_;
   impulse::World world_;
+  SpawnSchedule schedule_;
   std::vector<Created> bodies_;
-  std::size_t jointCount_ = 0;
   int stepCount_ = 0;
 };
 
