@@ -3,16 +3,21 @@
 // per scene, ratio and front lines, and optionally a CSV file and an SVG plot
 // per scene.
 //
-//   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] [--engine NAME]
+//   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
+//                 [--engine NAME[,NAME...]] [--iterations N]
 //
-// --scene and --engine narrow the run (for profiling one engine on one scene);
-// --scene takes name parts separated by commas and keeps a scene that
-// contains any of them.
+// --scene, --engine and --iterations narrow the run (for profiling one engine
+// on one scene, or one side-by-side at one setting); --scene takes name parts
+// separated by commas and keeps a scene that contains any of them; --engine
+// takes whole engine names; --iterations keeps the settings of N sub-steps
+// (Impulse, Box2D v3) or N velocity iterations (Box2D 2.4.1, Chipmunk).
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <string>
 
@@ -27,10 +32,14 @@ struct Options {
   std::string plotDirectory;
   std::string sceneFilter;
   std::string engineFilter;
+  int iterations = 0;  ///< 0: every setting
 };
 
 [[noreturn]] void usage(const char* program) {
-  std::fprintf(stderr, "usage: %s [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] [--engine NAME]\n", program);
+  std::fprintf(stderr,
+               "usage: %s [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
+               "[--engine NAME[,NAME...]] [--iterations N]\n",
+               program);
   std::exit(2);
 }
 
@@ -46,20 +55,31 @@ Options parse(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--plot") == 0) options.plotDirectory = value();
     else if (std::strcmp(argv[i], "--scene") == 0) options.sceneFilter = value();
     else if (std::strcmp(argv[i], "--engine") == 0) options.engineFilter = value();
+    else if (std::strcmp(argv[i], "--iterations") == 0) options.iterations = std::atoi(value().c_str());
     else usage(argv[0]);
   }
   return options;
 }
 
-/// Whether `name` contains any of the comma-separated parts of `filter`.
-bool sceneWanted(const std::string& name, const std::string& filter) {
+/// Whether any of the comma-separated parts of `filter` matches `name`.
+bool anyPartMatches(const std::string& filter, const std::function<bool(const std::string& part)>& matches) {
   std::size_t start = 0;
   while (true) {
     const std::size_t end = filter.find(',', start);
-    if (name.find(filter.substr(start, end - start)) != std::string::npos) return true;
+    if (matches(filter.substr(start, end - start))) return true;
     if (end == std::string::npos) return false;
     start = end + 1;
   }
+}
+
+bool sceneWanted(const std::string& name, const std::string& filter) {
+  return anyPartMatches(filter, [&](const std::string& part) { return name.find(part) != std::string::npos; });
+}
+
+bool settingWanted(const bench::EngineSetting& setting, const Options& options) {
+  if (options.iterations != 0 && setting.iterations != options.iterations) return false;
+  return options.engineFilter.empty() ||
+         anyPartMatches(options.engineFilter, [&](const std::string& part) { return part == bench::engineName(setting.engine); });
 }
 
 std::string cpuModel() {
@@ -88,7 +108,7 @@ int main(int argc, char** argv) {
     const bench::SceneDescription description = scene->describe();
     std::vector<bench::RunResult> results;
     for (const bench::EngineSetting& setting : bench::allSettings()) {
-      if (!options.engineFilter.empty() && options.engineFilter != bench::engineName(setting.engine)) continue;
+      if (!settingWanted(setting, options)) continue;
       results.push_back(bench::runScene(*scene, description, setting));
       if (results.back().failed) ++failures;
     }

@@ -15,6 +15,7 @@
 // what holds them (through a floor, out of a drum) at any observation, the
 // pyramids' worst top drop, the ragdolls' (or the grid's) worst pin gap.
 
+#include <limits>
 #include <numbers>
 
 #include "joint_error.h"
@@ -75,8 +76,9 @@ class SuiteMeasure final : public Measure {
   }
 
  private:
+  /// Signed: a top that rose reports a negative drop.
   double worstTopDrop(const EngineAdapter& engine) const {
-    double worst = 0;
+    double worst = -std::numeric_limits<double>::infinity();
     for (int top : sanity_.tops) {
       worst = std::max(worst, scene_.bodies[std::size_t(top)].position.y - engine.pose(top).position.y);
     }
@@ -294,9 +296,11 @@ SuiteLayout rain(bool quick) {
       for (int i = 0; i < groupSize; ++i, at.x += 0.5) addHuman(scene, at, i + 1, column * spawnEvery);
     }
   }
-  // A bone below the middle of its shelf's boxes went through it.
-  layout.sanity.escaped = [shelfPitch](const Vec2d& start, const Pose& now) {
-    return now.position.y < std::floor(start.y / shelfPitch) * shelfPitch;
+  // A bone below the middle of its shelf's boxes, and not beyond the
+  // shelf's ends (where ragdolls may fall off), went through it.
+  const double shelfEnd = 0.5 * (span + gridSize);
+  layout.sanity.escaped = [shelfPitch, shelfEnd](const Vec2d& start, const Pose& now) {
+    return now.position.y < std::floor(start.y / shelfPitch) * shelfPitch && std::abs(now.position.x) < shelfEnd;
   };
   layout.sanity.pinGaps = true;
   return layout;
