@@ -51,12 +51,6 @@ ShapeDesc ShapeDesc::chain(std::vector<Vec2d> points, bool loop) {
   return shape;
 }
 
-bool ShapeDesc::isPlain() const {
-  if (!filter.collidesWithAll() || friction) return false;
-  if (kind == ShapeKind::Circle) return center.x == 0 && center.y == 0;
-  return kind == ShapeKind::Polygon && radius == 0;
-}
-
 double ShapeDesc::area() const {
   switch (kind) {
     case ShapeKind::Circle: return std::numbers::pi * radius * radius;
@@ -89,26 +83,6 @@ bool SceneDescription::uniformCoefficients() const {
     return body.friction == bodies.front().friction && body.restitution == bodies.front().restitution &&
            !ownFriction(body.shape) && std::none_of(body.extraShapes.begin(), body.extraShapes.end(), ownFriction);
   });
-}
-
-std::string SceneDescription::extendedFeature() const {
-  for (const BodyDesc& body : bodies) {
-    if (!body.extraShapes.empty()) return "bodies of several shapes";
-    if (!body.shape.isPlain()) return "shapes other than a centred circle or sharp polygon, or filtered ones";
-    if (body.isKinematic) return "kinematic bodies";
-    if (body.spawnStep > 0) return "bodies created during the run";
-    if (body.startsAsleep) return "bodies created asleep";
-    if (body.linearDamping > 0) return "linear damping";
-  }
-  for (const JointDesc& joint : joints) {
-    if (!joint.isPlain()) return "revolute limits, motors or springs";
-  }
-  return {};
-}
-
-void requirePlainScene(const SceneDescription& scene, const char* engine) {
-  const std::string feature = scene.extendedFeature();
-  if (!feature.empty()) throw Unsupported(std::string(engine) + " adapter: no " + feature);
 }
 
 BodyDesc makeBody(ShapeDesc shape, Vec2d position, impulse::Material material, bool isStatic) {

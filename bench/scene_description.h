@@ -61,9 +61,6 @@ struct ShapeDesc {
   static ShapeDesc segment(Vec2d point1, Vec2d point2);
   static ShapeDesc chain(std::vector<Vec2d> points, bool loop);
   bool isSolid() const { return kind == ShapeKind::Circle || kind == ShapeKind::Polygon || kind == ShapeKind::Capsule; }
-  /// A single shape centred on its body's origin: what the peers of
-  /// Impulse's first bench (and the penetration probe) take.
-  bool isPlain() const;
   /// Of the polygon's core for polygons (the rounding is left out).
   double area() const;
   /// Largest distance from the body's origin to the shape.
@@ -132,8 +129,6 @@ struct JointDesc {
   double springHertz = 0;
   double springDampingRatio = 0;
 
-  /// A pin with nothing but the pin.
-  bool isPlain() const { return !enableLimit && !enableMotor && springHertz == 0; }
 };
 
 /// Where a kinematic body must be after the step that starts at `time` (s):
@@ -154,9 +149,6 @@ struct SceneDescription {
   /// True when every body has the same friction and restitution, so an
   /// engine's own mixing rule already yields the mean.
   bool uniformCoefficients() const;
-  /// What the scene needs beyond one plain shape per static or dynamic body,
-  /// present from the start, and plain joints: empty when nothing.
-  std::string extendedFeature() const;
 };
 
 /// Thrown by an adapter for a scene its engine cannot express: the run is
@@ -165,10 +157,6 @@ class Unsupported : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
-
-/// Throws Unsupported, naming the engine and the feature, when the scene
-/// needs anything beyond what the peers of Impulse's first bench can do.
-void requirePlainScene(const SceneDescription& scene, const char* engine);
 
 BodyDesc makeBody(ShapeDesc shape, Vec2d position, impulse::Material material, bool isStatic = false);
 /// A static axis-aligned box from lower to upper corner.
