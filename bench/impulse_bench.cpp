@@ -3,9 +3,11 @@
 // per scene, ratio and front lines, and optionally a CSV file and an SVG plot
 // per scene.
 //
-//   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
+//   impulse-bench [--quick] [--v3-suite] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
 //                 [--engine NAME[,NAME...]] [--iterations N]
 //
+// --v3-suite runs Box2D v3's benchmark suite (the v3-* scenes) instead of
+// Impulse's own scenes.
 // --scene, --engine and --iterations narrow the run (for profiling one engine
 // on one scene, or one side-by-side at one setting); --scene takes name parts
 // separated by commas and keeps a scene that contains any of them; --engine
@@ -28,6 +30,7 @@ namespace {
 
 struct Options {
   bool quick = false;
+  bool v3Suite = false;
   std::string csv;
   std::string plotDirectory;
   std::string sceneFilter;
@@ -37,7 +40,7 @@ struct Options {
 
 [[noreturn]] void usage(const char* program) {
   std::fprintf(stderr,
-               "usage: %s [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
+               "usage: %s [--quick] [--v3-suite] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
                "[--engine NAME[,NAME...]] [--iterations N]\n",
                program);
   std::exit(2);
@@ -51,6 +54,7 @@ Options parse(int argc, char** argv) {
       return argv[++i];
     };
     if (std::strcmp(argv[i], "--quick") == 0) options.quick = true;
+    else if (std::strcmp(argv[i], "--v3-suite") == 0) options.v3Suite = true;
     else if (std::strcmp(argv[i], "--csv") == 0) options.csv = value();
     else if (std::strcmp(argv[i], "--plot") == 0) options.plotDirectory = value();
     else if (std::strcmp(argv[i], "--scene") == 0) options.sceneFilter = value();
@@ -98,12 +102,14 @@ int main(int argc, char** argv) {
   std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  std::printf("impulse-bench%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "", date, cpuModel().c_str());
+  std::printf("impulse-bench%s%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "", options.v3Suite ? " --v3-suite" : "",
+              date, cpuModel().c_str());
   if (!options.plotDirectory.empty()) std::filesystem::create_directories(options.plotDirectory);
 
   std::vector<bench::RunResult> all;
   int failures = 0;
-  for (const auto& scene : bench::allScenes(options.quick)) {
+  const bench::SceneList scenes = options.v3Suite ? bench::box2DSuiteScenes(options.quick) : bench::allScenes(options.quick);
+  for (const auto& scene : scenes) {
     if (!sceneWanted(scene->name(), options.sceneFilter)) continue;
     const bench::SceneDescription description = scene->describe();
     std::vector<bench::RunResult> results;

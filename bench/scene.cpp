@@ -11,6 +11,11 @@ SceneList allScenes(bool quick) {
   addClosedFormScenes(scenes, quick);
   addSleepingScenes(scenes, quick);
   addJointScenes(scenes, quick);
+  return scenes;
+}
+
+SceneList box2DSuiteScenes(bool quick) {
+  SceneList scenes;
   addBox2DSuiteScenes(scenes, quick);
   return scenes;
 }
