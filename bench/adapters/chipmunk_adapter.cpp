@@ -223,9 +223,10 @@ class ChipmunkAdapter final : public EngineAdapter {
     joined_.insert(ordered(a, b));
   }
 
-  // A pin's motor holds B's spin relative to A at the speed, its torque capped.
+  // A pin's motor holds B's spin relative to A at the speed, its torque
+  // capped. Chipmunk's rate is A's spin relative to B: the sign turns.
   void addMotor(cpBody* a, cpBody* b, const JointDesc& joint) {
-    cpConstraint* motor = cpSimpleMotorNew(a, b, joint.motorSpeed);
+    cpConstraint* motor = cpSimpleMotorNew(a, b, -joint.motorSpeed);
     cpConstraintSetMaxForce(motor, joint.maxMotorTorque);
     cpSpaceAddConstraint(space_, motor);
     constraints_.push_back(motor);
