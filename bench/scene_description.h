@@ -60,7 +60,6 @@ struct ShapeDesc {
   static ShapeDesc capsule(Vec2d center1, Vec2d center2, double radius);
   static ShapeDesc segment(Vec2d point1, Vec2d point2);
   static ShapeDesc chain(std::vector<Vec2d> points, bool loop);
-  bool isSolid() const { return kind == ShapeKind::Circle || kind == ShapeKind::Polygon || kind == ShapeKind::Capsule; }
   /// Of the polygon's core for polygons (the rounding is left out).
   double area() const;
   /// Largest distance from the body's origin to the shape.
@@ -128,7 +127,6 @@ struct JointDesc {
   double maxMotorTorque = 0;  ///< N*m
   double springHertz = 0;
   double springDampingRatio = 0;
-
 };
 
 /// Where a kinematic body must be after the step that starts at `time` (s):
