@@ -50,6 +50,9 @@ class EngineAdapter {
   virtual void step(double dt) = 0;
   /// Body `index` in the order of SceneDescription::bodies.
   virtual Pose pose(int index) const = 0;
+  /// Where the engine built the scene otherwise than described (empty: as
+  /// described); the run's table row says so.
+  virtual std::string approximation() const { return {}; }
 };
 
 /// The scene built in the given engine at the given setting.

@@ -3,16 +3,23 @@
 // per scene, ratio and front lines, and optionally a CSV file and an SVG plot
 // per scene.
 //
-//   impulse-bench [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] [--engine NAME]
+//   impulse-bench [--quick] [--v3-suite] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
+//                 [--engine NAME[,NAME...]] [--iterations N]
 //
-// --scene and --engine narrow the run (for profiling one engine on one scene);
-// --scene takes name parts separated by commas and keeps a scene that
-// contains any of them.
+// --v3-suite runs Box2D v3's benchmark suite (the v3-* scenes) instead of
+// Impulse's own scenes.
+// --scene, --engine and --iterations narrow the run (for profiling one engine
+// on one scene, or one side-by-side at one setting); --scene takes name parts
+// separated by commas and keeps a scene that contains any of them; --engine
+// takes whole engine names; --iterations keeps the settings of N sub-steps
+// (Impulse, Box2D v3) or N velocity iterations (Box2D 2.4.1, Chipmunk).
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <string>
 
@@ -23,14 +30,19 @@ namespace {
 
 struct Options {
   bool quick = false;
+  bool v3Suite = false;
   std::string csv;
   std::string plotDirectory;
   std::string sceneFilter;
   std::string engineFilter;
+  int iterations = 0;  ///< 0: every setting
 };
 
 [[noreturn]] void usage(const char* program) {
-  std::fprintf(stderr, "usage: %s [--quick] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] [--engine NAME]\n", program);
+  std::fprintf(stderr,
+               "usage: %s [--quick] [--v3-suite] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
+               "[--engine NAME[,NAME...]] [--iterations N]\n",
+               program);
   std::exit(2);
 }
 
@@ -42,24 +54,36 @@ Options parse(int argc, char** argv) {
       return argv[++i];
     };
     if (std::strcmp(argv[i], "--quick") == 0) options.quick = true;
+    else if (std::strcmp(argv[i], "--v3-suite") == 0) options.v3Suite = true;
     else if (std::strcmp(argv[i], "--csv") == 0) options.csv = value();
     else if (std::strcmp(argv[i], "--plot") == 0) options.plotDirectory = value();
     else if (std::strcmp(argv[i], "--scene") == 0) options.sceneFilter = value();
     else if (std::strcmp(argv[i], "--engine") == 0) options.engineFilter = value();
+    else if (std::strcmp(argv[i], "--iterations") == 0) options.iterations = std::atoi(value().c_str());
     else usage(argv[0]);
   }
   return options;
 }
 
-/// Whether `name` contains any of the comma-separated parts of `filter`.
-bool sceneWanted(const std::string& name, const std::string& filter) {
+/// Whether any of the comma-separated parts of `filter` matches `name`.
+bool anyPartMatches(const std::string& filter, const std::function<bool(const std::string& part)>& matches) {
   std::size_t start = 0;
   while (true) {
     const std::size_t end = filter.find(',', start);
-    if (name.find(filter.substr(start, end - start)) != std::string::npos) return true;
+    if (matches(filter.substr(start, end - start))) return true;
     if (end == std::string::npos) return false;
     start = end + 1;
   }
+}
+
+bool sceneWanted(const std::string& name, const std::string& filter) {
+  return anyPartMatches(filter, [&](const std::string& part) { return name.find(part) != std::string::npos; });
+}
+
+bool settingWanted(const bench::EngineSetting& setting, const Options& options) {
+  if (options.iterations != 0 && setting.iterations != options.iterations) return false;
+  return options.engineFilter.empty() ||
+         anyPartMatches(options.engineFilter, [&](const std::string& part) { return part == bench::engineName(setting.engine); });
 }
 
 std::string cpuModel() {
@@ -78,17 +102,19 @@ int main(int argc, char** argv) {
   std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  std::printf("impulse-bench%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "", date, cpuModel().c_str());
+  std::printf("impulse-bench%s%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "", options.v3Suite ? " --v3-suite" : "",
+              date, cpuModel().c_str());
   if (!options.plotDirectory.empty()) std::filesystem::create_directories(options.plotDirectory);
 
   std::vector<bench::RunResult> all;
   int failures = 0;
-  for (const auto& scene : bench::allScenes(options.quick)) {
+  const bench::SceneList scenes = options.v3Suite ? bench::box2DSuiteScenes(options.quick) : bench::allScenes(options.quick);
+  for (const auto& scene : scenes) {
     if (!sceneWanted(scene->name(), options.sceneFilter)) continue;
     const bench::SceneDescription description = scene->describe();
     std::vector<bench::RunResult> results;
     for (const bench::EngineSetting& setting : bench::allSettings()) {
-      if (!options.engineFilter.empty() && options.engineFilter != bench::engineName(setting.engine)) continue;
+      if (!settingWanted(setting, options)) continue;
       results.push_back(bench::runScene(*scene, description, setting));
       if (results.back().failed) ++failures;
     }

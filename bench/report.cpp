@@ -50,6 +50,7 @@ void printTable(std::FILE* out, const std::vector<RunResult>& results) {
     }
     std::fprintf(out, " %9.3f %9.3f", r.minMs, r.medianMs);
     for (const Metric& m : r.metrics) std::fprintf(out, " %14.4g", m.value);
+    if (!r.approximation.empty()) std::fprintf(out, "  (%s)", r.approximation.c_str());
     std::fprintf(out, "\n");
   }
 }

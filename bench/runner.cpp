@@ -23,7 +23,7 @@ bool finitePoses(const EngineAdapter& engine, const SceneDescription& scene) {
 }  // namespace
 
 RunResult runScene(const Scene& scene, const SceneDescription& description, const EngineSetting& setting) {
-  RunResult result{scene.name(), setting, {}, false, 0, 0, {}};
+  RunResult result{scene.name(), setting, {}, false, {}, 0, 0, {}};
   const RunLength length = scene.length();
   std::vector<double> msPerStep;
   try {
@@ -48,8 +48,14 @@ RunResult runScene(const Scene& scene, const SceneDescription& description, cons
         result.failed = true;
         return result;
       }
-      if (measure) result.metrics = measure->results(*engine);
+      if (measure) {
+        result.metrics = measure->results(*engine);
+        result.approximation = engine->approximation();
+      }
     }
+  } catch (const Unsupported& e) {
+    result.problem = std::string("skipped: ") + e.what();
+    return result;
   } catch (const std::exception& e) {
     result.problem = std::string("FAILED: ") + e.what();
     result.failed = true;

@@ -14,6 +14,7 @@ struct RunResult {
   /// Empty when the run worked; otherwise why not (unsupported, failed).
   std::string problem;
   bool failed = false;  ///< built but threw or produced non-finite numbers
+  std::string approximation;  ///< EngineAdapter::approximation()
   double minMs = 0;     ///< ms/step, min and median over repeats
   double medianMs = 0;
   std::vector<Metric> metrics;

@@ -14,4 +14,10 @@ SceneList allScenes(bool quick) {
   return scenes;
 }
 
+SceneList box2DSuiteScenes(bool quick) {
+  SceneList scenes;
+  addBox2DSuiteScenes(scenes, quick);
+  return scenes;
+}
+
 }  // namespace bench

@@ -58,7 +58,12 @@ void addBulletScene(SceneList& scenes, bool quick);
 void addClosedFormScenes(SceneList& scenes, bool quick);  // free fall, incline, rolling, bounce
 void addSleepingScenes(SceneList& scenes, bool quick);
 void addJointScenes(SceneList& scenes, bool quick);  // chains, bridge, pendulum, spring, ragdolls
+void addBox2DSuiteScenes(SceneList& scenes, bool quick);  // the ten of Box2D v3's benchmark, "v3-*"
 
+/// Impulse's own scenes (every family above but the Box2D v3 suite).
 SceneList allScenes(bool quick);
+/// Box2D v3's benchmark suite: run apart, as it is large (10 000-22 000
+/// bodies a scene at full size).
+SceneList box2DSuiteScenes(bool quick);
 
 }  // namespace bench

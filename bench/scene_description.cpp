@@ -6,23 +6,61 @@
 
 namespace bench {
 
-ShapeDesc ShapeDesc::circle(double radius) {
+ShapeDesc ShapeDesc::circle(double radius, Vec2d center) {
   ShapeDesc shape;
   shape.kind = ShapeKind::Circle;
+  shape.radius = radius;
+  shape.center = center;
+  return shape;
+}
+
+ShapeDesc ShapeDesc::box(double halfWidth, double halfHeight, Vec2d center) {
+  const double left = center.x - halfWidth, right = center.x + halfWidth;
+  const double bottom = center.y - halfHeight, top = center.y + halfHeight;
+  return polygon({{left, bottom}, {right, bottom}, {right, top}, {left, top}});
+}
+
+ShapeDesc ShapeDesc::polygon(std::vector<Vec2d> vertices, double rounding) {
+  ShapeDesc shape;
+  shape.kind = ShapeKind::Polygon;
+  shape.vertices = std::move(vertices);
+  shape.radius = rounding;
+  return shape;
+}
+
+ShapeDesc ShapeDesc::capsule(Vec2d center1, Vec2d center2, double radius) {
+  ShapeDesc shape;
+  shape.kind = ShapeKind::Capsule;
+  shape.vertices = {center1, center2};
   shape.radius = radius;
   return shape;
 }
 
-ShapeDesc ShapeDesc::box(double halfWidth, double halfHeight) {
+ShapeDesc ShapeDesc::segment(Vec2d point1, Vec2d point2) {
   ShapeDesc shape;
-  shape.kind = ShapeKind::Polygon;
-  shape.vertices = {{-halfWidth, -halfHeight}, {halfWidth, -halfHeight}, {halfWidth, halfHeight},
-                    {-halfWidth, halfHeight}};
+  shape.kind = ShapeKind::Segment;
+  shape.vertices = {point1, point2};
+  return shape;
+}
+
+ShapeDesc ShapeDesc::chain(std::vector<Vec2d> points, bool loop) {
+  ShapeDesc shape;
+  shape.kind = ShapeKind::Chain;
+  shape.vertices = std::move(points);
+  shape.loop = loop;
   return shape;
 }
 
 double ShapeDesc::area() const {
-  if (kind == ShapeKind::Circle) return std::numbers::pi * radius * radius;
+  switch (kind) {
+    case ShapeKind::Circle: return std::numbers::pi * radius * radius;
+    case ShapeKind::Capsule:
+      return std::numbers::pi * radius * radius +
+             2 * radius * std::hypot(vertices[1].x - vertices[0].x, vertices[1].y - vertices[0].y);
+    case ShapeKind::Polygon: break;
+    case ShapeKind::Segment:
+    case ShapeKind::Chain: return 0;
+  }
   double twiceArea = 0;
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     const Vec2d& a = vertices[i];
@@ -33,15 +71,17 @@ double ShapeDesc::area() const {
 }
 
 double ShapeDesc::extent() const {
-  if (kind == ShapeKind::Circle) return radius;
+  if (kind == ShapeKind::Circle) return std::hypot(center.x, center.y) + radius;
   double extent = 0;
   for (const Vec2d& v : vertices) extent = std::max(extent, std::hypot(v.x, v.y));
-  return extent;
+  return extent + radius;
 }
 
 bool SceneDescription::uniformCoefficients() const {
+  auto ownFriction = [](const ShapeDesc& shape) { return shape.friction.has_value(); };
   return std::all_of(bodies.begin(), bodies.end(), [&](const BodyDesc& body) {
-    return body.friction == bodies.front().friction && body.restitution == bodies.front().restitution;
+    return body.friction == bodies.front().friction && body.restitution == bodies.front().restitution &&
+           !ownFriction(body.shape) && std::none_of(body.extraShapes.begin(), body.extraShapes.end(), ownFriction);
   });
 }
 

@@ -9,6 +9,10 @@
 // contact holds). A contact's coefficient is the mean of its two bodies'
 // values in every engine; the peer adapters make their engines mix that way.
 
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,24 +25,57 @@ struct Vec2d {
   double y = 0;
 };
 
-enum class ShapeKind { Circle, Polygon };
+/// Box2D v3's collision filter: shapes A and B collide when they share a
+/// positive group, or, unless they share a negative one, when each one's
+/// category is in the other's mask. The default collides with everything.
+struct CollisionFilter {
+  std::uint32_t category = 1;
+  std::uint32_t mask = ~0u;
+  int group = 0;
+  bool collidesWithAll() const { return category == 1 && mask == ~0u && group == 0; }
+};
 
+/// Solid shapes (circle, polygon, capsule) have area; segments and chains are
+/// boundaries (static or kinematic bodies only).
+enum class ShapeKind { Circle, Polygon, Capsule, Segment, Chain };
+
+/// A shape in its body's frame (origin at BodyDesc::position).
 struct ShapeDesc {
   ShapeKind kind = ShapeKind::Circle;
-  double radius = 0;            ///< circles
-  std::vector<Vec2d> vertices;  ///< polygons: anticlockwise, centroid at the origin
+  /// Circles and capsules: their radius; polygons: the rounding radius.
+  double radius = 0;
+  Vec2d center;  ///< circles
+  /// Polygons: anticlockwise and convex. Capsules and segments: their two
+  /// points. Chains: their points, one-sided, solid on the right of the way
+  /// they run (Box2D's and Impulse's convention alike).
+  std::vector<Vec2d> vertices;
+  bool loop = false;  ///< chains
+  CollisionFilter filter;
+  /// The shape's own friction where it departs from its body's.
+  std::optional<double> friction;
 
-  static ShapeDesc circle(double radius);
-  static ShapeDesc box(double halfWidth, double halfHeight);
+  static ShapeDesc circle(double radius, Vec2d center = {});
+  static ShapeDesc box(double halfWidth, double halfHeight, Vec2d center = {});
+  static ShapeDesc polygon(std::vector<Vec2d> vertices, double rounding = 0);
+  static ShapeDesc capsule(Vec2d center1, Vec2d center2, double radius);
+  static ShapeDesc segment(Vec2d point1, Vec2d point2);
+  static ShapeDesc chain(std::vector<Vec2d> points, bool loop);
+  /// Of the polygon's core for polygons (the rounding is left out).
   double area() const;
-  /// Largest distance from the centroid to the shape.
+  /// Largest distance from the body's origin to the shape.
   double extent() const;
 };
 
 struct BodyDesc {
   ShapeDesc shape;
+  /// Further shapes of the same body, made of its material (compound bodies).
+  std::vector<ShapeDesc> extraShapes;
   bool isStatic = false;
-  Vec2d position;  ///< centroid
+  /// Moved only by its velocity, or by SceneDescription::targets.
+  bool isKinematic = false;
+  /// The body's origin: the centroid of a single centred shape. Poses are
+  /// read back at this point in every engine.
+  Vec2d position;
   double angle = 0;
   Vec2d velocity;
   double angularVelocity = 0;
@@ -48,6 +85,15 @@ struct BodyDesc {
   double density = 0;
   double friction = 0;  ///< peers' single coefficient (Impulse's static one)
   double restitution = 0;
+  /// The step before which the body is created (Box2D's rain drops its
+  /// ragdolls in waves); until then its pose is the described one.
+  int spawnStep = 0;
+  /// Created asleep (Box2D's smash): woken by the first contact.
+  bool startsAsleep = false;
+  /// Box2D v3's linear damping (1/s): dv/dt = -c v.
+  double linearDamping = 0;
+
+  bool isDynamic() const { return !isStatic && !isKinematic; }
 };
 
 /// Joints every engine here has: a pin (revolute), a rigid rod and an
@@ -70,6 +116,25 @@ struct JointDesc {
   double restLength = 0;  ///< springs; rods keep their length at creation
   double stiffness = 0;   ///< springs, N/m
   double damping = 0;     ///< springs, N*s/m
+  /// Pins only: Box2D v3's revolute options. Angles are B's turn relative to
+  /// A since creation; a motor of speed 0 is joint friction; the spring
+  /// (hertz > 0) pulls towards the creation angle.
+  bool enableLimit = false;
+  double lowerAngle = 0;
+  double upperAngle = 0;
+  bool enableMotor = false;
+  double motorSpeed = 0;      ///< rad/s
+  double maxMotorTorque = 0;  ///< N*m
+  double springHertz = 0;
+  double springDampingRatio = 0;
+};
+
+/// Where a kinematic body must be after the step that starts at `time` (s):
+/// each engine gives it the velocity that gets it there
+/// (b2Body_SetTargetTransform).
+struct KinematicTarget {
+  int body = 0;
+  std::function<Vec2d(double time)> position;
 };
 
 struct SceneDescription {
@@ -77,10 +142,18 @@ struct SceneDescription {
   bool allowSleep = false;
   std::vector<BodyDesc> bodies;
   std::vector<JointDesc> joints;
+  std::vector<KinematicTarget> targets;
 
   /// True when every body has the same friction and restitution, so an
   /// engine's own mixing rule already yields the mean.
   bool uniformCoefficients() const;
+};
+
+/// Thrown by an adapter for a scene its engine cannot express: the run is
+/// reported as skipped, with the reason, not as failed.
+class Unsupported : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 BodyDesc makeBody(ShapeDesc shape, Vec2d position, impulse::Material material, bool isStatic = false);

@@ -9,6 +9,14 @@
 // springs b2DistanceJoints with the described stiffness (N/m) and damping
 // (N*s/m) and no length limits; a joint to the world joins a static body
 // without fixtures.
+//
+// Box2D v3's suite: several fixtures per body, offset circles, segments
+// (b2EdgeShape), collision filters (2.4.1's own, with the same rules),
+// kinematic bodies (a target becomes the velocity that reaches it over the
+// step, as v3's b2Body_SetTargetTransform does), bodies created asleep,
+// linear damping, revolute limits and motors. 2.4.1 has no capsules, rounded
+// polygons, one-sided chains or revolute springs: scenes with them are
+// skipped, and the adapter creates every body at the start.
 
 #include <box2d/box2d.h>
 
@@ -62,10 +70,48 @@ double polygonArea(const std::vector<b2Vec2>& vertices) {
   return 0.5 * twiceArea;
 }
 
+b2Vec2 toVec(const Vec2d& v) { return b2Vec2(float(v.x), float(v.y)); }
+
+/// What v3's suite uses that 2.4.1 lacks; empty when nothing.
+std::string missingFeature(const SceneDescription& scene) {
+  auto missing = [](const ShapeDesc& shape) -> std::string {
+    if (shape.kind == ShapeKind::Capsule) return "capsules";
+    if (shape.kind == ShapeKind::Chain) return "one-sided chains";
+    if (shape.kind == ShapeKind::Polygon && shape.radius > 0) return "rounded polygons";
+    return {};
+  };
+  for (const BodyDesc& body : scene.bodies) {
+    if (body.spawnStep > 0) return "bodies created during the run";
+    std::string feature = missing(body.shape);
+    for (const ShapeDesc& shape : body.extraShapes) {
+      if (feature.empty()) feature = missing(shape);
+    }
+    if (!feature.empty()) return feature;
+  }
+  for (const JointDesc& joint : scene.joints) {
+    if (joint.springHertz > 0) return "revolute springs";
+  }
+  return {};
+}
+
+b2Filter toFilter(const CollisionFilter& filter) {
+  b2Filter f;
+  f.categoryBits = static_cast<uint16>(filter.category);
+  f.maskBits = static_cast<uint16>(filter.mask);
+  f.groupIndex = static_cast<int16>(filter.group);
+  return f;
+}
+
+b2BodyType typeOf(const BodyDesc& desc) {
+  if (desc.isStatic) return b2_staticBody;
+  return desc.isKinematic ? b2_kinematicBody : b2_dynamicBody;
+}
+
 class Box2DAdapter final : public EngineAdapter {
  public:
   Box2DAdapter(const SceneDescription& scene, int velocityIterations, int positionIterations)
-      : world_(b2Vec2(float(scene.gravity.x), float(scene.gravity.y))),
+      : scene_(scene),
+        world_(b2Vec2(float(scene.gravity.x), float(scene.gravity.y))),
         velocityIterations_(velocityIterations),
         positionIterations_(positionIterations) {
     world_.SetAllowSleeping(scene.allowSleep);
@@ -75,7 +121,11 @@ class Box2DAdapter final : public EngineAdapter {
     for (const JointDesc& joint : scene.joints) createJoint(joint);
   }
 
-  void step(double dt) override { world_.Step(float(dt), velocityIterations_, positionIterations_); }
+  void step(double dt) override {
+    for (const KinematicTarget& target : scene_.targets) steer(target, dt);
+    world_.Step(float(dt), velocityIterations_, positionIterations_);
+    ++stepCount_;
+  }
 
   Pose pose(int index) const override {
     const b2Body* body = bodies_[static_cast<std::size_t>(index)];
@@ -85,33 +135,60 @@ class Box2DAdapter final : public EngineAdapter {
   }
 
  private:
+  // The velocity that takes the body to the target over the step; 2.4.1's
+  // kinematic bodies move by their velocity alone.
+  void steer(const KinematicTarget& target, double dt) {
+    b2Body* body = bodies_[static_cast<std::size_t>(target.body)];
+    const b2Vec2 to = toVec(target.position(stepCount_ * dt));
+    body->SetLinearVelocity((1.0f / float(dt)) * (to - body->GetPosition()));
+  }
+
   b2Body* create(const BodyDesc& desc) {
     b2BodyDef def;
-    def.type = desc.isStatic ? b2_staticBody : b2_dynamicBody;
-    def.position.Set(float(desc.position.x), float(desc.position.y));
+    def.type = typeOf(desc);
+    def.position = toVec(desc.position);
     def.angle = float(desc.angle);
-    def.linearVelocity.Set(float(desc.velocity.x), float(desc.velocity.y));
+    def.linearVelocity = toVec(desc.velocity);
     def.angularVelocity = float(desc.angularVelocity);
+    def.linearDamping = float(desc.linearDamping);
+    def.awake = !desc.startsAsleep;
     b2Body* body = world_.CreateBody(&def);
+    addFixture(body, desc, desc.shape);
+    for (const ShapeDesc& shape : desc.extraShapes) addFixture(body, desc, shape);
+    return body;
+  }
 
+  static void addFixture(b2Body* body, const BodyDesc& desc, const ShapeDesc& shape) {
     b2FixtureDef fixture;
-    fixture.friction = float(desc.friction);
+    fixture.friction = float(shape.friction.value_or(desc.friction));
     fixture.restitution = float(desc.restitution);
     fixture.restitutionThreshold = 1.0f;
+    fixture.density = float(desc.density);
+    fixture.filter = toFilter(shape.filter);
     b2CircleShape circle;
     b2PolygonShape polygon;
-    if (desc.shape.kind == ShapeKind::Circle) {
-      circle.m_radius = float(desc.shape.radius);
-      fixture.shape = &circle;
-      fixture.density = float(desc.density);
-    } else {
-      std::vector<b2Vec2> core = shrink(desc.shape.vertices, b2_polygonRadius);
-      polygon.Set(core.data(), static_cast<int>(core.size()));
-      fixture.shape = &polygon;
-      fixture.density = float(desc.density * desc.shape.area() / polygonArea(core));
+    b2EdgeShape edge;
+    switch (shape.kind) {
+      case ShapeKind::Circle:
+        circle.m_radius = float(shape.radius);
+        circle.m_p = toVec(shape.center);
+        fixture.shape = &circle;
+        break;
+      case ShapeKind::Polygon: {
+        std::vector<b2Vec2> core = shrink(shape.vertices, b2_polygonRadius);
+        polygon.Set(core.data(), static_cast<int>(core.size()));
+        fixture.shape = &polygon;
+        fixture.density = float(desc.density * shape.area() / polygonArea(core));
+        break;
+      }
+      case ShapeKind::Segment:
+        edge.SetTwoSided(toVec(shape.vertices[0]), toVec(shape.vertices[1]));
+        fixture.shape = &edge;
+        break;
+      case ShapeKind::Capsule:
+      case ShapeKind::Chain: throw Unsupported("box2d 2.4.1 adapter: no capsules or one-sided chains");
     }
     body->CreateFixture(&fixture);
-    return body;
   }
 
   b2Body* bodyOf(int index) {
@@ -131,6 +208,12 @@ class Box2DAdapter final : public EngineAdapter {
     if (joint.kind == JointKind::Pin) {
       b2RevoluteJointDef def;
       def.Initialize(a, b, anchorA);
+      def.enableLimit = joint.enableLimit;
+      def.lowerAngle = float(joint.lowerAngle);
+      def.upperAngle = float(joint.upperAngle);
+      def.enableMotor = joint.enableMotor;
+      def.motorSpeed = float(joint.motorSpeed);
+      def.maxMotorTorque = float(joint.maxMotorTorque);
       world_.CreateJoint(&def);
       return;
     }
@@ -148,6 +231,8 @@ class Box2DAdapter final : public EngineAdapter {
     world_.CreateJoint(&def);
   }
 
+  const SceneDescription& scene_;
+  int stepCount_ = 0;
   b2World world_;
   b2Body* ground_ = nullptr;
   MeanMixing mixing_;
@@ -160,6 +245,9 @@ class Box2DAdapter final : public EngineAdapter {
 
 std::unique_ptr<EngineAdapter> makeBox2DAdapter(const SceneDescription& scene, int velocityIterations,
                                                 int positionIterations) {
+  if (const std::string feature = missingFeature(scene); !feature.empty()) {
+    throw Unsupported("box2d 2.4.1 adapter: no " + feature);
+  }
   return std::make_unique<Box2DAdapter>(scene, velocityIterations, positionIterations);
 }
 

@@ -29,6 +29,7 @@
 #include <stdexcept>
 
 #include "engine_adapter.h"
+#include "spawn_schedule.h"
 
 #ifndef BOX2D_V3_NAMESPACE
 #error "BOX2D_V3_NAMESPACE names the v3 build this adapter is compiled for"
@@ -44,13 +45,64 @@ float meanOf(float a, uint64_t, float b, uint64_t) { return 0.5f * (a + b); }
 
 b2Vec2 toVec(const Vec2d& v) { return b2Vec2{float(v.x), float(v.y)}; }
 
-b2Polygon toPolygon(const std::vector<Vec2d>& vertices) {
-  if (vertices.size() > B2_MAX_POLYGON_VERTICES) throw std::runtime_error("box2d v3: too many vertices");
+b2Polygon toPolygon(const ShapeDesc& shape) {
+  if (shape.vertices.size() > B2_MAX_POLYGON_VERTICES) throw std::runtime_error("box2d v3: too many vertices");
   b2Vec2 points[B2_MAX_POLYGON_VERTICES];
-  for (std::size_t i = 0; i < vertices.size(); ++i) points[i] = toVec(vertices[i]);
-  b2Hull hull = b2ComputeHull(points, static_cast<int>(vertices.size()));
+  for (std::size_t i = 0; i < shape.vertices.size(); ++i) points[i] = toVec(shape.vertices[i]);
+  b2Hull hull = b2ComputeHull(points, static_cast<int>(shape.vertices.size()));
   if (hull.count == 0) throw std::runtime_error("box2d v3: polygon is not a convex hull");
-  return b2MakePolygon(&hull, 0.0f);
+  return b2MakePolygon(&hull, float(shape.radius));
+}
+
+b2Filter toFilter(const CollisionFilter& filter) {
+  b2Filter f = b2DefaultFilter();
+  f.categoryBits = filter.category;
+  f.maskBits = filter.mask == ~0u ? B2_DEFAULT_MASK_BITS : filter.mask;
+  f.groupIndex = filter.group;
+  return f;
+}
+
+/// Every shape kind but chains, which b2CreateChain makes.
+void createShape(b2BodyId body, b2ShapeDef def, const ShapeDesc& shape) {
+  def.filter = toFilter(shape.filter);
+  if (shape.friction) def.material.friction = float(*shape.friction);
+  switch (shape.kind) {
+    case ShapeKind::Circle: {
+      const b2Circle circle{toVec(shape.center), float(shape.radius)};
+      b2CreateCircleShape(body, &def, &circle);
+      return;
+    }
+    case ShapeKind::Polygon: {
+      const b2Polygon polygon = toPolygon(shape);
+      b2CreatePolygonShape(body, &def, &polygon);
+      return;
+    }
+    case ShapeKind::Capsule: {
+      const b2Capsule capsule{toVec(shape.vertices[0]), toVec(shape.vertices[1]), float(shape.radius)};
+      b2CreateCapsuleShape(body, &def, &capsule);
+      return;
+    }
+    case ShapeKind::Segment: {
+      const b2Segment segment{toVec(shape.vertices[0]), toVec(shape.vertices[1])};
+      b2CreateSegmentShape(body, &def, &segment);
+      return;
+    }
+    case ShapeKind::Chain: break;
+  }
+  throw std::logic_error("box2d v3: a chain is not a single shape");
+}
+
+void createChain(b2BodyId body, const b2ShapeDef& shapeDef, const ShapeDesc& shape) {
+  std::vector<b2Vec2> points;
+  for (const Vec2d& v : shape.vertices) points.push_back(toVec(v));
+  b2ChainDef def = b2DefaultChainDef();
+  def.points = points.data();
+  def.count = static_cast<int>(points.size());
+  def.isLoop = shape.loop;
+  def.materials = &shapeDef.material;
+  def.materialCount = 1;
+  def.filter = toFilter(shape.filter);
+  b2CreateChain(body, &def);
 }
 
 // A body's share 1/m + (r x u)^2 / I of a joint's inverse effective mass
@@ -65,7 +117,7 @@ float inverseMassAlong(b2BodyId body, b2Vec2 anchor, b2Vec2 axis) {
 
 class Box2DV3Adapter final : public EngineAdapter {
  public:
-  Box2DV3Adapter(const SceneDescription& scene, int subSteps) : subSteps_(subSteps) {
+  Box2DV3Adapter(const SceneDescription& scene, int subSteps) : scene_(scene), schedule_(scene), subSteps_(subSteps) {
     b2WorldDef def = b2DefaultWorldDef();
     def.gravity = toVec(scene.gravity);
     def.enableSleep = scene.allowSleep;
@@ -75,17 +127,23 @@ class Box2DV3Adapter final : public EngineAdapter {
     }
     world_ = b2CreateWorld(&def);
     bodies_.reserve(scene.bodies.size());
-    for (const BodyDesc& body : scene.bodies) bodies_.push_back(create(body));
-    for (const JointDesc& joint : scene.joints) createJoint(joint);
+    spawnDue();
   }
   ~Box2DV3Adapter() override { b2DestroyWorld(world_); }
   Box2DV3Adapter(const Box2DV3Adapter&) = delete;
   Box2DV3Adapter& operator=(const Box2DV3Adapter&) = delete;
 
-  void step(double dt) override { b2World_Step(world_, float(dt), subSteps_); }
+  void step(double dt) override {
+    for (const KinematicTarget& target : scene_.targets) steer(target, dt);
+    b2World_Step(world_, float(dt), subSteps_);
+    ++stepCount_;
+    spawnDue();
+  }
 
   Pose pose(int index) const override {
-    b2BodyId body = bodies_[static_cast<std::size_t>(index)];
+    const std::size_t i = static_cast<std::size_t>(index);
+    if (i >= bodies_.size()) return describedPose(scene_.bodies[i]);
+    b2BodyId body = bodies_[i];
     b2Vec2 p = b2Body_GetPosition(body);
     b2Vec2 v = b2Body_GetLinearVelocity(body);
     return {{p.x, p.y},
@@ -96,26 +154,44 @@ class Box2DV3Adapter final : public EngineAdapter {
   }
 
  private:
+  void spawnDue() {
+    schedule_.spawnDue(
+        stepCount_, [this](const BodyDesc& body) { bodies_.push_back(create(body)); },
+        [this](const JointDesc& joint) { createJoint(joint); });
+  }
+
+  void steer(const KinematicTarget& target, double dt) {
+    const b2BodyId body = bodies_[static_cast<std::size_t>(target.body)];
+    const b2Transform to{toVec(target.position(stepCount_ * dt)), b2Body_GetRotation(body)};
+    b2Body_SetTargetTransform(body, to, float(dt), true);
+  }
+
+  static b2BodyType typeOf(const BodyDesc& desc) {
+    if (desc.isStatic) return b2_staticBody;
+    return desc.isKinematic ? b2_kinematicBody : b2_dynamicBody;
+  }
+
   b2BodyId create(const BodyDesc& desc) {
     b2BodyDef def = b2DefaultBodyDef();
-    def.type = desc.isStatic ? b2_staticBody : b2_dynamicBody;
+    def.type = typeOf(desc);
     def.position = toVec(desc.position);
     def.rotation = b2MakeRot(float(desc.angle));
     def.linearVelocity = toVec(desc.velocity);
     def.angularVelocity = float(desc.angularVelocity);
+    def.linearDamping = float(desc.linearDamping);
+    def.isAwake = !desc.startsAsleep;
     b2BodyId body = b2CreateBody(world_, &def);
 
     b2ShapeDef shape = b2DefaultShapeDef();
     shape.density = float(desc.density);
     shape.material.friction = float(desc.friction);
     shape.material.restitution = float(desc.restitution);
-    if (desc.shape.kind == ShapeKind::Circle) {
-      b2Circle circle{{0.0f, 0.0f}, float(desc.shape.radius)};
-      b2CreateCircleShape(body, &shape, &circle);
+    if (desc.shape.kind == ShapeKind::Chain) {
+      createChain(body, shape, desc.shape);
     } else {
-      b2Polygon polygon = toPolygon(desc.shape.vertices);
-      b2CreatePolygonShape(body, &shape, &polygon);
+      createShape(body, shape, desc.shape);
     }
+    for (const ShapeDesc& extra : desc.extraShapes) createShape(body, shape, extra);
     return body;
   }
 
@@ -141,6 +217,15 @@ class Box2DV3Adapter final : public EngineAdapter {
     if (joint.kind == JointKind::Pin) {
       b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
       join(def.base, joint);
+      def.enableLimit = joint.enableLimit;
+      def.lowerAngle = float(joint.lowerAngle);
+      def.upperAngle = float(joint.upperAngle);
+      def.enableMotor = joint.enableMotor;
+      def.motorSpeed = float(joint.motorSpeed);
+      def.maxMotorTorque = float(joint.maxMotorTorque);
+      def.enableSpring = joint.springHertz > 0;
+      def.hertz = float(joint.springHertz);
+      def.dampingRatio = float(joint.springDampingRatio);
       b2CreateRevoluteJoint(world_, &def);
       return;
     }
@@ -162,6 +247,9 @@ class Box2DV3Adapter final : public EngineAdapter {
     def.dampingRatio = float(joint.damping / (2 * std::sqrt(joint.stiffness * mass)));
   }
 
+  const SceneDescription& scene_;
+  SpawnSchedule schedule_;
+  int stepCount_ = 0;
   b2WorldId world_{};
   b2BodyId ground_ = b2_nullBodyId;
   int subSteps_;

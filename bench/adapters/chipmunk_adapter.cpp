@@ -10,6 +10,15 @@
 // its contacts); a joint to the world joins the space's static body. Joined
 // bodies do not collide: Chipmunk's joints do not stop that, so a begin
 // callback rejects their contacts.
+//
+// Box2D v3's suite: bodies of several shapes (Chipmunk sums their mass from
+// each shape's density), offset circles, segments, collision filters (a
+// negative v3 group is a Chipmunk group: the same never-collide rule),
+// kinematic bodies (a target becomes the velocity that reaches it over the
+// step), bodies put to sleep at creation, and pin motors (cpSimpleMotor, its
+// torque capped). Chipmunk has no one-sided chains; revolute limits, springs
+// and linear damping, and bodies created during the run, are not translated
+// (rain, spinner): scenes with them are skipped.
 
 #include <chipmunk/chipmunk.h>
 
@@ -52,9 +61,49 @@ cpBool collideUnlessJoined(cpArbiter* arbiter, cpSpace*, cpDataPointer joined) {
 
 cpVect toCp(const Vec2d& v) { return cpv(v.x, v.y); }
 
+/// What v3's suite uses that this adapter does not translate; empty when nothing.
+std::string missingFeature(const SceneDescription& scene) {
+  auto missing = [](const ShapeDesc& shape) -> std::string {
+    if (shape.kind == ShapeKind::Chain) return "one-sided chains";
+    if (shape.filter.group > 0) return "positive collision groups";
+    return {};
+  };
+  for (const BodyDesc& body : scene.bodies) {
+    if (body.spawnStep > 0) return "bodies created during the run";
+    if (body.linearDamping > 0) return "linear damping";
+    std::string feature = missing(body.shape);
+    for (const ShapeDesc& shape : body.extraShapes) {
+      if (feature.empty()) feature = missing(shape);
+    }
+    if (!feature.empty()) return feature;
+  }
+  for (const JointDesc& joint : scene.joints) {
+    if (joint.enableLimit || joint.springHertz > 0) return "revolute limits or springs";
+  }
+  return {};
+}
+
+cpShapeFilter toFilter(const CollisionFilter& filter) {
+  return cpShapeFilterNew(static_cast<cpGroup>(-filter.group), filter.category, filter.mask);
+}
+
+cpShape* newShape(cpBody* body, const ShapeDesc& shape) {
+  std::vector<cpVect> vertices;
+  for (const Vec2d& v : shape.vertices) vertices.push_back(toCp(v));
+  switch (shape.kind) {
+    case ShapeKind::Circle: return cpCircleShapeNew(body, shape.radius, toCp(shape.center));
+    case ShapeKind::Polygon:
+      return cpPolyShapeNewRaw(body, static_cast<int>(vertices.size()), vertices.data(), shape.radius);
+    case ShapeKind::Capsule:
+    case ShapeKind::Segment: return cpSegmentShapeNew(body, vertices[0], vertices[1], shape.radius);
+    case ShapeKind::Chain: break;
+  }
+  throw Unsupported("chipmunk adapter: no one-sided chains");
+}
+
 class ChipmunkAdapter final : public EngineAdapter {
  public:
-  ChipmunkAdapter(const SceneDescription& scene, int iterations) : space_(cpSpaceNew()) {
+  ChipmunkAdapter(const SceneDescription& scene, int iterations) : scene_(scene), space_(cpSpaceNew()) {
     cpSpaceSetGravity(space_, cpv(scene.gravity.x, scene.gravity.y));
     cpSpaceSetIterations(space_, iterations);
     cpSpaceSetCollisionSlop(space_, 0.005);
@@ -92,7 +141,11 @@ class ChipmunkAdapter final : public EngineAdapter {
   ChipmunkAdapter(const ChipmunkAdapter&) = delete;
   ChipmunkAdapter& operator=(const ChipmunkAdapter&) = delete;
 
-  void step(double dt) override { cpSpaceStep(space_, dt); }
+  void step(double dt) override {
+    for (const KinematicTarget& target : scene_.targets) steer(target, dt);
+    cpSpaceStep(space_, dt);
+    ++stepCount_;
+  }
 
   Pose pose(int index) const override {
     cpBody* body = bodies_[static_cast<std::size_t>(index)];
@@ -103,20 +156,20 @@ class ChipmunkAdapter final : public EngineAdapter {
   }
 
  private:
+  // The velocity that takes the body to the target over the step.
+  void steer(const KinematicTarget& target, double dt) {
+    cpBody* body = bodies_[static_cast<std::size_t>(target.body)];
+    cpBodySetVelocity(body, cpvmult(cpvsub(toCp(target.position(stepCount_ * dt)), cpBodyGetPosition(body)), 1 / dt));
+  }
+
+  static cpBody* newBody(const BodyDesc& desc) {
+    if (desc.isStatic) return cpBodyNewStatic();
+    // Mass, centre of gravity and moment come from the shapes' densities.
+    return desc.isKinematic ? cpBodyNewKinematic() : cpBodyNew(0, 0);
+  }
+
   void create(const BodyDesc& desc, bool uniform) {
-    std::vector<cpVect> vertices;
-    for (const Vec2d& v : desc.shape.vertices) vertices.push_back(toCp(v));
-    const bool isCircle = desc.shape.kind == ShapeKind::Circle;
-    cpBody* body = nullptr;
-    if (desc.isStatic) {
-      body = cpBodyNewStatic();
-    } else {
-      double mass = desc.density * desc.shape.area();
-      double moment = isCircle ? cpMomentForCircle(mass, 0, desc.shape.radius, cpvzero)
-                               : cpMomentForPoly(mass, static_cast<int>(vertices.size()), vertices.data(),
-                                                 cpvzero, 0);
-      body = cpBodyNew(mass, moment);
-    }
+    cpBody* body = newBody(desc);
     cpSpaceAddBody(space_, body);
     cpBodySetPosition(body, toCp(desc.position));
     cpBodySetAngle(body, desc.angle);
@@ -124,12 +177,20 @@ class ChipmunkAdapter final : public EngineAdapter {
       cpBodySetVelocity(body, toCp(desc.velocity));
       cpBodySetAngularVelocity(body, desc.angularVelocity);
     }
-    cpShape* shape = isCircle ? cpCircleShapeNew(body, desc.shape.radius, cpvzero)
-                              : cpPolyShapeNewRaw(body, static_cast<int>(vertices.size()), vertices.data(), 0);
-    cpShapeSetFriction(shape, uniform ? std::sqrt(desc.friction) : desc.friction);
-    cpShapeSetElasticity(shape, uniform ? std::sqrt(desc.restitution) : desc.restitution);
-    cpSpaceAddShape(space_, shape);
+    addShape(body, desc, desc.shape, uniform);
+    for (const ShapeDesc& shape : desc.extraShapes) addShape(body, desc, shape, uniform);
+    if (desc.startsAsleep) cpBodySleep(body);
     bodies_.push_back(body);
+  }
+
+  void addShape(cpBody* body, const BodyDesc& desc, const ShapeDesc& described, bool uniform) {
+    cpShape* shape = newShape(body, described);
+    const double friction = described.friction.value_or(desc.friction);
+    cpShapeSetFriction(shape, uniform ? std::sqrt(friction) : friction);
+    cpShapeSetElasticity(shape, uniform ? std::sqrt(desc.restitution) : desc.restitution);
+    cpShapeSetFilter(shape, toFilter(described.filter));
+    if (desc.isDynamic()) cpShapeSetDensity(shape, desc.density);
+    cpSpaceAddShape(space_, shape);
     shapes_.push_back(shape);
   }
 
@@ -146,6 +207,7 @@ class ChipmunkAdapter final : public EngineAdapter {
     cpConstraint* constraint = nullptr;
     switch (joint.kind) {
       case JointKind::Pin:
+        if (joint.enableMotor) addMotor(a, b, joint);
         constraint = cpPivotJointNew(a, b, toCp(joint.anchorA));
         break;
       case JointKind::Rod:
@@ -161,6 +223,17 @@ class ChipmunkAdapter final : public EngineAdapter {
     joined_.insert(ordered(a, b));
   }
 
+  // A pin's motor holds B's spin relative to A at the speed, its torque
+  // capped. Chipmunk's rate is A's spin relative to B: the sign turns.
+  void addMotor(cpBody* a, cpBody* b, const JointDesc& joint) {
+    cpConstraint* motor = cpSimpleMotorNew(a, b, -joint.motorSpeed);
+    cpConstraintSetMaxForce(motor, joint.maxMotorTorque);
+    cpSpaceAddConstraint(space_, motor);
+    constraints_.push_back(motor);
+  }
+
+  const SceneDescription& scene_;
+  int stepCount_ = 0;
   cpSpace* space_;
   std::vector<cpBody*> bodies_;
   std::vector<cpShape*> shapes_;
@@ -171,6 +244,9 @@ class ChipmunkAdapter final : public EngineAdapter {
 }  // namespace
 
 std::unique_ptr<EngineAdapter> makeChipmunkAdapter(const SceneDescription& scene, int iterations) {
+  if (const std::string feature = missingFeature(scene); !feature.empty()) {
+    throw Unsupported("chipmunk adapter: no " + feature);
+  }
   return std::make_unique<ChipmunkAdapter>(scene, iterations);
 }
 

@@ -3,13 +3,24 @@
 // have), the world's bounds widened to hold the scene. Everything else stays
 // at WorldSettings' defaults except sub-steps and sleep. Joints: pins are
 // revolute joints, rods distance joints of stiffness 0 (rigid), springs
-// distance joints with the described stiffness and damping.
+// distance joints with the described stiffness and damping. A pin's spring,
+// given as Box2D v3 gives it (hertz, damping ratio), becomes the stiffness
+// and damping of the same oscillator on the pair's relative rotational
+// inertia. Chains are World::createChain bodies.
+//
+// Impulse has no collision filter and no body created asleep: a scene's
+// filtered shapes collide here (only the two bodies of a joint never do), its
+// sleeping bodies start awake, and the run says so. Box2D v3's linear damping
+// is Impulse's linear drag (the same rate; exact where v3's is first order).
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "engine_adapter.h"
 #include "impulse/world.h"
+#include "spawn_schedule.h"
 
 namespace bench {
 
@@ -20,15 +31,35 @@ using impulse::Vec2;
 
 Vec2 toVec(const Vec2d& v) { return Vec2(Real(v.x), Real(v.y)); }
 
-impulse::Shape toShape(const ShapeDesc& shape, const impulse::ShapeLimits& limits) {
-  if (shape.kind == ShapeKind::Circle) return impulse::Shape::makeCircle(Real(shape.radius));
+Vec2 rotate(const Vec2& v, Real angle) {
+  const Real c = std::cos(angle), s = std::sin(angle);
+  return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
+impulse::Shape toPolygon(const ShapeDesc& shape, const impulse::ShapeLimits& limits) {
   std::vector<Vec2> points;
   for (const Vec2d& v : shape.vertices) points.push_back(toVec(v));
   impulse::PolygonBuild build = impulse::buildPolygon(points, limits);
   if (build.error != impulse::ShapeError::None) {
     throw std::runtime_error("impulse: " + std::string(impulse::describe(build.error)));
   }
-  return impulse::Shape::makePolygon(build.polygon);
+  build.polygon.radius = Real(shape.radius);
+  // buildPolygon centres the polygon on its centroid: put it back where the
+  // body's frame has it.
+  return impulse::translated(impulse::Shape::makePolygon(build.polygon), build.centroid);
+}
+
+/// Every shape kind but chains, which are bodies of their own.
+impulse::Shape toShape(const ShapeDesc& shape, const impulse::ShapeLimits& limits) {
+  switch (shape.kind) {
+    case ShapeKind::Circle: return impulse::Shape::makeCircle(Real(shape.radius), toVec(shape.center));
+    case ShapeKind::Polygon: return toPolygon(shape, limits);
+    case ShapeKind::Capsule:
+      return impulse::Shape::makeCapsule(toVec(shape.vertices[0]), toVec(shape.vertices[1]), Real(shape.radius));
+    case ShapeKind::Segment: return impulse::Shape::makeSegment(toVec(shape.vertices[0]), toVec(shape.vertices[1]));
+    case ShapeKind::Chain: break;
+  }
+  throw std::logic_error("impulse: a chain is a body of its own");
 }
 
 impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, bool sse2Only) {
@@ -39,14 +70,18 @@ impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, 
   settings.enableSleep = scene.allowSleep;
   // Bounds only gate creation (of bodies and joint anchors): fit them around
   // the scene.
-  auto include = [&](const Vec2d& point) {
+  auto include = [&](const Vec2d& point, double margin) {
     Vec2 p = toVec(point);
-    settings.bounds = settings.bounds.unite({p - Vec2(1, 1), p + Vec2(1, 1)});
+    const Vec2 reach = Vec2::Constant(Real(margin));
+    settings.bounds = settings.bounds.unite({p - reach, p + reach});
   };
-  for (const BodyDesc& body : scene.bodies) include(body.position);
+  for (const BodyDesc& body : scene.bodies) {
+    include(body.position, 1 + body.shape.extent());
+    for (const ShapeDesc& shape : body.extraShapes) include(body.position, 1 + shape.extent());
+  }
   for (const JointDesc& joint : scene.joints) {
-    include(joint.anchorA);
-    include(joint.anchorB);
+    include(joint.anchorA, 1);
+    include(joint.anchorB, 1);
   }
   settings.shapeLimits.maxArea = Real(1e5);
   settings.shapeLimits.maxRadius = Real(1e3);
@@ -57,69 +92,167 @@ impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, 
 // A scene's own density, friction or restitution, where it departs from the
 // material's. A single friction coefficient (the peers' model) sets both of
 // Impulse's coefficients, so every engine slides by the same closed form.
-impulse::MaterialOverride overrideFor(const BodyDesc& body) {
+impulse::MaterialOverride overrideFor(const BodyDesc& body, std::optional<double> shapeFriction = std::nullopt) {
   const impulse::MaterialProperties& material = impulse::materialProperties(body.material);
+  const double friction = shapeFriction.value_or(body.friction);
   impulse::MaterialOverride o;
   if (body.density != material.density) o.density = Real(body.density);
   if (body.restitution != material.restitution) o.restitution = Real(body.restitution);
-  if (body.friction != material.staticFriction) {
-    o.staticFriction = Real(body.friction);
-    o.dynamicFriction = Real(body.friction);
+  if (friction != material.staticFriction) {
+    o.staticFriction = Real(friction);
+    o.dynamicFriction = Real(friction);
   }
   return o;
 }
 
-impulse::JointSettings jointSettings(const JointDesc& joint) {
-  switch (joint.kind) {
-    case JointKind::Pin:
-      return impulse::RevoluteJointSettings{};
-    case JointKind::Rod:
-      return impulse::DistanceJointSettings{};
-    case JointKind::Spring:
-      return impulse::DistanceJointSettings{Real(joint.restLength), Real(joint.stiffness),
-                                            Real(joint.damping)};
+impulse::BodyOptions optionsFor(const BodyDesc& body) {
+  impulse::BodyOptions options;
+  options.material = body.material;
+  options.materialOverride = overrideFor(body);
+  options.isKinematic = body.isKinematic;
+  options.linearVelocity = toVec(body.velocity);
+  options.angularVelocity = Real(body.angularVelocity);
+  return options;
+}
+
+impulse::BodyDef bodyDefFor(const BodyDesc& body, const impulse::ShapeLimits& limits) {
+  impulse::BodyDef def;
+  def.shape = toShape(body.shape, limits);
+  def.materialOverride = overrideFor(body, body.shape.friction);
+  for (const ShapeDesc& shape : body.extraShapes) {
+    def.extraShapes.push_back({toShape(shape, limits), body.material, overrideFor(body, shape.friction)});
   }
-  throw std::logic_error("impulse: unknown joint kind");
+  def.position = toVec(body.position);
+  def.angle = Real(body.angle);
+  def.linearVelocity = toVec(body.velocity);
+  def.angularVelocity = Real(body.angularVelocity);
+  def.material = body.material;
+  def.isStatic = body.isStatic;
+  def.isKinematic = body.isKinematic;
+  def.linearDrag = Real(body.linearDamping);
+  return def;
+}
+
+bool anyFilter(const SceneDescription& scene) {
+  auto filtered = [](const ShapeDesc& shape) { return !shape.filter.collidesWithAll(); };
+  return std::any_of(scene.bodies.begin(), scene.bodies.end(), [&](const BodyDesc& body) {
+    return filtered(body.shape) || std::any_of(body.extraShapes.begin(), body.extraShapes.end(), filtered);
+  });
 }
 
 class ImpulseAdapter final : public EngineAdapter {
  public:
   ImpulseAdapter(const SceneDescription& scene, int subSteps, bool sse2Only)
-      : world_(settingsFor(scene, subSteps, sse2Only)) {
-    ids_.reserve(scene.bodies.size());
-    for (const BodyDesc& body : scene.bodies) {
-      impulse::BodyDef def;
-      def.shape = toShape(body.shape, world_.settings().shapeLimits);
-      def.position = toVec(body.position);
-      def.angle = Real(body.angle);
-      def.linearVelocity = toVec(body.velocity);
-      def.angularVelocity = Real(body.angularVelocity);
-      def.material = body.material;
-      def.materialOverride = overrideFor(body);
-      def.isStatic = body.isStatic;
-      impulse::CreateResult created = world_.createBody(def);
-      if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
-      ids_.push_back(created.id);
-    }
-    for (const JointDesc& joint : scene.joints) createJoint(joint);
+      : scene_(scene), world_(settingsFor(scene, subSteps, sse2Only)), schedule_(scene) {
+    bodies_.reserve(scene.bodies.size());
+    spawnDue();
   }
 
-  void step(double dt) override { world_.step(Real(dt)); }
+  void step(double dt) override {
+    for (const KinematicTarget& target : scene_.targets) steer(target, dt);
+    world_.step(Real(dt));
+    ++stepCount_;
+    spawnDue();
+  }
 
   Pose pose(int index) const override {
-    impulse::BodyState state = *world_.bodyState(ids_[static_cast<std::size_t>(index)]);
-    return {{state.position.x(), state.position.y()},
+    const std::size_t i = static_cast<std::size_t>(index);
+    if (i >= bodies_.size()) return describedPose(scene_.bodies[i]);
+    impulse::BodyState state = *world_.bodyState(bodies_[i].id);
+    const Vec2 origin = state.position - rotate(bodies_[i].originToCentre, state.angle);
+    return {{origin.x(), origin.y()},
             state.angle,
             {state.linearVelocity.x(), state.linearVelocity.y()},
             state.angularVelocity,
             state.awake};
   }
 
+  std::string approximation() const override {
+    std::string missing;
+    if (anyFilter(scene_)) missing = "no collision filter: filtered shapes collide";
+    if (std::any_of(scene_.bodies.begin(), scene_.bodies.end(), [](const BodyDesc& b) { return b.startsAsleep; })) {
+      missing += std::string(missing.empty() ? "" : "; ") + "no body created asleep: created awake";
+    }
+    return missing;
+  }
+
  private:
+  struct Created {
+    impulse::BodyId id;
+    Vec2 originToCentre;  ///< from the described origin to Impulse's centre of mass, in the body's frame
+  };
+
+  void spawnDue() {
+    schedule_.spawnDue(
+        stepCount_, [this](const BodyDesc& body) { create(body); },
+        [this](const JointDesc& joint) { createJoint(joint); });
+  }
+
+  void create(const BodyDesc& body) {
+    impulse::CreateResult created = body.shape.kind == ShapeKind::Chain ? createChain(body)
+                                                                         : world_.createBody(bodyDefFor(body, world_.settings().shapeLimits));
+    if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
+    const Vec2 centre = world_.bodyState(created.id)->position;
+    bodies_.push_back({created.id, rotate(centre - toVec(body.position), -Real(body.angle))});
+  }
+
+  impulse::CreateResult createChain(const BodyDesc& body) {
+    std::vector<Vec2> points;
+    for (const Vec2d& v : body.shape.vertices) points.push_back(toVec(body.position) + rotate(toVec(v), Real(body.angle)));
+    return world_.createChain(points, body.shape.loop, optionsFor(body));
+  }
+
+  void steer(const KinematicTarget& target, double dt) {
+    const Created& body = bodies_[static_cast<std::size_t>(target.body)];
+    const Real angle = world_.bodyState(body.id)->angle;
+    const Vec2 centre = toVec(target.position(stepCount_ * dt)) + rotate(body.originToCentre, angle);
+    impulse::InputResult steered = world_.setTargetTransform(body.id, centre, angle, Real(dt));
+    if (!steered.ok()) throw std::runtime_error("impulse: " + steered.error);
+  }
+
+  impulse::BodyId idOf(int index) const {
+    return index == kWorldBody ? impulse::BodyId{} : bodies_[static_cast<std::size_t>(index)].id;
+  }
+
+  Real inertiaOf(int index) const {
+    if (index == kWorldBody) return 0;
+    const impulse::BodyDescription body = *world_.bodyDescription(idOf(index));
+    return body.isStatic || body.isKinematic ? 0 : body.mass.inertia;
+  }
+
+  impulse::RevoluteJointSettings pinSettings(const JointDesc& joint) const {
+    impulse::RevoluteJointSettings s;
+    s.enableLimit = joint.enableLimit;
+    s.lowerAngle = Real(joint.lowerAngle);
+    s.upperAngle = Real(joint.upperAngle);
+    s.enableMotor = joint.enableMotor;
+    s.motorSpeed = Real(joint.motorSpeed);
+    s.maxMotorTorque = Real(joint.maxMotorTorque);
+    if (joint.springHertz > 0) {
+      // The pair's relative rotational inertia (a static side counts as infinite).
+      const Real iA = inertiaOf(joint.bodyA), iB = inertiaOf(joint.bodyB);
+      const Real inertia = iA == 0 ? iB : iB == 0 ? iA : iA * iB / (iA + iB);
+      const Real omega = Real(2 * std::numbers::pi * joint.springHertz);
+      s.stiffness = inertia * omega * omega;
+      s.damping = Real(2 * joint.springDampingRatio) * inertia * omega;
+    }
+    return s;
+  }
+
+  impulse::JointSettings jointSettings(const JointDesc& joint) const {
+    switch (joint.kind) {
+      case JointKind::Pin: return pinSettings(joint);
+      case JointKind::Rod: return impulse::DistanceJointSettings{};
+      case JointKind::Spring:
+        return impulse::DistanceJointSettings{Real(joint.restLength), Real(joint.stiffness), Real(joint.damping)};
+    }
+    throw std::logic_error("impulse: unknown joint kind");
+  }
+
   void createJoint(const JointDesc& joint) {
     impulse::JointDef def;
-    def.bodyA = ids_[static_cast<std::size_t>(joint.bodyA)];
-    if (joint.bodyB != kWorldBody) def.bodyB = ids_[static_cast<std::size_t>(joint.bodyB)];
+    def.bodyA = idOf(joint.bodyA);
+    def.bodyB = idOf(joint.bodyB);
     def.anchorA = toVec(joint.anchorA);
     def.anchorB = toVec(joint.anchorB);
     def.settings = jointSettings(joint);
@@ -127,8 +260,11 @@ class ImpulseAdapter final : public EngineAdapter {
     if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
   }
 
+  const SceneDescription& scene_;
   impulse::World world_;
-  std::vector<impulse::BodyId> ids_;
+  SpawnSchedule schedule_;
+  std::vector<Created> bodies_;
+  int stepCount_ = 0;
 };
 
 }  // namespace
