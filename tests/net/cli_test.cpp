@@ -380,7 +380,7 @@ TEST(Cli, AHandEditedLevelFileLoads_AndABadOneIsRefusedWithItsReason) {
   // the radius and its density when the scene loads).
   for (const auto& [from, to] :
        {std::pair<std::string, std::string>{"\"x\": 5", "\"x\": 7.5"},
-        {"\"circle_radius\": 0.5", "\"circle_radius\": 0.8"}}) {
+        {"\"radius\": 0.5", "\"radius\": 0.8"}}) {
     const auto at = json.find(from);
     ASSERT_NE(at, std::string::npos) << from << " in\n" << json;
     json.replace(at, from.size(), to);

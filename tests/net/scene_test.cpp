@@ -104,7 +104,7 @@ TEST(Scenes, BadScenesAreRefusedAndTheWorldStaysAsItWas) {
   joint->mutable_distance()->set_length(1);
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"not a scene \xff\xff", "does not parse as a Scene"},
-      {newer.SerializeAsString(), "scene version 3 is not supported (this build reads 1 to 2)"},
+      {newer.SerializeAsString(), "scene version 4 is not supported (this build reads 1 to 3)"},
       {nan.SerializeAsString(), "velocity is not a finite number"},
       {orphanJoint.SerializeAsString(), "joint slot 0: bodyA must be a live body"},
   };

@@ -67,7 +67,7 @@ TEST_F(ControlsTest, Polygon_FewerThanThreePointsCancels) {
   EXPECT_TRUE(controls.notice(now).has_value());
 }
 
-TEST_F(ControlsTest, Polygon_CursorIsRedWhereConvexityBreaks_AndRedClicksPlaceNothing) {
+TEST_F(ControlsTest, Polygon_CursorIsRedWhereTheOutlineWouldCross_AndRedClicksPlaceNothing) {
   press(Control::PolygonMode);
   click(0, 0);
   click(4, 0);
@@ -75,10 +75,14 @@ TEST_F(ControlsTest, Polygon_CursorIsRedWhereConvexityBreaks_AndRedClicksPlaceNo
   // Clockwise or anticlockwise both work: (0,4) closes a square.
   controls.pointerMoved(Vec2(0, 4));
   EXPECT_TRUE(controls.pointerValid());
-  // (3, 1) lies inside the triangle: the polygon would be concave.
+  // (3, 1) lies inside the triangle: a concave outline, which the server
+  // splits into convex pieces of one body.
   controls.pointerMoved(Vec2(3, 1));
+  EXPECT_TRUE(controls.pointerValid());
+  // (6, 2) would make the closing edge cross the first one.
+  controls.pointerMoved(Vec2(6, 2));
   EXPECT_FALSE(controls.pointerValid());
-  click(3, 1);
+  click(6, 2);
   EXPECT_EQ(controls.polygonPoints().size(), 3u);
   // A duplicate point is red too.
   controls.pointerMoved(Vec2(4, 4));
@@ -93,7 +97,9 @@ TEST_F(ControlsTest, Polygon_ClockwiseWindingIsAccepted) {
   controls.pointerMoved(Vec2(4, 0));
   EXPECT_TRUE(controls.pointerValid());
   controls.pointerMoved(Vec2(1, 3));
-  EXPECT_FALSE(controls.pointerValid());
+  EXPECT_TRUE(controls.pointerValid()) << "concave: split by the server";
+  controls.pointerMoved(Vec2(-2, 2));
+  EXPECT_FALSE(controls.pointerValid()) << "the edge from (4, 4) would cross the first";
 }
 
 TEST_F(ControlsTest, Polygon_AtMostSixteenPoints) {
