@@ -168,9 +168,12 @@ void WorldRenderer::drawShape(ImDrawList& list, const ViewTransform& view, const
     }
     case ShapeType::Segment:
     case ShapeType::ChainSegment: {
+      // A boundary has no inside to fill: it is drawn as a thick line in the
+      // fill colour, so terrain reads as ground, edged in the outline colour.
       const auto ends = boundaryEnds(shape);
-      list.AddLine(pixel(view, xf.apply(ends[0])), pixel(view, xf.apply(ends[1])), colours.edge,
-                   std::max(colours.thickness, 2.0f));
+      const ImVec2 from = pixel(view, xf.apply(ends[0])), to = pixel(view, xf.apply(ends[1]));
+      list.AddLine(from, to, colours.edge, std::max(colours.thickness, 1.0f) + 3.0f);
+      list.AddLine(from, to, colours.fill, 3.0f);
       return;
     }
     case ShapeType::Polygon:
