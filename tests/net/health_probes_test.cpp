@@ -146,7 +146,9 @@ TEST(HealthProbes, OverrunningRoomsMakeTheServerBusy_AStalledRoomFailsLiveness) 
             "busy: 2 rooms overrunning their tick budget take the 1 stepping thread(s); 3 of 16 "
             "rooms\n");
   EXPECT_EQ(statusLine(get(port, "/readyz")), "HTTP/1.1 503 Service Unavailable");
-  const std::string stalled = awaitBody(port, "/healthz", "stalled", 5);
+  // Generous: on a loaded 2-core machine a heavy room may still finish a
+  // tick now and then before the probe catches a 30 ms stall.
+  const std::string stalled = awaitBody(port, "/healthz", "stalled", 20);
   std::printf("[ measure ] /healthz: %s", stalled.c_str());
   EXPECT_TRUE(mentions(stalled, "stalled: room ")) << stalled;
   EXPECT_TRUE(mentions(stalled, " s (--room-stall-seconds 0.030000)")) << stalled;
