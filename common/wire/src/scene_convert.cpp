@@ -264,14 +264,12 @@ std::string getGeometry(const v1::SceneShape& in, Shape& shape) {
   return "a live shape needs a geometry (circle, capsule, segment, polygon or chain_segment)";
 }
 
-std::string getShape(const v1::SceneShape& in, ShapeSlotState& s) {
-  s.alive = in.alive();
-  s.generation = in.generation();
-  if (!s.alive) return {};
-  if (std::string error = getGeometry(in, s.shape); !error.empty()) return error;
+// A shape's material, coefficients and proxy: fields of the same names in a
+// SceneShape (version 3) and a SceneBody (versions 1-2, its one shape).
+template <class Message>
+std::string getMaterial(const Message& in, ShapeSlotState& s) {
   const std::optional<Material> material = materialFromWire(in.material());
   if (!material) return "material must be one of the Material enum";
-  s.body = in.body();
   s.material = *material;
   s.density = in.density();
   s.restitution = in.restitution();
@@ -280,6 +278,15 @@ std::string getShape(const v1::SceneShape& in, ShapeSlotState& s) {
   s.rollingResistance = in.rolling_resistance();
   s.proxyKey = in.proxy_key();
   return {};
+}
+
+std::string getShape(const v1::SceneShape& in, ShapeSlotState& s) {
+  s.alive = in.alive();
+  s.generation = in.generation();
+  if (!s.alive) return {};
+  if (std::string error = getGeometry(in, s.shape); !error.empty()) return error;
+  s.body = in.body();
+  return getMaterial(in, s);
 }
 
 // Versions 1-2: a body's one shape is part of the body message; it becomes
@@ -294,17 +301,8 @@ std::string getVersion2Shape(const v1::SceneBody& in, std::int32_t slot, ShapeSl
       break;
     case v1::SceneBody::SHAPE_NOT_SET: return "a live body needs a shape (circle_radius or polygon)";
   }
-  const std::optional<Material> material = materialFromWire(in.material());
-  if (!material) return "material must be one of the Material enum";
   s.body = slot;
-  s.material = *material;
-  s.density = in.density();
-  s.restitution = in.restitution();
-  s.staticFriction = in.static_friction();
-  s.dynamicFriction = in.dynamic_friction();
-  s.rollingResistance = in.rolling_resistance();
-  s.proxyKey = in.proxy_key();
-  return {};
+  return getMaterial(in, s);
 }
 
 std::string getBody(const v1::SceneBody& in, BodySlotState& b) {
