@@ -19,7 +19,17 @@ BodyDef makeBodyDef(const Shape& shape, const Vec2& position, const BodyOptions&
   def.angularDrag = options.angularDrag;
   def.materialOverride = options.materialOverride;
   def.gravityScale = options.gravityScale;
+  def.interaction = options.interaction;
   return def;
+}
+
+bool shouldCollide(const CollisionFilter& a, const CollisionFilter& b) {
+  if (a.groupIndex == b.groupIndex && a.groupIndex != 0) return a.groupIndex > 0;
+  return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
+}
+
+bool queryAccepts(const QueryFilter& query, const CollisionFilter& shape) {
+  return (shape.categoryBits & query.maskBits) != 0 && (shape.maskBits & query.categoryBits) != 0;
 }
 
 std::string validateMaterialOverride(const MaterialOverride& materialOverride) {

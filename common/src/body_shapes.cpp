@@ -77,6 +77,7 @@ std::int32_t attachShape(WorldData& world, std::int32_t body, const ShapeDef& de
   slot.material = def.material;
   slot.coefficients = resolveCoefficients(def.material, def.materialOverride);
   slot.rollingRadius = rollingRadiusOf(def.shape);
+  slot.interaction = def.interaction;
   slot.body = body;
   // Appended, so a body's shapes keep the order they were given in.
   std::int32_t* link = &world.bodies[body].shapeHead;

@@ -144,9 +144,12 @@ bool pairMayTouch(const WorldData& world, const ProxyPair& pair) {
   const ShapeSlot& a = world.shapes[pair.first];
   const ShapeSlot& b = world.shapes[pair.second];
   if (a.body == b.body) return false;
+  // Sensors see overlaps after the step (sensor.cpp); they never touch.
+  if (a.interaction.isSensor || b.interaction.isSensor) return false;
   // Static and kinematic bodies push; only a dynamic body can be pushed.
   if (!world.bodies[a.body].isDynamic() && !world.bodies[b.body].isDynamic()) return false;
   if (!shapesCanCollide(a.type(), b.type())) return false;
+  if (!shouldCollide(a.interaction.filter, b.interaction.filter)) return false;
   return !jointBlocksContact(world, a.body, b.body);
 }
 

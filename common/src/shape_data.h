@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "edge_list.h"
+#include "impulse/body.h"
 #include "impulse/material.h"
 #include "impulse/shape.h"
 #include "shape_pair.h"
@@ -19,6 +20,7 @@ struct ShapeSlot {
   MaterialProperties coefficients{};
   /// Rolling resistance acts on round shapes only: their radius, else 0.
   Real rollingRadius = 0;
+  ShapeInteraction interaction;
   std::int32_t body = kNullIndex;
   std::int32_t nextInBody = kNullIndex;
   std::int32_t proxyKey = kNullIndex;

@@ -83,7 +83,7 @@ std::int32_t allocateBody(WorldData& world) {
 std::vector<ShapeDef> shapeDefsOf(const BodyDef& def) {
   std::vector<ShapeDef> shapes;
   shapes.reserve(def.extraShapes.size() + 1);
-  shapes.push_back({def.shape, def.material, def.materialOverride});
+  shapes.push_back({def.shape, def.material, def.materialOverride, def.interaction});
   shapes.insert(shapes.end(), def.extraShapes.begin(), def.extraShapes.end());
   return shapes;
 }
@@ -344,7 +344,7 @@ CreateResult World::createChain(std::span<const Vec2> points, bool loop, const B
   BodyDef def = makeBodyDef(segment(0), origin, options);
   def.isStatic = !options.isKinematic;
   for (std::size_t i = 1; i < chain.segments.size(); ++i) {
-    def.extraShapes.push_back({segment(i), options.material, options.materialOverride});
+    def.extraShapes.push_back({segment(i), options.material, options.materialOverride, options.interaction});
   }
   return createBody(def);
 }
@@ -358,7 +358,7 @@ CreateResult World::createConcavePolygon(std::span<const Vec2> points, const Bod
   auto piece = [&](std::size_t i) { return translated(Shape::makePolygon(split.pieces[i]), -origin); };
   BodyDef def = makeBodyDef(piece(0), origin, options);
   for (std::size_t i = 1; i < split.pieces.size(); ++i) {
-    def.extraShapes.push_back({piece(i), options.material, options.materialOverride});
+    def.extraShapes.push_back({piece(i), options.material, options.materialOverride, options.interaction});
   }
   return createBody(def);
 }
@@ -413,7 +413,7 @@ std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
   out.id = id;
   w.forEachShape(id.slot(), [&](std::int32_t s) {
     const ShapeSlot& shape = w.shapes[s];
-    out.shapes.push_back({w.shapeIdOf(s), shape.shape, shape.material, shape.coefficients});
+    out.shapes.push_back({w.shapeIdOf(s), shape.shape, shape.material, shape.coefficients, shape.interaction});
   });
   const ShapeDescription& first = out.shapes.front();
   out.shape = first.shape;

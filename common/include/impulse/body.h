@@ -59,11 +59,49 @@ struct MaterialOverride {
   std::optional<Real> rollingResistance = std::nullopt;  ///< >= 0
 };
 
+/// Which shapes collide, decided as Box2D v3 decides it: shapes of one
+/// positive group index always collide, of one negative group never; other
+/// pairs collide when each one's category has a bit in the other's mask.
+struct CollisionFilter {
+  std::uint64_t categoryBits = 1;
+  std::uint64_t maskBits = ~std::uint64_t{0};
+  std::int32_t groupIndex = 0;
+  friend bool operator==(const CollisionFilter&, const CollisionFilter&) = default;
+};
+
+bool shouldCollide(const CollisionFilter& a, const CollisionFilter& b);
+
+/// What a query sees: shapes whose category has a bit in maskBits and whose
+/// mask has a bit of categoryBits.
+struct QueryFilter {
+  std::uint64_t categoryBits = 1;
+  std::uint64_t maskBits = ~std::uint64_t{0};
+};
+
+bool queryAccepts(const QueryFilter& query, const CollisionFilter& shape);
+
+/// How a shape meets others besides its geometry: what it collides with,
+/// whether it is a sensor, and which events it asks for. Events cost only
+/// the shapes that ask for them.
+struct ShapeInteraction {
+  CollisionFilter filter;
+  /// Reports the shapes overlapping it (sensor events) and never collides.
+  bool isSensor = false;
+  /// Sensors see this shape (when it is not a sensor itself).
+  bool enableSensorEvents = true;
+  /// Begin and end touch events for this shape's contacts.
+  bool enableContactEvents = false;
+  /// Hit events: touches that begin faster than the world's hit threshold.
+  bool enableHitEvents = false;
+  friend bool operator==(const ShapeInteraction&, const ShapeInteraction&) = default;
+};
+
 /// One shape of a body: its geometry in the body's frame and its material.
 struct ShapeDef {
   Shape shape;
   Material material = Material::Solid;
   MaterialOverride materialOverride;
+  ShapeInteraction interaction;
 };
 
 /// Most shapes one body may carry, and how far (m) any point of a moving
@@ -89,6 +127,8 @@ struct BodyDef {
   Real angularVelocity = 0;
   Material material = Material::Solid;
   MaterialOverride materialOverride;
+  /// The first shape's filter, sensor flag and events.
+  ShapeInteraction interaction;
   bool isStatic = false;
   /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
   /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
@@ -121,6 +161,8 @@ struct BodyOptions {
   /// Per-body coefficients replacing the material's (unset: the material's).
   MaterialOverride materialOverride{};
   Real gravityScale = 1;
+  /// Every shape's filter, sensor flag and events.
+  ShapeInteraction interaction{};
 };
 
 /// The definition of a body of `shape` (local to its centroid) whose
@@ -151,6 +193,7 @@ struct ShapeDescription {
   Shape shape;
   Material material = Material::Solid;
   MaterialProperties coefficients{};
+  ShapeInteraction interaction;
 };
 
 /// What does not change over a body's life. The shape, material and
