@@ -85,7 +85,19 @@ std::int32_t attachShape(WorldData& world, std::int32_t body, const ShapeDef& de
   *link = s;
   ++world.bodies[body].shapeCount;
   ++world.liveShapes;
+  if (def.interaction.isSensor) addSensor(world, s);
   return s;
+}
+
+void changeShapeInteraction(WorldData& world, std::int32_t s, const ShapeInteraction& interaction) {
+  ShapeSlot& slot = world.shapes[s];
+  const bool wasSensor = slot.interaction.isSensor;
+  slot.interaction = interaction;
+  if (interaction.isSensor && !wasSensor) addSensor(world, s);
+  if (!interaction.isSensor && wasSensor) removeSensor(world, s);
+  refilterShapeContacts(world, s);
+  world.broadPhase.touchProxy(slot.proxyKey);
+  wakeIsland(world, slot.body);
 }
 
 void createShapeProxy(WorldData& world, std::int32_t s) {
@@ -101,6 +113,7 @@ void detachShape(WorldData& world, std::int32_t s) {
   *link = slot.nextInBody;
   --body.shapeCount;
   if (slot.proxyKey != kNullIndex) world.broadPhase.destroyProxy(slot.proxyKey);
+  if (slot.interaction.isSensor) removeSensor(world, s);
   slot.alive = false;
   ++slot.generation;
   world.freeShapes.release(s);

@@ -27,6 +27,11 @@ void createShapeProxy(WorldData& world, std::int32_t shape);
 /// (its contacts must be gone already).
 void detachShape(WorldData& world, std::int32_t shape);
 
+/// Gives the shape a new filter, sensor flag and events: its contacts and
+/// the sensor list follow, its proxy looks for the pairs now allowed, and
+/// its body wakes.
+void changeShapeInteraction(WorldData& world, std::int32_t shape, const ShapeInteraction& interaction);
+
 /// Mass, inertia, extent and inner radius from the body's shapes. When the
 /// union's centroid is off the body's origin, the shapes are moved so it is
 /// the origin again and the body's position follows, leaving every shape

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "contact_events.h"
 #include "counting_sort.h"
 #include "world_data.h"
 
@@ -50,6 +51,7 @@ void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
   contact.rollingResistance = mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
                               std::max(sa.rollingRadius, sb.rollingRadius);
   contact.pairKey = contactPairKey(shapeA, shapeB);
+  setContactEventFlags(world, contact);
   linkContact(world, index);
   if (world.bodies[sa.body].awake || world.bodies[sb.body].awake) world.activeContacts.insert(index);
   world.contactByPair.emplace(contact.pairKey, index);
@@ -167,8 +169,10 @@ void updateManifold(WorldData& world, std::int32_t index) {
                                   world.shapes[contact.shapeB].ref().geometry, b.transform);
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
+  const bool wasTouching = contact.touching;
   contact.touching = next.pointCount > 0;
   if (carried) recordFrame(contact, a, b);
+  if (contact.touching != wasTouching) reportTouchChange(world, contact);
 }
 
 // The lowest slot among the contact's awake bodies.
@@ -215,7 +219,7 @@ void updatePairs(WorldData& world, Real /*dt*/) {
   }
 }
 
-void collideContacts(WorldData& world, Real /*dt*/) {
+void collideContacts(WorldData& world, Real dt) {
   world.profile.manifoldUpdates = 0;
   world.touchingContacts.clear();
   const std::size_t awakeCount = world.awakeBodies.size();
@@ -230,6 +234,7 @@ void collideContacts(WorldData& world, Real /*dt*/) {
       return;
     }
     updateManifold(world, index);
+    if (contact.reportsHits && contact.touching) reportHit(world, contact, dt);
     // A touch from an awake body wakes a sleeping one, with its island.
     if (contact.touching) {
       world.touchingContacts.push_back(index);
@@ -247,6 +252,11 @@ void collideContacts(WorldData& world, Real /*dt*/) {
 }
 
 void destroyContact(WorldData& world, std::int32_t index) {
+  Contact& contact = world.contacts[index];
+  if (contact.touching) {
+    contact.touching = false;
+    reportTouchChange(world, contact);
+  }
   for (int side = 0; side < 2; ++side) {
     Body& body = world.bodies[world.contacts[index].edges.body(side)];
     unlinkEdge(world.contacts, body.contactHead, index, side);
@@ -267,18 +277,41 @@ void deactivateBodyContacts(WorldData& world, std::int32_t body) {
   });
 }
 
-void destroyShapeContacts(WorldData& world, std::int32_t shape) {
-  const std::int32_t body = world.shapes[shape].body;
-  std::int32_t key = world.bodies[body].contactHead;
+namespace {
+
+// Calls visit(edge key, contact) for each of the shape's contacts; visit may
+// destroy the contact it is given.
+template <typename Visit>
+void forEachShapeContact(WorldData& world, std::int32_t shape, Visit&& visit) {
+  std::int32_t key = world.bodies[world.shapes[shape].body].contactHead;
   while (key != kNullIndex) {
-    const Contact& contact = world.contacts[edgeElement(key)];
+    Contact& contact = world.contacts[edgeElement(key)];
     const std::int32_t next = contact.edges.next[edgeSide(key)];
-    if (contact.shapeA == shape || contact.shapeB == shape) {
-      if (contact.touching) wakeIsland(world, contact.edges.otherBody(key));
-      destroyContact(world, edgeElement(key));
-    }
+    if (contact.shapeA == shape || contact.shapeB == shape) visit(key, contact);
     key = next;
   }
+}
+
+void destroyWakingOther(WorldData& world, std::int32_t key, const Contact& contact) {
+  if (contact.touching) wakeIsland(world, contact.edges.otherBody(key));
+  destroyContact(world, edgeElement(key));
+}
+
+}  // namespace
+
+void destroyShapeContacts(WorldData& world, std::int32_t shape) {
+  forEachShapeContact(world, shape,
+                      [&](std::int32_t key, const Contact& contact) { destroyWakingOther(world, key, contact); });
+}
+
+void refilterShapeContacts(WorldData& world, std::int32_t shape) {
+  forEachShapeContact(world, shape, [&](std::int32_t key, Contact& contact) {
+    if (pairMayTouch(world, {contact.shapeA, contact.shapeB})) {
+      setContactEventFlags(world, contact);
+    } else {
+      destroyWakingOther(world, key, contact);
+    }
+  });
 }
 
 void forgetManifoldFrames(WorldData& world, std::int32_t body) {

@@ -34,6 +34,9 @@ struct Contact {
   Real rollingResistance = 0;
   std::uint64_t pairKey = 0;
   bool touching = false;
+  /// Either shape asked for touch events, or for hit events.
+  bool reportsTouch = false;
+  bool reportsHits = false;
 };
 
 }  // namespace impulse

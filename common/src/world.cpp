@@ -179,6 +179,7 @@ constexpr StepStage kStepStages[] = {
     {solveAndMoveProxies, &StepProfile::solve},  // constraints and integration
     {solveContinuous, &StepProfile::continuous}, // fast bodies against thin statics
     {updateSleep, &StepProfile::sleep},          // islands and sleeping
+    {updateSensors, &StepProfile::sensors},      // sensor overlaps
 };
 
 template <typename T>
@@ -439,6 +440,19 @@ std::optional<BodyId> World::shapeBody(ShapeId id) const {
   return impl_->idOf(shape->body);
 }
 
+std::optional<ShapeInteraction> World::shapeInteraction(ShapeId id) const {
+  const ShapeSlot* shape = impl_->find(id);
+  if (shape == nullptr) return std::nullopt;
+  return shape->interaction;
+}
+
+InputResult World::setShapeInteraction(ShapeId id, const ShapeInteraction& interaction) {
+  WorldData& w = *impl_;
+  if (w.find(id) == nullptr) return {"no shape " + std::to_string(id.value)};
+  changeShapeInteraction(w, id.slot(), interaction);
+  return {};
+}
+
 int World::shapeCount() const { return impl_->liveShapes; }
 
 std::vector<BodyId> World::bodyIds() const { return liveIds<BodyId>(impl_->bodies, impl_->liveBodies); }
@@ -526,6 +540,7 @@ void World::step(Real dt) {
   guardStep(w, guard_);
   w.removedJoints.clear();
   for (BodyId id : guard_.escaped) removeBody(w, id);
+  publishEvents(w);
 
   w.profile.total = millisecondsSince(start);
   ++w.stepCount;
@@ -560,6 +575,7 @@ const ForceField* World::field(FieldId id) const {
 }
 
 std::span<const BodyId> World::escapedBodies() const { return guard_.escaped; }
+const StepEvents& World::events() const { return impl_->events; }
 const StepGuardReport& World::guardReport() const { return guard_; }
 
 const WorldSettings& World::settings() const { return impl_->settings; }

@@ -20,11 +20,26 @@
 #include "graph_coloring.h"
 #include "slot_bits.h"
 #include "impulse/broad_phase.h"
+#include "impulse/events.h"
 #include "impulse/field.h"
 #include "impulse/world.h"
 #include "solver_data.h"
 
 namespace impulse {
+
+/// A shape overlapping a sensor, and its body (kept for the end event of a
+/// visitor that was removed).
+struct SensorVisitor {
+  ShapeId shape;
+  BodyId body;
+};
+
+/// A sensor shape and the shapes that overlapped it when last looked at,
+/// sorted by id.
+struct Sensor {
+  std::int32_t shape = kNullIndex;
+  std::vector<SensorVisitor> visitors;
+};
 
 struct FieldSlot {
   FieldId id;
@@ -61,6 +76,13 @@ struct WorldData {
   std::vector<FieldSlot> fields;
   std::uint32_t nextFieldId = 1;
 
+  /// Sensor shapes by slot, each with what overlapped it after the last step.
+  std::vector<Sensor> sensors;
+  /// Events since the last step ended (removals between steps included),
+  /// moved sorted into `events` when the next one ends.
+  StepEvents pendingEvents;
+  StepEvents events;
+
   BroadPhase broadPhase;
   // Awake dynamic bodies in a deterministic order.
   std::vector<std::int32_t> awakeBodies;
@@ -92,6 +114,8 @@ struct WorldData {
   std::vector<std::int32_t> islandStack;
   std::vector<std::int32_t> islandBodies;
   std::vector<MassProperties> massParts;
+  std::vector<SensorVisitor> sensorScratch;
+  std::vector<SensorVisitor> sensorChanges;
 
   StepProfile profile;
   std::uint64_t stepCount = 0;
@@ -120,11 +144,15 @@ void applyFields(WorldData& world, Real dt);      // field.cpp: field forces
 void solve(WorldData& world, Real dt);            // solver.cpp: constraints, integration
 void solveContinuous(WorldData& world, Real dt);  // continuous.cpp: time of impact
 void updateSleep(WorldData& world, Real dt);      // island.cpp: islands, sleeping
+void updateSensors(WorldData& world, Real dt);    // sensor.cpp: sensor overlaps and events
 
 // Used across stages.
 void destroyContact(WorldData& world, std::int32_t contact);     // contact.cpp
 void destroyBodyContacts(WorldData& world, std::int32_t body);   // contact.cpp
 void destroyShapeContacts(WorldData& world, std::int32_t shape); // contact.cpp
+// contact.cpp: the shape's filter or flags changed; its contacts that may no
+// longer touch end, the others take its new event requests.
+void refilterShapeContacts(WorldData& world, std::int32_t shape);
 // contact.cpp: the body's shapes changed; its manifolds are recomputed.
 void forgetManifoldFrames(WorldData& world, std::int32_t body);
 // contact.cpp: the body woke; its contacts join the active ones.
@@ -133,6 +161,16 @@ void activateBodyContacts(WorldData& world, std::int32_t body);
 // awake leave the active ones.
 void deactivateBodyContacts(WorldData& world, std::int32_t body);
 void wakeIsland(WorldData& world, std::int32_t body);            // island.cpp
+void addSensor(WorldData& world, std::int32_t shape);            // sensor.cpp
+void removeSensor(WorldData& world, std::int32_t shape);         // sensor.cpp
+// sensor.cpp: after a load, each sensor's visitors as they are (no events:
+// the saved world's last step reported them already).
+void rebuildSensors(WorldData& world);
+// contact.cpp: whether the contact reports touches and hits, from its shapes.
+void setContactEventFlags(const WorldData& world, Contact& contact);
+// contact.cpp: the events gathered since the last step, sorted, become the
+// step's.
+void publishEvents(WorldData& world);
 // world.cpp: the shape's tight box where its body is now.
 AABB shapeAABB(const WorldData& world, std::int32_t shape);
 // world.cpp: the broad phase learns where the body went (every shape's proxy).

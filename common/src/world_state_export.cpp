@@ -20,7 +20,8 @@ SolverSettingsState solverSettingsOf(const WorldSettings& s) {
           s.enableSleep,
           s.linearSleepTolerance,
           s.timeToSleep,
-          s.enableContinuous};
+          s.enableContinuous,
+          s.hitEventThreshold};
 }
 
 template <class Elements>
@@ -71,6 +72,7 @@ ShapeSlotState exportShape(const ShapeSlot& shape) {
   out.staticFriction = shape.coefficients.staticFriction;
   out.dynamicFriction = shape.coefficients.dynamicFriction;
   out.rollingResistance = shape.coefficients.rollingResistance;
+  out.interaction = shape.interaction;
   out.proxyKey = shape.proxyKey;
   return out;
 }

@@ -60,7 +60,8 @@ std::string applySolverSettings(const SolverSettingsState& s, WorldSettings& set
               checkRange("restitutionThreshold", s.restitutionThreshold, 0, kMaxRate),
               checkRange("stickSpeed", s.stickSpeed, 0, kMaxRate),
               checkRange("linearSleepTolerance", s.linearSleepTolerance, 0, kMaxRate),
-              checkRange("timeToSleep", s.timeToSleep, 0, kMaxSleepTime));
+              checkRange("timeToSleep", s.timeToSleep, 0, kMaxSleepTime),
+              checkRange("hitEventThreshold", s.hitEventThreshold, 0, kMaxRate));
   if (!error.empty()) return "settings: " + error;
   settings.gravity = s.gravity;
   settings.subSteps = s.subSteps;
@@ -75,6 +76,7 @@ std::string applySolverSettings(const SolverSettingsState& s, WorldSettings& set
   settings.linearSleepTolerance = s.linearSleepTolerance;
   settings.timeToSleep = s.timeToSleep;
   settings.enableContinuous = s.enableContinuous;
+  settings.hitEventThreshold = s.hitEventThreshold;
   return {};
 }
 
@@ -134,6 +136,7 @@ ShapeSlot buildShape(const ShapeSlotState& s) {
   shape.material = s.material;
   shape.coefficients = resolveCoefficients(s.material, coefficientsOf(s));
   shape.rollingRadius = rollingRadiusOf(s.shape);
+  shape.interaction = s.interaction;
   shape.proxyKey = s.proxyKey;
   return shape;
 }
@@ -219,7 +222,7 @@ class StateImport {
   std::string run() {
     for (auto stage : {&StateImport::settings, &StateImport::bodies, &StateImport::shapes, &StateImport::broadPhase,
                        &StateImport::contacts, &StateImport::joints, &StateImport::fields, &StateImport::edges,
-                       &StateImport::awakeList, &StateImport::clock}) {
+                       &StateImport::awakeList, &StateImport::clock, &StateImport::sensors}) {
       if (std::string error = (this->*stage)(); !error.empty()) return error;
     }
     return {};
@@ -390,6 +393,8 @@ class StateImport {
     if (collideFunction(a.type(), b.type()) == nullptr || !shapesCanCollide(a.type(), b.type())) {
       return "the shapes must collide, in the order the collide table holds their types";
     }
+    if (a.interaction.isSensor || b.interaction.isSensor) return "a sensor has no contacts";
+    if (!shouldCollide(a.interaction.filter, b.interaction.filter)) return "the shapes' filters keep them apart";
     if (c.manifold.pointCount < 0 || c.manifold.pointCount > 2)
       return "a manifold has 0 to 2 points";
     std::string error =
@@ -443,6 +448,7 @@ class StateImport {
         contact.rollingResistance = c.rollingResistance;
         contact.pairKey = contactPairKey(c.shapeA, c.shapeB);
         contact.touching = c.touching;
+        setContactEventFlags(w, contact);
         if (!w.contactByPair.emplace(contact.pairKey, std::int32_t(slot)).second) {
           return at("contact slot", slot) + "a pair of shapes has one contact";
         }
@@ -621,6 +627,12 @@ class StateImport {
     if (!std::isfinite(state_.time) || state_.time < 0) return "time must be a finite number >= 0";
     next_->stepCount = state_.stepCount;
     next_->time = state_.time;
+    return {};
+  }
+
+  // Sensors see what the saved world's sensors saw after its last step.
+  std::string sensors() {
+    rebuildSensors(*next_);
     return {};
   }
 

@@ -181,7 +181,7 @@ void spawnBody(CommandContext& context, const v1::SpawnBody& command) {
     if (!shape.ok()) return context.fail(name + "." + shape.error);
     const auto material = wire::materialFromWire(command.parts(i).material());
     if (!material) return context.fail(name + ".material is not a material " + wire::materialRange());
-    parts.push_back({*shape.value, *material, options->materialOverride});
+    parts.push_back({*shape.value, *material, options->materialOverride, options->interaction});
   }
   BodyDef def = makeBodyDef(parts.front().shape, *position, *options);
   def.angle = *angle.value;

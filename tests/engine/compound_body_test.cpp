@@ -240,7 +240,7 @@ TEST(CompoundBody, SaveAndLoadStepOnBitIdentically) {
   BodyDef def;
   def.shape = Shape::makeCapsule(Vec2(-1, 0), Vec2(1, 0), Real(0.3));
   def.extraShapes.push_back(boxAt(Vec2(0, Real(0.6)), Real(0.4), Real(0.4)));
-  def.extraShapes.push_back({Shape::makeCircle(Real(0.35), Vec2(1, Real(0.5))), Material::Rubber, {}});
+  def.extraShapes.push_back({Shape::makeCircle(Real(0.35), Vec2(1, Real(0.5))), Material::Rubber, {}, {}});
   def.position = Vec2(0, 4);
   def.angle = Real(0.3);
   ASSERT_TRUE(world.createBody(def).ok());

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impulse/body.h"
+#include "impulse/events.h"
 #include "impulse/field.h"
 #include "impulse/joint.h"
 #include "impulse/limits.h"
@@ -59,6 +60,8 @@ struct WorldSettings {
   Real linearSleepTolerance = Real(0.05);
   Real timeToSleep = Real(0.5);
   bool enableContinuous = true;
+  /// Touches that close faster than this (m/s) are hits (ContactHitEvent).
+  Real hitEventThreshold = 1;
   /// Bodies may not be created with a centre outside these bounds.
   AABB bounds{Vec2(-25, -25), Vec2(50, 45)};
   /// Hard cap on live bodies (the server lowers it).
@@ -76,6 +79,7 @@ struct StepProfile {
   double solve = 0;       ///< contact solver and integration
   double continuous = 0;  ///< time of impact for fast bodies
   double sleep = 0;       ///< islands and sleeping
+  double sensors = 0;     ///< sensor overlaps
   double total = 0;
   /// Manifolds the narrow phase recomputed; contacts whose bodies have not
   /// moved keep theirs.
@@ -139,6 +143,13 @@ class World {
   InputResult destroyShape(ShapeId id);
   /// The body that carries the shape.
   std::optional<BodyId> shapeBody(ShapeId id) const;
+  /// The shape's filter, sensor flag and events.
+  std::optional<ShapeInteraction> shapeInteraction(ShapeId id) const;
+  /// Changes what the shape collides with, whether it is a sensor and the
+  /// events it asks for, from the next step on: contacts the new filter
+  /// forbids (all of them, for a new sensor) end now, and pairs it allows
+  /// are found in the next step. Wakes the body. Refused for an unknown id.
+  InputResult setShapeInteraction(ShapeId id, const ShapeInteraction& interaction);
   int shapeCount() const;
   /// Removes a body and wakes what touched it. False for an unknown id.
   bool destroyBody(BodyId id);
@@ -215,6 +226,9 @@ class World {
   void step(Real dt);
   /// Bodies the last step removed for leaving the bounds far behind.
   std::span<const BodyId> escapedBodies() const;
+  /// The last step's events (impulse/events.h), contact ends caused by
+  /// removals since the step before it included; valid until the next step.
+  const StepEvents& events() const;
   /// What the step guard did (repairs and clamps since creation).
   const StepGuardReport& guardReport() const;
 

@@ -49,6 +49,7 @@ struct SolverSettingsState {
   Real linearSleepTolerance = 0;
   Real timeToSleep = 0;
   bool enableContinuous = true;
+  Real hitEventThreshold = 1;
 };
 
 /// One shape slot. A free slot keeps only its generation.
@@ -66,6 +67,7 @@ struct ShapeSlotState {
   Real staticFriction = 0;
   Real dynamicFriction = 0;
   Real rollingResistance = 0;
+  ShapeInteraction interaction;
   std::int32_t proxyKey = -1;
 };
 

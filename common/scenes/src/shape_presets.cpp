@@ -110,7 +110,7 @@ constexpr Real kTumblerSpeed = Real(0.6);  // rad/s, anticlockwise
 std::vector<ShapeDef> tumblerWalls() {
   const Real h = kTumblerHalfSize, t = kTumblerWall;
   auto wall = [](Vec2 centre, Real halfWidth, Real halfHeight) {
-    ShapeDef def{translated(Shape::makePolygon(makeBox(halfWidth, halfHeight)), centre), Material::Metal, {}};
+    ShapeDef def{translated(Shape::makePolygon(makeBox(halfWidth, halfHeight)), centre), Material::Metal, {}, {}};
     return def;
   };
   return {wall(Vec2(0, -h), h + t, t), wall(Vec2(0, h), h + t, t), wall(Vec2(-h, 0), t, h - t),
@@ -201,7 +201,7 @@ void addRagdoll(World& world, const Vec2& hips) {
   // The head rides on the torso's body as a second shape: a compound body.
   world.createShape(parts[kTorso], {Shape::makeCircle(Real(0.2), hips + Vec2(0, Real(1.0)) -
                                                                      world.bodyState(parts[kTorso])->position),
-                                    Material::Wood, {}});
+                                    Material::Wood, {}, {}});
   for (const Hinge& hinge : kHinges) {
     RevoluteJointSettings limits{.enableLimit = true, .lowerAngle = hinge.lower, .upperAngle = hinge.upper};
     world.createJoint({parts[std::size_t(hinge.a)], parts[std::size_t(hinge.b)], hips + hinge.pivot,
