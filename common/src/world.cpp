@@ -514,20 +514,6 @@ InputResult World::setTargetTransform(BodyId id, const Vec2& position, Real angl
   return setVelocity(id, linear, turn / dt);
 }
 
-std::optional<BodyId> World::queryPoint(const Vec2& point) const {
-  if (!isFinite(point)) return std::nullopt;
-  const WorldData& w = *impl_;
-  std::optional<std::int32_t> best;
-  w.broadPhase.query(AABB{point, point}, [&](std::int32_t shape) {
-    const std::int32_t slot = w.shapes[shape].body;
-    bool newer = !best || w.bodies[slot].creationOrder > w.bodies[*best].creationOrder;
-    if (newer && containsPoint(w.shapes[shape].shape, w.bodies[slot].transform, point)) best = slot;
-    return true;
-  });
-  if (!best) return std::nullopt;
-  return w.idOf(*best);
-}
-
 void World::step(Real dt) {
   WorldData& w = *impl_;
   if (!(dt > 0) || !isFinite(dt)) return;

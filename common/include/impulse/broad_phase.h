@@ -68,6 +68,19 @@ class BroadPhase {
     }
   }
 
+  /// DynamicTree::rayCast through both trees, the max fraction carried from
+  /// one to the next; clip(userValue, maxFraction) returns the new one.
+  template <typename Clip>
+  void rayCast(DynamicTree::Ray ray, Clip&& clip) const {
+    for (const DynamicTree& tree : trees_) {
+      tree.rayCast(ray, [&](std::int32_t node, Real maxFraction) {
+        ray.maxFraction = clip(tree.userValue(node), maxFraction);
+        return ray.maxFraction;
+      });
+      if (ray.maxFraction < 0) return;
+    }
+  }
+
   int proxyCount() const;
 
   /// Both trees (static, movable) and the queue of proxies waiting for a

@@ -2,7 +2,9 @@
 /// Dynamic AABB tree (bounding volume hierarchy) with incremental insert and
 /// remove, balanced by rotations, nodes in one contiguous array.
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "impulse/math.h"
@@ -30,6 +32,24 @@ class DynamicTree {
   /// deterministic order; visit returns false to stop.
   template <typename Visit>
   void query(const AABB& box, Visit&& visit) const;
+
+  /// A segment origin -> origin + maxFraction * translation, or a box of
+  /// half-size `extent` centred on it and swept along it (a shape cast).
+  struct Ray {
+    Vec2 origin = Vec2::Zero();
+    Vec2 translation = Vec2::Zero();
+    Real maxFraction = 1;
+    Vec2 extent = Vec2::Zero();
+  };
+
+  /// Calls clip(node, maxFraction) for each leaf whose box (grown by the
+  /// ray's extent) the ray enters before its current max fraction, in a
+  /// deterministic order (not nearest first). clip returns the new max
+  /// fraction: the one it was given to go on, a smaller one to shorten the
+  /// ray (so a closest-hit search skips what lies beyond its best hit), a
+  /// negative one to stop.
+  template <typename Clip>
+  void rayCast(const Ray& ray, Clip&& clip) const;
 
   /// A leaf or an inner node as the tree keeps it (height: leaf 0, free -1;
   /// parent is the free-list link of a free node).
@@ -96,6 +116,57 @@ void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
     if (!node.box.overlaps(queryBox)) continue;
     if (node.isLeaf()) {
       if (!visit(index)) return;
+    } else {
+      stack_.push_back(node.child1);
+      stack_.push_back(node.child2);
+    }
+  }
+}
+
+// Where the segment origin + t * translation, t in [0, maxFraction], is
+// inside the box: [enter, exit], or enter > exit when it misses (slab test).
+struct SlabSpan {
+  Real enter = 0;
+  Real exit = 0;
+};
+
+inline SlabSpan clipToBox(const Vec2& origin, const Vec2& translation, Real maxFraction,
+                          const AABB& box) {
+  SlabSpan span{0, maxFraction};
+  for (int axis = 0; axis < 2; ++axis) {
+    const Real start = origin[axis];
+    const Real step = translation[axis];
+    if (step == 0) {
+      // Parallel to this slab: inside it all along, or never.
+      if (start < box.lower[axis] || start > box.upper[axis]) return {1, 0};
+      continue;
+    }
+    Real near = (box.lower[axis] - start) / step;
+    Real far = (box.upper[axis] - start) / step;
+    if (near > far) std::swap(near, far);
+    span.enter = std::max(span.enter, near);
+    span.exit = std::min(span.exit, far);
+    if (span.enter > span.exit) return span;
+  }
+  return span;
+}
+
+template <typename Clip>
+void DynamicTree::rayCast(const Ray& ray, Clip&& clip) const {
+  if (root_ == kNull || ray.maxFraction < 0) return;
+  Real maxFraction = ray.maxFraction;
+  stack_.clear();
+  stack_.push_back(root_);
+  while (!stack_.empty()) {
+    std::int32_t index = stack_.back();
+    stack_.pop_back();
+    const Node& node = nodes_[index];
+    const AABB grown{node.box.lower - ray.extent, node.box.upper + ray.extent};
+    const SlabSpan span = clipToBox(ray.origin, ray.translation, maxFraction, grown);
+    if (span.enter > span.exit) continue;
+    if (node.isLeaf()) {
+      maxFraction = clip(index, maxFraction);
+      if (maxFraction < 0) return;
     } else {
       stack_.push_back(node.child1);
       stack_.push_back(node.child2);

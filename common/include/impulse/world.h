@@ -19,6 +19,7 @@
 #include "impulse/joint.h"
 #include "impulse/limits.h"
 #include "impulse/math.h"
+#include "impulse/query.h"
 #include "impulse/shape.h"
 #include "impulse/world_state.h"
 
@@ -217,8 +218,53 @@ class World {
   /// The field, or nullptr for an unknown id.
   const ForceField* field(FieldId id) const;
 
-  /// The body whose shape contains the point (the topmost-created if several).
-  std::optional<BodyId> queryPoint(const Vec2& point) const;
+  /// The body whose shape contains the point (the topmost-created if
+  /// several), among the shapes the filter accepts; sensors are not seen.
+  /// Nothing for a point that is not finite.
+  std::optional<BodyId> queryPoint(const Vec2& point, const QueryFilter& filter = {}) const;
+
+  /// Queries (impulse/query.h): every one goes through the broad phase,
+  /// skips sensors and the shapes the filter refuses, and refuses bad input
+  /// (the error names the field) without touching the world.
+  ///
+  /// The first shape the segment origin -> origin + translation enters;
+  /// equal fractions go to the lower shape slot. A ray that starts inside a
+  /// shape does not hit it; a segment is hit from either side, a chain
+  /// segment only from its collision side (the right of the way the chain
+  /// runs). Refused for a non-finite origin or translation and a
+  /// zero-length translation.
+  CastResult castRayClosest(const Vec2& origin, const Vec2& translation,
+                            const QueryFilter& filter = {}) const;
+  /// Every shape the ray enters, nearest first (equal fractions by shape
+  /// slot), at most maxHits (1..kMaxQueryResults) of them: the nearest, with
+  /// `truncated` set when there were more. Refused as castRayClosest is, and
+  /// for maxHits out of range.
+  QueryResult<CastHit> castRay(const Vec2& origin, const Vec2& translation,
+                               const QueryFilter& filter = {}, int maxHits = kMaxQueryResults) const;
+  /// A circle, capsule or polygon (in a frame of its own, placed at `start`)
+  /// swept along `translation` without turning: the first shape it touches,
+  /// within kShapeCastTolerance (the pose at `fraction` is that close to
+  /// touching and never overlapping). A cast that starts overlapping a shape
+  /// hits it at fraction 0. Chain segments are hit from their collision side
+  /// only. Refused for a shape that validateShape refuses, a segment or
+  /// chain segment, a non-finite pose or translation and a zero-length
+  /// translation.
+  CastResult castShape(const Shape& shape, const Transform& start, const Vec2& translation,
+                       const QueryFilter& filter = {}) const;
+  /// The shapes whose tight bounding box (computeAABB where the body is
+  /// now) overlaps the box, in shape slot order, at most maxResults
+  /// (1..kMaxQueryResults). Refused for a box that is not finite or whose
+  /// lower corner is above or right of its upper one.
+  QueryResult<ShapeId> overlapAABB(const AABB& box, const QueryFilter& filter = {},
+                                   int maxResults = kMaxQueryResults) const;
+  /// The shapes that truly overlap the shape placed at `transform` (their
+  /// separation is negative: touching is not overlapping), in shape slot
+  /// order, at most maxResults (1..kMaxQueryResults). Chain segments count
+  /// from either side. Refused for a shape that validateShape refuses and a
+  /// transform that is not finite.
+  QueryResult<ShapeId> overlapShape(const Shape& shape, const Transform& transform,
+                                    const QueryFilter& filter = {},
+                                    int maxResults = kMaxQueryResults) const;
 
   /// Advances the world by dt seconds (sub-stepped internally). Ends with the
   /// step guard: no non-finite number and no speed past the limits leaves a
