@@ -1,5 +1,7 @@
 #include "arguments.h"
 
+#include <charconv>
+
 #include "impulse/wire/convert.h"
 #include "impulse/wire/parse_number.h"
 
@@ -94,13 +96,61 @@ bool Arguments::bodyProperty(std::string_view word, client::SpawnOptions& option
   return false;
 }
 
+namespace {
+
+// N in decimal, or hex after 0x.
+template <class T>
+std::optional<T> parseBits(std::string_view text) {
+  if (text.starts_with("0x")) {
+    T value{};
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data() + 2, end, value, 16);
+    if (text.size() == 2 || error != std::errc() || stop != end) return std::nullopt;
+    return value;
+  }
+  return wire::parseNumber<T>(text);
+}
+
+constexpr std::string_view kFlagWords = "sensor, contact-events, hit-events, no-sensor-events";
+
+}  // namespace
+
+bool Arguments::shapeFlag(std::string_view word, ShapeInteraction& flags) {
+  if (word == "sensor") return flags.isSensor = true;
+  if (word == "contact-events") return flags.enableContactEvents = true;
+  if (word == "hit-events") return flags.enableHitEvents = true;
+  if (word == "no-sensor-events") {
+    flags.enableSensorEvents = false;
+    return true;
+  }
+  const auto equals = word.find('=');
+  const std::string_view name = word.substr(0, equals);
+  if (equals == std::string_view::npos || (name != "category" && name != "mask" && name != "group")) return false;
+  const std::string_view number = word.substr(equals + 1);
+  if (name == "group") {
+    const auto group = parseBits<std::int32_t>(number);
+    if (group) flags.filter.groupIndex = *group;
+    if (!group) note(quoted(word, " needs a whole number"));
+    return bool(group);
+  }
+  const auto bits = parseBits<std::uint64_t>(number);
+  if (!bits) {
+    note(quoted(word, " needs a 64-bit number (decimal or 0x hex)"));
+    return false;
+  }
+  (name == "category" ? flags.filter.categoryBits : flags.filter.maskBits) = *bits;
+  return true;
+}
+
 bool Arguments::bodyFlags(std::size_t from, client::SpawnOptions& options) {
   for (std::size_t i = from; i < words_.size(); ++i) {
     const std::string_view word = words_[i];
+    if (shapeFlag(word, options.flags)) continue;
+    if (!problem_.empty()) return false;
     if (word.find('=') != std::string_view::npos) {
       if (!bodyProperty(word, options)) {
         note("unexpected " + quoted(word, " (density=, friction=, restitution=, damping=, "
-                                          "angular-damping= or gravity-scale=)"));
+                                          "angular-damping=, gravity-scale=, category=, mask= or group=)"));
         return false;
       }
     } else if (word == "static") {
@@ -112,7 +162,7 @@ bool Arguments::bodyFlags(std::size_t from, client::SpawnOptions& options) {
     } else if (const auto material = wire::materialFromName(word)) {
       options.material = *material;
     } else {
-      note("unexpected " + quoted(word, " (material, static, kinematic or nograv)"));
+      note("unexpected " + quoted(word, " (material, static, kinematic, nograv, " + std::string(kFlagWords) + ")"));
       return false;
     }
   }

@@ -34,6 +34,11 @@ class Arguments {
   /// friction, restitution, damping, angular-damping, gravity-scale) in any
   /// order from word `from` on.
   bool bodyFlags(std::size_t from, client::SpawnOptions& options);
+  /// Whether `word` is a shape flag (sensor, contact-events, hit-events,
+  /// no-sensor-events) or filter word (category=N, mask=N, group=N, N
+  /// decimal or 0x hex), set in `flags`; a filter word without its number
+  /// is noted.
+  bool shapeFlag(std::string_view word, ShapeInteraction& flags);
 
   /// Keeps the first problem found on the line.
   void note(std::string problem);

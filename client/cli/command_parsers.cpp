@@ -232,6 +232,81 @@ std::optional<std::tuple<std::uint32_t, client::Point, double>> parseVelocity(Ar
   return std::tuple{*id, client::Point{*vx, *vy}, *angular};
 }
 
+// flags ID WORD...: every word a shape flag or filter word.
+std::optional<std::tuple<std::uint32_t, ShapeInteraction>> parseShapeFlags(Arguments& line) {
+  const auto id = line.idAt(1);
+  if (!id) return std::nullopt;
+  ShapeInteraction flags;
+  for (std::size_t i = 2; i < line.size(); ++i) {
+    if (line.shapeFlag(line.word(i), flags)) continue;
+    line.note("unexpected " + quoted(line.word(i), " (sensor, contact-events, hit-events, no-sensor-events, "
+                                                   "category=N, mask=N or group=N)"));
+    return std::nullopt;
+  }
+  return std::tuple{*id, flags};
+}
+
+// category=N and mask=N words from `from` on.
+bool readQueryFilter(Arguments& line, std::size_t from, QueryFilter& filter) {
+  for (std::size_t i = from; i < line.size(); ++i) {
+    const std::string_view word = line.word(i);
+    ShapeInteraction read;
+    read.filter.categoryBits = filter.categoryBits;
+    read.filter.maskBits = filter.maskBits;
+    if ((word.starts_with("category=") || word.starts_with("mask=")) && line.shapeFlag(word, read)) {
+      filter = {read.filter.categoryBits, read.filter.maskBits};
+      continue;
+    }
+    line.note("unexpected " + quoted(word, " (category=N or mask=N)"));
+    return false;
+  }
+  return true;
+}
+
+std::optional<std::tuple<client::Point, client::Point, bool, QueryFilter, std::uint32_t>> parseRayCast(
+    Arguments& line) {
+  const auto x = line.numberAt(1), y = line.numberAt(2), dx = line.numberAt(3), dy = line.numberAt(4);
+  if (!x || !y || !dx || !dy) return std::nullopt;
+  const bool all = line.size() > 5 && line.word(5) == "all";
+  QueryFilter filter;
+  if (!readQueryFilter(line, all ? 6 : 5, filter)) return std::nullopt;
+  return std::tuple{client::Point{*x, *y}, client::Point{*dx, *dy}, all, filter, std::uint32_t(0)};
+}
+
+std::optional<std::tuple<client::Point, double, client::BodyPart, client::Point, QueryFilter>> parseShapeCast(
+    Arguments& line) {
+  const auto x = line.numberAt(1), y = line.numberAt(2), angle = line.numberAt(3);
+  if (!x || !y || !angle) return std::nullopt;
+  std::size_t i = 4;
+  const auto part = line.size() > i ? readBodyPart(line, i) : std::nullopt;
+  if (!part) {
+    line.note("no PART (circle CX CY R, box CX CY HW HH or capsule X1 Y1 X2 Y2 R)");
+    return std::nullopt;
+  }
+  const auto dx = line.numberAt(i), dy = line.numberAt(i + 1);
+  if (!dx || !dy) return std::nullopt;
+  QueryFilter filter;
+  if (!readQueryFilter(line, i + 2, filter)) return std::nullopt;
+  return std::tuple{client::Point{*x, *y}, *angle, *part, client::Point{*dx, *dy}, filter};
+}
+
+std::optional<std::tuple<client::Point, client::Point, QueryFilter, std::uint32_t>> parseOverlap(Arguments& line) {
+  const auto x1 = line.numberAt(1), y1 = line.numberAt(2), x2 = line.numberAt(3), y2 = line.numberAt(4);
+  if (!x1 || !y1 || !x2 || !y2) return std::nullopt;
+  QueryFilter filter;
+  if (!readQueryFilter(line, 5, filter)) return std::nullopt;
+  return std::tuple{client::Point{*x1, *y1}, client::Point{*x2, *y2}, filter, std::uint32_t(0)};
+}
+
+std::optional<std::tuple<bool>> parseEvents(Arguments& line) {
+  const auto setting = line.size() > 1 ? line.word(1) : std::string_view();
+  if ((setting != "on" && setting != "off") || !line.maxWords(2)) {
+    line.note("events takes on or off");
+    return std::nullopt;
+  }
+  return std::tuple{setting == "on"};
+}
+
 std::optional<std::tuple<std::uint64_t, bool>> parsePing(Arguments& line) {
   if (!parseNoArguments(line)) return std::nullopt;
   const bool wantStateHash = false;

@@ -121,6 +121,35 @@ std::string sceneSavedReport(std::size_t line, std::string_view command, const s
   return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
+namespace {
+
+// A query's answer: hits (ray and shape casts) or shapes (overlap).
+Json queryJson(const v1::QueryResult& result, bool listsShapes) {
+  Json out = Json::object();
+  if (!listsShapes) {
+    Json hits = Json::array();
+    for (const auto& hit : result.hits()) {
+      hits.push_back({{"shape", hit.shape_id()},
+                      {"body", hit.body_id()},
+                      {"point", {number(hit.point().x()), number(hit.point().y())}},
+                      {"normal", {number(hit.normal().x()), number(hit.normal().y())}},
+                      {"fraction", number(hit.fraction())}});
+    }
+    out["hits"] = std::move(hits);
+  }
+  if (listsShapes) {
+    Json shapes = Json::array();
+    for (int i = 0; i < result.shape_ids_size(); ++i) {
+      shapes.push_back({{"shape", result.shape_ids(i)}, {"body", result.body_ids(i)}});
+    }
+    out["shapes"] = std::move(shapes);
+  }
+  if (result.truncated()) out["truncated"] = true;
+  return out;
+}
+
+}  // namespace
+
 std::string replyReport(std::size_t line, std::string_view command,
                         const v1::ServerMessage& reply) {
   Json report = lineReport(line, command);
@@ -151,6 +180,9 @@ std::string replyReport(std::size_t line, std::string_view command,
     body["rolling_resistance"] = number(info.rolling_resistance());
     report["ok"] = true;
     report["body"] = std::move(body);
+  } else if (reply.has_query_result()) {
+    report["ok"] = true;
+    report.update(queryJson(reply.query_result(), command == "overlap"));
   } else if (reply.has_joint_info()) {
     report["ok"] = true;
     report["joint"] = jointJson(reply.joint_info());
@@ -233,6 +265,48 @@ std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot, std::
     report["title"] = snapshot.preset().title();
   }
   return report.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+namespace {
+
+Json pointJson(const v1::Vec2& v) { return {number(v.x()), number(v.y())}; }
+
+Json contactJson(const v1::ContactEvent& e) {
+  return {{"body_a", e.body_a()}, {"body_b", e.body_b()}, {"shape_a", e.shape_a()}, {"shape_b", e.shape_b()}};
+}
+
+Json hitJson(const v1::HitEvent& e) {
+  return {{"body_a", e.body_a()},        {"body_b", e.body_b()},           {"shape_a", e.shape_a()},
+          {"shape_b", e.shape_b()},      {"point", pointJson(e.point())}, {"normal", pointJson(e.normal())},
+          {"speed", number(e.approach_speed())}};
+}
+
+Json sensorJson(const v1::SensorEvent& e) {
+  return {{"sensor_body", e.sensor_body()},
+          {"visitor_body", e.visitor_body()},
+          {"sensor_shape", e.sensor_shape()},
+          {"visitor_shape", e.visitor_shape()}};
+}
+
+template <class List, class ToJson>
+void addList(Json& out, const char* name, const List& list, ToJson toJson) {
+  if (list.empty()) return;
+  Json items = Json::array();
+  for (const auto& item : list) items.push_back(toJson(item));
+  out[name] = std::move(items);
+}
+
+}  // namespace
+
+std::string eventsReport(const v1::Events& events) {
+  Json body = {{"tick", events.tick()}, {"sequence", events.sequence()}};
+  addList(body, "contact_begins", events.contact_begins(), contactJson);
+  addList(body, "contact_ends", events.contact_ends(), contactJson);
+  addList(body, "hits", events.hits(), hitJson);
+  addList(body, "sensor_begins", events.sensor_begins(), sensorJson);
+  addList(body, "sensor_ends", events.sensor_ends(), sensorJson);
+  if (events.truncated()) body["truncated"] = true;
+  return Json{{"events", std::move(body)}}.dump();
 }
 
 }  // namespace impulse::cli

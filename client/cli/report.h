@@ -37,5 +37,9 @@ std::string sceneSavedReport(std::size_t line, std::string_view command, const s
                              std::size_t bytes, const std::string& error);
 std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror);
 std::string snapshotReport(std::size_t line, const v1::Snapshot& snapshot, std::size_t frameBytes);
+/// {"events":{"tick":T,"sequence":S,"contact_begins":[...],...}}: one line
+/// per Events message received after `events on`, lists that are empty left
+/// out.
+std::string eventsReport(const v1::Events& events);
 
 }  // namespace impulse::cli

@@ -81,6 +81,7 @@ std::optional<std::string> numberValue(std::string_view text) {
 ScriptRunner::ScriptRunner(client::Client& client, Milliseconds timeout)
     : client_(client), timeout_(timeout) {
   client_.onSnapshot([this](const v1::Snapshot&, std::size_t bytes) { lastSnapshotBytes_ = bytes; });
+  client_.onEvents([](const v1::Events& events) { printReport(eventsReport(events)); });
   sentMark_ = reportedMark_ = client_.mirror().snapshotsApplied();
 }
 

@@ -23,6 +23,8 @@ std::uint64_t replyId(const v1::ServerMessage& message) {
       return message.room_list().request_id();
     case v1::ServerMessage::kSceneData:
       return message.scene_data().request_id();
+    case v1::ServerMessage::kQueryResult:
+      return message.query_result().request_id();
     default:
       return 0;
   }
@@ -182,6 +184,11 @@ void Client::handle(v1::ServerMessage&& message, std::size_t frameBytes) {
       lastSnapshot_ = std::move(*message.mutable_snapshot());
       return;
     }
+    case v1::ServerMessage::kEvents:
+      if (eventsCallback_) eventsCallback_(message.events());
+      if (events_.size() == kMaxKeptEvents) events_.pop_front();
+      events_.push_back(std::move(*message.mutable_events()));
+      return;
     case v1::ServerMessage::kError:
       failure_ = "server error: " + message.error().message();
       return;
@@ -227,6 +234,12 @@ std::size_t Client::poll(Duration timeout) {
   std::size_t handled = 0;
   while (receiveOne(deadline)) ++handled;
   return handled;
+}
+
+std::vector<v1::Events> Client::takeEvents() {
+  std::vector<v1::Events> taken(std::make_move_iterator(events_.begin()), std::make_move_iterator(events_.end()));
+  events_.clear();
+  return taken;
 }
 
 v1::Pong Client::ping(Duration timeout, bool wantStateHash) {

@@ -1,6 +1,7 @@
 #include "impulse/client/commands.h"
 
 #include "impulse/wire/convert.h"
+#include "impulse/wire/query_convert.h"
 
 namespace impulse::client {
 
@@ -24,6 +25,7 @@ void setOptions(const SpawnOptions& options, v1::BodyOptions* out) {
   out->set_linear_damping(options.linearDamping);
   out->set_angular_damping(options.angularDamping);
   if (options.gravityScale) out->set_gravity_scale(*options.gravityScale);
+  wire::toWire(options.flags, out->mutable_shape_flags());
 }
 
 // A CreateJoint with `ends` and `kind` in the oneof field `field` selects.
@@ -90,9 +92,7 @@ v1::ClientMessage spawnChain(std::span<const Point> points, bool loop, const Spa
 
 namespace {
 
-void setPart(const BodyPart& part, v1::ShapePart* out) {
-  out->set_material(wire::toWire(part.material));
-  v1::Shape* shape = out->mutable_shape();
+void setPartShape(const BodyPart& part, v1::Shape* shape) {
   switch (part.kind) {
     case BodyPart::Kind::Circle:
       shape->mutable_circle()->set_radius(part.radius);
@@ -114,6 +114,11 @@ void setPart(const BodyPart& part, v1::ShapePart* out) {
   }
 }
 
+void setPart(const BodyPart& part, v1::ShapePart* out) {
+  out->set_material(wire::toWire(part.material));
+  setPartShape(part, out->mutable_shape());
+}
+
 }  // namespace
 
 v1::ClientMessage spawnBody(Point position, double angle, std::span<const BodyPart> parts,
@@ -124,6 +129,40 @@ v1::ClientMessage spawnBody(Point position, double angle, std::span<const BodyPa
   command->set_angle(angle);
   for (const BodyPart& part : parts) setPart(part, command->add_parts());
   setOptions(options, command->mutable_options());
+  return message;
+}
+
+v1::ClientMessage rayCast(Point origin, Point translation, bool allHits, const QueryFilter& filter,
+                          std::uint32_t maxHits) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_ray_cast();
+  setPoint(origin, command->mutable_origin());
+  setPoint(translation, command->mutable_translation());
+  wire::toWire(filter, command->mutable_filter());
+  command->set_all_hits(allHits);
+  command->set_max_hits(maxHits);
+  return message;
+}
+
+v1::ClientMessage shapeCast(Point position, double angle, const BodyPart& shape, Point translation,
+                            const QueryFilter& filter) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_shape_cast();
+  setPartShape(shape, command->mutable_shape());
+  setPoint(position, command->mutable_position());
+  command->set_angle(angle);
+  setPoint(translation, command->mutable_translation());
+  wire::toWire(filter, command->mutable_filter());
+  return message;
+}
+
+v1::ClientMessage queryAabb(Point lower, Point upper, const QueryFilter& filter, std::uint32_t maxResults) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_query_aabb();
+  setPoint(lower, command->mutable_lower());
+  setPoint(upper, command->mutable_upper());
+  wire::toWire(filter, command->mutable_filter());
+  command->set_max_results(maxResults);
   return message;
 }
 
@@ -188,6 +227,20 @@ v1::ClientMessage setVelocity(std::uint32_t id, Point velocity, double angular) 
   command->set_body_id(id);
   setPoint(velocity, command->mutable_velocity());
   command->set_angular_velocity(angular);
+  return message;
+}
+
+v1::ClientMessage setShapeFlags(std::uint32_t id, const ShapeInteraction& flags) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_set_shape_flags();
+  command->set_body_id(id);
+  wire::toWire(flags, command->mutable_flags());
+  return message;
+}
+
+v1::ClientMessage subscribeEvents(bool enabled) {
+  v1::ClientMessage message;
+  message.mutable_subscribe_events()->set_enabled(enabled);
   return message;
 }
 

@@ -44,6 +44,8 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
     body.material = material.value_or(Material::Solid);
     body.isStatic = descriptor.is_static();
     body.ignoreGravity = descriptor.ignore_gravity();
+    body.flags = wire::shapeFlagsFromWire(descriptor.shape_flags());
+    body.shapeIds.assign(descriptor.shape_ids().begin(), descriptor.shape_ids().end());
     body.state.id = body.id;
     bodies_[descriptor.id()] = body;
   }

@@ -6,6 +6,7 @@
 #include "impulse/wire/convert.h"
 #include "impulse/wire/scene_convert.h"
 #include "impulse/wire/field_convert.h"
+#include "impulse/wire/query_convert.h"
 
 namespace impulse::server {
 
@@ -280,6 +281,20 @@ void setVelocity(CommandContext& context, const v1::SetVelocity& command) {
   context.succeed();
 }
 
+void setShapeFlags(CommandContext& context, const v1::SetShapeFlags& command) {
+  const BodyId id{command.body_id()};
+  const ShapeInteraction flags = wire::shapeFlagsFromWire(command.flags());
+  if (InputResult set = context.simulation.setShapeFlags(id, flags); !set) {
+    return context.fail("set_shape_flags: " + set.error);
+  }
+  context.succeed();
+}
+
+void subscribeEvents(CommandContext& context, const v1::SubscribeEvents& command) {
+  context.result().set_ok(true);
+  context.outcome.eventSubscription = command.enabled();
+}
+
 void setPaused(CommandContext& context, const v1::SetPaused& command) {
   context.simulation.setPaused(command.paused());
   context.succeed();
@@ -309,6 +324,79 @@ void queryBody(CommandContext& context, const v1::QueryBody& command) {
   info->set_request_id(context.message.request_id());
   wire::toWire(*description, *state, info);
   context.outcome.reply = std::move(reply);
+}
+
+namespace {
+
+// A query's reply, with the request id set.
+v1::QueryResult& queryReply(CommandContext& context) {
+  auto* reply = context.outcome.reply.mutable_query_result();
+  reply->set_request_id(context.message.request_id());
+  return *reply;
+}
+
+// The wire's "0 means the most" result count.
+int resultLimit(std::uint32_t asked) {
+  return asked == 0 ? kMaxQueryResults : int(std::min<std::uint32_t>(asked, std::uint32_t(kMaxQueryResults) + 1));
+}
+
+}  // namespace
+
+void rayCast(CommandContext& context, const v1::RayCast& command) {
+  const auto origin = requiredPoint(context, command.has_origin(), command.origin(), "ray_cast.origin");
+  if (!origin) return;
+  const auto translation =
+      requiredPoint(context, command.has_translation(), command.translation(), "ray_cast.translation");
+  if (!translation) return;
+  const QueryFilter filter = wire::queryFilterFromWire(command.filter());
+  const World& world = context.simulation.world();
+  if (!command.all_hits()) {
+    const CastResult cast = world.castRayClosest(*origin, *translation, filter);
+    if (!cast.ok()) return context.fail("ray_cast: " + cast.error);
+    v1::QueryResult& reply = queryReply(context);
+    if (cast.hit) wire::toWire(*cast.hit, reply.add_hits());
+    return;
+  }
+  const QueryResult<CastHit> cast = world.castRay(*origin, *translation, filter, resultLimit(command.max_hits()));
+  if (!cast.ok()) return context.fail("ray_cast: " + cast.error);
+  v1::QueryResult& reply = queryReply(context);
+  for (const CastHit& hit : cast.results) wire::toWire(hit, reply.add_hits());
+  reply.set_truncated(cast.truncated);
+}
+
+void shapeCast(CommandContext& context, const v1::ShapeCast& command) {
+  const auto shape = wire::shapeFromWire(command.shape());
+  if (!shape.ok()) return context.fail("shape_cast." + shape.error);
+  const auto position = requiredPoint(context, command.has_position(), command.position(), "shape_cast.position");
+  if (!position) return;
+  const auto angle = wire::realFromWire(command.angle(), "shape_cast.angle");
+  if (!angle.ok()) return context.fail(angle.error);
+  const auto translation =
+      requiredPoint(context, command.has_translation(), command.translation(), "shape_cast.translation");
+  if (!translation) return;
+  const Transform start{*position, Rot::fromAngle(*angle.value)};
+  const CastResult cast = context.simulation.world().castShape(*shape.value, start, *translation,
+                                                               wire::queryFilterFromWire(command.filter()));
+  if (!cast.ok()) return context.fail("shape_cast: " + cast.error);
+  v1::QueryResult& reply = queryReply(context);
+  if (cast.hit) wire::toWire(*cast.hit, reply.add_hits());
+}
+
+void queryAabb(CommandContext& context, const v1::QueryAABB& command) {
+  const auto lower = requiredPoint(context, command.has_lower(), command.lower(), "query_aabb.lower");
+  if (!lower) return;
+  const auto upper = requiredPoint(context, command.has_upper(), command.upper(), "query_aabb.upper");
+  if (!upper) return;
+  const World& world = context.simulation.world();
+  const QueryResult<ShapeId> found = world.overlapAABB(AABB{*lower, *upper}, wire::queryFilterFromWire(command.filter()),
+                                                       resultLimit(command.max_results()));
+  if (!found.ok()) return context.fail("query_aabb: " + found.error);
+  v1::QueryResult& reply = queryReply(context);
+  for (const ShapeId shape : found.results) {
+    reply.add_shape_ids(shape.value);
+    reply.add_body_ids(world.shapeBody(shape).value_or(BodyId{}).value);
+  }
+  reply.set_truncated(found.truncated);
 }
 
 void ping(CommandContext& context, const v1::Ping& command) {

@@ -137,6 +137,7 @@ void Room::leave(Session& session) {
   rateWaitsByLeavers_ += session.rateWaits();
   onStrand([this, client = session.id()] {
     clients_.erase(client);
+    subscribeEvents(client, false);
     commands_.dropClient(client);
     std::erase_if(steps_, [&](const StepJob& job) { return job.client() == client; });
   });
@@ -193,6 +194,8 @@ void Room::deliver(Batch& batch) {
       deliverReply(*reply);
     } else if (auto* broadcast = std::get_if<Broadcast>(&item)) {
       deliverBroadcast(*broadcast);
+    } else if (auto* events = std::get_if<EventsBroadcast>(&item)) {
+      deliverEvents(*events);
     } else {
       deliverFullSnapshot(std::get<FullSnapshot>(item));
     }
@@ -249,6 +252,12 @@ void Room::deliverFullSnapshot(FullSnapshot& snapshot) {
   }
 }
 
+void Room::deliverEvents(const EventsBroadcast& events) {
+  for (const std::uint32_t client : events.clients) {
+    if (const auto session = member(client)) session->offerEvents(events.frame);
+  }
+}
+
 // --------------------------------------------------------------------- ticks
 
 void Room::scheduleTick(Clock::time_point at) {
@@ -301,6 +310,7 @@ void Room::runTick() {
     // Below 1x most ticks run no step: they have nothing new to send.
     if (stepped > 0 && snapshotSlot() != lastSnapshotSlot_) broadcastSnapshot();
   }
+  broadcastEvents();
   tickTimes_.record(millisecondsSince(start));
   logStats(Clock::now());
 }
@@ -353,6 +363,7 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
   }
   auto outcome = applyCommand(simulation_, message, limits_);
   ownership_.recordOutcome(message, outcome.reply, client, simulation_);
+  if (outcome.eventSubscription) subscribeEvents(client, *outcome.eventSubscription);
   if (outcome.ticksToStep > 0) {
     // The client's later commands wait for its Step, keeping their order.
     commands_.hold(client);
@@ -395,6 +406,20 @@ void Room::broadcastSnapshot() {
   // The plain delta's size when there is one (Pong's last_snapshot_bytes).
   lastSnapshotBytes_ = (delta ? delta : quantizedDelta)->size();
   outbox_.emplace_back(Broadcast{snapshotSequence_, std::move(delta), std::move(quantizedDelta)});
+}
+
+void Room::broadcastEvents() {
+  for (const v1::ServerMessage& message : simulation_.takeEvents()) {
+    outbox_.emplace_back(EventsBroadcast{wire::encodeSharedFrame(message), eventSubscribers_});
+  }
+}
+
+void Room::subscribeEvents(std::uint32_t client, bool enabled) {
+  const auto place = std::ranges::lower_bound(eventSubscribers_, client);
+  const bool listed = place != eventSubscribers_.end() && *place == client;
+  if (enabled && !listed) eventSubscribers_.insert(place, client);
+  if (!enabled && listed) eventSubscribers_.erase(place);
+  simulation_.setEventsWanted(!eventSubscribers_.empty());
 }
 
 v1::ServerStats Room::stats(bool withStateHash) {

@@ -298,13 +298,26 @@ void Session::takeFullSnapshot(SharedFrame frame, std::uint64_t sequence) {
 
 void Session::push(Outgoing item) {
   if (!acceptingTraffic()) return;
+  if (!item.snapshot && !replyFits(item.frame->size())) {
+    return close("not reading its replies (" + std::to_string(queuedReplyBytes_ + item.frame->size()) +
+                 " bytes queued)");
+  }
+  enqueue(std::move(item));
+}
+
+void Session::offerEvents(const SharedFrame& frame) {
+  if (!acceptingTraffic()) return;
+  if (!replyFits(frame->size())) {
+    ++eventsDropped_;
+    return;
+  }
+  enqueue({frame, false});
+}
+
+void Session::enqueue(Outgoing item) {
   if (item.snapshot) {
     unsentSnapshot_ = true;
   } else {
-    if (!replyFits(item.frame->size())) {
-      return close("not reading its replies (" +
-                   std::to_string(queuedReplyBytes_ + item.frame->size()) + " bytes queued)");
-    }
     replyBytesOf(item.frame->size()) += item.frame->size();
   }
   queue_.push_back(std::move(item));

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "impulse/wire/event_convert.h"
 #include "impulse/wire/scene_convert.h"
 
 namespace impulse::server {
@@ -45,6 +46,22 @@ void Simulation::step() {
   recordRemovedJoints();
   bodiesLeftWorld_ += world_.escapedBodies().size();
   ++version_;
+  recordEvents();
+}
+
+void Simulation::recordEvents() {
+  if (!eventsWanted_ || world_.events().empty()) return;
+  ++eventSequence_;
+  if (pendingEvents_.size() >= kMaxPendingEventMessages) return;
+  wire::toWire(world_.events(), tick_, eventSequence_, pendingEvents_.emplace_back().mutable_events());
+}
+
+void Simulation::setEventsWanted(bool wanted) { eventsWanted_ = wanted; }
+
+std::vector<v1::ServerMessage>& Simulation::takeEvents() {
+  takenEvents_.clear();
+  takenEvents_.swap(pendingEvents_);
+  return takenEvents_;
 }
 
 std::string Simulation::spawnRefusal() const {
@@ -153,6 +170,15 @@ InputResult Simulation::setVelocity(BodyId id, const Vec2& linear, Real angular)
   InputResult set = world_.setVelocity(id, linear, angular);
   if (set) changedBody(id);
   return set;
+}
+
+InputResult Simulation::setShapeFlags(BodyId id, const ShapeInteraction& flags) {
+  const std::optional<BodyDescription> description = world_.bodyDescription(id);
+  if (!description) return {"unknown body id " + std::to_string(id.value)};
+  for (const ShapeDescription& shape : description->shapes) world_.setShapeInteraction(shape.id, flags);
+  changes_.added(id);
+  ++version_;
+  return {};
 }
 
 void Simulation::changedBody(BodyId id) {

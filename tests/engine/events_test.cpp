@@ -228,8 +228,8 @@ TEST(ContactEvents, RemovingATouchingBodyEndsItsContacts) {
 
 // Every event of a step, as one comparable record.
 struct StepRecord {
-  std::vector<ContactBeginEvent> begins;
-  std::vector<ContactEndEvent> ends;
+  std::vector<ContactTouchEvent> begins;
+  std::vector<ContactTouchEvent> ends;
   std::vector<ContactHitEvent> hits;
   std::vector<SensorEvent> sensorBegins, sensorEnds;
   friend bool operator==(const StepRecord&, const StepRecord&) = default;

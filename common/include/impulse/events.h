@@ -13,24 +13,16 @@
 
 namespace impulse {
 
-/// Two shapes began touching: their contact has points (within the
-/// speculative distance). shapeA's id is below shapeB's.
-struct ContactBeginEvent {
+/// Two shapes began touching (their contact has points, within the
+/// speculative distance), or stopped: they moved apart, or one of them (or
+/// its body) was removed, and the ids may then be stale. shapeA's id is
+/// below shapeB's.
+struct ContactTouchEvent {
   ShapeId shapeA;
   ShapeId shapeB;
   BodyId bodyA;
   BodyId bodyB;
-  friend bool operator==(const ContactBeginEvent&, const ContactBeginEvent&) = default;
-};
-
-/// Two shapes stopped touching, or one of them (or its body) was removed:
-/// the ids may then be stale. shapeA's id is below shapeB's.
-struct ContactEndEvent {
-  ShapeId shapeA;
-  ShapeId shapeB;
-  BodyId bodyA;
-  BodyId bodyB;
-  friend bool operator==(const ContactEndEvent&, const ContactEndEvent&) = default;
+  friend bool operator==(const ContactTouchEvent&, const ContactTouchEvent&) = default;
 };
 
 /// A touching pair closing faster than WorldSettings::hitEventThreshold
@@ -59,8 +51,8 @@ struct SensorEvent {
 
 /// The events of one step, each list sorted by its pair of shape ids.
 struct StepEvents {
-  std::vector<ContactBeginEvent> contactBegins;
-  std::vector<ContactEndEvent> contactEnds;
+  std::vector<ContactTouchEvent> contactBegins;
+  std::vector<ContactTouchEvent> contactEnds;
   std::vector<ContactHitEvent> contactHits;
   std::vector<SensorEvent> sensorBegins;
   std::vector<SensorEvent> sensorEnds;

@@ -91,6 +91,32 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
   for (std::size_t i = 1; i < description.shapes.size(); ++i) {
     toWire(description.shapes[i].shape, out->add_extra_shapes());
   }
+  toWire(description.shapes.front().interaction, out->mutable_shape_flags());
+  for (const ShapeDescription& shape : description.shapes) out->add_shape_ids(shape.id.value);
+}
+
+void toWire(const ShapeInteraction& interaction, v1::ShapeFlags* out) {
+  auto* filter = out->mutable_filter();
+  filter->set_category_bits(interaction.filter.categoryBits);
+  filter->set_mask_bits(interaction.filter.maskBits);
+  filter->set_group_index(interaction.filter.groupIndex);
+  out->set_is_sensor(interaction.isSensor);
+  out->set_contact_events(interaction.enableContactEvents);
+  out->set_hit_events(interaction.enableHitEvents);
+  out->set_sensor_events(interaction.enableSensorEvents);
+}
+
+ShapeInteraction shapeFlagsFromWire(const v1::ShapeFlags& flags) {
+  ShapeInteraction interaction;
+  const v1::ShapeFilter& filter = flags.filter();
+  if (filter.has_category_bits()) interaction.filter.categoryBits = filter.category_bits();
+  if (filter.has_mask_bits()) interaction.filter.maskBits = filter.mask_bits();
+  interaction.filter.groupIndex = filter.group_index();
+  interaction.isSensor = flags.is_sensor();
+  interaction.enableContactEvents = flags.contact_events();
+  interaction.enableHitEvents = flags.hit_events();
+  interaction.enableSensorEvents = !flags.has_sensor_events() || flags.sensor_events();
+  return interaction;
 }
 
 void toWire(const PresetInfo& preset, v1::PresetInfo* out) {
@@ -214,6 +240,7 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   if (std::string error = propertiesFromWire(options, result); !error.empty()) {
     return Decoded<BodyOptions>::failure(std::move(error));
   }
+  result.interaction = shapeFlagsFromWire(options.shape_flags());
   return Decoded<BodyOptions>::success(result);
 }
 

@@ -39,6 +39,7 @@ void putSettings(const SolverSettingsState& s, v1::SceneSettings* out) {
   out->set_linear_sleep_tolerance(s.linearSleepTolerance);
   out->set_time_to_sleep(s.timeToSleep);
   out->set_enable_continuous(s.enableContinuous);
+  out->set_hit_event_threshold(s.hitEventThreshold);
 }
 
 void put(const Segment& segment, v1::SceneSegment* out) {
@@ -92,6 +93,7 @@ void putShape(const ShapeSlotState& s, v1::SceneShape* out) {
   out->set_dynamic_friction(s.dynamicFriction);
   out->set_rolling_resistance(s.rollingResistance);
   out->set_proxy_key(s.proxyKey);
+  toWire(s.interaction, out->mutable_flags());
 }
 
 void putBody(const BodySlotState& b, v1::SceneBody* out) {
@@ -221,7 +223,8 @@ SolverSettingsState getSettings(const v1::SceneSettings& s) {
           s.restitution_threshold(),  s.stick_speed(),
           s.enable_warm_starting(),   s.enable_sleep(),
           s.linear_sleep_tolerance(), s.time_to_sleep(),
-          s.enable_continuous()};
+          s.enable_continuous(),
+          s.has_hit_event_threshold() ? s.hit_event_threshold() : SolverSettingsState{}.hitEventThreshold};
 }
 
 Segment get(const v1::SceneSegment& s) { return {get(s.point1()), get(s.point2())}; }
@@ -286,6 +289,7 @@ std::string getShape(const v1::SceneShape& in, ShapeSlotState& s) {
   if (!s.alive) return {};
   if (std::string error = getGeometry(in, s.shape); !error.empty()) return error;
   s.body = in.body();
+  s.interaction = shapeFlagsFromWire(in.flags());
   return getMaterial(in, s);
 }
 

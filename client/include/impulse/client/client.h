@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "impulse.pb.h"
 #include "impulse/client/world_mirror.h"
@@ -89,6 +90,13 @@ class Client {
     snapshotCallback_ = std::move(callback);
   }
 
+  /// Called for every Events message (after SubscribeEvents), in tick order.
+  void onEvents(std::function<void(const v1::Events&)> callback) { eventsCallback_ = std::move(callback); }
+  /// The Events messages received since the last call, oldest first; at
+  /// most kMaxKeptEvents are kept (older ones are dropped first).
+  std::vector<v1::Events> takeEvents();
+  static constexpr std::size_t kMaxKeptEvents = 1024;
+
   /// Round-trip: a Ping answered after every earlier command was applied.
   /// With `wantStateHash` the stats carry the world's state hash.
   v1::Pong ping(Duration timeout = Duration(10000), bool wantStateHash = false);
@@ -114,6 +122,8 @@ class Client {
   std::uint64_t nextRequestId_ = 1;
   std::function<void(const v1::Snapshot&, std::size_t)> snapshotCallback_;
   std::optional<v1::Snapshot> lastSnapshot_;
+  std::function<void(const v1::Events&)> eventsCallback_;
+  std::deque<v1::Events> events_;
 };
 
 }  // namespace impulse::client

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "impulse.pb.h"
+#include "impulse/body.h"
+#include "impulse/query.h"
 #include "impulse/material.h"
 #include "impulse/math.h"
 
@@ -29,6 +31,8 @@ struct SpawnOptions {
   double linearDamping = 0;
   double angularDamping = 0;
   std::optional<double> gravityScale{};
+  /// Every shape's filter, sensor flag and events (docs/protocol.md, Events).
+  ShapeInteraction flags{};
 };
 
 struct Point {
@@ -64,6 +68,21 @@ v1::ClientMessage applyImpulse(std::uint32_t id, Point impulse,
                                std::optional<Point> point = std::nullopt);
 /// `angular` in rad/s.
 v1::ClientMessage setVelocity(std::uint32_t id, Point velocity, double angular = 0);
+/// Every shape of the body takes the flags.
+v1::ClientMessage setShapeFlags(std::uint32_t id, const ShapeInteraction& flags);
+/// Starts (true) or stops this client's Events stream.
+v1::ClientMessage subscribeEvents(bool enabled);
+/// The first shape the ray enters, or with allHits every one (maxHits 0:
+/// the most the server gives); answered by QueryResult.
+v1::ClientMessage rayCast(Point origin, Point translation, bool allHits = false, const QueryFilter& filter = {},
+                          std::uint32_t maxHits = 0);
+/// The part's shape (its material unused) placed at position, angle and
+/// swept along translation: the first shape it touches.
+v1::ClientMessage shapeCast(Point position, double angle, const BodyPart& shape, Point translation,
+                            const QueryFilter& filter = {});
+/// The shapes whose bounding box overlaps lower-upper (maxResults 0: the
+/// most the server gives).
+v1::ClientMessage queryAabb(Point lower, Point upper, const QueryFilter& filter = {}, std::uint32_t maxResults = 0);
 v1::ClientMessage setPaused(bool paused);
 v1::ClientMessage step(std::uint32_t ticks);
 v1::ClientMessage queryBody(std::uint32_t id);

@@ -29,6 +29,10 @@ struct MirrorBody {
   bool isStatic = false;
   bool isKinematic = false;
   bool ignoreGravity = false;
+  /// The first shape's filter, sensor flag and events.
+  ShapeInteraction flags;
+  /// Every shape's id (events name them), in the order shape, extraShapes.
+  std::vector<std::uint32_t> shapeIds;
   BodyState state;
 };
 

@@ -26,6 +26,8 @@ struct CommandOutcome {
   bool changed = false;
   /// An accepted Step: the ticks still to run before the reply may be sent.
   std::uint32_t ticksToStep = 0;
+  /// SubscribeEvents: the client's event stream starts (true) or stops.
+  std::optional<bool> eventSubscription;
 };
 
 /// Applies a command (not Hello). A Step is validated only: its ticks are

@@ -107,7 +107,13 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
     SharedFrame frame;
     std::uint64_t sequence;
   };
-  using Outgoing = std::variant<Reply, Broadcast, FullSnapshot>;
+  /// One tick's Events message, for the clients subscribed to events when
+  /// it was made.
+  struct EventsBroadcast {
+    SharedFrame frame;
+    std::vector<std::uint32_t> clients;
+  };
+  using Outgoing = std::variant<Reply, Broadcast, FullSnapshot, EventsBroadcast>;
   using Batch = std::vector<Outgoing>;
 
   /// Runs `work` on the strand, then posts what it produced to the I/O thread.
@@ -118,6 +124,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   void deliverReply(Reply& reply);
   void deliverBroadcast(const Broadcast& broadcast);
   void deliverFullSnapshot(FullSnapshot& snapshot);
+  void deliverEvents(const EventsBroadcast& events);
   /// A shared owner, so that a session closed by what is sent to it stays
   /// alive until the caller is done with it; null for a non-member.
   std::shared_ptr<Session> member(std::uint32_t client) const;
@@ -142,6 +149,11 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   /// Adds the room's statistics to the handler's Pong: only Ping needs them.
   void answerPing(const v1::Ping& ping, v1::ServerMessage& pong);
   void broadcastSnapshot();
+  /// The Events messages of the steps since the last call, to the event
+  /// subscribers.
+  void broadcastEvents();
+  /// SubscribeEvents applied: the client joins or leaves the event stream.
+  void subscribeEvents(std::uint32_t client, bool enabled);
   /// Snapshots are due when floor(running ticks * snapshot_hz / tick_hz)
   /// changes: on the wall clock's grid, whatever the time scale.
   std::int64_t snapshotSlot() const;
@@ -195,6 +207,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   bool overrunning_ = false;
   /// The members as the strand knows them, with their role (true: admin).
   std::map<std::uint32_t, bool> clients_;
+  /// The members that asked for events, sorted.
+  std::vector<std::uint32_t> eventSubscribers_;
   FairQueue commands_;
   std::deque<StepJob> steps_;
   Ownership ownership_;

@@ -89,6 +89,10 @@ class Session : public std::enable_shared_from_this<Session> {
   /// The full snapshot requested from the SnapshotSource: it includes the
   /// changes of every broadcast up to `sequence`.
   void takeFullSnapshot(SharedFrame frame, std::uint64_t sequence);
+  /// An Events message: queued beside the replies while they leave it room,
+  /// dropped otherwise (the client sees the gap in Events.sequence); a
+  /// client slow to read its events is never closed for them.
+  void offerEvents(const SharedFrame& frame);
   /// Commands of `bytes` were applied: reading may resume.
   void commandsApplied(std::size_t bytes);
   /// Drops the session if it stalled (see SessionLimits) or never said Hello.
@@ -114,6 +118,7 @@ class Session : public std::enable_shared_from_this<Session> {
   bool acceptingTraffic() const { return phase_ <= Phase::Streaming; }
   const std::string& name() const { return name_; }
   std::uint64_t snapshotsSkipped() const { return snapshotsSkipped_; }
+  std::uint64_t eventsDropped() const { return eventsDropped_; }
   /// Times reading paused because the client was past its command rate.
   std::uint64_t rateWaits() const { return rateWaits_; }
 
@@ -132,6 +137,8 @@ class Session : public std::enable_shared_from_this<Session> {
     bool snapshot = false;
   };
 
+  /// Queues a frame that may wait (the reply budget was checked).
+  void enqueue(Outgoing item);
   void readMore();
   /// True when the rate budget has a command; otherwise pauses reading
   /// until it will have one.
@@ -210,6 +217,7 @@ class Session : public std::enable_shared_from_this<Session> {
   /// When a snapshot was last offered (or the stream started).
   Clock::time_point lastSnapshot_;
   std::uint64_t snapshotsSkipped_ = 0;
+  std::uint64_t eventsDropped_ = 0;
 };
 
 }  // namespace impulse::server

@@ -8,6 +8,9 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "impulse.pb.h"
 
 #include "impulse/field_kinds.h"
 #include "impulse/material.h"
@@ -37,6 +40,9 @@ struct SimulationSettings {
   /// The server-wide body count this world is part of; none: unbounded.
   std::shared_ptr<ServerBodies> serverBodies = nullptr;
 };
+
+/// Events messages a Simulation keeps for its room between takes.
+inline constexpr std::size_t kMaxPendingEventMessages = 64;
 
 /// Range of SetTimeScale (docs/protocol.md, "Time").
 inline constexpr double kMinTimeScale = 0.01;
@@ -74,6 +80,16 @@ class Simulation {
   bool removeBody(BodyId id);
   InputResult applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point);
   InputResult setVelocity(BodyId id, const Vec2& linear, Real angular);
+  /// Every shape of the body takes the flags (World::setShapeInteraction);
+  /// its descriptor is sent again.
+  InputResult setShapeFlags(BodyId id, const ShapeInteraction& flags);
+  /// While wanted, each step with events leaves an Events message for
+  /// takeEvents (at most kMaxPendingEventMessages wait; past them a step's
+  /// events are dropped and the next message's sequence shows the gap).
+  void setEventsWanted(bool wanted);
+  /// The Events messages (ServerMessage.events) of the steps since the
+  /// last call. Valid until the next call.
+  std::vector<v1::ServerMessage>& takeEvents();
   InputResult setGravity(const Vec2& gravity);
   JointResult createJoint(const JointDef& def);
   /// False for an unknown id.
@@ -130,6 +146,8 @@ class Simulation {
   CreateResult recordCreated(CreateResult created);
   /// After a successful change: records `id` (if any) as changed for snapshots.
   void changedBody(BodyId id);
+  /// After a step: its events as an Events message, when wanted.
+  void recordEvents();
   /// Records the joints the world removed with their bodies (last
   /// destroyBody call or step).
   void recordRemovedJoints();
@@ -160,6 +178,10 @@ class Simulation {
   std::uint64_t bodiesLeftWorld_ = 0;
   std::uint64_t hash_ = 0;
   std::uint64_t hashVersion_ = ~std::uint64_t(0);
+  bool eventsWanted_ = false;
+  std::uint64_t eventSequence_ = 0;
+  std::vector<v1::ServerMessage> pendingEvents_;
+  std::vector<v1::ServerMessage> takenEvents_;
 };
 
 }  // namespace impulse::server

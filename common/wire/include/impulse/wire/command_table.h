@@ -85,6 +85,28 @@
   ROW(SetVelocity, set_velocity, Owner, setVelocity, "velocity", "velocity ID VX VY [W]",   \
       "set a body's velocity (m/s) and angular velocity W (rad/s, default 0)",            \
       parseVelocity, client::setVelocity)                                                 \
+  ROW(SetShapeFlags, set_shape_flags, Owner, setShapeFlags, "flags",                       \
+      "flags ID [sensor] [contact-events] [hit-events] [no-sensor-events] "               \
+      "[category=N] [mask=N] [group=N]",                                                  \
+      "set a body's shape flags: filter (N decimal or 0x hex), sensor, events",           \
+      parseShapeFlags, client::setShapeFlags)                                             \
+  ROW(SubscribeEvents, subscribe_events, Anyone, subscribeEvents, "events",               \
+      "events on|off",                                                                    \
+      "start or stop the stream of contact, hit and sensor events",                       \
+      parseEvents, client::subscribeEvents)                                               \
+  ROW(RayCast, ray_cast, Anyone, rayCast, "raycast",                                      \
+      "raycast X Y DX DY [all] [category=N] [mask=N]",                                    \
+      "the first shape (all: every one) the ray from X Y to X+DX Y+DY enters",            \
+      parseRayCast, client::rayCast)                                                      \
+  ROW(ShapeCast, shape_cast, Anyone, shapeCast, "shapecast",                              \
+      "shapecast X Y ANGLE PART DX DY [category=N] [mask=N]",                             \
+      "the first shape a PART (as in body) placed at X Y, ANGLE and moved by DX DY "      \
+      "touches",                                                                          \
+      parseShapeCast, client::shapeCast)                                                  \
+  ROW(QueryAABB, query_aabb, Anyone, queryAabb, "overlap",                                \
+      "overlap X1 Y1 X2 Y2 [category=N] [mask=N]",                                        \
+      "the shapes whose bounding box overlaps the box X1 Y1 - X2 Y2",                     \
+      parseOverlap, client::queryAabb)                                                    \
   ROW(QueryBody, query_body, Anyone, queryBody, "query", "query ID",                      \
       "description, state and mass properties of a body", parseBodyId, client::queryBody) \
   ROW(Ping, ping, Anyone, ping, "ping", "ping",                                           \

@@ -40,6 +40,7 @@ v1::Material toWire(Material material);
 void toWire(const Shape& shape, v1::Shape* out);
 void toWire(const BodyState& state, v1::BodyState* out);
 void toWire(const BodyDescription& description, v1::BodyDescriptor* out);
+void toWire(const ShapeInteraction& interaction, v1::ShapeFlags* out);
 void toWire(const PresetInfo& preset, v1::PresetInfo* out);
 /// Everything QueryBody answers about one body.
 void toWire(const BodyDescription& description, const BodyState& state, v1::BodyInfo* out);
@@ -65,6 +66,8 @@ std::string materialRange();
 /// Material, flags, initial velocities and per-body properties, each checked.
 /// A `friction` sets both the static and the dynamic coefficient.
 Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options);
+/// Any bits and group are valid; unset fields take the defaults.
+ShapeInteraction shapeFlagsFromWire(const v1::ShapeFlags& flags);
 
 /// A shape as described by the server (body-local polygon, anticlockwise).
 /// Checks the vertex count and finiteness only; normals are recomputed.
