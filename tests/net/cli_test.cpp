@@ -171,7 +171,7 @@ TEST(Cli, ErrorsNameTheLineAndTheProblem) {
   EXPECT_TRUE(contains(
       run.lines[1],
       R"({"line":1,"command":"circle","ok":false,"error":"line 1: circle X Y R [MATERIAL] )"
-      R"([static] [nograv] [NAME=VALUE...]: missing argument 3")"))
+      R"([static] [asleep] [nograv] [NAME=VALUE...]: missing argument 3")"))
       << run.lines[1];
   // The server's refusals name the fields as the script writes them.
   EXPECT_TRUE(contains(
