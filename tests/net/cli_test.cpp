@@ -201,6 +201,18 @@ TEST(Cli, ServerErrorsUseTheScriptsWordsAndPlainNumbers) {
   EXPECT_FALSE(contains(run.lines[2], ".000000")) << run.lines[2];
 }
 
+TEST(Cli, BodyEditWordsEditAndTheirErrorsUseTheScriptsWords) {
+  ServerProcess server({"--paused"});
+  const auto run = runCli(server.port(), "$ball = circle 5 5 0.5\nteleport $ball 1000 5\nmaterial $ball metal\n"
+                                         "body-type $ball static\n");
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 5u);
+  EXPECT_TRUE(contains(run.lines[2], "line 2: teleport: position is outside the world bounds (-25, -25) to (50, 45)"))
+      << run.lines[2];
+  EXPECT_TRUE(contains(run.lines[3], R"("ok":true)")) << run.lines[3];
+  EXPECT_TRUE(contains(run.lines[4], R"("ok":true)")) << run.lines[4];
+}
+
 TEST(Cli, ReadsStdin) {
   ServerProcess server({"--paused"});
   const auto run = runCli(server.port(), "circle 4 4 0.25\nstep 2\n", true);
