@@ -11,7 +11,7 @@ namespace {
 
 // Protocol field paths and the script words for them; longer paths first,
 // so a path is replaced before its command's prefix.
-constexpr std::array<std::pair<const char*, const char*>, 29> kFieldWords{{
+constexpr std::array<std::pair<const char*, const char*>, 37> kFieldWords{{
     {"spawn_circle.center.x", "circle X"},
     {"spawn_circle.center.y", "circle Y"},
     {"spawn_circle.center", "circle X Y"},
@@ -36,6 +36,14 @@ constexpr std::array<std::pair<const char*, const char*>, 29> kFieldWords{{
     {"set_velocity.velocity.x", "velocity VX"},
     {"set_velocity.velocity.y", "velocity VY"},
     {"set_velocity", "velocity"},
+    {"set_transform.position.x", "teleport X"},
+    {"set_transform.position.y", "teleport Y"},
+    {"set_transform.angle", "teleport ANGLE"},
+    {"set_transform", "teleport"},
+    {"set_material.material", "material MATERIAL"},
+    {"set_material", "material"},
+    {"set_body_type.type", "body-type TYPE"},
+    {"set_body_type", "body-type"},
     {"remove_body", "remove"},
     {"query_body", "query"},
     // Joint errors keep their protocol paths (create_joint.distance.stiffness):

@@ -25,6 +25,8 @@ constexpr int kMaxAdvanceIterations = 30;
 // Stop the sweep this far from the surface (inside speculative range).
 constexpr Real kTargetSeparation = kLinearSlop;
 constexpr Real kSeparationTolerance = Real(0.25) * kLinearSlop;
+// Passes over the chain segments near a centre's path (keepCentreInFrontOfChains).
+constexpr int kMaxChainPasses = 4;
 
 struct Sweep {
   Vec2 c0, c1;
@@ -99,14 +101,66 @@ Real firstStaticHit(const WorldData& world, const Body& body, const Sweep& sweep
   return firstHit;
 }
 
+// A chain segment collides on its front only, so a body whose centre gets
+// behind one is let go for good. A time of impact cannot stop a centre that
+// crosses while the body already overlaps the segment (a body pressed deep
+// into a wall by a crowd as it slides along it: the sweep starts touching),
+// so the centre's path is checked on its own: when it crosses the segment's
+// line from the front within the segment, the centre is put back in front
+// along the segment's normal. The motion along the wall is kept, so a body
+// sliding past does not pause. Returns whether the centre moved.
+bool keepCentreInFront(const Transform& chainTransform, const ChainSegment& chain, const Vec2& start, Vec2& end) {
+  const Vec2 p1 = chainTransform.apply(chain.segment.point1);
+  const Vec2 p2 = chainTransform.apply(chain.segment.point2);
+  const Vec2 edge = p2 - p1;
+  const Real length = edge.norm();
+  if (length <= kLinearSlop) return false;
+  const Vec2 tangent = edge / length;
+  const Vec2 normal = rightPerp(tangent);  // the front
+  const Real before = normal.dot(start - p1);
+  const Real after = normal.dot(end - p1);
+  if (before < 0 || after >= 0) return false;
+  const Vec2 crossing = start + (before / (before - after)) * (end - start);
+  const Real along = tangent.dot(crossing - p1);
+  if (along < 0 || along > length) return false;
+  end += (kLinearSlop - after) * normal;
+  return true;
+}
+
+// keepCentreInFront against every static chain segment near the centre's
+// path. Put back in front of one segment past its end, the centre may lie
+// behind the next one (a wall turning towards the body, as inside a drum):
+// the segments are looked at again until none moves it.
+bool keepCentreInFrontOfChains(const WorldData& world, Body& body) {
+  const Vec2 start = body.center0;
+  Vec2 end = body.transform.p;
+  bool moved = false;
+  for (int pass = 0; pass < kMaxChainPasses; ++pass) {
+    bool movedThisPass = false;
+    const AABB path{start.cwiseMin(end), start.cwiseMax(end)};
+    world.broadPhase.query(path, [&](std::int32_t other) {
+      const ShapeSlot& candidate = world.shapes[other];
+      const Body& owner = world.bodies[candidate.body];
+      if (owner.isStatic && candidate.type() == ShapeType::ChainSegment) {
+        movedThisPass = keepCentreInFront(owner.transform, candidate.shape.chainSegment(), start, end) || movedThisPass;
+      }
+      return true;
+    });
+    if (!movedThisPass) break;
+    moved = true;
+  }
+  body.transform.p = end;
+  return moved;
+}
+
 void sweepAgainstStatics(WorldData& world, std::int32_t slot) {
   Body& body = world.bodies[slot];
   const Sweep sweep = sweepOf(body);
   Real firstHit = 1;
   world.forEachShape(slot, [&](std::int32_t s) { firstHit = std::min(firstHit, firstStaticHit(world, body, sweep, s)); });
-  if (firstHit >= 1) return;
-  body.transform = sweep.at(firstHit);
-  moveBodyProxies(world, slot);
+  if (firstHit < 1) body.transform = sweep.at(firstHit);
+  const bool heldInFront = keepCentreInFrontOfChains(world, body);
+  if (firstHit < 1 || heldInFront) moveBodyProxies(world, slot);
 }
 
 }  // namespace

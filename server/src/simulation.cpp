@@ -100,6 +100,24 @@ InputResult Simulation::setTargetTransform(BodyId id, const Vec2& position, Real
   return moved;
 }
 
+InputResult Simulation::setTransform(BodyId id, const Vec2& position, Real angle) {
+  const InputResult moved = world_.setTransform(id, position, angle);
+  if (moved) changedBody(id);
+  return moved;
+}
+
+InputResult Simulation::setMaterial(BodyId id, Material material) {
+  const InputResult set = world_.setMaterial(id, material);
+  if (set) redescribedBody(id);
+  return set;
+}
+
+InputResult Simulation::setBodyType(BodyId id, BodyType type) {
+  const InputResult set = world_.setBodyType(id, type);
+  if (set) redescribedBody(id);
+  return set;
+}
+
 CreateResult Simulation::recordCreated(CreateResult created) {
   if (created.ok()) {
     changes_.added(created.id);
@@ -176,13 +194,17 @@ InputResult Simulation::setShapeFlags(BodyId id, const ShapeInteraction& flags) 
   const std::optional<BodyDescription> description = world_.bodyDescription(id);
   if (!description) return {"unknown body id " + std::to_string(id.value)};
   for (const ShapeDescription& shape : description->shapes) world_.setShapeInteraction(shape.id, flags);
-  changes_.added(id);
-  ++version_;
+  redescribedBody(id);
   return {};
 }
 
 void Simulation::changedBody(BodyId id) {
   changes_.changed(std::span(&id, 1), world_.bodyCount());
+  ++version_;
+}
+
+void Simulation::redescribedBody(BodyId id) {
+  changes_.added(id);
   ++version_;
 }
 

@@ -171,7 +171,7 @@ TEST(Cli, ErrorsNameTheLineAndTheProblem) {
   EXPECT_TRUE(contains(
       run.lines[1],
       R"({"line":1,"command":"circle","ok":false,"error":"line 1: circle X Y R [MATERIAL] )"
-      R"([static] [nograv] [NAME=VALUE...]: missing argument 3")"))
+      R"([static] [asleep] [nograv] [NAME=VALUE...]: missing argument 3")"))
       << run.lines[1];
   // The server's refusals name the fields as the script writes them.
   EXPECT_TRUE(contains(
@@ -199,6 +199,18 @@ TEST(Cli, ServerErrorsUseTheScriptsWordsAndPlainNumbers) {
   // The server writes the bounds with six decimals; the report as people do.
   EXPECT_TRUE(contains(run.lines[2], "(-25, -25) to (50, 45)")) << run.lines[2];
   EXPECT_FALSE(contains(run.lines[2], ".000000")) << run.lines[2];
+}
+
+TEST(Cli, BodyEditWordsEditAndTheirErrorsUseTheScriptsWords) {
+  ServerProcess server({"--paused"});
+  const auto run = runCli(server.port(), "$ball = circle 5 5 0.5\nteleport $ball 1000 5\nmaterial $ball metal\n"
+                                         "body-type $ball static\n");
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 5u);
+  EXPECT_TRUE(contains(run.lines[2], "line 2: teleport: position is outside the world bounds (-25, -25) to (50, 45)"))
+      << run.lines[2];
+  EXPECT_TRUE(contains(run.lines[3], R"("ok":true)")) << run.lines[3];
+  EXPECT_TRUE(contains(run.lines[4], R"("ok":true)")) << run.lines[4];
 }
 
 TEST(Cli, ReadsStdin) {
