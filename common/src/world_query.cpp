@@ -3,6 +3,8 @@
 // length as hits are found), then tests those shapes exactly.
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
