@@ -53,6 +53,17 @@ class EngineAdapter {
   /// Where the engine built the scene otherwise than described (empty: as
   /// described); the run's table row says so.
   virtual std::string approximation() const { return {}; }
+
+  /// World queries, for the query bench (query_bench.h); engines whose
+  /// adapter does not wire them say so here and are left out of it.
+  virtual bool hasQueries() const { return false; }
+  /// The nearest hit's fraction of the ray origin -> origin + translation,
+  /// or -1 when it hits nothing.
+  virtual double castRayClosest(const Vec2d& /*origin*/, const Vec2d& /*translation*/) { return -1; }
+  /// How many shapes the ray hits.
+  virtual int castRayCount(const Vec2d& /*origin*/, const Vec2d& /*translation*/) { return 0; }
+  /// How many shapes have a tight bounding box overlapping lower-upper.
+  virtual int overlapBoxCount(const Vec2d& /*lower*/, const Vec2d& /*upper*/) { return 0; }
 };
 
 /// The scene built in the given engine at the given setting.

@@ -3,11 +3,12 @@
 // per scene, ratio and front lines, and optionally a CSV file and an SVG plot
 // per scene.
 //
-//   impulse-bench [--quick] [--v3-suite] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
+//   impulse-bench [--quick] [--v3-suite | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
 //                 [--engine NAME[,NAME...]] [--iterations N]
 //
 // --v3-suite runs Box2D v3's benchmark suite (the v3-* scenes) instead of
-// Impulse's own scenes.
+// Impulse's own scenes. --queries runs the query bench instead (ray casts
+// and box overlaps on one 10 000-body world, query_bench.h).
 // --scene, --engine and --iterations narrow the run (for profiling one engine
 // on one scene, or one side-by-side at one setting); --scene takes name parts
 // separated by commas and keeps a scene that contains any of them; --engine
@@ -23,6 +24,7 @@
 #include <fstream>
 #include <string>
 
+#include "query_bench.h"
 #include "report.h"
 #include "svg_plot.h"
 
@@ -31,6 +33,7 @@ namespace {
 struct Options {
   bool quick = false;
   bool v3Suite = false;
+  bool queries = false;
   std::string csv;
   std::string plotDirectory;
   std::string sceneFilter;
@@ -40,7 +43,7 @@ struct Options {
 
 [[noreturn]] void usage(const char* program) {
   std::fprintf(stderr,
-               "usage: %s [--quick] [--v3-suite] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
+               "usage: %s [--quick] [--v3-suite | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
                "[--engine NAME[,NAME...]] [--iterations N]\n",
                program);
   std::exit(2);
@@ -55,6 +58,7 @@ Options parse(int argc, char** argv) {
     };
     if (std::strcmp(argv[i], "--quick") == 0) options.quick = true;
     else if (std::strcmp(argv[i], "--v3-suite") == 0) options.v3Suite = true;
+    else if (std::strcmp(argv[i], "--queries") == 0) options.queries = true;
     else if (std::strcmp(argv[i], "--csv") == 0) options.csv = value();
     else if (std::strcmp(argv[i], "--plot") == 0) options.plotDirectory = value();
     else if (std::strcmp(argv[i], "--scene") == 0) options.sceneFilter = value();
@@ -104,6 +108,12 @@ int main(int argc, char** argv) {
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   std::printf("impulse-bench%s%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "", options.v3Suite ? " --v3-suite" : "",
               date, cpuModel().c_str());
+  if (options.queries) {
+    const int disagreements = bench::runQueryBench(stdout, {options.quick, options.engineFilter});
+    // Round-off may split a grazing ray; the bench reports, it does not judge.
+    if (disagreements > 0) std::printf("%d answers differ between engines\n", disagreements);
+    return 0;
+  }
   if (!options.plotDirectory.empty()) std::filesystem::create_directories(options.plotDirectory);
 
   std::vector<bench::RunResult> all;

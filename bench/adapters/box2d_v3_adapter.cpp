@@ -115,6 +115,18 @@ float inverseMassAlong(b2BodyId body, b2Vec2 anchor, b2Vec2 axis) {
   return 1 / mass + arm * arm / b2Body_GetRotationalInertia(body);
 }
 
+// The shape's own bounding box where its body is (the query bench's
+// shapes are circles and polygons).
+b2AABB tightBox(b2ShapeId shape) {
+  const b2WorldTransform transform = b2Body_GetTransform(b2Shape_GetBody(shape));
+  if (b2Shape_GetType(shape) == b2_circleShape) {
+    const b2Circle circle = b2Shape_GetCircle(shape);
+    return b2ComputeCircleAABB(&circle, transform);
+  }
+  const b2Polygon polygon = b2Shape_GetPolygon(shape);
+  return b2ComputePolygonAABB(&polygon, transform);
+}
+
 class Box2DV3Adapter final : public EngineAdapter {
  public:
   Box2DV3Adapter(const SceneDescription& scene, int subSteps) : scene_(scene), schedule_(scene), subSteps_(subSteps) {
@@ -138,6 +150,44 @@ class Box2DV3Adapter final : public EngineAdapter {
     b2World_Step(world_, float(dt), subSteps_);
     ++stepCount_;
     spawnDue();
+  }
+
+  bool hasQueries() const override { return true; }
+
+  double castRayClosest(const Vec2d& origin, const Vec2d& translation) override {
+    const b2RayResult result = b2World_CastRayClosest(world_, toVec(origin), toVec(translation), b2DefaultQueryFilter());
+    return result.hit ? double(result.fraction) : -1;
+  }
+
+  // v3 reports a shape the ray starts inside as a hit at fraction 0 (its
+  // closest-hit search skips those); Impulse never reports them, so they
+  // are not counted here.
+  int castRayCount(const Vec2d& origin, const Vec2d& translation) override {
+    int count = 0;
+    auto countHit = [](b2ShapeId, b2Pos, b2Vec2, float fraction, void* context) {
+      if (fraction > 0) ++*static_cast<int*>(context);
+      // 1 keeps the ray whole: every hit is reported.
+      return 1.0f;
+    };
+    b2World_CastRay(world_, toVec(origin), toVec(translation), b2DefaultQueryFilter(), countHit, &count);
+    return count;
+  }
+
+  // v3 reports the shapes whose fat (margin-grown) box overlaps, and the box
+  // it keeps per shape is grown by its speculative distance; the tight box
+  // computed here makes its answer the one Impulse gives.
+  int overlapBoxCount(const Vec2d& lower, const Vec2d& upper) override {
+    struct Count {
+      b2AABB box;
+      int count;
+    } count{{toVec(lower), toVec(upper)}, 0};
+    auto countTight = [](b2ShapeId shape, void* context) {
+      Count& c = *static_cast<Count*>(context);
+      if (b2AABB_Overlaps(tightBox(shape), c.box)) ++c.count;
+      return true;
+    };
+    b2World_OverlapAABB(world_, b2Pos_zero, count.box, b2DefaultQueryFilter(), countTight, &count);
+    return count.count;
   }
 
   Pose pose(int index) const override {

@@ -169,6 +169,21 @@ class ImpulseAdapter final : public EngineAdapter {
             state.awake};
   }
 
+  bool hasQueries() const override { return true; }
+
+  double castRayClosest(const Vec2d& origin, const Vec2d& translation) override {
+    const impulse::CastResult result = world_.castRayClosest(toVec(origin), toVec(translation));
+    return result.hit ? double(result.hit->fraction) : -1;
+  }
+
+  int castRayCount(const Vec2d& origin, const Vec2d& translation) override {
+    return static_cast<int>(world_.castRay(toVec(origin), toVec(translation)).results.size());
+  }
+
+  int overlapBoxCount(const Vec2d& lower, const Vec2d& upper) override {
+    return static_cast<int>(world_.overlapAABB({toVec(lower), toVec(upper)}).results.size());
+  }
+
   std::string approximation() const override {
     if (anyFilter(scene_)) return "no collision filter: filtered shapes collide";
     return {};

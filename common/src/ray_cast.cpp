@@ -3,6 +3,7 @@
 
 #include "ray_cast.h"
 
+#include <cmath>
 #include <span>
 #include <variant>
 

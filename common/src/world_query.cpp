@@ -3,6 +3,8 @@
 // length as hits are found), then tests those shapes exactly.
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -67,6 +69,10 @@ bool isVisible(const ShapeSlot& slot, const QueryFilter& filter) {
 
 const Transform& transformOf(const WorldData& world, std::int32_t shape) {
   return world.bodies[world.shapes[shape].body].transform;
+}
+
+DynamicTree::Ray rayOf(const Vec2& origin, const Vec2& translation) {
+  return {origin, translation, 1, Vec2::Zero()};
 }
 
 CastHit makeHit(const WorldData& world, std::int32_t shape, const Vec2& point, const Vec2& normal,
@@ -137,7 +143,7 @@ CastResult World::castRayClosest(const Vec2& origin, const Vec2& translation,
   if (std::string error = checkRay(origin, translation); !error.empty()) return {std::nullopt, error};
   const WorldData& w = *impl_;
   NearestHit nearest;
-  w.broadPhase.rayCast({origin, translation}, [&](std::int32_t shape, Real maxFraction) {
+  w.broadPhase.rayCast(rayOf(origin, translation), [&](std::int32_t shape, Real maxFraction) {
     const std::optional<ShapeRayHit> hit = rayCastSlot(w, shape, filter, origin, translation);
     if (!hit || !nearest.beats(hit->fraction, shape)) return maxFraction;
     nearest.keep(makeHit(w, shape, origin + hit->fraction * translation, hit->normal, hit->fraction),
@@ -158,7 +164,7 @@ QueryResult<CastHit> World::castRay(const Vec2& origin, const Vec2& translation,
     ShapeRayHit hit;
   };
   std::vector<SlotHit> hits;
-  w.broadPhase.rayCast({origin, translation}, [&](std::int32_t shape, Real maxFraction) {
+  w.broadPhase.rayCast(rayOf(origin, translation), [&](std::int32_t shape, Real maxFraction) {
     if (std::optional<ShapeRayHit> hit = rayCastSlot(w, shape, filter, origin, translation)) {
       hits.push_back({shape, *hit});
     }

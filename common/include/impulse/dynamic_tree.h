@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -44,7 +45,8 @@ class DynamicTree {
 
   /// Calls clip(node, maxFraction) for each leaf whose box (grown by the
   /// ray's extent) the ray enters before its current max fraction, in a
-  /// deterministic order (not nearest first). clip returns the new max
+  /// deterministic order: at each node the nearer child first (so leaves
+  /// come roughly, not strictly, nearest first). clip returns the new max
   /// fraction: the one it was given to go on, a smaller one to shorten the
   /// ray (so a closest-hit search skips what lies beyond its best hit), a
   /// negative one to stop.
@@ -102,6 +104,17 @@ class DynamicTree {
   std::int32_t freeList_ = kNull;
   int leafCount_ = 0;
   mutable std::vector<std::int32_t> stack_;
+  // A node waiting in a ray cast, with where the ray enters its box.
+  // Trivial, so a stack of them costs nothing to declare.
+  struct RayEntry {
+    std::int32_t node;
+    Real enter;
+  };
+  // A ray cast keeps its stack on the C++ stack, so concurrent const queries
+  // share nothing. Depth-first, it holds at most one pending sibling per
+  // level: the height plus one, and the balance bound keeps the height
+  // logarithmic (under 100 for any tree that fits in memory).
+  static constexpr int kRayStackSize = 256;
 };
 
 template <typename Visit>
@@ -155,22 +168,34 @@ template <typename Clip>
 void DynamicTree::rayCast(const Ray& ray, Clip&& clip) const {
   if (root_ == kNull || ray.maxFraction < 0) return;
   Real maxFraction = ray.maxFraction;
-  stack_.clear();
-  stack_.push_back(root_);
-  while (!stack_.empty()) {
-    std::int32_t index = stack_.back();
-    stack_.pop_back();
-    const Node& node = nodes_[index];
-    const AABB grown{node.box.lower - ray.extent, node.box.upper + ray.extent};
-    const SlabSpan span = clipToBox(ray.origin, ray.translation, maxFraction, grown);
-    if (span.enter > span.exit) continue;
+  // Where the ray enters a node's box grown by the extent; a miss is
+  // past any fraction.
+  auto enterOf = [&](std::int32_t index) {
+    const AABB& box = nodes_[index].box;
+    const SlabSpan span = clipToBox(ray.origin, ray.translation, maxFraction,
+                                    AABB{box.lower - ray.extent, box.upper + ray.extent});
+    return span.enter <= span.exit ? span.enter : std::numeric_limits<Real>::infinity();
+  };
+  RayEntry stack[kRayStackSize];
+  int count = 0;
+  stack[count++] = {root_, enterOf(root_)};
+  while (count > 0) {
+    const RayEntry entry = stack[--count];
+    // The ray may have been clipped since the node was pushed.
+    if (entry.enter > maxFraction) continue;
+    const Node& node = nodes_[entry.node];
     if (node.isLeaf()) {
-      maxFraction = clip(index, maxFraction);
+      maxFraction = clip(entry.node, maxFraction);
       if (maxFraction < 0) return;
-    } else {
-      stack_.push_back(node.child1);
-      stack_.push_back(node.child2);
+      continue;
     }
+    // The nearer child goes on top, so near hits come first and clip the
+    // ray before the far side is searched.
+    RayEntry first{node.child1, enterOf(node.child1)};
+    RayEntry second{node.child2, enterOf(node.child2)};
+    if (first.enter < second.enter) std::swap(first, second);
+    if (first.enter <= maxFraction) stack[count++] = first;
+    if (second.enter <= maxFraction) stack[count++] = second;
   }
 }
 
