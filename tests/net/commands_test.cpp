@@ -200,7 +200,7 @@ TEST(ServerSession, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
       {"infinite nudge", client::nudgeGravity({kInf, 0}), "not a finite number"},
       {"NaN impulse", client::applyImpulse(ball, {kNaN, 0}), "not a finite number"},
       {"NaN impulse point", client::applyImpulse(ball, {1, 0}, client::Point{kNaN, 0}),
-       "point.x is not a finite number"},
+       "impulse PX is not a finite number"},
       {"polygon NaN vertex", polygon({{1, 1}, {2, kNaN}, {1, 2}}), "is not a finite number"},
       {"radius too small", client::spawnCircle({5, 5}, 0.001), ""},
       {"radius too large", client::spawnCircle({5, 5}, 500), ""},
