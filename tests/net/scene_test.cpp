@@ -191,10 +191,12 @@ v1::ClientMessage fourSixteenGons(client::Point at) {
 // The largest world within the default limits: 10 000 bodies (--max-bodies)
 // of four sixteen-sided parts each, every body pressed against its eight
 // neighbours (their contacts saved too). Its scene is one SceneData frame,
-// within what a client reads (ConnectOptions::maxFrameBytes, 256 MiB), and
-// it loads back to the same bytes.
+// within what a client reads (ConnectOptions::maxFrameBytes, 256 MiB). A
+// LoadScene is one client frame too: loading it back needs --max-frame-bytes
+// above its size (38 MB here), and then gives the same bytes.
 TEST(Scenes, TheLargestWorldWithinTheLimitsSavesAndReloads) {
-  ServerProcess server({"--paused", "--max-commands-per-second", "1000000"});
+  ServerProcess server({"--paused", "--max-commands-per-second", "1000000", "--max-frame-bytes",
+                        std::to_string(64 << 20)});
   Client client(localClient(server.port(), "saver", false));
   ASSERT_TRUE(result(client.request(client::clearWorld())).ok());
   const int maxBodies = int(client.welcome().max_bodies());
