@@ -27,7 +27,7 @@ constexpr std::array kWordRows{IMPULSE_COMMAND_TABLE(IMPULSE_WORD_ROW)};
 // Argument paths and the usage's names for them (the command table's usage
 // column); paths not listed read as their field names ("distance stiffness").
 // Longer paths first, so a path is replaced before its prefix.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 36> kArgumentWords{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 33> kArgumentWords{{
     {"spawn_circle.center.x", "circle X"},
     {"spawn_circle.center.y", "circle Y"},
     {"spawn_circle.center", "circle X Y"},
@@ -61,7 +61,11 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 36> kArgumen
     {"set_velocity.velocity.x", "velocity VX"},
     {"set_velocity.velocity.y", "velocity VY"},
     {"update_joint.motor_speed", "motor SPEED"},
-    // The engine's joint errors name its JointDef; a joint's usage says A B.
+}};
+
+// The engine's errors for a new joint name its JointDef; a joint's usage
+// says A B, and 0 for the world.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kJointWords{{
     {"bodyA", "A"},
     {"bodyB", "B"},
     {"the world (null)", "the world (0)"},
@@ -136,7 +140,7 @@ std::string polygonVertices(std::string text) {
 
 // "create_joint.distance.stiffness" -> "distance stiffness": the command's
 // word, then the rest of the path as words (the kind the word already
-// names left out).
+// names, and "options", which the usage writes as flags, left out).
 std::string pathInWords(std::string_view path, std::string_view word) {
   std::string words(word);
   std::size_t begin = path.find('.');
@@ -145,8 +149,9 @@ std::string pathInWords(std::string_view path, std::string_view word) {
     const std::size_t end = path.find('.', begin + 1);
     std::string part(path.substr(begin + 1, end == std::string_view::npos ? end : end - begin - 1));
     begin = end;
-    if (first && part == word) continue;
+    const bool named = (first && part == word) || part == "options";
     first = false;
+    if (named) continue;
     std::ranges::replace(part, '_', ' ');
     words += " " + part;
   }
@@ -184,6 +189,9 @@ std::string_view commandWord(const v1::ClientMessage& message) {
 std::string inUserWords(const v1::ClientMessage& message, std::string_view error) {
   std::string text = polygonVertices(std::string(error));
   for (const auto& [path, words] : kArgumentWords) text = replaceAll(std::move(text), path, words);
+  if (message.has_create_joint()) {
+    for (const auto& [name, words] : kJointWords) text = replaceAll(std::move(text), name, words);
+  }
   const std::string_view wireName = wireNameOf(message.command_case());
   if (!wireName.empty()) text = commandPaths(std::move(text), wireName, commandWord(message));
   return wire::plainNumbers(text);

@@ -191,11 +191,11 @@ TEST(ServerSession, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
   nanVelocity.mutable_spawn_circle()->mutable_options()->mutable_velocity()->set_x(kNaN);
 
   const std::vector<Refusal> refusals = {
-      {"NaN centre", client::spawnCircle({kNaN, 1}, 0.5), "center.x is not a finite number"},
-      {"infinite radius", client::spawnCircle({5, 5}, kInf), "radius is not a finite number"},
+      {"NaN centre", client::spawnCircle({kNaN, 1}, 0.5), "circle X is not a finite number"},
+      {"infinite radius", client::spawnCircle({5, 5}, kInf), "circle R is not a finite number"},
       {"float overflow", client::spawnCircle({1e300, 5}, 0.5), "too large"},
-      {"NaN velocity", nanVelocity, "velocity.x is not a finite number"},
-      {"NaN gravity", client::setGravity({0, kNaN}), "gravity.y is not a finite number"},
+      {"NaN velocity", nanVelocity, "circle velocity x is not a finite number"},
+      {"NaN gravity", client::setGravity({0, kNaN}), "gravity GY is not a finite number"},
       {"huge gravity", client::setGravity({0, -5000}), "within +-1000"},
       {"infinite nudge", client::nudgeGravity({kInf, 0}), "not a finite number"},
       {"NaN impulse", client::applyImpulse(ball, {kNaN, 0}), "not a finite number"},
@@ -211,7 +211,7 @@ TEST(ServerSession, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
       {"collinear points", polygon({{1, 1}, {2, 1}, {3, 1}}), ""},
       {"self-intersecting", polygon({{0, 0}, {4, 4}, {4, 0}, {0, 4}}), ""},
       {"area too small", polygon({{1, 1}, {1.01, 1}, {1, 1.01}}), ""},
-      {"unknown material", withMaterial(9), "material 9 is not a material"},
+      {"unknown material", withMaterial(9), "MATERIAL 9 is not a material"},
       {"missing centre", noCenter, "center is missing"},
       {"remove unknown id", client::removeBody(987654), "unknown body id 987654"},
       {"query unknown id", client::queryBody(987654), "unknown body id 987654"},

@@ -29,6 +29,8 @@ TEST(UserWords, FieldPathsBecomeTheUsagesNames_NumbersArePlain) {
   EXPECT_EQ(inUserWords(circle, "spawn_circle: position (-25.000000, 3.500000) is outside"),
             "circle: position (-25, 3.5) is outside");
   const std::vector<client::Point> triangle{{0, 0}, {1, 0}, {0, 1}};
+  EXPECT_EQ(inUserWords(circle, "spawn_circle.options.velocity.x is not a finite number"),
+            "circle velocity x is not a finite number");
   const auto polygon = client::spawnPolygon(triangle);
   EXPECT_EQ(inUserWords(polygon, "spawn_polygon.vertices[2].y is not a finite number"),
             "polygon Y3 is not a finite number");
