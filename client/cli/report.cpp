@@ -6,7 +6,6 @@
 
 #include "impulse/wire/convert.h"
 #include "impulse/wire/parse_number.h"
-#include "server_wording.h"
 
 namespace impulse::cli {
 
@@ -157,7 +156,7 @@ std::string replyReport(std::size_t line, std::string_view command,
     const auto& result = reply.command_result();
     report["ok"] = result.ok();
     if (!result.ok()) {
-      report["error"] = "line " + std::to_string(line) + ": " + scriptWording(result.error());
+      report["error"] = "line " + std::to_string(line) + ": " + result.error();
     }
     if (result.body_id() != 0) report["body_id"] = result.body_id();
     if (result.joint_id() != 0) report["joint_id"] = result.joint_id();

@@ -29,8 +29,8 @@ Json lineReport(std::size_t line, std::string_view command);
 /// A failed line: {"line":N,"command":NAME,"ok":false,"error":"line N: ..."}.
 std::string errorReport(std::size_t line, std::string_view command, std::string_view problem);
 std::string welcomeReport(const v1::Welcome& welcome);
-/// CommandResult, BodyInfo or Pong. Server errors are worded as the script
-/// writes its commands (server_wording.h).
+/// CommandResult, BodyInfo or Pong. The server words its errors as the
+/// script writes its commands ("circle X is not a finite number").
 std::string replyReport(std::size_t line, std::string_view command, const v1::ServerMessage& reply);
 /// `save`: the scene's size and file, or the error writing it.
 std::string sceneSavedReport(std::size_t line, std::string_view command, const std::string& file,

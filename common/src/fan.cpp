@@ -1,5 +1,5 @@
-// A fan (impulse/fan.h): radial air within a cone, drag on the bodies in
-// it, and shadows: bodies in the cone sorted by distance, each covering an
+// A fan (impulse/fan.h): a jet of air along the axis within a cone, drag on
+// the bodies in it, and shadows: bodies in the cone sorted by distance, each covering an
 // angle as seen from the fan; a body whose centre's angle a nearer body
 // already covers gets no air. O(k log k) for k bodies in the cone plus the
 // merge of covered angles.
@@ -98,8 +98,15 @@ bool Fan::inFlow(const Bearing& bearing) const {
 Vec2 Fan::airVelocity(const Vec2& point) const {
   const Bearing bearing = bearingOf(point);
   if (!inFlow(bearing)) return Vec2::Zero();
-  const Vec2 outward = (point - def_.position) / bearing.distance;
-  return def_.speed * (1 - bearing.distance / def_.range) * outward;
+  const Real along = axis_.dot(point - def_.position);
+  if (along <= 0) return Vec2::Zero();
+  // Off the axis as a fraction of the cone's half-angle, signed: -1 to 1.
+  const Real offAxis = bearing.angle / def_.spread;
+  const Real jet = def_.speed * std::max(Real(0), 1 - along / def_.range) * (1 - offAxis * offAxis);
+  // The jet draws the still air beside it inwards (entrainment): a body on
+  // its flank drifts back towards the axis instead of being blown out.
+  const Vec2 towardsAxis = -offAxis * Vec2(-axis_.y(), axis_.x());
+  return jet * (axis_ + kEntrainment * towardsAxis);
 }
 
 Vec2 Fan::dragOn(const FieldBody& body, Real dt) const {

@@ -502,6 +502,10 @@ bool World::removeField(FieldId id) {
 
 int World::fieldCount() const { return static_cast<int>(impl_->fields.size()); }
 
+std::uint32_t World::nextFieldId() const { return impl_->nextFieldId; }
+
+std::uint64_t World::nextCreationOrder() const { return impl_->nextCreationOrder; }
+
 std::vector<FieldId> World::fieldIds() const {
   std::vector<FieldId> ids;
   for (const FieldSlot& slot : impl_->fields) ids.push_back(slot.id);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "impulse/server/log.h"
+#include "impulse/server/user_words.h"
 #include "impulse/wire/convert.h"
 #include "impulse/wire/framing.h"
 
@@ -31,14 +32,21 @@ SimulationSettings simulationSettings(const ServerOptions& options,
 }
 
 // A CommandResult refusing a command before it reached the world.
-v1::ServerMessage refusal(const v1::ClientMessage& message, std::string error, std::uint64_t tick) {
+v1::ServerMessage refusal(const v1::ClientMessage& message, const std::string& error, std::uint64_t tick) {
   v1::ServerMessage reply;
   auto* result = reply.mutable_command_result();
   result->set_request_id(message.request_id());
   result->set_ok(false);
-  result->set_error(std::move(error));
+  result->set_error(inUserWords(message, error));
   result->set_tick(tick);
   return reply;
+}
+
+// A refusal goes out in the words its sender typed (user_words.h).
+void wordRefusal(const v1::ClientMessage& message, v1::ServerMessage& reply) {
+  if (!reply.has_command_result() || reply.command_result().ok()) return;
+  auto* result = reply.mutable_command_result();
+  result->set_error(inUserWords(message, result->error()));
 }
 
 double millisecondsSince(Clock::time_point start) {
@@ -220,6 +228,9 @@ void Room::deliverReply(Reply& reply) {
     stats->set_commands_rate_limited(rateWaits);
   }
   if (message.has_room_list()) host_.listRooms(*message.mutable_room_list());
+  if (message.has_command_result() && !message.command_result().ok()) {
+    session->logRefusal(message.command_result().error());
+  }
   session->send(message);
   if (reply.kind == ReplyKind::Command) session->commandsApplied(reply.bytes);
   if (reply.kind == ReplyKind::WelcomeAndSubscribe) {
@@ -358,12 +369,13 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
   const std::uint32_t client = queued.client;
   if (!admin) {
     if (std::string error = ownership_.playerRefusal(message, client); !error.empty()) {
-      return reply(client, refusal(message, std::move(error), simulation_.tick()), queued.bytes);
+      return reply(client, refusal(message, error, simulation_.tick()), queued.bytes);
     }
   }
   auto outcome = applyCommand(simulation_, message, limits_);
   ownership_.recordOutcome(message, outcome.reply, client, simulation_);
   if (outcome.eventSubscription) subscribeEvents(client, *outcome.eventSubscription);
+  wordRefusal(message, outcome.reply);
   if (outcome.ticksToStep > 0) {
     // The client's later commands wait for its Step, keeping their order.
     commands_.hold(client);

@@ -222,6 +222,8 @@ void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& h
   if (const auto* refusal = std::get_if<std::string>(&room)) return session->reject(*refusal);
   session->setAdmin(admission.admin);
   const auto& joined = std::get<std::shared_ptr<Room>>(room);
+  session->setRoom(joined->name());
+  session->log(std::string("said hello") + (hello.want_snapshots() ? " (subscribed)" : ""));
   roomOfClient_[session->id()] = joined;
   joined->join(session, hello.want_snapshots());
 }

@@ -22,6 +22,10 @@ constexpr auto kLingerTimeout = std::chrono::seconds(2);
 constexpr std::size_t kMinReadBuffer = 2 * 1024;
 constexpr std::size_t kMaxReadBuffer = 64 * 1024;
 
+// Refused commands logged per client: a burst of this many, then one a second.
+constexpr double kRefusalLinesPerSecond = 1;
+constexpr double kRefusalLineBurst = 10;
+
 // How long a connection must have been silent before a newcomer may evict it.
 constexpr auto kEvictableAfter = std::chrono::seconds(2);
 
@@ -41,6 +45,7 @@ Session::Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t 
       lastActive_(connectedAt_),
       rate_(limits.commandsPerSecond, 2 * limits.commandsPerSecond, connectedAt_),
       rateTimer_(socket_.get_executor()),
+      refusalLines_(kRefusalLinesPerSecond, kRefusalLineBurst, connectedAt_),
       readBuffer_(kMinReadBuffer),
       reader_(limits.maxFrameBytes),
       lastWriteProgress_(connectedAt_) {
@@ -59,10 +64,26 @@ Session::Session(asio::ip::tcp::socket socket, SessionHost& host, std::uint32_t 
 }
 
 std::string Session::label() const {
-  std::string text = "client " + std::to_string(id_);
+  std::string text = room_.empty() ? "" : "room " + room_ + ", ";
+  text += "client " + std::to_string(id_);
   if (!name_.empty()) text += " '" + name_ + "'";
   if (!peer_.empty()) text += " (" + peer_ + ")";
   return text;
+}
+
+void Session::log(std::string_view message) const { logLine(label() + " " + std::string(message)); }
+
+void Session::logRefusal(std::string_view error) {
+  if (!refusalLines_.take(Clock::now())) {
+    ++refusalsNotLogged_;
+    return;
+  }
+  std::string line = "refused: " + std::string(error);
+  if (refusalsNotLogged_ > 0) {
+    line += " (and " + std::to_string(refusalsNotLogged_) + " refusals before it not logged)";
+    refusalsNotLogged_ = 0;
+  }
+  log(line);
 }
 
 bool Session::allowed(Phase from, Phase to) {
@@ -182,7 +203,6 @@ void Session::handleFrame(std::string_view payload) {
     for (char& c : name_) {
       if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
     }
-    logLine(label() + " said hello" + (hello.want_snapshots() ? " (subscribed)" : ""));
     host_.onHello(shared_from_this(), hello);
     return;
   }
@@ -245,7 +265,7 @@ v1::ServerMessage Session::sceneNotQueued(std::uint64_t requestId, std::size_t b
   auto* result = refusal.mutable_command_result();
   result->set_request_id(requestId);
   result->set_ok(false);
-  result->set_error("save_scene: the scene (" + std::to_string(bytes) +
+  result->set_error("save: the scene (" + std::to_string(bytes) +
                     " bytes) was not sent: " +
                     std::to_string(queuedReplyBytes_ + oversizedReplyBytes_) +
                     " bytes of earlier replies are still unread (at most " +
@@ -457,7 +477,7 @@ void Session::close(const std::string& reason) {
   if (phase_ == Phase::Closed) return;
   enter(Phase::Closed);
   rateTimer_.cancel();
-  logLine(label() + " closed: " + reason);
+  log("closed: " + reason);
   asio::error_code ignored;
   socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
   socket_.close(ignored);

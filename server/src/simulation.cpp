@@ -65,34 +65,52 @@ std::vector<v1::ServerMessage>& Simulation::takeEvents() {
 }
 
 std::string Simulation::spawnRefusal() const {
+  // A scene carrying a larger counter is refused (wire::kMaxNextCreationOrder):
+  // past it, the world could not reload its own save.
+  if (world_.nextCreationOrder() >= wire::kMaxNextCreationOrder) {
+    return "this world has made " + std::to_string(world_.nextCreationOrder() - 1) +
+           " bodies in its life, the most a scene may count: clear it or load another scene";
+  }
   std::string refusal = bodyRefusal(world_, fieldLimits_);
   return refusal.empty() ? serverShare_.refusal(1) : refusal;
 }
 
-CreateResult Simulation::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
+template <class Make>
+CreateResult Simulation::spawn(Make make) {
   if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
-  return recordCreated(world_.createCircle(center, radius, options));
+  CreateResult created = make();
+  if (created.ok()) {
+    changes_.added(created.id);
+    ++version_;
+    serverShare_.set(world_.bodyCount());
+  }
+  return created;
+}
+
+CreateResult Simulation::createCircle(const Vec2& center, Real radius, const BodyOptions& options) {
+  return spawn([&] { return world_.createCircle(center, radius, options); });
 }
 
 CreateResult Simulation::createPolygon(std::span<const Vec2> points, const BodyOptions& options) {
-  if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
-  return recordCreated(world_.createPolygon(points, options));
+  return spawn([&] { return world_.createPolygon(points, options); });
 }
 
 CreateResult Simulation::createCapsule(const Vec2& center1, const Vec2& center2, Real radius,
                                        const BodyOptions& options) {
-  return recordCreated(world_.createCapsule(center1, center2, radius, options));
+  return spawn([&] { return world_.createCapsule(center1, center2, radius, options); });
 }
 
 CreateResult Simulation::createSegment(const Vec2& point1, const Vec2& point2, const BodyOptions& options) {
-  return recordCreated(world_.createSegment(point1, point2, options));
+  return spawn([&] { return world_.createSegment(point1, point2, options); });
 }
 
 CreateResult Simulation::createChain(std::span<const Vec2> points, bool loop, const BodyOptions& options) {
-  return recordCreated(world_.createChain(points, loop, options));
+  return spawn([&] { return world_.createChain(points, loop, options); });
 }
 
-CreateResult Simulation::createBody(const BodyDef& def) { return recordCreated(world_.createBody(def)); }
+CreateResult Simulation::createBody(const BodyDef& def) {
+  return spawn([&] { return world_.createBody(def); });
+}
 
 InputResult Simulation::setTargetTransform(BodyId id, const Vec2& position, Real angle) {
   const InputResult moved = world_.setTargetTransform(id, position, angle, Real(1 / tickHz_));
@@ -116,15 +134,6 @@ InputResult Simulation::setBodyType(BodyId id, BodyType type) {
   const InputResult set = world_.setBodyType(id, type);
   if (set) redescribedBody(id);
   return set;
-}
-
-CreateResult Simulation::recordCreated(CreateResult created) {
-  if (created.ok()) {
-    changes_.added(created.id);
-    ++version_;
-    serverShare_.set(world_.bodyCount());
-  }
-  return created;
 }
 
 bool Simulation::removeBody(BodyId id) {
@@ -218,6 +227,12 @@ InputResult Simulation::setGravity(const Vec2& gravity) {
 FieldResult Simulation::addField(const FieldDef& def) {
   FieldBuild build = makeField(def);
   if (!build.ok()) return {{}, build.error};
+  // As for bodies: a larger counter than a scene may carry would make the
+  // world's own save unloadable.
+  if (world_.nextFieldId() >= wire::kMaxNextFieldId) {
+    return {{}, "this world has added " + std::to_string(world_.nextFieldId() - 1) +
+                    " force fields in its life, the most a scene may count: clear it or load another scene"};
+  }
   if (std::string refusal = fieldRefusal(world_, def, fieldLimits_); !refusal.empty()) {
     return {{}, std::move(refusal)};
   }

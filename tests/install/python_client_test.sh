@@ -20,7 +20,7 @@ PATH="$(dirname "$(command -v protoc)"):$PATH" \
   "$python" "$source_dir/examples/python/impulse_client.py" --connect "127.0.0.1:$port" | tee "$work/out.txt"
 grep -q '^welcome: client 1, 60 Hz, tick 0, admin True$' "$work/out.txt"
 grep -q '^spawned: ball 4, box 5$' "$work/out.txt"
-grep -q "^refused: ok=False error='spawn_circle: circle radius is outside the supported range" "$work/out.txt"
+grep -q "^refused: ok=False error='circle: circle radius is outside the supported range" "$work/out.txt"
 grep -q '^stepped: tick 120, state hash [0-9a-f]\{16\}$' "$work/out.txt"
 grep -Eq '^ball: position \(5\.000, [0-9.]+\) m, .*mass 157\.1 kg' "$work/out.txt"
 grep -Eq '^box: position .* mass 700\.0 kg' "$work/out.txt"

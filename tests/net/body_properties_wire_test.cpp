@@ -86,7 +86,7 @@ TEST(BodyPropertiesWire, BadPropertiesAreRefusedNamingTheField) {
   };
   EXPECT_TRUE(mentions(refusal({.gravityScale = 11}), "gravity scale 11 must be in [-10, 10]"));
   EXPECT_TRUE(mentions(refusal({.linearDamping = -1}), "linear damping -1 must be in [0, 1000]"));
-  EXPECT_TRUE(mentions(refusal({.friction = std::nan("")}), "options.friction is not a finite"));
+  EXPECT_TRUE(mentions(refusal({.friction = std::nan("")}), "circle friction is not a finite"));
   EXPECT_TRUE(mentions(refusal({.restitution = 1.5}), "restitution must be in [0, 1]"));
   EXPECT_TRUE(mentions(refusal({.density = 0}), "density must be in"));
   EXPECT_EQ(client.ping().stats().bodies(), 3u) << "the sandbox's floor and walls only";

@@ -79,18 +79,18 @@ TEST(Fields, EachKindIsAdded_SnapshotsCarryIt_AndRemovalReachesThem) {
   settle(client);
   EXPECT_EQ(client.mirror().fields().count(2), 0u);
   const auto again = client.request(client::removeField(2));
-  EXPECT_EQ(result(again).error(), "remove_field: unknown field id 2");
+  EXPECT_EQ(result(again).error(), "remove-field: unknown field id 2");
 }
 
 TEST(Fields, BadNumbersAreRefusedNamingTheFieldAndRange) {
   ServerProcess server({"--paused"});
   Client client(localClient(server.port()));
   const auto wide = client.request(client::fanField(fan(2)));
-  EXPECT_EQ(result(wide).error(), "add_field: fan spread 2 is outside (0, pi/2] rad");
+  EXPECT_EQ(result(wide).error(), "fan: fan spread 2 is outside (0, pi/2] rad");
   const auto nan = client.request(client::fanField(fan(std::nan(""))));
-  EXPECT_EQ(result(nan).error(), "add_field.fan.spread is not a finite number");
+  EXPECT_EQ(result(nan).error(), "fan spread is not a finite number");
   const auto none = client.request(client::gravitationField(0));
-  EXPECT_EQ(result(none).error(), "add_field: gravitation constant 0 is outside (0, 1000]");
+  EXPECT_EQ(result(none).error(), "gravitation: gravitation constant 0 is outside (0, 1000]");
   settle(client);
   EXPECT_TRUE(client.mirror().fields().empty()) << "a refused field changes nothing";
 }
@@ -123,7 +123,7 @@ TEST(Fields, ThreeThousandAddFields_SixtyFourFit_ANewcomersPongStaysPrompt) {
     }
   }
   EXPECT_EQ(accepted, 64);
-  EXPECT_EQ(refusal, "add_field: 65 force fields, over the room's limit of 64 (--max-fields)");
+  EXPECT_EQ(refusal, "fan: 65 force fields, over the room's limit of 64 (--max-fields)");
   const auto joining = std::chrono::steady_clock::now();
   Client newcomer(localClient(server.port(), "newcomer", false));
   const auto pong = newcomer.ping();

@@ -109,7 +109,7 @@ TEST(Joints, UpdateAndRemoveReachTheSnapshots) {
   EXPECT_EQ(client.mirror().joints().count(joint), 0u);
   const auto again = client.request(client::removeJoint(joint));
   EXPECT_FALSE(result(again).ok());
-  EXPECT_EQ(result(again).error(), "remove_joint: unknown joint id " + std::to_string(joint));
+  EXPECT_EQ(result(again).error(), "remove-joint: unknown joint id " + std::to_string(joint));
 }
 
 TEST(Joints, RemovingABodyRemovesItsJointsOnTheWire) {
@@ -139,14 +139,14 @@ TEST(Joints, BadJointsAreRefusedWithTheFieldNamedAndChangeNothing) {
   v1::ClientMessage badAnchor = client::ropeJoint({a, b, {nan, 8}, {7, 8}, false}, {});
   const std::vector<std::pair<v1::ClientMessage, std::string>> refused = {
       {client::distanceJoint({a, b, {6, 8}, {7, 8}, false}, badSpring),
-       "create_joint.distance.stiffness is not a finite number"},
-      {badAnchor, "create_joint.anchor_a.x is not a finite number"},
-      {noKind, "create_joint.kind"},
-      {client::distanceJoint({a, 999, {6, 8}, {7, 8}, false}, {}), "create_joint: "},
-      {client::distanceJoint({a, a, {6, 8}, {7, 8}, false}, {}), "create_joint: "},
-      {client::setJointTarget(12345, {1, 1}), "update_joint: "},
-      {client::setJointMotor(1, nan), "update_joint.motor_speed is not a finite number"},
-      {client::removeJoint(12345), "remove_joint: unknown joint id 12345"},
+       "distance stiffness is not a finite number"},
+      {badAnchor, "rope anchor a x is not a finite number"},
+      {noKind, "create_joint kind"},
+      {client::distanceJoint({a, 999, {6, 8}, {7, 8}, false}, {}), "distance: "},
+      {client::distanceJoint({a, a, {6, 8}, {7, 8}, false}, {}), "distance: "},
+      {client::setJointTarget(12345, {1, 1}), "target: "},
+      {client::setJointMotor(1, nan), "motor SPEED is not a finite number"},
+      {client::removeJoint(12345), "remove-joint: unknown joint id 12345"},
   };
   for (const auto& [command, error] : refused) {
     const auto reply = client.request(command);
@@ -155,7 +155,7 @@ TEST(Joints, BadJointsAreRefusedWithTheFieldNamedAndChangeNothing) {
   }
   const auto query = client.request(client::queryJoint(12345));
   EXPECT_FALSE(result(query).ok());
-  EXPECT_EQ(result(query).error(), "query_joint: unknown joint id 12345");
+  EXPECT_EQ(result(query).error(), "query-joint: unknown joint id 12345");
   settle(client);
   EXPECT_TRUE(client.mirror().joints().empty());
 }

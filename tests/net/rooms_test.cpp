@@ -191,7 +191,7 @@ TEST(Rooms, AllRoomsTogetherHoldAtMostTheServersBodies) {
   for (int i = 0; i < 31; ++i) spawnedBody(b, 1 + 0.4 * (i % 50), 5 + 0.4 * (i / 50));
   const auto refused = b.request(client::spawnCircle({10, 10}, 0.5));
   EXPECT_EQ(result(refused).error(),
-            "spawn_circle: server body limit reached: the rooms together hold 100 bodies of at "
+            "circle: server body limit reached: the rooms together hold 100 bodies of at "
             "most 100 (--max-total-bodies); this room holds 34, adding 1 would pass it");
   a.reset();  // room a and its 63 bodies go
   const auto deadline = SteadyClock::now() + milliseconds(3000);

@@ -2,8 +2,11 @@
 // another server process steps on bit-identically, through the client
 // library and through impulse-cli files; bad scenes are refused with the
 // world untouched.
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <thread>
 
 #include "impulse/client/scene_file.h"
@@ -164,6 +167,95 @@ TEST(Scenes, SceneLargerThanTheReplyCapIsSent_ASecondBehindItIsRefusedByName) {
   // Both still connected, and the scene is the world.
   EXPECT_EQ(client.ping().stats().clients(), 2u);
   EXPECT_EQ(savedScene(client), scene);
+}
+
+// A body of four sixteen-sided parts, the most a body may carry, centred
+// at `at`: 0.8 m across, so bodies 0.69 m apart press into each other.
+v1::ClientMessage fourSixteenGons(client::Point at) {
+  const std::array<client::BodyPart, 4> parts{};
+  auto spawn = client::spawnBody(at, 0, parts);
+  int part = 0;
+  for (auto& shapePart : *spawn.mutable_spawn_body()->mutable_parts()) {
+    auto* polygon = shapePart.mutable_shape()->mutable_polygon();
+    const double cx = part % 2 ? 0.2 : -0.2, cy = part / 2 ? 0.2 : -0.2;
+    for (int k = 0; k < 16; ++k) {
+      auto* vertex = polygon->add_vertices();
+      vertex->set_x(cx + 0.2 * std::cos(k * std::numbers::pi / 8));
+      vertex->set_y(cy + 0.2 * std::sin(k * std::numbers::pi / 8));
+    }
+    ++part;
+  }
+  return spawn;
+}
+
+// The largest world within the default limits: 10 000 bodies (--max-bodies)
+// of four sixteen-sided parts each, every body pressed against its eight
+// neighbours (their contacts saved too). Its scene is one SceneData frame,
+// within what a client reads (ConnectOptions::maxFrameBytes, 256 MiB). A
+// LoadScene is one client frame too: loading it back needs --max-frame-bytes
+// above its size (38 MB here), and then gives the same bytes.
+TEST(Scenes, TheLargestWorldWithinTheLimitsSavesAndReloads) {
+  ServerProcess server({"--paused", "--max-commands-per-second", "1000000", "--max-frame-bytes",
+                        std::to_string(64 << 20)});
+  Client client(localClient(server.port(), "saver", false));
+  ASSERT_TRUE(result(client.request(client::clearWorld())).ok());
+  const int maxBodies = int(client.welcome().max_bodies());
+  const int side = int(std::sqrt(maxBodies));
+  std::vector<v1::ClientMessage> spawns;
+  for (int i = 0; i < side * side; ++i) {
+    spawns.push_back(fourSixteenGons({-24 + 0.69 * (i % side), -24 + 0.69 * (i / side)}));
+  }
+  for (const auto& reply : requestAll(client, spawns)) {
+    ASSERT_TRUE(result(reply).ok()) << result(reply).error();
+  }
+  ASSERT_TRUE(result(client.request(client::step(1))).ok());
+  const auto saved = client.request(client::saveScene());
+  ASSERT_TRUE(saved.has_scene_data()) << saved.DebugString();
+  const std::string& scene = saved.scene_data().data();
+  std::printf("[ measure ] %d bodies of four 16-gons, pressed together: a scene of %zu bytes\n",
+              side * side, scene.size());
+  EXPECT_EQ(side * side, maxBodies);
+  EXPECT_LT(scene.size(), client::ConnectOptions{}.maxFrameBytes / 2) << "one frame, with room to spare";
+  const auto loaded = client.request(client::loadScene(scene));
+  ASSERT_TRUE(result(loaded).ok()) << result(loaded).error();
+  EXPECT_EQ(savedScene(client), scene);
+}
+
+// A scene may carry id counters up to wire::kMaxNextFieldId and
+// kMaxNextCreationOrder. A world loaded one short of them makes one more
+// field and one more body, then refuses more by name: past them, its own
+// save would not load.
+TEST(Scenes, IdCountersStopAtTheMostASceneMayCarry_TheWorldReloadsItsSave) {
+  ServerProcess server({"--paused"});
+  Client client(localClient(server.port(), "counter", false));
+  ASSERT_TRUE(result(client.request(client::clearWorld())).ok());
+  v1::Scene scene;
+  ASSERT_TRUE(scene.ParseFromString(savedScene(client)));
+  scene.set_next_field_id(wire::kMaxNextFieldId - 1);
+  scene.set_next_creation_order(wire::kMaxNextCreationOrder - 1);
+  const auto loaded = client.request(client::loadScene(scene.SerializeAsString()));
+  ASSERT_TRUE(result(loaded).ok()) << result(loaded).error();
+
+  const auto field = result(client.request(client::gravitationField(1)));
+  ASSERT_TRUE(field.ok()) << field.error();
+  EXPECT_EQ(field.field_id(), wire::kMaxNextFieldId - 1);
+  const auto noField = result(client.request(client::gravitationField(1)));
+  EXPECT_FALSE(noField.ok());
+  EXPECT_EQ(noField.error(),
+            "gravitation: this world has added 2147483647 force fields in its life, the most a scene "
+            "may count: clear it or load another scene");
+  ASSERT_TRUE(result(client.request(client::spawnCircle({1, 2}, 0.5))).ok());
+  const auto noBody = result(client.request(client::spawnCircle({3, 2}, 0.5)));
+  EXPECT_FALSE(noBody.ok());
+  EXPECT_EQ(noBody.error(),
+            "circle: this world has made 4611686018427387903 bodies in its life, the most a scene "
+            "may count: clear it or load another scene");
+  EXPECT_EQ(client.ping().stats().bodies(), 1u);
+
+  const std::string full = savedScene(client);
+  const auto reloaded = client.request(client::loadScene(full));
+  ASSERT_TRUE(result(reloaded).ok()) << result(reloaded).error();
+  EXPECT_EQ(savedScene(client), full);
 }
 
 }  // namespace

@@ -58,7 +58,7 @@ TEST(TimeScaleServer, OutOfRangeScaleIsRefusedAndChangesNothing) {
   for (double scale : {0.001, 17.0, std::nan("")}) {
     const v1::CommandResult refused = result(client.request(client::setTimeScale(scale)));
     EXPECT_FALSE(refused.ok());
-    EXPECT_TRUE(mentions(refused.error(), "set_time_scale: time scale")) << refused.error();
+    EXPECT_TRUE(mentions(refused.error(), "time-scale: time scale")) << refused.error();
     EXPECT_TRUE(mentions(refused.error(), "[0.01, 16]")) << refused.error();
   }
   const Advance advance = advanceOverASecond(client);

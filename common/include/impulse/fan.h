@@ -1,6 +1,12 @@
 #pragma once
-/// A fan: air blowing from a point along a direction, within a cone, its
-/// speed falling linearly from `speed` at the fan to nothing at `range`.
+/// A fan: a jet of air blowing from a point along a direction, within a
+/// cone. The air moves along the axis; its speed falls linearly from
+/// `speed` at the fan to nothing at `range` (measured along the axis) and
+/// across the cone from full on the axis to nothing at its edge (1 - f^2,
+/// f the angle off the axis over `spread`). The jet also draws air in from
+/// its sides (entrainment): a crosswind towards the axis of kEntrainment
+/// times f times the jet's speed there, so a body on the flank is carried
+/// back towards the axis rather than out of the cone.
 /// Bodies in the flow feel quadratic drag, 1/2 rho Cd w |u - v| (u - v),
 /// with air of areal density 1.2 kg/m^2 (the materials' densities are
 /// areal: a 1 m deep slice), Cd = 1 and w the body's width across the flow.
@@ -27,6 +33,7 @@ class Fan : public ForceField {
  public:
   static constexpr Real kAirDensity = Real(1.2);
   static constexpr Real kDragCoefficient = 1;
+  static constexpr Real kEntrainment = Real(0.5);
 
   /// `def` must have passed makeFan's checks.
   explicit Fan(const FanDef& def);

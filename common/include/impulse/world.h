@@ -163,6 +163,9 @@ class World {
   /// Every live body's id in slot order.
   std::vector<BodyId> bodyIds() const;
   int bodyCount() const;
+  /// The creation order the next body gets: one more than the bodies ever
+  /// created in this world (a scene carries it on).
+  std::uint64_t nextCreationOrder() const;
   int awakeBodyCount() const;
   int contactCount() const;
 
@@ -235,6 +238,8 @@ class World {
   /// False for an unknown id.
   bool removeField(FieldId id);
   int fieldCount() const;
+  /// The id the next addField hands out (field ids are never reused).
+  std::uint32_t nextFieldId() const;
   /// Every field's id, in the order they apply.
   std::vector<FieldId> fieldIds() const;
   /// The field, or nullptr for an unknown id.

@@ -492,7 +492,7 @@ PresetInfo fansPreset(World& world) {
   addCeiling(world);
   for (Real x : kFanPositions) {
     world.addField(makeFan({.position = Vec2(x, kFloor), .direction = Vec2(0, 1), .speed = kFanSpeed,
-                            .range = kFanRange, .spread = Real(0.35)})
+                            .range = kFanRange, .spread = kFanSpread})
                        .field);
   }
   // Light ICE balls dropped into each cone, fanned out in angle so that few
@@ -510,7 +510,8 @@ PresetInfo fansPreset(World& world) {
   }
   return {17,
           "Fans",
-          {"Two fans on the floor blow upward, the air slowing to nothing at 14 m.",
+          {"Two fans on the floor blow upward, the air slowing to nothing at 14 m",
+           "and towards each cone's edge, drawing a ball on its flank back inwards.",
            "Light ICE balls hover where the drag 1/2 rho w u^2 equals their weight;",
            "balls behind others are in their shadow and drop. Outside the cones: no air."},
           {},

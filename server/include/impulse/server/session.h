@@ -100,6 +100,15 @@ class Session : public std::enable_shared_from_this<Session> {
   void close(const std::string& reason);
 
   std::uint32_t id() const { return id_; }
+  /// The room it joined: named on its log lines from now on.
+  void setRoom(std::string room) { room_ = std::move(room); }
+  /// A log line about this client: "room R, client N 'name' (address:port) MESSAGE".
+  void log(std::string_view message) const;
+  /// Logs a refused command (its error in the user's words), at most
+  /// kRefusalLinesPerSecond lines a second after a burst: a client sending
+  /// only bad commands cannot flood the log, and the next line logged says
+  /// how many were left out.
+  void logRefusal(std::string_view error);
   /// The role granted at Hello (docs/protocol.md, Access).
   bool admin() const { return admin_; }
   void setAdmin(bool admin) { admin_ = admin; }
@@ -171,6 +180,7 @@ class Session : public std::enable_shared_from_this<Session> {
   std::uint32_t id_;
   SessionLimits limits_;
   std::string name_;
+  std::string room_;
   std::string peer_;
   std::string address_;
   Clock::time_point connectedAt_;
@@ -179,6 +189,8 @@ class Session : public std::enable_shared_from_this<Session> {
   asio::steady_timer rateTimer_;
   bool waitingForRate_ = false;
   std::uint64_t rateWaits_ = 0;
+  RateLimiter refusalLines_;
+  std::uint64_t refusalsNotLogged_ = 0;
   bool admin_ = false;
   bool quantized_ = false;
 

@@ -147,8 +147,10 @@ class Simulation {
   std::uint64_t bodiesLeftWorld() const { return bodiesLeftWorld_; }
 
  private:
-  /// Records a created body as added (a refused creation changes nothing).
-  CreateResult recordCreated(CreateResult created);
+  /// Creates a body by `make` unless spawnRefusal() says why not, and
+  /// records it as added (a refused creation changes nothing).
+  template <class Make>
+  CreateResult spawn(Make make);
   /// After a successful change: records `id` (if any) as changed for snapshots.
   void changedBody(BodyId id);
   /// After a step: its events as an Events message, when wanted.
@@ -160,7 +162,8 @@ class Simulation {
   void recordRemovedJoints();
   /// After the world was replaced: the next snapshot is full.
   void recordReplaced();
-  /// Why one more body may not be made (fields' cost, server-wide limit).
+  /// Why one more body may not be made (fields' cost, server-wide limit,
+  /// creation counter at the most a scene may carry).
   std::string spawnRefusal() const;
 
   double tickHz_;

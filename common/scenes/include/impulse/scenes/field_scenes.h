@@ -15,6 +15,7 @@ inline constexpr Real kWaterDensity = 1000;
 inline constexpr Real kFanPositions[2] = {7, 18};
 inline constexpr Real kFanSpeed = 45;
 inline constexpr Real kFanRange = 14;
+inline constexpr Real kFanSpread = Real(0.35);  ///< half-angle of each cone, rad
 inline constexpr Real kLightBallRadius = Real(0.15);
 
 }  // namespace impulse
