@@ -22,6 +22,12 @@ constexpr float kWheelZoom = 1.15f;
 // A right press that moves less than this (pixels) is a click, not a pan.
 constexpr int kClickSlop = 4;
 
+// The names Controls gives the spawns of its drawing tools.
+bool isDrawnShape(const std::string& what) {
+  return what == "polygon" || what == "circle" || what == "capsule" || what == "segment" ||
+         what == "chain";
+}
+
 std::runtime_error sdlError(const std::string& what) {
   return std::runtime_error(what + ": " + SDL_GetError());
 }
@@ -137,8 +143,12 @@ void App::actOnScene(SceneKey key) {
   switch (key.action) {
     case SceneAction::SaveScene: return controls_.notify(sceneFiles_.save(), now());
     case SceneAction::LoadScene: return controls_.notify(sceneFiles_.load(), now());
-    case SceneAction::SaveShape:
-      return controls_.notify(sceneFiles_.saveShape(c.polygonPoints()), now());
+    case SceneAction::SaveShape: {
+      // Only a polygon's points make a shape to keep (a chain's do not).
+      const bool polygon = c.mode() == DrawMode::Polygon;
+      return controls_.notify(
+          sceneFiles_.saveShape(polygon ? std::span(c.placedPoints()) : std::span<const Vec2>()), now());
+    }
     case SceneAction::StampShape:
       return controls_.notify(sceneFiles_.stamp(std::size_t(key.index), c.pointer(),
                                                 {.material = c.material(),
@@ -269,7 +279,7 @@ void App::handleReplies() {
       controls_.dragJointAnswered(result.ok() ? std::optional(result.joint_id()) : std::nullopt);
     }
     if (result.ok()) {
-      if (reply.what == "polygon" || reply.what == "circle") spawned_.insert(result.body_id());
+      if (isDrawnShape(reply.what)) spawned_.insert(result.body_id());
     } else if (reply.what == "inspect") {
       // The selected body is gone (cleared, preset loaded).
       controls_.deselect();
