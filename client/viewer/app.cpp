@@ -125,10 +125,13 @@ std::vector<std::uint32_t> App::userBodies() const {
 std::optional<BodyHit> App::bodyAt(const Vec2& point) const {
   // Moving bodies before scenery: a ball resting on the floor is what a click
   // on it means.
+  // A segment or chain is hit within a few pixels of its line.
+  constexpr float kLineReachPixels = 5;
+  const Real lineReach = kLineReachPixels / view().scale();
   std::optional<BodyHit> staticHit;
   for (auto it = world_.bodies().rbegin(); it != world_.bodies().rend(); ++it) {
     const Transform xf{it->state.position, Rot::fromAngle(it->state.angle)};
-    if (!containsPoint(it->look->shape, xf, point)) continue;
+    if (!bodyTouches(*it->look, xf, point, lineReach)) continue;
     const BodyHit hit{it->state.id, it->look->isStatic, it->state.position, it->state.angle};
     if (!hit.isStatic) return hit;
     if (!staticHit) staticHit = hit;

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <numbers>
+#include <vector>
 
 #include "body_metrics.h"
 #include "impulse/client/commands.h"
@@ -22,9 +24,20 @@ std::string vec(const v1::Vec2& v, int decimals) {
 
 std::string yesNo(bool value) { return value ? "yes" : "no"; }
 
-std::string shapeText(const v1::Shape& shape) {
-  const auto decoded = wire::shapeFromWire(shape);
-  return decoded.ok() ? describeShape(*decoded.value) : "unreadable: " + decoded.error;
+// The body's shapes, decoded; the error of the first that cannot be.
+struct BodyShapes {
+  std::vector<Shape> shapes;
+  std::string error;
+};
+
+BodyShapes shapesOf(const v1::BodyDescriptor& d) {
+  BodyShapes out;
+  for (int i = 0; i <= d.extra_shapes_size(); ++i) {
+    const auto decoded = wire::shapeFromWire(i == 0 ? d.shape() : d.extra_shapes(i - 1));
+    if (!decoded.ok()) return {{}, "unreadable: " + decoded.error};
+    out.shapes.push_back(*decoded.value);
+  }
+  return out;
 }
 
 void row(const char* name, const std::string& value) {
@@ -35,6 +48,20 @@ void row(const char* name, const std::string& value) {
   ImGui::TextWrapped("%s", value.c_str());
 }
 
+// One row for a single shape; for several, a summary and then the first
+// few one row each (a chain's fifty segments would push the rest away).
+void drawShapeRows(const v1::BodyDescriptor& d) {
+  constexpr std::size_t kListed = 6;
+  const BodyShapes body = shapesOf(d);
+  if (!body.error.empty()) return row("shape", body.error);
+  if (body.shapes.size() == 1) return row("shape", describeShape(body.shapes.front()));
+  row("shapes", describeShapes(body.shapes));
+  for (std::size_t i = 0; i < std::min(body.shapes.size(), kListed); ++i) {
+    row(("  " + std::to_string(i + 1)).c_str(), describeShape(body.shapes[i]));
+  }
+  if (body.shapes.size() > kListed) row("", "and " + std::to_string(body.shapes.size() - kListed) + " more");
+}
+
 void drawBodyTable(const v1::BodyInfo& info) {
   const auto& d = info.descriptor();
   const auto& s = info.state();
@@ -42,12 +69,9 @@ void drawBodyTable(const v1::BodyInfo& info) {
   const double degrees = s.angle() * 180 / std::numbers::pi;
   if (!ImGui::BeginTable("body", 2, ImGuiTableFlags_SizingStretchProp)) return;
   row("id", std::to_string(d.id()));
-  row("shape", shapeText(d.shape()));
-  // A compound body lists every shape, one row each.
-  for (int i = 0; i < d.extra_shapes_size(); ++i) row("+ shape", shapeText(d.extra_shapes(i)));
+  drawShapeRows(d);
   row("material", materialLabel(material));
-  row("static", yesNo(d.is_static()));
-  row("kinematic", yesNo(d.is_kinematic()));
+  row("type", d.is_static() ? "static" : d.is_kinematic() ? "kinematic" : "dynamic");
   row("awake", yesNo(s.awake()));
   row("gravity", d.ignore_gravity() ? "ignored" : "felt");
   row("position", vec(s.position(), 3) + " m");

@@ -109,6 +109,11 @@ TEST_F(ShapeTools, ChainClickedLeftToRight_HoldsABallDroppedOnIt) {
   const client::MirrorBody& chain = *drawn(ShapeType::ChainSegment);
   ASSERT_TRUE(observe([&] { return viewer.app().world().bodies().size() == observer.mirror().bodies().size(); }));
   viewer.runFrames(3);
+  // A click on its line selects it for the inspector (a chain has no inside).
+  viewer.tap(SDLK_m);
+  viewer.click(Vec2(10.5f, 5.05f));
+  EXPECT_EQ(viewer.app().controls().selectedBody(), chain.id.value);
+  viewer.runFrames(20);
   ASSERT_NE(viewer.capture(screenshotPath("chain_drawn.bmp")), nullptr);
   EXPECT_TRUE(chain.isStatic);
   EXPECT_EQ(chain.extraShapes.size() + 1, clicks.size() - 1);  // a segment between each two clicks
