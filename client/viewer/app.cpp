@@ -166,6 +166,10 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
     if (key.type == SDL_KEYDOWN && key.repeat == 0) actOnScene(*sceneKey);
     return;
   }
+  // A panel field with the focus (the inspector's) takes the key presses:
+  // "1" typed there loads no preset, its Enter resets no gravity. Releases
+  // still reach the controls, so no held key repeats for ever.
+  if (key.type == SDL_KEYDOWN && ImGui::GetIO().WantTextInput) return;
   const auto control = controlForKey(key.keysym.sym, key.keysym.mod);
   if (!control || (key.repeat != 0 && !followsKeyRepeat(control->control))) return;
   if (key.type == SDL_KEYDOWN) {

@@ -210,6 +210,8 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   const auto& act = actions.key;
   state.presetEntries.clear();
   state.stopButton.reset();
+  state.poseFields.reset();
+  state.typeButtons = {};
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.w, rect.h});
   ImGui::Begin("##side panel", nullptr,
