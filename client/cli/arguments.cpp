@@ -107,12 +107,14 @@ bool Arguments::bodyFlags(std::size_t from, client::SpawnOptions& options) {
       options.isStatic = true;
     } else if (word == "kinematic") {
       options.isKinematic = true;
+    } else if (word == "asleep") {
+      options.isAwake = false;
     } else if (word == "nograv") {
       options.ignoreGravity = true;
     } else if (const auto material = wire::materialFromName(word)) {
       options.material = *material;
     } else {
-      note("unexpected " + quoted(word, " (material, static, kinematic or nograv)"));
+      note("unexpected " + quoted(word, " (material, static, kinematic, asleep or nograv)"));
       return false;
     }
   }

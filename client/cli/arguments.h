@@ -30,7 +30,7 @@ class Arguments {
   std::optional<std::uint32_t> idAt(std::size_t i);
   /// False (noted) when more than `count` words were given.
   bool maxWords(std::size_t count);
-  /// Reads MATERIAL, static, nograv and NAME=VALUE properties (density,
+  /// Reads MATERIAL, static, kinematic, asleep, nograv and NAME=VALUE properties (density,
   /// friction, restitution, damping, angular-damping, gravity-scale) in any
   /// order from word `from` on.
   bool bodyFlags(std::size_t from, client::SpawnOptions& options);

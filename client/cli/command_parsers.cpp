@@ -1,5 +1,6 @@
 #include "command_parsers.h"
 
+#include <algorithm>
 #include <array>
 #include <tuple>
 #include <vector>
@@ -194,6 +195,42 @@ std::optional<std::tuple<std::uint32_t, client::Point, double>> parseTarget(Argu
     return std::nullopt;
   }
   return std::tuple{std::uint32_t(*id), client::Point{*x, *y}, angle};
+}
+
+// material ID MATERIAL
+std::optional<std::tuple<std::uint32_t, Material>> parseBodyMaterial(Arguments& line) {
+  const auto id = line.idAt(1);
+  if (!id) return std::nullopt;
+  if (line.size() < 3) {
+    line.refuse("MATERIAL is missing");
+    return std::nullopt;
+  }
+  const auto material = wire::materialFromName(line.word(2));
+  if (!material) {
+    line.refuse(quoted(line.word(2), " is not a material"));
+    return std::nullopt;
+  }
+  if (!line.maxWords(3)) return std::nullopt;
+  return std::tuple{*id, *material};
+}
+
+// body-type ID static|kinematic|dynamic
+std::optional<std::tuple<std::uint32_t, BodyType>> parseBodyType(Arguments& line) {
+  static constexpr std::array<std::pair<std::string_view, BodyType>, 3> kTypes{
+      {{"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}}};
+  const auto id = line.idAt(1);
+  if (!id) return std::nullopt;
+  if (line.size() < 3) {
+    line.refuse("TYPE is missing (static, kinematic or dynamic)");
+    return std::nullopt;
+  }
+  const auto type = std::find_if(kTypes.begin(), kTypes.end(), [&](const auto& row) { return row.first == line.word(2); });
+  if (type == kTypes.end()) {
+    line.refuse(quoted(line.word(2), " is not a body type (static, kinematic or dynamic)"));
+    return std::nullopt;
+  }
+  if (!line.maxWords(3)) return std::nullopt;
+  return std::tuple{*id, type->second};
 }
 
 std::optional<std::tuple<client::Point>> parsePoint(Arguments& line) {

@@ -15,6 +15,7 @@ void setOptions(const SpawnOptions& options, v1::BodyOptions* out) {
   out->set_material(wire::toWire(options.material));
   out->set_is_static(options.isStatic);
   out->set_is_kinematic(options.isKinematic);
+  if (!options.isAwake) out->set_is_awake(false);
   out->set_ignore_gravity(options.ignoreGravity);
   setPoint({options.velocityX, options.velocityY}, out->mutable_velocity());
   out->set_angular_velocity(options.angularVelocity);
@@ -114,6 +115,19 @@ void setPart(const BodyPart& part, v1::ShapePart* out) {
   }
 }
 
+// A command that names a body and a pose (SetTargetTransform,
+// SetTransform), in the oneof field `field` selects.
+template <class Command>
+v1::ClientMessage bodyPose(std::uint32_t body, Point position, double angle,
+                           Command* (v1::ClientMessage::*field)()) {
+  v1::ClientMessage message;
+  Command* command = (message.*field)();
+  command->set_body_id(body);
+  setPoint(position, command->mutable_position());
+  command->set_angle(angle);
+  return message;
+}
+
 }  // namespace
 
 v1::ClientMessage spawnBody(Point position, double angle, std::span<const BodyPart> parts,
@@ -128,11 +142,24 @@ v1::ClientMessage spawnBody(Point position, double angle, std::span<const BodyPa
 }
 
 v1::ClientMessage setTargetTransform(std::uint32_t body, Point position, double angle) {
+  return bodyPose(body, position, angle, &v1::ClientMessage::mutable_set_target_transform);
+}
+
+v1::ClientMessage setTransform(std::uint32_t body, Point position, double angle) {
+  return bodyPose(body, position, angle, &v1::ClientMessage::mutable_set_transform);
+}
+
+v1::ClientMessage setMaterial(std::uint32_t body, Material material) {
   v1::ClientMessage message;
-  auto* command = message.mutable_set_target_transform();
-  command->set_body_id(body);
-  setPoint(position, command->mutable_position());
-  command->set_angle(angle);
+  message.mutable_set_material()->set_body_id(body);
+  message.mutable_set_material()->set_material(wire::toWire(material));
+  return message;
+}
+
+v1::ClientMessage setBodyType(std::uint32_t body, BodyType type) {
+  v1::ClientMessage message;
+  message.mutable_set_body_type()->set_body_id(body);
+  message.mutable_set_body_type()->set_type(wire::toWire(type));
   return message;
 }
 

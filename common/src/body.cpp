@@ -14,6 +14,7 @@ BodyDef makeBodyDef(const Shape& shape, const Vec2& position, const BodyOptions&
   def.material = options.material;
   def.isStatic = options.isStatic;
   def.isKinematic = options.isKinematic;
+  def.isAwake = options.isAwake;
   def.ignoreGravity = options.ignoreGravity;
   def.linearDrag = options.linearDrag;
   def.angularDrag = options.angularDrag;

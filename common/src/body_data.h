@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "edge_list.h"
+#include "impulse/body.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
 
@@ -11,6 +12,11 @@ namespace impulse {
 
 struct Body {
   bool isDynamic() const { return !isStatic && !isKinematic; }
+  BodyType type() const { return isStatic ? BodyType::Static : isKinematic ? BodyType::Kinematic : BodyType::Dynamic; }
+  void setType(BodyType type) {
+    isStatic = type == BodyType::Static;
+    isKinematic = type == BodyType::Kinematic;
+  }
 
   Transform transform;
   Vec2 linearVelocity = Vec2::Zero();

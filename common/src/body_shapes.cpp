@@ -8,6 +8,8 @@
 #include <array>
 #include <string>
 
+#include "input_limits.h"
+
 namespace impulse {
 
 namespace {
@@ -43,6 +45,12 @@ MassProperties unionMass(WorldData& world, std::int32_t body) {
   });
   if (parts.empty()) return {};
   return combineMassProperties(parts);
+}
+
+bool hasArea(const WorldData& world, std::int32_t body) {
+  bool area = false;
+  world.forEachShape(body, [&](std::int32_t s) { area = area || isSolid(world.shapes[s].type()); });
+  return area;
 }
 
 }  // namespace
@@ -104,6 +112,41 @@ void detachShape(WorldData& world, std::int32_t s) {
   ++slot.generation;
   world.freeShapes.release(s);
   --world.liveShapes;
+}
+
+std::string checkShapesSuitType(const WorldData& world, std::int32_t body, BodyType type) {
+  if (type == BodyType::Dynamic && !hasArea(world, body)) {
+    return "a dynamic body needs a shape with area (circle, capsule or polygon): segments and chains have none";
+  }
+  // A moving body's shapes stay together; static scenery (terrain, a long
+  // floor) may reach as far as its shapes do.
+  const Real extent = world.bodies[body].extent;
+  if (type == BodyType::Static || extent <= kMaxBodyExtent) return {};
+  return "the body's shapes reach " + describeNumber(extent) + " m from its centre of mass: they must stay within " +
+         describeNumber(kMaxBodyExtent) + " m of it";
+}
+
+// The centre of mass moved with the shapes, so the velocity is the same
+// material motion's at the new centre, and the contacts' cached frames are
+// stale.
+std::string reshapeBody(WorldData& world, std::int32_t slot) {
+  Body& body = world.bodies[slot];
+  const Vec2 shift = updateBodyMass(world, slot);
+  const Vec2 arm = body.transform.q.apply(shift);
+  body.linearVelocity += body.angularVelocity * Vec2(-arm.y(), arm.x());
+  body.center0 = body.transform.p;
+  body.rotation0 = body.transform.q;
+  forgetManifoldFrames(world, slot);
+  moveBodyProxies(world, slot);
+  wakeIsland(world, slot);
+  return checkShapesSuitType(world, slot, body.type());
+}
+
+void wakeBodiesUnder(WorldData& world, const AABB& box) {
+  world.broadPhase.query(box, [&](std::int32_t shape) {
+    wakeIsland(world, world.shapes[shape].body);
+    return true;
+  });
 }
 
 Vec2 updateBodyMass(WorldData& world, std::int32_t b) {

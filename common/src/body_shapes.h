@@ -27,6 +27,21 @@ void createShapeProxy(WorldData& world, std::int32_t shape);
 /// (its contacts must be gone already).
 void detachShape(WorldData& world, std::int32_t shape);
 
+/// Empty when the body's shapes suit a body of `type`: a dynamic body needs
+/// a shape with area, and a moving body's shapes stay within kMaxBodyExtent
+/// of its centre of mass (its extent must be up to date).
+std::string checkShapesSuitType(const WorldData& world, std::int32_t body, BodyType type);
+
+/// After a shape came or went or changed density: new mass and sizes, with
+/// the velocity carried to the new centre of mass; the body wakes. Returns
+/// checkShapesSuitType's verdict on the result.
+std::string reshapeBody(WorldData& world, std::int32_t body);
+
+/// Wakes the bodies whose proxies overlap the box: a static body that
+/// appears or moves there is never looked for by sleeping ones (only moving
+/// proxies search for pairs).
+void wakeBodiesUnder(WorldData& world, const AABB& box);
+
 /// Mass, inertia, extent and inner radius from the body's shapes. When the
 /// union's centroid is off the body's origin, the shapes are moved so it is
 /// the origin again and the body's position follows, leaving every shape

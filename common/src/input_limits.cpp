@@ -166,6 +166,16 @@ std::string checkForce(const WorldData& world, BodyId id, const Vec2& force,
   return {};
 }
 
+std::string checkInsideBounds(const AABB& bounds, const Vec2& p) {
+  if (p.x() >= bounds.lower.x() && p.y() >= bounds.lower.y() && p.x() <= bounds.upper.x() &&
+      p.y() <= bounds.upper.y()) {
+    return {};
+  }
+  return "position is outside the world bounds (" + std::to_string(bounds.lower.x()) + ", " +
+         std::to_string(bounds.lower.y()) + ") to (" + std::to_string(bounds.upper.x()) + ", " +
+         std::to_string(bounds.upper.y()) + ")";
+}
+
 std::string checkSetVelocity(const WorldData& world, BodyId id, const Vec2& linear, Real angular) {
   const Body* body = nullptr;
   if (std::string error = pushTarget(world, id, body); !error.empty()) return error;

@@ -18,6 +18,9 @@ std::string describeNumber(double value);
 /// names the field and the range.
 std::string checkRange(const std::string& field, double value, double lo, double hi);
 
+/// A body's centre where it is created or moved to: inside the bounds.
+std::string checkInsideBounds(const AABB& bounds, const Vec2& position);
+
 /// An impulse (N*s) at `point` (default: the centre of mass).
 std::string checkImpulse(const WorldData& world, BodyId id, const Vec2& impulse,
                          const std::optional<Vec2>& point);

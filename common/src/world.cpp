@@ -24,11 +24,6 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-bool contains(const AABB& bounds, const Vec2& p) {
-  return p.x() >= bounds.lower.x() && p.y() >= bounds.lower.y() && p.x() <= bounds.upper.x() &&
-         p.y() <= bounds.upper.y();
-}
-
 // The per-body motion properties the material table does not bound.
 std::string checkDragAndGravityScale(const BodyDef& def) {
   auto outside = [](Real value, Real lo, Real hi) { return !(value >= lo && value <= hi); };
@@ -52,12 +47,7 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
       !isFinite(def.gravityScale)) {
     return "body has a non-finite position, angle, velocity, drag or gravity scale (NaN or infinity)";
   }
-  if (!contains(world.settings.bounds, def.position)) {
-    const AABB& b = world.settings.bounds;
-    return "position is outside the world bounds (" + std::to_string(b.lower.x()) + ", " +
-           std::to_string(b.lower.y()) + ") to (" + std::to_string(b.upper.x()) + ", " +
-           std::to_string(b.upper.y()) + ")";
-  }
+  if (std::string error = checkInsideBounds(world.settings.bounds, def.position); !error.empty()) return error;
   if (std::string error = checkBodyMotion(world.settings.inputLimits, def.linearVelocity,
                                           def.angularVelocity);
       !error.empty()) {
@@ -108,19 +98,6 @@ std::string checkShapeDefs(const WorldData& world, const BodyDef& def) {
   return {};
 }
 
-// What a body's shapes must add up to: a dynamic body needs mass, and no
-// shape may reach far from the centre.
-std::string checkBodyShapes(const Body& body) {
-  if (body.isDynamic() && !(body.mass.mass > 0)) {
-    return "a dynamic body needs a shape with area (circle, capsule or polygon): segments and chains have none";
-  }
-  // A moving body's shapes stay together; static scenery (terrain, a long
-  // floor) may reach as far as its shapes do.
-  if (body.isStatic || body.extent <= kMaxBodyExtent) return {};
-  return "the body's shapes reach " + describeNumber(body.extent) +
-         " m from its centre of mass: they must stay within " + describeNumber(kMaxBodyExtent) + " m of it";
-}
-
 // Undoes a body creation that failed a check made after its shapes were
 // attached (the shapes have no proxy yet).
 void discardNewBody(WorldData& world, std::int32_t slot) {
@@ -128,31 +105,6 @@ void discardNewBody(WorldData& world, std::int32_t slot) {
   world.bodies[slot].alive = false;
   world.freeBodies.release(slot);
   --world.liveBodies;
-}
-
-// After a shape came or went: new mass and sizes; the centre of mass moved
-// with the shapes, so the velocity is the same material motion's at the new
-// centre, and the contacts' cached frames are stale.
-std::string reshapeBody(WorldData& world, std::int32_t slot) {
-  Body& body = world.bodies[slot];
-  const Vec2 shift = updateBodyMass(world, slot);
-  const Vec2 arm = body.transform.q.apply(shift);
-  body.linearVelocity += body.angularVelocity * Vec2(-arm.y(), arm.x());
-  body.center0 = body.transform.p;
-  body.rotation0 = body.transform.q;
-  forgetManifoldFrames(world, slot);
-  moveBodyProxies(world, slot);
-  wakeIsland(world, slot);
-  return checkBodyShapes(body);
-}
-
-// A new static body may overlap sleeping bodies that would never look for it
-// (only moving proxies search for pairs): wake them.
-void wakeBodiesUnder(WorldData& world, const AABB& box) {
-  world.broadPhase.query(box, [&](std::int32_t shape) {
-    wakeIsland(world, world.shapes[shape].body);
-    return true;
-  });
 }
 
 void wakeAll(WorldData& world) {
@@ -242,7 +194,7 @@ CreateResult World::createBody(const BodyDef& def) {
   ++w.liveBodies;
   for (const ShapeDef& shape : shapeDefsOf(def)) attachShape(w, slot, shape);
   updateBodyMass(w, slot);
-  if (std::string error = checkBodyShapes(body); !error.empty()) {
+  if (std::string error = checkShapesSuitType(w, slot, body.type()); !error.empty()) {
     discardNewBody(w, slot);
     return {{}, error};
   }
@@ -254,8 +206,11 @@ CreateResult World::createBody(const BodyDef& def) {
   } else {
     body.linearVelocity = def.linearVelocity;
     body.angularVelocity = def.angularVelocity;
-    body.awake = true;
-    w.awakeBodies.push_back(slot);
+    // One created asleep waits, velocity and all, to be touched or woken.
+    if (def.isAwake) {
+      body.awake = true;
+      w.awakeBodies.push_back(slot);
+    }
   }
   return {w.idOf(slot), {}};
 }

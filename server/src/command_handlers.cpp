@@ -203,6 +203,42 @@ void setTargetTransform(CommandContext& context, const v1::SetTargetTransform& c
   context.succeed();
 }
 
+void setTransform(CommandContext& context, const v1::SetTransform& command) {
+  const auto position = requiredPoint(context, command.has_position(), command.position(), "set_transform.position");
+  if (!position) return;
+  const auto angle = wire::realFromWire(command.angle(), "set_transform.angle");
+  if (!angle.ok()) return context.fail(angle.error);
+  const BodyId id{command.body_id()};
+  if (InputResult moved = context.simulation.setTransform(id, *position, *angle.value); !moved) {
+    return context.fail("set_transform: " + moved.error);
+  }
+  context.succeed();
+}
+
+void setMaterial(CommandContext& context, const v1::SetMaterial& command) {
+  const auto material = wire::materialFromWire(command.material());
+  if (!material) {
+    return context.fail("set_material.material " + std::to_string(command.material()) + " is not a material " +
+                        wire::materialRange());
+  }
+  if (InputResult set = context.simulation.setMaterial(BodyId{command.body_id()}, *material); !set) {
+    return context.fail("set_material: " + set.error);
+  }
+  context.succeed();
+}
+
+void setBodyType(CommandContext& context, const v1::SetBodyType& command) {
+  const auto type = wire::bodyTypeFromWire(command.type());
+  if (!type) {
+    return context.fail("set_body_type.type " + std::to_string(command.type()) +
+                        " is not a body type (1 static, 2 kinematic, 3 dynamic)");
+  }
+  if (InputResult set = context.simulation.setBodyType(BodyId{command.body_id()}, *type); !set) {
+    return context.fail("set_body_type: " + set.error);
+  }
+  context.succeed();
+}
+
 void loadPreset(CommandContext& context, const v1::LoadPreset& command) {
   const auto material = wire::materialFromWire(command.material());
   if (!material) {

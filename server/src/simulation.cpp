@@ -83,6 +83,24 @@ InputResult Simulation::setTargetTransform(BodyId id, const Vec2& position, Real
   return moved;
 }
 
+InputResult Simulation::setTransform(BodyId id, const Vec2& position, Real angle) {
+  const InputResult moved = world_.setTransform(id, position, angle);
+  if (moved) changedBody(id);
+  return moved;
+}
+
+InputResult Simulation::setMaterial(BodyId id, Material material) {
+  const InputResult set = world_.setMaterial(id, material);
+  if (set) redescribedBody(id);
+  return set;
+}
+
+InputResult Simulation::setBodyType(BodyId id, BodyType type) {
+  const InputResult set = world_.setBodyType(id, type);
+  if (set) redescribedBody(id);
+  return set;
+}
+
 CreateResult Simulation::recordCreated(CreateResult created) {
   if (created.ok()) {
     changes_.added(created.id);
@@ -157,6 +175,11 @@ InputResult Simulation::setVelocity(BodyId id, const Vec2& linear, Real angular)
 
 void Simulation::changedBody(BodyId id) {
   changes_.changed(std::span(&id, 1), world_.bodyCount());
+  ++version_;
+}
+
+void Simulation::redescribedBody(BodyId id) {
+  changes_.added(id);
   ++version_;
 }
 

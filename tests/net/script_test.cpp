@@ -99,12 +99,34 @@ TEST(CliScript, NonFiniteNumbersAreSentForTheServerToRefuse) {
   EXPECT_TRUE(std::isinf(parseOk("gravity inf 0").message.set_gravity().gravity().x()));
 }
 
+TEST(CliScript, BodyEditWordsBuildTheirMessages) {
+  const auto teleport = parseOk("teleport 4 1.5 -2 0.25").message.set_transform();
+  EXPECT_EQ(teleport.body_id(), 4u);
+  EXPECT_EQ(teleport.position().x(), 1.5);
+  EXPECT_EQ(teleport.angle(), 0.25);
+  EXPECT_EQ(parseOk("teleport 4 1 2").message.set_transform().angle(), 0);
+  EXPECT_EQ(parseOk("material 5 glass").message.set_material().material(), v1::GLASS);
+  EXPECT_EQ(parseOk("body-type 6 kinematic").message.set_body_type().type(), v1::BODY_TYPE_KINEMATIC);
+  EXPECT_EQ(parseOk("body-type 6 static").message.set_body_type().type(), v1::BODY_TYPE_STATIC);
+  EXPECT_EQ(parseOk("body-type 6 dynamic").message.set_body_type().type(), v1::BODY_TYPE_DYNAMIC);
+  const auto asleep = parseOk("circle 1 2 0.5 asleep").message.spawn_circle().options();
+  EXPECT_TRUE(asleep.has_is_awake());
+  EXPECT_FALSE(asleep.is_awake());
+  EXPECT_FALSE(parseOk("circle 1 2 0.5").message.spawn_circle().options().has_is_awake()) << "unset: awake";
+
+  EXPECT_EQ(parseError("material 5 plastic"), "material ID MATERIAL: 'plastic' is not a material");
+  EXPECT_EQ(parseError("material 5"), "material ID MATERIAL: MATERIAL is missing");
+  EXPECT_EQ(parseError("body-type 6 floating"),
+            "body-type ID static|kinematic|dynamic: 'floating' is not a body type (static, kinematic or dynamic)");
+  EXPECT_EQ(parseError("teleport 4 1"), "teleport ID X Y [ANGLE]: missing argument 3");
+}
+
 TEST(CliScript, ErrorsNameTheUsageAndTheProblem) {
-  const std::string circle = "circle X Y R [MATERIAL] [static] [nograv] [NAME=VALUE...]: ";
+  const std::string circle = "circle X Y R [MATERIAL] [static] [asleep] [nograv] [NAME=VALUE...]: ";
   EXPECT_EQ(parseError("circle 1 2"), circle + "missing argument 3");
   EXPECT_EQ(parseError("circle 1 x 3"), circle + "'x' is not a number");
   EXPECT_EQ(parseError("circle 1 2 3 plastic"),
-            circle + "unexpected 'plastic' (material, static, kinematic or nograv)");
+            circle + "unexpected 'plastic' (material, static, kinematic, asleep or nograv)");
   EXPECT_EQ(parseError("circle 1 2 3 colour=4"),
             circle + "unexpected 'colour=4' (density=, friction=, restitution=, damping=, "
                      "angular-damping= or gravity-scale=)");
@@ -114,7 +136,7 @@ TEST(CliScript, ErrorsNameTheUsageAndTheProblem) {
   EXPECT_EQ(parseError("step"), "step N (1 or more ticks): missing argument 1");
   EXPECT_EQ(parseError("step 0"), "step N (1 or more ticks): tick count out of range");
   EXPECT_EQ(parseError("polygon 1 2 3"),
-            "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv] [NAME=VALUE...]: vertex 2 "
+            "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [asleep] [nograv] [NAME=VALUE...]: vertex 2 "
             "has no y");
   EXPECT_EQ(parseError("query -1"), "query ID: body id -1 out of range");
   EXPECT_EQ(parseError("pause now"), "pause: unexpected 'now'");

@@ -48,6 +48,11 @@ struct ShapeId {
   friend auto operator<=>(ShapeId, ShapeId) = default;
 };
 
+/// How a body moves: never (static: infinite mass, no velocity), by its
+/// own velocity only (kinematic: infinite mass, pushes dynamic bodies and is
+/// never pushed), or by gravity, forces and contacts (dynamic).
+enum class BodyType : std::uint8_t { Static, Kinematic, Dynamic };
+
 /// Coefficients that replace the material's for one body, for scenes that
 /// need values outside the material table (tools, benchmarks). Unset fields
 /// keep the material's value.
@@ -93,6 +98,11 @@ struct BodyDef {
   /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
   /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
   bool isKinematic = false;
+  /// False: the body starts asleep (b2BodyDef::isAwake). It keeps still,
+  /// costing nothing per step, until something touches it, a push or a
+  /// joint wakes it, or the world changes (gravity, a field). Static bodies
+  /// are never awake.
+  bool isAwake = true;
   bool ignoreGravity = false;
   /// Air drag rates in 1/s: dv/dt = -linearDrag * v, exact over any dt.
   Real linearDrag = 0;
@@ -113,6 +123,8 @@ struct BodyOptions {
   /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
   /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
   bool isKinematic = false;
+  /// False: the body starts asleep (BodyDef::isAwake).
+  bool isAwake = true;
   bool ignoreGravity = false;
   Vec2 linearVelocity = Vec2::Zero();
   Real angularVelocity = 0;

@@ -177,6 +177,28 @@ class World {
   /// reason, as setVelocity is (speeds past the limits included) and for a
   /// dt that is not positive.
   InputResult setTargetTransform(BodyId id, const Vec2& position, Real angle, Real dt);
+  /// Moves the body to `position` (its centre of mass) and `angle` at once,
+  /// as b2Body_SetTransform does (a teleport: velocities are kept, nothing is
+  /// swept in between). Wakes the body, what touched it where it was and, for
+  /// a static body, what lies where it goes. Refused, with the reason, for
+  /// an unknown id, a non-finite number or a position outside the bounds.
+  InputResult setTransform(BodyId id, const Vec2& position, Real angle);
+  /// Gives every shape of the body the material's coefficients (replacing
+  /// any per-shape material or override); the mass, centre of mass and
+  /// inertia follow the new density. Wakes the body and what touches it.
+  /// Refused for an unknown id or material.
+  InputResult setMaterial(BodyId id, Material material);
+  /// Changes the body's type at run time, as b2Body_SetType does. The mass
+  /// comes from the shapes again (a static body has none); the body's
+  /// contacts are rebuilt from its new type (two non-dynamic bodies have
+  /// none) and what touched it wakes. A static body stops and sleeps; a
+  /// kinematic or dynamic one wakes keeping its velocity. Refused, with the
+  /// reason and nothing changed: an unknown id or type; dynamic for a body
+  /// without area (segments and chains only); kinematic or dynamic for one
+  /// whose shapes reach past kMaxBodyExtent; a type that would leave one of
+  /// its joints without a dynamic body (or a mouse joint pulling a body that
+  /// is not dynamic).
+  InputResult setBodyType(BodyId id, BodyType type);
 
   /// Validates the definition (live, distinct bodies; finite numbers in
   /// range) before anything changes. Wakes both bodies.

@@ -30,6 +30,15 @@ v1::Material toWire(Material material) {
   return static_cast<v1::Material>(static_cast<int>(material) + 1);
 }
 
+v1::BodyType toWire(BodyType type) {
+  switch (type) {
+    case BodyType::Static: return v1::BODY_TYPE_STATIC;
+    case BodyType::Kinematic: return v1::BODY_TYPE_KINEMATIC;
+    case BodyType::Dynamic: return v1::BODY_TYPE_DYNAMIC;
+  }
+  return v1::BODY_TYPE_UNSPECIFIED;
+}
+
 void toWire(const Segment& segment, v1::Segment* out) {
   toWire(segment.point1, out->mutable_point1());
   toWire(segment.point2, out->mutable_point2());
@@ -148,6 +157,15 @@ std::optional<Material> materialFromWire(int material) {
   return materialFromIndex(material - 1);
 }
 
+std::optional<BodyType> bodyTypeFromWire(int type) {
+  switch (type) {
+    case v1::BODY_TYPE_STATIC: return BodyType::Static;
+    case v1::BODY_TYPE_KINEMATIC: return BodyType::Kinematic;
+    case v1::BODY_TYPE_DYNAMIC: return BodyType::Dynamic;
+    default: return std::nullopt;
+  }
+}
+
 std::string materialRange() {
   return "(0-" + std::to_string(kMaterialCount) + ")";
 }
@@ -204,6 +222,7 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   result.material = *material;
   result.isStatic = options.is_static();
   result.isKinematic = options.is_kinematic();
+  result.isAwake = !options.has_is_awake() || options.is_awake();
   result.ignoreGravity = options.ignore_gravity();
   auto velocity = vecFromWire(options.velocity(), "options.velocity");
   if (!velocity.ok()) return Decoded<BodyOptions>::failure(std::move(velocity.error));

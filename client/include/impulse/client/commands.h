@@ -8,6 +8,7 @@
 #include <string>
 
 #include "impulse.pb.h"
+#include "impulse/body.h"
 #include "impulse/material.h"
 #include "impulse/math.h"
 
@@ -18,6 +19,8 @@ struct SpawnOptions {
   Material material = Material::Solid;
   bool isStatic = false;
   bool isKinematic = false;
+  /// False: created asleep, still until touched or woken.
+  bool isAwake = true;
   bool ignoreGravity = false;
   double velocityX = 0;
   double velocityY = 0;
@@ -54,6 +57,10 @@ struct BodyPart {
 v1::ClientMessage spawnBody(Point position, double angle, std::span<const BodyPart> parts,
                             const SpawnOptions& options = {});
 v1::ClientMessage setTargetTransform(std::uint32_t body, Point position, double angle);
+/// Puts the body's centre of mass at `position`, turned to `angle`, at once.
+v1::ClientMessage setTransform(std::uint32_t body, Point position, double angle = 0);
+v1::ClientMessage setMaterial(std::uint32_t body, Material material);
+v1::ClientMessage setBodyType(std::uint32_t body, BodyType type);
 v1::ClientMessage loadPreset(int preset, Material material = Material::Solid);
 v1::ClientMessage setGravity(Point gravity);
 v1::ClientMessage nudgeGravity(Point delta);

@@ -70,6 +70,11 @@ class Simulation {
   CreateResult createBody(const BodyDef& def);
   /// The velocity that takes the body to the pose over the next world step.
   InputResult setTargetTransform(BodyId id, const Vec2& position, Real angle);
+  /// World::setTransform, setMaterial and setBodyType; a new material or
+  /// type goes out as the body's descriptor again.
+  InputResult setTransform(BodyId id, const Vec2& position, Real angle);
+  InputResult setMaterial(BodyId id, Material material);
+  InputResult setBodyType(BodyId id, BodyType type);
   /// False for an unknown id.
   bool removeBody(BodyId id);
   InputResult applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point);
@@ -130,6 +135,8 @@ class Simulation {
   CreateResult recordCreated(CreateResult created);
   /// After a successful change: records `id` (if any) as changed for snapshots.
   void changedBody(BodyId id);
+  /// The body's descriptor changed: Snapshot.added replaces it in clients.
+  void redescribedBody(BodyId id);
   /// Records the joints the world removed with their bodies (last
   /// destroyBody call or step).
   void recordRemovedJoints();

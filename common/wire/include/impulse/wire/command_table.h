@@ -40,16 +40,16 @@
       "while paused: advance exactly N ticks (reply has tick and state_hash)",            \
       parseStep, client::step)                                                            \
   ROW(SpawnCircle, spawn_circle, Anyone, spawnCircle, "circle",                           \
-      "circle X Y R [MATERIAL] [static] [nograv] [NAME=VALUE...]",                        \
+      "circle X Y R [MATERIAL] [static] [asleep] [nograv] [NAME=VALUE...]",             \
       "spawn a circle (NAME: density friction restitution damping angular-damping "       \
       "gravity-scale); reply has body_id",                                                \
       parseCircle, client::spawnCircle)                                                   \
   ROW(SpawnPolygon, spawn_polygon, Anyone, spawnPolygon, "polygon",                       \
-      "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [nograv] [NAME=VALUE...]",       \
+      "polygon X1 Y1 X2 Y2 X3 Y3 ... [MATERIAL] [static] [asleep] [nograv] [NAME=VALUE...]",       \
       "spawn a convex polygon (world coordinates, either winding, 3-16 vertices)",        \
       parsePolygon, client::spawnPolygon)                                                 \
   ROW(SpawnCapsule, spawn_capsule, Anyone, spawnCapsule, "capsule",                       \
-      "capsule X1 Y1 X2 Y2 R [MATERIAL] [static|kinematic] [nograv] [NAME=VALUE...]",     \
+      "capsule X1 Y1 X2 Y2 R [MATERIAL] [static|kinematic] [asleep] [nograv] [NAME=VALUE...]",     \
       "spawn a capsule: the points within R of the segment X1 Y1 - X2 Y2",                \
       parseCapsule, client::spawnCapsule)                                                 \
   ROW(SpawnSegment, spawn_segment, Anyone, spawnSegment, "segment",                       \
@@ -61,7 +61,7 @@
       "spawn terrain: one-sided segments through 4 or more points (loop: closed)",        \
       parseChain, client::spawnChain)                                                     \
   ROW(SpawnBody, spawn_body, Anyone, spawnBody, "body",                                   \
-      "body X Y ANGLE PART... [MATERIAL] [static|kinematic] [nograv] [NAME=VALUE...]",    \
+      "body X Y ANGLE PART... [MATERIAL] [static|kinematic] [asleep] [nograv] [NAME=VALUE...]",    \
       "spawn a compound body; PART: circle CX CY R | box CX CY HW HH | "                  \
       "capsule X1 Y1 X2 Y2 R (body-local)",                                               \
       parseBody, client::spawnBody)                                                       \
@@ -69,6 +69,17 @@
       "move-to ID X Y [ANGLE]",                                                           \
       "move a body (a kinematic platform) to X Y, ANGLE over the next tick",              \
       parseTarget, client::setTargetTransform)                                            \
+  ROW(SetTransform, set_transform, Owner, setTransform, "teleport",                       \
+      "teleport ID X Y [ANGLE]",                                                          \
+      "put a body's centre at X Y, turned to ANGLE (rad), at once; it keeps its velocity", \
+      parseTarget, client::setTransform)                                                  \
+  ROW(SetMaterial, set_material, Owner, setMaterial, "material", "material ID MATERIAL",   \
+      "give every shape of a body the material; its mass follows",                        \
+      parseBodyMaterial, client::setMaterial)                                             \
+  ROW(SetBodyType, set_body_type, Owner, setBodyType, "body-type",                        \
+      "body-type ID static|kinematic|dynamic",                                            \
+      "change a body's type (dynamic needs a shape with area)",                           \
+      parseBodyType, client::setBodyType)                                                 \
   ROW(SetGravity, set_gravity, Admin, setGravity, "gravity", "gravity GX GY",             \
       "set gravity", parsePoint, client::setGravity)                                      \
   ROW(NudgeGravity, nudge_gravity, Admin, nudgeGravity, "nudge", "nudge DX DY",           \

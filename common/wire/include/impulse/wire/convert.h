@@ -37,6 +37,7 @@ struct Decoded {
 
 void toWire(const Vec2& v, v1::Vec2* out);
 v1::Material toWire(Material material);
+v1::BodyType toWire(BodyType type);
 void toWire(const Shape& shape, v1::Shape* out);
 void toWire(const BodyState& state, v1::BodyState* out);
 void toWire(const BodyDescription& description, v1::BodyDescriptor* out);
@@ -62,6 +63,9 @@ Decoded<Vec2> vecFromWire(const v1::Vec2& v, std::string_view what);
 std::optional<Material> materialFromWire(int material);
 /// The enum's range as error messages print it: "(0-8)".
 std::string materialRange();
+/// Nothing for BODY_TYPE_UNSPECIFIED (a type must be named) and for a value
+/// outside the enum.
+std::optional<BodyType> bodyTypeFromWire(int type);
 /// Material, flags, initial velocities and per-body properties, each checked.
 /// A `friction` sets both the static and the dynamic coefficient.
 Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options);
