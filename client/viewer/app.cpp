@@ -22,6 +22,12 @@ constexpr float kWheelZoom = 1.15f;
 // A right press that moves less than this (pixels) is a click, not a pan.
 constexpr int kClickSlop = 4;
 
+// The names Controls gives the spawns of its drawing tools.
+bool isDrawnShape(const std::string& what) {
+  return what == "polygon" || what == "circle" || what == "capsule" || what == "segment" ||
+         what == "chain";
+}
+
 std::runtime_error sdlError(const std::string& what) {
   return std::runtime_error(what + ": " + SDL_GetError());
 }
@@ -119,10 +125,13 @@ std::vector<std::uint32_t> App::userBodies() const {
 std::optional<BodyHit> App::bodyAt(const Vec2& point) const {
   // Moving bodies before scenery: a ball resting on the floor is what a click
   // on it means.
+  // A segment or chain is hit within a few pixels of its line.
+  constexpr float kLineReachPixels = 5;
+  const Real lineReach = kLineReachPixels / view().scale();
   std::optional<BodyHit> staticHit;
   for (auto it = world_.bodies().rbegin(); it != world_.bodies().rend(); ++it) {
     const Transform xf{it->state.position, Rot::fromAngle(it->state.angle)};
-    if (!containsPoint(it->look->shape, xf, point)) continue;
+    if (!bodyTouches(*it->look, xf, point, lineReach)) continue;
     const BodyHit hit{it->state.id, it->look->isStatic, it->state.position, it->state.angle};
     if (!hit.isStatic) return hit;
     if (!staticHit) staticHit = hit;
@@ -137,8 +146,12 @@ void App::actOnScene(SceneKey key) {
   switch (key.action) {
     case SceneAction::SaveScene: return controls_.notify(sceneFiles_.save(), now());
     case SceneAction::LoadScene: return controls_.notify(sceneFiles_.load(), now());
-    case SceneAction::SaveShape:
-      return controls_.notify(sceneFiles_.saveShape(c.polygonPoints()), now());
+    case SceneAction::SaveShape: {
+      // Only a polygon's points make a shape to keep (a chain's do not).
+      const bool polygon = c.mode() == DrawMode::Polygon;
+      return controls_.notify(
+          sceneFiles_.saveShape(polygon ? std::span(c.placedPoints()) : std::span<const Vec2>()), now());
+    }
     case SceneAction::StampShape:
       return controls_.notify(sceneFiles_.stamp(std::size_t(key.index), c.pointer(),
                                                 {.material = c.material(),
@@ -153,6 +166,10 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
     if (key.type == SDL_KEYDOWN && key.repeat == 0) actOnScene(*sceneKey);
     return;
   }
+  // A panel field with the focus (the inspector's) takes the key presses:
+  // "1" typed there loads no preset, its Enter resets no gravity. Releases
+  // still reach the controls, so no held key repeats for ever.
+  if (key.type == SDL_KEYDOWN && ImGui::GetIO().WantTextInput) return;
   const auto control = controlForKey(key.keysym.sym, key.keysym.mod);
   if (!control || (key.repeat != 0 && !followsKeyRepeat(control->control))) return;
   if (key.type == SDL_KEYDOWN) {
@@ -269,7 +286,7 @@ void App::handleReplies() {
       controls_.dragJointAnswered(result.ok() ? std::optional(result.joint_id()) : std::nullopt);
     }
     if (result.ok()) {
-      if (reply.what == "polygon" || reply.what == "circle") spawned_.insert(result.body_id());
+      if (isDrawnShape(reply.what)) spawned_.insert(result.body_id());
     } else if (reply.what == "inspect") {
       // The selected body is gone (cleared, preset loaded).
       controls_.deselect();

@@ -21,6 +21,28 @@ MassProperties massOf(const BodyLook& look) {
   return total;
 }
 
+namespace {
+
+Real distanceToSegment(const Vec2& point, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const Real t = std::clamp((point - a).dot(ab) / std::max(ab.squaredNorm(), Real(1e-12)), Real(0), Real(1));
+  return (point - (a + t * ab)).norm();
+}
+
+bool shapeTouches(const Shape& shape, const Transform& xf, const Vec2& point, Real lineReach) {
+  if (isSolid(shape.type())) return containsPoint(shape, xf, point);
+  const Segment& line = shape.type() == ShapeType::Segment ? shape.segment() : shape.chainSegment().segment;
+  return distanceToSegment(point, xf.apply(line.point1), xf.apply(line.point2)) <= lineReach;
+}
+
+}  // namespace
+
+bool bodyTouches(const BodyLook& look, const Transform& xf, const Vec2& point, Real lineReach) {
+  if (shapeTouches(look.shape, xf, point, lineReach)) return true;
+  return std::any_of(look.extraShapes.begin(), look.extraShapes.end(),
+                     [&](const Shape& shape) { return shapeTouches(shape, xf, point, lineReach); });
+}
+
 double kineticEnergy(std::span<const DrawnBody> bodies) {
   double energy = 0;
   for (const DrawnBody& body : bodies) {
@@ -59,6 +81,49 @@ std::string describeShape(const Shape& shape) {
   std::string text = "polygon, " + std::to_string(polygon.count) + " vertices, " + formatNumber(size.x(), 3) +
                      " x " + formatNumber(size.y(), 3) + " m";
   if (polygon.radius > 0) text += ", rounded " + formatNumber(polygon.radius, 3) + " m";
+  return text;
+}
+
+namespace {
+
+// The type's name as describeShape writes it, plural for a count above one.
+std::string typeName(ShapeType type, std::size_t count) {
+  const char* name = "polygon";
+  switch (type) {
+    case ShapeType::Circle: name = "circle"; break;
+    case ShapeType::Capsule: name = "capsule"; break;
+    case ShapeType::Segment: name = "segment"; break;
+    case ShapeType::ChainSegment: name = "chain segment"; break;
+    case ShapeType::Polygon: break;
+  }
+  return std::to_string(count) + " " + name + (count == 1 ? "" : "s");
+}
+
+}  // namespace
+
+std::string describeShapes(std::span<const Shape> shapes) {
+  using client::formatNumber;
+  if (shapes.size() == 1) return describeShape(shapes.front());
+  const bool chain = !shapes.empty() && std::all_of(shapes.begin(), shapes.end(), [](const Shape& s) {
+    return s.type() == ShapeType::ChainSegment;
+  });
+  if (chain) {
+    Real length = 0;
+    for (const Shape& s : shapes) length += (s.chainSegment().segment.point2 - s.chainSegment().segment.point1).norm();
+    return "chain of " + std::to_string(shapes.size()) + " segments, " + formatNumber(length, 3) + " m";
+  }
+  // Counted in the order the types first appear.
+  std::vector<std::pair<ShapeType, std::size_t>> counts;
+  for (const Shape& s : shapes) {
+    const auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == s.type(); });
+    if (it == counts.end()) {
+      counts.push_back({s.type(), 1});
+    } else {
+      ++it->second;
+    }
+  }
+  std::string text = std::to_string(shapes.size()) + " shapes: ";
+  for (std::size_t i = 0; i < counts.size(); ++i) text += (i > 0 ? ", " : "") + typeName(counts[i].first, counts[i].second);
   return text;
 }
 

@@ -13,8 +13,6 @@ namespace impulse::viewer {
 
 namespace {
 
-client::Point toPoint(const Vec2& v) { return {double(v.x()), double(v.y())}; }
-
 bool repeats(Control control) {
   switch (control) {
     case Control::GravityUp:
@@ -49,6 +47,8 @@ bool isPush(Control control) {
 
 }  // namespace
 
+client::Point toPoint(const Vec2& v) { return {double(v.x()), double(v.y())}; }
+
 std::string materialLabel(Material material) {
   std::string name(materialProperties(material).name);
   std::transform(name.begin(), name.end(), name.begin(),
@@ -57,7 +57,7 @@ std::string materialLabel(Material material) {
 }
 
 Controls::Controls(ControlSettings settings)
-    : settings_(settings), shapeSize_(kDefaultShapeSize) {}
+    : settings_(settings), shapeSize_(kDefaultShapeSize), capsuleRadius_(kDefaultCapsuleRadius) {}
 
 void Controls::send(v1::ClientMessage message, std::string what) {
   outbox_.push_back({std::move(message), std::move(what)});
@@ -73,60 +73,6 @@ void Controls::notify(std::string text, double now) {
 std::optional<std::string> Controls::notice(double now) const {
   if (now >= noticeUntil_) return std::nullopt;
   return notice_;
-}
-
-bool Controls::pointerValid() const {
-  if (mode_ != DrawMode::Polygon) return false;
-  std::vector<Vec2> candidate = points_;
-  candidate.push_back(pointer_);
-  return checkPolygonInProgress(candidate) == ShapeError::None;
-}
-
-void Controls::cancelDrawing() {
-  mode_ = DrawMode::None;
-  points_.clear();
-  circleCenter_.reset();
-  circleRadius_ = 0;
-  dragging_ = false;
-}
-
-client::SpawnOptions Controls::spawnOptions() const {
-  client::SpawnOptions options;
-  options.material = material_;
-  options.isStatic = nextStatic_;
-  options.ignoreGravity = !nextFeelsGravity_;
-  return options;
-}
-
-void Controls::togglePolygon(double now) {
-  if (mode_ != DrawMode::Polygon) {
-    cancelDrawing();
-    mode_ = DrawMode::Polygon;
-    return;
-  }
-  if (points_.size() >= std::size_t(kMinPolygonVertices)) {
-    std::vector<client::Point> vertices;
-    for (const Vec2& p : points_) vertices.push_back(toPoint(p));
-    send(client::spawnPolygon(vertices, spawnOptions()), "polygon");
-  } else {
-    notify("Polygon cancelled: it needs at least 3 points", now);
-  }
-  cancelDrawing();
-}
-
-void Controls::toggleCircle(double now) {
-  if (mode_ != DrawMode::Circle) {
-    cancelDrawing();
-    mode_ = DrawMode::Circle;
-    return;
-  }
-  if (circleCenter_ && circleRadius_ > 0) {
-    send(client::spawnCircle(toPoint(*circleCenter_), double(circleRadius_), spawnOptions()),
-         "circle");
-  } else {
-    notify("Circle cancelled: drag from its centre to set the radius", now);
-  }
-  cancelDrawing();
 }
 
 bool Controls::repeatAction(ControlKey key, const ControlContext& context, double now) {
@@ -162,8 +108,12 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     return;
   }
   switch (key.control) {
-    case Control::PolygonMode: togglePolygon(now); break;
-    case Control::CircleMode: toggleCircle(now); break;
+    case Control::PolygonMode: toggleMode(DrawMode::Polygon, now); break;
+    case Control::CircleMode: toggleMode(DrawMode::Circle, now); break;
+    case Control::CapsuleMode: toggleMode(DrawMode::Capsule, now); break;
+    case Control::SegmentMode: toggleMode(DrawMode::Segment, now); break;
+    case Control::ChainMode: toggleMode(DrawMode::Chain, now); break;
+    case Control::CloseChain: closeChain(now); break;
     case Control::ClearUserBodies: clearUserBodies(context, now); break;
     case Control::ClearAll:
       send(client::clearWorld(), "clear");
@@ -354,17 +304,6 @@ void Controls::scaleTime(const ControlContext& context, double factor, double no
   askedScale_ = AskedScale{wanted, now};
 }
 
-void Controls::spawnStandardShape(int sides) {
-  std::vector<client::Point> vertices;
-  for (const Vec2& v : regularPolygon(sides, pointer_, shapeSize_)) vertices.push_back(toPoint(v));
-  send(client::spawnPolygon(vertices, spawnOptions()), std::string(standardShapeName(sides)));
-}
-
-void Controls::resizeShapes(Real factor, double now) {
-  shapeSize_ = std::clamp(shapeSize_ * factor, kMinShapeSize, kMaxShapeSize);
-  notify("Standard shapes: " + client::formatNumber(shapeSize_, 2) + " m to a corner", now);
-}
-
 std::optional<std::uint32_t> Controls::grabbedBody() const {
   if (!grab_) return std::nullopt;
   return grab_->body;
@@ -391,35 +330,25 @@ void Controls::pan(float dx, float dy) {
 
 void Controls::pointerPressed(const Vec2& at, std::optional<BodyHit> hit, double now) {
   pointer_ = at;
-  switch (mode_) {
-    case DrawMode::Polygon:
-      if (pointerValid()) points_.push_back(at);
-      return;
-    case DrawMode::Circle:
-      circleCenter_ = at;
-      circleRadius_ = 0;
-      dragging_ = true;
-      return;
-    case DrawMode::None:
-      if (inspectorVisible_) {
-        selected_ = hit ? std::optional(hit->id) : std::nullopt;
-        if (!selected_) notify("No body there: click inside a body to inspect it", now);
-      }
-      if (hit && !hit->isStatic) {
-        grab_ = Grab{};
-        grab_->body = hit->id;
-        grab_->offset = Rot::fromAngle(hit->angle).applyInverse(at - hit->position);
-        grab_->pressedAt = at;
-      }
-      return;
+  if (mode_ != DrawMode::None) {
+    pressWhileDrawing(at);
+    return;
+  }
+  if (inspectorVisible_) {
+    selected_ = hit ? std::optional(hit->id) : std::nullopt;
+    if (!selected_) notify("No body there: click inside a body to inspect it", now);
+  }
+  if (hit && !hit->isStatic) {
+    grab_ = Grab{};
+    grab_->body = hit->id;
+    grab_->offset = Rot::fromAngle(hit->angle).applyInverse(at - hit->position);
+    grab_->pressedAt = at;
   }
 }
 
 void Controls::pointerMoved(const Vec2& at) {
   pointer_ = at;
-  if (mode_ == DrawMode::Circle && dragging_ && circleCenter_) {
-    circleRadius_ = (at - *circleCenter_).norm();
-  }
+  if (dragging_) dragEnd_ = at;
   if (grab_ && (at - grab_->pressedAt).norm() > Real(settings_.dragThreshold)) {
     grab_->dragging = true;
   }

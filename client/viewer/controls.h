@@ -24,6 +24,12 @@ namespace impulse::viewer {
 enum class Control {
   PolygonMode,
   CircleMode,
+  CapsuleMode,
+  SegmentMode,
+  /// Chain mode; again: the open chain drawn so far.
+  ChainMode,
+  /// The chain drawn so far, closed into a loop.
+  CloseChain,
   ClearUserBodies,
   ClearAll,
   TogglePanel,
@@ -66,7 +72,7 @@ struct ControlKey {
   friend bool operator==(const ControlKey&, const ControlKey&) = default;
 };
 
-enum class DrawMode { None, Polygon, Circle };
+enum class DrawMode { None, Polygon, Circle, Capsule, Segment, Chain };
 
 /// The grabbed body as the newest snapshot has it.
 struct GrabbedBody {
@@ -190,15 +196,21 @@ class Controls {
   Material material() const { return material_; }
   /// Circumradius of the next standard shape, m.
   Real shapeSize() const { return shapeSize_; }
+  /// Radius of the next capsule, m.
+  Real capsuleRadius() const { return capsuleRadius_; }
 
   // Drawing previews.
-  const std::vector<Vec2>& polygonPoints() const { return points_; }
+  /// The points a polygon or chain has so far.
+  const std::vector<Vec2>& placedPoints() const { return points_; }
   const Vec2& pointer() const { return pointer_; }
-  /// Polygon mode: a click at the pointer would place a point.
+  /// Polygon and chain modes: a click at the pointer would place a point.
   bool pointerValid() const;
-  /// Circle mode: the centre pressed, and the radius dragged so far.
-  std::optional<Vec2> circleCenter() const { return circleCenter_; }
-  Real circleRadius() const { return circleRadius_; }
+  /// Circle, capsule and segment modes: where the drag began (a circle's
+  /// centre, a capsule's or segment's first end) and where it is now.
+  std::optional<Vec2> dragStart() const { return dragStart_; }
+  const Vec2& dragEnd() const { return dragEnd_; }
+  /// Circle mode: the radius dragged so far.
+  Real circleRadius() const;
 
  private:
   struct Held {
@@ -216,8 +228,18 @@ class Controls {
     double nextTarget = 0;
   };
 
-  void togglePolygon(double now);
-  void toggleCircle(double now);
+  /// A drawing key: enters `mode`, or, pressed again, creates what was drawn.
+  void toggleMode(DrawMode mode, double now);
+  /// Sends what was drawn; false when the drawing stays open for more.
+  bool finishDrawing(double now);
+  bool finishPolygon(double now);
+  bool finishCircle(double now);
+  bool finishCapsule(double now);
+  bool finishSegment(double now);
+  bool finishChain(bool loop, double now);
+  void closeChain(double now);
+  /// The press of a drawing tool at `at`.
+  void pressWhileDrawing(const Vec2& at);
   void cancelDrawing();
   void cancelOrQuit(double now);
   void clearUserBodies(const ControlContext& context, double now);
@@ -273,10 +295,14 @@ class Controls {
 
   std::vector<Vec2> points_;
   Vec2 pointer_ = Vec2::Zero();
-  std::optional<Vec2> circleCenter_;
-  Real circleRadius_ = 0;
+  std::optional<Vec2> dragStart_;
+  Vec2 dragEnd_ = Vec2::Zero();
   bool dragging_ = false;
+  Real capsuleRadius_;
 };
+
+/// A world point as the client library's commands take it.
+client::Point toPoint(const Vec2& v);
 
 /// The material's name as docs/product.md writes it (SOLID, ICE, ...).
 std::string materialLabel(Material material);

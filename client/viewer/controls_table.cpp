@@ -8,11 +8,14 @@ namespace impulse::viewer {
 namespace {
 
 // docs/product.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 30> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 33> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
     {"drag", "circle: centre at press, radius to cursor"},
+    {"R", "capsule mode: drag end to end, - = radius; again: create"},
+    {"L", "segment mode: drag end to end; again: create"},
+    {"H / Shift+H", "chain mode: click points; again: create (solid above) / close it"},
     {"Esc", "cancel drawing, grab or selection; else quit"},
     {"left drag", "pull a body by a mouse joint; release throws it"},
     {"right click, Del", "remove the body under the cursor"},

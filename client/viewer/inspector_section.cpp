@@ -1,4 +1,7 @@
+#include <algorithm>
+#include <array>
 #include <numbers>
+#include <vector>
 
 #include "body_metrics.h"
 #include "impulse/client/commands.h"
@@ -22,9 +25,20 @@ std::string vec(const v1::Vec2& v, int decimals) {
 
 std::string yesNo(bool value) { return value ? "yes" : "no"; }
 
-std::string shapeText(const v1::Shape& shape) {
-  const auto decoded = wire::shapeFromWire(shape);
-  return decoded.ok() ? describeShape(*decoded.value) : "unreadable: " + decoded.error;
+// The body's shapes, decoded; the error of the first that cannot be.
+struct BodyShapes {
+  std::vector<Shape> shapes;
+  std::string error;
+};
+
+BodyShapes shapesOf(const v1::BodyDescriptor& d) {
+  BodyShapes out;
+  for (int i = 0; i <= d.extra_shapes_size(); ++i) {
+    const auto decoded = wire::shapeFromWire(i == 0 ? d.shape() : d.extra_shapes(i - 1));
+    if (!decoded.ok()) return {{}, "unreadable: " + decoded.error};
+    out.shapes.push_back(*decoded.value);
+  }
+  return out;
 }
 
 void row(const char* name, const std::string& value) {
@@ -35,6 +49,20 @@ void row(const char* name, const std::string& value) {
   ImGui::TextWrapped("%s", value.c_str());
 }
 
+// One row for a single shape; for several, a summary and then the first
+// few one row each (a chain's fifty segments would push the rest away).
+void drawShapeRows(const v1::BodyDescriptor& d) {
+  constexpr std::size_t kListed = 6;
+  const BodyShapes body = shapesOf(d);
+  if (!body.error.empty()) return row("shape", body.error);
+  if (body.shapes.size() == 1) return row("shape", describeShape(body.shapes.front()));
+  row("shapes", describeShapes(body.shapes));
+  for (std::size_t i = 0; i < std::min(body.shapes.size(), kListed); ++i) {
+    row(("  " + std::to_string(i + 1)).c_str(), describeShape(body.shapes[i]));
+  }
+  if (body.shapes.size() > kListed) row("", "and " + std::to_string(body.shapes.size() - kListed) + " more");
+}
+
 void drawBodyTable(const v1::BodyInfo& info) {
   const auto& d = info.descriptor();
   const auto& s = info.state();
@@ -42,12 +70,9 @@ void drawBodyTable(const v1::BodyInfo& info) {
   const double degrees = s.angle() * 180 / std::numbers::pi;
   if (!ImGui::BeginTable("body", 2, ImGuiTableFlags_SizingStretchProp)) return;
   row("id", std::to_string(d.id()));
-  row("shape", shapeText(d.shape()));
-  // A compound body lists every shape, one row each.
-  for (int i = 0; i < d.extra_shapes_size(); ++i) row("+ shape", shapeText(d.extra_shapes(i)));
+  drawShapeRows(d);
   row("material", materialLabel(material));
-  row("static", yesNo(d.is_static()));
-  row("kinematic", yesNo(d.is_kinematic()));
+  row("type", d.is_static() ? "static" : d.is_kinematic() ? "kinematic" : "dynamic");
   row("awake", yesNo(s.awake()));
   row("gravity", d.ignore_gravity() ? "ignored" : "felt");
   row("position", vec(s.position(), 3) + " m");
@@ -67,31 +92,83 @@ void drawBodyTable(const v1::BodyInfo& info) {
   ImGui::EndTable();
 }
 
-// Velocity and angular velocity, editable: Enter sends them (SetVelocity),
-// Stop sends zeros. Position, angle, material and static stay read-only:
-// the engine has no call to change them on a live body yet.
-void drawVelocityEditor(const v1::BodyInfo& info, const PanelActions& actions,
-                        PanelState& state) {
-  const std::uint32_t id = info.descriptor().id();
-  VelocityEdit& edit = state.velocityEdit;
-  if (edit.body != id || !edit.editing) {
-    const auto& s = info.state();
-    edit = {id, {float(s.velocity().x()), float(s.velocity().y()), float(s.angular_velocity())},
-            false};
-  }
-  ImGui::TextDisabled("set vx, vy (m/s), angular (rad/s); Enter sends:");
+// The last item's place in the window, for a test to point at.
+PixelRect lastItemRect() {
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  return {min.x, min.y, max.x - min.x, max.y - min.y};
+}
+
+// Three of the body's figures in one row of fields, `current` unless a
+// person is typing in them (the server's figures, five a second, would
+// overwrite the typing). Clicking a field selects its text, so typing
+// replaces it. True when Enter was pressed: `edit.values` are then sent.
+bool editFields(const char* id, FieldsEdit& edit, std::uint32_t body, const std::array<float, 3>& current) {
+  if (edit.body != body || !edit.editing) edit = {body, {current[0], current[1], current[2]}, false};
   ImGui::SetNextItemWidth(-FLT_MIN);
-  const bool entered = ImGui::InputFloat3("##velocity", edit.values, "%.3f",
-                                          ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool entered = ImGui::InputFloat3(id, edit.values, "%.3f",
+                                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   edit.editing = ImGui::IsItemActive();
+  return entered;
+}
+
+// Position and angle: Enter moves the body there at once (SetTransform).
+void drawPoseEditor(const v1::BodyInfo& info, const PanelActions& actions, PanelState& state) {
+  const std::uint32_t id = info.descriptor().id();
+  const auto& s = info.state();
+  const float degrees = float(s.angle() * 180 / std::numbers::pi);
+  ImGui::TextDisabled("set x, y (m), angle (deg); Enter moves it:");
+  if (editFields("##pose", state.poseEdit, id, {float(s.position().x()), float(s.position().y()), degrees})) {
+    const FieldsEdit& edit = state.poseEdit;
+    actions.send(client::setTransform(id, {edit.values[0], edit.values[1]}, edit.values[2] * std::numbers::pi / 180),
+                 "move");
+  }
+  if (ImGui::IsItemVisible()) state.poseFields = lastItemRect();
+}
+
+// Velocity and angular velocity: Enter sends them (SetVelocity), Stop
+// sends zeros.
+void drawVelocityEditor(const v1::BodyInfo& info, const PanelActions& actions, PanelState& state) {
+  const std::uint32_t id = info.descriptor().id();
+  const auto& s = info.state();
   const auto send = [&](float vx, float vy, float angular) {
     actions.send(client::setVelocity(id, {vx, vy}, angular), "velocity");
   };
-  if (entered) send(edit.values[0], edit.values[1], edit.values[2]);
+  ImGui::TextDisabled("set vx, vy (m/s), angular (rad/s); Enter sends:");
+  if (editFields("##velocity", state.velocityEdit, id,
+                 {float(s.velocity().x()), float(s.velocity().y()), float(s.angular_velocity())})) {
+    const FieldsEdit& edit = state.velocityEdit;
+    send(edit.values[0], edit.values[1], edit.values[2]);
+  }
   if (ImGui::Button("Stop")) send(0, 0, 0);
-  if (ImGui::IsItemVisible()) {
-    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-    state.stopButton = PixelRect{min.x, min.y, max.x - min.x, max.y - min.y};
+  if (ImGui::IsItemVisible()) state.stopButton = lastItemRect();
+}
+
+// The material (SetMaterial: the body's mass follows) and the type
+// (SetBodyType), each a click away.
+void drawMaterialAndType(const v1::BodyInfo& info, const PanelActions& actions, PanelState& state) {
+  const auto& d = info.descriptor();
+  const std::uint32_t id = d.id();
+  const Material material = wire::materialFromWire(d.material()).value_or(Material::Solid);
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("RUBBER").x + ImGui::GetFrameHeight() * 2);
+  if (ImGui::BeginCombo("material##edit", materialLabel(material).c_str())) {
+    for (int index = 0; index < kMaterialCount; ++index) {
+      const Material choice = *materialFromIndex(index);
+      if (ImGui::Selectable(materialLabel(choice).c_str(), choice == material) && choice != material) {
+        actions.send(client::setMaterial(id, choice), "material");
+      }
+    }
+    ImGui::EndCombo();
+  }
+  constexpr std::array<std::pair<BodyType, const char*>, 3> kTypes{
+      {{BodyType::Static, "static"}, {BodyType::Kinematic, "kinematic"}, {BodyType::Dynamic, "dynamic"}}};
+  const BodyType current = d.is_static() ? BodyType::Static : d.is_kinematic() ? BodyType::Kinematic : BodyType::Dynamic;
+  for (std::size_t i = 0; i < kTypes.size(); ++i) {
+    const auto [type, label] = kTypes[i];
+    if (i > 0) sameLineIfFits(ImGui::CalcTextSize(label).x + ImGui::GetFrameHeight() * 1.5f);
+    if (ImGui::RadioButton(label, type == current) && type != current) {
+      actions.send(client::setBodyType(id, type), "body type");
+    }
+    if (ImGui::IsItemVisible()) state.typeButtons[i] = lastItemRect();
   }
 }
 
@@ -108,7 +185,9 @@ void drawInspectorSection(const Controls& controls, const PanelInput& input,
     return;
   }
   drawBodyTable(*input.inspected);
+  drawPoseEditor(*input.inspected, actions, state);
   if (!input.inspected->descriptor().is_static()) drawVelocityEditor(*input.inspected, actions, state);
+  drawMaterialAndType(*input.inspected, actions, state);
   ImGui::TextDisabled("arrows push it, Delete removes it");
 }
 

@@ -28,6 +28,9 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     case SDLK_F1: return ControlKey{Control::LoadPreset, 10};
     case SDLK_p: return ControlKey{Control::PolygonMode};
     case SDLK_o: return ControlKey{Control::CircleMode};
+    case SDLK_r: return ControlKey{Control::CapsuleMode};
+    case SDLK_l: return ControlKey{Control::SegmentMode};
+    case SDLK_h: return ControlKey{shift ? Control::CloseChain : Control::ChainMode};
     case SDLK_c: return ControlKey{shift ? Control::ClearAll : Control::ClearUserBodies};
     case SDLK_x: return ControlKey{Control::TogglePanel};
     case SDLK_m: return ControlKey{Control::ToggleInspector};

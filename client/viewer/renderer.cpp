@@ -1,6 +1,7 @@
 #include "renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -70,6 +71,32 @@ void without(ImDrawList& list, ImDrawListFlags off, const std::function<void()>&
 }
 
 }  // namespace
+
+void hatchConvex(ImDrawList& list, std::span<const ImVec2> outline, ImVec2 anchor, ImU32 colour) {
+  constexpr float kStripeSpacing = 9;
+  constexpr float kStripeWidth = 2.5f;
+  // Distance along the stripes' normal, (1, 1) / sqrt(2) on screen.
+  const auto across = [&](ImVec2 p) { return (p.x - anchor.x + p.y - anchor.y) * std::numbers::sqrt2_v<float> / 2; };
+  float lowest = across(outline[0]), highest = lowest;
+  for (const ImVec2& p : outline) {
+    lowest = std::min(lowest, across(p));
+    highest = std::max(highest, across(p));
+  }
+  const std::size_t count = outline.size();
+  for (float c = std::ceil(lowest / kStripeSpacing) * kStripeSpacing; c < highest; c += kStripeSpacing) {
+    // A line meets a convex outline's edges at most twice.
+    std::array<ImVec2, 2> ends;
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < count && found < 2; ++i) {
+      const ImVec2 a = outline[i], b = outline[(i + 1) % count];
+      const float da = across(a) - c, db = across(b) - c;
+      if ((da < 0) == (db < 0)) continue;
+      const float t = da / (da - db);
+      ends[found++] = {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+    }
+    if (found == 2) list.AddLine(ends[0], ends[1], colour, kStripeWidth);
+  }
+}
 
 ImU32 packed(Colour c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 
@@ -162,6 +189,14 @@ void WorldRenderer::drawShape(ImDrawList& list, const ViewTransform& view, const
         // outline covers every edge, and the fringe would double the triangles.
         without(list, ImDrawListFlags_AntiAliasedFill,
                 [&] { list.AddCircleFilled(centre, pixels, colours.fill, segments); });
+        if (colours.hatch != 0) {
+          points_.clear();
+          for (int i = 0; i < segments; ++i) {
+            const float a = 2 * std::numbers::pi_v<float> * float(i) / float(segments);
+            points_.push_back({centre.x + pixels * std::cos(a), centre.y + pixels * std::sin(a)});
+          }
+          hatchConvex(list, points_, pixel(view, xf.p), colours.hatch);
+        }
         list.AddCircle(centre, pixels, colours.edge, segments, colours.thickness);
       }
       return;
@@ -191,6 +226,7 @@ void WorldRenderer::drawShape(ImDrawList& list, const ViewTransform& view, const
   } else {
     without(list, ImDrawListFlags_AntiAliasedFill,
             [&] { list.AddConvexPolyFilled(points_.data(), int(points_.size()), colours.fill); });
+    if (colours.hatch != 0) hatchConvex(list, points_, pixel(view, xf.p), colours.hatch);
     list.AddPolyline(points_.data(), int(points_.size()), colours.edge, ImDrawFlags_Closed, colours.thickness);
   }
 }
@@ -201,18 +237,18 @@ void WorldRenderer::drawBody(ImDrawList& list, const ViewTransform& view, const 
   const Transform xf{body.state.position, Rot::fromAngle(body.state.angle)};
   Real extent = computeExtent(look.shape);
   for (const Shape& extra : look.extraShapes) extent = std::max(extent, computeExtent(extra));
-  const ShapeColours colours{packed(bodyFill(look.material, look.isStatic || look.isKinematic)), packed(outline),
-                             thickness, 2 * extent * view.scale() < kSmallBody};
+  const bool small = 2 * extent * view.scale() < kSmallBody;
+  // Kinematic bodies (platforms, doors, pushers) are machinery: their
+  // material's fill, striped in the outline colour, unlike plain moving
+  // bodies and dark static scenery.
+  const ImU32 hatch = look.isKinematic && !small ? packed(outline) : 0;
+  const ShapeColours colours{packed(bodyFill(look.material, look.isStatic)), packed(outline), thickness, small,
+                             hatch};
   drawShape(list, view, xf, look.shape, colours);
   for (const Shape& extra : look.extraShapes) drawShape(list, view, xf, extra, colours);
   if (look.isStatic) return;
   const Vec2 mark = xf.apply(rotationMark(look.shape, extent));
   list.AddLine(pixel(view, xf.p), pixel(view, mark), colours.edge, colours.small ? 1.0f : thickness);
-  // Kinematic bodies (platforms, doors) carry a second, crossing mark.
-  if (look.isKinematic) {
-    list.AddLine(pixel(view, xf.apply(Vec2(0, -extent))), pixel(view, xf.apply(Vec2(0, extent))), colours.edge,
-                 colours.small ? 1.0f : thickness);
-  }
 }
 
 void WorldRenderer::drawBodies(ImDrawList& list, const ViewTransform& view,
@@ -290,16 +326,25 @@ void WorldRenderer::drawGrab(ImDrawList& list, const ViewTransform& view, const 
 
 void WorldRenderer::drawPreview(ImDrawList& list, const ViewTransform& view,
                                 const Controls& controls) {
-  if (controls.mode() == DrawMode::Polygon) drawPolygonPreview(list, view, controls);
-  if (controls.mode() == DrawMode::Circle) drawCirclePreview(list, view, controls);
+  switch (controls.mode()) {
+    case DrawMode::Polygon:
+    case DrawMode::Chain: drawPointsPreview(list, view, controls); return;
+    case DrawMode::Circle: drawCirclePreview(list, view, controls); return;
+    case DrawMode::Capsule:
+    case DrawMode::Segment: drawLinePreview(list, view, controls); return;
+    case DrawMode::None: return;
+  }
 }
 
-void WorldRenderer::drawPolygonPreview(ImDrawList& list, const ViewTransform& view,
-                                       const Controls& controls) {
+void WorldRenderer::drawPointsPreview(ImDrawList& list, const ViewTransform& view,
+                                      const Controls& controls) {
+  // A polygon shows its inside and the edge that would close it; a chain is
+  // a line, closed only when asked.
+  const bool polygon = controls.mode() == DrawMode::Polygon;
   const ImU32 preview = packed(palette::kPreview);
   points_.clear();
-  for (const Vec2& p : controls.polygonPoints()) points_.push_back(pixel(view, p));
-  if (points_.size() >= 3) {
+  for (const Vec2& p : controls.placedPoints()) points_.push_back(pixel(view, p));
+  if (polygon && points_.size() >= 3) {
     Colour translucent = palette::kPreview;
     translucent.a = 70;
     // Either winding may be drawn; the fringe would assume one.
@@ -315,16 +360,16 @@ void WorldRenderer::drawPolygonPreview(ImDrawList& list, const ViewTransform& vi
     // Guides from the last point to the cursor and on to the first.
     const ImU32 guide = packed(palette::kDimText);
     list.AddLine(points_.back(), cursor, guide);
-    list.AddLine(cursor, points_.front(), guide);
+    if (polygon) list.AddLine(cursor, points_.front(), guide);
   }
   list.AddCircleFilled(cursor, 5, packed(valid ? palette::kValid : palette::kInvalid));
 }
 
 void WorldRenderer::drawCirclePreview(ImDrawList& list, const ViewTransform& view,
                                       const Controls& controls) {
-  if (!controls.circleCenter()) return;
+  if (!controls.dragStart()) return;
   const ImU32 preview = packed(palette::kPreview);
-  const Vec2 centre = *controls.circleCenter();
+  const Vec2 centre = *controls.dragStart();
   const Real r = controls.circleRadius();
   const ImVec2 c = pixel(view, centre);
   if (r > 0) {
@@ -334,6 +379,30 @@ void WorldRenderer::drawCirclePreview(ImDrawList& list, const ViewTransform& vie
     list.AddLine(c, pixel(view, centre + r * direction), preview, kOutline);
   }
   list.AddCircleFilled(c, 3, preview);
+}
+
+void WorldRenderer::drawLinePreview(ImDrawList& list, const ViewTransform& view,
+                                    const Controls& controls) {
+  if (!controls.dragStart()) return;
+  const ImU32 preview = packed(palette::kPreview);
+  const Vec2 start = *controls.dragStart();
+  const Vec2 end = controls.dragEnd();
+  const ImVec2 a = pixel(view, start), b = pixel(view, end);
+  if (controls.mode() == DrawMode::Capsule) {
+    // The capsule as it would be made; a press not yet dragged shows its round end.
+    const Real radius = controls.capsuleRadius();
+    if (end == start) {
+      list.AddCircle(a, radius * view.scale(), preview, 0, kOutline);
+    } else {
+      solidOutline(Shape::makeCapsule(start, end, radius), outline_);
+      points_.clear();
+      for (const Vec2& vertex : outline_) points_.push_back(pixel(view, vertex));
+      list.AddPolyline(points_.data(), int(points_.size()), preview, ImDrawFlags_Closed, kOutline);
+    }
+  }
+  list.AddLine(a, b, preview, kOutline);
+  list.AddCircleFilled(a, 3, preview);
+  list.AddCircleFilled(b, 3, preview);
 }
 
 }  // namespace impulse::viewer

@@ -25,6 +25,11 @@ namespace impulse::viewer {
 /// ImGui's packed colour of a palette colour.
 ImU32 packed(Colour colour);
 
+/// Stripes across a convex outline on screen, the kinematic look: from lower
+/// left to upper right, every 9 pixels counted from `anchor` (a body's
+/// centre, so they travel with the body).
+void hatchConvex(ImDrawList& list, std::span<const ImVec2> outline, ImVec2 anchor, ImU32 colour);
+
 class WorldRenderer {
  public:
   /// Fills the viewport and the scene rectangle, and clips what follows to
@@ -43,7 +48,8 @@ class WorldRenderer {
                   const std::map<std::uint32_t, FieldDef>& fields);
   /// The hand: a line from the held point of a grabbed body to the cursor.
   void drawGrab(ImDrawList& list, const ViewTransform& view, const Vec2& held, const Vec2& cursor);
-  /// The polygon or circle being drawn, and the polygon cursor dot.
+  /// The shape being drawn (polygon, circle, capsule, segment or chain),
+  /// and the cursor dot of the point-placing tools.
   void drawPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 
  private:
@@ -53,6 +59,7 @@ class WorldRenderer {
     ImU32 edge = 0;
     float thickness = 1;
     bool small = false;  ///< too small on screen for an outline of its own
+    ImU32 hatch = 0;     ///< stripes over the fill (kinematic bodies); none when 0
   };
   void drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
                 Colour outline, float thickness);
@@ -61,8 +68,9 @@ class WorldRenderer {
   void drawFluid(ImDrawList& list, const ViewTransform& view, const FluidDef& fluid);
   void drawFan(ImDrawList& list, const ViewTransform& view, const FanDef& fan);
   void drawGravitationMarker(ImDrawList& list, const ViewTransform& view);
-  void drawPolygonPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
+  void drawPointsPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
   void drawCirclePreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
+  void drawLinePreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
 
   std::vector<ImVec2> points_;
   std::vector<Vec2> outline_;

@@ -25,9 +25,12 @@ std::string modeName(DrawMode mode) {
   switch (mode) {
     case DrawMode::Polygon: return "polygon (P to finish, Esc cancels)";
     case DrawMode::Circle: return "circle (O to finish, Esc cancels)";
+    case DrawMode::Capsule: return "capsule (R to finish, - = radius, Esc cancels)";
+    case DrawMode::Segment: return "segment (L to finish, Esc cancels)";
+    case DrawMode::Chain: return "chain (H to finish, Shift+H to close, Esc cancels)";
     case DrawMode::None: break;
   }
-  return "none (P polygon, O circle)";
+  return "none (P polygon, O circle, R capsule, L segment, H chain)";
 }
 
 ImVec4 linkColour(LinkState link) {
@@ -94,11 +97,15 @@ void drawHeader(const PanelFonts& fonts, const PanelInput& input,
   }
 }
 
-void swatch(Colour fill, Colour outline, float thickness) {
+void swatch(Colour fill, Colour outline, float thickness, bool striped = false) {
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const float size = ImGui::GetTextLineHeight();
   ImDrawList& list = *ImGui::GetWindowDrawList();
   list.AddRectFilled(at, {at.x + size, at.y + size}, packed(fill), 3);
+  if (striped) {
+    const std::array<ImVec2, 4> square{at, {at.x + size, at.y}, {at.x + size, at.y + size}, {at.x, at.y + size}};
+    hatchConvex(list, square, at, packed(outline));
+  }
   list.AddRect(at, {at.x + size, at.y + size}, packed(outline), 3, 0, thickness);
   ImGui::Dummy({size, size});
   ImGui::SameLine();
@@ -119,6 +126,8 @@ void drawLegend(const Controls& controls, const std::function<void(ControlKey)>&
   }
   swatch(bodyFill(Material::Solid, true), bodyOutline(Material::Solid, true, false), 1.5f);
   ImGui::TextUnformatted("static scenery");
+  swatch(bodyFill(Material::Solid, false), bodyOutline(Material::Solid, false, false), 1.5f, true);
+  ImGui::TextUnformatted("kinematic (striped)");
   swatch(bodyFill(Material::Solid, false), palette::kSleep, 2.5f);
   ImGui::TextUnformatted("asleep (violet outline)");
   swatch(palette::kSceneBackground, palette::kSelection, 2.5f);
@@ -135,6 +144,8 @@ void drawNextShape(const Controls& controls, const std::function<void(ControlKey
   if (ImGui::Checkbox("Gravity (G)", &gravity)) act({Control::ToggleGravity});
   ImGui::TextWrapped("Shapes at the cursor (T Y U I): %s m to a corner (- =)",
                      formatNumber(controls.shapeSize(), 2).c_str());
+  ImGui::TextWrapped("Capsule radius: %s m (- = in capsule mode)",
+                     formatNumber(controls.capsuleRadius(), 2).c_str());
   ImGui::TextUnformatted("Material (KP 1-8, F5-F12):");
   drawLegend(controls, act);
 }
@@ -199,6 +210,8 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   const auto& act = actions.key;
   state.presetEntries.clear();
   state.stopButton.reset();
+  state.poseFields.reset();
+  state.typeButtons = {};
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.w, rect.h});
   ImGui::Begin("##side panel", nullptr,

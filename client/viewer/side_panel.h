@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -68,11 +69,11 @@ struct PanelActions {
   std::function<void(v1::ClientMessage message, std::string what)> send;
 };
 
-/// The inspector's velocity fields while a person edits them: the server's
-/// figures (five a second) would overwrite the typing otherwise.
-struct VelocityEdit {
+/// A row of three of the inspector's fields while a person edits them: the
+/// server's figures (five a second) would overwrite the typing otherwise.
+struct FieldsEdit {
   std::uint32_t body = 0;
-  float values[3] = {};  ///< vx, vy (m/s), angular (rad/s)
+  float values[3] = {};
   bool editing = false;
 };
 
@@ -83,7 +84,12 @@ struct PanelState {
   std::vector<std::pair<int, PixelRect>> presetEntries;
   /// The inspector's Stop button, when it is on screen.
   std::optional<PixelRect> stopButton;
-  VelocityEdit velocityEdit;
+  /// The inspector's position-and-angle fields, and its static, kinematic
+  /// and dynamic buttons, when on screen.
+  std::optional<PixelRect> poseFields;
+  std::array<std::optional<PixelRect>, 3> typeButtons;
+  FieldsEdit poseEdit;      ///< x, y (m), angle (degrees)
+  FieldsEdit velocityEdit;  ///< vx, vy (m/s), angular (rad/s)
 };
 
 /// Draws the panel into `rect`; `state`'s positions are refilled.

@@ -18,6 +18,11 @@ inline constexpr Real kMaxShapeSize = 4;
 inline constexpr Real kDefaultShapeSize = Real(0.5);
 inline constexpr Real kShapeSizeFactor = Real(1.25);
 
+/// Radius range of drawn capsules, m (the same keys change it in capsule mode).
+inline constexpr Real kMinCapsuleRadius = Real(0.05);
+inline constexpr Real kMaxCapsuleRadius = 2;
+inline constexpr Real kDefaultCapsuleRadius = Real(0.25);
+
 /// The `sides` vertices (anticlockwise) of the regular polygon with this
 /// circumradius centred on `centre`, its bottom side horizontal.
 std::vector<Vec2> regularPolygon(int sides, const Vec2& centre, Real circumradius);

@@ -54,7 +54,7 @@ TEST_F(ControlsTest, Polygon_ClickedPointsAreSentOnSecondP) {
   ASSERT_EQ(polygon.vertices_size(), 3);
   EXPECT_DOUBLE_EQ(polygon.vertices(1).x(), 7);
   EXPECT_EQ(controls.mode(), DrawMode::None);
-  EXPECT_TRUE(controls.polygonPoints().empty());
+  EXPECT_TRUE(controls.placedPoints().empty());
 }
 
 TEST_F(ControlsTest, Polygon_FewerThanThreePointsCancels) {
@@ -83,7 +83,7 @@ TEST_F(ControlsTest, Polygon_CursorIsRedWhereTheOutlineWouldCross_AndRedClicksPl
   controls.pointerMoved(Vec2(6, 2));
   EXPECT_FALSE(controls.pointerValid());
   click(6, 2);
-  EXPECT_EQ(controls.polygonPoints().size(), 3u);
+  EXPECT_EQ(controls.placedPoints().size(), 3u);
   // A duplicate point is red too.
   controls.pointerMoved(Vec2(4, 4));
   EXPECT_FALSE(controls.pointerValid());
@@ -108,7 +108,7 @@ TEST_F(ControlsTest, Polygon_AtMostSixteenPoints) {
     const float a = float(i) * 0.35f;
     click(10 + 3 * std::cos(a), 10 + 3 * std::sin(a));
   }
-  EXPECT_EQ(controls.polygonPoints().size(), std::size_t(kMaxPolygonVertices));
+  EXPECT_EQ(controls.placedPoints().size(), std::size_t(kMaxPolygonVertices));
 }
 
 TEST_F(ControlsTest, Circle_PressSetsCentre_DragSetsRadius_OSends) {

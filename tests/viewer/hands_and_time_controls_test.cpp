@@ -44,11 +44,11 @@ TEST_F(ToolControls, EscCancelsDrawingThenSelectionAndQuitsOnlyWhenIdle) {
   controls.pointerReleased(Vec2(1, 1));
   press(Control::PolygonMode, sandbox);
   controls.pointerPressed(Vec2(4, 4), std::nullopt, now);
-  ASSERT_EQ(controls.polygonPoints().size(), 1u);
+  ASSERT_EQ(controls.placedPoints().size(), 1u);
 
   press(Control::CancelOrQuit, sandbox);
   EXPECT_EQ(controls.mode(), DrawMode::None);
-  EXPECT_TRUE(controls.polygonPoints().empty());
+  EXPECT_TRUE(controls.placedPoints().empty());
   EXPECT_EQ(controls.selectedBody(), 5u);
   EXPECT_FALSE(controls.quitRequested());
   press(Control::CancelOrQuit, sandbox);

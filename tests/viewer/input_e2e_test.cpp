@@ -50,7 +50,7 @@ TEST_F(InputEndToEnd, DrawsAPolygonAndACircle_TheServerGetsBoth) {
   viewer.click(Vec2(10, 10));
   viewer.click(Vec2(11, 9));  // the closing edge would cross an edge: red, placed nothing
   viewer.click(Vec2(8, 10));
-  EXPECT_EQ(viewer.app().controls().polygonPoints().size(), 4u);
+  EXPECT_EQ(viewer.app().controls().placedPoints().size(), 4u);
   viewer.tap(SDLK_p);
 
   viewer.tap(SDLK_q);     // static
@@ -100,7 +100,7 @@ TEST_F(InputEndToEnd, RefusedShapeShowsTheServersErrorOnScreen) {
     viewer.mouseButton(p.x + float(dx), p.y + float(dy), false);
     viewer.app().frame();
   }
-  ASSERT_EQ(viewer.app().controls().polygonPoints().size(), 3u);
+  ASSERT_EQ(viewer.app().controls().placedPoints().size(), 3u);
   viewer.tap(SDLK_p);
   ASSERT_TRUE(observe([&] {
     const auto notice = viewer.app().controls().notice(viewer.app().now());

@@ -315,7 +315,7 @@ TEST(Keys, EscCancelsTheDrawingFirst_QuitsOnlyWhenNothingIsInProgress) {
   ASSERT_TRUE(tool.showsEveryBody());
   tool.viewer.tap(SDLK_p);
   tool.viewer.click(Vec2(8, 8));
-  ASSERT_EQ(tool.viewer.app().controls().polygonPoints().size(), 1u);
+  ASSERT_EQ(tool.viewer.app().controls().placedPoints().size(), 1u);
   tool.viewer.key(SDLK_ESCAPE, true);
   EXPECT_TRUE(tool.viewer.app().frame());
   tool.viewer.key(SDLK_ESCAPE, false);

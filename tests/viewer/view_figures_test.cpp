@@ -132,6 +132,35 @@ TEST(BodyMetrics, KineticEnergyCountsMovingAndSpinningDynamicBodiesOnly) {
 TEST(BodyMetrics, DescribesShapesWithTheirSize) {
   EXPECT_EQ(describeShape(Shape::makeCircle(0.5f)), "circle, radius 0.5 m");
   EXPECT_EQ(describeShape(Shape::makePolygon(makeBox(1, 0.25f))), "polygon, 4 vertices, 2 x 0.5 m");
+  EXPECT_EQ(describeShape(Shape::makeCapsule(Vec2(-1, 0), Vec2(1, 0), 0.25f)), "capsule, 2 m long, radius 0.25 m");
+}
+
+TEST(BodyMetrics, ABodyIsTouchedInAnyOfItsShapes_AndNearItsLines) {
+  // A compound body: a box with a wheel 3 m to its right, moved to (10, 0).
+  const BodyLook cart{Shape::makePolygon(makeBox(1, 0.25f)), {Shape::makeCircle(0.5f, Vec2(3, 0))},
+                      Material::Solid, false, false, false};
+  const Transform xf{Vec2(10, 0), Rot::fromAngle(0)};
+  EXPECT_TRUE(bodyTouches(cart, xf, Vec2(10.5f, 0.1f), 0.1f));
+  EXPECT_TRUE(bodyTouches(cart, xf, Vec2(13.2f, 0.2f), 0.1f));
+  EXPECT_FALSE(bodyTouches(cart, xf, Vec2(12, 0), 0.1f));
+  const BodyLook wall{Shape::makeSegment(Vec2(0, 0), Vec2(0, 4)), {}, Material::Solid, true, false, false};
+  EXPECT_TRUE(bodyTouches(wall, xf, Vec2(10.08f, 2), 0.1f));
+  EXPECT_FALSE(bodyTouches(wall, xf, Vec2(10.15f, 2), 0.1f));
+  EXPECT_FALSE(bodyTouches(wall, xf, Vec2(10, 4.2f), 0.1f));
+}
+
+TEST(BodyMetrics, DescribesABodysShapesTogether) {
+  const Shape box = Shape::makePolygon(makeBox(1, 0.25f));
+  const Shape wheel = Shape::makeCircle(0.5f);
+  const std::vector<Shape> one{box};
+  EXPECT_EQ(describeShapes(one), describeShape(box));
+  const std::vector<Shape> compound{box, wheel, box};
+  EXPECT_EQ(describeShapes(compound), "3 shapes: 2 polygons, 1 circle");
+  const ChainBuild chain = buildChain(std::vector<Vec2>{Vec2(0, 0), Vec2(1, 0), Vec2(3, 0), Vec2(4, 0), Vec2(5, 0)}, false);
+  ASSERT_EQ(chain.error, ShapeError::None);
+  std::vector<Shape> segments;
+  for (const ChainSegment& segment : chain.segments) segments.push_back(Shape{segment});
+  EXPECT_EQ(describeShapes(segments), "chain of 2 segments, 3 m");
 }
 
 TEST(NumberFormat, WritesNumbersAsPeopleDo) {

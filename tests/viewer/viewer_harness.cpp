@@ -94,6 +94,15 @@ void ViewerHarness::tap(SDL_Keycode k, Uint16 modifiers) {
   app_->frame();
 }
 
+void ViewerHarness::typeText(const std::string& text) {
+  SDL_Event event{};
+  event.type = SDL_TEXTINPUT;
+  event.text.windowID = SDL_GetWindowID(app_->window());
+  text.copy(event.text.text, sizeof(event.text.text) - 1);
+  SDL_PushEvent(&event);
+  app_->frame();
+}
+
 void ViewerHarness::mouseMove(float px, float py) {
   SDL_Event event{};
   event.type = SDL_MOUSEMOTION;

@@ -40,6 +40,8 @@ class ViewerHarness {
   /// `repeat`: the keyboard's own repeat of a held key.
   void key(SDL_Keycode key, bool down, Uint16 modifiers = KMOD_NONE, bool repeat = false);
   void tap(SDL_Keycode key, Uint16 modifiers = KMOD_NONE);
+  /// Text typed into the field that has the focus (SDL_TEXTINPUT), one frame.
+  void typeText(const std::string& text);
   void mouseMove(float px, float py);
   void mouseButton(float px, float py, bool down, Uint8 button = SDL_BUTTON_LEFT);
   void wheel(int notches);
