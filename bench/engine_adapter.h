@@ -53,6 +53,9 @@ class EngineAdapter {
   /// Where the engine built the scene otherwise than described (empty: as
   /// described); the run's table row says so.
   virtual std::string approximation() const { return {}; }
+  /// Which of the engine's optional solver passes ran, and on how much, over
+  /// the steps so far (empty: the engine has none to report).
+  virtual std::string passes() const { return {}; }
 };
 
 /// The scene built in the given engine at the given setting.

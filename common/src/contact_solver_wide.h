@@ -25,7 +25,8 @@ struct WideContactKernels {
                 GraphColoring& coloring, WideContactSet& set);
   void (*warmStart)(const ContactSolverContext& context, WideContactSet& set);
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
-  /// The push pass (pushOverlap).
+  /// The push pass (pushOverlap) on the bundles that intruded when built
+  /// (WideContactSet::pushBundles).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
   /// Lays the support pass's rows out in bundles, each lane from its
   /// prepared constraint (support_pass.h).

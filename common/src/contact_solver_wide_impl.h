@@ -27,6 +27,26 @@ void setLaneFlag(F& mask, int lane, bool on) {
   setLane(mask, lane, on ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
 }
 
+// A mask's lanes as bits (lane i: bit i), and back.
+template <class F>
+std::uint8_t laneBits(F mask) {
+  static_assert(F::kLanes <= 8);
+  float lanes[F::kLanes];
+  simd::store(lanes, mask);
+  std::uint8_t bits = 0;
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    if (std::bit_cast<std::uint32_t>(lanes[lane]) != 0) bits = std::uint8_t(bits | (1u << lane));
+  }
+  return bits;
+}
+
+template <class F>
+F laneMask(std::uint8_t bits) {
+  F mask = simd::broadcast<F>(0);
+  for (int lane = 0; lane < F::kLanes; ++lane) setLaneFlag(mask, lane, (bits >> lane & 1u) != 0);
+  return mask;
+}
+
 // An all-zero bundle: padding lanes point at the static dummy with zero mass.
 template <class F>
 WideConstraint<F> emptyBundle() {
@@ -296,7 +316,10 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   set.placeOf.resize(refs.size());
   auto& bundles = bundlesOf<F>(set);
   bundles.clear();
-  F intrusion = simd::broadcast<F>(0);
+  set.pushBundles.clear();
+  set.pushLanes.clear();
+  set.pushOverflow.clear();
+  set.pushedContacts = 0;
   BundleInputs<F> inputs{};
   static const WideConstraint<F> kEmpty = emptyBundle<F>();
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
@@ -309,21 +332,25 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
       const std::int32_t refIndex = set.order[k];
       set.placeOf[std::size_t(refIndex)] = {static_cast<std::int32_t>(bundles.size() - 1), lane};
       gatherLane(world, refs[std::size_t(refIndex)], softness, bundles.back(), inputs, lane);
-      if (lane == F::kLanes - 1 || k + 1 == start[color + 1]) {
-        intrusion = simd::either(intrusion, finishBundle(world.solverStates, world.settings, inputs, bundles.back()));
-      }
+      if (lane < F::kLanes - 1 && k + 1 < start[color + 1]) continue;
+      const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, bundles.back()));
+      if (intruding == 0) continue;
+      set.pushBundles.push_back(static_cast<std::int32_t>(bundles.size() - 1));
+      set.pushLanes.push_back(intruding);
+      set.pushedContacts += std::popcount(intruding);
     }
   }
-  bool anyIntrusion = simd::any(intrusion);
   set.overflow.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     set.placeOf[std::size_t(set.order[k])] = {-1, static_cast<std::int32_t>(set.overflow.size())};
     ContactConstraint& constraint = set.overflow.emplace_back();
     prepareContact(world, ref, softness, constraint);
-    anyIntrusion = anyIntrusion || hasIntrusion(constraint, world.contacts[ref.contact].manifold);
+    if (!hasIntrusion(constraint, world.contacts[ref.contact].manifold)) continue;
+    set.pushOverflow.push_back(static_cast<std::int32_t>(set.overflow.size() - 1));
+    ++set.pushedContacts;
   }
-  return anyIntrusion;
+  return set.pushedContacts > 0;
 }
 
 template <class F>
@@ -366,10 +393,16 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
   solveContacts(overflowContext(context, set), useBias);
 }
 
+// Only the contacts that intruded when prepared, lane by lane (so any width
+// pushes the same ones): one that comes to overlap during the step is left
+// to the soft rows.
 template <class F>
 void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   const F maxPush = simd::broadcast<F>(-context.maxPushSpeed);
-  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+  std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  for (std::size_t k = 0; k < set.pushBundles.size(); ++k) {
+    WideConstraint<F>& c = bundles[std::size_t(set.pushBundles[k])];
+    const F pushes = laneMask<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
@@ -379,13 +412,14 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
       F bias = simd::max(c.biasRate * intrusion, maxPush);
       F vn = normalVelocity(a, b, c, p);
       F impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::broadcast<F>(0));
-      impulse = simd::select(simd::less(intrusion, simd::broadcast<F>(0)), impulse, simd::broadcast<F>(0));
+      impulse = simd::select(simd::both(pushes, simd::less(intrusion, simd::broadcast<F>(0))), impulse,
+                             simd::broadcast<F>(0));
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
   }
-  pushOverlap(overflowContext(context, set));
+  for (std::int32_t index : set.pushOverflow) pushOverlap(context, set.overflow[std::size_t(index)]);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "support_pass.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "world_data.h"
 
@@ -18,6 +19,27 @@ constexpr Real kMinUpwardNormal = Real(0.9);
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
 bool isJointed(const WorldData& world, std::int32_t state) {
   return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
+}
+
+Real invMassOf(const WorldData& world, std::int32_t state) {
+  return state == 0 ? Real(0) : world.bodies[world.solverIntegration[std::size_t(state)].body].invMass;
+}
+
+// A soft contact at rest overlaps by impulseScale * L / (massScale *
+// biasRate * normal mass) for a load L per sub-step (overlapForLoad in
+// contact_solver.cpp); a mass m weighs m * g * h per sub-step. Without a
+// bias rate nothing pushes back: the sink has no bound.
+Real sinkPerLoad(const Softness& softness, Real weightPerMass) {
+  if (softness.biasRate <= 0) return std::numeric_limits<Real>::infinity();
+  return softness.impulseScale * weightPerMass / (softness.massScale * softness.biasRate);
+}
+
+std::int32_t findStack(std::vector<std::int32_t>& stack, std::int32_t state) {
+  while (stack[std::size_t(state)] != state) {
+    stack[std::size_t(state)] = stack[std::size_t(stack[std::size_t(state)])];
+    state = stack[std::size_t(state)];
+  }
+  return state;
 }
 
 }  // namespace
@@ -65,23 +87,113 @@ void SupportPass::classifyContacts(const WorldData& world, std::span<const Const
   }
 }
 
-bool SupportPass::sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
+bool SupportPass::sameInputsAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
   auto sameRef = [](const ConstraintRef& a, const ConstraintRef& b) {
     return a.contact == b.contact && a.stateA == b.stateA && a.stateB == b.stateB;
   };
-  return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ && facing_ == lastFacing_ &&
-         world.awakeBodies == lastAwake_ && std::equal(refs.begin(), refs.end(), lastRefs_.begin(), lastRefs_.end(), sameRef);
+  auto sameMass = [&](std::int32_t slot, Real invMass) { return world.bodies[slot].invMass == invMass; };
+  return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ && sinkScale_ == lastSinkScale_ &&
+         facing_ == lastFacing_ && world.awakeBodies == lastAwake_ &&
+         std::equal(world.awakeBodies.begin(), world.awakeBodies.end(), lastInvMass_.begin(), lastInvMass_.end(),
+                    sameMass) &&
+         std::equal(refs.begin(), refs.end(), lastRefs_.begin(), lastRefs_.end(), sameRef);
 }
 
 void SupportPass::remember(const WorldData& world, std::span<const ConstraintRef> refs) {
   lastRefs_.assign(refs.begin(), refs.end());
   lastFacing_ = facing_;
   lastAwake_ = world.awakeBodies;
+  lastInvMass_.resize(world.awakeBodies.size());
+  for (std::size_t k = 0; k < lastInvMass_.size(); ++k) lastInvMass_[k] = world.bodies[world.awakeBodies[k]].invMass;
+  lastSinkScale_ = sinkScale_;
   lastJointLinkChanges_ = world.jointLinkChanges;
   haveLast_ = true;
 }
 
-void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount) {
+std::int32_t SupportPass::upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const {
+  const ConstraintRef& ref = refs[std::size_t(row.ref)];
+  return row.upperIsB ? ref.stateB : ref.stateA;
+}
+
+std::int32_t SupportPass::lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const {
+  const ConstraintRef& ref = refs[std::size_t(row.ref)];
+  return row.upperIsB ? ref.stateA : ref.stateB;
+}
+
+// Each body carries its own mass and shares what it carries equally over
+// the rows it stands on (top storey first), and sinks by the deepest of
+// its supports' sinks plus the soft contact's under that share (ground
+// first): the row's load per unit of inverse mass, times the pair's
+// inverse mass (an estimate within a small factor: the points' lever arms
+// and the load's true spread are left out).
+void SupportPass::estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs) {
+  const std::size_t stateCount = level_.size();
+  carried_.resize(stateCount);
+  for (std::size_t s = 1; s < stateCount; ++s) {
+    const Real invMass = invMassOf(world, std::int32_t(s));
+    carried_[s] = invMass > 0 ? 1 / invMass : Real(0);
+  }
+  supports_.assign(stateCount, 0);
+  for (const SupportRow& row : rows_) ++supports_[std::size_t(upperOf(row, refs))];
+  for (auto row = rows_.rbegin(); row != rows_.rend(); ++row) {
+    const std::int32_t upper = upperOf(*row, refs);
+    carried_[std::size_t(lowerOf(*row, refs))] += carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
+  }
+  sink_.assign(stateCount, 0);
+  for (const SupportRow& row : rows_) {
+    const std::int32_t upper = upperOf(row, refs);
+    const std::int32_t lower = lowerOf(row, refs);
+    const Real share = carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
+    const Real scale = lower == 0 ? sinkScale_.statics : sinkScale_.dynamic;
+    const Real soft = scale * share * (invMassOf(world, lower) + invMassOf(world, upper));
+    sink_[std::size_t(upper)] = std::max(sink_[std::size_t(upper)], sink_[std::size_t(lower)] + soft);
+  }
+}
+
+// A stack is the bodies its rows join above the ground; it keeps all its
+// rows or none, so each kept body keeps its k-th row in its storey's k-th
+// group, and groups left empty are dropped.
+void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
+  const std::size_t stateCount = level_.size();
+  stack_.resize(stateCount);
+  for (std::size_t s = 0; s < stateCount; ++s) stack_[s] = std::int32_t(s);
+  for (const SupportRow& row : rows_) {
+    const std::int32_t lower = lowerOf(row, refs);
+    if (lower == 0) continue;
+    stack_[std::size_t(findStack(stack_, upperOf(row, refs)))] = findStack(stack_, lower);
+  }
+  stackSink_.assign(stateCount, 0);
+  for (const SupportRow& row : rows_) {
+    const std::int32_t upper = upperOf(row, refs);
+    Real& deepest = stackSink_[std::size_t(findStack(stack_, upper))];
+    deepest = std::max(deepest, sink_[std::size_t(upper)]);
+  }
+  std::int32_t keptRows = 0;
+  std::int32_t keptGroups = 0;
+  for (std::size_t storey = 0; storey + 1 < storeyGroupStart_.size(); ++storey) {
+    const std::int32_t firstGroup = storeyGroupStart_[storey];
+    const std::int32_t endGroup = storeyGroupStart_[storey + 1];
+    storeyGroupStart_[storey] = keptGroups;
+    for (std::int32_t group = firstGroup; group < endGroup; ++group) {
+      const std::int32_t begin = groupStart_[std::size_t(group)];
+      const std::int32_t end = groupStart_[std::size_t(group) + 1];
+      groupStart_[std::size_t(keptGroups)] = keptRows;
+      for (std::int32_t r = begin; r < end; ++r) {
+        const SupportRow row = rows_[std::size_t(r)];
+        if (stackSink_[std::size_t(findStack(stack_, upperOf(row, refs)))] < kSupportedSink) continue;
+        rows_[std::size_t(keptRows++)] = row;
+      }
+      if (keptRows > groupStart_[std::size_t(keptGroups)]) ++keptGroups;
+    }
+  }
+  storeyGroupStart_.back() = keptGroups;
+  groupStart_.resize(std::size_t(keptGroups) + 1);
+  groupStart_.back() = keptRows;
+  rows_.resize(std::size_t(keptRows));
+}
+
+void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
+                        const ContactSoftness& softness, Real h) {
   if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
     rows_.clear();
     groupStart_.assign(1, 0);
@@ -89,8 +201,10 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
     haveLast_ = false;
     return;
   }
+  const Real weightPerMass = world.settings.gravity.norm() * h;
+  sinkScale_ = {sinkPerLoad(softness.statics, weightPerMass), sinkPerLoad(softness.dynamic, weightPerMass)};
   classifyContacts(world, refs);
-  if (sameGraphAsLastStep(world, refs)) {
+  if (sameInputsAsLastStep(world, refs)) {
     for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
     return;
   }
@@ -103,13 +217,12 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   rowLevel_.clear();
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    ConstraintRef& ref = refs[i];
+    const ConstraintRef& ref = refs[i];
     if (facing_[i] == 0) continue;
     const bool upperIsB = facing_[i] > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;
-    ref.holdsUp = true;
     SupportRow row;
     row.ref = static_cast<std::int32_t>(i);
     row.upperIsB = upperIsB;
@@ -134,6 +247,9 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   for (std::size_t storey = 0; storey + 1 < storeyStart_.size(); ++storey) {
     groupStorey(refs, storey);
   }
+  estimateSinks(world, refs);
+  keepStacksThatSink(refs);
+  for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
   remember(world, refs);
 }
 
