@@ -306,6 +306,68 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
   return intrusion;
 }
 
+// ---- the push pass's islands -------------------------------------------------
+
+std::int32_t findIsland(std::vector<std::int32_t>& island, std::int32_t state) {
+  while (island[std::size_t(state)] != state) {
+    island[std::size_t(state)] = island[std::size_t(island[std::size_t(state)])];
+    state = island[std::size_t(state)];
+  }
+  return state;
+}
+
+// A contact's island: its bodies' (the static dummy belongs to none).
+std::int32_t islandOf(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
+  return findIsland(set.island, stateA != 0 ? stateA : stateB);
+}
+
+void joinIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set) {
+  set.island.resize(stateCount);
+  for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = static_cast<std::int32_t>(s);
+  set.islandPushes.assign(stateCount, 0);
+  for (const ConstraintRef& ref : refs) {
+    if (ref.stateA == 0 || ref.stateB == 0) continue;
+    set.island[std::size_t(findIsland(set.island, ref.stateA))] = findIsland(set.island, ref.stateB);
+  }
+}
+
+void markPushed(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
+  set.islandPushes[std::size_t(islandOf(set, stateA, stateB))] = 1;
+}
+
+// Every contact of a pushed island, lane by lane: an island pushes as a
+// whole, so a body pushed out of one overlap into a neighbour is pushed
+// back out of that one in the same sub-step, and any width pushes the same
+// contacts.
+template <class F>
+void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
+  set.pushBundles.clear();
+  set.pushLanes.clear();
+  set.pushOverflow.clear();
+  set.pushedContacts = 0;
+  if (!anyIntrusion) return;
+  const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  for (std::size_t b = 0; b < bundles.size(); ++b) {
+    const WideConstraint<F>& c = bundles[b];
+    std::uint8_t lanes = 0;
+    for (int l = 0; l < F::kLanes; ++l) {
+      if (c.source[l] >= 0 && set.islandPushes[std::size_t(islandOf(set, c.stateA[l], c.stateB[l]))] != 0) {
+        lanes = std::uint8_t(lanes | (1u << l));
+      }
+    }
+    if (lanes == 0) continue;
+    set.pushBundles.push_back(static_cast<std::int32_t>(b));
+    set.pushLanes.push_back(lanes);
+    set.pushedContacts += std::popcount(lanes);
+  }
+  for (std::size_t k = 0; k < set.overflow.size(); ++k) {
+    const ContactConstraint& c = set.overflow[k];
+    if (set.islandPushes[std::size_t(islandOf(set, c.stateA, c.stateB))] == 0) continue;
+    set.pushOverflow.push_back(static_cast<std::int32_t>(k));
+    ++set.pushedContacts;
+  }
+}
+
 template <class F>
 bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
                        const ContactSoftness& softness, GraphColoring& coloring, WideContactSet& set) {
@@ -316,10 +378,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   set.placeOf.resize(refs.size());
   auto& bundles = bundlesOf<F>(set);
   bundles.clear();
-  set.pushBundles.clear();
-  set.pushLanes.clear();
-  set.pushOverflow.clear();
-  set.pushedContacts = 0;
+  joinIslands(refs, world.solverStates.size(), set);
+  bool anyIntrusion = false;
   BundleInputs<F> inputs{};
   static const WideConstraint<F> kEmpty = emptyBundle<F>();
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
@@ -333,11 +393,12 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
       set.placeOf[std::size_t(refIndex)] = {static_cast<std::int32_t>(bundles.size() - 1), lane};
       gatherLane(world, refs[std::size_t(refIndex)], softness, bundles.back(), inputs, lane);
       if (lane < F::kLanes - 1 && k + 1 < start[color + 1]) continue;
-      const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, bundles.back()));
-      if (intruding == 0) continue;
-      set.pushBundles.push_back(static_cast<std::int32_t>(bundles.size() - 1));
-      set.pushLanes.push_back(intruding);
-      set.pushedContacts += std::popcount(intruding);
+      WideConstraint<F>& c = bundles.back();
+      const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
+      for (int l = 0; l < F::kLanes; ++l) {
+        if ((intruding >> l & 1u) != 0) markPushed(set, c.stateA[l], c.stateB[l]);
+      }
+      anyIntrusion = anyIntrusion || intruding != 0;
     }
   }
   set.overflow.clear();
@@ -347,10 +408,11 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
     ContactConstraint& constraint = set.overflow.emplace_back();
     prepareContact(world, ref, softness, constraint);
     if (!hasIntrusion(constraint, world.contacts[ref.contact].manifold)) continue;
-    set.pushOverflow.push_back(static_cast<std::int32_t>(set.overflow.size() - 1));
-    ++set.pushedContacts;
+    markPushed(set, constraint.stateA, constraint.stateB);
+    anyIntrusion = true;
   }
-  return set.pushedContacts > 0;
+  selectPushedContacts<F>(set, anyIntrusion);
+  return anyIntrusion;
 }
 
 template <class F>
@@ -393,9 +455,8 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
   solveContacts(overflowContext(context, set), useBias);
 }
 
-// Only the contacts that intruded when prepared, lane by lane (so any width
-// pushes the same ones): one that comes to overlap during the step is left
-// to the soft rows.
+// Only the contacts of islands where one intruded when prepared
+// (selectPushedContacts): the others' bodies are left where they are.
 template <class F>
 void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   const F maxPush = simd::broadcast<F>(-context.maxPushSpeed);

@@ -27,11 +27,21 @@ Real invMassOf(const WorldData& world, std::int32_t state) {
 
 // A soft contact at rest overlaps by impulseScale * L / (massScale *
 // biasRate * normal mass) for a load L per sub-step (overlapForLoad in
-// contact_solver.cpp); a mass m weighs m * g * h per sub-step. Without a
-// bias rate nothing pushes back: the sink has no bound.
-Real sinkPerLoad(const Softness& softness, Real weightPerMass) {
+// contact_solver.cpp). Without a bias rate nothing pushes back: the sink
+// has no bound.
+Real complianceOf(const Softness& softness) {
   if (softness.biasRate <= 0) return std::numeric_limits<Real>::infinity();
-  return softness.impulseScale * weightPerMass / (softness.massScale * softness.biasRate);
+  return softness.impulseScale / (softness.massScale * softness.biasRate);
+}
+
+// What the contact's points carried in the last sub-step of last step.
+Real lastLoad(const WorldData& world, const ConstraintRef& ref) {
+  const Manifold& manifold = world.contacts[ref.contact].manifold;
+  Real load = 0;
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    load += manifold.points[j].normalImpulse + manifold.points[j].supportImpulse;
+  }
+  return load;
 }
 
 std::int32_t findStack(std::vector<std::int32_t>& stack, std::int32_t state) {
@@ -87,25 +97,18 @@ void SupportPass::classifyContacts(const WorldData& world, std::span<const Const
   }
 }
 
-bool SupportPass::sameInputsAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
+bool SupportPass::sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
   auto sameRef = [](const ConstraintRef& a, const ConstraintRef& b) {
     return a.contact == b.contact && a.stateA == b.stateA && a.stateB == b.stateB;
   };
-  auto sameMass = [&](std::int32_t slot, Real invMass) { return world.bodies[slot].invMass == invMass; };
-  return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ && sinkScale_ == lastSinkScale_ &&
-         facing_ == lastFacing_ && world.awakeBodies == lastAwake_ &&
-         std::equal(world.awakeBodies.begin(), world.awakeBodies.end(), lastInvMass_.begin(), lastInvMass_.end(),
-                    sameMass) &&
-         std::equal(refs.begin(), refs.end(), lastRefs_.begin(), lastRefs_.end(), sameRef);
+  return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ && facing_ == lastFacing_ &&
+         world.awakeBodies == lastAwake_ && std::equal(refs.begin(), refs.end(), lastRefs_.begin(), lastRefs_.end(), sameRef);
 }
 
 void SupportPass::remember(const WorldData& world, std::span<const ConstraintRef> refs) {
   lastRefs_.assign(refs.begin(), refs.end());
   lastFacing_ = facing_;
   lastAwake_ = world.awakeBodies;
-  lastInvMass_.resize(world.awakeBodies.size());
-  for (std::size_t k = 0; k < lastInvMass_.size(); ++k) lastInvMass_[k] = world.bodies[world.awakeBodies[k]].invMass;
-  lastSinkScale_ = sinkScale_;
   lastJointLinkChanges_ = world.jointLinkChanges;
   haveLast_ = true;
 }
@@ -120,12 +123,15 @@ std::int32_t SupportPass::lowerOf(const SupportRow& row, std::span<const Constra
   return row.upperIsB ? ref.stateA : ref.stateB;
 }
 
-// Each body carries its own mass and shares what it carries equally over
-// the rows it stands on (top storey first), and sinks by the deepest of
-// its supports' sinks plus the soft contact's under that share (ground
-// first): the row's load per unit of inverse mass, times the pair's
-// inverse mass (an estimate within a small factor: the points' lever arms
-// and the load's true spread are left out).
+// The load of a row (impulse per sub-step) is the larger of two: its share
+// of what its upper body carries at rest (its own weight and its shares of
+// the bodies on it, shared equally over the rows it stands on, top storey
+// first), and what the contact carried last step, which also counts what
+// reaches it over contacts too steep to be rows (a pile of circles on its
+// bottom row). Each body sinks by the deepest of its supports' sinks plus
+// the soft contact's under that load (ground first): load times the pair's
+// inverse mass times the contact's compliance. An estimate within a small
+// factor: the points' lever arms and the load's true spread are left out.
 void SupportPass::estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs) {
   const std::size_t stateCount = level_.size();
   carried_.resize(stateCount);
@@ -134,83 +140,82 @@ void SupportPass::estimateSinks(const WorldData& world, std::span<const Constrai
     carried_[s] = invMass > 0 ? 1 / invMass : Real(0);
   }
   supports_.assign(stateCount, 0);
-  for (const SupportRow& row : rows_) ++supports_[std::size_t(upperOf(row, refs))];
-  for (auto row = rows_.rbegin(); row != rows_.rend(); ++row) {
+  for (const SupportRow& row : candidates_) ++supports_[std::size_t(upperOf(row, refs))];
+  for (auto row = candidates_.rbegin(); row != candidates_.rend(); ++row) {
     const std::int32_t upper = upperOf(*row, refs);
     carried_[std::size_t(lowerOf(*row, refs))] += carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
   }
   sink_.assign(stateCount, 0);
-  for (const SupportRow& row : rows_) {
+  for (const SupportRow& row : candidates_) {
     const std::int32_t upper = upperOf(row, refs);
     const std::int32_t lower = lowerOf(row, refs);
-    const Real share = carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
-    const Real scale = lower == 0 ? sinkScale_.statics : sinkScale_.dynamic;
-    const Real soft = scale * share * (invMassOf(world, lower) + invMassOf(world, upper));
+    const Real atRest = weightPerMass_ * carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
+    const Real load = std::max(atRest, lastLoad(world, refs[std::size_t(row.ref)]));
+    const Real compliance = lower == 0 ? compliance_.statics : compliance_.dynamic;
+    const Real soft = compliance * load * (invMassOf(world, lower) + invMassOf(world, upper));
     sink_[std::size_t(upper)] = std::max(sink_[std::size_t(upper)], sink_[std::size_t(lower)] + soft);
   }
 }
 
-// A stack is the bodies its rows join above the ground; it keeps all its
-// rows or none, so each kept body keeps its k-th row in its storey's k-th
-// group, and groups left empty are dropped.
+// A stack is the bodies the candidate rows join above the ground; it keeps
+// all its rows or none, so each kept body keeps its k-th row in its
+// storey's k-th group, and groups left empty are dropped.
 void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
   const std::size_t stateCount = level_.size();
   stack_.resize(stateCount);
   for (std::size_t s = 0; s < stateCount; ++s) stack_[s] = std::int32_t(s);
-  for (const SupportRow& row : rows_) {
+  for (const SupportRow& row : candidates_) {
     const std::int32_t lower = lowerOf(row, refs);
     if (lower == 0) continue;
     stack_[std::size_t(findStack(stack_, upperOf(row, refs)))] = findStack(stack_, lower);
   }
   stackSink_.assign(stateCount, 0);
-  for (const SupportRow& row : rows_) {
+  for (const SupportRow& row : candidates_) {
     const std::int32_t upper = upperOf(row, refs);
     Real& deepest = stackSink_[std::size_t(findStack(stack_, upper))];
     deepest = std::max(deepest, sink_[std::size_t(upper)]);
   }
-  std::int32_t keptRows = 0;
-  std::int32_t keptGroups = 0;
-  for (std::size_t storey = 0; storey + 1 < storeyGroupStart_.size(); ++storey) {
-    const std::int32_t firstGroup = storeyGroupStart_[storey];
-    const std::int32_t endGroup = storeyGroupStart_[storey + 1];
-    storeyGroupStart_[storey] = keptGroups;
-    for (std::int32_t group = firstGroup; group < endGroup; ++group) {
-      const std::int32_t begin = groupStart_[std::size_t(group)];
-      const std::int32_t end = groupStart_[std::size_t(group) + 1];
-      groupStart_[std::size_t(keptGroups)] = keptRows;
-      for (std::int32_t r = begin; r < end; ++r) {
-        const SupportRow row = rows_[std::size_t(r)];
-        if (stackSink_[std::size_t(findStack(stack_, upperOf(row, refs)))] < kSupportedSink) continue;
-        rows_[std::size_t(keptRows++)] = row;
+  rows_.clear();
+  groupStart_.assign(1, 0);
+  storeyGroupStart_.assign(1, 0);
+  for (std::size_t storey = 0; storey + 1 < candidateStoreyStart_.size(); ++storey) {
+    for (std::int32_t group = candidateStoreyStart_[storey]; group < candidateStoreyStart_[storey + 1]; ++group) {
+      for (std::int32_t r = candidateGroupStart_[std::size_t(group)]; r < candidateGroupStart_[std::size_t(group) + 1]; ++r) {
+        const SupportRow& row = candidates_[std::size_t(r)];
+        if (stackSink_[std::size_t(findStack(stack_, upperOf(row, refs)))] >= kSupportedSink) rows_.push_back(row);
       }
-      if (keptRows > groupStart_[std::size_t(keptGroups)]) ++keptGroups;
+      if (std::int32_t(rows_.size()) > groupStart_.back()) groupStart_.push_back(std::int32_t(rows_.size()));
     }
+    storeyGroupStart_.push_back(std::int32_t(groupStart_.size() - 1));
   }
-  storeyGroupStart_.back() = keptGroups;
-  groupStart_.resize(std::size_t(keptGroups) + 1);
-  groupStart_.back() = keptRows;
-  rows_.resize(std::size_t(keptRows));
 }
 
 void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
                         const ContactSoftness& softness, Real h) {
-  if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
-    rows_.clear();
-    groupStart_.assign(1, 0);
-    storeyGroupStart_.assign(1, 0);
-    haveLast_ = false;
-    return;
-  }
-  const Real weightPerMass = world.settings.gravity.norm() * h;
-  sinkScale_ = {sinkPerLoad(softness.statics, weightPerMass), sinkPerLoad(softness.dynamic, weightPerMass)};
-  classifyContacts(world, refs);
-  if (sameInputsAsLastStep(world, refs)) {
-    for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
-    return;
-  }
   rows_.clear();
   groupStart_.assign(1, 0);
   storeyGroupStart_.assign(1, 0);
+  if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
+    haveLast_ = false;
+    return;
+  }
+  weightPerMass_ = world.settings.gravity.norm() * h;
+  compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
+  classifyContacts(world, refs);
+  if (!sameGraphAsLastStep(world, refs)) {
+    findCandidates(world, refs, stateCount);
+    remember(world, refs);
+  }
+  estimateSinks(world, refs);
+  keepStacksThatSink(refs);
+  for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
+}
+
+void SupportPass::findCandidates(const WorldData& world, std::span<const ConstraintRef> refs,
+                                 std::size_t stateCount) {
+  candidates_.clear();
+  candidateGroupStart_.assign(1, 0);
+  candidateStoreyStart_.assign(1, 0);
   levelBodies(refs, stateCount);
 
   unsorted_.clear();
@@ -240,17 +245,13 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   for (std::size_t r = 0; r < unsorted_.size(); ++r) {
     byStorey_[std::size_t(cursor_[std::size_t(rowLevel_[r])]++)] = unsorted_[r];
   }
-  rows_.resize(byStorey_.size());
+  candidates_.resize(byStorey_.size());
   rowGroup_.resize(byStorey_.size());
   upperStorey_.assign(stateCount, -1);
   upperRows_.resize(stateCount);
   for (std::size_t storey = 0; storey + 1 < storeyStart_.size(); ++storey) {
     groupStorey(refs, storey);
   }
-  estimateSinks(world, refs);
-  keepStacksThatSink(refs);
-  for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
-  remember(world, refs);
 }
 
 // A body's k-th row in the storey goes to group k; the groups are then laid
@@ -269,15 +270,15 @@ void SupportPass::groupStorey(std::span<const ConstraintRef> refs, std::size_t s
     rowGroup_[r] = upperRows_[upper]++;
     groups = std::max(groups, rowGroup_[r] + 1);
   }
-  const std::size_t base = groupStart_.size() - 1;  // the storey's first group
-  groupStart_.resize(base + std::size_t(groups) + 1, 0);
-  for (std::size_t r = first; r < end; ++r) ++groupStart_[base + std::size_t(rowGroup_[r]) + 1];
-  for (std::size_t g = base + 1; g < groupStart_.size(); ++g) groupStart_[g] += groupStart_[g - 1];
-  cursor_.assign(groupStart_.begin() + std::ptrdiff_t(base), groupStart_.end() - 1);
+  const std::size_t base = candidateGroupStart_.size() - 1;  // the storey's first group
+  candidateGroupStart_.resize(base + std::size_t(groups) + 1, 0);
+  for (std::size_t r = first; r < end; ++r) ++candidateGroupStart_[base + std::size_t(rowGroup_[r]) + 1];
+  for (std::size_t g = base + 1; g < candidateGroupStart_.size(); ++g) candidateGroupStart_[g] += candidateGroupStart_[g - 1];
+  cursor_.assign(candidateGroupStart_.begin() + std::ptrdiff_t(base), candidateGroupStart_.end() - 1);
   for (std::size_t r = first; r < end; ++r) {
-    rows_[std::size_t(cursor_[std::size_t(rowGroup_[r])]++)] = byStorey_[r];
+    candidates_[std::size_t(cursor_[std::size_t(rowGroup_[r])]++)] = byStorey_[r];
   }
-  storeyGroupStart_.push_back(std::int32_t(groupStart_.size() - 1));
+  candidateStoreyStart_.push_back(std::int32_t(candidateGroupStart_.size() - 1));
 }
 
 }  // namespace impulse

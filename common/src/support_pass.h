@@ -16,8 +16,9 @@
 // down the stack: a box on the ground sinks 0.07 mm, a 20-row pyramid's top
 // 3 cm, a box under one 180 times heavier 3 cm. Each step the pass estimates
 // that sink from the stack itself (every body's weight shared out over the
-// bodies it stands on, down to the ground: stack height and mass ratio) and
-// keeps the rows of the stacks that would sink more than kSupportedSink.
+// bodies it stands on, down to the ground: stack height and mass ratio, or
+// the load each contact carried last step where that is more) and keeps the
+// rows of the stacks that would sink more than kSupportedSink.
 
 #include <cstdint>
 #include <span>
@@ -57,10 +58,11 @@ class SupportPass {
   /// marks those refs `holdsUp`. Within a storey, a body's k-th row goes to
   /// the storey's k-th group. No gravity, no rows.
   ///
-  /// The rows depend only on the contacts, which of them are level and
-  /// which way up, the awake bodies, their masses, which bodies are jointed,
-  /// gravity and the softness: when none of these changed since the last
-  /// step (a resting stack), last step's rows are kept.
+  /// The candidate rows (before the sink decides) depend only on the
+  /// contacts, which of them are level and which way up, the awake bodies
+  /// and which bodies are jointed: when none of these changed since the last
+  /// step (a resting stack), last step's are kept, and only the sinks are
+  /// estimated anew (from the loads the contacts carried last step).
   void order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
              const ContactSoftness& softness, Real h);
   /// The rows, group by group.
@@ -73,17 +75,17 @@ class SupportPass {
   std::span<const std::int32_t> storeyStarts() const { return storeyGroupStart_; }
 
  private:
-  /// Sink (m) of a soft contact carrying its own weight's worth of load per
-  /// unit of inverse mass, against the static world and between bodies.
-  struct SinkScale {
+  /// Compliance (impulseScale / (massScale * biasRate)) of the soft contacts
+  /// against the static world and between bodies.
+  struct Compliance {
     Real statics = 0;
     Real dynamic = 0;
-    bool operator==(const SinkScale&) const = default;
   };
 
   void classifyContacts(const WorldData& world, std::span<const ConstraintRef> refs);
-  bool sameInputsAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const;
+  bool sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const;
   void remember(const WorldData& world, std::span<const ConstraintRef> refs);
+  void findCandidates(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
   void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
   void estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs);
@@ -91,15 +93,14 @@ class SupportPass {
   std::int32_t upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
   std::int32_t lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
 
+  Real weightPerMass_ = 0;  ///< g * h: a unit mass's weight per sub-step
+  Compliance compliance_;
   /// By ref: +1 level with B above, -1 level with A above, 0 not level.
   std::vector<std::int8_t> facing_;
-  /// What last step's rows were built from (sameInputsAsLastStep).
+  /// What last step's candidates were built from (sameGraphAsLastStep).
   std::vector<ConstraintRef> lastRefs_;
   std::vector<std::int8_t> lastFacing_;
   std::vector<std::int32_t> lastAwake_;
-  std::vector<Real> lastInvMass_;
-  SinkScale sinkScale_;
-  SinkScale lastSinkScale_;
   std::uint64_t lastJointLinkChanges_ = 0;
   bool haveLast_ = false;
   std::vector<std::int32_t> level_;
@@ -112,6 +113,11 @@ class SupportPass {
   std::vector<std::int32_t> rowLevel_;
   /// By storey, then by group: rows sorted by storey, and each row's group.
   std::vector<SupportRow> byStorey_;
+  /// Every row there could be, laid out as rows_ is (groups of storeys);
+  /// kept while the graph stays the same.
+  std::vector<SupportRow> candidates_;
+  std::vector<std::int32_t> candidateGroupStart_;
+  std::vector<std::int32_t> candidateStoreyStart_;
   std::vector<std::int32_t> rowGroup_;
   /// Per state: rows seen so far in the storey being grouped, and which.
   std::vector<std::int32_t> upperRows_;
