@@ -157,9 +157,15 @@ void SupportPass::estimateSinks(const WorldData& world, std::span<const Constrai
   }
 }
 
-// A stack is the bodies the candidate rows join above the ground; it keeps
-// all its rows or none, so each kept body keeps its k-th row in its
-// storey's k-th group, and groups left empty are dropped.
+// Rows on the static world are always kept: a body standing alone sinks
+// little (0.07 mm) but keeps that overlap when something heavy lands on it.
+// Rows between bodies are kept with their stack, the bodies the candidate
+// rows join above the ground. Dropping rows leaves each group's rows
+// lifting distinct bodies; groups left empty are dropped.
+bool SupportPass::keeps(const SupportRow& row, std::span<const ConstraintRef> refs) {
+  return lowerOf(row, refs) == 0 || stackSink_[std::size_t(findStack(stack_, upperOf(row, refs)))] >= kSupportedSink;
+}
+
 void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
   const std::size_t stateCount = level_.size();
   stack_.resize(stateCount);
@@ -182,7 +188,7 @@ void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
     for (std::int32_t group = candidateStoreyStart_[storey]; group < candidateStoreyStart_[storey + 1]; ++group) {
       for (std::int32_t r = candidateGroupStart_[std::size_t(group)]; r < candidateGroupStart_[std::size_t(group) + 1]; ++r) {
         const SupportRow& row = candidates_[std::size_t(r)];
-        if (stackSink_[std::size_t(findStack(stack_, upperOf(row, refs)))] >= kSupportedSink) rows_.push_back(row);
+        if (keeps(row, refs)) rows_.push_back(row);
       }
       if (std::int32_t(rows_.size()) > groupStart_.back()) groupStart_.push_back(std::int32_t(rows_.size()));
     }

@@ -18,7 +18,8 @@
 // that sink from the stack itself (every body's weight shared out over the
 // bodies it stands on, down to the ground: stack height and mass ratio, or
 // the load each contact carried last step where that is more) and keeps the
-// rows of the stacks that would sink more than kSupportedSink.
+// rows of the stacks that would sink more than kSupportedSink (and every
+// row on the static world).
 
 #include <cstdint>
 #include <span>
@@ -31,8 +32,9 @@ namespace impulse {
 struct WorldData;
 
 /// Stacks whose soft contacts alone would let the top sink less than this
-/// (m) are left to them: a box on the ground or on another box, a pile of
-/// circles. Three boxes in a column and anything taller keep the pass.
+/// (m) leave the rows between their bodies to them (a box on another box,
+/// circles on circles in a pile); three boxes in a column and anything
+/// taller or heavier keep the pass. Rows on the static world always run.
 inline constexpr Real kSupportedSink = Real(0.001);
 
 /// One supporting contact: its ConstraintRef and which side holds the upper
@@ -53,8 +55,9 @@ class SupportPass {
   /// level contacts (normal within 25 degrees of up: a box on the ground is
   /// 1, a box on it 2), and takes as rows the level contacts whose upper
   /// body is a level above the lower one and has no joints, lowest storey
-  /// first, of the stacks (bodies joined by such contacts) whose estimated
-  /// sink under the soft contacts of `softness` reaches kSupportedSink;
+  /// first: those on the static world, and those of the stacks (bodies
+  /// joined by such contacts) whose estimated sink under the soft contacts
+  /// of `softness` reaches kSupportedSink;
   /// marks those refs `holdsUp`. Within a storey, a body's k-th row goes to
   /// the storey's k-th group. No gravity, no rows.
   ///
@@ -90,6 +93,7 @@ class SupportPass {
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
   void estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs);
   void keepStacksThatSink(std::span<const ConstraintRef> refs);
+  bool keeps(const SupportRow& row, std::span<const ConstraintRef> refs);
   std::int32_t upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
   std::int32_t lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
 
