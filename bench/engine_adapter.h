@@ -64,6 +64,9 @@ class EngineAdapter {
   virtual int castRayCount(const Vec2d& /*origin*/, const Vec2d& /*translation*/) { return 0; }
   /// How many shapes have a tight bounding box overlapping lower-upper.
   virtual int overlapBoxCount(const Vec2d& /*lower*/, const Vec2d& /*upper*/) { return 0; }
+  /// Which of the engine's optional solver passes ran, and on how much, over
+  /// the steps so far (empty: the engine has none to report).
+  virtual std::string passes() const { return {}; }
 };
 
 /// The scene built in the given engine at the given setting.

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "front.h"
+#include "impulse/world.h"
 
 namespace bench {
 
@@ -52,6 +53,13 @@ void printTable(std::FILE* out, const std::vector<RunResult>& results) {
     for (const Metric& m : r.metrics) std::fprintf(out, " %14.4g", m.value);
     if (!r.approximation.empty()) std::fprintf(out, "  (%s)", r.approximation.c_str());
     std::fprintf(out, "\n");
+  }
+  // One line, at the default setting: the passes barely differ by sub-steps.
+  for (const RunResult& r : results) {
+    if (r.ok() && !r.passes.empty() && r.setting.engine == Engine::Impulse &&
+        r.setting.iterations == impulse::WorldSettings{}.subSteps) {
+      std::fprintf(out, "passes of %s: %s\n", engineSetting(r).c_str(), r.passes.c_str());
+    }
   }
 }
 

@@ -15,6 +15,7 @@ struct RunResult {
   std::string problem;
   bool failed = false;  ///< built but threw or produced non-finite numbers
   std::string approximation;  ///< EngineAdapter::approximation()
+  std::string passes;         ///< EngineAdapter::passes() after the first repeat
   double minMs = 0;     ///< ms/step, min and median over repeats
   double medianMs = 0;
   std::vector<Metric> metrics;

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
@@ -153,6 +154,7 @@ class ImpulseAdapter final : public EngineAdapter {
   void step(double dt) override {
     for (const KinematicTarget& target : scene_.targets) steer(target, dt);
     world_.step(Real(dt));
+    passTotals_.add(world_.profile().passes);
     ++stepCount_;
     spawnDue();
   }
@@ -189,7 +191,41 @@ class ImpulseAdapter final : public EngineAdapter {
     return {};
   }
 
+  std::string passes() const override { return passTotals_.describe(stepCount_); }
+
  private:
+  /// The solver's pass counts summed over the steps.
+  struct PassTotals {
+    long contacts = 0, supportRows = 0, joints = 0, treeJoints = 0, pushedContacts = 0;
+    int pushSteps = 0;
+
+    void add(const impulse::SolverPasses& step) {
+      contacts += step.contacts;
+      supportRows += step.supportRows;
+      joints += step.joints;
+      treeJoints += step.treeJoints;
+      pushedContacts += step.pushedContacts;
+      pushSteps += step.pushedContacts > 0 ? 1 : 0;
+    }
+
+    std::string describe(int steps) const {
+      if (steps == 0) return {};
+      char text[200];
+      if (contacts == 0) {
+        std::snprintf(text, sizeof text, "no contacts");
+      } else {
+        std::snprintf(text, sizeof text, "support %.1f%% of contacts, push %.2f%% of contacts in %.1f%% of steps",
+                      percent(supportRows, contacts), percent(pushedContacts, contacts), percent(pushSteps, steps));
+      }
+      std::string line = text;
+      if (joints == 0) return line + ", no joints";
+      std::snprintf(text, sizeof text, ", exact tree %.1f%% of joints", percent(treeJoints, joints));
+      return line + text;
+    }
+
+    static double percent(long part, long whole) { return 100.0 * double(part) / double(whole); }
+  };
+
   struct Created {
     impulse::BodyId id;
     Vec2 originToCentre;  ///< from the described origin to Impulse's centre of mass, in the body's frame
@@ -278,6 +314,7 @@ class ImpulseAdapter final : public EngineAdapter {
   SpawnSchedule schedule_;
   std::vector<Created> bodies_;
   int stepCount_ = 0;
+  PassTotals passTotals_;
 };
 
 }  // namespace

@@ -12,6 +12,7 @@
 namespace impulse {
 
 struct WorldData;
+struct SolverPasses;
 
 /// What one step's solve gives every kind.
 struct SolveStep {
@@ -57,6 +58,9 @@ class ConstraintKind {
   virtual void restitution(const SubStep&) {}
   /// Keeps the impulses for next step's warm start.
   virtual void store(WorldData& world) = 0;
+  /// Adds this step's constraints, and how many of them each optional pass
+  /// runs on, to the step's report.
+  virtual void countPasses(SolverPasses& passes) const = 0;
 };
 
 }  // namespace impulse

@@ -111,6 +111,19 @@ struct WideContactSet {
   /// supportGroupBundle[g + 1]).
   std::vector<WideSupportRow<simd::F4>> support4;
   std::vector<std::int32_t> supportGroupBundle;
+  /// The push pass's contacts: those of the islands (bodies joined by
+  /// touching contacts) where a contact overlaps deeper than its load
+  /// explains when prepared (hasIntrusion). By bundle, in bundle order, with
+  /// a bit per such lane; and by index in the overflow list.
+  std::vector<std::int32_t> pushBundles;
+  std::vector<std::uint8_t> pushLanes;
+  std::vector<std::int32_t> pushOverflow;
+  /// How many contacts that is.
+  int pushedContacts = 0;
+  /// Per solver state: its island (union-find; the static dummy 0 joins
+  /// nothing), and by island root whether it is pushed.
+  std::vector<std::int32_t> island;
+  std::vector<std::uint8_t> islandPushes;
   // Scratch for sorting by colour, kept to avoid allocation per step.
   std::vector<std::int32_t> colorOf;
   std::vector<std::int32_t> order;

@@ -36,8 +36,9 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   collectTouching(world, refs_);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
-  support_.order(world, refs_, world.solverStates.size());
-  bool intrusion = kernels_->build(world, refs_, contactSoftness(world.settings, step.h), coloring, wide_);
+  const ContactSoftness softness = contactSoftness(world.settings, step.h);
+  support_.order(world, refs_, world.solverStates.size(), softness, step.h);
+  bool intrusion = kernels_->build(world, refs_, softness, coloring, wide_);
   kernels_->loadSupport(wide_, support_);
   return intrusion;
 }
@@ -59,5 +60,11 @@ void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(
 void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }
 void ContactConstraints::restitution(const SubStep& sub) { kernels_->restitution(contextFor(sub), wide_); }
 void ContactConstraints::store(WorldData& world) { kernels_->store(wide_, world); }
+
+void ContactConstraints::countPasses(SolverPasses& passes) const {
+  passes.contacts += static_cast<int>(refs_.size());
+  passes.supportRows += static_cast<int>(support_.rows().size());
+  passes.pushedContacts += wide_.pushedContacts;
+}
 
 }  // namespace impulse

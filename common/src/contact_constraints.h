@@ -22,6 +22,7 @@ class ContactConstraints final : public ConstraintKind {
   void push(const SubStep& sub) override;
   void restitution(const SubStep& sub) override;
   void store(WorldData& world) override;
+  void countPasses(SolverPasses& passes) const override;
 
  private:
   ContactSolverContext contextFor(const SubStep& sub) const;

@@ -191,21 +191,19 @@ bool hasIntrusion(const ContactConstraint& c, const Manifold& manifold) {
   return false;
 }
 
-void pushOverlap(const ContactSolverContext& context) {
-  for (ContactConstraint& c : context.constraints) {
-    SolverState& a = context.states[c.stateA];
-    SolverState& b = context.states[c.stateB];
-    Vec2 deltaPosition = b.deltaPosition - a.deltaPosition;
-    for (int j = 0; j < c.pointCount; ++j) {
-      ConstraintPoint& cp = c.points[j];
-      Vec2 moved = deltaPosition + b.deltaRotation.apply(cp.anchorB) - a.deltaRotation.apply(cp.anchorA);
-      Real intrusion = cp.baseSeparation + moved.dot(c.normal) + cp.loadOverlap;
-      if (intrusion >= 0) continue;
-      Real bias = std::max(c.softness.biasRate * intrusion, -context.maxPushSpeed);
-      Real vn = normalVelocity(a, b, c, cp);
-      Real impulse = std::max(-cp.normalMass * c.softness.massScale * (vn + bias), Real(0));
-      applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * c.normal);
-    }
+void pushOverlap(const ContactSolverContext& context, ContactConstraint& c) {
+  SolverState& a = context.states[c.stateA];
+  SolverState& b = context.states[c.stateB];
+  Vec2 deltaPosition = b.deltaPosition - a.deltaPosition;
+  for (int j = 0; j < c.pointCount; ++j) {
+    ConstraintPoint& cp = c.points[j];
+    Vec2 moved = deltaPosition + b.deltaRotation.apply(cp.anchorB) - a.deltaRotation.apply(cp.anchorA);
+    Real intrusion = cp.baseSeparation + moved.dot(c.normal) + cp.loadOverlap;
+    if (intrusion >= 0) continue;
+    Real bias = std::max(c.softness.biasRate * intrusion, -context.maxPushSpeed);
+    Real vn = normalVelocity(a, b, c, cp);
+    Real impulse = std::max(-cp.normalMass * c.softness.massScale * (vn + bias), Real(0));
+    applyImpulse(a, b, c, cp.anchorA, cp.anchorB, impulse * c.normal);
   }
 }
 

@@ -37,10 +37,11 @@ inline constexpr Real kIntrusionSlop = Real(0.005);
 /// load explains by more than kIntrusionSlop.
 bool hasIntrusion(const ContactConstraint& constraint, const Manifold& manifold);
 
-/// Split-impulse push: moves overlapping bodies apart through the velocities
-/// in the states, which the caller has swapped for zeroed pseudo velocities;
-/// only positions keep the result, so pushing adds no energy.
-void pushOverlap(const ContactSolverContext& context);
+/// Split-impulse push of one constraint: moves overlapping bodies apart
+/// through the velocities in the states, which the caller has swapped for
+/// zeroed pseudo velocities; only positions keep the result, so pushing adds
+/// no energy.
+void pushOverlap(const ContactSolverContext& context, ContactConstraint& constraint);
 
 /// Bounces: adds restitution to contacts that were approaching fast enough.
 void applyRestitution(const ContactSolverContext& context);

@@ -20,12 +20,14 @@ struct WideContactKernels {
   /// Colours the touching contacts `refs` (taking colours from the step's
   /// shared colouring) and prepares each straight into its bundle lane (or
   /// the overflow list). Returns whether any contact overlaps deeper than
-  /// its load explains (the push pass is needed).
+  /// its load explains (the push pass is needed), and chooses the push
+  /// pass's contacts: those of the islands where one does.
   bool (*build)(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
                 GraphColoring& coloring, WideContactSet& set);
   void (*warmStart)(const ContactSolverContext& context, WideContactSet& set);
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
-  /// The push pass (pushOverlap).
+  /// The push pass (pushOverlap) on the contacts of the islands where one
+  /// intruded when built (WideContactSet::pushBundles).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
   /// Lays the support pass's rows out in bundles, each lane from its
   /// prepared constraint (support_pass.h).

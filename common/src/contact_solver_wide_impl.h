@@ -27,6 +27,26 @@ void setLaneFlag(F& mask, int lane, bool on) {
   setLane(mask, lane, on ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
 }
 
+// A mask's lanes as bits (lane i: bit i), and back.
+template <class F>
+std::uint8_t laneBits(F mask) {
+  static_assert(F::kLanes <= 8);
+  float lanes[F::kLanes];
+  simd::store(lanes, mask);
+  std::uint8_t bits = 0;
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    if (std::bit_cast<std::uint32_t>(lanes[lane]) != 0) bits = std::uint8_t(bits | (1u << lane));
+  }
+  return bits;
+}
+
+template <class F>
+F laneMask(std::uint8_t bits) {
+  F mask = simd::broadcast<F>(0);
+  for (int lane = 0; lane < F::kLanes; ++lane) setLaneFlag(mask, lane, (bits >> lane & 1u) != 0);
+  return mask;
+}
+
 // An all-zero bundle: padding lanes point at the static dummy with zero mass.
 template <class F>
 WideConstraint<F> emptyBundle() {
@@ -286,6 +306,68 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
   return intrusion;
 }
 
+// ---- the push pass's islands -------------------------------------------------
+
+std::int32_t findIsland(std::vector<std::int32_t>& island, std::int32_t state) {
+  while (island[std::size_t(state)] != state) {
+    island[std::size_t(state)] = island[std::size_t(island[std::size_t(state)])];
+    state = island[std::size_t(state)];
+  }
+  return state;
+}
+
+// A contact's island: its bodies' (the static dummy belongs to none).
+std::int32_t islandOf(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
+  return findIsland(set.island, stateA != 0 ? stateA : stateB);
+}
+
+void joinIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set) {
+  set.island.resize(stateCount);
+  for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = static_cast<std::int32_t>(s);
+  set.islandPushes.assign(stateCount, 0);
+  for (const ConstraintRef& ref : refs) {
+    if (ref.stateA == 0 || ref.stateB == 0) continue;
+    set.island[std::size_t(findIsland(set.island, ref.stateA))] = findIsland(set.island, ref.stateB);
+  }
+}
+
+void markPushed(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
+  set.islandPushes[std::size_t(islandOf(set, stateA, stateB))] = 1;
+}
+
+// Every contact of a pushed island, lane by lane: an island pushes as a
+// whole, so a body pushed out of one overlap into a neighbour is pushed
+// back out of that one in the same sub-step, and any width pushes the same
+// contacts.
+template <class F>
+void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
+  set.pushBundles.clear();
+  set.pushLanes.clear();
+  set.pushOverflow.clear();
+  set.pushedContacts = 0;
+  if (!anyIntrusion) return;
+  const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  for (std::size_t b = 0; b < bundles.size(); ++b) {
+    const WideConstraint<F>& c = bundles[b];
+    std::uint8_t lanes = 0;
+    for (int l = 0; l < F::kLanes; ++l) {
+      if (c.source[l] >= 0 && set.islandPushes[std::size_t(islandOf(set, c.stateA[l], c.stateB[l]))] != 0) {
+        lanes = std::uint8_t(lanes | (1u << l));
+      }
+    }
+    if (lanes == 0) continue;
+    set.pushBundles.push_back(static_cast<std::int32_t>(b));
+    set.pushLanes.push_back(lanes);
+    set.pushedContacts += std::popcount(lanes);
+  }
+  for (std::size_t k = 0; k < set.overflow.size(); ++k) {
+    const ContactConstraint& c = set.overflow[k];
+    if (set.islandPushes[std::size_t(islandOf(set, c.stateA, c.stateB))] == 0) continue;
+    set.pushOverflow.push_back(static_cast<std::int32_t>(k));
+    ++set.pushedContacts;
+  }
+}
+
 template <class F>
 bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
                        const ContactSoftness& softness, GraphColoring& coloring, WideContactSet& set) {
@@ -296,7 +378,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   set.placeOf.resize(refs.size());
   auto& bundles = bundlesOf<F>(set);
   bundles.clear();
-  F intrusion = simd::broadcast<F>(0);
+  joinIslands(refs, world.solverStates.size(), set);
+  bool anyIntrusion = false;
   BundleInputs<F> inputs{};
   static const WideConstraint<F> kEmpty = emptyBundle<F>();
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
@@ -309,20 +392,26 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
       const std::int32_t refIndex = set.order[k];
       set.placeOf[std::size_t(refIndex)] = {static_cast<std::int32_t>(bundles.size() - 1), lane};
       gatherLane(world, refs[std::size_t(refIndex)], softness, bundles.back(), inputs, lane);
-      if (lane == F::kLanes - 1 || k + 1 == start[color + 1]) {
-        intrusion = simd::either(intrusion, finishBundle(world.solverStates, world.settings, inputs, bundles.back()));
+      if (lane < F::kLanes - 1 && k + 1 < start[color + 1]) continue;
+      WideConstraint<F>& c = bundles.back();
+      const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
+      for (int l = 0; l < F::kLanes; ++l) {
+        if ((intruding >> l & 1u) != 0) markPushed(set, c.stateA[l], c.stateB[l]);
       }
+      anyIntrusion = anyIntrusion || intruding != 0;
     }
   }
-  bool anyIntrusion = simd::any(intrusion);
   set.overflow.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     set.placeOf[std::size_t(set.order[k])] = {-1, static_cast<std::int32_t>(set.overflow.size())};
     ContactConstraint& constraint = set.overflow.emplace_back();
     prepareContact(world, ref, softness, constraint);
-    anyIntrusion = anyIntrusion || hasIntrusion(constraint, world.contacts[ref.contact].manifold);
+    if (!hasIntrusion(constraint, world.contacts[ref.contact].manifold)) continue;
+    markPushed(set, constraint.stateA, constraint.stateB);
+    anyIntrusion = true;
   }
+  selectPushedContacts<F>(set, anyIntrusion);
   return anyIntrusion;
 }
 
@@ -366,10 +455,15 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
   solveContacts(overflowContext(context, set), useBias);
 }
 
+// Only the contacts of islands where one intruded when prepared
+// (selectPushedContacts): the others' bodies are left where they are.
 template <class F>
 void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   const F maxPush = simd::broadcast<F>(-context.maxPushSpeed);
-  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+  std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  for (std::size_t k = 0; k < set.pushBundles.size(); ++k) {
+    WideConstraint<F>& c = bundles[std::size_t(set.pushBundles[k])];
+    const F pushes = laneMask<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
@@ -379,13 +473,14 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
       F bias = simd::max(c.biasRate * intrusion, maxPush);
       F vn = normalVelocity(a, b, c, p);
       F impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::broadcast<F>(0));
-      impulse = simd::select(simd::less(intrusion, simd::broadcast<F>(0)), impulse, simd::broadcast<F>(0));
+      impulse = simd::select(simd::both(pushes, simd::less(intrusion, simd::broadcast<F>(0))), impulse,
+                             simd::broadcast<F>(0));
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
   }
-  pushOverlap(overflowContext(context, set));
+  for (std::int32_t index : set.pushOverflow) pushOverlap(context, set.overflow[std::size_t(index)]);
 }
 
 }  // namespace

@@ -111,6 +111,11 @@ void JointConstraints::pushExact(const SubStep& sub) {
 }
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 
+void JointConstraints::countPasses(SolverPasses& passes) const {
+  passes.joints += static_cast<int>(rows_.size());
+  passes.treeJoints += tree_.jointCount();
+}
+
 void JointConstraints::store(WorldData& world) {
   for (const JointRow& row : rows_) {
     Joint& joint = world.joints[row.index];

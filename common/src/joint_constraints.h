@@ -22,6 +22,7 @@ class JointConstraints final : public ConstraintKind {
   void pushExact(const SubStep& sub) override;
   void relax(const SubStep& sub) override;
   void store(WorldData& world) override;
+  void countPasses(SolverPasses& passes) const override;
 
  private:
   void run(const SubStep& sub, bool useBias);

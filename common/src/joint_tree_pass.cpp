@@ -76,8 +76,11 @@ void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matr
 
 void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
   if (!sameRowsAsOrdered(rows)) orderAnew(rows, stateCount);
+  jointCount_ = 0;
   for (const Node& node : nodes_) {
-    if (node.isJoint) rows[node.row].inTree = true;
+    if (!node.isJoint) continue;
+    rows[node.row].inTree = true;
+    ++jointCount_;
   }
 }
 

@@ -40,7 +40,10 @@ class JointTreePass {
     nodes_.clear();
     groupEnds_.clear();
     orderedFrom_.clear();
+    jointCount_ = 0;
   }
+  /// The joints in the groups: what the pass solves each sub-step.
+  int jointCount() const { return jointCount_; }
   /// The pass on the states' real velocities: per group, builds and factors
   /// the system at the sub-step's geometry, solves it with position
   /// correction and applies the impulses, which join the joints' warm start.
@@ -119,6 +122,7 @@ class JointTreePass {
   std::vector<Node> nodes_;  ///< every group, each leaves first, root last
   std::vector<std::int32_t> groupEnds_;  ///< where each group's nodes end in nodes_
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
+  int jointCount_ = 0;
 };
 
 }  // namespace impulse

@@ -155,6 +155,7 @@ Softness makeSoftness(Real hertz, Real dampingRatio, Real h) {
 }
 
 void solve(WorldData& world, Real dt) {
+  world.profile.passes = {};
   if (world.awakeBodies.empty()) return;
   const int subSteps = std::max(1, world.settings.subSteps);
   const SolveStep step{dt / Real(subSteps), subSteps};
@@ -165,6 +166,7 @@ void solve(WorldData& world, Real dt) {
   world.coloring.reset(world.solverStates.size());
   bool needsPush = false;
   for (ConstraintKind* kind : kinds) needsPush = kind->prepare(world, step, world.coloring) || needsPush;
+  for (const ConstraintKind* kind : kinds) kind->countPasses(world.profile.passes);
   for (int i = 0; i < step.subSteps; ++i) {
     const SubStep sub{world.solverStates, i};
     integrateVelocities(world, h);

@@ -1,6 +1,7 @@
 #include "support_pass.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "world_data.h"
 
@@ -18,6 +19,37 @@ constexpr Real kMinUpwardNormal = Real(0.9);
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
 bool isJointed(const WorldData& world, std::int32_t state) {
   return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
+}
+
+Real invMassOf(const WorldData& world, std::int32_t state) {
+  return state == 0 ? Real(0) : world.bodies[world.solverIntegration[std::size_t(state)].body].invMass;
+}
+
+// A soft contact at rest overlaps by impulseScale * L / (massScale *
+// biasRate * normal mass) for a load L per sub-step (overlapForLoad in
+// contact_solver.cpp). Without a bias rate nothing pushes back: the sink
+// has no bound.
+Real complianceOf(const Softness& softness) {
+  if (softness.biasRate <= 0) return std::numeric_limits<Real>::infinity();
+  return softness.impulseScale / (softness.massScale * softness.biasRate);
+}
+
+// What the contact's points carried in the last sub-step of last step.
+Real lastLoad(const WorldData& world, const ConstraintRef& ref) {
+  const Manifold& manifold = world.contacts[ref.contact].manifold;
+  Real load = 0;
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    load += manifold.points[j].normalImpulse + manifold.points[j].supportImpulse;
+  }
+  return load;
+}
+
+std::int32_t findStack(std::vector<std::int32_t>& stack, std::int32_t state) {
+  while (stack[std::size_t(state)] != state) {
+    stack[std::size_t(state)] = stack[std::size_t(stack[std::size_t(state)])];
+    state = stack[std::size_t(state)];
+  }
+  return state;
 }
 
 }  // namespace
@@ -81,35 +113,127 @@ void SupportPass::remember(const WorldData& world, std::span<const ConstraintRef
   haveLast_ = true;
 }
 
-void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount) {
-  if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
-    rows_.clear();
-    groupStart_.assign(1, 0);
-    storeyGroupStart_.assign(1, 0);
-    haveLast_ = false;
-    return;
+std::int32_t SupportPass::upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const {
+  const ConstraintRef& ref = refs[std::size_t(row.ref)];
+  return row.upperIsB ? ref.stateB : ref.stateA;
+}
+
+std::int32_t SupportPass::lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const {
+  const ConstraintRef& ref = refs[std::size_t(row.ref)];
+  return row.upperIsB ? ref.stateA : ref.stateB;
+}
+
+// The load of a row (impulse per sub-step) is the larger of two: its share
+// of what its upper body carries at rest (its own weight and its shares of
+// the bodies on it, shared equally over the rows it stands on, top storey
+// first), and what the contact carried last step, which also counts what
+// reaches it over contacts too steep to be rows (a pile of circles on its
+// bottom row). Each body sinks by the deepest of its supports' sinks plus
+// the soft contact's under that load (ground first): load times the pair's
+// inverse mass times the contact's compliance. An estimate within a small
+// factor: the points' lever arms and the load's true spread are left out.
+void SupportPass::estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs) {
+  const std::size_t stateCount = level_.size();
+  carried_.resize(stateCount);
+  for (std::size_t s = 1; s < stateCount; ++s) {
+    const Real invMass = invMassOf(world, std::int32_t(s));
+    carried_[s] = invMass > 0 ? 1 / invMass : Real(0);
   }
-  classifyContacts(world, refs);
-  if (sameGraphAsLastStep(world, refs)) {
-    for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
-    return;
+  supports_.assign(stateCount, 0);
+  for (const SupportRow& row : candidates_) ++supports_[std::size_t(upperOf(row, refs))];
+  for (auto row = candidates_.rbegin(); row != candidates_.rend(); ++row) {
+    const std::int32_t upper = upperOf(*row, refs);
+    carried_[std::size_t(lowerOf(*row, refs))] += carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
+  }
+  sink_.assign(stateCount, 0);
+  for (const SupportRow& row : candidates_) {
+    const std::int32_t upper = upperOf(row, refs);
+    const std::int32_t lower = lowerOf(row, refs);
+    const Real atRest = weightPerMass_ * carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
+    const Real load = std::max(atRest, lastLoad(world, refs[std::size_t(row.ref)]));
+    const Real compliance = lower == 0 ? compliance_.statics : compliance_.dynamic;
+    const Real soft = compliance * load * (invMassOf(world, lower) + invMassOf(world, upper));
+    sink_[std::size_t(upper)] = std::max(sink_[std::size_t(upper)], sink_[std::size_t(lower)] + soft);
+  }
+}
+
+// Rows on the static world are always kept: a body standing alone sinks
+// little (0.07 mm) but keeps that overlap when something heavy lands on it.
+// Rows between bodies are kept with their stack, the bodies the candidate
+// rows join above the ground. Dropping rows leaves each group's rows
+// lifting distinct bodies; groups left empty are dropped.
+bool SupportPass::keeps(const SupportRow& row, std::span<const ConstraintRef> refs) {
+  return lowerOf(row, refs) == 0 || stackSink_[std::size_t(findStack(stack_, upperOf(row, refs)))] >= kSupportedSink;
+}
+
+void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
+  const std::size_t stateCount = level_.size();
+  stack_.resize(stateCount);
+  for (std::size_t s = 0; s < stateCount; ++s) stack_[s] = std::int32_t(s);
+  for (const SupportRow& row : candidates_) {
+    const std::int32_t lower = lowerOf(row, refs);
+    if (lower == 0) continue;
+    stack_[std::size_t(findStack(stack_, upperOf(row, refs)))] = findStack(stack_, lower);
+  }
+  stackSink_.assign(stateCount, 0);
+  for (const SupportRow& row : candidates_) {
+    const std::int32_t upper = upperOf(row, refs);
+    Real& deepest = stackSink_[std::size_t(findStack(stack_, upper))];
+    deepest = std::max(deepest, sink_[std::size_t(upper)]);
   }
   rows_.clear();
   groupStart_.assign(1, 0);
   storeyGroupStart_.assign(1, 0);
+  for (std::size_t storey = 0; storey + 1 < candidateStoreyStart_.size(); ++storey) {
+    for (std::int32_t group = candidateStoreyStart_[storey]; group < candidateStoreyStart_[storey + 1]; ++group) {
+      for (std::int32_t r = candidateGroupStart_[std::size_t(group)]; r < candidateGroupStart_[std::size_t(group) + 1]; ++r) {
+        const SupportRow& row = candidates_[std::size_t(r)];
+        if (keeps(row, refs)) rows_.push_back(row);
+      }
+      if (std::int32_t(rows_.size()) > groupStart_.back()) groupStart_.push_back(std::int32_t(rows_.size()));
+    }
+    storeyGroupStart_.push_back(std::int32_t(groupStart_.size() - 1));
+  }
+}
+
+void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
+                        const ContactSoftness& softness, Real h) {
+  rows_.clear();
+  groupStart_.assign(1, 0);
+  storeyGroupStart_.assign(1, 0);
+  if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
+    haveLast_ = false;
+    return;
+  }
+  weightPerMass_ = world.settings.gravity.norm() * h;
+  compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
+  classifyContacts(world, refs);
+  if (!sameGraphAsLastStep(world, refs)) {
+    findCandidates(world, refs, stateCount);
+    remember(world, refs);
+  }
+  estimateSinks(world, refs);
+  keepStacksThatSink(refs);
+  for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
+}
+
+void SupportPass::findCandidates(const WorldData& world, std::span<const ConstraintRef> refs,
+                                 std::size_t stateCount) {
+  candidates_.clear();
+  candidateGroupStart_.assign(1, 0);
+  candidateStoreyStart_.assign(1, 0);
   levelBodies(refs, stateCount);
 
   unsorted_.clear();
   rowLevel_.clear();
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    ConstraintRef& ref = refs[i];
+    const ConstraintRef& ref = refs[i];
     if (facing_[i] == 0) continue;
     const bool upperIsB = facing_[i] > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;
-    ref.holdsUp = true;
     SupportRow row;
     row.ref = static_cast<std::int32_t>(i);
     row.upperIsB = upperIsB;
@@ -127,14 +251,13 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   for (std::size_t r = 0; r < unsorted_.size(); ++r) {
     byStorey_[std::size_t(cursor_[std::size_t(rowLevel_[r])]++)] = unsorted_[r];
   }
-  rows_.resize(byStorey_.size());
+  candidates_.resize(byStorey_.size());
   rowGroup_.resize(byStorey_.size());
   upperStorey_.assign(stateCount, -1);
   upperRows_.resize(stateCount);
   for (std::size_t storey = 0; storey + 1 < storeyStart_.size(); ++storey) {
     groupStorey(refs, storey);
   }
-  remember(world, refs);
 }
 
 // A body's k-th row in the storey goes to group k; the groups are then laid
@@ -153,15 +276,15 @@ void SupportPass::groupStorey(std::span<const ConstraintRef> refs, std::size_t s
     rowGroup_[r] = upperRows_[upper]++;
     groups = std::max(groups, rowGroup_[r] + 1);
   }
-  const std::size_t base = groupStart_.size() - 1;  // the storey's first group
-  groupStart_.resize(base + std::size_t(groups) + 1, 0);
-  for (std::size_t r = first; r < end; ++r) ++groupStart_[base + std::size_t(rowGroup_[r]) + 1];
-  for (std::size_t g = base + 1; g < groupStart_.size(); ++g) groupStart_[g] += groupStart_[g - 1];
-  cursor_.assign(groupStart_.begin() + std::ptrdiff_t(base), groupStart_.end() - 1);
+  const std::size_t base = candidateGroupStart_.size() - 1;  // the storey's first group
+  candidateGroupStart_.resize(base + std::size_t(groups) + 1, 0);
+  for (std::size_t r = first; r < end; ++r) ++candidateGroupStart_[base + std::size_t(rowGroup_[r]) + 1];
+  for (std::size_t g = base + 1; g < candidateGroupStart_.size(); ++g) candidateGroupStart_[g] += candidateGroupStart_[g - 1];
+  cursor_.assign(candidateGroupStart_.begin() + std::ptrdiff_t(base), candidateGroupStart_.end() - 1);
   for (std::size_t r = first; r < end; ++r) {
-    rows_[std::size_t(cursor_[std::size_t(rowGroup_[r])]++)] = byStorey_[r];
+    candidates_[std::size_t(cursor_[std::size_t(rowGroup_[r])]++)] = byStorey_[r];
   }
-  storeyGroupStart_.push_back(std::int32_t(groupStart_.size() - 1));
+  candidateStoreyStart_.push_back(std::int32_t(candidateGroupStart_.size() - 1));
 }
 
 }  // namespace impulse

@@ -10,6 +10,7 @@
 
 #include "impulse/scenes/stress.h"
 #include "impulse/world.h"
+#include "world_test_support.h"
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -65,6 +66,31 @@ TEST(SteadyStateStep, DoesNotAllocate_WhenAChainSwings) {
   long before = g_allocations.load();
   for (int i = 0; i < 60; ++i) world.step(Real(1.0 / 60.0));
   EXPECT_EQ(g_allocations.load() - before, 0) << "heap allocations during 60 steps of a swinging chain";
+}
+
+// A column of circles squeezed into a shaft shorter than it, without
+// gravity: the push pass runs step after step on the same contacts (a crowd
+// that moves would also make and break contacts, which is not the solver).
+TEST(SteadyStateStep, DoesNotAllocate_WhileOverlapIsPushedOut) {
+  WorldSettings settings;
+  settings.gravity = Vec2::Zero();
+  settings.enableSleep = false;
+  World world(settings);
+  for (Real side : {Real(-1), Real(1)}) {
+    test::addBox(world, {.center = Vec2(side * Real(1.01), 2.5), .halfWidth = 0.5, .halfHeight = 3.5, .isStatic = true});
+    test::addBox(world, {.center = Vec2(0, Real(2.5) + side * 3), .halfWidth = 1.5, .halfHeight = 0.5, .isStatic = true});
+  }
+  for (int k = 0; k < 6; ++k) test::addCircle(world, {.center = Vec2(0, Real(0.5 + 0.8 * k)), .radius = 0.5});
+  for (int i = 0; i < 10; ++i) world.step(Real(1.0 / 60.0));
+
+  long before = g_allocations.load();
+  int pushedSteps = 0;
+  for (int i = 0; i < 20; ++i) {
+    world.step(Real(1.0 / 60.0));
+    pushedSteps += world.profile().passes.pushedContacts > 0 ? 1 : 0;
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0) << "heap allocations during 20 steps of pushing";
+  EXPECT_EQ(pushedSteps, 20) << "the push pass must run in every step measured";
 }
 
 }  // namespace

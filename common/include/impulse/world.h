@@ -72,6 +72,19 @@ struct WorldSettings {
   InputLimits inputLimits;
 };
 
+/// How much of the last step's constraints the solver's optional passes ran
+/// on. Each is chosen per step from what it measures, where the soft rows
+/// alone would fall short: the support pass on stacks whose soft contacts
+/// would sink (tall or heavy on light), the exact tree pass on acyclic joint
+/// groups, the push pass on contacts overlapping deeper than their load.
+struct SolverPasses {
+  int contacts = 0;        ///< touching contacts solved
+  int supportRows = 0;     ///< contacts the support pass held a body up on
+  int joints = 0;          ///< joints solved
+  int treeJoints = 0;      ///< joints the exact tree pass solved
+  int pushedContacts = 0;  ///< contacts the push pass ran on (0: no push)
+};
+
 /// Wall-clock milliseconds spent in each phase of the last step.
 struct StepProfile {
   double pairs = 0;       ///< broad phase: new pairs
@@ -85,6 +98,7 @@ struct StepProfile {
   /// Manifolds the narrow phase recomputed; contacts whose bodies have not
   /// moved keep theirs.
   int manifoldUpdates = 0;
+  SolverPasses passes;
 };
 
 /// Outcome of a body creation: an id, or a message that says what was wrong.
