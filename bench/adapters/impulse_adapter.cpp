@@ -122,7 +122,7 @@ impulse::BodyDef bodyDefFor(const BodyDesc& body, const impulse::ShapeLimits& li
   def.shape = toShape(body.shape, limits);
   def.materialOverride = overrideFor(body, body.shape.friction);
   for (const ShapeDesc& shape : body.extraShapes) {
-    def.extraShapes.push_back({toShape(shape, limits), body.material, overrideFor(body, shape.friction)});
+    def.extraShapes.push_back({toShape(shape, limits), body.material, overrideFor(body, shape.friction), {}});
   }
   def.position = toVec(body.position);
   def.angle = Real(body.angle);

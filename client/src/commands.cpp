@@ -118,6 +118,8 @@ void setPartShape(const BodyPart& part, v1::Shape* shape) {
 void setPart(const BodyPart& part, v1::ShapePart* out) {
   out->set_material(wire::toWire(part.material));
   setPartShape(part, out->mutable_shape());
+}
+
 // A command that names a body and a pose (SetTargetTransform,
 // SetTransform), in the oneof field `field` selects.
 template <class Command>

@@ -259,7 +259,7 @@ TEST(SetMaterial, EveryShapeTakesItAndTheMassFollows) {
   World world;
   BodyDef def;
   def.shape = Shape::makePolygon(makeBox(Real(0.5), Real(0.5)));
-  def.extraShapes.push_back({translated(Shape::makeCircle(Real(0.5)), Vec2(2, 0)), Material::Foam, {}});
+  def.extraShapes.push_back({translated(Shape::makeCircle(Real(0.5)), Vec2(2, 0)), Material::Foam, {}, {}});
   def.materialOverride.density = 50;
   def.position = Vec2(0, 2);
   const CreateResult body = world.createBody(def);

@@ -114,7 +114,7 @@
       "the first shape a PART (as in body) placed at X Y, ANGLE and moved by DX DY "      \
       "touches",                                                                          \
       parseShapeCast, client::shapeCast)                                                  \
-  ROW(QueryAABB, query_aabb, Anyone, queryAabb, "overlap",                                \
+  ROW(QueryAabb, query_aabb, Anyone, queryAabb, "overlap",                                \
       "overlap X1 Y1 X2 Y2 [category=N] [mask=N]",                                        \
       "the shapes whose bounding box overlaps the box X1 Y1 - X2 Y2",                     \
       parseOverlap, client::queryAabb)                                                    \
