@@ -111,7 +111,7 @@ std::optional<T> parseBits(std::string_view text) {
   return wire::parseNumber<T>(text);
 }
 
-constexpr std::string_view kFlagWords = "sensor, contact-events, hit-events, no-sensor-events";
+constexpr std::string_view kFlagWords = "sensor, contact-events, hit-events or no-sensor-events";
 
 }  // namespace
 

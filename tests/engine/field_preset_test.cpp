@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 
 #include "impulse/fan.h"
 #include "impulse/scenes/field_scenes.h"
@@ -123,27 +124,38 @@ TEST(Preset17Fans, LightBallsHoverInTheCones_NoneIsBlownOut) {
   simulate(world, 6);
   constexpr int kSamples = 28;  // 14 s, twice a second
   double aloftSum = 0, heightSum = 0;
-  int outsideTheScene = 0, aloftOutsideTheCones = 0;
+  int outsideTheScene = 0, aloftOutsideTheCones = 0, heldOutsideTheCones = 0;
+  // A ball knocked out of a cone may be caught in mid-air on its way down
+  // at one sample; one seen aloft outside the cones at two samples in a row
+  // (0.5 s apart) would be held there by air that should not exist.
+  std::set<std::uint32_t> outsideLastSample;
   for (int sample = 0; sample < kSamples; ++sample) {
     simulate(world, 0.5);
+    std::set<std::uint32_t> outsideNow;
     for (BodyId id : dynamicBodies(world)) {
       const Vec2 p = stateOf(world, id).position;
       if (p.x() < 0 || p.x() > kSceneSize.x() || p.y() < 0 || p.y() > kSceneSize.y()) ++outsideTheScene;
       if (p.y() < 2) continue;
       ++aloftSum;
       heightSum += p.y() - fanHeight;
-      if (!inAirflow(p)) ++aloftOutsideTheCones;
+      if (inAirflow(p)) continue;
+      ++aloftOutsideTheCones;
+      outsideNow.insert(id.value);
+      if (outsideLastSample.contains(id.value)) ++heldOutsideTheCones;
     }
+    outsideLastSample = std::move(outsideNow);
   }
   // A ball alone on the axis hovers where 1/2 rho Cd (2r) u^2 = m g, u = S (1 - h / R).
   const double mass = kPi * kLightBallRadius * kLightBallRadius * materialProperties(Material::Ice).density;
   const double hoverSpeed = std::sqrt(mass * kG / (0.5 * 1.2 * 2 * kLightBallRadius));
   const double hover = kFanRange * (1 - hoverSpeed / kFanSpeed);
   const double meanHeight = heightSum / std::max(1.0, aloftSum);
-  std::printf("fans: %.2f balls aloft on average at %.2f m above the fans (one ball alone on the axis: %.2f m)\n",
-              aloftSum / kSamples, meanHeight, hover);
+  std::printf("fans: %.2f balls aloft on average at %.2f m above the fans (one ball alone on the axis: %.2f m); "
+              "%d of %.0f aloft sightings outside the cones\n",
+              aloftSum / kSamples, meanHeight, hover, aloftOutsideTheCones, aloftSum);
   EXPECT_EQ(outsideTheScene, 0);
-  EXPECT_EQ(aloftOutsideTheCones, 0) << "no air outside the cones: a ball there falls";
+  EXPECT_EQ(heldOutsideTheCones, 0) << "no air outside the cones: a ball there falls";
+  EXPECT_LE(aloftOutsideTheCones, aloftSum / 20) << "balls knocked out of a cone are rare";
   EXPECT_GE(aloftSum / kSamples, 4);
   EXPECT_NEAR(meanHeight, hover, 1.5) << "riders hover about where drag equals weight";
 }

@@ -63,7 +63,7 @@ TEST(BodyEditCommands, ABodyCreatedAsleepWaitsUntilPushed) {
   EXPECT_LT(infoOf(client, id).state().position().y(), 8) << "woken, it falls";
 }
 
-TEST(BodyEditCommands, RefusalsNameTheFieldAndChangeNothing) {
+TEST(BodyEditCommands, RefusalsNameTheFieldInTheUsersWordsAndChangeNothing) {
   ServerProcess server({"--paused"});
   Client client(localClient(server.port()));
   const auto ball = client.request(client::spawnCircle({10, 10}, 0.5));
@@ -77,19 +77,19 @@ TEST(BodyEditCommands, RefusalsNameTheFieldAndChangeNothing) {
   };
   v1::ClientMessage noPosition;
   noPosition.mutable_set_transform()->set_body_id(id);
-  expectRefused(noPosition, "set_transform.position is missing");
+  expectRefused(noPosition, "teleport position is missing");
   expectRefused(client::setTransform(id, {1e6, 0}), "outside the world bounds");
-  expectRefused(client::setTransform(id, {std::nan(""), 0}), "set_transform.position.x");
+  expectRefused(client::setTransform(id, {std::nan(""), 0}), "teleport X is not a finite number");
   expectRefused(client::setTransform(4242, {1, 1}), "unknown body id 4242");
 
   v1::ClientMessage badMaterial;
   badMaterial.mutable_set_material()->set_body_id(id);
   badMaterial.mutable_set_material()->set_material(static_cast<v1::Material>(99));
-  expectRefused(badMaterial, "set_material.material 99 is not a material");
+  expectRefused(badMaterial, "material MATERIAL 99 is not a material");
 
   v1::ClientMessage noType;
   noType.mutable_set_body_type()->set_body_id(id);
-  expectRefused(noType, "set_body_type.type 0 is not a body type");
+  expectRefused(noType, "body-type TYPE 0 is not a body type");
   expectRefused(client::setBodyType(result(wall).body_id(), BodyType::Dynamic), "area");
 
   const v1::BodyInfo info = infoOf(client, id);

@@ -19,6 +19,7 @@ struct Course {
 };
 
 Course buildCourse(Client& client) {
+  EXPECT_TRUE(result(client.request(client::clearWorld())).ok());
   Course course;
   client::SpawnOptions ground;
   ground.isStatic = true;
@@ -101,8 +102,8 @@ TEST(EventsOverTheWire, FlagsChangedAtRunTimeLetTheBallFallThrough) {
   ghost.filter.maskBits = 0;
   const auto changed = client.request(client::setShapeFlags(course.ball, ghost));
   ASSERT_TRUE(result(changed).ok()) << errorOf(changed);
-  ASSERT_TRUE(result(client.request(client::step(30))).ok());
-  EXPECT_LT(client.request(client::queryBody(course.ball)).body_info().state().position().y(), 0);
+  ASSERT_TRUE(result(client.request(client::step(60))).ok());
+  EXPECT_LT(client.request(client::queryBody(course.ball)).body_info().state().position().y(), -2);
   client.ping();
   const auto* mirrored = client.mirror().find(BodyId{course.ball});
   ASSERT_NE(mirrored, nullptr);

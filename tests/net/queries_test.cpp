@@ -19,6 +19,7 @@ struct Yard {
 };
 
 Yard buildYard(Client& client) {
+  EXPECT_TRUE(result(client.request(client::clearWorld())).ok());
   Yard yard;
   client::SpawnOptions floor;
   floor.isStatic = true;

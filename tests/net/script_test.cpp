@@ -126,10 +126,11 @@ TEST(CliScript, ErrorsNameTheUsageAndTheProblem) {
   EXPECT_EQ(parseError("circle 1 2"), circle + "missing argument 3");
   EXPECT_EQ(parseError("circle 1 x 3"), circle + "'x' is not a number");
   EXPECT_EQ(parseError("circle 1 2 3 plastic"),
-            circle + "unexpected 'plastic' (material, static, kinematic, asleep or nograv)");
+            circle + "unexpected 'plastic' (material, static, kinematic, asleep, nograv, sensor, "
+                     "contact-events, hit-events or no-sensor-events)");
   EXPECT_EQ(parseError("circle 1 2 3 colour=4"),
             circle + "unexpected 'colour=4' (density=, friction=, restitution=, damping=, "
-                     "angular-damping= or gravity-scale=)");
+                     "angular-damping=, gravity-scale=, category=, mask= or group=)");
   EXPECT_EQ(parseError("circle 1 2 3 density=heavy"),
             circle + "'density=heavy' has no number after '='");
   EXPECT_EQ(parseError("time-scale"), "time-scale S: missing argument 1");

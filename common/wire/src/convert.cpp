@@ -100,7 +100,10 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
   for (std::size_t i = 1; i < description.shapes.size(); ++i) {
     toWire(description.shapes[i].shape, out->add_extra_shapes());
   }
-  toWire(description.shapes.front().interaction, out->mutable_shape_flags());
+  // A description built by hand may list no shapes: the first shape's flags
+  // are then the defaults.
+  toWire(description.shapes.empty() ? ShapeInteraction{} : description.shapes.front().interaction,
+         out->mutable_shape_flags());
   for (const ShapeDescription& shape : description.shapes) out->add_shape_ids(shape.id.value);
 }
 
