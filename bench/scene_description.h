@@ -32,7 +32,6 @@ struct CollisionFilter {
   std::uint32_t category = 1;
   std::uint32_t mask = ~0u;
   int group = 0;
-  bool collidesWithAll() const { return category == 1 && mask == ~0u && group == 0; }
 };
 
 /// Solid shapes (circle, polygon, capsule) have area; segments and chains are
