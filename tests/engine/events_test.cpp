@@ -62,6 +62,15 @@ ShapeInteraction inCategory(std::uint64_t category, std::uint64_t mask) {
   return interaction;
 }
 
+// Options of a sensor body: static, or kinematic.
+BodyOptions sensorBody(bool kinematic = false) {
+  BodyOptions options;
+  options.isStatic = !kinematic;
+  options.isKinematic = kinematic;
+  options.interaction.isSensor = true;
+  return options;
+}
+
 TEST(CollisionFilter, FollowsCategoriesMasksAndGroups) {
   CollisionFilter player{kPlayers, ~kBullets, 0};
   CollisionFilter bullet{kBullets, ~std::uint64_t{0}, 0};
@@ -115,11 +124,7 @@ TEST(CollisionFilter, ChangingAFilterEndsTheContactAndRestoringItCatchesTheBody)
 
 TEST(Sensor, ReportsShapesEnteringAndLeavingAndNeverCollides) {
   World world;
-  ShapeInteraction sensor;
-  sensor.isSensor = true;
-  BodyOptions options;
-  options.isStatic = true;
-  options.interaction = sensor;
+  const BodyOptions options = sensorBody();
   const Vec2 zone[] = {Vec2(-1, 4), Vec2(1, 4), Vec2(1, 5), Vec2(-1, 5)};
   CreateResult trigger = world.createPolygon(zone, options);
   ASSERT_TRUE(trigger.ok()) << trigger.error;
@@ -157,11 +162,7 @@ TEST(Sensor, ReportsShapesEnteringAndLeavingAndNeverCollides) {
 
 TEST(Sensor, RemovedVisitorEndsItsVisit) {
   World world;
-  ShapeInteraction sensor;
-  sensor.isSensor = true;
-  BodyOptions options;
-  options.isKinematic = true;
-  options.interaction = sensor;
+  const BodyOptions options = sensorBody(true);
   CreateResult zone = world.createCircle(Vec2(0, 0), 2, options);
   ASSERT_TRUE(zone.ok());
   BodyOptions floating;
@@ -243,11 +244,7 @@ StepRecord recordOf(const StepEvents& events) {
 // many begins, ends, hits and visits.
 void buildPile(World& world) {
   addGround(world, withEvents());
-  ShapeInteraction sensor;
-  sensor.isSensor = true;
-  BodyOptions zone;
-  zone.isStatic = true;
-  zone.interaction = sensor;
+  const BodyOptions zone = sensorBody();
   const Vec2 band[] = {Vec2(-6, 1), Vec2(6, 1), Vec2(6, 2), Vec2(-6, 2)};
   ASSERT_TRUE(world.createPolygon(band, zone).ok());
   BodyOptions options;

@@ -7,16 +7,8 @@
 # usage: platformer_test.sh PYTHON SERVER SOURCE_DIR WORK_DIR
 set -eu
 python=$1 server=$2 source_dir=$3 work=$4
-rm -rf "$work"
-mkdir -p "$work"
-"$server" --port 0 --paused >"$work/server.out" 2>"$work/server.log" &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-for _ in $(seq 50); do
-  [ -s "$work/server.out" ] && break
-  sleep 0.1
-done
-port=$(head -1 "$work/server.out" | sed 's/.*://')
+. "$(dirname "$0")/paused_server.sh"
+start_paused_server "$server" "$work"
 PATH="$(dirname "$(command -v protoc)"):$PATH" \
   "$python" "$source_dir/examples/python/platformer.py" --connect "127.0.0.1:$port" | tee "$work/out.txt"
 [ "$(grep -c ': coin [0-9]* at .* collected$' "$work/out.txt")" -eq 3 ]

@@ -5,17 +5,9 @@
 # usage: python_client_test.sh PYTHON SERVER SOURCE_DIR WORK_DIR
 set -eu
 python=$1 server=$2 source_dir=$3 work=$4
-rm -rf "$work"
-mkdir -p "$work"
-"$server" --port 0 --paused >"$work/server.out" 2>"$work/server.log" &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-for _ in $(seq 50); do
-  [ -s "$work/server.out" ] && break
-  sleep 0.1
-done
-port=$(head -1 "$work/server.out" | sed 's/.*://')
-echo "server pid $pid on port $port"
+. "$(dirname "$0")/paused_server.sh"
+start_paused_server "$server" "$work"
+echo "server pid $server_pid on port $port"
 PATH="$(dirname "$(command -v protoc)"):$PATH" \
   "$python" "$source_dir/examples/python/impulse_client.py" --connect "127.0.0.1:$port" | tee "$work/out.txt"
 grep -q '^welcome: client 1, 60 Hz, tick 0, admin True$' "$work/out.txt"

@@ -9,8 +9,6 @@ namespace {
 
 using client::Client;
 
-std::string errorOf(const v1::ServerMessage& reply) { return result(reply).error(); }
-
 v1::BodyInfo infoOf(Client& client, std::uint32_t id) { return client.request(client::queryBody(id)).body_info(); }
 
 TEST(BodyEditCommands, TeleportMaterialAndTypeReachTheBodyAndTheMirror) {

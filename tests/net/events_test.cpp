@@ -8,8 +8,6 @@ namespace {
 
 using client::Client;
 
-std::string errorOf(const v1::ServerMessage& reply) { return result(reply).error(); }
-
 // A ground box, a ball above it that reports contacts and hits, and a coin
 // (a static sensor) the ball falls through on its way down.
 struct Course {

@@ -99,4 +99,7 @@ inline const v1::CommandResult& result(const v1::ServerMessage& reply) {
   return reply.command_result();
 }
 
+/// A refused command's reason (the reply must be a CommandResult).
+inline std::string errorOf(const v1::ServerMessage& reply) { return result(reply).error(); }
+
 }  // namespace impulse::net_test

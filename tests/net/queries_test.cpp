@@ -8,8 +8,6 @@ namespace {
 
 using client::Client;
 
-std::string errorOf(const v1::ServerMessage& reply) { return result(reply).error(); }
-
 constexpr std::uint64_t kCrates = 1 << 1;
 
 // A floor whose top is y = 1, and a crate (category 2) resting on it at x = 10.

@@ -8,8 +8,6 @@ namespace {
 
 using client::Client;
 
-std::string errorOf(const v1::ServerMessage& reply) { return result(reply).error(); }
-
 TEST(ShapeCommands, CapsuleSegmentAndChainArriveWithTheirShapes) {
   ServerProcess server({"--paused"});
   Client client(localClient(server.port()));
