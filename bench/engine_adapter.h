@@ -27,13 +27,15 @@ struct EngineSetting {
   Engine engine = Engine::Impulse;
   int iterations = 4;
   int positionIterations = 0;  ///< Box2D only
+  int threads = 1;             ///< Impulse and Box2D v3 workers
   std::string label() const;
 };
 
 /// Impulse at 1, 2, 4 and 8 sub-steps (and 4 held to SSE2); Box2D at 8/3
 /// (default) and 30/10;
 /// Chipmunk at 10 (default) and 30 iterations; Box2D v3 (when built) at 4
-/// (default) and 8 sub-steps in each of its builds.
+/// (default) and 8 sub-steps in each of its builds. Impulse and v3 AVX2 at
+/// 4 sub-steps also on two threads.
 std::vector<EngineSetting> allSettings();
 
 struct Pose {
@@ -73,16 +75,16 @@ class EngineAdapter {
 std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, const EngineSetting& setting);
 
 std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps,
-                                                  bool sse2Only = false);
+                                                  bool sse2Only = false, int threads = 1);
 std::unique_ptr<EngineAdapter> makeBox2DAdapter(const SceneDescription& scene, int velocityIterations,
                                                 int positionIterations);
 std::unique_ptr<EngineAdapter> makeChipmunkAdapter(const SceneDescription& scene, int iterations);
 // One per v3 build; adapters/box2d_v3_adapter.cpp compiled into each namespace.
 namespace box2d_v3_sse2 {
-std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps);
+std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps, int workers);
 }
 namespace box2d_v3_avx2 {
-std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps);
+std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps, int workers);
 }
 
 }  // namespace bench

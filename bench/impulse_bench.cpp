@@ -4,7 +4,7 @@
 // per scene.
 //
 //   impulse-bench [--quick] [--v3-suite | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
-//                 [--engine NAME[,NAME...]] [--iterations N]
+//                 [--engine NAME[,NAME...]] [--iterations N] [--threads N]
 //
 // --v3-suite runs Box2D v3's benchmark suite (the v3-* scenes) instead of
 // Impulse's own scenes. --queries runs the query bench instead (ray casts
@@ -13,7 +13,9 @@
 // on one scene, or one side-by-side at one setting); --scene takes name parts
 // separated by commas and keeps a scene that contains any of them; --engine
 // takes whole engine names; --iterations keeps the settings of N sub-steps
-// (Impulse, Box2D v3) or N velocity iterations (Box2D 2.4.1, Chipmunk).
+// (Impulse, Box2D v3) or N velocity iterations (Box2D 2.4.1, Chipmunk);
+// --threads keeps the settings on N threads (Impulse and Box2D v3 AVX2 at 4
+// sub-steps run on 1 and 2).
 
 #include <cstdio>
 #include <cstdlib>
@@ -39,12 +41,13 @@ struct Options {
   std::string sceneFilter;
   std::string engineFilter;
   int iterations = 0;  ///< 0: every setting
+  int threads = 0;     ///< 0: every thread count
 };
 
 [[noreturn]] void usage(const char* program) {
   std::fprintf(stderr,
                "usage: %s [--quick] [--v3-suite | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
-               "[--engine NAME[,NAME...]] [--iterations N]\n",
+               "[--engine NAME[,NAME...]] [--iterations N] [--threads N]\n",
                program);
   std::exit(2);
 }
@@ -64,6 +67,7 @@ Options parse(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--scene") == 0) options.sceneFilter = value();
     else if (std::strcmp(argv[i], "--engine") == 0) options.engineFilter = value();
     else if (std::strcmp(argv[i], "--iterations") == 0) options.iterations = std::atoi(value().c_str());
+    else if (std::strcmp(argv[i], "--threads") == 0) options.threads = std::atoi(value().c_str());
     else usage(argv[0]);
   }
   return options;
@@ -86,6 +90,7 @@ bool sceneWanted(const std::string& name, const std::string& filter) {
 
 bool settingWanted(const bench::EngineSetting& setting, const Options& options) {
   if (options.iterations != 0 && setting.iterations != options.iterations) return false;
+  if (options.threads != 0 && setting.threads != options.threads) return false;
   return options.engineFilter.empty() ||
          anyPartMatches(options.engineFilter, [&](const std::string& part) { return part == bench::engineName(setting.engine); });
 }

@@ -30,6 +30,7 @@
 
 #include "engine_adapter.h"
 #include "spawn_schedule.h"
+#include "task_pool.h"
 
 #ifndef BOX2D_V3_NAMESPACE
 #error "BOX2D_V3_NAMESPACE names the v3 build this adapter is compiled for"
@@ -129,8 +130,16 @@ b2AABB tightBox(b2ShapeId shape) {
 
 class Box2DV3Adapter final : public EngineAdapter {
  public:
-  Box2DV3Adapter(const SceneDescription& scene, int subSteps) : scene_(scene), schedule_(scene), subSteps_(subSteps) {
+  Box2DV3Adapter(const SceneDescription& scene, int subSteps, int workers)
+      : scene_(scene), schedule_(scene), subSteps_(subSteps) {
     b2WorldDef def = b2DefaultWorldDef();
+    if (workers > 1) {
+      pool_ = std::make_unique<TaskPool>(workers);
+      def.workerCount = workers;
+      def.enqueueTask = enqueueOnPool;
+      def.finishTask = finishOnPool;
+      def.userTaskContext = pool_.get();
+    }
     def.gravity = toVec(scene.gravity);
     def.enableSleep = scene.allowSleep;
     if (!scene.uniformCoefficients()) {
@@ -142,6 +151,11 @@ class Box2DV3Adapter final : public EngineAdapter {
     spawnDue();
   }
   ~Box2DV3Adapter() override { b2DestroyWorld(world_); }
+
+  static void* enqueueOnPool(b2TaskCallback* task, void* taskContext, void* pool) {
+    return static_cast<TaskPool*>(pool)->enqueue(task, taskContext);
+  }
+  static void finishOnPool(void* handle, void* pool) { static_cast<TaskPool*>(pool)->finish(handle); }
   Box2DV3Adapter(const Box2DV3Adapter&) = delete;
   Box2DV3Adapter& operator=(const Box2DV3Adapter&) = delete;
 
@@ -304,12 +318,13 @@ class Box2DV3Adapter final : public EngineAdapter {
   b2BodyId ground_ = b2_nullBodyId;
   int subSteps_;
   std::vector<b2BodyId> bodies_;
+  std::unique_ptr<TaskPool> pool_;  // outlives nothing of the world: destroyed after it
 };
 
 }  // namespace
 
-std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps) {
-  return std::make_unique<Box2DV3Adapter>(scene, subSteps);
+std::unique_ptr<EngineAdapter> makeAdapter(const SceneDescription& scene, int subSteps, int workers) {
+  return std::make_unique<Box2DV3Adapter>(scene, subSteps, workers);
 }
 
 }  // namespace bench::BOX2D_V3_NAMESPACE

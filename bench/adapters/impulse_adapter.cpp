@@ -62,8 +62,9 @@ impulse::Shape toShape(const ShapeDesc& shape, const impulse::ShapeLimits& limit
   throw std::logic_error("impulse: a chain is a body of its own");
 }
 
-impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, bool sse2Only) {
+impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, bool sse2Only, int threads) {
   impulse::WorldSettings settings;
+  settings.tasks.workerCount = threads;
   if (sse2Only) settings.simdWidth = impulse::SimdWidth::Sse2;
   settings.gravity = toVec(scene.gravity);
   settings.subSteps = subSteps;
@@ -149,8 +150,8 @@ impulse::BodyDef bodyDefFor(const BodyDesc& body, const impulse::ShapeLimits& li
 
 class ImpulseAdapter final : public EngineAdapter {
  public:
-  ImpulseAdapter(const SceneDescription& scene, int subSteps, bool sse2Only)
-      : scene_(scene), world_(settingsFor(scene, subSteps, sse2Only)), schedule_(scene) {
+  ImpulseAdapter(const SceneDescription& scene, int subSteps, bool sse2Only, int threads)
+      : scene_(scene), world_(settingsFor(scene, subSteps, sse2Only, threads)), schedule_(scene) {
     bodies_.reserve(scene.bodies.size());
     spawnDue();
   }
@@ -319,8 +320,8 @@ class ImpulseAdapter final : public EngineAdapter {
 }  // namespace
 
 std::unique_ptr<EngineAdapter> makeImpulseAdapter(const SceneDescription& scene, int subSteps,
-                                                  bool sse2Only) {
-  return std::make_unique<ImpulseAdapter>(scene, subSteps, sse2Only);
+                                                  bool sse2Only, int threads) {
+  return std::make_unique<ImpulseAdapter>(scene, subSteps, sse2Only, threads);
 }
 
 }  // namespace bench

@@ -8,6 +8,7 @@
 
 #include "graph_coloring.h"
 #include "solver_data.h"
+#include "task_runner.h"
 
 namespace impulse {
 
@@ -25,6 +26,8 @@ struct SolveStep {
 struct SubStep {
   std::span<SolverState> states;
   int index = 0;
+  /// Runs a colour's constraints side by side (they share no awake body).
+  const TaskRunner* tasks = nullptr;
 };
 
 class ConstraintKind {

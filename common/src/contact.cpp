@@ -155,16 +155,28 @@ bool pairMayTouch(const WorldData& world, const ProxyPair& pair) {
   return !jointBlocksContact(world, a.body, b.body);
 }
 
-void updateManifold(WorldData& world, std::int32_t index) {
-  Contact& contact = world.contacts[index];
+// What updating one contact found, for the serial pass that follows.
+enum CollideOutcome : std::uint8_t {
+  kKept = 0,
+  kApart = 1,          // the fat boxes no longer overlap: the contact goes
+  kRecomputed = 2,     // the manifold was computed afresh
+  kTouchChanged = 4,   // it began or stopped touching
+};
+
+// Reads the bodies and shapes, writes only this contact: contacts can be
+// updated side by side.
+std::uint8_t updateManifold(const WorldData& world, Contact& contact) {
+  if (!world.broadPhase.fatAABBsOverlap(world.shapes[contact.shapeA].proxyKey,
+                                        world.shapes[contact.shapeB].proxyKey)) {
+    return kApart;
+  }
   const Body& a = world.bodies[contact.edges.bodyA];
   const Body& b = world.bodies[contact.edges.bodyB];
   const bool carried = carriesManifold(contact);
   if (carried && manifoldIsCurrent(contact, a, b)) {
     refreshManifold(contact, a, b);
-    return;
+    return kKept;
   }
-  ++world.profile.manifoldUpdates;
   Manifold next = contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
                                   world.shapes[contact.shapeB].ref().geometry, b.transform);
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
@@ -172,7 +184,24 @@ void updateManifold(WorldData& world, std::int32_t index) {
   const bool wasTouching = contact.touching;
   contact.touching = next.pointCount > 0;
   if (carried) recordFrame(contact, a, b);
-  if (contact.touching != wasTouching) reportTouchChange(world, contact);
+  return std::uint8_t(kRecomputed | (contact.touching != wasTouching ? kTouchChanged : 0));
+}
+
+// Contacts per range of the parallel update: a manifold costs about a
+// microsecond, a hand-off to a thread about as much.
+constexpr std::int32_t kContactsPerRange = 64;
+
+void updateManifolds(WorldData& world) {
+  world.collideList.clear();
+  world.contactsToCollide.forEachDescending([&](std::int32_t index) { world.collideList.push_back(index); });
+  world.collideOutcomes.resize(world.collideList.size());
+  world.tasks.forRanges(std::int32_t(world.collideList.size()), kContactsPerRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t i = begin; i < end; ++i) {
+                            world.collideOutcomes[std::size_t(i)] =
+                                updateManifold(world, world.contacts[world.collideList[std::size_t(i)]]);
+                          }
+                        });
 }
 
 // The lowest slot among the contact's awake bodies.
@@ -226,14 +255,18 @@ void collideContacts(WorldData& world, Real dt) {
   // A copy: contacts that a wake below activates wait for the next step's
   // manifold update (their bodies were resting as they are now).
   world.contactsToCollide.assign(world.activeContacts);
-  world.contactsToCollide.forEachDescending([&](std::int32_t index) {
-    Contact& contact = world.contacts[index];
-    if (!world.broadPhase.fatAABBsOverlap(world.shapes[contact.shapeA].proxyKey,
-                                          world.shapes[contact.shapeB].proxyKey)) {
+  updateManifolds(world);
+  // What changes lists and other bodies runs in the visiting order.
+  for (std::size_t i = 0; i < world.collideList.size(); ++i) {
+    const std::int32_t index = world.collideList[i];
+    const std::uint8_t outcome = world.collideOutcomes[i];
+    if (outcome & kApart) {
       destroyContact(world, index);
-      return;
+      continue;
     }
-    updateManifold(world, index);
+    Contact& contact = world.contacts[index];
+    if (outcome & kRecomputed) ++world.profile.manifoldUpdates;
+    if (outcome & kTouchChanged) reportTouchChange(world, contact);
     if (contact.reportsHits && contact.touching) reportHit(world, contact, dt);
     // A touch from an awake body wakes a sleeping one, with its island.
     if (contact.touching) {
@@ -241,7 +274,7 @@ void collideContacts(WorldData& world, Real dt) {
       wakeIsland(world, contact.edges.bodyA);
       wakeIsland(world, contact.edges.bodyB);
     }
-  });
+  }
   // Woken bodies' touching contacts are solved this step all the same.
   if (world.awakeBodies.size() != awakeCount) {
     world.activeContacts.forEachDescendingExcept(world.contactsToCollide, [&](std::int32_t index) {

@@ -2,13 +2,16 @@
 // The contact solver's data: one touching contact as a constraint, and the
 // same side by side in SIMD bundles (contact_solver_wide.h).
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
 
+#include "graph_coloring.h"
 #include "simd.h"
 #include "solver_data.h"
+#include "task_runner.h"
 #include "wide_support_row.h"
 
 namespace impulse {
@@ -106,6 +109,9 @@ struct WideContactSet {
   std::vector<ContactConstraint> overflow;
   /// Per ConstraintRef, where its constraint went (the support pass's map).
   std::vector<ContactPlace> placeOf;
+  /// Colour c's bundles are [colorBundleStart[c], colorBundleStart[c + 1]):
+  /// one colour's bundles can be solved side by side.
+  std::array<std::int32_t, GraphColoring::kOverflow + 1> colorBundleStart{};
   /// The support pass's rows in bundles of the width in use (eight-lane ones
   /// in bundles8); support group g is bundles [supportGroupBundle[g],
   /// supportGroupBundle[g + 1]).
@@ -140,6 +146,8 @@ struct ContactSolverContext {
   /// after the other favours one side, and a tall stack leans that way; the
   /// solver alternates the order every sub-step so the favour cancels.
   bool reversePointOrder = false;
+  /// Runs a colour's bundles side by side.
+  const TaskRunner* tasks = nullptr;
 };
 
 /// The step's contact softness: between dynamic bodies, and against static

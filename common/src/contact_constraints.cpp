@@ -47,6 +47,7 @@ ContactSolverContext ContactConstraints::contextFor(const SubStep& sub) const {
   ContactSolverContext context = context_;
   context.states = sub.states;
   context.reversePointOrder = sub.index % 2 == 1;
+  context.tasks = sub.tasks;
   return context;
 }
 

@@ -82,13 +82,15 @@ template <class F>
 }
 
 // Writes velocities back (the first four floats, delta position unchanged).
-// Lanes on the static dummy write the zeros they read (their inverse mass is
-// zero), so repeated writes to state 0 are harmless.
+// Lanes on the static dummy write into a sink instead: their inverse mass is
+// zero, so they would write the zeros they read, but bundles of one colour
+// run on several threads and must not write one state together.
 template <class F>
 [[gnu::always_inline]] inline void scatter(std::span<SolverState> states, const std::int32_t index[F::kLanes],
                                            const WideBody<F>& body) {
   float* rows[F::kLanes];
-  for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = floatsOf(states[index[lane]]);
+  alignas(32) float sink[8];
+  for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = index[lane] != 0 ? floatsOf(states[index[lane]]) : sink;
   const F columns[4] = {body.vx, body.vy, body.w, body.dpx};
   simd::storeColumns(columns, rows);
 }
@@ -383,6 +385,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   BundleInputs<F> inputs{};
   static const WideConstraint<F> kEmpty = emptyBundle<F>();
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+    set.colorBundleStart[std::size_t(color)] = static_cast<std::int32_t>(bundles.size());
     for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
       const int lane = (k - start[color]) % F::kLanes;
       if (lane == 0) {
@@ -401,6 +404,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
       anyIntrusion = anyIntrusion || intruding != 0;
     }
   }
+  set.colorBundleStart[GraphColoring::kOverflow] = static_cast<std::int32_t>(bundles.size());
   set.overflow.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
@@ -415,9 +419,27 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   return anyIntrusion;
 }
 
+// Bundles per range of a colour run side by side: a bundle's pass costs
+// tens of nanoseconds, a hand-off to a thread about a microsecond.
+constexpr std::int32_t kBundlesPerRange = 64;
+
+// visit(bundle) colour by colour; one colour's bundles side by side, since
+// none of their lanes shares a body.
+template <class F, class Visit>
+void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& set, Visit&& visit) {
+  std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+    const std::int32_t first = set.colorBundleStart[std::size_t(color)];
+    const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
+    context.tasks->forRanges(count, kBundlesPerRange, [&](std::int32_t begin, std::int32_t end) {
+      for (std::int32_t b = first + begin; b < first + end; ++b) visit(bundles[std::size_t(b)]);
+    });
+  }
+}
+
 template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
-  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F tx = c.normalY;
@@ -431,13 +453,13 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
     b.w += c.invInertiaB * c.rollingImpulse;
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
-  }
+  });
   warmStartContacts(overflowContext(context, set));
 }
 
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
-  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
@@ -451,7 +473,7 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
     solveRolling(c, a, b, totalNormalImpulse);
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
-  }
+  });
   solveContacts(overflowContext(context, set), useBias);
 }
 
@@ -502,9 +524,9 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
                       simd::both(simd::notEqual(p.totalNormalImpulse, simd::broadcast<F>(0)),
                                  simd::notEqual(c.restitution, simd::broadcast<F>(0))));
   };
-  for (WideConstraint<F>& c : bundlesOf<F>(set)) {
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
     // Resting contacts never bounce: skip their bodies entirely.
-    if (!simd::any(bouncing(c, c.points[0])) && !simd::any(bouncing(c, c.points[1]))) continue;
+    if (!simd::any(bouncing(c, c.points[0])) && !simd::any(bouncing(c, c.points[1]))) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     for (WidePoint<F>& p : c.points) {
@@ -519,7 +541,7 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
     }
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
-  }
+  });
   applyRestitution(overflowContext(context, set));
 }
 

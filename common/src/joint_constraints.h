@@ -26,11 +26,15 @@ class JointConstraints final : public ConstraintKind {
 
  private:
   void run(const SubStep& sub, bool useBias);
+  template <class Visit>
+  void forEachRowByColor(const SubStep& sub, Visit&& visit);
 
   std::vector<JointRow> rows_;
   std::vector<JointRow> gathered_;
   std::vector<std::int32_t> colorOf_;
   std::vector<std::int32_t> order_;
+  /// Colour c's rows are [colorStarts_[c], colorStarts_[c + 1]), overflow last.
+  ColorStarts colorStarts_{};
   JointPass pass_;
   JointTreePass tree_;
 };

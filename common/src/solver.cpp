@@ -33,29 +33,44 @@ constexpr Real kMaxLinearSpeed = 1000;
 constexpr Real kMaxRotationPerSubStep = Real(0.25) * std::numbers::pi_v<Real>;
 constexpr int kRestitutionIterations = 4;
 
+// Awake bodies per range of a parallel body phase: a body costs a few
+// nanoseconds, so a range must be long to outweigh its hand-off.
+constexpr std::int32_t kBodiesPerRange = 1024;
+
+// visit(k) for every awake body's solver state k >= 1, side by side: each
+// visit writes only body k's state and the body itself.
+template <class Visit>
+void forEachState(const WorldData& world, std::size_t stateCount, Visit&& visit) {
+  world.tasks.forRanges(std::int32_t(stateCount) - 1, kBodiesPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t k = begin + 1; k <= end; ++k) visit(std::size_t(k));
+  });
+}
+
+void loadState(WorldData& world, std::size_t k, Real h) {
+  std::int32_t slot = world.awakeBodies[k - 1];
+  Body& body = world.bodies[slot];
+  body.solverIndex = static_cast<std::int32_t>(k);
+  body.center0 = body.transform.p;
+  body.rotation0 = body.transform.q;
+  SolverState& state = world.solverStates[k];
+  state.linearVelocity = body.linearVelocity;
+  state.angularVelocity = body.angularVelocity;
+  SolverIntegration& in = world.solverIntegration[k];
+  in.body = slot;
+  in.linearAcceleration = body.invMass * body.force;
+  if (body.isDynamic() && !body.ignoreGravity) in.linearAcceleration += body.gravityScale * world.settings.gravity;
+  in.angularAcceleration = body.invInertia * body.torque;
+  // Exact exponential decay over h: the same drag whatever the tick rate.
+  const bool drags = body.isDynamic();
+  in.linearDamping = drags && body.linearDrag > 0 ? std::exp(-body.linearDrag * h) : Real(1);
+  in.angularDamping = drags && body.angularDrag > 0 ? std::exp(-body.angularDrag * h) : Real(1);
+}
+
 void loadStates(WorldData& world, Real h) {
-  const auto count = world.awakeBodies.size();
-  world.solverStates.assign(count + 1, SolverState{});
-  world.solverIntegration.resize(count + 1);
-  for (std::size_t k = 0; k < count; ++k) {
-    std::int32_t slot = world.awakeBodies[k];
-    Body& body = world.bodies[slot];
-    body.solverIndex = static_cast<std::int32_t>(k + 1);
-    body.center0 = body.transform.p;
-    body.rotation0 = body.transform.q;
-    SolverState& state = world.solverStates[k + 1];
-    state.linearVelocity = body.linearVelocity;
-    state.angularVelocity = body.angularVelocity;
-    SolverIntegration& in = world.solverIntegration[k + 1];
-    in.body = slot;
-    in.linearAcceleration = body.invMass * body.force;
-    if (body.isDynamic() && !body.ignoreGravity) in.linearAcceleration += body.gravityScale * world.settings.gravity;
-    in.angularAcceleration = body.invInertia * body.torque;
-    // Exact exponential decay over h: the same drag whatever the tick rate.
-    const bool drags = body.isDynamic();
-    in.linearDamping = drags && body.linearDrag > 0 ? std::exp(-body.linearDrag * h) : Real(1);
-    in.angularDamping = drags && body.angularDrag > 0 ? std::exp(-body.angularDrag * h) : Real(1);
-  }
+  const auto count = world.awakeBodies.size() + 1;
+  world.solverStates.assign(count, SolverState{});
+  world.solverIntegration.resize(count);
+  forEachState(world, count, [&](std::size_t k) { loadState(world, k, h); });
 }
 
 // Every kind of constraint the solver runs, in the order each stage visits
@@ -67,7 +82,7 @@ std::array<ConstraintKind*, 2> constraintKinds(WorldData& world) {
 
 void integrateVelocities(WorldData& world, Real h) {
   const Real maxAngularSpeed = kMaxRotationPerSubStep / h;
-  for (std::size_t k = 1; k < world.solverStates.size(); ++k) {
+  forEachState(world, world.solverStates.size(), [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
     const SolverIntegration& in = world.solverIntegration[k];
     Vec2 v = in.linearDamping * (state.linearVelocity + h * in.linearAcceleration);
@@ -76,15 +91,15 @@ void integrateVelocities(WorldData& world, Real h) {
     if (speedSquared > kMaxLinearSpeed * kMaxLinearSpeed) v *= kMaxLinearSpeed / std::sqrt(speedSquared);
     state.linearVelocity = v;
     state.angularVelocity = std::clamp(w, -maxAngularSpeed, maxAngularSpeed);
-  }
+  });
 }
 
 void integratePositions(WorldData& world, Real h) {
-  for (std::size_t k = 1; k < world.solverStates.size(); ++k) {
+  forEachState(world, world.solverStates.size(), [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
     state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
     state.deltaPosition += h * state.linearVelocity;
-  }
+  });
 }
 
 // A body being pushed out of an overlap moves without velocity; it must not
@@ -101,27 +116,27 @@ void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* cons
                                 const SubStep& sub, Real h) {
   const std::size_t count = world.solverStates.size();
   world.parkedVelocities.resize(count);
-  for (std::size_t k = 1; k < count; ++k) {
+  forEachState(world, count, [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
     world.parkedVelocities[k] = {state.linearVelocity, state.angularVelocity};
     state.linearVelocity.setZero();
     state.angularVelocity = 0;
-  }
+  });
   for (ConstraintKind* kind : kinds) kind->push(sub);
   for (ConstraintKind* kind : kinds) kind->pushExact(sub);
-  for (std::size_t k = 1; k < count; ++k) {
+  forEachState(world, count, [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
     keepAwakeWhilePushed(world.bodies[world.solverIntegration[k].body], state, world.settings);
     const ParkedVelocity& real = world.parkedVelocities[k];
     state.linearVelocity += real.linear;
     state.angularVelocity += real.angular;
-  }
+  });
   integratePositions(world, h);
-  for (std::size_t k = 1; k < count; ++k) {
+  forEachState(world, count, [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
     state.linearVelocity = world.parkedVelocities[k].linear;
     state.angularVelocity = world.parkedVelocities[k].angular;
-  }
+  });
 }
 
 Rot compose(const Rot& delta, const Rot& q) {
@@ -131,7 +146,7 @@ Rot compose(const Rot& delta, const Rot& q) {
 }
 
 void finalizeBodies(WorldData& world) {
-  for (std::size_t k = 1; k < world.solverStates.size(); ++k) {
+  forEachState(world, world.solverStates.size(), [&](std::size_t k) {
     const SolverState& state = world.solverStates[k];
     Body& body = world.bodies[world.solverIntegration[k].body];
     body.linearVelocity = state.linearVelocity;
@@ -140,7 +155,7 @@ void finalizeBodies(WorldData& world) {
     body.transform.q = compose(state.deltaRotation, body.rotation0);
     body.force.setZero();
     body.torque = 0;
-  }
+  });
 }
 
 }  // namespace
@@ -168,7 +183,7 @@ void solve(WorldData& world, Real dt) {
   for (ConstraintKind* kind : kinds) needsPush = kind->prepare(world, step, world.coloring) || needsPush;
   for (const ConstraintKind* kind : kinds) kind->countPasses(world.profile.passes);
   for (int i = 0; i < step.subSteps; ++i) {
-    const SubStep sub{world.solverStates, i};
+    const SubStep sub{world.solverStates, i, &world.tasks};
     integrateVelocities(world, h);
     for (ConstraintKind* kind : kinds) kind->warmStart(sub);
     for (ConstraintKind* kind : kinds) kind->solve(sub);
@@ -184,7 +199,7 @@ void solve(WorldData& world, Real dt) {
   }
   // A flat face meeting a wall bounces on two points; one pass solves them
   // one after the other and leaves a spurious spin, a few converge.
-  const SubStep last{world.solverStates, step.subSteps - 1};
+  const SubStep last{world.solverStates, step.subSteps - 1, &world.tasks};
   for (int i = 0; i < kRestitutionIterations; ++i) {
     for (ConstraintKind* kind : kinds) kind->restitution(last);
   }

@@ -429,6 +429,20 @@ InputResult World::setGravity(const Vec2& gravity) {
 
 Vec2 World::gravity() const { return impl_->settings.gravity; }
 
+InputResult World::setTaskSettings(const TaskSettings& tasks) {
+  if (!(tasks.workerCount >= 1 && tasks.workerCount <= kMaxWorkers)) {
+    return {"worker count " + std::to_string(tasks.workerCount) + " must be in [1, " + std::to_string(kMaxWorkers) +
+            "]"};
+  }
+  if ((tasks.enqueueTask == nullptr) != (tasks.finishTask == nullptr)) {
+    return {"enqueueTask and finishTask are given together or not at all"};
+  }
+  impl_->settings.tasks = tasks;
+  return {};
+}
+
+TaskSettings World::taskSettings() const { return usableTaskSettings(impl_->settings.tasks); }
+
 InputResult World::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
   if (std::string error = checkImpulse(*impl_, id, impulse, point); !error.empty()) return {error};
   Body* body = impl_->find(id);
@@ -473,6 +487,7 @@ void World::step(Real dt) {
   WorldData& w = *impl_;
   if (!(dt > 0) || !isFinite(dt)) return;
   Clock::time_point start = Clock::now();
+  w.tasks.configure(w.settings.tasks);
   for (const StepStage& stage : kStepStages) {
     Clock::time_point stageStart = Clock::now();
     stage.run(w, dt);

@@ -24,6 +24,7 @@
 #include "impulse/field.h"
 #include "impulse/world.h"
 #include "solver_data.h"
+#include "task_runner.h"
 
 namespace impulse {
 
@@ -48,6 +49,7 @@ struct FieldSlot {
 
 struct WorldData {
   WorldSettings settings;
+  TaskRunner tasks;  ///< runs the step's parallel phases (settings.tasks)
   std::vector<Body> bodies;
   FreeList freeBodies;
   int liveBodies = 0;
@@ -95,6 +97,10 @@ struct WorldData {
   // Scratch reused every step, so the steady state allocates nothing.
   std::vector<ProxyPair> newPairs;
   SlotBits contactsToCollide;
+  /// The narrow phase's contacts in visiting order, and what updating each
+  /// found (parallel first, then applied in that order).
+  std::vector<std::int32_t> collideList;
+  std::vector<std::uint8_t> collideOutcomes;
   /// The touching contacts with an awake body, in solver order: the narrow
   /// phase's list for this step's solve.
   std::vector<std::int32_t> touchingContacts;

@@ -21,6 +21,7 @@
 #include "impulse/math.h"
 #include "impulse/query.h"
 #include "impulse/shape.h"
+#include "impulse/tasks.h"
 #include "impulse/world_state.h"
 
 namespace impulse {
@@ -70,6 +71,9 @@ struct WorldSettings {
   ShapeLimits shapeLimits;
   /// Speeds, spins, gravity, forces and how far out bodies may go.
   InputLimits inputLimits;
+  /// Threads for the step (impulse/tasks.h); results are the same bits for
+  /// any worker count. Not part of a saved world: it belongs to the machine.
+  TaskSettings tasks;
 };
 
 /// How much of the last step's constraints the solver's optional passes ran
@@ -190,6 +194,13 @@ class World {
   /// Refused (world unchanged) outside InputLimits::maxGravity.
   InputResult setGravity(const Vec2& gravity);
   Vec2 gravity() const;
+
+  /// Who runs the step's parallel phases from the next step on. Refused
+  /// (unchanged) for a worker count outside [1, kMaxWorkers] or only one of
+  /// the two callbacks. Settings given at construction are used as far as
+  /// they go: the count clamped, a half pair of callbacks ignored.
+  InputResult setTaskSettings(const TaskSettings& tasks);
+  TaskSettings taskSettings() const;
 
   /// Wakes the body. The point defaults to the centre of mass. Refused, with
   /// the reason, for an unknown id, a static body, a non-finite vector, a

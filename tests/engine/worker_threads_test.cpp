@@ -1,0 +1,186 @@
+// Worker threads: the step gives the same bits on one thread, on the
+// world's own threads and through a game's job system, on scenes large
+// enough that every parallel phase really splits.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "impulse/scenes/stress.h"
+#include "impulse/tasks.h"
+#include "impulse/world.h"
+#include "world_test_support.h"
+
+namespace impulse {
+namespace {
+
+using namespace impulse::test;
+
+using SceneBuilder = void (*)(World& world);
+
+// 2 485 boxes in a 70-row pyramid struck by a heavy ball at 30 m/s, and a
+// seeded pile of boxes and circles falling on its far side: chaotic, so
+// any difference in the order of arithmetic shows in the bits.
+void buildStruckPyramid(World& world) {
+  buildPyramid(world, 70);
+  world.createCircle(Vec2(-60, 3), 2.5F, {.material = Material::Metal, .linearVelocity = Vec2(30, 0)});
+  std::mt19937 random(11);
+  std::uniform_real_distribution<Real> x(20, 70);
+  std::uniform_real_distribution<Real> y(5, 60);
+  std::uniform_real_distribution<Real> size(Real(0.2), Real(0.6));
+  for (int i = 0; i < 1500; ++i) {
+    const Vec2 centre(x(random), y(random));
+    if (i % 2 == 0) {
+      world.createCircle(centre, size(random), {.material = Material::Rubber});
+    } else {
+      addBox(world, {.center = centre, .halfWidth = size(random), .halfHeight = size(random)});
+    }
+  }
+}
+
+// A 60 x 60 grid of circles joined by revolute joints to their right and
+// lower neighbours, the top row's ends pinned: 3 600 bodies, 7 080 joints,
+// swinging and colliding as it falls.
+void buildJointGrid(World& world) {
+  constexpr int kSide = 60;
+  std::vector<BodyId> bodies(kSide * kSide);
+  for (int row = 0; row < kSide; ++row) {
+    for (int column = 0; column < kSide; ++column) {
+      const bool pinned = row == 0 && (column == 0 || column == kSide - 1);
+      bodies[std::size_t(row * kSide + column)] =
+          world.createCircle(Vec2(Real(column) - 30, 40 - Real(row)), Real(0.4), {.isStatic = pinned}).id;
+    }
+  }
+  auto join = [&](int a, int b) {
+    const Vec2 anchor = world.bodyState(bodies[std::size_t(b)])->position;
+    ASSERT_TRUE(world.createJoint({.bodyA = bodies[std::size_t(a)], .bodyB = bodies[std::size_t(b)],
+                                   .anchorA = anchor, .anchorB = anchor,
+                                   .settings = RevoluteJointSettings{}})
+                    .ok());
+  };
+  for (int row = 0; row < kSide; ++row) {
+    for (int column = 0; column < kSide; ++column) {
+      const int here = row * kSide + column;
+      if (column + 1 < kSide) join(here, here + 1);
+      if (row + 1 < kSide) join(here, here + kSide);
+    }
+  }
+}
+
+WorldSettings wideSettings(const TaskSettings& tasks) {
+  WorldSettings settings;
+  settings.bounds = {Vec2(-150, -50), Vec2(150, 250)};
+  settings.tasks = tasks;
+  return settings;
+}
+
+std::vector<std::uint64_t> hashesAfterEachStep(SceneBuilder build, const TaskSettings& tasks, int steps) {
+  World world(wideSettings(tasks));
+  build(world);
+  std::vector<std::uint64_t> hashes;
+  for (int i = 0; i < steps; ++i) {
+    world.step(kDt);
+    hashes.push_back(world.stateHash());
+  }
+  return hashes;
+}
+
+void expectSameBits(const std::vector<std::uint64_t>& expected, const std::vector<std::uint64_t>& actual,
+                    const char* what) {
+  ASSERT_EQ(expected.size(), actual.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    ASSERT_EQ(expected[i], actual[i]) << what << ": states differ from one thread's after step " << i + 1;
+  }
+}
+
+// Two and three threads: the three-way split of every phase is checked too
+// (on a 2-core machine the third thread only makes it slower).
+TEST(WorkerThreads, StruckPyramidGivesTheSameBitsOnOneToThreeThreads) {
+  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildStruckPyramid, {}, 60);
+  EXPECT_NE(one.front(), one.back()) << "the scene moves";
+  for (int workers : {2, 3}) {
+    expectSameBits(one, hashesAfterEachStep(buildStruckPyramid, {.workerCount = workers}, 60),
+                   ("workers " + std::to_string(workers)).c_str());
+  }
+}
+
+TEST(WorkerThreads, JointGridGivesTheSameBitsOnOneAndTwoThreads) {
+  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildJointGrid, {}, 60);
+  EXPECT_NE(one.front(), one.back()) << "the grid swings";
+  expectSameBits(one, hashesAfterEachStep(buildJointGrid, {.workerCount = 2}, 60), "workers 2");
+}
+
+// A game's job system that runs each task's ranges backwards, one range of
+// minRange items at a time, and only when asked to finish: the most hostile
+// order a job system could choose.
+struct BackwardsJobs {
+  struct Job {
+    TaskFunction* task;
+    int itemCount;
+    int minRange;
+    void* context;
+  };
+  Job pending{};
+  int tasks = 0;
+  int ranges = 0;
+
+  static void* enqueue(TaskFunction* task, int itemCount, int minRange, void* context, void* user) {
+    auto& jobs = *static_cast<BackwardsJobs*>(user);
+    jobs.pending = {task, itemCount, minRange, context};
+    ++jobs.tasks;
+    return &jobs.pending;
+  }
+  static void finish(void* handle, void* user) {
+    auto& jobs = *static_cast<BackwardsJobs*>(user);
+    const Job& job = *static_cast<Job*>(handle);
+    const int step = std::max(job.minRange, 1);
+    for (int end = job.itemCount; end > 0; end -= step) {
+      job.task(std::max(end - step, 0), end, 0, job.context);
+      ++jobs.ranges;
+    }
+  }
+};
+
+TEST(WorkerThreads, AGamesJobSystemRunningRangesBackwardsGivesTheSameBits) {
+  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildStruckPyramid, {}, 60);
+  BackwardsJobs jobs;
+  const TaskSettings settings{.workerCount = 4,
+                              .enqueueTask = &BackwardsJobs::enqueue,
+                              .finishTask = &BackwardsJobs::finish,
+                              .userContext = &jobs};
+  expectSameBits(one, hashesAfterEachStep(buildStruckPyramid, settings, 60), "backwards jobs");
+  EXPECT_GT(jobs.tasks, 60) << "every step handed phases to the job system";
+  EXPECT_GT(jobs.ranges, 2 * jobs.tasks) << "phases were cut into several ranges";
+}
+
+TEST(WorkerThreads, ChangingTheWorkerCountBetweenStepsKeepsTheBits) {
+  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildStruckPyramid, {}, 40);
+  World world(wideSettings({}));
+  buildStruckPyramid(world);
+  for (int i = 0; i < 40; ++i) {
+    ASSERT_TRUE(world.setTaskSettings({.workerCount = 1 + i % 2}).ok());
+    world.step(kDt);
+    ASSERT_EQ(one[std::size_t(i)], world.stateHash()) << "after step " << i + 1;
+  }
+}
+
+TEST(WorkerThreads, BadTaskSettingsAreRefusedAndChangeNothing) {
+  World world(wideSettings({.workerCount = 2}));
+  const InputResult none = world.setTaskSettings({.workerCount = 0});
+  EXPECT_FALSE(none.ok());
+  EXPECT_NE(none.error.find("worker count 0"), std::string::npos) << none.error;
+  EXPECT_FALSE(world.setTaskSettings({.workerCount = kMaxWorkers + 1}).ok());
+  BackwardsJobs jobs;
+  const InputResult half = world.setTaskSettings({.workerCount = 2, .enqueueTask = &BackwardsJobs::enqueue,
+                                                  .userContext = &jobs});
+  EXPECT_FALSE(half.ok());
+  EXPECT_NE(half.error.find("finishTask"), std::string::npos) << half.error;
+  EXPECT_EQ(world.taskSettings().workerCount, 2);
+  EXPECT_EQ(world.taskSettings().enqueueTask, nullptr);
+}
+
+}  // namespace
+}  // namespace impulse
