@@ -84,6 +84,8 @@ impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, 
     include(joint.anchorB, 1);
   }
   settings.shapeLimits.maxArea = Real(1e5);
+  // Solver2D's card house has cards of 8 cm^2.
+  settings.shapeLimits.minArea = Real(1e-4);
   settings.shapeLimits.maxRadius = Real(1e3);
   settings.maxBodies = std::max<int>(settings.maxBodies, static_cast<int>(scene.bodies.size()));
   return settings;
