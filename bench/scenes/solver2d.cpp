@@ -30,7 +30,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 /// A body of Solver2D's default shape values unless given.
-BodyDesc s2Body(ShapeDesc shape, Vec2d position, double friction = 0.6, double density = 1, bool isStatic = false) {
+BodyDesc s2Body(ShapeDesc shape, Vec2d position, double friction = 0.6, double density = 1,
+                bool isStatic = false) {
   BodyDesc body = makeBody(std::move(shape), position, impulse::Material::Solid, isStatic);
   body.density = density;
   body.friction = friction;
@@ -38,7 +39,8 @@ BodyDesc s2Body(ShapeDesc shape, Vec2d position, double friction = 0.6, double d
   return body;
 }
 
-int addStatic(SceneDescription& scene, ShapeDesc shape, Vec2d position = {}, double friction = 0.6) {
+int addStatic(SceneDescription& scene, ShapeDesc shape, Vec2d position = {},
+              double friction = 0.6) {
   return addBody(scene, s2Body(std::move(shape), position, friction, 1, true));
 }
 
@@ -93,7 +95,7 @@ class RestWatch final : public Measure {
   std::vector<RestTarget> targets_;
 };
 
-/// Every dynamic body of the scene, to rest `drop(start)` from its start.
+/// Every dynamic body of the scene, to rest `drop(body)` from its start.
 template <class Drop>
 std::vector<RestTarget> restingAll(const SceneDescription& scene, Drop drop) {
   std::vector<RestTarget> all;
@@ -105,9 +107,12 @@ std::vector<RestTarget> restingAll(const SceneDescription& scene, Drop drop) {
 /// any step, and the fastest body at the end.
 class SlipWatch final : public Measure {
  public:
-  explicit SlipWatch(const SceneDescription& scene) : scene_(scene), moving_(dynamicBodies(scene)) {}
+  explicit SlipWatch(const SceneDescription& scene)
+      : scene_(scene), moving_(dynamicBodies(scene)) {}
   void observe(const EngineAdapter& engine, int) override {
-    for (int i : moving_) slip_ = std::max(slip_, distance(engine.pose(i).position, scene_.bodies[std::size_t(i)].position));
+    for (int i : moving_)
+      slip_ = std::max(slip_,
+                       distance(engine.pose(i).position, scene_.bodies[std::size_t(i)].position));
   }
   std::vector<Metric> results(const EngineAdapter& engine) override {
     return {{"max slip m", slip_}, {"end speed m/s", fastest(engine, moving_)}};
@@ -124,11 +129,15 @@ class SlipWatch final : public Measure {
 /// sag), and the fastest body at the end.
 class HoldWatch final : public Measure {
  public:
-  explicit HoldWatch(const SceneDescription& scene) : scene_(scene), probe_(scene), moving_(dynamicBodies(scene)) {}
-  void observe(const EngineAdapter& engine, int) override { gap_ = std::max(gap_, probe_.worstPinGap(engine)); }
+  explicit HoldWatch(const SceneDescription& scene)
+      : scene_(scene), probe_(scene), moving_(dynamicBodies(scene)) {}
+  void observe(const EngineAdapter& engine, int) override {
+    gap_ = std::max(gap_, probe_.worstPinGap(engine));
+  }
   std::vector<Metric> results(const EngineAdapter& engine) override {
     double drop = 0;
-    for (int i : moving_) drop = std::max(drop, scene_.bodies[std::size_t(i)].position.y - engine.pose(i).position.y);
+    for (int i : moving_)
+      drop = std::max(drop, scene_.bodies[std::size_t(i)].position.y - engine.pose(i).position.y);
     return {{"pin gap m", gap_},
             {"end gap m", probe_.worstPinGap(engine)},
             {"max drop m", drop},
@@ -166,7 +175,8 @@ SceneDescription highMassRatio1() {
       for (int i = 0; i < count; ++i) {
         const double x = 2 * (i - 0.5 * count) + offset;
         const bool top = count == 1;
-        addBody(scene, s2Body(ShapeDesc::box(1, 1), {x, top ? y + 2 : y}, 0.5, top ? (j + 1) * 100.0 : 1));
+        addBody(scene,
+                s2Body(ShapeDesc::box(1, 1), {x, top ? y + 2 : y}, 0.5, top ? (j + 1) * 100.0 : 1));
       }
     }
   }
@@ -175,7 +185,9 @@ SceneDescription highMassRatio1() {
 
 /// The heavy tops land 2 m down; every other box stays.
 std::vector<RestTarget> highMassRatio1Rest(const SceneDescription& scene) {
-  return restingAll(scene, [&](int i) { return Vec2d{0, scene.bodies[std::size_t(i)].density > 1 ? -2.0 : 0.0}; });
+  return restingAll(scene, [&](int i) {
+    return Vec2d{0, scene.bodies[std::size_t(i)].density > 1 ? -2.0 : 0.0};
+  });
 }
 
 /// A 20 m box dropped 15 m onto two 1 m boxes 18 m apart (400:1 each), on a
@@ -203,8 +215,11 @@ class HighMassRatioWatch final : public Measure {
   std::vector<Metric> results(const EngineAdapter& engine) override {
     const Pose big = engine.pose(3);
     double slide = 0;
-    for (int small : {1, 2}) slide = std::max(slide, distance(engine.pose(small).position, start(small)));
-    return {{"sink m", start(3).y - 15 - big.position.y}, {"tilt rad", std::abs(big.angle)}, {"support slide m", slide}};
+    for (int small : {1, 2})
+      slide = std::max(slide, distance(engine.pose(small).position, start(small)));
+    return {{"sink m", start(3).y - 15 - big.position.y},
+            {"tilt rad", std::abs(big.angle)},
+            {"support slide m", slide}};
   }
 
  private:
@@ -234,7 +249,8 @@ SceneDescription verticalStack() {
   SceneDescription scene = solver2DWorld();
   addStatic(scene, ShapeDesc::box(100, 1), {0, -1});
   for (int i = 0; i < 15; ++i) {
-    addBody(scene, s2Body(ShapeDesc::box(0.5, 0.5), {i % 2 == 0 ? -0.01 : 0.01, 0.55 + 1.1 * i}, 0.3));
+    addBody(scene,
+            s2Body(ShapeDesc::box(0.5, 0.5), {i % 2 == 0 ? -0.01 : 0.01, 0.55 + 1.1 * i}, 0.3));
   }
   return scene;
 }
@@ -290,10 +306,12 @@ SceneDescription arch() {
   SceneDescription scene = solver2DWorld();
   addStatic(scene, ShapeDesc::segment({-100, 0}, {100, 0}));
   for (double side : {1.0, -1.0}) {
-    for (int i = 0; i < 8; ++i) addQuad(scene, {in(i, side), out(i, side), out(i + 1, side), in(i + 1, side)});
+    for (int i = 0; i < 8; ++i)
+      addQuad(scene, {in(i, side), out(i, side), out(i + 1, side), in(i + 1, side)});
   }
   addQuad(scene, {in(8, 1), out(8, 1), out(8, -1), in(8, -1)});
-  for (int i = 0; i < 4; ++i) addBody(scene, s2Body(ShapeDesc::box(2, 0.5), {0, 0.5 + out(8, 1).y + i}));
+  for (int i = 0; i < 4; ++i)
+    addBody(scene, s2Body(ShapeDesc::box(2, 0.5), {0, 0.5 + out(8, 1).y + i}));
   return scene;
 }
 
@@ -317,18 +335,23 @@ SceneDescription doubleDomino() {
 /// tipped after the one before it.
 class DominoWatch final : public Measure {
  public:
-  explicit DominoWatch(const SceneDescription& scene) : dominoes_(dynamicBodies(scene)), tipped_(dominoes_.size(), -1) {}
+  explicit DominoWatch(const SceneDescription& scene)
+      : dominoes_(dynamicBodies(scene)), tipped_(dominoes_.size(), -1) {}
   void observe(const EngineAdapter& engine, int step) override {
     for (std::size_t i = 0; i < dominoes_.size(); ++i) {
-      if (tipped_[i] < 0 && std::abs(engine.pose(dominoes_[i]).angle) > kPi / 6) tipped_[i] = (step + 1) * kDt;
+      if (tipped_[i] < 0 && std::abs(engine.pose(dominoes_[i]).angle) > kPi / 6)
+        tipped_[i] = (step + 1) * kDt;
     }
   }
   std::vector<Metric> results(const EngineAdapter&) override {
-    const double fallen = double(std::count_if(tipped_.begin(), tipped_.end(), [](double t) { return t >= 0; }));
+    const double fallen =
+        double(std::count_if(tipped_.begin(), tipped_.end(), [](double t) { return t >= 0; }));
     bool inOrder = fallen == double(tipped_.size());
-    for (std::size_t i = 1; inOrder && i < tipped_.size(); ++i) inOrder = tipped_[i] > tipped_[i - 1];
+    for (std::size_t i = 1; inOrder && i < tipped_.size(); ++i)
+      inOrder = tipped_[i] > tipped_[i - 1];
     // Headline: how many did not fall (lower is better).
-    return {{"standing", double(tipped_.size()) - fallen}, {"in order", inOrder ? 1.0 : 0.0},
+    return {{"standing", double(tipped_.size()) - fallen},
+            {"in order", inOrder ? 1.0 : 0.0},
             {"last tip s", inOrder ? tipped_.back() : 99.0}};
   }
 
@@ -386,7 +409,8 @@ SceneDescription loosePyramid() {
   for (int i = 0; i < baseCount; ++i) {
     const double y = (2 * i + 1) * shift + 0.5;
     for (int j = i; j < baseCount; ++j) {
-      addBody(scene, s2Body(ShapeDesc::box(h, h), {(i + 1) * shift + 2 * (j - i) * shift - h * baseCount, y}));
+      addBody(scene, s2Body(ShapeDesc::box(h, h),
+                            {(i + 1) * shift + 2 * (j - i) * shift - h * baseCount, y}));
     }
   }
   return scene;
@@ -441,7 +465,8 @@ int addHangingChain(SceneDescription& scene, int count, double hx, double radius
   const double y = count * hx;
   int previous = kWorldBody;
   for (int i = 0; i < count; ++i) {
-    BodyDesc link = s2Body(ShapeDesc::capsule({-hx, 0}, {hx, 0}, radius), {(1 + 2 * i) * hx, y}, 0.6, 20);
+    BodyDesc link =
+        s2Body(ShapeDesc::capsule({-hx, 0}, {hx, 0}, radius), {(1 + 2 * i) * hx, y}, 0.6, 20);
     link.linearDamping = 0.1;
     const int index = addBody(scene, link);
     addJoint(scene, makePin(index, previous, {2 * i * hx, y}));
@@ -457,7 +482,8 @@ SceneDescription ballAndChain() {
   const int count = 40;
   const double hx = 0.5, radius = 8;
   const int last = addHangingChain(scene, count, hx, 0.125);
-  BodyDesc ball = s2Body(ShapeDesc::circle(radius), {(1 + 2 * count) * hx + radius - hx, count * hx}, 0.6, 20);
+  BodyDesc ball =
+      s2Body(ShapeDesc::circle(radius), {(1 + 2 * count) * hx + radius - hx, count * hx}, 0.6, 20);
   ball.linearDamping = 0.1;
   addJoint(scene, makePin(addBody(scene, ball), last, {2 * count * hx, count * hx}));
   return scene;
@@ -506,7 +532,8 @@ void addHuman(SceneDescription& scene, Vec2d at, int group) {
   const int first = static_cast<int>(scene.bodies.size());
   for (int b = 0; b < static_cast<int>(std::size(kHuman)); ++b) {
     const Bone& bone = kHuman[b];
-    BodyDesc body = s2Body(ShapeDesc::capsule({0, bone.bottom}, {0, bone.top}, bone.radius), {at.x, at.y + bone.y}, 0.4);
+    BodyDesc body = s2Body(ShapeDesc::capsule({0, bone.bottom}, {0, bone.top}, bone.radius),
+                           {at.x, at.y + bone.y}, 0.4);
     body.shape.filter.group = -group;
     if (b == kHead) body.extraShapes.push_back(ShapeDesc::capsule({0, -0.12}, {0, -0.08}, 0.05));
     if (std::find(std::begin(kLowerLegs), std::end(kLowerLegs), b) != std::end(kLowerLegs)) {
@@ -562,8 +589,10 @@ SceneDescription jointGrid(int n) {
       circle.filter.mask = ~2u;
       const int body = addBody(scene, s2Body(circle, {double(k), double(-i)}, 0.6, 1, fixed(k, i)));
       // Pins between two fixed circles hold nothing.
-      if (i > 0 && !(fixed(k, i) && fixed(k, i - 1))) addJoint(scene, makePin(body - 1, body, {double(k), -i + 0.5}));
-      if (k > 0 && !(fixed(k, i) && fixed(k - 1, i))) addJoint(scene, makePin(body - n, body, {k - 0.5, double(-i)}));
+      if (i > 0 && !(fixed(k, i) && fixed(k, i - 1)))
+        addJoint(scene, makePin(body - 1, body, {double(k), -i + 0.5}));
+      if (k > 0 && !(fixed(k, i) && fixed(k - 1, i)))
+        addJoint(scene, makePin(body - n, body, {k - 0.5, double(-i)}));
     }
   }
   return scene;
@@ -596,9 +625,11 @@ SceneDescription stretchedChain() {
 /// from the top pin, and the fastest circle after the first second.
 class StretchedChainWatch final : public Measure {
  public:
-  explicit StretchedChainWatch(const SceneDescription& scene) : probe_(scene), circles_(dynamicBodies(scene)) {}
+  explicit StretchedChainWatch(const SceneDescription& scene)
+      : probe_(scene), circles_(dynamicBodies(scene)) {}
   void observe(const EngineAdapter& engine, int step) override {
-    for (int i : circles_) reach_ = std::max(reach_, distance(engine.pose(i).position, kStretchedTop));
+    for (int i : circles_)
+      reach_ = std::max(reach_, distance(engine.pose(i).position, kStretchedTop));
     if ((step + 1) * kDt < 1 - 1e-9) return;
     gap_ = std::max(gap_, probe_.worstPinGap(engine));
     speed_ = std::max(speed_, fastest(engine, circles_));
@@ -632,8 +663,10 @@ void addScene(SceneList& scenes, bool quick, const std::string& name, SceneDescr
 void addSolver2DScenes(SceneList& scenes, bool quick) {
   addScene<RestWatch<singleBoxRest>>(scenes, quick, "single-box", singleBox, 2);
   addScene<RestWatch<highMassRatio1Rest>>(scenes, quick, "high-mass-ratio-1", highMassRatio1, 5);
-  addScene<HighMassRatioWatch>(scenes, quick, "high-mass-ratio-2", [] { return highMassRatio(false); }, 5);
-  addScene<HighMassRatioWatch>(scenes, quick, "high-mass-ratio-3", [] { return highMassRatio(true); }, 5);
+  addScene<HighMassRatioWatch>(
+      scenes, quick, "high-mass-ratio-2", [] { return highMassRatio(false); }, 5);
+  addScene<HighMassRatioWatch>(
+      scenes, quick, "high-mass-ratio-3", [] { return highMassRatio(true); }, 5);
   addScene<RestWatch<verticalStackRest>>(scenes, quick, "vertical-stack", verticalStack, 5);
   addScene<SlipWatch>(scenes, quick, "arch", arch, 10);
   addScene<DominoWatch>(scenes, quick, "double-domino", doubleDomino, 10);
@@ -643,12 +676,15 @@ void addSolver2DScenes(SceneList& scenes, bool quick) {
   addScene<HoldWatch>(scenes, quick, "ball-and-chain", ballAndChain, 5);
   addScene<HoldWatch>(scenes, quick, "ragdoll", ragdoll, 3);
   // Solver2D's release size, and a 30 x 30 grid small enough for a test.
-  addScene<HoldWatch>(scenes, quick, "joint-grid", [] { return jointGrid(100); }, 2, {}, 1);
-  addScene<HoldWatch>(scenes, quick, "joint-grid-30", [] { return jointGrid(30); }, 2);
+  addScene<HoldWatch>(
+      scenes, quick, "joint-grid", [] { return jointGrid(100); }, 2, {}, 1);
+  addScene<HoldWatch>(
+      scenes, quick, "joint-grid-30", [] { return jointGrid(30); }, 2);
   addScene<StretchedChainWatch>(scenes, quick, "stretched-chain", stretchedChain, 2);
   // The far scenes and their near twins, 40-100 km out as in Solver2D.
   addScene<RestWatch<loosePyramidRest>>(scenes, quick, "loose-pyramid", loosePyramid, 5);
-  addScene<RestWatch<loosePyramidRest>>(scenes, quick, "far-pyramid", loosePyramid, 5, {100000, -80000});
+  addScene<RestWatch<loosePyramidRest>>(scenes, quick, "far-pyramid", loosePyramid, 5,
+                                        {100000, -80000});
   addScene<SlipWatch>(scenes, quick, "stack", smallStack, 5);
   addScene<SlipWatch>(scenes, quick, "far-stack", smallStack, 5, {40000, -25000});
   addScene<OverlapWatch>(scenes, quick, "overlap-recovery", overlapRecovery, 5);

@@ -25,11 +25,15 @@ WorldSettings solver2DSettings(Vec2 gravity) {
 
 /// Solver2D's coefficients: one friction, no restitution, no rolling resistance.
 MaterialOverride solver2DMaterial(Real density, Real friction) {
-  return {.density = density, .restitution = 0, .staticFriction = friction, .dynamicFriction = friction,
+  return {.density = density,
+          .restitution = 0,
+          .staticFriction = friction,
+          .dynamicFriction = friction,
           .rollingResistance = 0};
 }
 
-BodyId addSolver2DCircle(World& world, Vec2 center, Real radius, Real density, Real friction, bool isStatic = false) {
+BodyId addSolver2DCircle(World& world, Vec2 center, Real radius, Real density, Real friction,
+                         bool isStatic = false) {
   BodyDef def;
   def.shape = Shape::makeCircle(radius);
   def.position = center;
@@ -50,11 +54,14 @@ Real speedOf(const World& world, BodyId id) { return stateOf(world, id).linearVe
 // below: the fastest of them stays under 0.5 m/s over the next 2 s.
 TEST(Solver2D, WarmStartEnergy_RemovingTheHeavyCircleLaunchesNothing) {
   World world(solver2DSettings(Vec2(0, -10)));
-  ASSERT_TRUE(world.createSegment(Vec2(-10, 0), Vec2(10, 0),
-                                  {.isStatic = true, .materialOverride = solver2DMaterial(1, Real(0.6))})
-                  .ok());
-  const std::vector<BodyId> light = {addSolver2DCircle(world, Vec2(0, Real(0.5)), Real(0.5), 1, Real(0.6)),
-                                     addSolver2DCircle(world, Vec2(0, Real(1.5)), Real(0.5), 1, Real(0.6))};
+  ASSERT_TRUE(
+      world
+          .createSegment(Vec2(-10, 0), Vec2(10, 0),
+                         {.isStatic = true, .materialOverride = solver2DMaterial(1, Real(0.6))})
+          .ok());
+  const std::vector<BodyId> light = {
+      addSolver2DCircle(world, Vec2(0, Real(0.5)), Real(0.5), 1, Real(0.6)),
+      addSolver2DCircle(world, Vec2(0, Real(1.5)), Real(0.5), 1, Real(0.6))};
   const BodyId heavy = addSolver2DCircle(world, Vec2(0, Real(2.5)), Real(0.5), 100, Real(0.6));
   for (int step = 0; step < 120; ++step) world.step(kDt);
   ASSERT_TRUE(world.destroyBody(heavy));
@@ -105,7 +112,8 @@ TEST(Solver2D, Rush_GainsNoEnergy) {
       const BodyState s = stateOf(world, id);
       const double mass = world.bodyDescription(id)->mass.mass;
       const double inertia = world.bodyDescription(id)->mass.inertia;
-      total += 0.5 * mass * s.linearVelocity.squaredNorm() + 0.5 * inertia * s.angularVelocity * s.angularVelocity +
+      total += 0.5 * mass * s.linearVelocity.squaredNorm() +
+               0.5 * inertia * s.angularVelocity * s.angularVelocity +
                kRushForce * s.position.norm();
     }
     return total;
@@ -124,8 +132,8 @@ TEST(Solver2D, Rush_GainsNoEnergy) {
   }
   Real fastest = 0;
   for (BodyId id : circles) fastest = std::max(fastest, speedOf(world, id));
-  std::printf("measured: rush worst gain %.4g J of %.4g J (%.3g %%), fastest at 4 s %.3g m/s\n", worstGain, start,
-              100 * worstGain / start, double(fastest));
+  std::printf("measured: rush worst gain %.4g J of %.4g J (%.3g %%), fastest at 4 s %.3g m/s\n",
+              worstGain, start, 100 * worstGain / start, double(fastest));
   EXPECT_LT(worstGain, 0.01 * start);
   EXPECT_LT(fastest, Real(1));
 }
