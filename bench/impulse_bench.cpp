@@ -3,11 +3,12 @@
 // per scene, ratio and front lines, and optionally a CSV file and an SVG plot
 // per scene.
 //
-//   impulse-bench [--quick] [--v3-suite | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
+//   impulse-bench [--quick] [--v3-suite | --solver2d | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]]
 //                 [--engine NAME[,NAME...]] [--iterations N] [--threads N]
 //
 // --v3-suite runs Box2D v3's benchmark suite (the v3-* scenes) instead of
-// Impulse's own scenes. --queries runs the query bench instead (ray casts
+// Impulse's own scenes; --solver2d runs Solver2D's scene collection (the
+// s2d-* scenes) instead. --queries runs the query bench instead (ray casts
 // and box overlaps on one 10 000-body world, query_bench.h).
 // --scene, --engine and --iterations narrow the run (for profiling one engine
 // on one scene, or one side-by-side at one setting); --scene takes name parts
@@ -35,6 +36,7 @@ namespace {
 struct Options {
   bool quick = false;
   bool v3Suite = false;
+  bool solver2D = false;
   bool queries = false;
   std::string csv;
   std::string plotDirectory;
@@ -46,7 +48,7 @@ struct Options {
 
 [[noreturn]] void usage(const char* program) {
   std::fprintf(stderr,
-               "usage: %s [--quick] [--v3-suite | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
+               "usage: %s [--quick] [--v3-suite | --solver2d | --queries] [--csv FILE] [--plot DIR] [--scene NAME-PART[,NAME-PART...]] "
                "[--engine NAME[,NAME...]] [--iterations N] [--threads N]\n",
                program);
   std::exit(2);
@@ -61,6 +63,7 @@ Options parse(int argc, char** argv) {
     };
     if (std::strcmp(argv[i], "--quick") == 0) options.quick = true;
     else if (std::strcmp(argv[i], "--v3-suite") == 0) options.v3Suite = true;
+    else if (std::strcmp(argv[i], "--solver2d") == 0) options.solver2D = true;
     else if (std::strcmp(argv[i], "--queries") == 0) options.queries = true;
     else if (std::strcmp(argv[i], "--csv") == 0) options.csv = value();
     else if (std::strcmp(argv[i], "--plot") == 0) options.plotDirectory = value();
@@ -111,8 +114,8 @@ int main(int argc, char** argv) {
   std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  std::printf("impulse-bench%s%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "", options.v3Suite ? " --v3-suite" : "",
-              date, cpuModel().c_str());
+  std::printf("impulse-bench%s%s%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "",
+              options.v3Suite ? " --v3-suite" : "", options.solver2D ? " --solver2d" : "", date, cpuModel().c_str());
   if (options.queries) {
     const int disagreements = bench::runQueryBench(stdout, {options.quick, options.engineFilter});
     // Round-off may split a grazing ray; the bench reports, it does not judge.
@@ -123,7 +126,9 @@ int main(int argc, char** argv) {
 
   std::vector<bench::RunResult> all;
   int failures = 0;
-  const bench::SceneList scenes = options.v3Suite ? bench::box2DSuiteScenes(options.quick) : bench::allScenes(options.quick);
+  const bench::SceneList scenes = options.v3Suite    ? bench::box2DSuiteScenes(options.quick)
+                                  : options.solver2D ? bench::solver2DScenes(options.quick)
+                                                     : bench::allScenes(options.quick);
   for (const auto& scene : scenes) {
     if (!sceneWanted(scene->name(), options.sceneFilter)) continue;
     const bench::SceneDescription description = scene->describe();

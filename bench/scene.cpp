@@ -20,4 +20,10 @@ SceneList box2DSuiteScenes(bool quick) {
   return scenes;
 }
 
+SceneList solver2DScenes(bool quick) {
+  SceneList scenes;
+  addSolver2DScenes(scenes, quick);
+  return scenes;
+}
+
 }  // namespace bench

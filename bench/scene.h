@@ -59,11 +59,16 @@ void addClosedFormScenes(SceneList& scenes, bool quick);  // free fall, incline,
 void addSleepingScenes(SceneList& scenes, bool quick);
 void addJointScenes(SceneList& scenes, bool quick);  // chains, bridge, pendulum, spring, ragdolls
 void addBox2DSuiteScenes(SceneList& scenes, bool quick);  // the ten of Box2D v3's benchmark, "v3-*"
+void addSolver2DScenes(SceneList& scenes, bool quick);    // Solver2D's collection and its far twins, "s2d-*"
 
-/// Impulse's own scenes (every family above but the Box2D v3 suite).
+/// Impulse's own scenes (every family above but the Box2D v3 suite and
+/// Solver2D's collection).
 SceneList allScenes(bool quick);
 /// Box2D v3's benchmark suite: run apart, as it is large (10 000-22 000
 /// bodies a scene at full size).
 SceneList box2DSuiteScenes(bool quick);
+/// Solver2D's scene collection (bench/scenes/solver2d.cpp): run apart, as
+/// its scenes are judged by their figures more than timed.
+SceneList solver2DScenes(bool quick);
 
 }  // namespace bench

@@ -208,6 +208,8 @@ class Box2DAdapter final : public EngineAdapter {
     if (joint.kind == JointKind::Pin) {
       b2RevoluteJointDef def;
       def.Initialize(a, b, anchorA);
+      // A pin may be built open (Solver2D's stretched chain).
+      def.localAnchorB = b->GetLocalPoint(anchorB);
       def.enableLimit = joint.enableLimit;
       def.lowerAngle = float(joint.lowerAngle);
       def.upperAngle = float(joint.upperAngle);

@@ -47,11 +47,12 @@ float meanOf(float a, uint64_t, float b, uint64_t) { return 0.5f * (a + b); }
 b2Vec2 toVec(const Vec2d& v) { return b2Vec2{float(v.x), float(v.y)}; }
 
 b2Polygon toPolygon(const ShapeDesc& shape) {
-  if (shape.vertices.size() > B2_MAX_POLYGON_VERTICES) throw std::runtime_error("box2d v3: too many vertices");
+  // Polygons v3 refuses: scenes it cannot express, reported as skipped.
+  if (shape.vertices.size() > B2_MAX_POLYGON_VERTICES) throw Unsupported("box2d v3: too many vertices");
   b2Vec2 points[B2_MAX_POLYGON_VERTICES];
   for (std::size_t i = 0; i < shape.vertices.size(); ++i) points[i] = toVec(shape.vertices[i]);
   b2Hull hull = b2ComputeHull(points, static_cast<int>(shape.vertices.size()));
-  if (hull.count == 0) throw std::runtime_error("box2d v3: polygon is not a convex hull");
+  if (hull.count == 0) throw Unsupported("box2d v3: polygon is not a convex hull");
   return b2MakePolygon(&hull, float(shape.radius));
 }
 

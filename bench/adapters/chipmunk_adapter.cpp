@@ -208,7 +208,8 @@ class ChipmunkAdapter final : public EngineAdapter {
     switch (joint.kind) {
       case JointKind::Pin:
         if (joint.enableMotor) addMotor(a, b, joint);
-        constraint = cpPivotJointNew(a, b, toCp(joint.anchorA));
+        // Local anchors: a pin may be built open (Solver2D's stretched chain).
+        constraint = cpPivotJointNew2(a, b, localA, localB);
         break;
       case JointKind::Rod:
         constraint = cpPinJointNew(a, b, localA, localB);

@@ -40,8 +40,10 @@ impulse::Shape toPolygon(const ShapeDesc& shape, const impulse::ShapeLimits& lim
   std::vector<Vec2> points;
   for (const Vec2d& v : shape.vertices) points.push_back(toVec(v));
   impulse::PolygonBuild build = impulse::buildPolygon(points, limits);
+  // A polygon Impulse refuses (Solver2D's 2 mm cards): the scene is one it
+  // cannot express, reported as skipped with the reason.
   if (build.error != impulse::ShapeError::None) {
-    throw std::runtime_error("impulse: " + std::string(impulse::describe(build.error)));
+    throw Unsupported("impulse: " + std::string(impulse::describe(build.error)));
   }
   build.polygon.radius = Real(shape.radius);
   // buildPolygon centres the polygon on its centroid: put it back where the
@@ -85,6 +87,8 @@ impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, 
     include(joint.anchorB, 1);
   }
   settings.shapeLimits.maxArea = Real(1e5);
+  // Solver2D's card house has cards of 8 cm^2.
+  settings.shapeLimits.minArea = Real(1e-4);
   settings.shapeLimits.maxRadius = Real(1e3);
   settings.maxBodies = std::max<int>(settings.maxBodies, static_cast<int>(scene.bodies.size()));
   return settings;

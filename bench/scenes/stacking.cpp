@@ -160,27 +160,6 @@ SceneDescription overlappingPyramid() {
   return scene;
 }
 
-class OverlapWatch final : public Measure {
- public:
-  explicit OverlapWatch(const SceneDescription& scene) : bodies_(dynamicBodies(scene)), penetration_(scene) {}
-  void observe(const EngineAdapter& engine, int step) override {
-    // Separated: no overlap beyond twice the 5 mm slop all engines use.
-    if (penetration_.observe(engine) > 0.01) separatedAt_ = -1;
-    else if (separatedAt_ < 0) separatedAt_ = (step + 1) * kDt;
-    maxSpeed_ = std::max(maxSpeed_, fastest(engine, bodies_));
-  }
-  // Max speed first: the figure (push-out must not throw boxes).
-  std::vector<Metric> results(const EngineAdapter&) override {
-    return {{"max speed m/s", maxSpeed_}, {"separate s", separatedAt_ < 0 ? 99.0 : separatedAt_}};
-  }
-
- private:
-  std::vector<int> bodies_;
-  PeakPenetration penetration_;
-  double separatedAt_ = -1;
-  double maxSpeed_ = 0;
-};
-
 }  // namespace
 
 void addStackingScenes(SceneList& scenes, bool quick) {

@@ -1,0 +1,244 @@
+// Solver2D's scene collection (bench/scenes/solver2d.cpp) in Impulse at its
+// default 4 sub-steps: each scene's figure against its stated tolerance, for
+// the run the bench makes of it (impulse-bench --solver2d prints the same
+// figures beside the peers'). Every test prints what it measured
+// ("measured:").
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "scene.h"
+
+namespace bench {
+namespace {
+
+struct Figures {
+  std::vector<Metric> metrics;
+
+  double operator[](const std::string& name) const {
+    for (const Metric& metric : metrics) {
+      if (metric.name == name) return metric.value;
+    }
+    ADD_FAILURE() << "no figure named " << name;
+    return std::nan("");
+  }
+};
+
+/// The scene run in Impulse for its bench length, observed every step.
+Figures runInImpulse(const std::string& name) {
+  for (const auto& scene : solver2DScenes(false)) {
+    if (scene->name() != name) continue;
+    const SceneDescription description = scene->describe();
+    std::unique_ptr<EngineAdapter> engine = makeImpulseAdapter(description, 4);
+    std::unique_ptr<Measure> measure = scene->measure(description, Engine::Impulse);
+    for (int step = 0; step < scene->length().steps; ++step) {
+      engine->step(kDt);
+      measure->observe(*engine, step);
+    }
+    Figures figures{measure->results(*engine)};
+    std::printf("measured: %s", name.c_str());
+    for (const Metric& metric : figures.metrics)
+      std::printf("  %s %.4g", metric.name.c_str(), metric.value);
+    std::printf("\n");
+    return figures;
+  }
+  ADD_FAILURE() << "no scene named " << name;
+  return {};
+}
+
+// ---- contact scenes --------------------------------------------------------
+
+// A 2 m box dropped 3 m flat onto a segment rests straight below (within
+// 2 cm; it drifts about 1 cm sideways as it lands) and still.
+TEST(Solver2D, SingleBox_RestsStraightBelowWithinTwoCentimetres) {
+  const Figures figures = runInImpulse("s2d-single-box");
+  EXPECT_LT(figures["rest err m"], 0.02);
+  EXPECT_LT(figures["end speed m/s"], 0.01);
+}
+
+// Stands: every box of the three pyramids within 5 cm of its place after
+// 5 s, the tops of 100, 200 and 300 times the density 2 m lower.
+TEST(Solver2D, HighMassRatio1_EveryBoxWithinFiveCentimetresOfItsPlace) {
+  EXPECT_LT(runInImpulse("s2d-high-mass-ratio-1")["rest err m"], 0.05);
+}
+
+// Stands: the big box, dropped 15 m onto two small ones 400 times lighter,
+// sinks under 5 cm below resting on them, stays level (under 1 degree) and
+// both small boxes stay wholly under it (they slide under 0.5 m).
+void expectBigBoxStands(const Figures& figures) {
+  EXPECT_LT(std::abs(figures["sink m"]), 0.05);
+  EXPECT_LT(figures["tilt rad"], 0.0175);
+  EXPECT_LT(figures["support slide m"], 0.5);
+}
+
+TEST(Solver2D, HighMassRatio2_BigBoxStandsOnTwoSmallOnes) {
+  expectBigBoxStands(runInImpulse("s2d-high-mass-ratio-2"));
+}
+
+TEST(Solver2D, HighMassRatio3_BigBoxStandsOnTwoSmallOnes_OnThickGround) {
+  expectBigBoxStands(runInImpulse("s2d-high-mass-ratio-3"));
+}
+
+// 15 boxes dropped 10 cm onto each other, alternately 1 cm left and right:
+// every box within 5 cm of straight below its start after 5 s, and still.
+// DISABLED: the column walks sideways: worst box 16.9 cm off, the top ones
+// still moving at 7.7 cm/s at 5 s (Box2D v3 at 4 sub-steps: 8.0 cm).
+TEST(Solver2D, DISABLED_VerticalStack_EveryBoxWithinFiveCentimetresOfStraightBelow) {
+  const Figures figures = runInImpulse("s2d-vertical-stack");
+  EXPECT_LT(figures["rest err m"], 0.05);
+  EXPECT_LT(figures["end speed m/s"], 0.01);
+}
+
+// 17 stones without mortar and four slabs on top stand 10 s: no piece
+// slips more than 1 cm.
+// DISABLED: the stones slide apart from the first second and the arch is
+// down by 10 s (worst piece 9.9 m; Box2D v3 at 4 sub-steps: 0.31 m).
+TEST(Solver2D, DISABLED_Arch_StandsTenSeconds_NoPieceSlipsOverOneCentimetre) {
+  EXPECT_LT(runInImpulse("s2d-arch")["max slip m"], 0.01);
+}
+
+// The 15 dominoes all fall (past 30 degrees) within 10 s, each after the
+// one before it.
+TEST(Solver2D, DoubleDomino_AllFall_InOrder) {
+  const Figures figures = runInImpulse("s2d-double-domino");
+  EXPECT_EQ(figures["standing"], 0);
+  EXPECT_EQ(figures["in order"], 1);
+}
+
+// Five storeys of 2 mm cards stand 10 s: no card slips more than 1 cm.
+// DISABLED: Impulse refuses the card ("polygon has duplicate points (closer
+// than 2.5 mm)"); Box2D v3 refuses it as well, Box2D 2.4.1 holds it.
+TEST(Solver2D, DISABLED_CardHouse_StandsTenSeconds_NoCardSlipsOverOneCentimetre) {
+  EXPECT_LT(runInImpulse("s2d-card-house")["max slip m"], 0.01);
+}
+
+// Ten 1 m circles dropped onto each other stand in a column: each within
+// 5 cm of straight below its start after 5 s, and still.
+TEST(Solver2D, CircleStack_StandsInAColumnWithinFiveCentimetres) {
+  const Figures figures = runInImpulse("s2d-circle-stack");
+  EXPECT_LT(figures["rest err m"], 0.05);
+  EXPECT_LT(figures["end speed m/s"], 0.01);
+}
+
+// ---- joint scenes ----------------------------------------------------------
+
+// The 160 m bridge holds: no pin opens more than 10 cm (a tenth of a plank)
+// at any step, and no plank sags more than 5 m (3 % of the span) at 5 s.
+TEST(Solver2D, Bridge_Holds_PinsUnderTenCentimetres_SagUnderFiveMetres) {
+  const Figures figures = runInImpulse("s2d-bridge");
+  EXPECT_LT(figures["pin gap m"], 0.1);
+  EXPECT_LT(figures["max drop m"], 5);
+}
+
+// 40 links swinging an 8 m ball of about 670 links' mass: no pin opens more
+// than 1 cm.
+TEST(Solver2D, BallAndChain_NoPinOpensOverOneCentimetre) {
+  EXPECT_LT(runInImpulse("s2d-ball-and-chain")["pin gap m"], 0.01);
+}
+
+// A ragdoll dropped from 4 m lies still after 3 s with every pin shut
+// (under 1 cm).
+TEST(Solver2D, Ragdoll_LiesStillWithPinsShut) {
+  const Figures figures = runInImpulse("s2d-ragdoll");
+  EXPECT_LT(figures["end gap m"], 0.01);
+  EXPECT_LT(figures["end speed m/s"], 0.05);
+}
+
+// A 30 x 30 grid of pinned circles hung from seven of its top row under
+// twice gravity holds: no pin opens more than 10 cm (a tenth of the pitch).
+// DISABLED: the grid's pins open 11.8 cm at worst and are still 10.9 cm
+// open at 2 s (a grid has loops: no exact tree pass for it).
+TEST(Solver2D, DISABLED_JointGrid_Holds_NoPinOpensOverTenCentimetres) {
+  EXPECT_LT(runInImpulse("s2d-joint-grid-30")["pin gap m"], 0.1);
+}
+
+// 40 pins built 1 m open pull shut within 1 s (under 1 cm from then on),
+// without flying apart: no circle gets farther from the top pin than the
+// lowest started (79.5 m), nor faster after 1 s than a fall from the top
+// pin to there (sqrt(2 g 79.5 m) = 39.9 m/s).
+TEST(Solver2D, StretchedChain_PullsTogetherWithinOneSecond_WithoutFlyingApart) {
+  const Figures figures = runInImpulse("s2d-stretched-chain");
+  EXPECT_LT(figures["gap after 1 s m"], 0.01);
+  EXPECT_LE(figures["max reach m"], 79.5);
+  EXPECT_LT(figures["speed after 1 s m/s"], std::sqrt(2 * 10 * 79.5));
+}
+
+// ---- the far scenes' near twins --------------------------------------------
+
+// Ten rows of boxes built 25 cm apart fall into a pyramid: every box within
+// 25 cm (half its overlap on each box under it) of straight below its start.
+TEST(Solver2D, LoosePyramid_FallsIntoPlaceWithinTwentyFiveCentimetres) {
+  EXPECT_LT(runInImpulse("s2d-loose-pyramid")["rest err m"], 0.25);
+}
+
+// A plank on a small circle and a small box, two squares on it: it comes to
+// rest within 5 s (fastest body under 2 cm/s).
+TEST(Solver2D, Stack_ComesToRest) { EXPECT_LT(runInImpulse("s2d-stack")["end speed m/s"], 0.02); }
+
+// Boxes built a quarter inside each other push out without launching: no
+// overlap deeper than 1 cm after 2 s, no box faster than 0.1 m/s.
+TEST(Solver2D, OverlapRecovery_ResolvedWithinTwoSeconds_WithoutLaunching) {
+  const Figures figures = runInImpulse("s2d-overlap-recovery");
+  EXPECT_LT(figures["separate s"], 2);
+  EXPECT_LT(figures["max speed m/s"], 0.1);
+}
+
+// Six ragdolls heaped into a V lie still after 3 s with every pin shut.
+TEST(Solver2D, RagdollPile_LiesStillWithPinsShut) {
+  const Figures figures = runInImpulse("s2d-ragdoll-pile");
+  EXPECT_LT(figures["end gap m"], 0.01);
+  EXPECT_LT(figures["end speed m/s"], 0.05);
+}
+
+// 40 links of 20 cm swinging from a pin: no pin opens more than 2 cm (a
+// tenth of a link).
+TEST(Solver2D, Chain_NoPinOpensOverTwoCentimetres) {
+  EXPECT_LT(runInImpulse("s2d-chain")["pin gap m"], 0.02);
+}
+
+// ---- far from the origin ---------------------------------------------------
+
+// Every figure of a far scene within 10 % of its near twin's, or within
+// 5 mm (5 mm/s, 5 ms) where 10 % is less: positions 40-100 km out are
+// floats of 4-8 mm resolution. Every far test fails today (each comment
+// gives far against near).
+void expectSameFiguresAsNear(const std::string& far, const std::string& near) {
+  const Figures farFigures = runInImpulse(far), nearFigures = runInImpulse(near);
+  for (const Metric& metric : nearFigures.metrics) {
+    EXPECT_NEAR(farFigures[metric.name], metric.value,
+                std::max(0.1 * std::abs(metric.value), 0.005))
+        << far << " " << metric.name;
+  }
+}
+
+// DISABLED: rest err 0.135 m far against 0.226 m near; end speed 0.041
+// against 0.023 m/s.
+TEST(Solver2D, DISABLED_FarPyramid_SameFiguresAsNear) {
+  expectSameFiguresAsNear("s2d-far-pyramid", "s2d-loose-pyramid");
+}
+// DISABLED: end speed 0.0061 against 0.0127 m/s (max slip 0.370 against
+// 0.382 m holds).
+TEST(Solver2D, DISABLED_FarStack_SameFiguresAsNear) {
+  expectSameFiguresAsNear("s2d-far-stack", "s2d-stack");
+}
+// DISABLED: the overlaps never get under 1 cm far (separate 99 s, that is
+// never, against 1.48 s near); max speed 0.035 against 0.032 m/s holds.
+TEST(Solver2D, DISABLED_FarRecovery_SameFiguresAsNear) {
+  expectSameFiguresAsNear("s2d-far-recovery", "s2d-overlap-recovery");
+}
+// DISABLED: pin gap 0.051 against 0.071 m, end gap 0.0104 against 2e-7 m,
+// end speed 0.124 against 0.0013 m/s: far, the pile never settles.
+TEST(Solver2D, DISABLED_FarRagdollPile_SameFiguresAsNear) {
+  expectSameFiguresAsNear("s2d-far-ragdoll-pile", "s2d-ragdoll-pile");
+}
+// DISABLED: end gap 0.0060 against 0.00007 m (pin gap 0.0140 against
+// 0.0164 m and end speed 5.78 against 5.68 m/s hold).
+TEST(Solver2D, DISABLED_FarChain_SameFiguresAsNear) {
+  expectSameFiguresAsNear("s2d-far-chain", "s2d-chain");
+}
+
+}  // namespace
+}  // namespace bench
