@@ -28,9 +28,10 @@ std::string modeName(DrawMode mode) {
     case DrawMode::Capsule: return "capsule (R to finish, - = radius, Esc cancels)";
     case DrawMode::Segment: return "segment (L to finish, Esc cancels)";
     case DrawMode::Chain: return "chain (H to finish, Shift+H to close, Esc cancels)";
+    case DrawMode::Ray: return "ray (drag it; E or Esc leaves)";
     case DrawMode::None: break;
   }
-  return "none (P polygon, O circle, R capsule, L segment, H chain)";
+  return "none (P polygon, O circle, R capsule, L segment, H chain, E ray)";
 }
 
 ImVec4 linkColour(LinkState link) {
@@ -130,6 +131,9 @@ void drawLegend(const Controls& controls, const std::function<void(ControlKey)>&
   ImGui::TextUnformatted("kinematic (striped)");
   swatch(bodyFill(Material::Solid, false), palette::kSleep, 2.5f);
   ImGui::TextUnformatted("asleep (violet outline)");
+  const SurfaceLook sensor = surfaceLook(Material::Solid, true, false, true);
+  swatch(sensor.fill, sensor.outline, 1.0f);
+  ImGui::TextUnformatted("sensor (see-through, dashed)");
   swatch(palette::kSceneBackground, palette::kSelection, 2.5f);
   ImGui::TextUnformatted("selected or grabbed");
 }
@@ -182,11 +186,31 @@ void drawGravityDial(const Vec2& gravity) {
   ImGui::EndGroup();
 }
 
-void drawOverlayToggles(Controls& controls) {
+void drawRayAnswer(const Controls& controls) {
+  if (controls.mode() != DrawMode::Ray) return;
+  const auto& answer = controls.rayTool().answer();
+  if (!answer) {
+    ImGui::TextWrapped("Ray (E): drag across the scene");
+    return;
+  }
+  ImGui::TextWrapped("Ray (E): %s", describeRay(*answer).c_str());
+  if (!answer->hit) return;
+  const RayHit& hit = *answer->hit;
+  ImGui::TextWrapped("  point (%s, %s) m, normal (%s, %s)", formatNumber(hit.point.x(), 3).c_str(),
+                     formatNumber(hit.point.y(), 3).c_str(), formatNumber(hit.normal.x(), 3).c_str(),
+                     formatNumber(hit.normal.y(), 3).c_str());
+}
+
+void drawOverlayToggles(Controls& controls, const PanelInput& input) {
   Overlays& overlays = controls.overlays();
   ImGui::Checkbox("contacts and normals (K)", &overlays.contacts);
   ImGui::Checkbox("bounding boxes (B)", &overlays.bounds);
   ImGui::Checkbox("velocities (V)", &overlays.velocities);
+  ImGui::Checkbox("flash hits, contacts, sensors (N)", &overlays.eventFlashes);
+  if (overlays.eventFlashes) {
+    ImGui::TextDisabled("  events received: %llu", static_cast<unsigned long long>(input.eventMessages));
+  }
+  drawRayAnswer(controls);
 }
 
 void drawControlsSection(Controls& controls, const std::function<void(ControlKey)>& act) {
@@ -234,7 +258,7 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
     drawStatsSection(input);
   }
   if (ImGui::CollapsingHeader("Debug overlays", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawOverlayToggles(controls);
+    drawOverlayToggles(controls, input);
   }
   if (ImGui::CollapsingHeader("Next shape and materials", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawNextShape(controls, act);

@@ -52,6 +52,8 @@ struct PanelInput {
   const v1::ServerStats* stats = nullptr;
   const History* stepMs = nullptr;
   const History* kineticEnergy = nullptr;
+  /// Events messages received while the flashes are on.
+  std::uint64_t eventMessages = 0;
   std::optional<std::string> notice;
 };
 
