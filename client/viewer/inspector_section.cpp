@@ -129,11 +129,6 @@ void drawBodyTable(const v1::BodyInfo& info) {
   row("damping", "linear " + formatNumber(info.linear_damping(), 3) + ", angular " +
                      formatNumber(info.angular_damping(), 3) + " 1/s");
   row("gravity scale", formatNumber(info.gravity_scale(), 3));
-  // A body made over the wire gives every shape the first one's flags.
-  const ShapeInteraction flags = wire::shapeFlagsFromWire(d.shape_flags());
-  row("shape ids", describeShapeIds(d));
-  row("filter", describeFilter(flags.filter));
-  row("flags", describeFlags(flags));
   ImGui::EndTable();
 }
 
@@ -217,11 +212,20 @@ void drawMaterialAndType(const v1::BodyInfo& info, const PanelActions& actions, 
   }
 }
 
-// The sensor and event flags as check boxes: a click sends the body's flags
-// with that one changed (SetShapeFlags, every shape of the body).
-void drawFlagsEditor(const v1::BodyInfo& info, const PanelActions& actions) {
-  const std::uint32_t id = info.descriptor().id();
-  const ShapeInteraction current = wire::shapeFlagsFromWire(info.descriptor().shape_flags());
+// The shapes' ids, filter and flags, then the flags as check boxes: a click
+// sends the body's flags with that one changed (SetShapeFlags, every shape
+// of the body). Last in the inspector: set less often than the rest.
+void drawFilterAndFlags(const v1::BodyInfo& info, const PanelActions& actions, PanelState& state) {
+  const auto& d = info.descriptor();
+  const std::uint32_t id = d.id();
+  // A body made over the wire gives every shape the first one's flags.
+  const ShapeInteraction current = wire::shapeFlagsFromWire(d.shape_flags());
+  if (ImGui::BeginTable("filter", 2, ImGuiTableFlags_SizingStretchProp)) {
+    row("shape ids", describeShapeIds(d));
+    row("filter", describeFilter(current.filter));
+    row("flags", describeFlags(current));
+    ImGui::EndTable();
+  }
   const std::array<std::pair<const char*, bool ShapeInteraction::*>, 4> kFlags{{
       {"sensor", &ShapeInteraction::isSensor},
       {"sensor events", &ShapeInteraction::enableSensorEvents},
@@ -234,6 +238,7 @@ void drawFlagsEditor(const v1::BodyInfo& info, const PanelActions& actions) {
     ShapeInteraction wanted = current;
     if (i > 0) sameLineIfFits(ImGui::CalcTextSize(label).x + ImGui::GetFrameHeight() * 1.5f);
     if (ImGui::Checkbox(label, &(wanted.*member))) actions.send(client::setShapeFlags(id, wanted), "shape flags");
+    if (ImGui::IsItemVisible()) state.flagBoxes[i] = lastItemRect();
   }
 }
 
@@ -253,8 +258,8 @@ void drawInspectorSection(const Controls& controls, const PanelInput& input,
   drawPoseEditor(*input.inspected, actions, state);
   if (!input.inspected->descriptor().is_static()) drawVelocityEditor(*input.inspected, actions, state);
   drawMaterialAndType(*input.inspected, actions, state);
-  drawFlagsEditor(*input.inspected, actions);
   ImGui::TextDisabled("arrows push it, Delete removes it");
+  drawFilterAndFlags(*input.inspected, actions, state);
 }
 
 }  // namespace impulse::viewer

@@ -81,8 +81,23 @@ void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& ac
   drawTimeScale(input, act);
 }
 
+void drawRayAnswer(const Controls& controls) {
+  if (controls.mode() != DrawMode::Ray) return;
+  const auto& answer = controls.rayTool().answer();
+  if (!answer) {
+    ImGui::TextWrapped("Ray (E): drag across the scene");
+    return;
+  }
+  ImGui::TextWrapped("Ray (E): %s", describeRay(*answer).c_str());
+  if (!answer->hit) return;
+  const RayHit& hit = *answer->hit;
+  ImGui::TextWrapped("  point (%s, %s) m, normal (%s, %s)", formatNumber(hit.point.x(), 3).c_str(),
+                     formatNumber(hit.point.y(), 3).c_str(), formatNumber(hit.normal.x(), 3).c_str(),
+                     formatNumber(hit.normal.y(), 3).c_str());
+}
+
 // The part of the panel that never scrolls: what is shown, where, and when.
-void drawHeader(const PanelFonts& fonts, const PanelInput& input,
+void drawHeader(const PanelFonts& fonts, const Controls& controls, const PanelInput& input,
                 const std::function<void(ControlKey)>& act) {
   ImGui::PushFont(fonts.title);
   ImGui::TextWrapped("%s", input.preset != nullptr ? input.preset->title.c_str() : "Impulse");
@@ -96,6 +111,8 @@ void drawHeader(const PanelFonts& fonts, const PanelInput& input,
     ImGui::TextWrapped("%s", input.notice->c_str());
     ImGui::PopStyleColor();
   }
+  // What the ray tool's ray hit stays in sight while the tool is in use.
+  drawRayAnswer(controls);
 }
 
 void swatch(Colour fill, Colour outline, float thickness, bool striped = false) {
@@ -186,21 +203,6 @@ void drawGravityDial(const Vec2& gravity) {
   ImGui::EndGroup();
 }
 
-void drawRayAnswer(const Controls& controls) {
-  if (controls.mode() != DrawMode::Ray) return;
-  const auto& answer = controls.rayTool().answer();
-  if (!answer) {
-    ImGui::TextWrapped("Ray (E): drag across the scene");
-    return;
-  }
-  ImGui::TextWrapped("Ray (E): %s", describeRay(*answer).c_str());
-  if (!answer->hit) return;
-  const RayHit& hit = *answer->hit;
-  ImGui::TextWrapped("  point (%s, %s) m, normal (%s, %s)", formatNumber(hit.point.x(), 3).c_str(),
-                     formatNumber(hit.point.y(), 3).c_str(), formatNumber(hit.normal.x(), 3).c_str(),
-                     formatNumber(hit.normal.y(), 3).c_str());
-}
-
 void drawOverlayToggles(Controls& controls, const PanelInput& input) {
   Overlays& overlays = controls.overlays();
   ImGui::Checkbox("contacts and normals (K)", &overlays.contacts);
@@ -210,7 +212,6 @@ void drawOverlayToggles(Controls& controls, const PanelInput& input) {
   if (overlays.eventFlashes) {
     ImGui::TextDisabled("  events received: %llu", static_cast<unsigned long long>(input.eventMessages));
   }
-  drawRayAnswer(controls);
 }
 
 void drawControlsSection(Controls& controls, const std::function<void(ControlKey)>& act) {
@@ -236,11 +237,12 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   state.stopButton.reset();
   state.poseFields.reset();
   state.typeButtons = {};
+  state.flagBoxes = {};
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.w, rect.h});
   ImGui::Begin("##side panel", nullptr,
                kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  drawHeader(fonts, input, act);
+  drawHeader(fonts, controls, input, act);
   ImGui::Separator();
   // Only the sections scroll; the header above stays.
   ImGui::BeginChild("##sections");

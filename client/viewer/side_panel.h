@@ -90,6 +90,9 @@ struct PanelState {
   /// and dynamic buttons, when on screen.
   std::optional<PixelRect> poseFields;
   std::array<std::optional<PixelRect>, 3> typeButtons;
+  /// The inspector's flag check boxes: sensor, sensor events, contact
+  /// events, hit events, when on screen.
+  std::array<std::optional<PixelRect>, 4> flagBoxes;
   FieldsEdit poseEdit;      ///< x, y (m), angle (degrees)
   FieldsEdit velocityEdit;  ///< vx, vy (m/s), angular (rad/s)
 };
