@@ -16,7 +16,9 @@ void dashesAlong(std::span<const PixelPoint> path, bool closed, float dash, floa
     const PixelPoint a = path[i];
     const PixelPoint b = path[(i + 1) % path.size()];
     const float length = std::hypot(b.x - a.x, b.y - a.y);
-    const auto at = [&](float s) { return PixelPoint{a.x + (b.x - a.x) * s / length, a.y + (b.y - a.y) * s / length}; };
+    const auto at = [&](float s) {
+      return PixelPoint{a.x + (b.x - a.x) * s / length, a.y + (b.y - a.y) * s / length};
+    };
     float s = 0;
     while (s < length) {
       if (phase < dash) {

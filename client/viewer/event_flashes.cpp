@@ -19,8 +19,11 @@ void EventFlashes::push(Flash flash) {
 
 void EventFlashes::add(const v1::Events& events, double time, double now) {
   for (const v1::HitEvent& hit : events.hits()) {
-    push({.kind = Flash::Kind::Hit, .point = wire::vecFromWireUnchecked(hit.point()),
-          .speed = hit.approach_speed(), .time = time, .arrived = now});
+    push({.kind = Flash::Kind::Hit,
+          .point = wire::vecFromWireUnchecked(hit.point()),
+          .speed = hit.approach_speed(),
+          .time = time,
+          .arrived = now});
   }
   for (const v1::ContactEvent& contact : events.contact_begins()) {
     for (const std::uint32_t body : {contact.body_a(), contact.body_b()}) {
@@ -28,7 +31,10 @@ void EventFlashes::add(const v1::Events& events, double time, double now) {
     }
   }
   for (const v1::SensorEvent& visit : events.sensor_begins()) {
-    push({.kind = Flash::Kind::SensorBegin, .body = visit.sensor_body(), .time = time, .arrived = now});
+    push({.kind = Flash::Kind::SensorBegin,
+          .body = visit.sensor_body(),
+          .time = time,
+          .arrived = now});
   }
 }
 
@@ -37,7 +43,8 @@ void EventFlashes::update(double drawnTime, double now) {
     if (flash.start < 0 && drawnTime >= flash.time) flash.start = now;
   }
   std::erase_if(flashes_, [&](const Flash& flash) {
-    return flash.start < 0 ? now - flash.arrived > kMaxWaitSeconds : now - flash.start >= kFadeSeconds;
+    return flash.start < 0 ? now - flash.arrived > kMaxWaitSeconds
+                           : now - flash.start >= kFadeSeconds;
   });
 }
 

@@ -25,7 +25,8 @@ std::optional<RayHit> closestHit(const v1::QueryResult& result) {
 void RayTool::aim(const Ray& ray) { aimed_ = ray; }
 
 std::optional<v1::ClientMessage> RayTool::request(double now) {
-  if (!aimed_ || inFlight_ || (aimed_->end - aimed_->origin).norm() < kShortestRay) return std::nullopt;
+  if (!aimed_ || inFlight_ || (aimed_->end - aimed_->origin).norm() < kShortestRay)
+    return std::nullopt;
   const bool answeredAsAimed = answer_ && answer_->ray == *aimed_;
   if (answeredAsAimed && now - askedAt_ < kRecastInterval) return std::nullopt;
   inFlight_ = Cast{*aimed_, generation_};

@@ -231,14 +231,16 @@ TEST(EventFlashes, SensorBeginsFlashTheSensor_ContactBeginsBothBodies) {
   flashes.add(events, 0, 0);
   std::vector<std::pair<Flash::Kind, std::uint32_t>> flashed;
   for (const Flash& flash : flashes.flashes()) flashed.emplace_back(flash.kind, flash.body);
-  const std::vector<std::pair<Flash::Kind, std::uint32_t>> expected{
-      {Flash::Kind::ContactBegin, 2}, {Flash::Kind::ContactBegin, 9}, {Flash::Kind::SensorBegin, 5}};
+  const std::vector<std::pair<Flash::Kind, std::uint32_t>> expected{{Flash::Kind::ContactBegin, 2},
+                                                                    {Flash::Kind::ContactBegin, 9},
+                                                                    {Flash::Kind::SensorBegin, 5}};
   EXPECT_EQ(flashed, expected);
 }
 
 TEST(EventFlashes, KeepAtMostTheNewestFew) {
   EventFlashes flashes;
-  for (std::size_t i = 0; i < EventFlashes::kMaxFlashes + 10; ++i) flashes.add(hitAt(double(i), 0, 1), 0, 0);
+  for (std::size_t i = 0; i < EventFlashes::kMaxFlashes + 10; ++i)
+    flashes.add(hitAt(double(i), 0, 1), 0, 0);
   ASSERT_EQ(flashes.flashes().size(), EventFlashes::kMaxFlashes);
   EXPECT_EQ(flashes.flashes().front().point, Vec2(10, 0));
 }

@@ -32,7 +32,9 @@ client::SpawnOptions staticSensor() {
 class Scene {
  public:
   explicit Scene(std::vector<std::string> args, int height = 720)
-      : server(std::move(args)), viewer(server.port(), 1280, height), observer(observerOptions(server.port())) {}
+      : server(std::move(args)),
+        viewer(server.port(), 1280, height),
+        observer(observerOptions(server.port())) {}
 
   /// Spawns with the observer and waits until the viewer draws the body.
   std::uint32_t spawn(const v1::ClientMessage& message) {
@@ -42,7 +44,8 @@ class Scene {
     EXPECT_TRUE(observe([&] { return viewer.app().world().findDrawn(id) != nullptr; }));
     return id;
   }
-  bool observe(const std::function<bool()>& done, std::chrono::milliseconds timeout = std::chrono::milliseconds(5000)) {
+  bool observe(const std::function<bool()>& done,
+               std::chrono::milliseconds timeout = std::chrono::milliseconds(5000)) {
     return observeUntil(viewer, observer, done, timeout);
   }
   /// Presses at `from`, moves to `to` over a few frames and releases there.
@@ -63,7 +66,8 @@ class Scene {
   /// Pixels within `tolerance` of `colour` in a square of `half` pixels about `world`.
   int near(SDL_Surface* shot, const Vec2& world, int half, viewer::Colour colour, int tolerance) {
     const auto p = viewer.pixel(world);
-    return countNear(shot, {int(p.x) - half, int(p.y) - half, 2 * half, 2 * half}, colour, tolerance);
+    return countNear(shot, {int(p.x) - half, int(p.y) - half, 2 * half, 2 * half}, colour,
+                     tolerance);
   }
 
   net_test::ServerProcess server;
@@ -73,7 +77,8 @@ class Scene {
 
 TEST(RayToolE2E, DraggedRayHitsTheBoxThroughASensor_NormalArrowAndSensorDrawn) {
   Scene scene({"--paused"});
-  const std::uint32_t target = scene.spawn(client::spawnPolygon(box(6, 3, 1, 0.5), {.isStatic = true}));
+  const std::uint32_t target =
+      scene.spawn(client::spawnPolygon(box(6, 3, 1, 0.5), {.isStatic = true}));
   const std::uint32_t sensor = scene.spawn(client::spawnPolygon(box(6, 6, 1.5, 1), staticSensor()));
   ASSERT_TRUE(scene.viewer.app().world().findDrawn(sensor)->look->flags.isSensor);
 
@@ -99,7 +104,8 @@ TEST(RayToolE2E, DraggedRayHitsTheBoxThroughASensor_NormalArrowAndSensorDrawn) {
   // The normal arrow stands on the hit point, in the hit colour; the hit
   // box's outline is in it too, at its far corner from the ray.
   const float metre = scene.viewer.app().view().scale();
-  EXPECT_GT(scene.near(shot.get(), hit.point + Vec2(0, 20 / metre), 4, viewer::palette::kRayHit, 40), 8);
+  EXPECT_GT(
+      scene.near(shot.get(), hit.point + Vec2(0, 20 / metre), 4, viewer::palette::kRayHit, 40), 8);
   EXPECT_GT(scene.near(shot.get(), Vec2(7, 2.5), 3, viewer::palette::kRayHit, 40), 3);
   // The sensor is see-through: neither its material's white nor the empty
   // scene, and its edge is dashed (white and background pixels alternate).
@@ -111,7 +117,8 @@ TEST(RayToolE2E, DraggedRayHitsTheBoxThroughASensor_NormalArrowAndSensorDrawn) {
   int edgePixels = 0;
   const int span = int(2.5 * metre);
   for (int x = int(top.x) + 2; x < int(top.x) + span; ++x) {
-    edgePixels += colourDistance(pixelAt(shot.get(), x, int(std::lround(top.y))), viewer::palette::kSceneBackground) > 90;
+    edgePixels += colourDistance(pixelAt(shot.get(), x, int(std::lround(top.y))),
+                                 viewer::palette::kSceneBackground) > 90;
   }
   EXPECT_GT(edgePixels, span / 3);
   EXPECT_LT(edgePixels, span * 9 / 10);
@@ -122,7 +129,8 @@ TEST(RayToolE2E, DraggedRayHitsTheBoxThroughASensor_NormalArrowAndSensorDrawn) {
 
 TEST(EventFlashesE2E, AHardLandingInASensorFlashesTheHitAndTheSensor) {
   Scene scene({});
-  const std::uint32_t sensor = scene.spawn(client::spawnPolygon(box(12, 1.6, 1.5, 0.8), staticSensor()));
+  const std::uint32_t sensor =
+      scene.spawn(client::spawnPolygon(box(12, 1.6, 1.5, 0.8), staticSensor()));
   scene.viewer.tap(SDLK_n);
   ASSERT_TRUE(scene.viewer.app().controls().overlays().eventFlashes);
   client::SpawnOptions ball;
@@ -132,7 +140,9 @@ TEST(EventFlashesE2E, AHardLandingInASensorFlashesTheHitAndTheSensor) {
   const viewer::EventFlashes& flashes = scene.viewer.app().flashes();
   const auto showing = [&](viewer::Flash::Kind kind) {
     for (const viewer::Flash& flash : flashes.flashes()) {
-      if (flash.kind == kind && viewer::EventFlashes::intensity(flash, scene.viewer.app().now()) > 0.8f) return &flash;
+      if (flash.kind == kind &&
+          viewer::EventFlashes::intensity(flash, scene.viewer.app().now()) > 0.8f)
+        return &flash;
     }
     return static_cast<const viewer::Flash*>(nullptr);
   };
