@@ -219,7 +219,9 @@ void Controls::update(const ControlContext& context, double now) {
   repeatHeldKeys(context, now);
   steerGrabbed(context, now);
   if (mode_ != DrawMode::Ray) return;
-  if (auto cast = ray_.request(now)) send(std::move(*cast), "ray");
+  if (const auto ray = ray_.request(now)) {
+    send(client::rayCast(toPoint(ray->origin), toPoint(ray->end - ray->origin)), "ray");
+  }
 }
 
 void Controls::rayAnswered(const v1::ServerMessage& reply, double now) {

@@ -1,6 +1,5 @@
 #include "ray_tool.h"
 
-#include "impulse/client/commands.h"
 #include "impulse/client/number_format.h"
 #include "impulse/wire/convert.h"
 
@@ -10,8 +9,6 @@ namespace {
 
 // Shorter rays are not cast: a press not yet dragged is no ray.
 constexpr Real kShortestRay = Real(1e-3);
-
-client::Point point(const Vec2& v) { return {double(v.x()), double(v.y())}; }
 
 std::optional<RayHit> closestHit(const v1::QueryResult& result) {
   if (result.hits_size() == 0) return std::nullopt;
@@ -24,14 +21,14 @@ std::optional<RayHit> closestHit(const v1::QueryResult& result) {
 
 void RayTool::aim(const Ray& ray) { aimed_ = ray; }
 
-std::optional<v1::ClientMessage> RayTool::request(double now) {
+std::optional<Ray> RayTool::request(double now) {
   if (!aimed_ || inFlight_ || (aimed_->end - aimed_->origin).norm() < kShortestRay)
     return std::nullopt;
   const bool answeredAsAimed = answer_ && answer_->ray == *aimed_;
   if (answeredAsAimed && now - askedAt_ < kRecastInterval) return std::nullopt;
   inFlight_ = Cast{*aimed_, generation_};
   askedAt_ = now;
-  return client::rayCast(point(aimed_->origin), point(aimed_->end - aimed_->origin));
+  return aimed_;
 }
 
 std::optional<std::string> RayTool::answered(const v1::ServerMessage& reply) {

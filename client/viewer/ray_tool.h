@@ -45,10 +45,11 @@ class RayTool {
 
   /// The ray to show and cast: from the press to the pointer.
   void aim(const Ray& ray);
-  /// The RayCast to send at `now`, if one is due: none while one is in
-  /// flight, none for a ray shorter than a millimetre (the server refuses
-  /// a zero ray), none for a ray answered as aimed and asked less than kRecastInterval ago.
-  std::optional<v1::ClientMessage> request(double now);
+  /// The ray to cast (RayCast, closest hit) at `now`, if one is due: none
+  /// while a cast is in flight, none shorter than a millimetre (the server
+  /// refuses a zero ray), none when the aimed ray was answered and asked
+  /// less than kRecastInterval ago. The ray returned is then in flight.
+  std::optional<Ray> request(double now);
   /// The server's reply to the cast in flight: a QueryResult, or a refusal
   /// (CommandResult), whose reason is returned.
   std::optional<std::string> answered(const v1::ServerMessage& reply);
