@@ -100,10 +100,8 @@ ControlContext App::context() const {
   // the server has the body.
   if (const auto grabbed = controls_.grabbedBody()) {
     if (const client::MirrorBody* body = mirrored(*grabbed)) {
-      BodyLook look{body->shape,    body->extraShapes, body->material,
-                    body->isStatic, body->isKinematic, body->ignoreGravity};
       context.grabbed =
-          GrabbedBody{body->state.position, double(massOf(look).mass), body->state.angle};
+          GrabbedBody{body->state.position, double(massOf(lookOf(*body)).mass), body->state.angle};
     }
   }
   if (const auto selected = controls_.selectedBody()) {
@@ -262,11 +260,39 @@ void App::exchange() {
   }
   if (!controls_.selectedBody()) inspected_.reset();
   handleReplies();
+  followEvents(t);
   recordFigures();
+}
+
+void App::followEvents(double now) {
+  const bool wanted = controls_.overlays().eventFlashes;
+  const int link = connection_->connected() ? connection_->connections() : 0;
+  if (eventsConnection_ != 0 && (!wanted || eventsConnection_ != link)) {
+    // Off, or the connection subscribed is gone (a new one starts unsubscribed).
+    if (eventsConnection_ == link) connection_->send(client::subscribeEvents(false), "events off");
+    eventsConnection_ = 0;
+    connection_->takeEvents();
+    flashes_.clear();
+  }
+  if (wanted && link != 0 && eventsConnection_ == 0) {
+    // Events that came after an unsubscription are stale: not flashed.
+    connection_->takeEvents();
+    if (connection_->send(client::subscribeEvents(true), "events")) eventsConnection_ = link;
+  }
+  if (eventsConnection_ == 0) return;
+  const double tickSeconds = connection_->tickSeconds();
+  for (const v1::Events& events : connection_->takeEvents()) {
+    flashes_.add(events, double(events.tick()) * tickSeconds, now);
+    ++eventMessages_;
+  }
 }
 
 void App::handleReplies() {
   for (Reply& reply : connection_->takeReplies()) {
+    if (reply.what == "ray") {
+      controls_.rayAnswered(reply.message, now());
+      continue;
+    }
     if (reply.message.has_body_info()) {
       if (controls_.selectedBody() == reply.message.body_info().descriptor().id()) {
         inspected_ = reply.message.body_info();
@@ -331,6 +357,7 @@ void App::drawScene(ImDrawList& list, const ViewTransform& view) {
   if (const client::Client* client = connection_->client(); client && client->mirror().preset()) {
     scene_.drawMarkers(list, view, client->mirror().preset()->markers);
   }
+  scene_.drawFlashes(list, view, flashes_, world_, now());
   overlays_.draw(list, view, world_.bodies(), controls_.overlays());
   if (const auto grabbed = controls_.grabbedBody()) {
     for (const DrawnBody& body : world_.bodies()) {
@@ -340,6 +367,11 @@ void App::drawScene(ImDrawList& list, const ViewTransform& view) {
     }
   }
   scene_.drawPreview(list, view, controls_);
+  if (controls_.mode() == DrawMode::Ray) {
+    const auto& answer = controls_.rayTool().answer();
+    const DrawnBody* hitBody = answer && answer->hit ? world_.findDrawn(answer->hit->body) : nullptr;
+    scene_.drawRay(list, view, controls_.rayTool(), hitBody);
+  }
   scene_.end(list);
 }
 
@@ -367,6 +399,7 @@ void App::draw() {
   input.stats = stats_ ? &*stats_ : nullptr;
   input.stepMs = &stepMs_;
   input.kineticEnergy = &energy_;
+  input.eventMessages = eventMessages_;
   if (const client::Client* client = connection_->client()) {
     const auto& mirror = client->mirror();
     if (mirror.preset()) input.preset = &*mirror.preset();
@@ -431,6 +464,7 @@ bool App::frame() {
   while (SDL_PollEvent(&event) != 0) handleEvent(event);
   exchange();
   world_.update(now());
+  flashes_.update(world_.renderTime(), now());
   const double drawn = now();
   draw();
   const double beforePresent = now();

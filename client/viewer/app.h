@@ -13,6 +13,7 @@
 
 #include "connection.h"
 #include "controls.h"
+#include "event_flashes.h"
 #include "gui.h"
 #include "history.h"
 #include "interpolated_world.h"
@@ -62,6 +63,8 @@ class App {
   SDL_Window* window() const { return window_; }
   const FrameTiming& timing() const { return timing_; }
   std::uint64_t frames() const { return frames_; }
+  /// The flashes of the event stream, waiting or showing.
+  const EventFlashes& flashes() const { return flashes_; }
   /// Contacts of the last frame drawn with the contact overlay on.
   const std::vector<ShownContact>& shownContacts() const { return overlays_.contacts(); }
   const History& stepTimeHistory() const { return stepMs_; }
@@ -83,6 +86,10 @@ class App {
   ControlContext context() const;
   void exchange();
   void handleReplies();
+  /// Subscribes to the server's events while the flashes are on (again
+  /// after a reconnect), unsubscribes when they go off, and turns the
+  /// events received into flashes.
+  void followEvents(double now);
   void recordFigures();
   void draw();
   void drawScene(ImDrawList& list, const ViewTransform& view);
@@ -110,6 +117,10 @@ class App {
   WorldRenderer scene_;
   std::vector<JointFigure> jointFigures_;
   OverlayRenderer overlays_;
+  EventFlashes flashes_;
+  /// The connection (Connection::connections()) subscribed to events, 0 for none.
+  int eventsConnection_ = 0;
+  std::uint64_t eventMessages_ = 0;
   std::optional<v1::BodyInfo> inspected_;
   double nextInspect_ = 0;
   bool presetRequested_ = false;

@@ -158,4 +158,13 @@ bool Connection::send(v1::ClientMessage message, std::string what) {
 
 std::vector<Reply> Connection::takeReplies() { return std::exchange(replies_, {}); }
 
+std::vector<v1::Events> Connection::takeEvents() {
+  return connected() ? client_->takeEvents() : std::vector<v1::Events>{};
+}
+
+double Connection::tickSeconds() const {
+  const double hz = connected() ? client_->welcome().tick_hz() : 0;
+  return hz > 0 ? 1 / hz : 0;
+}
+
 }  // namespace impulse::viewer

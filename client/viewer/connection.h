@@ -41,6 +41,11 @@ class Connection {
   bool send(v1::ClientMessage message, std::string what);
   /// Replies received since the last call.
   std::vector<Reply> takeReplies();
+  /// The Events messages received since the last call (after
+  /// SubscribeEvents), oldest first; none while not connected.
+  std::vector<v1::Events> takeEvents();
+  /// Simulated seconds per tick (the server's Welcome), 0 while not connected.
+  double tickSeconds() const;
 
   LinkState state() const { return state_; }
   bool connected() const { return state_ == LinkState::Connected; }

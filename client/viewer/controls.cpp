@@ -114,6 +114,7 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     case Control::SegmentMode: toggleMode(DrawMode::Segment, now); break;
     case Control::ChainMode: toggleMode(DrawMode::Chain, now); break;
     case Control::CloseChain: closeChain(now); break;
+    case Control::RayMode: toggleMode(DrawMode::Ray, now); break;
     case Control::ClearUserBodies: clearUserBodies(context, now); break;
     case Control::ClearAll:
       send(client::clearWorld(), "clear");
@@ -146,6 +147,7 @@ void Controls::keyPressed(ControlKey key, const ControlContext& context, double 
     case Control::ToggleContacts: overlays_.contacts = !overlays_.contacts; break;
     case Control::ToggleBounds: overlays_.bounds = !overlays_.bounds; break;
     case Control::ToggleVelocities: overlays_.velocities = !overlays_.velocities; break;
+    case Control::ToggleEventFlashes: overlays_.eventFlashes = !overlays_.eventFlashes; break;
     case Control::PinSelected: pinSelected(context, now); break;
     case Control::CancelOrQuit: cancelOrQuit(now); break;
     case Control::SlowerTime: scaleTime(context, 0.5, now); break;
@@ -216,6 +218,14 @@ void Controls::keyReleased(ControlKey key) {
 void Controls::update(const ControlContext& context, double now) {
   repeatHeldKeys(context, now);
   steerGrabbed(context, now);
+  if (mode_ != DrawMode::Ray) return;
+  if (const auto ray = ray_.request(now)) {
+    send(client::rayCast(toPoint(ray->origin), toPoint(ray->end - ray->origin)), "ray");
+  }
+}
+
+void Controls::rayAnswered(const v1::ServerMessage& reply, double now) {
+  if (const auto refusal = ray_.answered(reply)) notify("Server refused the ray: " + *refusal, now);
 }
 
 void Controls::repeatHeldKeys(const ControlContext& context, double now) {
@@ -349,6 +359,7 @@ void Controls::pointerPressed(const Vec2& at, std::optional<BodyHit> hit, double
 void Controls::pointerMoved(const Vec2& at) {
   pointer_ = at;
   if (dragging_) dragEnd_ = at;
+  if (dragging_ && mode_ == DrawMode::Ray) ray_.aim({*dragStart_, at});
   if (grab_ && (at - grab_->pressedAt).norm() > Real(settings_.dragThreshold)) {
     grab_->dragging = true;
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "grab.h"
+#include "ray_tool.h"
 #include "impulse.pb.h"
 #include "impulse/client/commands.h"
 #include "impulse/material.h"
@@ -30,6 +31,8 @@ enum class Control {
   ChainMode,
   /// The chain drawn so far, closed into a loop.
   CloseChain,
+  /// The ray tool: drag a ray, the server casts it; again: leave it.
+  RayMode,
   ClearUserBodies,
   ClearAll,
   TogglePanel,
@@ -54,6 +57,8 @@ enum class Control {
   ToggleContacts,
   ToggleBounds,
   ToggleVelocities,
+  /// Flashes of contacts, hits and sensors (the server's event stream).
+  ToggleEventFlashes,
   PinSelected,
   CancelOrQuit,
   // Time scale: halve, double, back to 1x.
@@ -72,7 +77,7 @@ struct ControlKey {
   friend bool operator==(const ControlKey&, const ControlKey&) = default;
 };
 
-enum class DrawMode { None, Polygon, Circle, Capsule, Segment, Chain };
+enum class DrawMode { None, Polygon, Circle, Capsule, Segment, Chain, Ray };
 
 /// The grabbed body as the newest snapshot has it.
 struct GrabbedBody {
@@ -139,6 +144,10 @@ struct Overlays {
   bool contacts = false;
   bool bounds = false;
   bool velocities = false;
+  /// Subscribed to the server's events, flashing hits, contacts that begin
+  /// and sensors that fire. Off at start: the stream costs the server and
+  /// the link, and only shapes that ask for events make any.
+  bool eventFlashes = false;
 };
 
 class Controls {
@@ -159,6 +168,9 @@ class Controls {
   /// The server's answer to the drag's CreateJoint (`what` "drag"): the
   /// joint's id, or nothing when it was refused.
   void dragJointAnswered(std::optional<std::uint32_t> joint);
+  /// The server's reply to the ray tool's cast (`what` "ray"); a refusal
+  /// becomes a notice.
+  void rayAnswered(const v1::ServerMessage& reply, double now);
   /// Commands produced since the last call, in order.
   std::vector<Outgoing> takeCommands();
   /// Shows `text` for a few seconds (also used for server errors).
@@ -211,6 +223,8 @@ class Controls {
   const Vec2& dragEnd() const { return dragEnd_; }
   /// Circle mode: the radius dragged so far.
   Real circleRadius() const;
+  /// Ray mode: the ray dragged and the server's answer.
+  const RayTool& rayTool() const { return ray_; }
 
  private:
   struct Held {
@@ -299,6 +313,7 @@ class Controls {
   Vec2 dragEnd_ = Vec2::Zero();
   bool dragging_ = false;
   Real capsuleRadius_;
+  RayTool ray_;
 };
 
 /// A world point as the client library's commands take it.

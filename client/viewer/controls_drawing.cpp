@@ -1,5 +1,5 @@
 // The drawing tools of Controls: polygon, circle, capsule, segment and chain
-// drawn with the pointer, and the standard shapes stamped at the cursor.
+// drawn with the pointer, the ray tool's drag, and the standard shapes stamped at the cursor.
 #include <algorithm>
 
 #include "chain_drawing.h"
@@ -38,6 +38,7 @@ void Controls::cancelDrawing() {
   points_.clear();
   dragStart_.reset();
   dragging_ = false;
+  ray_.clear();
 }
 
 client::SpawnOptions Controls::spawnOptions() const {
@@ -64,6 +65,8 @@ bool Controls::finishDrawing(double now) {
     case DrawMode::Capsule: return finishCapsule(now);
     case DrawMode::Segment: return finishSegment(now);
     case DrawMode::Chain: return finishChain(false, now);
+    // The ray tool makes nothing: pressed again, it is left.
+    case DrawMode::Ray:
     case DrawMode::None: break;
   }
   return true;
@@ -74,10 +77,11 @@ void Controls::pressWhileDrawing(const Vec2& at) {
     if (pointerValid()) points_.push_back(at);
     return;
   }
-  // Circle, capsule and segment: the drag from the press.
+  // Circle, capsule, segment and ray: the drag from the press.
   dragStart_ = at;
   dragEnd_ = at;
   dragging_ = true;
+  if (mode_ == DrawMode::Ray) ray_.aim({at, at});
 }
 
 bool Controls::finishPolygon(double now) {

@@ -8,7 +8,7 @@ namespace impulse::viewer {
 namespace {
 
 // docs/product.md's control table and the viewer's own keys, as the panel shows them.
-constexpr std::array<std::pair<const char*, const char*>, 33> kControlRows{{
+constexpr std::array<std::pair<const char*, const char*>, 35> kControlRows{{
     {"P", "polygon mode; again: create (3+ points)"},
     {"click", "place a point where the cursor is green"},
     {"O", "circle mode; again: create (if dragged)"},
@@ -16,6 +16,7 @@ constexpr std::array<std::pair<const char*, const char*>, 33> kControlRows{{
     {"R", "capsule mode: drag end to end, - = radius; again: create"},
     {"L", "segment mode: drag end to end; again: create"},
     {"H / Shift+H", "chain mode: click points; again: create (solid above) / close it"},
+    {"E", "ray tool: drag a ray, see what it hits first; again: leave"},
     {"Esc", "cancel drawing, grab or selection; else quit"},
     {"left drag", "pull a body by a mouse joint; release throws it"},
     {"right click, Del", "remove the body under the cursor"},
@@ -27,6 +28,7 @@ constexpr std::array<std::pair<const char*, const char*>, 33> kControlRows{{
     {"right drag", "pan (middle drag too)"},
     {"F, Home", "fit the scene to the window"},
     {"K B V", "contacts, bounding boxes, velocities"},
+    {"N", "flash hits, contacts and sensors (event stream)"},
     {"X", "show or hide these controls"},
     {"M", "inspector: click a body, arrows push it"},
     {"J", "pin the selected body to the world (at the cursor)"},

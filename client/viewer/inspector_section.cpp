@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <array>
+#include <cinttypes>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -61,6 +63,44 @@ void drawShapeRows(const v1::BodyDescriptor& d) {
     row(("  " + std::to_string(i + 1)).c_str(), describeShape(body.shapes[i]));
   }
   if (body.shapes.size() > kListed) row("", "and " + std::to_string(body.shapes.size() - kListed) + " more");
+}
+
+std::string hex(std::uint64_t bits) {
+  char text[24];
+  std::snprintf(text, sizeof text, "0x%" PRIX64, bits);
+  return text;
+}
+
+std::string describeFilter(const CollisionFilter& filter) {
+  return "category " + hex(filter.categoryBits) + ", mask " + hex(filter.maskBits) + ", group " +
+         std::to_string(filter.groupIndex);
+}
+
+// The flags that are on, in words; "none" when none is.
+std::string describeFlags(const ShapeInteraction& flags) {
+  std::string text;
+  const auto add = [&](bool on, const char* name) {
+    if (!on) return;
+    if (!text.empty()) text += ", ";
+    text += name;
+  };
+  add(flags.isSensor, "sensor");
+  add(flags.enableSensorEvents, "sensor events");
+  add(flags.enableContactEvents, "contact events");
+  add(flags.enableHitEvents, "hit events");
+  return text.empty() ? "none" : text;
+}
+
+// The ids events and queries name the shapes by, the first few of a long list.
+std::string describeShapeIds(const v1::BodyDescriptor& d) {
+  constexpr int kListed = 6;
+  std::string text;
+  for (int i = 0; i < std::min(d.shape_ids_size(), kListed); ++i) {
+    if (i > 0) text += ", ";
+    text += std::to_string(d.shape_ids(i));
+  }
+  if (d.shape_ids_size() > kListed) text += ", ... (" + std::to_string(d.shape_ids_size()) + ")";
+  return text;
 }
 
 void drawBodyTable(const v1::BodyInfo& info) {
@@ -172,6 +212,36 @@ void drawMaterialAndType(const v1::BodyInfo& info, const PanelActions& actions, 
   }
 }
 
+// The shapes' ids, filter and flags, then the flags as check boxes: a click
+// sends the body's flags with that one changed (SetShapeFlags, every shape
+// of the body). Last in the inspector: set less often than the rest.
+void drawFilterAndFlags(const v1::BodyInfo& info, const PanelActions& actions, PanelState& state) {
+  const auto& d = info.descriptor();
+  const std::uint32_t id = d.id();
+  // A body made over the wire gives every shape the first one's flags.
+  const ShapeInteraction current = wire::shapeFlagsFromWire(d.shape_flags());
+  if (ImGui::BeginTable("filter", 2, ImGuiTableFlags_SizingStretchProp)) {
+    row("shape ids", describeShapeIds(d));
+    row("filter", describeFilter(current.filter));
+    row("flags", describeFlags(current));
+    ImGui::EndTable();
+  }
+  const std::array<std::pair<const char*, bool ShapeInteraction::*>, 4> kFlags{{
+      {"sensor", &ShapeInteraction::isSensor},
+      {"sensor events", &ShapeInteraction::enableSensorEvents},
+      {"contact events", &ShapeInteraction::enableContactEvents},
+      {"hit events", &ShapeInteraction::enableHitEvents},
+  }};
+  ImGui::TextDisabled("shape flags; a click sets them:");
+  for (std::size_t i = 0; i < kFlags.size(); ++i) {
+    const auto [label, member] = kFlags[i];
+    ShapeInteraction wanted = current;
+    if (i > 0) sameLineIfFits(ImGui::CalcTextSize(label).x + ImGui::GetFrameHeight() * 1.5f);
+    if (ImGui::Checkbox(label, &(wanted.*member))) actions.send(client::setShapeFlags(id, wanted), "shape flags");
+    if (ImGui::IsItemVisible()) state.flagBoxes[i] = lastItemRect();
+  }
+}
+
 }  // namespace
 
 void drawInspectorSection(const Controls& controls, const PanelInput& input,
@@ -189,6 +259,7 @@ void drawInspectorSection(const Controls& controls, const PanelInput& input,
   if (!input.inspected->descriptor().is_static()) drawVelocityEditor(*input.inspected, actions, state);
   drawMaterialAndType(*input.inspected, actions, state);
   ImGui::TextDisabled("arrows push it, Delete removes it");
+  drawFilterAndFlags(*input.inspected, actions, state);
 }
 
 }  // namespace impulse::viewer

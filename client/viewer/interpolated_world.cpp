@@ -20,6 +20,11 @@ PlayoutSettings playoutSettings(double interval) {
 
 }  // namespace
 
+BodyLook lookOf(const client::MirrorBody& body) {
+  return {body.shape,         body.extraShapes,   body.material, body.isStatic,
+          body.isKinematic,   body.ignoreGravity, body.flags,    body.shapeIds};
+}
+
 InterpolatedWorld::InterpolatedWorld(double snapshotInterval)
     : buffer_(interpolationSettings(snapshotInterval)),
       clock_(playoutSettings(snapshotInterval)),
@@ -40,7 +45,7 @@ void InterpolatedWorld::reset(double snapshotInterval) {
 
 void InterpolatedWorld::seed(const client::WorldMirror& mirror, double now) {
   for (const auto& [id, body] : mirror.bodies()) {
-    looks_[id] = {body.shape, body.extraShapes, body.material, body.isStatic, body.isKinematic, body.ignoreGravity};
+    looks_[id] = lookOf(body);
   }
   record(mirror, mirror.simTime(), mirror.timeScale(), true, mirror.paused(), now);
 }
@@ -56,8 +61,7 @@ void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
   for (const std::uint32_t id : snapshot.removed()) retire(id, time);
   for (const auto& descriptor : snapshot.added()) {
     if (const auto* body = mirror.find(BodyId{descriptor.id()})) {
-      looks_[descriptor.id()] = {body->shape,    body->extraShapes, body->material,
-                                 body->isStatic, body->isKinematic, body->ignoreGravity};
+      looks_[descriptor.id()] = lookOf(*body);
     }
   }
   record(mirror, time, mirror.timeScale(), snapshot.full(), snapshot.paused(), now);
@@ -121,10 +125,15 @@ void InterpolatedWorld::update(double now) {
   }
 }
 
-const BodySample* InterpolatedWorld::find(std::uint32_t id) const {
+const DrawnBody* InterpolatedWorld::findDrawn(std::uint32_t id) const {
   const auto it = std::lower_bound(drawn_.begin(), drawn_.end(), id,
                                    [](const DrawnBody& body, std::uint32_t key) { return body.state.id < key; });
-  return it != drawn_.end() && it->state.id == id ? &it->state : nullptr;
+  return it != drawn_.end() && it->state.id == id ? &*it : nullptr;
+}
+
+const BodySample* InterpolatedWorld::find(std::uint32_t id) const {
+  const DrawnBody* body = findDrawn(id);
+  return body != nullptr ? &body->state : nullptr;
 }
 
 }  // namespace impulse::viewer

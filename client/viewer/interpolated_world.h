@@ -25,12 +25,21 @@ namespace impulse::viewer {
 struct BodyLook {
   Shape shape;
   /// A compound body's further shapes.
-  std::vector<Shape> extraShapes;
+  std::vector<Shape> extraShapes{};
   Material material = Material::Solid;
   bool isStatic = false;
   bool isKinematic = false;
   bool ignoreGravity = false;
+  /// The first shape's filter, sensor flag and events (a body made over the
+  /// wire gives every shape the same).
+  ShapeInteraction flags{};
+  /// Every shape's id (events and queries name them), in the order shape,
+  /// extraShapes.
+  std::vector<std::uint32_t> shapeIds{};
 };
+
+/// The look of a body as the client's mirror describes it.
+BodyLook lookOf(const client::MirrorBody& body);
 
 /// One body to draw.
 struct DrawnBody {
@@ -55,6 +64,8 @@ class InterpolatedWorld {
   const std::vector<DrawnBody>& bodies() const { return drawn_; }
   /// The drawn state of body `id`, or null when it is not drawn.
   const BodySample* find(std::uint32_t id) const;
+  /// The drawn body `id` with its look, or null when it is not drawn.
+  const DrawnBody* findDrawn(std::uint32_t id) const;
   SampleMode lastMode() const { return mode_; }
   /// The simulated time drawn.
   double renderTime() const { return renderTime_; }

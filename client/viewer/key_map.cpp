@@ -31,6 +31,7 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     case SDLK_r: return ControlKey{Control::CapsuleMode};
     case SDLK_l: return ControlKey{Control::SegmentMode};
     case SDLK_h: return ControlKey{shift ? Control::CloseChain : Control::ChainMode};
+    case SDLK_e: return ControlKey{Control::RayMode};
     case SDLK_c: return ControlKey{shift ? Control::ClearAll : Control::ClearUserBodies};
     case SDLK_x: return ControlKey{Control::TogglePanel};
     case SDLK_m: return ControlKey{Control::ToggleInspector};
@@ -55,6 +56,7 @@ std::optional<ControlKey> controlForKey(SDL_Keycode key, Uint16 modifiers) {
     case SDLK_k: return ControlKey{Control::ToggleContacts};
     case SDLK_b: return ControlKey{Control::ToggleBounds};
     case SDLK_v: return ControlKey{Control::ToggleVelocities};
+    case SDLK_n: return ControlKey{Control::ToggleEventFlashes};
     case SDLK_j: return ControlKey{Control::PinSelected};
     case SDLK_ESCAPE: return ControlKey{Control::CancelOrQuit};
     case SDLK_LEFTBRACKET: return ControlKey{Control::SlowerTime};

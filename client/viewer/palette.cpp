@@ -42,4 +42,13 @@ Colour bodyOutline(Material material, bool isStatic, bool asleep) {
   return brightness > 400 ? scaled(fill, 0.3f) : Colour{240, 240, 240};
 }
 
+SurfaceLook surfaceLook(Material material, bool isStatic, bool asleep, bool isSensor) {
+  if (!isSensor) return {bodyFill(material, isStatic), bodyOutline(material, isStatic, asleep), false};
+  Colour fill = materialColour(material);
+  Colour outline = fill;
+  fill.a = kSensorFillAlpha;
+  outline.a = kSensorOutlineAlpha;
+  return {fill, outline, true};
+}
+
 }  // namespace impulse::viewer

@@ -29,6 +29,22 @@ Colour bodyFill(Material material, bool isStatic);
 /// (dark on light fills, light on dark ones).
 Colour bodyOutline(Material material, bool isStatic, bool asleep);
 
+/// How a body's shapes are filled and edged.
+struct SurfaceLook {
+  Colour fill;
+  Colour outline;
+  /// A thin dashed outline instead of a solid one.
+  bool dashed = false;
+  friend bool operator==(const SurfaceLook&, const SurfaceLook&) = default;
+};
+/// Solid bodies: bodyFill and bodyOutline. Sensors (triggers: they report
+/// what passes through them and never collide) are see-through: their
+/// material's colour, static or not, at kSensorFillAlpha, edged by a thin
+/// dashed line, so nobody mistakes one for a wall or a platform.
+SurfaceLook surfaceLook(Material material, bool isStatic, bool asleep, bool isSensor);
+inline constexpr std::uint8_t kSensorFillAlpha = 56;
+inline constexpr std::uint8_t kSensorOutlineAlpha = 210;
+
 namespace palette {
 inline constexpr Colour kBackground{22, 24, 30};
 inline constexpr Colour kSceneBackground{30, 33, 41};
@@ -57,6 +73,12 @@ inline constexpr Colour kContact{255, 64, 64};
 inline constexpr Colour kNormal{255, 160, 64};
 inline constexpr Colour kBounds{80, 220, 120};
 inline constexpr Colour kVelocity{80, 200, 255};
+// The ray tool, and the flashes of the event stream.
+inline constexpr Colour kRay{120, 255, 200};
+inline constexpr Colour kRayHit{255, 80, 200};
+inline constexpr Colour kHitFlash{255, 240, 150};
+inline constexpr Colour kSensorFlash{120, 255, 160};
+inline constexpr Colour kContactFlash{255, 255, 255};
 }  // namespace palette
 
 }  // namespace impulse::viewer

@@ -6,6 +6,8 @@
 #include <functional>
 #include <numbers>
 
+#include "dashes.h"
+
 namespace impulse::viewer {
 
 namespace {
@@ -26,6 +28,12 @@ constexpr float kEmphasis = 2.6f;
 // renderer pays for thin triangles (lines) far more than for fills, and a
 // scene of thousands of bodies is mostly small ones.
 constexpr float kSmallBody = 16;
+// Sensors are edged by dashes this long with gaps this long, this thick (pixels).
+constexpr float kSensorDash = 6;
+constexpr float kSensorGap = 4;
+constexpr float kSensorLine = 1.2f;
+// The ray tool's normal arrow, pixels, at any zoom.
+constexpr float kRayNormalPixels = 32;
 
 // Segments for a circle of `pixels` radius: the chords stray less than half a
 // pixel from the circle, so it looks round at any size, and small circles
@@ -35,6 +43,21 @@ int circleSegments(float pixels) {
   if (pixels <= kMaxError) return 8;
   const float segments = std::numbers::pi_v<float> / std::acos(1 - kMaxError / pixels);
   return std::clamp(int(std::ceil(segments)), 8, 96);
+}
+
+// The corners of a circle of `pixels` radius on screen, `segments` of them.
+void circlePoints(ImVec2 centre, float pixels, int segments, std::vector<ImVec2>& out) {
+  out.clear();
+  for (int i = 0; i < segments; ++i) {
+    const float a = 2 * std::numbers::pi_v<float> * float(i) / float(segments);
+    out.push_back({centre.x + pixels * std::cos(a), centre.y + pixels * std::sin(a)});
+  }
+}
+
+// `colour` with its alpha scaled by `factor` (0-1).
+ImU32 faded(Colour colour, float factor) {
+  colour.a = std::uint8_t(float(colour.a) * std::clamp(factor, 0.0f, 1.0f));
+  return packed(colour);
 }
 
 // `points` (a convex polygon on screen) moved inwards by `inset` pixels.
@@ -174,6 +197,7 @@ Vec2 rotationMark(const Shape& first, Real extent) {
 
 void WorldRenderer::drawShape(ImDrawList& list, const ViewTransform& view, const Transform& xf, const Shape& shape,
                               const ShapeColours& colours) {
+  if (colours.dashed) return drawSensorShape(list, view, xf, shape, colours);
   switch (shape.type()) {
     case ShapeType::Circle: {
       const ImVec2 centre = pixel(view, xf.apply(shape.circle().center));
@@ -190,11 +214,7 @@ void WorldRenderer::drawShape(ImDrawList& list, const ViewTransform& view, const
         without(list, ImDrawListFlags_AntiAliasedFill,
                 [&] { list.AddCircleFilled(centre, pixels, colours.fill, segments); });
         if (colours.hatch != 0) {
-          points_.clear();
-          for (int i = 0; i < segments; ++i) {
-            const float a = 2 * std::numbers::pi_v<float> * float(i) / float(segments);
-            points_.push_back({centre.x + pixels * std::cos(a), centre.y + pixels * std::sin(a)});
-          }
+          circlePoints(centre, pixels, segments, points_);
           hatchConvex(list, points_, pixel(view, xf.p), colours.hatch);
         }
         list.AddCircle(centre, pixels, colours.edge, segments, colours.thickness);
@@ -231,8 +251,45 @@ void WorldRenderer::drawShape(ImDrawList& list, const ViewTransform& view, const
   }
 }
 
+void WorldRenderer::drawSensorShape(ImDrawList& list, const ViewTransform& view, const Transform& xf,
+                                    const Shape& shape, const ShapeColours& colours) {
+  // A sensor is a region, not a solid: a faint fill edged by dashes.
+  bool closed = true;
+  switch (shape.type()) {
+    case ShapeType::Circle: {
+      const float pixels = shape.circle().radius * view.scale();
+      circlePoints(pixel(view, xf.apply(shape.circle().center)), pixels, circleSegments(pixels), points_);
+      break;
+    }
+    case ShapeType::Segment:
+    case ShapeType::ChainSegment: {
+      const auto ends = boundaryEnds(shape);
+      points_ = {pixel(view, xf.apply(ends[0])), pixel(view, xf.apply(ends[1]))};
+      closed = false;
+      break;
+    }
+    case ShapeType::Polygon:
+    case ShapeType::Capsule:
+      solidOutline(shape, outline_);
+      points_.clear();
+      for (const Vec2& vertex : outline_) points_.push_back(pixel(view, xf.apply(vertex)));
+      break;
+  }
+  if (closed) {
+    without(list, ImDrawListFlags_AntiAliasedFill,
+            [&] { list.AddConvexPolyFilled(points_.data(), int(points_.size()), colours.fill); });
+  }
+  path_.clear();
+  for (const ImVec2& p : points_) path_.push_back({p.x, p.y});
+  dashesAlong(path_, closed, kSensorDash, kSensorGap, dashes_);
+  for (std::size_t i = 0; i + 1 < dashes_.size(); i += 2) {
+    list.AddLine({dashes_[i].x, dashes_[i].y}, {dashes_[i + 1].x, dashes_[i + 1].y}, colours.edge,
+                 colours.thickness);
+  }
+}
+
 void WorldRenderer::drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
-                             Colour outline, float thickness) {
+                             const SurfaceLook& surface, float thickness) {
   const BodyLook& look = *body.look;
   const Transform xf{body.state.position, Rot::fromAngle(body.state.angle)};
   Real extent = computeExtent(look.shape);
@@ -241,9 +298,9 @@ void WorldRenderer::drawBody(ImDrawList& list, const ViewTransform& view, const 
   // Kinematic bodies (platforms, doors, pushers) are machinery: their
   // material's fill, striped in the outline colour, unlike plain moving
   // bodies and dark static scenery.
-  const ImU32 hatch = look.isKinematic && !small ? packed(outline) : 0;
-  const ShapeColours colours{packed(bodyFill(look.material, look.isStatic)), packed(outline), thickness, small,
-                             hatch};
+  const ImU32 hatch = look.isKinematic && !small && !surface.dashed ? packed(surface.outline) : 0;
+  const ShapeColours colours{packed(surface.fill), packed(surface.outline), thickness, small, hatch,
+                             surface.dashed};
   drawShape(list, view, xf, look.shape, colours);
   for (const Shape& extra : look.extraShapes) drawShape(list, view, xf, extra, colours);
   if (look.isStatic) return;
@@ -262,9 +319,10 @@ void WorldRenderer::drawBodies(ImDrawList& list, const ViewTransform& view,
       if (look.isStatic != statics) continue;
       const bool asleep = !look.isStatic && !body.state.awake;
       const bool marked = body.state.id == selected || body.state.id == grabbed;
-      const Colour outline =
-          marked ? palette::kSelection : bodyOutline(look.material, look.isStatic, asleep);
-      drawBody(list, view, body, outline, marked || asleep ? kEmphasis : kOutline);
+      SurfaceLook surface = surfaceLook(look.material, look.isStatic, asleep, look.flags.isSensor);
+      if (marked) surface.outline = palette::kSelection;
+      const float thin = surface.dashed ? kSensorLine : kOutline;
+      drawBody(list, view, body, surface, marked || asleep ? kEmphasis : thin);
     }
   }
 }
@@ -332,6 +390,8 @@ void WorldRenderer::drawPreview(ImDrawList& list, const ViewTransform& view,
     case DrawMode::Circle: drawCirclePreview(list, view, controls); return;
     case DrawMode::Capsule:
     case DrawMode::Segment: drawLinePreview(list, view, controls); return;
+    // The ray is drawn with its answer (drawRay).
+    case DrawMode::Ray:
     case DrawMode::None: return;
   }
 }
@@ -403,6 +463,68 @@ void WorldRenderer::drawLinePreview(ImDrawList& list, const ViewTransform& view,
   list.AddLine(a, b, preview, kOutline);
   list.AddCircleFilled(a, 3, preview);
   list.AddCircleFilled(b, 3, preview);
+}
+
+void WorldRenderer::drawOver(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
+                             std::optional<std::uint32_t> shapeId, const ShapeColours& colours) {
+  const Transform xf{body.state.position, Rot::fromAngle(body.state.angle)};
+  const BodyLook& look = *body.look;
+  for (std::size_t i = 0; i <= look.extraShapes.size(); ++i) {
+    if (shapeId && (i >= look.shapeIds.size() || look.shapeIds[i] != *shapeId)) continue;
+    drawShape(list, view, xf, i == 0 ? look.shape : look.extraShapes[i - 1], colours);
+  }
+}
+
+void WorldRenderer::drawRay(ImDrawList& list, const ViewTransform& view, const RayTool& ray,
+                            const DrawnBody* hitBody) {
+  const auto& answer = ray.answer();
+  if (ray.aimed() && (!answer || answer->ray != *ray.aimed())) {
+    list.AddLine(pixel(view, ray.aimed()->origin), pixel(view, ray.aimed()->end), packed(palette::kPreview), 1.0f);
+  }
+  if (!answer) return;
+  const RayFigure figure = rayFigure(*answer, kRayNormalPixels / view.scale());
+  const ImU32 colour = packed(palette::kRay);
+  const ImVec2 origin = pixel(view, figure.origin);
+  const ImVec2 reach = pixel(view, figure.reach);
+  list.AddCircleFilled(origin, 3.5f, colour);
+  list.AddLine(origin, reach, colour, kEmphasis);
+  if (!figure.hit) return;
+  // Past the hit the ray is what it would have gone on to: faint.
+  list.AddLine(reach, pixel(view, figure.end), faded(palette::kRay, 0.3f), 1.0f);
+  const ImU32 hitColour = packed(palette::kRayHit);
+  if (hitBody != nullptr) {
+    drawOver(list, view, *hitBody, answer->hit->shape, {.fill = 0, .edge = hitColour, .thickness = kEmphasis});
+  }
+  const ImVec2 tip = pixel(view, figure.normalTip);
+  list.AddLine(reach, tip, hitColour, kEmphasis);
+  list.AddTriangleFilled(tip, pixel(view, figure.barbs[0]), pixel(view, figure.barbs[1]), hitColour);
+  list.AddCircleFilled(reach, 4.5f, hitColour);
+}
+
+void WorldRenderer::drawFlashes(ImDrawList& list, const ViewTransform& view, const EventFlashes& flashes,
+                                const InterpolatedWorld& world, double now) {
+  for (const Flash& flash : flashes.flashes()) {
+    const float intensity = EventFlashes::intensity(flash, now);
+    if (intensity <= 0) continue;
+    if (flash.kind == Flash::Kind::Hit) {
+      // A ring that widens as it fades around a fading core, at the hit.
+      const HitMark mark = hitMark(flash.speed);
+      const float pixels = std::max(3.0f, float(mark.radius) * view.scale());
+      const ImVec2 at = pixel(view, flash.point);
+      const float light = mark.brightness * intensity;
+      list.AddCircleFilled(at, pixels, faded(palette::kHitFlash, 0.6f * light));
+      list.AddCircle(at, pixels * (1.5f - 0.5f * intensity), faded(palette::kHitFlash, light), 0, 2.0f);
+      continue;
+    }
+    const DrawnBody* body = world.findDrawn(flash.body);
+    if (body == nullptr) continue;
+    const bool sensor = flash.kind == Flash::Kind::SensorBegin;
+    const Colour colour = sensor ? palette::kSensorFlash : palette::kContactFlash;
+    drawOver(list, view, *body, std::nullopt,
+             {.fill = sensor ? faded(colour, 0.45f * intensity) : 0,
+              .edge = faded(colour, intensity),
+              .thickness = sensor ? 3.0f : 2.0f});
+  }
 }
 
 }  // namespace impulse::viewer

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "controls.h"
+#include "event_flashes.h"
 #include "impulse/field_kinds.h"
 #include "impulse/scenes/presets.h"
 #include "interpolated_world.h"
@@ -51,6 +52,15 @@ class WorldRenderer {
   /// The shape being drawn (polygon, circle, capsule, segment or chain),
   /// and the cursor dot of the point-placing tools.
   void drawPreview(ImDrawList& list, const ViewTransform& view, const Controls& controls);
+  /// The ray tool: the ray aimed (thin while its cast is on the way), the
+  /// answered ray solid up to its hit, the hit point, the hit surface's
+  /// normal as an arrow and the hit shape of `hitBody` outlined.
+  void drawRay(ImDrawList& list, const ViewTransform& view, const RayTool& ray,
+               const DrawnBody* hitBody);
+  /// The event flashes at `now`: hit marks where they happened, glows on
+  /// the bodies of `world` that they name.
+  void drawFlashes(ImDrawList& list, const ViewTransform& view, const EventFlashes& flashes,
+                   const InterpolatedWorld& world, double now);
 
  private:
   /// How one body's shapes are drawn.
@@ -60,11 +70,18 @@ class WorldRenderer {
     float thickness = 1;
     bool small = false;  ///< too small on screen for an outline of its own
     ImU32 hatch = 0;     ///< stripes over the fill (kinematic bodies); none when 0
+    bool dashed = false; ///< a thin dashed outline (sensors)
   };
   void drawBody(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
-                Colour outline, float thickness);
+                const SurfaceLook& surface, float thickness);
   void drawShape(ImDrawList& list, const ViewTransform& view, const Transform& xf, const Shape& shape,
                  const ShapeColours& colours);
+  void drawSensorShape(ImDrawList& list, const ViewTransform& view, const Transform& xf, const Shape& shape,
+                       const ShapeColours& colours);
+  /// The body's shapes again in `colours` (only the shape `shapeId` when
+  /// given): the ray's hit, a flash.
+  void drawOver(ImDrawList& list, const ViewTransform& view, const DrawnBody& body,
+                std::optional<std::uint32_t> shapeId, const ShapeColours& colours);
   void drawFluid(ImDrawList& list, const ViewTransform& view, const FluidDef& fluid);
   void drawFan(ImDrawList& list, const ViewTransform& view, const FanDef& fan);
   void drawGravitationMarker(ImDrawList& list, const ViewTransform& view);
@@ -76,6 +93,8 @@ class WorldRenderer {
   std::vector<Vec2> outline_;
   std::vector<Vec2> springPoints_;
   std::vector<ImVec2> inset_;
+  std::vector<PixelPoint> path_;
+  std::vector<PixelPoint> dashes_;
 };
 
 }  // namespace impulse::viewer

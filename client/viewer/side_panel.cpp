@@ -28,9 +28,10 @@ std::string modeName(DrawMode mode) {
     case DrawMode::Capsule: return "capsule (R to finish, - = radius, Esc cancels)";
     case DrawMode::Segment: return "segment (L to finish, Esc cancels)";
     case DrawMode::Chain: return "chain (H to finish, Shift+H to close, Esc cancels)";
+    case DrawMode::Ray: return "ray (drag it; E or Esc leaves)";
     case DrawMode::None: break;
   }
-  return "none (P polygon, O circle, R capsule, L segment, H chain)";
+  return "none (P polygon, O circle, R capsule, L segment, H chain, E ray)";
 }
 
 ImVec4 linkColour(LinkState link) {
@@ -80,8 +81,23 @@ void drawTime(const PanelInput& input, const std::function<void(ControlKey)>& ac
   drawTimeScale(input, act);
 }
 
+void drawRayAnswer(const Controls& controls) {
+  if (controls.mode() != DrawMode::Ray) return;
+  const auto& answer = controls.rayTool().answer();
+  if (!answer) {
+    ImGui::TextWrapped("Ray (E): drag across the scene");
+    return;
+  }
+  ImGui::TextWrapped("Ray (E): %s", describeRay(*answer).c_str());
+  if (!answer->hit) return;
+  const RayHit& hit = *answer->hit;
+  ImGui::TextWrapped("  point (%s, %s) m, normal (%s, %s)", formatNumber(hit.point.x(), 3).c_str(),
+                     formatNumber(hit.point.y(), 3).c_str(), formatNumber(hit.normal.x(), 3).c_str(),
+                     formatNumber(hit.normal.y(), 3).c_str());
+}
+
 // The part of the panel that never scrolls: what is shown, where, and when.
-void drawHeader(const PanelFonts& fonts, const PanelInput& input,
+void drawHeader(const PanelFonts& fonts, const Controls& controls, const PanelInput& input,
                 const std::function<void(ControlKey)>& act) {
   ImGui::PushFont(fonts.title);
   ImGui::TextWrapped("%s", input.preset != nullptr ? input.preset->title.c_str() : "Impulse");
@@ -95,6 +111,8 @@ void drawHeader(const PanelFonts& fonts, const PanelInput& input,
     ImGui::TextWrapped("%s", input.notice->c_str());
     ImGui::PopStyleColor();
   }
+  // What the ray tool's ray hit stays in sight while the tool is in use.
+  drawRayAnswer(controls);
 }
 
 void swatch(Colour fill, Colour outline, float thickness, bool striped = false) {
@@ -130,6 +148,9 @@ void drawLegend(const Controls& controls, const std::function<void(ControlKey)>&
   ImGui::TextUnformatted("kinematic (striped)");
   swatch(bodyFill(Material::Solid, false), palette::kSleep, 2.5f);
   ImGui::TextUnformatted("asleep (violet outline)");
+  const SurfaceLook sensor = surfaceLook(Material::Solid, true, false, true);
+  swatch(sensor.fill, sensor.outline, 1.0f);
+  ImGui::TextUnformatted("sensor (see-through, dashed)");
   swatch(palette::kSceneBackground, palette::kSelection, 2.5f);
   ImGui::TextUnformatted("selected or grabbed");
 }
@@ -182,11 +203,15 @@ void drawGravityDial(const Vec2& gravity) {
   ImGui::EndGroup();
 }
 
-void drawOverlayToggles(Controls& controls) {
+void drawOverlayToggles(Controls& controls, const PanelInput& input) {
   Overlays& overlays = controls.overlays();
   ImGui::Checkbox("contacts and normals (K)", &overlays.contacts);
   ImGui::Checkbox("bounding boxes (B)", &overlays.bounds);
   ImGui::Checkbox("velocities (V)", &overlays.velocities);
+  ImGui::Checkbox("flash hits, contacts, sensors (N)", &overlays.eventFlashes);
+  if (overlays.eventFlashes) {
+    ImGui::TextDisabled("  events received: %llu", static_cast<unsigned long long>(input.eventMessages));
+  }
 }
 
 void drawControlsSection(Controls& controls, const std::function<void(ControlKey)>& act) {
@@ -212,11 +237,12 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   state.stopButton.reset();
   state.poseFields.reset();
   state.typeButtons = {};
+  state.flagBoxes = {};
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.w, rect.h});
   ImGui::Begin("##side panel", nullptr,
                kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  drawHeader(fonts, input, act);
+  drawHeader(fonts, controls, input, act);
   ImGui::Separator();
   // Only the sections scroll; the header above stays.
   ImGui::BeginChild("##sections");
@@ -234,7 +260,7 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
     drawStatsSection(input);
   }
   if (ImGui::CollapsingHeader("Debug overlays", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawOverlayToggles(controls);
+    drawOverlayToggles(controls, input);
   }
   if (ImGui::CollapsingHeader("Next shape and materials", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawNextShape(controls, act);

@@ -52,6 +52,8 @@ struct PanelInput {
   const v1::ServerStats* stats = nullptr;
   const History* stepMs = nullptr;
   const History* kineticEnergy = nullptr;
+  /// Events messages received while the flashes are on.
+  std::uint64_t eventMessages = 0;
   std::optional<std::string> notice;
 };
 
@@ -88,6 +90,9 @@ struct PanelState {
   /// and dynamic buttons, when on screen.
   std::optional<PixelRect> poseFields;
   std::array<std::optional<PixelRect>, 3> typeButtons;
+  /// The inspector's flag check boxes: sensor, sensor events, contact
+  /// events, hit events, when on screen.
+  std::array<std::optional<PixelRect>, 4> flagBoxes;
   FieldsEdit poseEdit;      ///< x, y (m), angle (degrees)
   FieldsEdit velocityEdit;  ///< vx, vy (m/s), angular (rad/s)
 };

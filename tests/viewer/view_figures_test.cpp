@@ -91,8 +91,8 @@ DrawnBody drawn(const BodyLook& look, std::uint32_t id, Vec2 position, Vec2 velo
 }
 
 TEST(ContactFinder, FindsTouchingPairsWithTheirNormal_SkipsSeparatedAndStaticPairs) {
-  const BodyLook ball{Shape::makeCircle(1), {}, Material::Solid, false, false, false};
-  const BodyLook floor{Shape::makePolygon(makeBox(10, 0.5f)), {}, Material::Solid, true, false, false};
+  const BodyLook ball{.shape = Shape::makeCircle(1)};
+  const BodyLook floor{.shape = Shape::makePolygon(makeBox(10, 0.5f)), .isStatic = true};
   const std::vector<DrawnBody> bodies{
       drawn(ball, 1, Vec2(0, 1.5f)),     // resting on the floor
       drawn(floor, 2, Vec2(0, 0)),       // the floor
@@ -117,8 +117,8 @@ TEST(ContactFinder, FindsTouchingPairsWithTheirNormal_SkipsSeparatedAndStaticPai
 }
 
 TEST(BodyMetrics, KineticEnergyCountsMovingAndSpinningDynamicBodiesOnly) {
-  const BodyLook ball{Shape::makeCircle(1), {}, Material::Solid, false, false, false};
-  const BodyLook wall{Shape::makeCircle(1), {}, Material::Solid, true, false, false};
+  const BodyLook ball{.shape = Shape::makeCircle(1)};
+  const BodyLook wall{.shape = Shape::makeCircle(1), .isStatic = true};
   const MassProperties mass = massOf(ball);
   EXPECT_NEAR(mass.mass, 500 * 3.14159265f, 0.5f);
   const std::vector<DrawnBody> bodies{drawn(ball, 1, Vec2::Zero(), Vec2(2, 0), 0),
@@ -137,13 +137,13 @@ TEST(BodyMetrics, DescribesShapesWithTheirSize) {
 
 TEST(BodyMetrics, ABodyIsTouchedInAnyOfItsShapes_AndNearItsLines) {
   // A compound body: a box with a wheel 3 m to its right, moved to (10, 0).
-  const BodyLook cart{Shape::makePolygon(makeBox(1, 0.25f)), {Shape::makeCircle(0.5f, Vec2(3, 0))},
-                      Material::Solid, false, false, false};
+  const BodyLook cart{.shape = Shape::makePolygon(makeBox(1, 0.25f)),
+                      .extraShapes = {Shape::makeCircle(0.5f, Vec2(3, 0))}};
   const Transform xf{Vec2(10, 0), Rot::fromAngle(0)};
   EXPECT_TRUE(bodyTouches(cart, xf, Vec2(10.5f, 0.1f), 0.1f));
   EXPECT_TRUE(bodyTouches(cart, xf, Vec2(13.2f, 0.2f), 0.1f));
   EXPECT_FALSE(bodyTouches(cart, xf, Vec2(12, 0), 0.1f));
-  const BodyLook wall{Shape::makeSegment(Vec2(0, 0), Vec2(0, 4)), {}, Material::Solid, true, false, false};
+  const BodyLook wall{.shape = Shape::makeSegment(Vec2(0, 0), Vec2(0, 4)), .isStatic = true};
   EXPECT_TRUE(bodyTouches(wall, xf, Vec2(10.08f, 2), 0.1f));
   EXPECT_FALSE(bodyTouches(wall, xf, Vec2(10.15f, 2), 0.1f));
   EXPECT_FALSE(bodyTouches(wall, xf, Vec2(10, 4.2f), 0.1f));
