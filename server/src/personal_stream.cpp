@@ -13,6 +13,9 @@ namespace {
 constexpr double kBurstSeconds = 0.25;
 /// The first delta's share of a new budget.
 constexpr double kFirstShareSeconds = 0.1;
+/// The most a budget may owe (a full snapshot larger than this is partly
+/// forgiven): states flow again within a second of any full snapshot.
+constexpr double kMostOwedSeconds = 1;
 /// A waiting body this fast (m/s) or faster weighs twice a still one.
 constexpr double kFastSpeed = 10;
 
@@ -129,7 +132,7 @@ void PersonalStream::markSent(std::size_t rankedSent) {
 }
 
 void PersonalStream::charge(std::size_t bytes) {
-  if (budget_) bucket_ -= double(bytes);
+  if (budget_) bucket_ = std::max(bucket_ - double(bytes), -*budget_ * kMostOwedSeconds);
 }
 
 std::uint64_t PersonalStream::oldestWithheldTicks(std::uint64_t tick) const {

@@ -14,13 +14,14 @@ using client::Client;
 TEST(BandwidthBudget, BytesStayUnderTheBudgetAndEveryBodyComes) {
   ServerProcess server(timedRates());
   Client driver(localClient(server.port(), "driver", false));
+  ASSERT_TRUE(result(driver.request(client::clearWorld())).ok());
   requestAll(driver, circleGrid(true));  // 2000 bodies rising together
   Client watcher(localClient(server.port(), "watcher"));
   constexpr double kBudget = 40000;
   ASSERT_TRUE(result(watcher.request(client::setBandwidthBudget(kBudget))).ok());
 
-  // The full snapshot that starts the budgeted stream is paid for first: the
-  // budget owes it for a while, then deltas flow at the budget.
+  // The full snapshot that starts the budgeted stream is paid for first (up
+  // to a second's bytes), then deltas flow at the budget.
   std::size_t bytes = 0;
   std::uint64_t oldestWithheld = 0;
   std::uint32_t withheld = 0;

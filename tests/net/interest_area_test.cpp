@@ -18,7 +18,9 @@ struct Row {
   std::uint32_t mover = 0;
 };
 
+// Clears the preset's bodies first.
 Row spawnRow(Client& driver) {
+  EXPECT_TRUE(result(driver.request(client::clearWorld())).ok());
   std::vector<v1::ClientMessage> commands;
   client::SpawnOptions still;
   still.ignoreGravity = true;

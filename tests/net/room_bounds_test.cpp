@@ -43,6 +43,7 @@ TEST(RoomBounds, TheAdminMakesALevelSizedRoom) {
   options.room = "level";
   options.roomBounds = client::Box{{-1000, -100}, {3000, 500}};
   Client maker(options);
+  ASSERT_TRUE(result(maker.request(client::clearWorld())).ok()) << "the preset's bodies";
   EXPECT_EQ(maker.welcome().world_min().x(), -1000);
   EXPECT_EQ(maker.welcome().world_max().x(), 3000);
   EXPECT_EQ(maker.welcome().world_max().y(), 500);
@@ -57,7 +58,8 @@ TEST(RoomBounds, TheAdminMakesALevelSizedRoom) {
   EXPECT_EQ(joiner.welcome().world_min().x(), -1000) << "a joiner takes the room's bounds";
   ASSERT_EQ(joiner.mirror().bodies().size(), 1u);
   EXPECT_NEAR(joiner.mirror().bodies().begin()->second.state.position.x(), 2500, 0.01);
-  for (const auto& room : joiner.request(client::listRooms()).room_list().rooms()) {
+  const v1::ServerMessage list = joiner.request(client::listRooms());
+  for (const auto& room : list.room_list().rooms()) {
     EXPECT_EQ(room.world_max().x(), room.name() == "level" ? 3000 : 50) << room.name();
   }
 }

@@ -44,11 +44,12 @@ TEST(StampedCommands, LateStampIsAppliedAtOnceAndTheReplySaysSo) {
   std::this_thread::sleep_for(milliseconds(300));
   const std::uint64_t now = client.ping().server_tick();
   ASSERT_GT(now, 10u);
+  const std::uint32_t bodiesBefore = client.ping().stats().bodies();
   const v1::CommandResult applied = result(client.request(client::forTick(circleAt(3), now - 10)));
   EXPECT_TRUE(applied.ok()) << applied.error();
   EXPECT_TRUE(applied.late());
   EXPECT_GE(applied.tick(), now);
-  EXPECT_EQ(client.ping().stats().bodies(), 1u);
+  EXPECT_EQ(client.ping().stats().bodies(), bodiesBefore + 1);
   const v1::CommandResult unstamped = result(client.request(circleAt(5)));
   EXPECT_FALSE(unstamped.late()) << "an unstamped command is never late";
 }
@@ -64,6 +65,7 @@ TEST(StampedCommands, StampsBeyondTheBoundAreRefusedAndChangeNothing) {
   std::this_thread::sleep_for(milliseconds(300));
   const std::uint64_t now = client.ping().server_tick();
   ASSERT_GT(now, 10u);
+  const std::uint32_t bodiesBefore = client.ping().stats().bodies();
   for (const std::uint64_t stamp : {now + 1000, std::uint64_t(0), ~std::uint64_t(0)}) {
     SCOPED_TRACE(stamp);
     const v1::CommandResult refused = result(client.request(client::forTick(circleAt(3), stamp)));
@@ -72,7 +74,7 @@ TEST(StampedCommands, StampsBeyondTheBoundAreRefusedAndChangeNothing) {
     EXPECT_TRUE(mentions(refused.error(), "at most 5")) << refused.error();
     EXPECT_TRUE(mentions(refused.error(), "--max-input-delay")) << refused.error();
   }
-  EXPECT_EQ(client.ping().stats().bodies(), 0u);
+  EXPECT_EQ(client.ping().stats().bodies(), bodiesBefore);
   EXPECT_EQ(client.ping().stats().commands_queued(), 0u) << "nothing left waiting";
 }
 

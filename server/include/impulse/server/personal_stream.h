@@ -56,7 +56,7 @@ class PersonalStream {
   /// The delta carries the first `rankedSent` of its ranked states.
   void markSent(std::size_t rankedSent);
   /// A snapshot of `bytes` went out: the budget pays for it (a full
-  /// snapshot too, which may leave it owing).
+  /// snapshot too, which may leave it owing up to a second's bytes).
   void charge(std::size_t bytes);
 
   /// States waiting for the budget, and the ticks the oldest has waited.
