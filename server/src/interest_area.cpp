@@ -66,7 +66,9 @@ void BodyPlaces::update(const World& world, const WorldChanges& changes) {
   for (const BodyId id : changes.removedIds()) reaches_.erase(id.value);
   places_.clear();
   for (const BodyId id : world.bodyIds()) {
-    if (const auto state = world.bodyState(id)) places_.push_back({id.value, state->position, reachOf(world, id.value)});
+    if (const auto state = world.bodyState(id)) {
+      places_.push_back({id.value, state->position, reachOf(world, id.value), state->linearVelocity});
+    }
   }
   std::ranges::sort(places_, {}, &BodyPlace::id);
 }
@@ -74,6 +76,11 @@ void BodyPlaces::update(const World& world, const WorldChanges& changes) {
 void BodyPlaces::rebuild(const World& world) {
   reaches_.clear();
   update(world, WorldChanges{});
+}
+
+const BodyPlace* BodyPlaces::find(std::uint32_t id) const {
+  const auto place = std::ranges::lower_bound(places_, id, {}, &BodyPlace::id);
+  return place != places_.end() && place->id == id ? &*place : nullptr;
 }
 
 void BodyPlaces::inside(const AABB& area, std::vector<std::uint32_t>& ids) const {

@@ -68,8 +68,8 @@ const std::vector<std::uint32_t>& PersonalStream::planFull(const BodyPlaces& pla
   return known_;
 }
 
-const PersonalDelta& PersonalStream::planDelta(const World& world, const BodyPlaces& places,
-                                               const WorldChanges& changes, std::uint64_t tick) {
+const PersonalDelta& PersonalStream::planDelta(const BodyPlaces& places, const WorldChanges& changes,
+                                               std::uint64_t tick, std::size_t maxRanked) {
   places.inside(area_.value_or(wholeRoom()), inside_);
   const Ids removed = valuesOf(changes.removedIds());
   const Ids entering = difference(inside_, known_);
@@ -91,32 +91,35 @@ const PersonalDelta& PersonalStream::planDelta(const World& world, const BodyPla
       return !std::ranges::binary_search(inside_, entry.first) ||
              std::ranges::binary_search(redescribed, entry.first);
     });
-    rank(world);
+    rank(places, maxRanked);
   }
   known_.swap(inside_);
   return delta_;
 }
 
-double PersonalStream::weight(const BodyState& state) const {
-  const double fast = std::min(double(state.linearVelocity.norm()) / kFastSpeed, 1.0);
+double PersonalStream::weight(const BodyPlace& place) const {
+  const double fast = std::min(double(place.velocity.norm()) / kFastSpeed, 1.0);
   double near = 0;
   if (area_) {
     const Vec2 centre = (area_->lower + area_->upper) / 2;
     const double halfDiagonal = (area_->upper - area_->lower).norm() / 2;
-    near = 1 - std::min(double((state.position - centre).norm()) / halfDiagonal, 1.0);
+    near = 1 - std::min(double((place.centre - centre).norm()) / halfDiagonal, 1.0);
   }
   return (1 + near) * (1 + fast);
 }
 
-void PersonalStream::rank(const World& world) {
+void PersonalStream::rank(const BodyPlaces& places, std::size_t count) {
   ranking_.clear();
   for (auto& [id, waiting] : withheld_) {
-    if (const auto state = world.bodyState(BodyId{id})) waiting.priority += weight(*state);
+    if (const BodyPlace* place = places.find(id)) waiting.priority += weight(*place);
     ranking_.emplace_back(-waiting.priority, id);
   }
-  // Highest priority first; equal ones by id, so a run is repeatable.
-  std::ranges::sort(ranking_);
-  for (const auto& [negated, id] : ranking_) delta_.ranked.push_back(id);
+  // Highest priority first; equal ones by id, so a run is repeatable. Only
+  // the few the budget can carry need an order.
+  const auto top = ranking_.begin() + std::ptrdiff_t(std::min(count, ranking_.size()));
+  std::ranges::nth_element(ranking_, top);
+  std::sort(ranking_.begin(), top);
+  for (auto it = ranking_.begin(); it != top; ++it) delta_.ranked.push_back(it->second);
 }
 
 std::optional<double> PersonalStream::allowance(std::uint64_t tick, double tickHz) {

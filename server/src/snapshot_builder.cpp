@@ -223,7 +223,12 @@ void SnapshotBuilder::refreshPlaces() {
 SharedFrame SnapshotBuilder::personalDelta(PersonalStream& stream, const WorldChanges& changes) {
   if (stream.startsOver() || changes.wasReplaced()) return personalFull(stream);
   const World& world = simulation_.world();
-  const PersonalDelta& plan = stream.planDelta(world, places_, changes, simulation_.tick());
+  const auto allowance = stream.allowance(simulation_.tick(), simulation_.tickHz());
+  // The smallest state message is about this many bytes: no more than the
+  // allowance over it can be sent, so no more need ranking.
+  constexpr double kSmallestStateBytes = 16;
+  const std::size_t maxRanked = allowance ? std::size_t(std::max(*allowance, 0.0) / kSmallestStateBytes) : 0;
+  const PersonalDelta& plan = stream.planDelta(places_, changes, simulation_.tick(), maxRanked);
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
@@ -234,7 +239,7 @@ SharedFrame SnapshotBuilder::personalDelta(PersonalStream& stream, const WorldCh
   for (const std::uint32_t id : plan.described) addDescriptor(world, BodyId{id}, snapshot);
   addJointAndFieldChanges(world, changes, snapshot);
   for (const std::uint32_t id : plan.states) addState(world, id, snapshot);
-  stream.markSent(addRankedStates(stream, plan, snapshot));
+  stream.markSent(addRankedStates(plan, allowance, snapshot));
   snapshot->set_states_withheld(std::uint32_t(stream.withheldCount()));
   snapshot->set_oldest_withheld_ticks(stream.oldestWithheldTicks(simulation_.tick()));
   SharedFrame frame = wire::encodeSharedFrame(message);
@@ -242,9 +247,8 @@ SharedFrame SnapshotBuilder::personalDelta(PersonalStream& stream, const WorldCh
   return frame;
 }
 
-std::size_t SnapshotBuilder::addRankedStates(PersonalStream& stream, const PersonalDelta& plan,
+std::size_t SnapshotBuilder::addRankedStates(const PersonalDelta& plan, std::optional<double> allowance,
                                              v1::Snapshot* snapshot) {
-  const auto allowance = stream.allowance(simulation_.tick(), simulation_.tickHz());
   if (!allowance) return 0;
   // Sizes add up field by field: a state's bytes plus its tag and length.
   double bytes = double(snapshot->ByteSizeLong());

@@ -38,12 +38,13 @@ struct BudgetRequest {
 };
 BudgetRequest budgetFromWire(const v1::SetBandwidthBudget& command);
 
-/// Where one body is: its centre and the radius of a circle about it that
-/// holds all its shapes.
+/// Where one body is: its centre, the radius of a circle about it that
+/// holds all its shapes, and its velocity.
 struct BodyPlace {
   std::uint32_t id = 0;
   Vec2 centre = Vec2::Zero();
   Real reach = 0;
+  Vec2 velocity = Vec2::Zero();
 };
 
 /// Every body's place, taken once per broadcast for all the subscribers
@@ -59,6 +60,8 @@ class BodyPlaces {
   const std::vector<BodyPlace>& places() const { return places_; }
   /// The ids of the bodies whose circle overlaps `area`, ascending.
   void inside(const AABB& area, std::vector<std::uint32_t>& ids) const;
+  /// The body's place; null for a body the world no longer has.
+  const BodyPlace* find(std::uint32_t id) const;
 
  private:
   Real reachOf(const World& world, std::uint32_t id);

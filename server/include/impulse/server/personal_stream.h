@@ -15,7 +15,6 @@
 
 #include "impulse/server/interest_area.h"
 #include "impulse/server/world_changes.h"
-#include "impulse/world.h"
 
 namespace impulse::server {
 
@@ -26,8 +25,9 @@ struct PersonalDelta {
   std::vector<std::uint32_t> leftArea;   ///< known bodies now outside the area
   std::vector<std::uint32_t> described;  ///< entering, or described again
   std::vector<std::uint32_t> states;     ///< states that go out whatever the budget
-  /// Under a budget: the states waiting, most important first, sent while
-  /// the budget lasts (then reported with sent()).
+  /// Under a budget: the most important of the states waiting, highest
+  /// first (at most as many as the budget could carry), sent while the
+  /// budget lasts (then reported with markSent()).
   std::vector<std::uint32_t> ranked;
 };
 
@@ -47,9 +47,10 @@ class PersonalStream {
   /// The ids of a full snapshot's bodies (those inside the area, ascending),
   /// which the client then holds; nothing waits any more.
   const std::vector<std::uint32_t>& planFull(const BodyPlaces& places);
-  /// What the next delta carries. `changes` is normalised.
-  const PersonalDelta& planDelta(const World& world, const BodyPlaces& places, const WorldChanges& changes,
-                                 std::uint64_t tick);
+  /// What the next delta carries, ranking at most `maxRanked` waiting
+  /// states. `changes` is normalised.
+  const PersonalDelta& planDelta(const BodyPlaces& places, const WorldChanges& changes, std::uint64_t tick,
+                                 std::size_t maxRanked);
   /// Bytes this delta may spend (none: no budget), after a refill for the
   /// ticks since the last delta at `tickHz`.
   std::optional<double> allowance(std::uint64_t tick, double tickHz);
@@ -70,9 +71,9 @@ class PersonalStream {
   };
   /// How much a waiting state matters now: more near the area's centre and
   /// when fast, between 1 and 4; added up over the deltas it waits.
-  double weight(const BodyState& state) const;
-  /// Adds each waiting state's weight and ranks them, highest first.
-  void rank(const World& world);
+  double weight(const BodyPlace& place) const;
+  /// Adds each waiting state's weight and ranks the `count` highest.
+  void rank(const BodyPlaces& places, std::size_t count);
 
   std::optional<AABB> area_;
   std::optional<double> budget_;

@@ -65,9 +65,9 @@ class SnapshotBuilder {
 
  private:
   void startQuantized();
-  /// Adds the stream's waiting states, highest ranked first, while the
-  /// budget lasts; returns how many.
-  std::size_t addRankedStates(PersonalStream& stream, const PersonalDelta& plan, v1::Snapshot* snapshot);
+  /// Adds the plan's ranked states, highest first, while the `allowance`
+  /// (bytes; none: no budget) lasts; returns how many.
+  std::size_t addRankedStates(const PersonalDelta& plan, std::optional<double> allowance, v1::Snapshot* snapshot);
 
   const Simulation& simulation_;
   // Full-snapshot cache: valid while the simulation's version and meta are equal.
