@@ -3,8 +3,12 @@
 // room with awake bodies (a grid drifting without gravity or contacts: every
 // body moves every tick, none sleeps), connects the subscribers, and
 // measures each second: the server's tick time and rate (Pong stats),
-// bytes per second per client, and the server's CPU. bench/README.md,
-// "Load", has the figures and the chart.
+// bytes per second per client, and the server's CPU. With --awake fewer
+// than all, the rest are created asleep and the awake ones spin in place
+// (still streamed every snapshot, never waking the others); --area-fraction
+// gives each subscriber an area of interest and --budget a bandwidth budget
+// (docs/networked-play.md). bench/README.md, "Load", has the figures and
+// the chart.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -28,6 +32,13 @@ using Clock = std::chrono::steady_clock;
 
 struct LoadOptions {
   int bodies = 10000;
+  /// Awake bodies among them; -1: all.
+  int awake = -1;
+  /// Each subscriber's area of interest: this fraction of the grid, a
+  /// vertical strip (subscriber i the (i mod n)-th); 0: the whole room.
+  double areaFraction = 0;
+  /// Each subscriber's bandwidth budget, bytes a second; 0: none.
+  double budget = 0;
   int subscribers = 16;
   double seconds = 10;
   double warmupSeconds = 2;
@@ -51,28 +62,66 @@ struct Sample {
   double serverCpuPercent = 0;  // of one core
 };
 
-// A grid of circles with no gravity, each drifting at the same velocity and
-// spin: no contacts, all awake, every state field non-zero (the costliest
-// body to encode).
-std::vector<impulse::v1::ClientMessage> driftingGrid(int bodies) {
-  const int columns = int(std::ceil(std::sqrt(double(bodies))));
-  impulse::client::SpawnOptions options;
-  options.ignoreGravity = true;
-  options.velocityX = 0.25;
-  options.velocityY = 0.5;
-  options.angularVelocity = 0.7f;
+constexpr double kGridOrigin = -22;
+constexpr double kGridSpacing = 0.6;
+constexpr const char* kRoom = "load";
+
+int gridColumns(int bodies) { return int(std::ceil(std::sqrt(double(bodies)))); }
+
+// The grid's extent, metres from its origin (it is square).
+double gridSide(int bodies) { return kGridSpacing * gridColumns(bodies); }
+
+// A grid of circles with no gravity. All awake: each drifts at the same
+// velocity and spin: no contacts, every state field non-zero (the costliest
+// body to encode). Fewer awake: one in bodies/awake spins in place and the
+// others are made asleep, so none touches another and the awake count holds.
+std::vector<impulse::v1::ClientMessage> grid(int bodies, int awake) {
+  const int columns = gridColumns(bodies);
+  const bool allAwake = awake < 0 || awake >= bodies;
+  const int stride = allAwake ? 1 : bodies / std::max(awake, 1);
   std::vector<impulse::v1::ClientMessage> commands;
   for (int i = 0; i < bodies; ++i) {
-    const double x = -22 + 0.6 * (i % columns);
-    const double y = -22 + 0.6 * (i / columns);
+    impulse::client::SpawnOptions options;
+    options.ignoreGravity = true;
+    options.isAwake = allAwake || (awake > 0 && i % stride == 0);
+    options.angularVelocity = options.isAwake ? 0.7f : 0.0f;
+    options.velocityX = allAwake ? 0.25 : 0.0;
+    options.velocityY = allAwake ? 0.5 : 0.0;
+    const double x = kGridOrigin + kGridSpacing * (i % columns);
+    const double y = kGridOrigin + kGridSpacing * (i / columns);
     commands.push_back(impulse::client::spawnCircle({x, y}, 0.2, options));
   }
   return commands;
 }
 
-void fill(impulse::client::Client& admin, int bodies) {
+// The room's bounds: the default ones, grown to hold the grid and its drift.
+impulse::client::Box roomBounds(int bodies) {
+  const double far = std::max(50.0, kGridOrigin + gridSide(bodies) + 20);
+  return {{-25, -25}, {far, far}};
+}
+
+// Subscriber `index`'s strip of the grid: `fraction` of its width, all its height.
+impulse::client::Box areaOf(int index, double fraction, int bodies) {
+  const int strips = std::max(1, int(std::lround(1 / fraction)));
+  const double width = gridSide(bodies) / strips;
+  const double left = kGridOrigin - kGridSpacing / 2 + width * (index % strips);
+  return {{left, kGridOrigin - 1}, {left + width, kGridOrigin + gridSide(bodies) + 1}};
+}
+
+load::Opening opening(const LoadOptions& options, load::Encoding encoding) {
+  return [=](int index) {
+    std::vector<impulse::v1::ClientMessage> messages{load::subscriberHello(encoding, index, kRoom)};
+    if (options.areaFraction > 0) {
+      messages.push_back(impulse::client::setInterestArea(areaOf(index, options.areaFraction, options.bodies)));
+    }
+    if (options.budget > 0) messages.push_back(impulse::client::setBandwidthBudget(options.budget));
+    return messages;
+  };
+}
+
+void fill(impulse::client::Client& admin, int bodies, int awake) {
   std::vector<std::uint64_t> ids;
-  for (auto& command : driftingGrid(bodies)) ids.push_back(admin.send(std::move(command)));
+  for (auto& command : grid(bodies, awake)) ids.push_back(admin.send(std::move(command)));
   for (const auto id : ids) {
     const auto reply = admin.awaitReply(id, std::chrono::milliseconds(60000));
     if (!reply || !reply->command_result().ok()) {
@@ -139,7 +188,7 @@ double maximum(const std::vector<Sample>& samples, double Sample::*field) {
 }
 
 void report(const LoadOptions& options, const std::vector<Sample>& samples,
-            const std::string& sampled, int closed) {
+            const std::string& sampled, int closed, double longestWithheldSeconds) {
   std::printf("%6s %10s %10s %9s %8s %7s %12s %12s %9s %8s\n", "second", "tick ms", "max ms",
               "ticks/s", "skipped", "awake", "B/s/client", "min B/s", "snaps/s", "CPU %");
   for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -155,13 +204,17 @@ void report(const LoadOptions& options, const std::vector<Sample>& samples,
       "summary: %d bodies, %d subscribers (%s), %.0f Hz ticks, %.0f Hz snapshots: tick %.2f ms "
       "mean (worst second's max %.2f ms, period %.2f ms), %.1f ticks/s, %llu skipped, "
       "%.0f B/s per client (%.2f Mbit/s), %.1f snapshots/s per client, %.0f %% of a core "
-      "(server); %s in a sampled snapshot; %d subscriber(s) dropped\n",
+      "(server); %s in a sampled snapshot; %d subscriber(s) dropped\n"
+      "streams: %d awake, area %s, budget %s; longest withheld state seen %.2f s\n",
       options.bodies, options.subscribers, options.encoding.c_str(), options.tickHz,
       options.snapshotHz, mean(samples, &Sample::tickMeanMs), maximum(samples, &Sample::tickMaxMs),
       1000 / options.tickHz, mean(samples, &Sample::ticksPerSecond),
       static_cast<unsigned long long>(skipped), mean(samples, &Sample::bytesPerClient),
       mean(samples, &Sample::bytesPerClient) * 8 / 1e6, mean(samples, &Sample::snapshotsPerClient),
-      mean(samples, &Sample::serverCpuPercent), sampled.c_str(), closed);
+      mean(samples, &Sample::serverCpuPercent), sampled.c_str(), closed,
+      options.awake < 0 ? options.bodies : options.awake,
+      options.areaFraction > 0 ? (std::to_string(options.areaFraction) + " of the grid").c_str() : "whole room",
+      options.budget > 0 ? (std::to_string(int(options.budget)) + " B/s").c_str() : "none", longestWithheldSeconds);
 }
 
 void chart(const LoadOptions& options, const std::vector<Sample>& samples) {
@@ -192,6 +245,13 @@ int main(int argc, char** argv) {
                "impulse-load-bench");
   app.add_option("--bodies", options.bodies, "awake bodies (default 10000)")
       ->check(CLI::Range(1, 200000));
+  app.add_option("--awake", options.awake, "awake bodies among them, the rest asleep (default: all)")
+      ->check(CLI::Range(0, 200000));
+  app.add_option("--area-fraction", options.areaFraction,
+                 "each subscriber's area of interest, this fraction of the grid (default: the whole room)")
+      ->check(CLI::Range(0.01, 1.0));
+  app.add_option("--budget", options.budget, "each subscriber's bandwidth budget, bytes a second (default: none)")
+      ->check(CLI::Range(1000.0, 1.25e8));
   app.add_option("--subscribers", options.subscribers, "subscribers (default 16)")
       ->check(CLI::Range(1, 1000));
   app.add_option("--seconds", options.seconds, "measured seconds (default 10)")
@@ -220,6 +280,7 @@ int main(int argc, char** argv) {
         {"--tick-hz", std::to_string(options.tickHz), "--snapshot-hz",
          // Room for the preset's scenery besides the bench's bodies.
          std::to_string(options.snapshotHz), "--max-bodies", std::to_string(options.bodies + 100),
+         "--max-total-bodies", std::to_string(options.bodies + 1000),
          "--max-clients", std::to_string(options.subscribers + 8), "--max-clients-per-address",
          std::to_string(options.subscribers + 8), "--max-commands-per-second", "1000000",
          "--room-threads", std::to_string(options.roomThreads)});
@@ -227,16 +288,21 @@ int main(int argc, char** argv) {
     connect.port = server.port();
     connect.name = "load-admin";
     connect.wantSnapshots = false;
+    connect.room = kRoom;
+    connect.roomBounds = roomBounds(options.bodies);
     impulse::client::Client admin(connect);
-    fill(admin, options.bodies);
-    load::Subscribers subscribers(server.port(), options.subscribers, encoding);
+    fill(admin, options.bodies, options.awake);
+    // Under a budget subscriber 0 reads every snapshot, for the longest wait.
+    load::Subscribers subscribers(server.port(), options.subscribers, opening(options, encoding),
+                                  options.budget > 0 ? 1 : 30);
     std::this_thread::sleep_for(std::chrono::duration<double>(options.warmupSeconds));
     const auto samples = measure(options, admin, subscribers, server);
     const std::string sampled =
         encoding == load::Encoding::Quantized
             ? std::to_string(subscribers.sampledQuantizedBytes()) + " bytes of quantized body states"
             : std::to_string(subscribers.sampledBodies()) + " body states";
-    report(options, samples, sampled, subscribers.closed());
+    report(options, samples, sampled, subscribers.closed(),
+           double(subscribers.sampledOldestWithheldTicks()) / options.tickHz);
     if (!options.svg.empty()) chart(options, samples);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "impulse-load-bench: %s\n", error.what());

@@ -7,6 +7,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "impulse/wire/framing.h"
@@ -14,9 +15,6 @@
 namespace load {
 
 namespace {
-
-// Every this many frames subscriber 0 decodes one, to check the body count.
-constexpr std::uint64_t kSampleEvery = 30;
 
 int connectLoopback(std::uint16_t port) {
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
@@ -54,10 +52,11 @@ bool parseEncoding(const std::string& name, Encoding& encoding) {
   return false;
 }
 
-impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index) {
+impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index, const std::string& room) {
   impulse::v1::ClientMessage message;
   auto* hello = message.mutable_hello();
   hello->set_protocol_version(1);
+  hello->set_room(room);
   hello->set_client_name("load-subscriber-" + std::to_string(index));
   hello->set_want_snapshots(true);
   switch (encoding) {
@@ -70,11 +69,12 @@ impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index) {
   return message;
 }
 
-Subscribers::Subscribers(std::uint16_t port, int count, Encoding encoding) {
+Subscribers::Subscribers(std::uint16_t port, int count, const Opening& opening, std::uint64_t sampleEvery)
+    : sampleEvery_(sampleEvery) {
   for (int i = 0; i < count; ++i) {
     auto connection = std::make_unique<Connection>();
     connection->socket = connectLoopback(port);
-    sendAll(connection->socket, impulse::wire::encodeFrame(subscriberHello(encoding, i)));
+    for (const auto& message : opening(i)) sendAll(connection->socket, impulse::wire::encodeFrame(message));
     connections_.push_back(std::move(connection));
   }
   reader_ = std::thread([this] { run(); });
@@ -133,7 +133,7 @@ void Subscribers::consume(Connection& connection, const char* data, std::size_t 
       connection.header = 0;
       connection.headerShift = 0;
       const std::uint64_t frame = connection.frames++;
-      connection.sampling = sampled && frame % kSampleEvery == 0;
+      connection.sampling = sampled && frame % sampleEvery_ == 0;
       sample_.clear();
       continue;
     }
@@ -150,6 +150,7 @@ void Subscribers::sampleFrame() {
   if (!message.ParseFromString(sample_) || !message.has_snapshot()) return;
   sampledBodies_ = std::uint32_t(message.snapshot().bodies_size());
   sampledQuantizedBytes_ = std::uint32_t(message.snapshot().quantized_bodies().size());
+  sampledOldestWithheld_ = std::max(sampledOldestWithheld_.load(), message.snapshot().oldest_withheld_ticks());
 }
 
 }  // namespace load

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -22,8 +23,12 @@ enum class Encoding { Plain, Quantized };
 
 /// "plain" or "quantized"; false for a name this build does not know.
 bool parseEncoding(const std::string& name, Encoding& encoding);
-/// The Hello a subscriber sends.
-impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index);
+/// The Hello a subscriber sends to `room`.
+impulse::v1::ClientMessage subscriberHello(Encoding encoding, int index, const std::string& room);
+
+/// What subscriber `index` sends when it connects: its Hello, then any
+/// commands (an area of interest, a budget).
+using Opening = std::function<std::vector<impulse::v1::ClientMessage>(int index)>;
 
 struct SubscriberCounts {
   std::uint64_t bytes = 0;
@@ -32,8 +37,10 @@ struct SubscriberCounts {
 
 class Subscribers {
  public:
-  /// Connects `count` subscribers to 127.0.0.1:`port` and starts reading.
-  Subscribers(std::uint16_t port, int count, Encoding encoding);
+  /// Connects `count` subscribers to 127.0.0.1:`port`, sends each its
+  /// opening and starts reading. Subscriber 0 decodes one frame in
+  /// `sampleEvery`.
+  Subscribers(std::uint16_t port, int count, const Opening& opening, std::uint64_t sampleEvery);
   ~Subscribers();
   Subscribers(const Subscribers&) = delete;
   Subscribers& operator=(const Subscribers&) = delete;
@@ -45,6 +52,9 @@ class Subscribers {
   std::uint32_t sampledBodies() const { return sampledBodies_.load(); }
   /// Bytes of quantized body states in that snapshot (quantized encoding).
   std::uint32_t sampledQuantizedBytes() const { return sampledQuantizedBytes_.load(); }
+  /// The most Snapshot.oldest_withheld_ticks seen in a sampled snapshot (a
+  /// bandwidth budget's longest wait, as far as the samples saw it).
+  std::uint64_t sampledOldestWithheldTicks() const { return sampledOldestWithheld_.load(); }
   /// Connections the server closed (a healthy run has none).
   int closed() const { return closed_.load(); }
 
@@ -71,6 +81,8 @@ class Subscribers {
   std::string sample_;
   std::atomic<std::uint32_t> sampledBodies_ = 0;
   std::atomic<std::uint32_t> sampledQuantizedBytes_ = 0;
+  std::atomic<std::uint64_t> sampledOldestWithheld_ = 0;
+  std::uint64_t sampleEvery_;
   std::atomic<int> closed_ = 0;
   std::atomic<bool> stop_ = false;
   std::thread reader_;

@@ -356,6 +356,26 @@ std::optional<std::tuple<double>> parseTimeScale(Arguments& line) {
   return std::tuple{*scale};
 }
 
+std::optional<std::tuple<std::optional<client::Box>>> parseInterestArea(Arguments& line) {
+  if (line.size() > 1 && line.word(1) == "all") {
+    if (!line.maxWords(2)) return std::nullopt;
+    return std::tuple{std::optional<client::Box>()};
+  }
+  const auto x1 = line.numberAt(1), y1 = line.numberAt(2), x2 = line.numberAt(3), y2 = line.numberAt(4);
+  if (!x1 || !y1 || !x2 || !y2 || !line.maxWords(5)) return std::nullopt;
+  return std::tuple{std::optional<client::Box>(client::Box{{*x1, *y1}, {*x2, *y2}})};
+}
+
+std::optional<std::tuple<std::optional<double>>> parseBandwidthBudget(Arguments& line) {
+  if (line.size() > 1 && line.word(1) == "off") {
+    if (!line.maxWords(2)) return std::nullopt;
+    return std::tuple{std::optional<double>()};
+  }
+  const auto rate = line.numberAt(1);
+  if (!rate || !line.maxWords(2)) return std::nullopt;
+  return std::tuple{std::optional<double>(*rate)};
+}
+
 // save FILE and load FILE: the file is the CLI's (ScriptCommand::file). A
 // load's bytes are read when its line runs, after the lines before it.
 std::optional<std::tuple<>> parseSceneFileName(Arguments& line) {

@@ -139,6 +139,12 @@ int main(int argc, char** argv) {
   app.add_option("--room", arguments.connect.room,
                  "room to join, made on first join (default: the room \"default\")")
       ->option_text("NAME");
+  std::vector<double> roomBounds;
+  app.add_option("--room-bounds", roomBounds,
+                 "world bounds of the room this connection makes, in metres (admin role; default: the "
+                 "server's (-25, -25) to (50, 45))")
+      ->expected(4)
+      ->option_text("X1 Y1 X2 Y2");
   app.add_option("script", arguments.script, "script file; '-' or none: stdin")
       ->option_text("SCRIPT");
   app.footer(cli::scriptHelp());
@@ -146,6 +152,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : 2;
+  }
+  if (roomBounds.size() == 4) {
+    arguments.connect.roomBounds = client::Box{{roomBounds[0], roomBounds[1]}, {roomBounds[2], roomBounds[3]}};
   }
   const auto target = client::parseHostPort(connect);
   if (!target) {

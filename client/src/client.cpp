@@ -83,6 +83,13 @@ Client::Client(const ConnectOptions& options) : socket_(io_), reader_(options.ma
   hello.mutable_hello()->set_token(options.token);
   hello.mutable_hello()->set_room(options.room);
   hello.mutable_hello()->set_snapshot_encoding(options.snapshotEncoding);
+  if (options.roomBounds) {
+    auto* bounds = hello.mutable_hello();
+    bounds->mutable_room_min()->set_x(options.roomBounds->min.x);
+    bounds->mutable_room_min()->set_y(options.roomBounds->min.y);
+    bounds->mutable_room_max()->set_x(options.roomBounds->max.x);
+    bounds->mutable_room_max()->set_y(options.roomBounds->max.y);
+  }
   send(std::move(hello));
   while (!welcome_.has_world_max()) {
     if (!receiveOne(deadline)) throw ConnectionError("no Welcome from " + target);

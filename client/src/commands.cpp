@@ -401,4 +401,28 @@ v1::ClientMessage listRooms() {
   return message;
 }
 
+v1::ClientMessage setInterestArea(std::optional<Box> area) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_set_interest_area();
+  if (area) {
+    command->mutable_min()->set_x(area->min.x);
+    command->mutable_min()->set_y(area->min.y);
+    command->mutable_max()->set_x(area->max.x);
+    command->mutable_max()->set_y(area->max.y);
+  }
+  return message;
+}
+
+v1::ClientMessage setBandwidthBudget(std::optional<double> bytesPerSecond) {
+  v1::ClientMessage message;
+  auto* command = message.mutable_set_bandwidth_budget();
+  if (bytesPerSecond) command->set_bytes_per_second(*bytesPerSecond);
+  return message;
+}
+
+v1::ClientMessage forTick(v1::ClientMessage message, std::uint64_t tick) {
+  message.set_for_tick(tick);
+  return message;
+}
+
 }  // namespace impulse::client

@@ -24,6 +24,8 @@ bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
   ++snapshotsApplied_;
 
   for (const std::uint32_t id : snapshot.removed()) bodies_.erase(id);
+  // Out of this client's area of interest: forgotten until it comes back.
+  for (const std::uint32_t id : snapshot.left_area()) bodies_.erase(id);
   for (const std::uint32_t id : snapshot.joints_removed()) joints_.erase(id);
   for (const std::uint32_t id : snapshot.fields_removed()) fields_.erase(id);
   for (const auto& descriptor : snapshot.added()) {

@@ -331,6 +331,20 @@ void subscribeEvents(CommandContext& context, const v1::SubscribeEvents& command
   context.outcome.eventSubscription = command.enabled();
 }
 
+void setInterestArea(CommandContext& context, const v1::SetInterestArea& command) {
+  InterestAreaRequest request = interestAreaFromWire(command);
+  if (!request.error.empty()) return context.fail(request.error);
+  context.result().set_ok(true);
+  context.outcome.interestArea = std::move(request);
+}
+
+void setBandwidthBudget(CommandContext& context, const v1::SetBandwidthBudget& command) {
+  BudgetRequest request = budgetFromWire(command);
+  if (!request.error.empty()) return context.fail(request.error);
+  context.result().set_ok(true);
+  context.outcome.budget = std::move(request);
+}
+
 void setPaused(CommandContext& context, const v1::SetPaused& command) {
   context.simulation.setPaused(command.paused());
   context.succeed();

@@ -103,6 +103,11 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 200000, o.maxBodies);
        }},
+      {"--max-input-delay", true,
+       "N  ticks a command's for_tick may be ahead of (or behind) the room's tick (default 30)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         return intFlag(f, v, 0, kMaxInputDelayTicks, o.maxInputDelayTicks);
+       }},
       {"--max-total-bodies", true, "N  bodies all rooms together may hold (default 40000)",
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 10000000, o.maxTotalBodies);

@@ -20,7 +20,7 @@ Clock::duration periodOf(double hz) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
 }
 
-SimulationSettings simulationSettings(const ServerOptions& options,
+SimulationSettings simulationSettings(const ServerOptions& options, const AABB& bounds,
                                       std::shared_ptr<ServerBodies> serverBodies) {
   return {.tickHz = options.tickHz,
           .subSteps = options.subSteps,
@@ -28,7 +28,8 @@ SimulationSettings simulationSettings(const ServerOptions& options,
           .preset = options.preset,
           .paused = options.paused,
           .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost},
-          .serverBodies = std::move(serverBodies)};
+          .serverBodies = std::move(serverBodies),
+          .bounds = bounds};
 }
 
 // A CommandResult refusing a command before it reached the world.
@@ -56,14 +57,15 @@ double millisecondsSince(Clock::time_point start) {
 }  // namespace
 
 Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
-           const ServerOptions& options, RoomHost& host)
+           const ServerOptions& options, RoomHost& host, const AABB& bounds)
     : name_(std::move(name)),
+      bounds_(bounds),
       io_(io),
       strand_(asio::make_strand(steppers.get_executor())),
       options_(options),
       host_(host),
       timer_(strand_),
-      simulation_(simulationSettings(options, host.serverBodies())),
+      simulation_(simulationSettings(options, bounds, host.serverBodies())),
       snapshots_(simulation_),
       schedule_(periodOf(options.tickHz), Clock::now()),
       tickTimes_(std::size_t(std::ceil(options.tickHz))) {
@@ -98,6 +100,7 @@ void Room::stop() {
     stopped_ = true;
     timer_.cancel();
     commands_ = FairQueue();
+    stamped_.clear();
     steps_.clear();
   });
 }
@@ -106,13 +109,13 @@ void Room::stop() {
 
 void Room::join(const std::shared_ptr<Session>& session, bool wantSnapshots) {
   members_[session->id()] = session;
-  onStrand([this, client = session->id(), admin = session->admin(), wantSnapshots] {
-    welcome(client, admin, wantSnapshots);
-  });
+  onStrand([this, client = session->id(), admin = session->admin(), quantized = session->quantized(),
+            wantSnapshots] { welcome(client, admin, quantized, wantSnapshots); });
 }
 
-void Room::welcome(std::uint32_t client, bool admin, bool wantSnapshots) {
+void Room::welcome(std::uint32_t client, bool admin, bool quantized, bool wantSnapshots) {
   clients_[client] = admin;
+  if (quantized) quantizedClients_.insert(client);
   v1::ServerMessage message;
   auto* welcome = message.mutable_welcome();
   welcome->set_protocol_version(wire::kProtocolVersion);
@@ -131,6 +134,7 @@ void Room::welcome(std::uint32_t client, bool admin, bool wantSnapshots) {
   welcome->set_max_commands_per_second(std::uint32_t(options_.maxCommandsPerSecond));
   welcome->set_idle_timeout(options_.idleTimeoutSeconds);
   welcome->set_time_scale(simulation_.timeScale());
+  welcome->set_max_input_delay_ticks(std::uint32_t(options_.maxInputDelayTicks));
   outbox_.emplace_back(Reply{client, std::move(message), 0,
                              wantSnapshots ? ReplyKind::WelcomeAndSubscribe : ReplyKind::Welcome});
 }
@@ -145,8 +149,11 @@ void Room::leave(Session& session) {
   rateWaitsByLeavers_ += session.rateWaits();
   onStrand([this, client = session.id()] {
     clients_.erase(client);
+    quantizedClients_.erase(client);
+    streams_.erase(client);
     subscribeEvents(client, false);
     commands_.dropClient(client);
+    stamped_.dropClient(client);
     std::erase_if(steps_, [&](const StepJob& job) { return job.client() == client; });
   });
 }
@@ -178,6 +185,8 @@ v1::RoomInfo Room::info() const {
   info.set_clients(std::uint32_t(members_.size()));
   info.set_bodies(publishedBodies_.load());
   info.set_tick(publishedTick_.load());
+  wire::toWire(bounds_.lower, info.mutable_world_min());
+  wire::toWire(bounds_.upper, info.mutable_world_max());
   return info;
 }
 
@@ -189,6 +198,12 @@ void Room::requestFullSnapshot(std::uint32_t client, bool quantized) {
   onStrand([this, client, quantized] {
     // Between ticks the strand owns the world: built here, the frame costs
     // the I/O thread nothing, and it is cached for others asking this tick.
+    const auto stream = streams_.find(client);
+    if (stream != streams_.end() && !stream->second.wantsShared()) {
+      snapshots_.refreshPlaces();
+      outbox_.emplace_back(FullSnapshot{client, snapshots_.personalFull(stream->second), snapshotSequence_});
+      return;
+    }
     SharedFrame frame = quantized ? snapshots_.quantizedFull() : snapshots_.full();
     outbox_.emplace_back(FullSnapshot{client, std::move(frame), snapshotSequence_});
   });
@@ -248,6 +263,12 @@ void Room::deliverBroadcast(const Broadcast& broadcast) {
     if (session->subscribed()) broadcastTargets_.push_back(session);
   }
   for (const auto& session : broadcastTargets_) {
+    const auto personal =
+        std::ranges::lower_bound(broadcast.personal, session->id(), {}, &PersonalFrame::client);
+    if (personal != broadcast.personal.end() && personal->client == session->id()) {
+      session->offerSnapshot(broadcast.sequence, personal->frame);
+      continue;
+    }
     // A subscriber counted after the tick found no delta of its encoding:
     // its null frame becomes a full snapshot (or key frame) when written.
     session->offerSnapshot(broadcast.sequence,
@@ -333,6 +354,8 @@ int Room::runScaledSteps(Clock::time_point deadline) {
   const int due = simulation_.stepsDueThisTick();
   int stepped = 0;
   while (stepped < due && (stepped == 0 || Clock::now() < deadline)) {
+    // Commands stamped for the tick this step starts from meet here.
+    applyDueCommands();
     simulation_.step();
     ++stepped;
   }
@@ -359,7 +382,30 @@ void Room::applyCommands(Clock::time_point deadline) {
     if (!queued) break;
     // Leavers' queues are dropped, so the client is always a member.
     if (const auto client = clients_.find(queued->client); client != clients_.end()) {
-      applyQueued(*queued, client->second);
+      applyOrSchedule(*queued, client->second);
+    }
+  }
+  // Stamped for this tick: applied before its step, whether the room runs
+  // (runScaledSteps finds none left) or is paused.
+  applyDueCommands();
+}
+
+void Room::applyOrSchedule(QueuedCommand& queued, bool admin) {
+  const StampCheck stamp = checkStamp(queued.message, simulation_.tick(), std::uint64_t(options_.maxInputDelayTicks));
+  if (!stamp.refusal.empty()) {
+    return reply(queued.client, refusal(queued.message, stamp.refusal, simulation_.tick()), queued.bytes);
+  }
+  if (stamp.timing == StampTiming::Waits || stamp.timing == StampTiming::Now) {
+    return stamped_.schedule(std::move(queued));
+  }
+  applyQueued(queued, admin);
+}
+
+void Room::applyDueCommands() {
+  for (QueuedCommand& due : stamped_.takeDue(simulation_.tick())) {
+    // Leavers' commands are dropped, so the client is always a member.
+    if (const auto client = clients_.find(due.client); client != clients_.end()) {
+      applyQueued(due, client->second);
     }
   }
 }
@@ -373,8 +419,13 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
     }
   }
   auto outcome = applyCommand(simulation_, message, limits_);
+  // A stamp already past (it arrived late, or a paused Step ran over it).
+  if (message.has_for_tick() && message.for_tick() < simulation_.tick() && outcome.reply.has_command_result()) {
+    outcome.reply.mutable_command_result()->set_late(true);
+  }
   ownership_.recordOutcome(message, outcome.reply, client, simulation_);
   if (outcome.eventSubscription) subscribeEvents(client, *outcome.eventSubscription);
+  if (outcome.interestArea || outcome.budget) changeStream(client, message, outcome);
   wordRefusal(message, outcome.reply);
   if (outcome.ticksToStep > 0) {
     // The client's later commands wait for its Step, keeping their order.
@@ -391,6 +442,20 @@ void Room::reply(std::uint32_t client, v1::ServerMessage message, std::size_t by
   outbox_.emplace_back(Reply{client, std::move(message), bytes});
 }
 
+void Room::changeStream(std::uint32_t client, const v1::ClientMessage& message, CommandOutcome& outcome) {
+  if (quantizedClients_.contains(client)) {
+    outcome.reply = refusal(message,
+                            std::string(commandName(message)) +
+                                ": areas of interest and budgets need plain snapshots "
+                                "(Hello.snapshot_encoding SNAPSHOT_ENCODING_PLAIN)",
+                            simulation_.tick());
+    return;
+  }
+  PersonalStream& stream = streams_[client];
+  if (outcome.interestArea) stream.setArea(outcome.interestArea->area);
+  if (outcome.budget) stream.setBudget(outcome.budget->bytesPerSecond);
+}
+
 void Room::answerPing(const v1::Ping& ping, v1::ServerMessage& pong) {
   *pong.mutable_pong()->mutable_stats() = stats(ping.want_state_hash());
 }
@@ -405,6 +470,7 @@ void Room::broadcastSnapshot() {
   lastSnapshotSlot_ = snapshotSlot();
   ++snapshotSequence_;
   WorldChanges& changes = simulation_.takeChanges();
+  changes.normalise();
   // Quantized subscribers share one delta; without any, its baseline lapses.
   const std::size_t quantized = quantizedSubscribers_.load();
   if (quantized == 0) snapshots_.skipQuantized();
@@ -412,12 +478,43 @@ void Room::broadcastSnapshot() {
   // lost; and each encoding is built only for its subscribers (one counted
   // after this point gets a null frame, which becomes a full snapshot).
   const std::size_t subscribers = subscribers_.load();
-  if (subscribers == 0) return;
-  SharedFrame delta = subscribers > quantized ? snapshots_.delta(changes) : nullptr;
+  if (subscribers == 0) {
+    // Nobody took this broadcast: a personal stream's client (subscribing
+    // just now) starts over from a full snapshot.
+    snapshots_.forgetPlaces();
+    for (auto& [client, stream] : streams_) stream.startOver();
+    return;
+  }
+  std::vector<PersonalFrame> personal = personalFrames(changes);
+  // Personal streams take no shared delta (one that a member without a
+  // stream finds missing becomes a full snapshot).
+  SharedFrame delta = subscribers > quantized + personal.size() ? snapshots_.delta(changes) : nullptr;
   SharedFrame quantizedDelta = quantized > 0 ? snapshots_.quantizedDelta(changes) : nullptr;
-  // The plain delta's size when there is one (Pong's last_snapshot_bytes).
-  lastSnapshotBytes_ = (delta ? delta : quantizedDelta)->size();
-  outbox_.emplace_back(Broadcast{snapshotSequence_, std::move(delta), std::move(quantizedDelta)});
+  // The plain delta's size when there is one, else the quantized or the
+  // first personal one's (Pong's last_snapshot_bytes).
+  lastSnapshotBytes_ = delta            ? delta->size()
+                       : quantizedDelta ? quantizedDelta->size()
+                                        : personal.front().frame->size();
+  outbox_.emplace_back(Broadcast{snapshotSequence_, std::move(delta), std::move(quantizedDelta), std::move(personal)});
+}
+
+std::vector<Room::PersonalFrame> Room::personalFrames(const WorldChanges& changes) {
+  std::vector<PersonalFrame> frames;
+  if (streams_.empty()) {
+    snapshots_.forgetPlaces();
+    return frames;
+  }
+  snapshots_.updatePlaces(changes);
+  for (auto it = streams_.begin(); it != streams_.end();) {
+    if (it->second.wantsShared()) {
+      frames.push_back({it->first, snapshots_.full()});
+      it = streams_.erase(it);
+    } else {
+      frames.push_back({it->first, snapshots_.personalDelta(it->second, changes)});
+      ++it;
+    }
+  }
+  return frames;
 }
 
 void Room::broadcastEvents() {
@@ -452,7 +549,7 @@ v1::ServerStats Room::stats(bool withStateHash) {
   if (withStateHash) stats.set_state_hash(simulation_.stateHash());
   stats.set_bodies_left_world(simulation_.bodiesLeftWorld());
   stats.set_guard_repairs(simulation_.world().guardReport().repairedBodies);
-  stats.set_commands_queued(commands_.size());
+  stats.set_commands_queued(commands_.size() + stamped_.size());
   stats.set_scaled_steps_dropped(scaledStepsDropped_);
   return stats;
 }

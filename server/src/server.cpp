@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "impulse/server/log.h"
+#include "impulse/server/room_bounds.h"
 #include "impulse/server/room_name.h"
 
 namespace impulse::server {
@@ -41,7 +42,7 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
       steppers_(steppers),
       serverBodies_(std::make_shared<ServerBodies>(options.maxTotalBodies)) {
   const std::string defaultRoom(kDefaultRoom);
-  rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, options_, *this);
+  rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, options_, *this, WorldSettings{}.bounds);
   const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
@@ -87,10 +88,24 @@ void Server::stop() {
 // -------------------------------------------------------------------- rooms
 
 std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello& hello,
-                                                                 const std::string& address) {
+                                                                 const std::string& address, bool admin) {
   if (std::string refusal = roomNameRefusal(hello.room()); !refusal.empty()) return refusal;
   const std::string name = roomNameOf(hello.room());
-  if (const auto it = rooms_.find(name); it != rooms_.end()) return it->second;
+  RoomBoundsRequest bounds = roomBoundsFromHello(hello);
+  if (!bounds.error.empty()) return std::move(bounds.error);
+  if (bounds.bounds && !admin) {
+    return "hello.room_min and room_max: only the admin role may give a room's bounds (leave them out to join "
+           "with the server's)";
+  }
+  if (const auto it = rooms_.find(name); it != rooms_.end()) {
+    const AABB& held = it->second->bounds();
+    const bool same = !bounds.bounds || (bounds.bounds->lower == held.lower && bounds.bounds->upper == held.upper);
+    if (!same) {
+      return "room " + name + " exists with bounds " + describeBounds(held) +
+             ": hello.room_min and room_max may only make a room (leave them out to join it)";
+    }
+    return it->second;
+  }
   if (rooms_.size() >= std::size_t(options_.maxRooms)) {
     return "room limit reached: this server holds at most " + std::to_string(options_.maxRooms) +
            " rooms (--max-rooms); join an existing one (ListRooms) or another server";
@@ -102,7 +117,8 @@ std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello
            " rooms that are still open (at most " + std::to_string(options_.maxRoomsPerAddress) +
            " per address, --max-rooms-per-address); join an existing one (ListRooms)";
   }
-  auto room = std::make_shared<Room>(name, io_, steppers_, options_, *this);
+  auto room =
+      std::make_shared<Room>(name, io_, steppers_, options_, *this, bounds.bounds.value_or(WorldSettings{}.bounds));
   rooms_[name] = room;
   roomMaker_[name] = address;
   room->start();
@@ -218,7 +234,7 @@ std::string Server::admissionRefusal(const Session& newcomer) {
 void Server::onHello(const std::shared_ptr<Session>& session, const v1::Hello& hello) {
   const Admission admission = admit(tokens_, hello.token());
   if (!admission.error.empty()) return session->reject(admission.error);
-  auto room = roomFor(hello, session->address());
+  auto room = roomFor(hello, session->address(), admission.admin);
   if (const auto* refusal = std::get_if<std::string>(&room)) return session->reject(*refusal);
   session->setAdmin(admission.admin);
   const auto& joined = std::get<std::shared_ptr<Room>>(room);

@@ -17,6 +17,7 @@ WorldSettings worldSettings(const SimulationSettings& settings) {
   WorldSettings world;
   world.subSteps = settings.subSteps;
   world.maxBodies = settings.maxBodies;
+  world.bounds = settings.bounds;
   return world;
 }
 

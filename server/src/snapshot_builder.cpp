@@ -42,20 +42,29 @@ void addField(const World& world, FieldId id, v1::Snapshot* snapshot) {
   if (const auto def = describeField(*field)) wire::toWire(id, *def, snapshot->add_fields_added());
 }
 
+void addDescriptor(const World& world, BodyId id, v1::Snapshot* snapshot) {
+  if (const auto description = world.bodyDescription(id)) wire::toWire(*description, snapshot->add_added());
+}
+
+void addState(const World& world, std::uint32_t id, v1::Snapshot* snapshot) {
+  if (const auto state = world.bodyState(BodyId{id})) wire::toWire(*state, snapshot->add_bodies());
+}
+
+// The joints and fields a delta carries (personal ones list bodies their own way).
+void addJointAndFieldChanges(const World& world, const WorldChanges& changes, v1::Snapshot* snapshot) {
+  for (const JointId id : changes.removedJointIds()) snapshot->add_joints_removed(id.value);
+  for (const JointId id : changes.addedJointIds()) addJoint(world, id, snapshot);
+  for (const FieldId id : changes.removedFieldIds()) snapshot->add_fields_removed(id.value);
+  for (const FieldId id : changes.addedFieldIds()) addField(world, id, snapshot);
+}
+
 // What every delta carries whatever its encoding: removals, added bodies
 // and joints.
 void addChangeLists(const World& world, const WorldChanges& changes, v1::Snapshot* snapshot) {
   for (const BodyId id : changes.removedIds()) snapshot->add_removed(id.value);
   for (const BodyId id : changes.leftWorldIds()) snapshot->add_left_world(id.value);
-  for (const BodyId id : changes.addedIds()) {
-    if (const auto description = world.bodyDescription(id)) {
-      wire::toWire(*description, snapshot->add_added());
-    }
-  }
-  for (const JointId id : changes.removedJointIds()) snapshot->add_joints_removed(id.value);
-  for (const JointId id : changes.addedJointIds()) addJoint(world, id, snapshot);
-  for (const FieldId id : changes.removedFieldIds()) snapshot->add_fields_removed(id.value);
-  for (const FieldId id : changes.addedFieldIds()) addField(world, id, snapshot);
+  for (const BodyId id : changes.addedIds()) addDescriptor(world, id, snapshot);
+  addJointAndFieldChanges(world, changes, snapshot);
 }
 
 std::vector<std::uint32_t> addedIds(const v1::Snapshot& snapshot) {
@@ -70,21 +79,24 @@ bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
          a.timeScale == b.timeScale;
 }
 
-// A full snapshot's meta, preset, descriptors and joints: all but the states.
-void addWholeWorld(const Simulation& simulation, v1::Snapshot* snapshot) {
+// A full snapshot's meta, preset, joints and fields: all but the bodies.
+void addWorldButBodies(const Simulation& simulation, v1::Snapshot* snapshot) {
   const World& world = simulation.world();
   fillMeta(simulation, true, snapshot);
   wire::toWire(simulation.preset(), snapshot->mutable_preset());
-  const auto ids = world.bodyIds();
-  snapshot->mutable_added()->Reserve(int(ids.size()));
-  for (const BodyId id : ids) {
-    if (const auto description = world.bodyDescription(id)) {
-      wire::toWire(*description, snapshot->add_added());
-    }
-  }
   for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
   for (const FieldId id : world.fieldIds()) addField(world, id, snapshot);
 }
+
+// A full snapshot's meta, preset, descriptors and joints: all but the states.
+void addWholeWorld(const Simulation& simulation, v1::Snapshot* snapshot) {
+  const World& world = simulation.world();
+  addWorldButBodies(simulation, snapshot);
+  const auto ids = world.bodyIds();
+  snapshot->mutable_added()->Reserve(int(ids.size()));
+  for (const BodyId id : ids) addDescriptor(world, id, snapshot);
+}
+
 
 // The integration the prediction follows (docs/snapshots.md).
 wire::quantized::Integration quantizedIntegration(const Simulation& simulation) {
@@ -185,6 +197,93 @@ SharedFrame SnapshotBuilder::quantizedFull() {
   cachedKeyGeneration_ = encoder_.generation();
   cachedKeyMeta_ = meta;
   return cachedKey_;
+}
+
+// ---------------------------------------------------------- personal snapshots
+
+void SnapshotBuilder::updatePlaces(const WorldChanges& changes) {
+  if (placesCurrent_) {
+    places_.update(simulation_.world(), changes);
+  } else {
+    places_.rebuild(simulation_.world());
+  }
+  placesCurrent_ = true;
+}
+
+void SnapshotBuilder::refreshPlaces() {
+  // Between broadcasts no shape change is known yet: reaches stay as they
+  // are until the next broadcast's changes say otherwise.
+  if (placesCurrent_) {
+    places_.update(simulation_.world(), WorldChanges{});
+  } else {
+    places_.rebuild(simulation_.world());
+  }
+}
+
+SharedFrame SnapshotBuilder::personalDelta(PersonalStream& stream, const WorldChanges& changes) {
+  if (stream.startsOver() || changes.wasReplaced()) return personalFull(stream);
+  const World& world = simulation_.world();
+  const auto allowance = stream.allowance(simulation_.tick(), simulation_.tickHz());
+  // The smallest state message is about this many bytes: no more than the
+  // allowance over it can be sent, so no more need ranking.
+  constexpr double kSmallestStateBytes = 16;
+  const std::size_t maxRanked = allowance ? std::size_t(std::max(*allowance, 0.0) / kSmallestStateBytes) : 0;
+  const PersonalDelta& plan = stream.planDelta(places_, changes, simulation_.tick(), maxRanked);
+  google::protobuf::Arena arena(arenaOptions());
+  auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
+  auto* snapshot = message.mutable_snapshot();
+  fillMeta(simulation_, false, snapshot);
+  for (const std::uint32_t id : plan.removed) snapshot->add_removed(id);
+  for (const std::uint32_t id : plan.leftWorld) snapshot->add_left_world(id);
+  for (const std::uint32_t id : plan.leftArea) snapshot->add_left_area(id);
+  for (const std::uint32_t id : plan.described) addDescriptor(world, BodyId{id}, snapshot);
+  addJointAndFieldChanges(world, changes, snapshot);
+  for (const std::uint32_t id : plan.states) addState(world, id, snapshot);
+  stream.markSent(addRankedStates(plan, allowance, snapshot));
+  snapshot->set_states_withheld(std::uint32_t(stream.withheldCount()));
+  snapshot->set_oldest_withheld_ticks(stream.oldestWithheldTicks(simulation_.tick()));
+  SharedFrame frame = wire::encodeSharedFrame(message);
+  stream.charge(frame->size());
+  return frame;
+}
+
+std::size_t SnapshotBuilder::addRankedStates(const PersonalDelta& plan, std::optional<double> allowance,
+                                             v1::Snapshot* snapshot) {
+  if (!allowance) return 0;
+  // Sizes add up field by field: a state's bytes plus its tag and length.
+  double bytes = double(snapshot->ByteSizeLong());
+  std::size_t sent = 0;
+  for (const std::uint32_t id : plan.ranked) {
+    const auto state = simulation_.world().bodyState(BodyId{id});
+    if (!state) continue;
+    auto* wireState = snapshot->add_bodies();
+    wire::toWire(*state, wireState);
+    bytes += double(wireState->ByteSizeLong() + 2);
+    if (bytes > *allowance) {
+      snapshot->mutable_bodies()->RemoveLast();
+      break;
+    }
+    ++sent;
+  }
+  return sent;
+}
+
+SharedFrame SnapshotBuilder::personalFull(PersonalStream& stream) {
+  const World& world = simulation_.world();
+  google::protobuf::Arena arena(arenaOptions());
+  auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
+  auto* snapshot = message.mutable_snapshot();
+  addWorldButBodies(simulation_, snapshot);
+  const auto& ids = stream.planFull(places_);
+  snapshot->mutable_added()->Reserve(int(ids.size()));
+  snapshot->mutable_bodies()->Reserve(int(ids.size()));
+  for (const std::uint32_t id : ids) addDescriptor(world, BodyId{id}, snapshot);
+  for (const std::uint32_t id : ids) addState(world, id, snapshot);
+  SharedFrame frame = wire::encodeSharedFrame(message);
+  // Paid for like a delta: the budget refills from this tick on.
+  stream.allowance(simulation_.tick(), simulation_.tickHz());
+  stream.charge(frame->size());
+  return frame;
 }
 
 }  // namespace impulse::server

@@ -27,7 +27,7 @@ constexpr std::array kWordRows{IMPULSE_COMMAND_TABLE(IMPULSE_WORD_ROW)};
 // Argument paths and the usage's names for them (the command table's usage
 // column); paths not listed read as their field names ("distance stiffness").
 // Longer paths first, so a path is replaced before its prefix.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 51> kArgumentWords{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 54> kArgumentWords{{
     {"spawn_circle.center.x", "circle X"},
     {"spawn_circle.center.y", "circle Y"},
     {"spawn_circle.center", "circle X Y"},
@@ -79,6 +79,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 51> kArgumen
     {"query_aabb.upper.x", "overlap X2"},
     {"query_aabb.upper.y", "overlap Y2"},
     {"update_joint.motor_speed", "motor SPEED"},
+    {"set_interest_area.min", "area X1 Y1"},
+    {"set_interest_area.max", "area X2 Y2"},
+    {"set_bandwidth_budget.bytes_per_second", "budget BYTES_PER_SECOND"},
 }};
 
 // The engine's errors for a new joint name its JointDef; a joint's usage

@@ -201,6 +201,17 @@ TEST(Cli, ServerErrorsUseTheScriptsWordsAndPlainNumbers) {
   EXPECT_FALSE(contains(run.lines[2], ".000000")) << run.lines[2];
 }
 
+TEST(Cli, NetworkedPlayWordsSetTheAreaAndBudget_AndRefusalsNameTheArgument) {
+  ServerProcess server({"--paused"});
+  const auto run = runCli(server.port(), "area 0 0 10 10\nbudget 32000\narea all\nbudget off\n"
+                                         "area 5 5 1 1\nbudget 0\n");
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 7u);
+  for (int line = 1; line <= 4; ++line) EXPECT_TRUE(contains(run.lines[line], R"("ok":true)")) << run.lines[line];
+  EXPECT_TRUE(contains(run.lines[5], "area is empty or inverted")) << run.lines[5];
+  EXPECT_TRUE(contains(run.lines[6], "budget BYTES_PER_SECOND 0 must be in [1000, 125000000]")) << run.lines[6];
+}
+
 TEST(Cli, BodyEditWordsEditAndTheirErrorsUseTheScriptsWords) {
   ServerProcess server({"--paused"});
   const auto run = runCli(server.port(), "$ball = circle 5 5 0.5\nteleport $ball 1000 5\nmaterial $ball metal\n"

@@ -73,6 +73,7 @@ TEST(ServerOptions, RefusesBadValuesWithTheFlagName) {
       {{"--port"}, "--port needs a value"},
       {{"--paused=yes"}, "--paused takes no value"},
       {{"--frobnicate"}, "unknown option '--frobnicate'"},
+      {{"--max-input-delay", "601"}, "--max-input-delay expects an integer in 0..600, got '601'"},
   };
   for (const auto& [args, expected] : cases) {
     const auto parsed = parse(args);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "impulse.pb.h"
+#include "impulse/client/commands.h"
 #include "impulse/client/world_mirror.h"
 #include "impulse/wire/framing.h"
 
@@ -50,6 +51,9 @@ struct ConnectOptions {
   /// Hello.snapshot_encoding: QUANTIZED asks for compact snapshots
   /// (docs/snapshots.md); the mirror decodes either.
   v1::SnapshotEncoding snapshotEncoding = v1::SNAPSHOT_ENCODING_PLAIN;
+  /// Hello.room_min and room_max: the world bounds of the room this
+  /// connection makes (admin role); none: the server's.
+  std::optional<Box> roomBounds;
 };
 
 /// "HOST:PORT" (or "[V6]:PORT") split; nothing when malformed.

@@ -138,4 +138,18 @@ v1::ClientMessage setTimeScale(double scale);
 /// Answered by a RoomList: every room of the server.
 v1::ClientMessage listRooms();
 
+/// Networked play (docs/networked-play.md): receive only the bodies inside
+/// the box min-max (the view plus a margin), or the whole room again.
+struct Box {
+  Point min;
+  Point max;
+};
+v1::ClientMessage setInterestArea(std::optional<Box> area);
+/// At most `bytesPerSecond` snapshot bytes a second, the most important
+/// changes first; nothing: no budget.
+v1::ClientMessage setBandwidthBudget(std::optional<double> bytesPerSecond);
+/// Networked play (docs/networked-play.md): the command, stamped to be
+/// applied at `tick` of the room (ClientMessage.for_tick).
+v1::ClientMessage forTick(v1::ClientMessage message, std::uint64_t tick);
+
 }  // namespace impulse::client

@@ -38,8 +38,9 @@ struct MirrorBody {
 
 class WorldMirror {
  public:
-  /// Applies one snapshot: a full one replaces everything; a delta removes,
-  /// then adds (or replaces) descriptors, then sets states (from `bodies`,
+  /// Applies one snapshot: a full one replaces everything; a delta removes
+  /// (bodies removed, or out of the client's area of interest), then adds
+  /// (or replaces) descriptors, then sets states (from `bodies`,
   /// or decoded from `quantized_bodies`, docs/snapshots.md). On a malformed
   /// snapshot (a shape that does not decode, a state for an unknown body)
   /// returns false with the reason; bodies already applied stay applied.

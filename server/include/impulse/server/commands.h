@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "impulse.pb.h"
+#include "impulse/server/interest_area.h"
 #include "impulse/server/simulation.h"
 
 namespace impulse::server {
@@ -28,6 +29,10 @@ struct CommandOutcome {
   std::uint32_t ticksToStep = 0;
   /// SubscribeEvents: the client's event stream starts (true) or stops.
   std::optional<bool> eventSubscription;
+  /// SetInterestArea accepted: the client's area (none: the whole room).
+  std::optional<InterestAreaRequest> interestArea;
+  /// SetBandwidthBudget accepted: the client's budget (none: no budget).
+  std::optional<BudgetRequest> budget;
 };
 
 /// Applies a command (not Hello). A Step is validated only: its ticks are

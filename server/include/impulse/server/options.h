@@ -10,6 +10,9 @@
 
 namespace impulse::server {
 
+/// The largest --max-input-delay: ten seconds at the default 60 Hz.
+inline constexpr int kMaxInputDelayTicks = 600;
+
 struct ServerOptions {
   std::string bind = "127.0.0.1";
   /// 0 asks the system for a free port.
@@ -21,6 +24,9 @@ struct ServerOptions {
   bool paused = false;
   int maxClients = 64;
   int maxBodies = 10000;
+  /// How far ahead of (or behind) the room's tick a command's for_tick may
+  /// be (docs/networked-play.md): half a second at the default 60 Hz.
+  int maxInputDelayTicks = 30;
   /// Bodies all rooms together may hold (server_bodies.h).
   int maxTotalBodies = 40000;
   /// Force fields per room, and the body interactions per step they may

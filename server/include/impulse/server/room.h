@@ -40,6 +40,7 @@
 #include "impulse/server/session.h"
 #include "impulse/server/simulation.h"
 #include "impulse/server/snapshot_builder.h"
+#include "impulse/server/stamped_commands.h"
 #include "impulse/server/step_job.h"
 #include "impulse/server/tick_schedule.h"
 
@@ -59,10 +60,13 @@ class RoomHost {
 
 class Room final : public SnapshotSource, public std::enable_shared_from_this<Room> {
  public:
+  /// `bounds`: the world's (Hello.room_min, room_max; checked by the server).
   Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
-       const ServerOptions& options, RoomHost& host);
+       const ServerOptions& options, RoomHost& host, const AABB& bounds);
 
   const std::string& name() const { return name_; }
+  /// The world bounds it was made with.
+  const AABB& bounds() const { return bounds_; }
 
   /// Starts the tick timer.
   void start();
@@ -96,10 +100,17 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
     std::size_t bytes;  // the command's frame size (frees the client's reading budget)
     ReplyKind kind = ReplyKind::Command;
   };
+  /// One subscriber's own snapshot (personal_stream.h).
+  struct PersonalFrame {
+    std::uint32_t client;
+    SharedFrame frame;
+  };
   struct Broadcast {
     std::uint64_t sequence;
     SharedFrame delta;           ///< null without plain subscribers
     SharedFrame quantizedDelta;  ///< null without quantized subscribers
+    /// The subscribers with an area or a budget, by client id: theirs.
+    std::vector<PersonalFrame> personal;
   };
   /// One subscriber's full snapshot, including broadcasts up to `sequence`.
   struct FullSnapshot {
@@ -132,7 +143,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   void countSubscribers();
 
   // ------------------------------------------------------- strand side
-  void welcome(std::uint32_t client, bool admin, bool wantSnapshots);
+  void welcome(std::uint32_t client, bool admin, bool quantized, bool wantSnapshots);
   /// Arms the tick timer for `at`.
   void scheduleTick(Clock::time_point at);
   void onTimer();
@@ -143,9 +154,20 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   /// Runs the oldest Step in progress until `deadline` (at least one tick).
   void advanceStep(Clock::time_point deadline);
   void applyCommands(Clock::time_point deadline);
+  /// A command stamped for a coming tick (or this one) waits for it; one
+  /// past (within the bound) is applied now; a stamp out of bounds is refused.
+  void applyOrSchedule(QueuedCommand& queued, bool admin);
+  /// Applies the stamped commands whose tick has come.
+  void applyDueCommands();
   /// Applies one queued command for its client, roles checked, and replies.
   void applyQueued(QueuedCommand& queued, bool admin);
   void reply(std::uint32_t client, v1::ServerMessage message, std::size_t bytes);
+  /// SetInterestArea or SetBandwidthBudget accepted by its handler: the
+  /// client's stream follows (refused for a quantized subscriber).
+  void changeStream(std::uint32_t client, const v1::ClientMessage& message, CommandOutcome& outcome);
+  /// The personal streams' frames of this broadcast; a stream back to the
+  /// whole room without a budget takes a full shared snapshot and ends.
+  std::vector<PersonalFrame> personalFrames(const WorldChanges& changes);
   /// Adds the room's statistics to the handler's Pong: only Ping needs them.
   void answerPing(const v1::Ping& ping, v1::ServerMessage& pong);
   void broadcastSnapshot();
@@ -165,6 +187,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   void publish();
 
   const std::string name_;
+  const AABB bounds_;
   asio::io_context& io_;
   asio::strand<asio::thread_pool::executor_type> strand_;
   const ServerOptions& options_;
@@ -207,9 +230,14 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   bool overrunning_ = false;
   /// The members as the strand knows them, with their role (true: admin).
   std::map<std::uint32_t, bool> clients_;
+  /// The members that asked for SNAPSHOT_ENCODING_QUANTIZED.
+  std::set<std::uint32_t> quantizedClients_;
+  /// The members with an area of interest or a budget (or just back from one).
+  std::map<std::uint32_t, PersonalStream> streams_;
   /// The members that asked for events, sorted.
   std::vector<std::uint32_t> eventSubscribers_;
   FairQueue commands_;
+  StampedCommands stamped_;
   std::deque<StepJob> steps_;
   Ownership ownership_;
   std::int64_t lastSnapshotSlot_ = 0;

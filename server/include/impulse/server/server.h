@@ -51,9 +51,10 @@ class Server final : public SessionHost, public RoomHost {
   /// Why a new connection may not be served ("" when it may); makes room
   /// by evicting an idle connection when it can.
   std::string admissionRefusal(const Session& newcomer);
-  /// The room a Hello names, made if new; or why the client may not join.
+  /// The room a Hello names, made if new (with the Hello's bounds, which
+  /// only an admin may give); or why the client may not join.
   std::variant<std::shared_ptr<Room>, std::string> roomFor(const v1::Hello& hello,
-                                                           const std::string& address);
+                                                           const std::string& address, bool admin);
   /// The room a client joined; null before Hello.
   std::shared_ptr<Room> roomOf(const Session& session) const;
   void scheduleHousekeeping();

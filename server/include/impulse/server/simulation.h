@@ -39,6 +39,8 @@ struct SimulationSettings {
   FieldLimits fieldLimits{};
   /// The server-wide body count this world is part of; none: unbounded.
   std::shared_ptr<ServerBodies> serverBodies = nullptr;
+  /// Bodies may not be created with a centre outside (WorldSettings::bounds).
+  AABB bounds = WorldSettings{}.bounds;
 };
 
 /// Events messages a Simulation keeps for its room between takes.

@@ -10,12 +10,17 @@
 /// every subscriber that took the previous broadcast holds the same baseline,
 /// so a quantized delta too is serialised once for all of them; a subscriber
 /// that joins or skips gets a key frame, cached like the full snapshot.
+///
+/// Personal snapshots (personal_stream.h) are built for one subscriber each,
+/// from the places of the bodies taken once per broadcast.
 
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "impulse/server/interest_area.h"
+#include "impulse/server/personal_stream.h"
 #include "impulse/server/simulation.h"
 #include "impulse/server/world_changes.h"
 #include "impulse/wire/quantized_encoder.h"
@@ -45,8 +50,24 @@ class SnapshotBuilder {
   /// the next quantized snapshot starts over from the world.
   void skipQuantized() { encoder_.forget(); }
 
+  /// Takes the bodies' places for this broadcast's personal snapshots;
+  /// `changes` is normalised.
+  void updatePlaces(const WorldChanges& changes);
+  /// Takes the bodies' places now, between broadcasts (for a full personal snapshot).
+  void refreshPlaces();
+  /// No personal snapshot this broadcast: the places kept lapse.
+  void forgetPlaces() { placesCurrent_ = false; }
+  /// The stream's next snapshot after updatePlaces(): a delta, or a full
+  /// one when the stream starts over or the world was replaced.
+  SharedFrame personalDelta(PersonalStream& stream, const WorldChanges& changes);
+  /// Every body in the stream's area, as a full snapshot.
+  SharedFrame personalFull(PersonalStream& stream);
+
  private:
   void startQuantized();
+  /// Adds the plan's ranked states, highest first, while the `allowance`
+  /// (bytes; none: no budget) lasts; returns how many.
+  std::size_t addRankedStates(const PersonalDelta& plan, std::optional<double> allowance, v1::Snapshot* snapshot);
 
   const Simulation& simulation_;
   // Full-snapshot cache: valid while the simulation's version and meta are equal.
@@ -60,6 +81,9 @@ class SnapshotBuilder {
   std::uint64_t cachedKeyGeneration_ = ~std::uint64_t(0);
   SnapshotMeta cachedKeyMeta_;
   SharedFrame cachedKey_;
+  BodyPlaces places_;
+  /// places_ followed every broadcast's changes up to now.
+  bool placesCurrent_ = false;
 };
 
 }  // namespace impulse::server

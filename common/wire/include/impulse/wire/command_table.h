@@ -182,5 +182,13 @@
       "air blowing from (X, Y) along (DX, DY) at SPEED m/s, to RANGE m, half-angle SPREAD", \
       parseFan, client::fanField)                                                         \
   ROW(RemoveField, remove_field, Admin, removeField, "remove-field", "remove-field F",     \
-      "remove a field", parseBodyId, client::removeField)
+      "remove a field", parseBodyId, client::removeField)                                 \
+  ROW(SetInterestArea, set_interest_area, Anyone, setInterestArea, "area",                \
+      "area X1 Y1 X2 Y2 | area all",                                                      \
+      "receive only the bodies inside the box X1 Y1 - X2 Y2 (all: the whole room)",       \
+      parseInterestArea, client::setInterestArea)                                         \
+  ROW(SetBandwidthBudget, set_bandwidth_budget, Anyone, setBandwidthBudget, "budget",     \
+      "budget BYTES_PER_SECOND | budget off",                                             \
+      "send this client at most so many snapshot bytes a second, most important first",   \
+      parseBandwidthBudget, client::setBandwidthBudget)
 // clang-format on
