@@ -6,8 +6,8 @@ namespace impulse {
 
 namespace {
 
-// About 0.1-0.2 ms of polling before a thread sleeps: longer than any gap
-// between two phases of a step, far shorter than a frame.
+// About 0.1 ms of polling: longer than any gap between two phases of a
+// step, far shorter than a frame.
 constexpr int kSpinsBeforeSleep = 4000;
 
 void relaxCpu() {
@@ -33,44 +33,56 @@ WorkerPool::~WorkerPool() {
   threads_.clear();  // joins
 }
 
-// Part k of n covers [k * count / n, (k + 1) * count / n): contiguous, and
-// the same bodies for the same part whenever the count is the same.
-void WorkerPool::runPart(const Phase& phase, int part) const {
+void WorkerPool::spinOrYield(int& spins) {
+  if (++spins < kSpinsBeforeSleep) {
+    relaxCpu();
+  } else {
+    std::this_thread::yield();  // a thread we wait for was preempted: let it run
+  }
+}
+
+// Part p covers [p * count / parts, (p + 1) * count / parts).
+void WorkerPool::runPartIfFree(Phase& phase, int part, int worker) {
+  if (phase.claimed[std::size_t(part)].exchange(true, std::memory_order_acq_rel)) return;
   const auto begin = int(std::int64_t(phase.itemCount) * part / phase.parts);
   const auto end = int(std::int64_t(phase.itemCount) * (part + 1) / phase.parts);
-  if (begin < end) phase.task(begin, end, part, phase.context);
+  if (begin < end) phase.task(begin, end, worker, phase.context);
+  phase.unfinished.fetch_sub(1, std::memory_order_release);
+}
+
+// A thread's own share first, then whatever is left.
+void WorkerPool::runParts(Phase& phase, int worker) {
+  const int first = phase.parts * worker / workerCount();
+  const int last = phase.parts * (worker + 1) / workerCount();
+  for (int part = first; part < last; ++part) runPartIfFree(phase, part, worker);
+  for (int part = 0; part < phase.parts; ++part) runPartIfFree(phase, part, worker);
 }
 
 void WorkerPool::run(TaskFunction* task, int itemCount, int minRange, void* taskContext) {
   if (itemCount <= 0) return;
   const int byRange = std::max(1, itemCount / std::max(minRange, 1));
-  const int parts = std::min(workerCount(), byRange);
+  const int parts = std::min(workerCount() * kPartsPerWorker, byRange);
   if (parts == 1) {
     task(0, itemCount, 0, taskContext);
     return;
   }
-  phase_ = {task, taskContext, itemCount, parts};
-  finished_.store(0, std::memory_order_relaxed);
-  generation_.fetch_add(1);
+  const std::uint64_t next = generation_.load() + 1;
+  Phase& phase = phases_[next % 2];
+  // A thread still looking at the phase before last must leave it first.
+  for (int spins = 0; phase.readers.load() > 0;) spinOrYield(spins);
+  phase.task = task;
+  phase.context = taskContext;
+  phase.itemCount = itemCount;
+  phase.parts = parts;
+  for (int part = 0; part < parts; ++part) phase.claimed[std::size_t(part)].store(false, std::memory_order_relaxed);
+  phase.unfinished.store(parts, std::memory_order_relaxed);
+  generation_.store(next);
   if (sleepers_.load() > 0) generation_.notify_all();
-  runPart(phase_, 0);
-  awaitWorkers();
+  runParts(phase, 0);
+  for (int spins = 0; phase.unfinished.load(std::memory_order_acquire) > 0;) spinOrYield(spins);
 }
 
-// Every thread acknowledges every phase, those without a part included, so
-// none can still be reading phase_ when the next one is written.
-void WorkerPool::awaitWorkers() {
-  const int others = static_cast<int>(threads_.size());
-  for (int spins = 0; finished_.load(std::memory_order_acquire) < others; ++spins) {
-    if (spins < kSpinsBeforeSleep) {
-      relaxCpu();
-    } else {
-      std::this_thread::yield();  // a worker was preempted: let it run
-    }
-  }
-}
-
-std::uint64_t WorkerPool::awaitPhase(std::uint64_t seen) {
+std::uint64_t WorkerPool::awaitGeneration(std::uint64_t seen) {
   for (int spins = 0; spins < kSpinsBeforeSleep; ++spins) {
     const std::uint64_t now = generation_.load(std::memory_order_acquire);
     if (now != seen) return now;
@@ -81,16 +93,21 @@ std::uint64_t WorkerPool::awaitPhase(std::uint64_t seen) {
   sleepers_.fetch_add(1);
   while (generation_.load() == seen) generation_.wait(seen);
   sleepers_.fetch_sub(1);
-  return generation_.load(std::memory_order_acquire);
+  return generation_.load();
 }
 
 void WorkerPool::work(int worker) {
   std::uint64_t seen = 0;
   while (true) {
-    seen = awaitPhase(seen);
+    const std::uint64_t generation = awaitGeneration(seen);
     if (stopping_.load()) return;
-    if (worker < phase_.parts) runPart(phase_, worker);
-    finished_.fetch_add(1, std::memory_order_release);
+    Phase& phase = phases_[generation % 2];
+    phase.readers.fetch_add(1);
+    // Still that phase: its description is whole. Once the caller moved on,
+    // every part of it has run, and the slot may be rewritten.
+    if (generation_.load() == generation) runParts(phase, worker);
+    phase.readers.fetch_sub(1);
+    seen = generation;
   }
 }
 

@@ -1,13 +1,16 @@
 #pragma once
 // The world's own threads, used when the game gives no job system
-// (impulse/tasks.h). Each phase of the step is cut into one contiguous range
-// per thread, the caller's included: the same thread gets the same bodies in
-// every per-body phase, so their states stay in its cache.
+// (impulse/tasks.h). Each phase of the step is cut into a few parts per
+// thread; each thread first runs the parts of its own share (the same
+// bodies in every per-body phase, so their states stay in its cache), then
+// takes parts nobody has started. A thread the OS has not scheduled holds
+// nothing up: the others run its parts.
 //
-// Threads spin between the phases of a step (a phase is tens of
+// Threads poll between the phases of a step (a phase is tens of
 // microseconds; waking a sleeping thread costs as much) and sleep when no
 // phase comes for a while (between steps).
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <thread>
@@ -32,24 +35,32 @@ class WorkerPool {
   void run(TaskFunction* task, int itemCount, int minRange, void* taskContext);
 
  private:
+  static constexpr int kPartsPerWorker = 4;
+  static constexpr int kMaxParts = kPartsPerWorker * kMaxWorkers;
+
+  // One phase's description and progress. Two alternate, so a thread that
+  // wakes late and still reads the last phase is never overwritten: the
+  // next phase takes the other one.
   struct Phase {
     TaskFunction* task = nullptr;
     void* context = nullptr;
     int itemCount = 0;
     int parts = 0;
+    std::array<std::atomic<bool>, kMaxParts> claimed{};
+    alignas(64) std::atomic<int> unfinished{0};
+    alignas(64) std::atomic<int> readers{0};  ///< threads looking at it
   };
 
   void work(int worker);
-  std::uint64_t awaitPhase(std::uint64_t seen);
-  void runPart(const Phase& phase, int part) const;
-  void awaitWorkers();
+  std::uint64_t awaitGeneration(std::uint64_t seen);
+  void runParts(Phase& phase, int worker);
+  void runPartIfFree(Phase& phase, int part, int worker);
+  static void spinOrYield(int& spins);
 
   std::vector<std::jthread> threads_;
-  Phase phase_;
-  // Bumped once per phase; workers watch it. Padded apart: the caller writes
-  // one, the workers the other.
+  std::array<Phase, 2> phases_;
+  // Phase g is phases_[g % 2]. Bumped once per phase; workers watch it.
   alignas(64) std::atomic<std::uint64_t> generation_{0};
-  alignas(64) std::atomic<int> finished_{0};
   std::atomic<int> sleepers_{0};
   std::atomic<bool> stopping_{false};
 };

@@ -1,7 +1,8 @@
 #pragma once
 /// The simulated world: bodies, gravity and the fixed step.
 ///
-/// The world owns no threads and does no I/O. Callers create bodies, call
+/// The world does no I/O and starts threads only when its settings ask for
+/// workers (impulse/tasks.h). Callers create bodies, call
 /// step(dt) at a fixed rate and read states back (movedBodies() lists only
 /// bodies whose state changed in the last step).
 
