@@ -57,6 +57,8 @@ struct Body {
   bool isKinematic = false;
   bool ignoreGravity = false;
   bool awake = false;
+  // Its field loads come per sub-step this step (field.cpp).
+  bool fieldsPerSubStep = false;
 };
 
 }  // namespace impulse

@@ -5,8 +5,9 @@
 
 #include "impulse/fluid_region.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "impulse/submerged.h"
 #include "input_limits.h"
@@ -76,10 +77,35 @@ FluidRegion::FluidRegion(const FluidDef& def) : def_(def) {
   }
 }
 
+// Outward distance of `p` past the region's nearest edge line (negative inside).
+Real FluidRegion::outsideBy(const Vec2& p) const {
+  Real farthest = -std::numeric_limits<Real>::infinity();
+  for (std::size_t i = 0; i < def_.polygon.size(); ++i) {
+    const Vec2& a = def_.polygon[i];
+    const Vec2 edge = def_.polygon[(i + 1) % def_.polygon.size()] - a;
+    farthest = std::max(farthest, cross(edge, a - p) / edge.norm());
+  }
+  return farthest;
+}
+
+// Buoyancy changes with position only where the body meets the region's
+// edge (the surface): by rho g w / m per metre, w the width there, at most
+// twice the body's extent. Within the step's reach of the edge, that.
+Real FluidRegion::gradientOn(const FieldBody& body, const FieldStep& step) const {
+  if (body.mass <= 0) return 0;
+  const Real reach = body.extent + body.linearVelocity.norm() * step.dt;
+  if (std::abs(outsideBy(body.transform.p)) >= reach) return 0;
+  return def_.density * step.gravity.norm() * 2 * body.extent / body.mass;
+}
+
 FieldLoad FluidRegion::loadOn(const FieldBody& body, const FieldStep& step) const {
   const SubmergedPart part = submergedPart(body.shapes, body.transform, def_.polygon);
   if (part.area <= 0 || body.area <= 0 || body.mass <= 0) return {};
-  const Real share = std::min(Real(1), Real(part.area / body.area));
+  // The liquid drags in proportion to what the body displaces, not to its
+  // own mass: per unit of the body's mass the rates scale by the displaced
+  // mass over the body's, so a floating body, whatever its density, is
+  // damped at the liquid's rates (a light one bobs no longer than a heavy).
+  const Real wet = def_.density * Real(part.area) / body.mass;
   const Vec2 arm = part.centroid - body.transform.p;
   FieldLoad load;
   const Vec2 buoyancy = -def_.density * Real(part.area) * step.gravity;
@@ -87,16 +113,17 @@ FieldLoad FluidRegion::loadOn(const FieldBody& body, const FieldStep& step) cons
   // and buoyancy would give it by the step's end, acting where the liquid
   // holds the body (the submerged centroid): a current turns it.
   const Vec2 predicted = body.linearVelocity + step.dt * (step.gravity + buoyancy / body.mass) - def_.current;
-  const Vec2 drag = -body.mass * implicitRate(def_.linearDrag * share, step.dt) * predicted;
+  const Vec2 drag = -body.mass * implicitRate(def_.linearDrag * wet, step.dt) * predicted;
   load.force = buoyancy + drag;
   load.torque = cross(arm, buoyancy + drag) -
-                body.inertia * implicitRate(def_.angularDrag * share, step.dt) * body.angularVelocity;
+                body.inertia * implicitRate(def_.angularDrag * wet, step.dt) * body.angularVelocity;
   return load;
 }
 
 void FluidRegion::apply(const FieldStep& step, std::span<FieldLoad> loads) const {
   for (std::size_t i = 0; i < step.bodies.size(); ++i) {
     const FieldBody& body = step.bodies[i];
+    loads[i].gradient += gradientOn(body, step);
     const Vec2 reach(body.extent, body.extent);
     const Vec2& p = body.transform.p;
     if (!box_.overlaps({p - reach, p + reach})) continue;

@@ -1,8 +1,9 @@
 // Newton's gravitation as a force field: the exact pairwise sum for small
 // worlds, the Barnes-Hut tree (pull_tree.cpp) for large ones. The pull is
-// given as an impulse at the start of the step, so with the sub-steps'
-// drift the step is symplectic Euler for it: a circular orbit keeps its
-// radius and energy stays bounded instead of spiralling.
+// given as an impulse at every sub-step (everySubStep), so with the
+// sub-steps' drift the step is symplectic Euler for it at the sub-step: a
+// circular orbit keeps its radius and energy stays bounded instead of
+// spiralling.
 
 #include "impulse/gravitation.h"
 

@@ -70,6 +70,17 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   return row;
 }
 
+// A mouse joint whose anchor is further than this from its target is still
+// pulling, though a wall may hold the body still: the body must not sleep.
+constexpr Real kMouseAtTarget = Real(0.01);
+
+bool isAwayFromTarget(const JointRow& row) {
+  if (!std::holds_alternative<MouseJointSettings>(row.joint->settings)) return false;
+  // At the step's start, as the rows measure it (B, the world, centred at the origin).
+  const Vec2 gap = row.deltaCenter + row.anchorB - row.anchorA;
+  return gap.squaredNorm() > kMouseAtTarget * kMouseAtTarget;
+}
+
 }  // namespace
 
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
@@ -147,6 +158,7 @@ void JointConstraints::store(WorldData& world) {
     Joint& joint = world.joints[row.index];
     joint.impulses = row.impulses;
     jointReaction(row, pass_.invH, joint.reactionForce, joint.reactionTorque);
+    if (isAwayFromTarget(row)) world.bodies[joint.edges.bodyA].sleepTime = 0;
   }
 }
 

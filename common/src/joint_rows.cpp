@@ -157,11 +157,10 @@ void springRow(const JointRow& row, const Jacobian& j, Real c, Real stiffness, R
   apply(row, j, impulse, a, b);
 }
 
-void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumulated,
-                const JointPass& pass, SolverState& a, SolverState& b,
-                Real maxImpulse = std::numeric_limits<Real>::infinity()) {
-  if (row.inTree && pass.useBias) return;
-  Softness soft = rowSoftness(pass);
+// A point row of softness `soft` on the error c, its accumulated impulse
+// held within maxImpulse.
+void pointRow(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumulated, const Softness& soft,
+              Real maxImpulse, SolverState& a, SolverState& b) {
   Vec2 bias = soft.biasRate * c;
   Vec2 impulse =
       -soft.massScale * solve22(pointInverseMass(row, f), pointVelocity(f, a, b) + bias) -
@@ -170,6 +169,44 @@ void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumu
   if (next.norm() > maxImpulse) next *= maxImpulse / next.norm();
   applyPoint(row, f, next - accumulated, a, b);
   accumulated = next;
+}
+
+void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumulated,
+                const JointPass& pass, SolverState& a, SolverState& b) {
+  if (row.inTree && pass.useBias) return;
+  pointRow(row, f, c, accumulated, rowSoftness(pass), std::numeric_limits<Real>::infinity(), a, b);
+}
+
+// The share of its force a rigid mouse joint plans to brake with: the rest
+// is left for the weight and other loads it may have to hold meanwhile.
+constexpr Real kBrakingShare = Real(0.5);
+
+// The fastest speed from which losing `brake` m/s per sub-step of h still
+// stops within `distance`: moving v = n brake this sub-step, then braking,
+// covers h brake n (n + 1) / 2. Near the target, no more than the distance
+// in one sub-step.
+Real stoppingSpeed(Real distance, Real brake, Real h) {
+  const Real steps = std::sqrt(Real(0.25) + 2 * distance / (h * brake)) - Real(0.5);
+  return std::min(distance / h, steps * brake);
+}
+
+// A rigid mouse joint is a drive, not a constraint: in both passes it asks
+// the anchor for the speed towards the target from which its braking share
+// of maxForce can still stop it there (the time-optimal approach), along the
+// anchor's own inverse mass towards the target, so the body really moves,
+// reports its velocity, and arrives without overshoot. A hard row would
+// move it by position correction alone, its velocity wiped by the relax
+// pass.
+void drivePoint(JointRow& row, const Frame& f, Real maxForce, const JointPass& pass, SolverState& a,
+                SolverState& b) {
+  const Real distance = f.d.norm();
+  Real rate = 0;  // the asked speed per metre of distance
+  if (distance > 0) {
+    const Vec2 u = f.d / distance;
+    const Real brake = kBrakingShare * pass.h * maxForce * u.dot(pointInverseMass(row, f) * u);
+    rate = brake > 0 ? stoppingSpeed(distance, brake, pass.h) / distance : 0;
+  }
+  pointRow(row, f, f.d, row.impulses.point, {rate, 1, 0}, pass.h * maxForce, a, b);
 }
 
 // A point constraint's mass for the spring terms: along its stiffer axis.
@@ -244,12 +281,11 @@ void solveKind(Context& x, const RevoluteJointSettings& s) {
 }
 
 void solveKind(Context& x, const MouseJointSettings& s) {
-  Real maxImpulse = x.pass.h * s.maxForce;
   if (s.stiffness > 0) {
     springPoint(x.row, x.f, s.stiffness, s.damping, x.row.impulses.pointSpring, x.pass, x.a, x.b,
-                maxImpulse);
+                x.pass.h * s.maxForce);
   } else {
-    rigidPoint(x.row, x.f, x.f.d, x.row.impulses.point, x.pass, x.a, x.b, maxImpulse);
+    drivePoint(x.row, x.f, s.maxForce, x.pass, x.a, x.b);
   }
 }
 

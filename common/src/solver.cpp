@@ -4,6 +4,7 @@
 //
 //   prepare constraints (once per step, coloured together)
 //   for each sub-step:
+//     field loads of the bodies that take them per sub-step (field.cpp)
 //     integrate velocities (gravity, forces, drag)
 //     warm start (apply last impulses)
 //     solve with soft position correction (contacts: no faster than loads need)
@@ -184,6 +185,7 @@ void solve(WorldData& world, Real dt) {
   for (const ConstraintKind* kind : kinds) kind->countPasses(world.profile.passes);
   for (int i = 0; i < step.subSteps; ++i) {
     const SubStep sub{world.solverStates, i, &world.tasks};
+    applySubStepFields(world, h);
     integrateVelocities(world, h);
     for (ConstraintKind* kind : kinds) kind->warmStart(sub);
     for (ConstraintKind* kind : kinds) kind->solve(sub);

@@ -113,6 +113,11 @@ struct WorldData {
   std::vector<const Shape*> fieldBodyShapes;
   std::vector<const Shape*> fieldStillShapes;
   std::vector<FieldLoad> fieldLoads;
+  /// The awake bodies whose field loads come per sub-step this step, and
+  /// the sources the fields see meanwhile (field.cpp).
+  std::vector<std::int32_t> subSteppedFieldBodies;
+  std::vector<FieldBody> fieldSources;
+  std::vector<const Shape*> fieldSourceShapes;
   std::vector<SolverState> solverStates;
   std::vector<SolverIntegration> solverIntegration;
   std::vector<ParkedVelocity> parkedVelocities;
@@ -147,6 +152,7 @@ struct WorldData {
 void updatePairs(WorldData& world, Real dt);      // contact.cpp: new broad-phase pairs
 void collideContacts(WorldData& world, Real dt);  // contact.cpp: manifolds
 void applyFields(WorldData& world, Real dt);      // field.cpp: field forces
+void applySubStepFields(WorldData& world, Real h);  // field.cpp: per sub-step, where a body needs it
 void solve(WorldData& world, Real dt);            // solver.cpp: constraints, integration
 void solveContinuous(WorldData& world, Real dt);  // continuous.cpp: time of impact
 void updateSleep(WorldData& world, Real dt);      // island.cpp: islands, sleeping

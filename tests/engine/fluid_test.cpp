@@ -1,7 +1,9 @@
 // Liquid regions: the exact submerged part against circle-segment and
 // clipped-box closed forms, Archimedes' floating depths (WOOD 70 %, ICE
 // 10 %), METAL's terminal speed, a box at rest without jitter, a plank
-// righting itself, a current's exponential pull, and refusals.
+// righting itself, bodies of every density dropped in coming to rest at
+// their depth without gaining energy, a current's exponential pull, and
+// refusals.
 
 #include <gtest/gtest.h>
 
@@ -95,11 +97,13 @@ TEST(Fluid, WoodAndIce_FloatAsDeepAsArchimedesSays) {
 TEST(Fluid, Metal_SinksAtItsTerminalSpeed) {
   World world;
   BodyId box = addBox(world, {.center = Vec2(0, -1), .material = Material::Metal});
-  const Real drag = 2;
+  const Real drag = 4;  // METAL displaces half its mass: its speed settles at rate 2/s
   world.addField(makeFluidRegion(water(drag)).field);
   simulate(world, 4);
-  // Weight less buoyancy against drag m k v: v = g (1 - rho_f / rho_b) / k.
-  const double terminal = kG * (1 - 1000.0 / 2000.0) / drag;
+  // Weight less buoyancy against the drag on the displaced liquid,
+  // rho_f A k v: v = g (1 - rho_f / rho_b) / (k rho_f / rho_b).
+  const double ratio = 1000.0 / materialProperties(Material::Metal).density;
+  const double terminal = kG * (1 - ratio) / (drag * ratio);
   const double measured = -stateOf(world, box).linearVelocity.y();
   std::printf("METAL sinking at %.4f m/s (closed form %.4f)\n", measured, terminal);
   EXPECT_NEAR(measured, terminal, 0.01 * terminal);
@@ -146,6 +150,112 @@ TEST(Fluid, Current_CarriesASubmergedBodyExponentially) {
   const double expected = 2 * (1 - std::exp(-1.0));
   EXPECT_NEAR(stateOf(world, ball).linearVelocity.x(), expected, 0.01 * expected);
   EXPECT_NEAR(stateOf(world, ball).linearVelocity.y(), 0, 1e-3);
+}
+
+/// A body dropped into a liquid of `densityRatio` times its own density.
+struct DropCase {
+  const char* name;
+  Shape shape;
+  double densityRatio;  ///< the body's density over the liquid's
+};
+
+/// Area of the part of a circle of `radius` below a line `depth` above its
+/// lowest point (the circular segment).
+double circularSegmentArea(double radius, double depth) {
+  const double d = radius - depth;
+  return radius * radius * std::acos(d / radius) - d * std::sqrt(radius * radius - d * d);
+}
+
+/// Archimedes: where the centre rests, relative to the surface, when the
+/// submerged area is `densityRatio` of the body's. Upright for a box (the
+/// wide ones and the light square are stable so), any way for a circle.
+double restingCenterHeight(const DropCase& drop) {
+  if (drop.shape.type() == ShapeType::Circle) {
+    const double radius = drop.shape.circle().radius;
+    const double wanted = drop.densityRatio * kPi * radius * radius;
+    double low = 0, high = 2 * radius;  // the segment's area grows with its depth
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (low + high);
+      (circularSegmentArea(radius, mid) < wanted ? low : high) = mid;
+    }
+    return radius - 0.5 * (low + high);
+  }
+  const double halfHeight = drop.shape.polygon().vertices[2].y();
+  return halfHeight - drop.densityRatio * 2 * halfHeight;
+}
+
+/// Kinetic, gravitational and buoyant energy of a body in `liquid` (surface
+/// at y = 0): the liquid's share is rho g A_sub times the submerged
+/// centroid's depth, whose gradient is the buoyancy and its torque.
+double floatingEnergy(const World& world, BodyId id, const Shape& shape, const FluidDef& liquid) {
+  const BodyState state = stateOf(world, id);
+  const MassProperties mass = world.bodyDescription(id)->mass;
+  Transform at;
+  at.p = state.position;
+  at.q = Rot::fromAngle(state.angle);
+  const SubmergedPart part = submergedPart(shape, at, liquid.polygon);
+  const double buoyant = part.area > 0 ? liquid.density * kG * part.area * -double(part.centroid.y()) : 0;
+  return 0.5 * mass.mass * state.linearVelocity.squaredNorm() + 0.5 * mass.inertia * state.angularVelocity *
+         state.angularVelocity + mass.mass * kG * state.position.y() + buoyant;
+}
+
+/// Drops the body with its bottom 1 m above the surface into a liquid of
+/// drag 5 (the Floating scene's); returns the worst energy gain over the
+/// start (J, asserted per step by the caller), when it came to rest within
+/// 2 cm of its depth and stayed, and the worst depth error after 5 s.
+struct DropOutcome {
+  double worstEnergyGain = 0;
+  double settledAfter = -1;   ///< s; -1: not within 2 cm and still by the end
+  double worstMissAfter5s = 0;
+  int timesOut = 0;           ///< how often it left the liquid after going in
+};
+
+DropOutcome dropIntoLiquid(const DropCase& drop) {
+  World world;
+  const double lowest = drop.shape.type() == ShapeType::Circle ? drop.shape.circle().radius
+                                                                : drop.shape.polygon().vertices[2].y();
+  BodyDef def = makeBodyDef(drop.shape, Vec2(0, Real(1 + lowest)), {});
+  const BodyId body = world.createBody(def).id;
+  FluidDef liquid = water(5, 5);
+  liquid.density = Real(world.bodyDescription(body)->density / drop.densityRatio);
+  world.addField(makeFluidRegion(liquid).field);
+  const double rest = restingCenterHeight(drop);
+  const double start = floatingEnergy(world, body, drop.shape, liquid);
+  DropOutcome out;
+  bool wasIn = false;
+  for (int step = 1; step <= stepsFor(8); ++step) {
+    world.step(kDt);
+    const BodyState state = stateOf(world, body);
+    out.worstEnergyGain = std::max(out.worstEnergyGain, floatingEnergy(world, body, drop.shape, liquid) - start);
+    const bool in = state.position.y() < lowest;  // some of it below the surface
+    if (wasIn && !in) ++out.timesOut;
+    wasIn = in;
+    const double miss = std::abs(state.position.y() - rest);
+    const bool still = miss < 0.02 && state.linearVelocity.norm() < 0.05;
+    if (!still) out.settledAfter = -1;
+    else if (out.settledAfter < 0) out.settledAfter = step * kDt;
+    if (step * kDt >= 5) out.worstMissAfter5s = std::max(out.worstMissAfter5s, miss);
+  }
+  return out;
+}
+
+TEST(Fluid, DroppedBodies_RestAtArchimedesDepthWithin5s_GainingNoEnergy) {
+  const Shape square = Shape::makePolygon(makeBox(Real(0.5), Real(0.5)));
+  const Shape plank = Shape::makePolygon(makeBox(1, Real(0.25)));
+  const Shape ball = Shape::makeCircle(Real(0.5));
+  const DropCase cases[] = {{"square 0.1", square, 0.1}, {"plank 0.3", plank, 0.3}, {"plank 0.5", plank, 0.5},
+                            {"plank 0.9", plank, 0.9},   {"circle 0.1", ball, 0.1},  {"circle 0.3", ball, 0.3},
+                            {"circle 0.5", ball, 0.5},   {"circle 0.9", ball, 0.9}};
+  for (const DropCase& drop : cases) {
+    const DropOutcome out = dropIntoLiquid(drop);
+    std::printf("dropped %-10s: at rest after %.2f s, worst depth error after 5 s %.4f m, worst energy gain %.3f J, "
+                "left the liquid %d times\n",
+                drop.name, out.settledAfter, out.worstMissAfter5s, out.worstEnergyGain, out.timesOut);
+    EXPECT_GE(out.settledAfter, 0) << drop.name;
+    EXPECT_LE(out.settledAfter, 5) << drop.name;
+    EXPECT_LT(out.worstMissAfter5s, 0.02) << drop.name;
+    EXPECT_LE(out.worstEnergyGain, 0) << drop.name;
+  }
 }
 
 TEST(Fluid, BadNumbers_AreRefusedNamingTheField) {

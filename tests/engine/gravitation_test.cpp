@@ -31,9 +31,17 @@ TEST(Gravitation, PullOfOneMass_IsNewtons) {
   EXPECT_NEAR(pull.x() / pull.norm(), 0.6, 1e-12) << "towards the source";
 }
 
-TEST(Gravitation, CircularOrbit_KeepsItsRadiusAndKeplersPeriod) {
+/// A light planet on a circular orbit of radius 10 m around a static sun,
+/// with G chosen for `period`, followed for five orbits.
+struct OrbitFigures {
+  double lowest = 0;   ///< radius, m
+  double highest = 0;
+  double period = 0;   ///< s, mean between crossings of +x
+};
+
+OrbitFigures circularOrbit(double period) {
   World world = weightlessWorld();
-  const double sunRadius = 1, orbitRadius = 10, period = 10;
+  const double sunRadius = 1, orbitRadius = 10;
   addCircle(world, {.center = Vec2(0, 0), .radius = Real(sunRadius), .isStatic = true});
   // G M = 4 pi^2 R^3 / T^2 for the period we want.
   const double constant = 4 * kPi * kPi * std::pow(orbitRadius, 3) / (period * period) /
@@ -41,32 +49,47 @@ TEST(Gravitation, CircularOrbit_KeepsItsRadiusAndKeplersPeriod) {
   const double speed = std::sqrt(constant * massOf(Real(sunRadius), Material::Solid) / orbitRadius);
   BodyId planet = addCircle(world, {.center = Vec2(Real(orbitRadius), 0), .radius = Real(0.2),
                                     .velocity = Vec2(0, Real(speed))});
-  ASSERT_TRUE(world.addField(makeGravitation({constant}).field).value != 0);
+  EXPECT_TRUE(world.addField(makeGravitation({constant}).field).value != 0);
 
-  double lowest = orbitRadius, highest = orbitRadius;
+  OrbitFigures out{orbitRadius, orbitRadius, 0};
   std::vector<double> crossings;  // times the planet crosses +x going up
   Vec2 previous = stateOf(world, planet).position;
   for (int step = 1; step <= stepsFor(5 * period); ++step) {
     world.step(kDt);
     const Vec2 position = stateOf(world, planet).position;
-    lowest = std::min<double>(lowest, position.norm());
-    highest = std::max<double>(highest, position.norm());
+    out.lowest = std::min<double>(out.lowest, position.norm());
+    out.highest = std::max<double>(out.highest, position.norm());
     if (previous.y() < 0 && position.y() >= 0 && position.x() > 0) {
       const double fraction = -previous.y() / (position.y() - previous.y());
       crossings.push_back((step - 1 + fraction) * kDt);
     }
     previous = position;
   }
-  ASSERT_GE(crossings.size(), 4u);
-  const double measured = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
-  RecordProperty("radius_low", std::to_string(lowest));
-  RecordProperty("radius_high", std::to_string(highest));
-  RecordProperty("period", std::to_string(measured));
-  std::printf("circular orbit: radius %.5f..%.5f (R = %.1f), period %.5f s (Kepler %.1f)\n", lowest, highest,
-              orbitRadius, measured, period);
-  EXPECT_NEAR(lowest, orbitRadius, 0.01 * orbitRadius);
-  EXPECT_NEAR(highest, orbitRadius, 0.01 * orbitRadius);
-  EXPECT_NEAR(measured, period, 0.01 * period);
+  EXPECT_GE(crossings.size(), 4u);
+  if (crossings.size() >= 2) out.period = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+  std::printf("circular orbit of %.0f steps per period: radius %.5f..%.5f (R = %.1f), period %.5f s (Kepler %.4f)\n",
+              period / kDt, out.lowest, out.highest, orbitRadius, out.period, period);
+  return out;
+}
+
+TEST(Gravitation, CircularOrbit_KeepsItsRadiusAndKeplersPeriod) {
+  const OrbitFigures orbit = circularOrbit(10);
+  RecordProperty("radius_low", std::to_string(orbit.lowest));
+  RecordProperty("radius_high", std::to_string(orbit.highest));
+  RecordProperty("period", std::to_string(orbit.period));
+  EXPECT_NEAR(orbit.lowest, 10, 0.01 * 10);
+  EXPECT_NEAR(orbit.highest, 10, 0.01 * 10);
+  EXPECT_NEAR(orbit.period, 10, 0.01 * 10);
+}
+
+// 100 steps per period: one kick per step swung the radius +-3 %; the pull
+// taken per sub-step keeps it within 1 %.
+TEST(Gravitation, FastOrbitOf100StepsPerPeriod_KeepsItsRadiusWithin1Percent) {
+  const double period = 100 * double(kDt);
+  const OrbitFigures orbit = circularOrbit(period);
+  EXPECT_NEAR(orbit.lowest, 10, 0.01 * 10);
+  EXPECT_NEAR(orbit.highest, 10, 0.01 * 10);
+  EXPECT_NEAR(orbit.period, period, 0.01 * period);
 }
 
 struct TwoBodyTotals {
@@ -124,9 +147,10 @@ TEST(Gravitation, StaticBodiesPull_ButDoNotMove) {
   BodyId stone = addCircle(world, {.center = Vec2(5, 0), .radius = Real(0.2)});
   world.addField(makeGravitation({1}).field);
   world.step(kDt);
-  // One step's kick: v = G M / r^2 * dt, towards the sun.
+  // One step's pull: v = G M / r^2 * dt, towards the sun (taken per
+  // sub-step this close, as the stone falls a few mm nearer: within 1 %).
   const double expected = massOf(1, Material::Solid) / 25.0 * kDt;
-  EXPECT_NEAR(stateOf(world, stone).linearVelocity.x(), -expected, 1e-4 * expected);
+  EXPECT_NEAR(stateOf(world, stone).linearVelocity.x(), -expected, 1e-2 * expected);
   EXPECT_EQ(stateOf(world, sun).position, Vec2(0, 0));
 }
 

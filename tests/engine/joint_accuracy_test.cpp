@@ -506,5 +506,72 @@ TEST(JointAccuracy, MouseJoint_PullsToTheTargetWithAtMostMaxForce) {
   EXPECT_NEAR(world.jointState(mouse)->reactionForce.norm(), 0, maxForce * 0.05);
 }
 
+/// A rigid mouse joint (stiffness 0) pulling a box at rest towards a target
+/// `pull` away, followed for `seconds`.
+struct RigidPull {
+  double arrival = -1;         ///< s until within 1 cm of the target; -1: never
+  double slowestMoving = 1e9;  ///< m/s, lowest reported speed while over 10 cm away
+  bool sleptAway = false;      ///< asleep at some step while over 1 cm away
+  double overshoot = 0;        ///< m, furthest past the target along the pull
+  double steepestGain = 0;     ///< m/s^2, largest speed gain in a step
+};
+
+RigidPull pullRigidly(World& world, BodyId box, Vec2 pull, double maxForce, double seconds) {
+  const Vec2 start = stateOf(world, box).position;
+  const Vec2 target = start + pull;
+  const Vec2 along = pull.normalized();
+  addJoint(world, box, BodyId{}, start, target, MouseJointSettings{.maxForce = Real(maxForce)});
+  RigidPull out;
+  Real previousSpeed = 0;
+  record(world, seconds, [&] {
+    const BodyState state = stateOf(world, box);
+    const double away = (target - state.position).norm();
+    const double speed = state.linearVelocity.norm();
+    if (out.arrival < 0 && away < 0.01) out.arrival = world.simulatedTime();
+    if (away > 0.1) out.slowestMoving = std::min(out.slowestMoving, speed);
+    out.sleptAway = out.sleptAway || (!state.awake && away > 0.01);
+    out.overshoot = std::max(out.overshoot, double(along.dot(state.position - target)));
+    out.steepestGain = std::max(out.steepestGain, double(speed - previousSpeed) / kDt);
+    previousSpeed = Real(speed);
+    return 0.0;
+  });
+  return out;
+}
+
+// A rigid mouse joint drives its body with real velocity, as fast as its
+// force allows and no faster than it can stop: a box pulled 5 m (at 1000
+// times its weight) arrives within 1 s, moving and awake all the way.
+TEST(JointAccuracy, RigidMouseJoint_Pulls5mWithin1s_MovingAwakeAndStoppingAtTheTarget) {
+  World world;
+  BodyId box = addBox(world, {.center = Vec2(0, 5)});
+  const double weight = massOf(world, box) * kG;
+  const RigidPull pull = pullRigidly(world, box, Vec2(5, 0), 1000 * weight, 2);
+  report("rigid mouse 5 m pull: time to within 1 cm (s)", pull.arrival);
+  report("rigid mouse 5 m pull: slowest reported speed while over 10 cm away (m/s)", pull.slowestMoving);
+  report("rigid mouse 5 m pull: overshoot (m)", pull.overshoot);
+  EXPECT_GT(pull.arrival, 0);
+  EXPECT_LT(pull.arrival, 1);
+  EXPECT_GT(pull.slowestMoving, 0.5) << "the reported velocity is the motion's";
+  EXPECT_FALSE(pull.sleptAway);
+  EXPECT_LT(pull.overshoot, 0.01);
+  EXPECT_LT((stateOf(world, box).position - Vec2(5, 5)).norm(), 0.01) << "and it stays there";
+}
+
+// However far the target, the pull is limited by maxForce: a heavy box on
+// a weak joint gains speed at no more than maxForce / mass.
+TEST(JointAccuracy, RigidMouseJoint_WeakPull_AcceleratesAtMostMaxForceOverMass) {
+  World world;
+  BodyId box = addBox(world, {.center = Vec2(0, 0), .material = Material::Metal, .ignoreGravity = true});
+  const double mass = massOf(world, box);
+  const RigidPull pull = pullRigidly(world, box, Vec2(3, 0), 2 * mass, 5);  // at most 2 m/s^2
+  report("rigid mouse weak pull: peak acceleration / (maxForce/m)", pull.steepestGain / 2);
+  report("rigid mouse weak pull: time to within 1 cm of 3 m (s)", pull.arrival);
+  report("rigid mouse weak pull: overshoot (m)", pull.overshoot);
+  EXPECT_LT(pull.steepestGain, 2 * 1.001);
+  EXPECT_GT(pull.arrival, 0);
+  EXPECT_LT(pull.overshoot, 0.01);
+  EXPECT_FALSE(pull.sleptAway);
+}
+
 }  // namespace
 }  // namespace impulse::test

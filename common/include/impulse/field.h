@@ -6,8 +6,18 @@
 /// depends on where bodies are (gravitation, buoyancy) may return an impulse instead:
 /// it is added to the velocity at the start of the step, before the
 /// sub-steps move the body, which makes the step symplectic Euler for that
-/// pull (orbits neither spiral in nor out). A world without fields pays
-/// nothing for the stage.
+/// pull (orbits neither spiral in nor out).
+///
+/// Symplectic Euler at the step swings a body about its true path by about
+/// w dt / 2 of its distance, w^2 being how fast its acceleration changes per
+/// metre (FieldLoad::gradient). A body whose loads add up to w dt > 0.01 is
+/// therefore given no load for the step: every field is asked again at
+/// every sub-step, with the body where the sub-step has it and dt the
+/// sub-step, and its load (impulse plus force times dt) is added to its
+/// velocity then. A field may ask for this for every body (everySubStep:
+/// gravitation); the world then asks every field per sub-step only. A world
+/// without fields pays nothing for the stage, and one whose fields are
+/// uniform or slow (gradient 0 or small) pays one call per field and step.
 
 #include <cstdint>
 #include <memory>
@@ -40,18 +50,24 @@ struct FieldLoad {
   Real torque = 0;
   Vec2 impulse = Vec2::Zero();  ///< N*s, added to the velocity before the sub-steps
   Real angularImpulse = 0;      ///< N*m*s, added to the spin before the sub-steps
+  /// 1/s^2: how fast this field's acceleration of the body changes per
+  /// metre the body moves (an upper bound will do; 0 for a uniform field).
+  /// Fields add theirs; a large sum has the body's loads taken per sub-step.
+  Real gradient = 0;
 };
 
-/// What a field sees of the world for one step.
+/// What a field sees of the world for one step (or one sub-step: see above).
 struct FieldStep {
   /// The awake dynamic bodies: the ones the field pushes (loads[i] is bodies[i]'s).
   std::span<const FieldBody> bodies;
   /// Static and sleeping bodies, only for a field that asks (needsStillBodies):
   /// they are sources of the field but are not pushed. A static body's mass
-  /// is its area times its density.
+  /// is its area times its density. Asked per sub-step, `bodies` are the
+  /// ones taken per sub-step and the other awake bodies are here too, where
+  /// the sub-step has them.
   std::span<const FieldBody> stillBodies;
   Vec2 gravity = Vec2::Zero();
-  Real dt = 0;
+  Real dt = 0;  ///< the step's, or the sub-step's when asked per sub-step
 };
 
 class ForceField {
@@ -64,6 +80,9 @@ class ForceField {
   /// True for a field that comes from the bodies themselves and so needs
   /// FieldStep::stillBodies; the others do not pay for gathering them.
   virtual bool needsStillBodies() const { return false; }
+  /// True for a field that wants every body's load at every sub-step,
+  /// whatever the gradients: the world then asks every field so.
+  virtual bool everySubStep() const { return false; }
 };
 
 /// A field made from user numbers, or the reason they were refused (the

@@ -14,9 +14,13 @@ struct FluidDef {
   /// coordinate within +-10000 m, area 0.01 to 1e6 m^2.
   std::vector<Vec2> polygon;
   Real density = 1000;  ///< kg/m^2 (areal, as the materials), in (0, 100000]
-  /// Rates (1/s) in [0, 100]: fully submerged, a body's speed relative to the
-  /// current decays as exp(-linearDrag t) and its spin as exp(-angularDrag t)
-  /// (stepped by backward Euler); a body partly in takes that share of the drag.
+  /// Rates (1/s) in [0, 100] on the liquid a body displaces: the drag is the
+  /// rate times that mass times the speed relative to the current (the spin
+  /// likewise). Fully submerged, a body's speed relative to the current
+  /// decays as exp(-linearDrag (density / body's density) t) and its spin
+  /// as exp(-angularDrag (density / body's density) t); floating, every body
+  /// displaces its own mass, so its bobbing dies at these rates whatever its
+  /// density. Stepped by backward Euler, stable at any rate.
   Real linearDrag = 1;
   Real angularDrag = 1;
   Vec2 current = Vec2::Zero();  ///< m/s, each component within +-100
@@ -31,6 +35,8 @@ class FluidRegion : public ForceField {
 
  private:
   FieldLoad loadOn(const FieldBody& body, const FieldStep& step) const;
+  Real gradientOn(const FieldBody& body, const FieldStep& step) const;
+  Real outsideBy(const Vec2& p) const;
 
   FluidDef def_;
   AABB box_;
