@@ -86,6 +86,7 @@ bool isAwayFromTarget(const JointRow& row) {
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
   rows_.clear();
+  colorStarts_ = {};
   if (world.liveJoints == 0) {
     tree_.clear();
     return false;
