@@ -40,12 +40,7 @@ TEST(ScenePicker, AClickOnAPresetLoadsIt_TheTitleAndHeaderNameTheRoom) {
 
   const viewer::PixelRect speed = *presetEntry(viewer.app(), 7);
   const float x = speed.x + speed.w / 2, y = speed.y + speed.h / 2;
-  viewer.mouseMove(x, y);
-  viewer.runFrames(2);
-  viewer.mouseButton(x, y, true);
-  viewer.runFrames(2);
-  viewer.mouseButton(x, y, false);
-  viewer.runFrames(2);
+  viewer.clickPixel(x, y);
 
   auto options = observerOptions(server.port());
   options.room = "studio";

@@ -9,17 +9,6 @@
 namespace impulse::viewer_test {
 namespace {
 
-// A press and release of the left button at window pixel (x, y), with the
-// frames ImGui needs to see the pointer arrive first.
-void clickPixel(ViewerHarness& viewer, float x, float y) {
-  viewer.mouseMove(x, y);
-  viewer.runFrames(2);
-  viewer.mouseButton(x, y, true);
-  viewer.runFrames(2);
-  viewer.mouseButton(x, y, false);
-  viewer.runFrames(2);
-}
-
 TEST(EditableInspector, TypedPositionMovesTheBody_TypeButtonMakesItKinematic) {
   net_test::ServerProcess server({"--paused"});
   ViewerHarness viewer(server.port());
@@ -39,7 +28,7 @@ TEST(EditableInspector, TypedPositionMovesTheBody_TypeButtonMakesItKinematic) {
 
   // x is the first of the three fields: a click selects its text, typing replaces it.
   const viewer::PixelRect pose = *viewer.app().panelState().poseFields;
-  clickPixel(viewer, pose.x + pose.w / 6, pose.y + pose.h / 2);
+  viewer.clickPixel(pose.x + pose.w / 6, pose.y + pose.h / 2);
   viewer.typeText("4");
   viewer.tap(SDLK_RETURN);
   ASSERT_TRUE(observeUntil(viewer, observer, [&] {
@@ -52,7 +41,7 @@ TEST(EditableInspector, TypedPositionMovesTheBody_TypeButtonMakesItKinematic) {
 
   ASSERT_TRUE(viewer.app().panelState().typeButtons[1].has_value());
   const viewer::PixelRect kinematic = *viewer.app().panelState().typeButtons[1];
-  clickPixel(viewer, kinematic.x + kinematic.h / 2, kinematic.y + kinematic.h / 2);
+  viewer.clickPixel(kinematic.x + kinematic.h / 2, kinematic.y + kinematic.h / 2);
   ASSERT_TRUE(observeUntil(viewer, observer, [&] {
     const auto* body = observer.mirror().find(id);
     return body != nullptr && body->isKinematic;

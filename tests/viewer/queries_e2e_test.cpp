@@ -170,17 +170,6 @@ TEST(EventFlashesE2E, AHardLandingInASensorFlashesTheHitAndTheSensor) {
   EXPECT_TRUE(flashes.flashes().empty());
 }
 
-// A press and release of the left button at window pixel (x, y), with the
-// frames ImGui needs to see the pointer arrive first.
-void clickPixel(ViewerHarness& viewer, float x, float y) {
-  viewer.mouseMove(x, y);
-  viewer.runFrames(2);
-  viewer.mouseButton(x, y, true);
-  viewer.runFrames(2);
-  viewer.mouseButton(x, y, false);
-  viewer.runFrames(2);
-}
-
 TEST(InspectorFlags, AClickOnHitEventsSetsThem_TheOthersStay) {
   // Tall enough for the whole inspector: its check boxes come last.
   Scene scene({"--paused"}, 1100);
@@ -194,7 +183,7 @@ TEST(InspectorFlags, AClickOnHitEventsSetsThem_TheOthersStay) {
   ASSERT_NE(shot, nullptr);
   EXPECT_FALSE(scene.observer.mirror().find(BodyId{id})->flags.enableHitEvents);
   const viewer::PixelRect hitEvents = *boxes[3];
-  clickPixel(scene.viewer, hitEvents.x + hitEvents.h / 2, hitEvents.y + hitEvents.h / 2);
+  scene.viewer.clickPixel(hitEvents.x + hitEvents.h / 2, hitEvents.y + hitEvents.h / 2);
   ASSERT_TRUE(scene.observe([&] {
     const auto* body = scene.observer.mirror().find(BodyId{id});
     return body != nullptr && body->flags.enableHitEvents;

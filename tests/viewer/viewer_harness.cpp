@@ -141,6 +141,15 @@ void ViewerHarness::click(const Vec2& world) {
   app_->frame();
 }
 
+void ViewerHarness::clickPixel(float px, float py) {
+  mouseMove(px, py);
+  runFrames(2);
+  mouseButton(px, py, true);
+  runFrames(2);
+  mouseButton(px, py, false);
+  runFrames(2);
+}
+
 bool observeUntil(ViewerHarness& viewer, client::Client& observer,
                   const std::function<bool()>& done, std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;

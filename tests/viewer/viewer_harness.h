@@ -46,6 +46,9 @@ class ViewerHarness {
   void mouseButton(float px, float py, bool down, Uint8 button = SDL_BUTTON_LEFT);
   void wheel(int notches);
   void click(const Vec2& world);
+  /// A press and release of the left button at window pixel (x, y), with
+  /// the frames ImGui needs to see the pointer arrive first (widgets).
+  void clickPixel(float px, float py);
   /// Pixel of a world point in the current window.
   viewer::PixelPoint pixel(const Vec2& world) const { return app_->view().toPixels(world); }
 
