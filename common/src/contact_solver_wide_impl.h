@@ -437,6 +437,24 @@ void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& s
   }
 }
 
+// visit(k) for each entry k of the push pass's bundle list, colour by
+// colour, one colour's side by side. The list is in bundle order, so each
+// colour's entries are one run of it.
+template <class Visit>
+void forEachPushBundleByColor(const ContactSolverContext& context, const WideContactSet& set, Visit&& visit) {
+  const std::vector<std::int32_t>& list = set.pushBundles;
+  auto colorBegin = list.begin();
+  for (int color = 0; color < GraphColoring::kOverflow && colorBegin != list.end(); ++color) {
+    const auto colorEnd = std::lower_bound(colorBegin, list.end(), set.colorBundleStart[std::size_t(color) + 1]);
+    const auto first = std::size_t(colorBegin - list.begin());
+    context.tasks->forRanges(std::int32_t(colorEnd - colorBegin), kBundlesPerRange,
+                             [&](std::int32_t begin, std::int32_t end) {
+                               for (std::int32_t k = begin; k < end; ++k) visit(first + std::size_t(k));
+                             });
+    colorBegin = colorEnd;
+  }
+}
+
 template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
   forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
@@ -483,7 +501,7 @@ template <class F>
 void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   const F maxPush = simd::broadcast<F>(-context.maxPushSpeed);
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
-  for (std::size_t k = 0; k < set.pushBundles.size(); ++k) {
+  forEachPushBundleByColor(context, set, [&](std::size_t k) {
     WideConstraint<F>& c = bundles[std::size_t(set.pushBundles[k])];
     const F pushes = laneMask<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
@@ -501,7 +519,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     }
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
-  }
+  });
   for (std::int32_t index : set.pushOverflow) pushOverlap(context, set.overflow[std::size_t(index)]);
 }
 

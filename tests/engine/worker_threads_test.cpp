@@ -70,6 +70,26 @@ void buildJointGrid(World& world) {
   }
 }
 
+// 3 000 circles and boxes created overlapping in a walled pit: the push
+// pass runs on most contacts while they spread out.
+void buildOverlappingPile(World& world) {
+  addGround(world, 0, 40);
+  for (Real x : {Real(-12), Real(12)}) {
+    addBox(world, {.center = Vec2(x, 20), .halfWidth = Real(0.5), .halfHeight = 20, .isStatic = true});
+  }
+  std::mt19937 random(5);
+  std::uniform_real_distribution<Real> x(-11, 11);
+  std::uniform_real_distribution<Real> y(Real(0.5), 12);
+  for (int i = 0; i < 3000; ++i) {
+    const Vec2 centre(x(random), y(random));
+    if (i % 2 == 0) {
+      world.createCircle(centre, Real(0.3));
+    } else {
+      addBox(world, {.center = centre, .halfWidth = Real(0.3), .halfHeight = Real(0.3)});
+    }
+  }
+}
+
 WorldSettings wideSettings(const TaskSettings& tasks) {
   WorldSettings settings;
   settings.bounds = {Vec2(-150, -50), Vec2(150, 250)};
@@ -105,6 +125,15 @@ TEST(WorkerThreads, StruckPyramidGivesTheSameBitsOnOneToThreeThreads) {
     expectSameBits(one, hashesAfterEachStep(buildStruckPyramid, {.workerCount = workers}, 60),
                    ("workers " + std::to_string(workers)).c_str());
   }
+}
+
+TEST(WorkerThreads, OverlappingPileGivesTheSameBitsOnOneAndTwoThreads) {
+  World world(wideSettings({}));
+  buildOverlappingPile(world);
+  world.step(kDt);
+  EXPECT_GT(world.profile().passes.pushedContacts, 2000) << "the push pass runs on a large part of the pile";
+  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildOverlappingPile, {}, 40);
+  expectSameBits(one, hashesAfterEachStep(buildOverlappingPile, {.workerCount = 2}, 40), "workers 2");
 }
 
 TEST(WorkerThreads, JointGridGivesTheSameBitsOnOneAndTwoThreads) {
@@ -153,6 +182,8 @@ TEST(WorkerThreads, AGamesJobSystemRunningRangesBackwardsGivesTheSameBits) {
                               .userContext = &jobs};
   expectSameBits(one, hashesAfterEachStep(buildStruckPyramid, settings, 60), "backwards jobs");
   EXPECT_GT(jobs.tasks, 60) << "every step handed phases to the job system";
+  expectSameBits(hashesAfterEachStep(buildOverlappingPile, {}, 20),
+                 hashesAfterEachStep(buildOverlappingPile, settings, 20), "backwards jobs, push pass");
   EXPECT_GT(jobs.ranges, 2 * jobs.tasks) << "phases were cut into several ranges";
 }
 
