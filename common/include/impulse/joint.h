@@ -85,8 +85,10 @@ struct WheelJointSettings {
 };
 
 /// Pulls anchorA of body A towards a target (anchorB at creation; then
-/// World::updateJoint) with at most maxForce, as a spring (stiffness 0:
-/// rigid, still limited by maxForce). Motor speeds of every kind are B's
+/// World::updateJoint) with at most maxForce, as a spring. Stiffness 0 is a
+/// rigid drive: the body moves with real velocity, the fastest from which
+/// half of maxForce still stops it at the target, and stays awake while its
+/// anchor is more than 1 cm away. Motor speeds of every kind are B's
 /// relative to A: with B the world, A turns or slides the other way.
 struct MouseJointSettings {
   Real maxForce = 0;   ///< N
