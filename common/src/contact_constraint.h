@@ -24,6 +24,12 @@ struct ConstraintRef {
   std::int32_t stateB = 0;
   /// Holds its upper body up in the support pass (support_pass.h).
   bool holdsUp = false;
+  /// The bodies' inverse mass and inertia, zero unless awake: read once
+  /// with the states, so preparing a contact touches no body.
+  Real invMassA = 0;
+  Real invInertiaA = 0;
+  Real invMassB = 0;
+  Real invInertiaB = 0;
 };
 
 struct ConstraintPoint {
@@ -102,6 +108,20 @@ struct ContactPlace {
   std::int32_t lane = 0;
 };
 
+/// Runs of entries cut into bundles of a lane width: bundle b holds entries
+/// [first[b], first[b] + lanes[b]) of its list. Laid out one after the
+/// other, so the bundles can then be filled side by side.
+struct BundleSlices {
+  std::vector<std::int32_t> first;
+  std::vector<std::uint8_t> lanes;
+
+  std::int32_t count() const { return static_cast<std::int32_t>(first.size()); }
+  /// Cuts each run [runStarts[i], runStarts[i + 1]) into bundles of `width`
+  /// (the last of a run may be short); runBundleStart[i] receives run i's
+  /// first bundle, and its last entry the bundle count.
+  void cut(std::span<const std::int32_t> runStarts, int width, std::span<std::int32_t> runBundleStart);
+};
+
 struct WideContactSet {
   /// Bundles of the width in use (the other stays empty).
   std::vector<WideConstraint<simd::F4>> bundles4;
@@ -133,6 +153,12 @@ struct WideContactSet {
   // Scratch for sorting by colour, kept to avoid allocation per step.
   std::vector<std::int32_t> colorOf;
   std::vector<std::int32_t> order;
+  /// The contact bundles' entries of `order`, and the support bundles'
+  /// rows; per contact bundle, its lanes that intruded when prepared
+  /// (bundles fill side by side, the intrusions are marked after).
+  BundleSlices contactSlices;
+  BundleSlices supportSlices;
+  std::vector<std::uint8_t> bundleIntrusion;
 };
 
 /// What the contact passes of one sub-step read besides the constraints.

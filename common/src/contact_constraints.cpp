@@ -9,13 +9,24 @@ namespace impulse {
 
 namespace {
 
-// Anything not awake (static) shares the dummy state 0 and gets zero
-// inverse mass, so the dummy's velocity stays zero without checks.
+// A body's side of a ref. Anything not awake (static) shares the dummy
+// state 0 and gets zero inverse mass, so the dummy's velocity stays zero
+// without checks.
+struct RefSide {
+  std::int32_t state = 0;
+  Real invMass = 0;
+  Real invInertia = 0;
+};
+
+RefSide sideOf(const Body& body) {
+  return body.awake ? RefSide{body.solverIndex, body.invMass, body.invInertia} : RefSide{};
+}
+
 ConstraintRef refOf(const WorldData& world, std::int32_t index) {
   const Contact& contact = world.contacts[index];
-  const Body& a = world.bodies[contact.edges.bodyA];
-  const Body& b = world.bodies[contact.edges.bodyB];
-  return {index, a.awake ? a.solverIndex : 0, b.awake ? b.solverIndex : 0};
+  const RefSide a = sideOf(world.bodies[contact.edges.bodyA]);
+  const RefSide b = sideOf(world.bodies[contact.edges.bodyB]);
+  return {index, a.state, b.state, false, a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
 // The touching contacts the step solves: the narrow phase's list.
@@ -39,7 +50,7 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   const ContactSoftness softness = contactSoftness(world.settings, step.h);
   support_.order(world, refs_, world.solverStates.size(), softness, step.h);
   bool intrusion = kernels_->build(world, refs_, softness, coloring, wide_);
-  kernels_->loadSupport(wide_, support_);
+  kernels_->loadSupport(world.tasks, wide_, support_);
   return intrusion;
 }
 

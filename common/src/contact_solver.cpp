@@ -240,4 +240,17 @@ void storeImpulses(std::span<const ContactConstraint> constraints, WorldData& wo
   }
 }
 
+void BundleSlices::cut(std::span<const std::int32_t> runStarts, int width, std::span<std::int32_t> runBundleStart) {
+  first.clear();
+  lanes.clear();
+  for (std::size_t run = 0; run + 1 < runStarts.size(); ++run) {
+    runBundleStart[run] = count();
+    for (std::int32_t entry = runStarts[run]; entry < runStarts[run + 1]; entry += width) {
+      first.push_back(entry);
+      lanes.push_back(static_cast<std::uint8_t>(std::min(width, runStarts[run + 1] - entry)));
+    }
+  }
+  runBundleStart[runStarts.size() - 1] = count();
+}
+
 }  // namespace impulse

@@ -31,7 +31,7 @@ struct WideContactKernels {
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
   /// Lays the support pass's rows out in bundles, each lane from its
   /// prepared constraint (support_pass.h).
-  void (*loadSupport)(WideContactSet& set, const SupportPass& pass);
+  void (*loadSupport)(const TaskRunner& tasks, WideContactSet& set, const SupportPass& pass);
   /// The support pass of one sub-step, storey by storey from the ground.
   void (*solveSupport)(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);

@@ -214,18 +214,16 @@ template <class F>
 void gatherLane(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
                 WideConstraint<F>& w, BundleInputs<F>& in, int lane) {
   const Contact& contact = world.contacts[ref.contact];
-  const Body& bodyA = world.bodies[contact.edges.bodyA];
-  const Body& bodyB = world.bodies[contact.edges.bodyB];
   const Manifold& manifold = contact.manifold;
   w.stateA[lane] = ref.stateA;
   w.stateB[lane] = ref.stateB;
   w.source[lane] = ref.contact;
   setLane(w.normalX, lane, manifold.normal.x());
   setLane(w.normalY, lane, manifold.normal.y());
-  setLane(w.invMassA, lane, bodyA.awake ? bodyA.invMass : 0);
-  setLane(w.invInertiaA, lane, bodyA.awake ? bodyA.invInertia : 0);
-  setLane(w.invMassB, lane, bodyB.awake ? bodyB.invMass : 0);
-  setLane(w.invInertiaB, lane, bodyB.awake ? bodyB.invInertia : 0);
+  setLane(w.invMassA, lane, ref.invMassA);
+  setLane(w.invInertiaA, lane, ref.invInertiaA);
+  setLane(w.invMassB, lane, ref.invMassB);
+  setLane(w.invInertiaB, lane, ref.invInertiaB);
   const Softness& soft = (ref.stateA == 0 || ref.stateB == 0) ? softness.statics : softness.dynamic;
   setLane(w.biasRate, lane, soft.biasRate);
   setLane(w.massScale, lane, soft.massScale);
@@ -370,41 +368,71 @@ void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
   }
 }
 
+// Asks for the contacts a bundle's lanes read before reading the first:
+// the contacts are scattered, and their misses then overlap.
+void prefetchContacts(const WorldData& world, std::span<const ConstraintRef> refs,
+                      std::span<const std::int32_t> entries) {
+  for (std::int32_t refIndex : entries) {
+    const Contact& contact = world.contacts[refs[std::size_t(refIndex)].contact];
+    __builtin_prefetch(&contact);
+    __builtin_prefetch(&contact.manifold.points[0]);
+    __builtin_prefetch(&contact.staticFriction);
+  }
+}
+
+// Prepares bundle b from its lanes' contacts; returns its lanes with a
+// point deeper than its load explains. Reads only its own lanes' contacts
+// and writes only its own bundle, so bundles fill side by side.
+template <class F>
+std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> refs,
+                        const ContactSoftness& softness, WideContactSet& set, std::int32_t b) {
+  static const WideConstraint<F> kEmpty = emptyBundle<F>();
+  WideConstraint<F>& c = bundlesOf<F>(set)[std::size_t(b)];
+  c = kEmpty;
+  const std::span<const std::int32_t> entries(set.order.data() + set.contactSlices.first[std::size_t(b)],
+                                               set.contactSlices.lanes[std::size_t(b)]);
+  prefetchContacts(world, refs, entries);
+  BundleInputs<F> inputs{};
+  for (std::size_t lane = 0; lane < entries.size(); ++lane) {
+    const int laneIndex = static_cast<int>(lane);
+    set.placeOf[std::size_t(entries[lane])] = {b, laneIndex};
+    gatherLane(world, refs[std::size_t(entries[lane])], softness, c, inputs, laneIndex);
+  }
+  return laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
+}
+
+// Bundles per range when filling them side by side: filling one costs
+// about a microsecond, mostly waiting on its contacts.
+constexpr std::int32_t kBundlesPerFillRange = 16;
+
 template <class F>
 bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
                        const ContactSoftness& softness, GraphColoring& coloring, WideContactSet& set) {
   set.colorOf.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) set.colorOf[i] = coloring.take(refs[i].stateA, refs[i].stateB);
   const ColorStarts start = sortByColor(set.colorOf, set.order);
-
   set.placeOf.resize(refs.size());
+  set.contactSlices.cut(std::span(start).first(GraphColoring::kOverflow + 1), F::kLanes, set.colorBundleStart);
+  const std::int32_t bundleCount = set.contactSlices.count();
+
   auto& bundles = bundlesOf<F>(set);
-  bundles.clear();
+  bundles.resize(std::size_t(bundleCount));
+  set.bundleIntrusion.resize(std::size_t(bundleCount));
+  world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end; ++b) set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b);
+  });
+
   joinIslands(refs, world.solverStates.size(), set);
   bool anyIntrusion = false;
-  BundleInputs<F> inputs{};
-  static const WideConstraint<F> kEmpty = emptyBundle<F>();
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
-    set.colorBundleStart[std::size_t(color)] = static_cast<std::int32_t>(bundles.size());
-    for (std::int32_t k = start[color]; k < start[color + 1]; ++k) {
-      const int lane = (k - start[color]) % F::kLanes;
-      if (lane == 0) {
-        bundles.push_back(kEmpty);
-        inputs = BundleInputs<F>{};
-      }
-      const std::int32_t refIndex = set.order[k];
-      set.placeOf[std::size_t(refIndex)] = {static_cast<std::int32_t>(bundles.size() - 1), lane};
-      gatherLane(world, refs[std::size_t(refIndex)], softness, bundles.back(), inputs, lane);
-      if (lane < F::kLanes - 1 && k + 1 < start[color + 1]) continue;
-      WideConstraint<F>& c = bundles.back();
-      const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
-      for (int l = 0; l < F::kLanes; ++l) {
-        if ((intruding >> l & 1u) != 0) markPushed(set, c.stateA[l], c.stateB[l]);
-      }
-      anyIntrusion = anyIntrusion || intruding != 0;
+  for (std::int32_t b = 0; b < bundleCount; ++b) {
+    const std::uint8_t intruding = set.bundleIntrusion[std::size_t(b)];
+    if (intruding == 0) continue;
+    const WideConstraint<F>& c = bundles[std::size_t(b)];
+    for (int l = 0; l < F::kLanes; ++l) {
+      if ((intruding >> l & 1u) != 0) markPushed(set, c.stateA[l], c.stateB[l]);
     }
+    anyIntrusion = true;
   }
-  set.colorBundleStart[GraphColoring::kOverflow] = static_cast<std::int32_t>(bundles.size());
   set.overflow.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
@@ -563,28 +591,37 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   applyRestitution(overflowContext(context, set));
 }
 
+// Writes one bundle's impulses into its lanes' manifolds.
 template <class F>
-void storeWideImpulses(const WideContactSet& set, WorldData& world) {
-  for (const WideConstraint<F>& w : bundlesOf<F>(const_cast<WideContactSet&>(set))) {
-    alignas(16) float rolling[F::kLanes];
-    alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], support[2][F::kLanes];
-    simd::store(rolling, w.rollingImpulse);
-    for (int j = 0; j < 2; ++j) {
-      simd::store(normal[j], w.points[j].normalImpulse);
-      simd::store(tangent[j], w.points[j].tangentImpulse);
-      simd::store(support[j], w.points[j].supportImpulse);
-    }
-    for (int lane = 0; lane < F::kLanes; ++lane) {
-      if (w.source[lane] < 0) continue;
-      Manifold& manifold = world.contacts[w.source[lane]].manifold;
-      manifold.rollingImpulse = rolling[lane];
-      for (int j = 0; j < manifold.pointCount; ++j) {
-        manifold.points[j].normalImpulse = normal[j][lane];
-        manifold.points[j].tangentImpulse = tangent[j][lane];
-        manifold.points[j].supportImpulse = support[j][lane];
-      }
+void storeBundleImpulses(const WideConstraint<F>& w, WorldData& world) {
+  alignas(16) float rolling[F::kLanes];
+  alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], support[2][F::kLanes];
+  simd::store(rolling, w.rollingImpulse);
+  for (int j = 0; j < 2; ++j) {
+    simd::store(normal[j], w.points[j].normalImpulse);
+    simd::store(tangent[j], w.points[j].tangentImpulse);
+    simd::store(support[j], w.points[j].supportImpulse);
+  }
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    if (w.source[lane] < 0) continue;
+    Manifold& manifold = world.contacts[w.source[lane]].manifold;
+    manifold.rollingImpulse = rolling[lane];
+    for (int j = 0; j < manifold.pointCount; ++j) {
+      manifold.points[j].normalImpulse = normal[j][lane];
+      manifold.points[j].tangentImpulse = tangent[j][lane];
+      manifold.points[j].supportImpulse = support[j][lane];
     }
   }
+}
+
+// Each bundle writes only its own lanes' manifolds: side by side.
+template <class F>
+void storeWideImpulses(const WideContactSet& set, WorldData& world) {
+  const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(const_cast<WideContactSet&>(set));
+  world.tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t b = begin; b < end; ++b) storeBundleImpulses(bundles[std::size_t(b)], world);
+                        });
   storeImpulses(set.overflow, world);
   storeSupportWide<F>(const_cast<WideContactSet&>(set), world);
 }

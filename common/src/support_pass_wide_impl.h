@@ -101,34 +101,40 @@ void finishSupportBundle(WideSupportRow<F>& row) {
   row.pairInverse22 = simd::select(pair, k11 / det, zero);
 }
 
-// Lays the rows out group by group, each group in bundles of F::kLanes.
+// Support bundle b's lanes from the prepared contacts of its rows.
 template <class F>
-void loadSupportWide(WideContactSet& set, const SupportPass& pass) {
-  const std::vector<WideConstraint<F>>& contacts = bundlesOf<F>(set);
-  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
-  bundles.clear();
-  set.supportGroupBundle.clear();
-  const std::span<const SupportRow> rows = pass.rows();
-  const std::span<const std::int32_t> groups = pass.groupStarts();
-  ContactConstraint scratch;
+void fillSupportBundle(WideContactSet& set, const SupportPass& pass, std::int32_t b) {
   static const WideSupportRow<F> kEmpty = emptySupportBundle<F>();
-  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
-    set.supportGroupBundle.push_back(static_cast<std::int32_t>(bundles.size()));
-    for (std::int32_t r = groups[g]; r < groups[g + 1]; ++r) {
-      const int lane = (r - groups[g]) % F::kLanes;
-      if (lane == 0) bundles.push_back(kEmpty);
-      const SupportRow& row = rows[std::size_t(r)];
-      const ContactPlace place = set.placeOf[std::size_t(row.ref)];
-      if (place.bundle < 0) {
-        packSupportLane(bundles.back(), lane, set.overflow[std::size_t(place.lane)], row.upperIsB);
-        continue;
-      }
-      unpackForSupport(contacts[std::size_t(place.bundle)], place.lane, scratch);
-      packSupportLane(bundles.back(), lane, scratch, row.upperIsB);
+  const std::vector<WideConstraint<F>>& contacts = bundlesOf<F>(set);
+  WideSupportRow<F>& bundle = supportBundlesOf<F>(set)[std::size_t(b)];
+  bundle = kEmpty;
+  const std::int32_t first = set.supportSlices.first[std::size_t(b)];
+  ContactConstraint scratch;
+  for (int lane = 0; lane < set.supportSlices.lanes[std::size_t(b)]; ++lane) {
+    const SupportRow& row = pass.rows()[std::size_t(first + lane)];
+    const ContactPlace place = set.placeOf[std::size_t(row.ref)];
+    if (place.bundle < 0) {
+      packSupportLane(bundle, lane, set.overflow[std::size_t(place.lane)], row.upperIsB);
+      continue;
     }
+    unpackForSupport(contacts[std::size_t(place.bundle)], place.lane, scratch);
+    packSupportLane(bundle, lane, scratch, row.upperIsB);
   }
-  for (WideSupportRow<F>& row : bundles) finishSupportBundle(row);
-  set.supportGroupBundle.push_back(static_cast<std::int32_t>(bundles.size()));
+  finishSupportBundle(bundle);
+}
+
+// Lays the rows out group by group, each group in bundles of F::kLanes,
+// then fills the bundles side by side.
+template <class F>
+void loadSupportWide(const TaskRunner& tasks, WideContactSet& set, const SupportPass& pass) {
+  const std::span<const std::int32_t> groups = pass.groupStarts();
+  set.supportGroupBundle.resize(groups.size());
+  set.supportSlices.cut(groups, F::kLanes, set.supportGroupBundle);
+  const std::int32_t count = set.supportSlices.count();
+  supportBundlesOf<F>(set).resize(std::size_t(count));
+  tasks.forRanges(count, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end; ++b) fillSupportBundle<F>(set, pass, b);
+  });
 }
 
 template <class F>
@@ -203,18 +209,25 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, 
 }
 
 // The last sub-step's impulses into the manifolds (next step's friction
-// limit and load).
+// limit and load); each row writes only its own contact's.
+template <class F>
+void storeSupportBundle(const WideSupportRow<F>& row, WorldData& world) {
+  float impulse[2][F::kLanes];
+  for (int j = 0; j < 2; ++j) simd::store(impulse[j], row.points[j].impulse);
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    if (row.contact[lane] < 0) continue;
+    Manifold& manifold = world.contacts[row.contact[lane]].manifold;
+    for (int j = 0; j < manifold.pointCount; ++j) manifold.points[j].supportImpulse = impulse[j][lane];
+  }
+}
+
 template <class F>
 void storeSupportWide(WideContactSet& set, WorldData& world) {
-  for (const WideSupportRow<F>& row : supportBundlesOf<F>(set)) {
-    float impulse[2][F::kLanes];
-    for (int j = 0; j < 2; ++j) simd::store(impulse[j], row.points[j].impulse);
-    for (int lane = 0; lane < F::kLanes; ++lane) {
-      if (row.contact[lane] < 0) continue;
-      Manifold& manifold = world.contacts[row.contact[lane]].manifold;
-      for (int j = 0; j < manifold.pointCount; ++j) manifold.points[j].supportImpulse = impulse[j][lane];
-    }
-  }
+  const std::vector<WideSupportRow<F>>& rows = supportBundlesOf<F>(set);
+  world.tasks.forRanges(static_cast<std::int32_t>(rows.size()), kBundlesPerFillRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t b = begin; b < end; ++b) storeSupportBundle(rows[std::size_t(b)], world);
+                        });
 }
 
 }  // namespace
