@@ -76,14 +76,22 @@ void BroadPhase::touchProxy(std::int32_t proxyKey) { moveBuffer_.push_back(proxy
 
 void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs, const KnownPair& known) {
   pairs.clear();
-  // A proxy both moved and touched is queued twice but needs one query.
+  for (std::int32_t proxyKey : queuedProxies()) queryPairs(proxyKey, known, pairs);
+  finishPairSearch(pairs);
+}
+
+std::span<const std::int32_t> BroadPhase::queuedProxies() {
+  // A proxy both moved and touched is queued twice but needs one query; a
+  // destroyed one left a null key.
   std::sort(moveBuffer_.begin(), moveBuffer_.end());
   moveBuffer_.erase(std::unique(moveBuffer_.begin(), moveBuffer_.end()), moveBuffer_.end());
-  for (std::int32_t proxyKey : moveBuffer_) {
-    if (proxyKey != kNullKey) queryPairs(proxyKey, known, pairs);
-  }
+  const auto live = std::upper_bound(moveBuffer_.begin(), moveBuffer_.end(), kNullKey);
+  return {live, moveBuffer_.end()};
+}
+
+void BroadPhase::finishPairSearch(std::vector<ProxyPair>& pairs) {
   // Two queued proxies find each other from both ends; sorting also makes the
-  // output independent of tree shape and queue order.
+  // output independent of tree shape, queue order and thread count.
   std::sort(pairs.begin(), pairs.end(), pairLess);
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   moveBuffer_.clear();

@@ -54,7 +54,7 @@ void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
   setContactEventFlags(world, contact);
   linkContact(world, index);
   if (world.bodies[sa.body].awake || world.bodies[sb.body].awake) world.activeContacts.insert(index);
-  world.contactByPair.emplace(contact.pairKey, index);
+  world.contactByPair.insert(contact.pairKey);
 }
 
 // Carries impulses of points that persist (same feature id) into the new
@@ -239,10 +239,44 @@ void sortTouchingByBody(WorldData& world) {
 
 }  // namespace
 
-void updatePairs(WorldData& world, Real /*dt*/) {
-  world.broadPhase.findNewPairs(world.newPairs, [&](std::int32_t first, std::int32_t second) {
+namespace {
+
+// Chunks of the pair search per worker: each chunk queries a slice of the
+// queued proxies into its own list, so chunks run side by side and join in
+// chunk order. A fixed count keeps the lists' capacities steady (a steady
+// step allocates nothing).
+constexpr std::int32_t kPairChunksPerWorker = 4;
+
+// The broad phase's new pairs: the queued proxies' queries side by side
+// (the trees and the contact set are only read), then joined and sorted.
+void searchNewPairs(WorldData& world) {
+  const BroadPhase::KnownPair known = [&](std::int32_t first, std::int32_t second) {
     return world.contactByPair.contains(contactPairKey(first, second));
+  };
+  const std::span<const std::int32_t> queued = world.broadPhase.queuedProxies();
+  const std::int32_t chunks = kPairChunksPerWorker * world.tasks.workerCount();
+  world.pairChunks.resize(std::size_t(chunks));
+  world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t chunk = begin; chunk < end; ++chunk) {
+      std::vector<ProxyPair>& found = world.pairChunks[std::size_t(chunk)];
+      found.clear();
+      const std::size_t first = queued.size() * std::size_t(chunk) / std::size_t(chunks);
+      const std::size_t last = queued.size() * std::size_t(chunk + 1) / std::size_t(chunks);
+      for (std::int32_t proxyKey : queued.subspan(first, last - first)) world.broadPhase.queryPairs(proxyKey, known, found);
+    }
   });
+  world.newPairs.clear();
+  for (std::int32_t chunk = 0; chunk < chunks; ++chunk) {
+    const std::vector<ProxyPair>& found = world.pairChunks[std::size_t(chunk)];
+    world.newPairs.insert(world.newPairs.end(), found.begin(), found.end());
+  }
+  world.broadPhase.finishPairSearch(world.newPairs);
+}
+
+}  // namespace
+
+void updatePairs(WorldData& world, Real /*dt*/) {
+  searchNewPairs(world);
   for (const ProxyPair& pair : world.newPairs) {
     if (pairMayTouch(world, pair)) createContact(world, pair.first, pair.second);
   }

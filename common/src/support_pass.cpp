@@ -21,9 +21,16 @@ bool isJointed(const WorldData& world, std::int32_t state) {
   return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
 }
 
-Real invMassOf(const WorldData& world, std::int32_t state) {
-  return state == 0 ? Real(0) : world.bodies[world.solverIntegration[std::size_t(state)].body].invMass;
+// A row's upper and lower body's inverse masses, as its ref carries them.
+Real upperInvMass(const SupportRow& row, const ConstraintRef& ref) {
+  return row.upperIsB ? ref.invMassB : ref.invMassA;
 }
+
+Real lowerInvMass(const SupportRow& row, const ConstraintRef& ref) {
+  return row.upperIsB ? ref.invMassA : ref.invMassB;
+}
+
+Real massOf(Real invMass) { return invMass > 0 ? 1 / invMass : Real(0); }
 
 // A soft contact at rest overlaps by impulseScale * L / (massScale *
 // biasRate * normal mass) for a load L per sub-step (overlapForLoad in
@@ -134,25 +141,27 @@ std::int32_t SupportPass::lowerOf(const SupportRow& row, std::span<const Constra
 // factor: the points' lever arms and the load's true spread are left out.
 void SupportPass::estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs) {
   const std::size_t stateCount = level_.size();
-  carried_.resize(stateCount);
-  for (std::size_t s = 1; s < stateCount; ++s) {
-    const Real invMass = invMassOf(world, std::int32_t(s));
-    carried_[s] = invMass > 0 ? 1 / invMass : Real(0);
-  }
+  carried_.assign(stateCount, 0);
   supports_.assign(stateCount, 0);
-  for (const SupportRow& row : candidates_) ++supports_[std::size_t(upperOf(row, refs))];
+  for (const SupportRow& row : candidates_) {
+    const ConstraintRef& ref = refs[std::size_t(row.ref)];
+    carried_[std::size_t(upperOf(row, refs))] = massOf(upperInvMass(row, ref));
+    carried_[std::size_t(lowerOf(row, refs))] = massOf(lowerInvMass(row, ref));
+    ++supports_[std::size_t(upperOf(row, refs))];
+  }
   for (auto row = candidates_.rbegin(); row != candidates_.rend(); ++row) {
     const std::int32_t upper = upperOf(*row, refs);
     carried_[std::size_t(lowerOf(*row, refs))] += carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
   }
   sink_.assign(stateCount, 0);
   for (const SupportRow& row : candidates_) {
+    const ConstraintRef& ref = refs[std::size_t(row.ref)];
     const std::int32_t upper = upperOf(row, refs);
     const std::int32_t lower = lowerOf(row, refs);
     const Real atRest = weightPerMass_ * carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
-    const Real load = std::max(atRest, lastLoad(world, refs[std::size_t(row.ref)]));
+    const Real load = std::max(atRest, lastLoad(world, ref));
     const Real compliance = lower == 0 ? compliance_.statics : compliance_.dynamic;
-    const Real soft = compliance * load * (invMassOf(world, lower) + invMassOf(world, upper));
+    const Real soft = compliance * load * (lowerInvMass(row, ref) + upperInvMass(row, ref));
     sink_[std::size_t(upper)] = std::max(sink_[std::size_t(upper)], sink_[std::size_t(lower)] + soft);
   }
 }

@@ -7,13 +7,13 @@
 #include <cstdint>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "body_data.h"
 #include "shape_data.h"
 #include "contact_constraints.h"
 #include "contact_data.h"
+#include "pair_set.h"
 #include "free_list.h"
 #include "joint_constraints.h"
 #include "joint_data.h"
@@ -64,7 +64,7 @@ struct WorldData {
   /// come and go and bodies wake and sleep.
   SlotBits activeContacts;
   // Lookup only (never iterated), so its order cannot leak into the step.
-  std::unordered_map<std::uint64_t, std::int32_t> contactByPair;
+  PairSet contactByPair;
 
   std::vector<Joint> joints;
   FreeList freeJoints;
@@ -96,11 +96,16 @@ struct WorldData {
 
   // Scratch reused every step, so the steady state allocates nothing.
   std::vector<ProxyPair> newPairs;
+  /// The pair search's lists, one per chunk of queued proxies.
+  std::vector<std::vector<ProxyPair>> pairChunks;
   SlotBits contactsToCollide;
   /// The narrow phase's contacts in visiting order, and what updating each
   /// found (parallel first, then applied in that order).
   std::vector<std::int32_t> collideList;
   std::vector<std::uint8_t> collideOutcomes;
+  /// The bodies continuous collision sweeps, and whether each was stopped.
+  std::vector<std::int32_t> fastBodies;
+  std::vector<std::uint8_t> fastBodyMoved;
   /// The touching contacts with an awake body, in solver order: the narrow
   /// phase's list for this step's solve.
   std::vector<std::int32_t> touchingContacts;

@@ -449,7 +449,7 @@ class StateImport {
         contact.pairKey = contactPairKey(c.shapeA, c.shapeB);
         contact.touching = c.touching;
         setContactEventFlags(w, contact);
-        if (!w.contactByPair.emplace(contact.pairKey, std::int32_t(slot)).second) {
+        if (!w.contactByPair.insert(contact.pairKey)) {
           return at("contact slot", slot) + "a pair of shapes has one contact";
         }
       }

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "impulse/dynamic_tree.h"
@@ -51,6 +52,15 @@ class BroadPhase {
   /// most of the work.
   void findNewPairs(std::vector<ProxyPair>& pairs, const KnownPair& known = nullptr);
 
+  /// findNewPairs in three parts, for a search split among threads: the
+  /// queued proxies (each once); then, from any thread, queryPairs on each,
+  /// appending the pairs it finds to that thread's list; then
+  /// finishPairSearch on all the lists joined, which sorts them, drops
+  /// duplicates and empties the queue.
+  std::span<const std::int32_t> queuedProxies();
+  void queryPairs(std::int32_t proxyKey, const KnownPair& known, std::vector<ProxyPair>& pairs) const;
+  void finishPairSearch(std::vector<ProxyPair>& pairs);
+
   bool fatAABBsOverlap(std::int32_t proxyKeyA, std::int32_t proxyKeyB) const;
   const AABB& fatAABB(std::int32_t proxyKey) const;
 
@@ -66,6 +76,13 @@ class BroadPhase {
         return proceed;
       });
     }
+  }
+
+  /// query over the static proxies alone.
+  template <typename Visit>
+  void queryStatic(const AABB& box, Visit&& visit) const {
+    const DynamicTree& tree = trees_[static_cast<int>(ProxyKind::Static)];
+    tree.query(box, [&](std::int32_t node) { return visit(tree.userValue(node)); });
   }
 
   /// DynamicTree::rayCast through both trees, the max fraction carried from
@@ -98,8 +115,6 @@ class BroadPhase {
   std::int32_t leafUserValue(std::int32_t proxyKey) const;
 
  private:
-  void queryPairs(std::int32_t proxyKey, const KnownPair& known, std::vector<ProxyPair>& pairs) const;
-
   DynamicTree trees_[2];
   std::vector<std::int32_t> moveBuffer_;
 };

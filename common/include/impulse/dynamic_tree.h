@@ -103,35 +103,34 @@ class DynamicTree {
   std::int32_t root_ = kNull;
   std::int32_t freeList_ = kNull;
   int leafCount_ = 0;
-  mutable std::vector<std::int32_t> stack_;
   // A node waiting in a ray cast, with where the ray enters its box.
   // Trivial, so a stack of them costs nothing to declare.
   struct RayEntry {
     std::int32_t node;
     Real enter;
   };
-  // A ray cast keeps its stack on the C++ stack, so concurrent const queries
-  // share nothing. Depth-first, it holds at most one pending sibling per
-  // level: the height plus one, and the balance bound keeps the height
-  // logarithmic (under 100 for any tree that fits in memory).
-  static constexpr int kRayStackSize = 256;
+  // Queries and ray casts keep their stack on the C++ stack, so concurrent
+  // const queries share nothing. Depth-first, a stack holds at most one
+  // pending sibling per level: the height plus one, and the balance bound
+  // keeps the height logarithmic (under 100 for any tree that fits in memory).
+  static constexpr int kStackSize = 256;
 };
 
 template <typename Visit>
 void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
   if (root_ == kNull) return;
-  stack_.clear();
-  stack_.push_back(root_);
-  while (!stack_.empty()) {
-    std::int32_t index = stack_.back();
-    stack_.pop_back();
+  std::int32_t stack[kStackSize];
+  int count = 0;
+  stack[count++] = root_;
+  while (count > 0) {
+    const std::int32_t index = stack[--count];
     const Node& node = nodes_[index];
     if (!node.box.overlaps(queryBox)) continue;
     if (node.isLeaf()) {
       if (!visit(index)) return;
     } else {
-      stack_.push_back(node.child1);
-      stack_.push_back(node.child2);
+      stack[count++] = node.child1;
+      stack[count++] = node.child2;
     }
   }
 }
@@ -176,7 +175,7 @@ void DynamicTree::rayCast(const Ray& ray, Clip&& clip) const {
                                     AABB{box.lower - ray.extent, box.upper + ray.extent});
     return span.enter <= span.exit ? span.enter : std::numeric_limits<Real>::infinity();
   };
-  RayEntry stack[kRayStackSize];
+  RayEntry stack[kStackSize];
   int count = 0;
   stack[count++] = {root_, enterOf(root_)};
   while (count > 0) {
