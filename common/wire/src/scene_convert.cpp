@@ -6,6 +6,8 @@
 
 #include "impulse/wire/field_convert.h"
 
+#include "body_properties.h"
+
 #include <algorithm>
 #include <string>
 
@@ -87,11 +89,7 @@ void putShape(const ShapeSlotState& s, v1::SceneShape* out) {
   out->set_body(s.body);
   putGeometry(s.shape, out);
   out->set_material(toWire(s.material));
-  out->set_density(s.density);
-  out->set_restitution(s.restitution);
-  out->set_static_friction(s.staticFriction);
-  out->set_dynamic_friction(s.dynamicFriction);
-  out->set_rolling_resistance(s.rollingResistance);
+  putCoefficients(s, *out);
   out->set_proxy_key(s.proxyKey);
   toWire(s.interaction, out->mutable_flags());
 }
@@ -107,16 +105,11 @@ void putBody(const BodySlotState& b, v1::SceneBody* out) {
   out->set_angular_velocity(b.angularVelocity);
   put(b.force, out->mutable_force());
   out->set_torque(b.torque);
-  out->set_linear_drag(b.linearDrag);
-  out->set_gravity_scale(b.gravityScale);
-  out->set_angular_drag(b.angularDrag);
+  putSceneBodyProperties(b, *out);
   out->set_sleep_time(b.sleepTime);
   put(b.center0, out->mutable_start_center());
   put(b.rotation0, out->mutable_start_rotation());
   out->set_creation_order(b.creationOrder);
-  out->set_is_static(b.isStatic);
-  out->set_is_kinematic(b.isKinematic);
-  out->set_ignore_gravity(b.ignoreGravity);
   out->set_awake(b.awake);
   for (std::int32_t key : b.contactEdges) out->add_contact_edges(key);
   for (std::int32_t key : b.jointEdges) out->add_joint_edges(key);
@@ -274,11 +267,7 @@ std::string getMaterial(const Message& in, ShapeSlotState& s) {
   const std::optional<Material> material = materialFromWire(in.material());
   if (!material) return "material must be one of the Material enum";
   s.material = *material;
-  s.density = in.density();
-  s.restitution = in.restitution();
-  s.staticFriction = in.static_friction();
-  s.dynamicFriction = in.dynamic_friction();
-  s.rollingResistance = in.rolling_resistance();
+  getCoefficients(in, s);
   s.proxyKey = in.proxy_key();
   return {};
 }
@@ -319,16 +308,11 @@ std::string getBody(const v1::SceneBody& in, BodySlotState& b) {
   b.angularVelocity = in.angular_velocity();
   b.force = get(in.force());
   b.torque = in.torque();
-  b.linearDrag = in.linear_drag();
-  b.gravityScale = in.has_gravity_scale() ? in.gravity_scale() : 1;
-  b.angularDrag = in.angular_drag();
+  getSceneBodyProperties(in, b);
   b.sleepTime = in.sleep_time();
   b.center0 = get(in.start_center());
   b.rotation0 = get(in.start_rotation());
   b.creationOrder = in.creation_order();
-  b.isStatic = in.is_static();
-  b.isKinematic = in.is_kinematic();
-  b.ignoreGravity = in.ignore_gravity();
   b.awake = in.awake();
   b.contactEdges.assign(in.contact_edges().begin(), in.contact_edges().end());
   b.jointEdges.assign(in.joint_edges().begin(), in.joint_edges().end());
