@@ -7,8 +7,10 @@
 #include <set>
 
 #include "impulse/client/commands.h"
+#include "impulse/server/access.h"
 #include "impulse/server/commands.h"
 #include "impulse/server/wire_box.h"
+#include "impulse/wire/scene_convert.h"
 
 namespace impulse::server {
 namespace {
@@ -94,6 +96,35 @@ TEST(CommandPipeline, AMessageWithoutARowIsRefusedByName) {
   ASSERT_NE(row, nullptr);
   EXPECT_EQ(row->name, "load_scene");
   EXPECT_EQ(row->role, CommandRole::Admin);
+}
+
+// Applies `message` for `client` as the room does, through its row once.
+v1::CommandResult applyAs(Simulation& simulation, Ownership& ownership, const v1::ClientMessage& message,
+                          std::uint32_t client) {
+  const CommandRow& row = *findCommand(message);
+  CommandOutcome outcome = applyCommand(simulation, row, message, {});
+  ownership.recordOutcome(row, message, outcome.reply, client, simulation);
+  return outcome.reply.command_result();
+}
+
+// A scene load replaces the world, so owners are forgotten; a refused one
+// replaced nothing, so the player keeps its body.
+TEST(CommandPipeline, OnlyASceneLoadedForgetsWhatPlayersOwn) {
+  constexpr std::uint32_t kPlayer = 7, kAdmin = 1;
+  Simulation simulation(SimulationSettings{.preset = 0});
+  Ownership ownership;
+  const std::uint32_t body = applyAs(simulation, ownership, client::spawnCircle({5, 5}, 0.5), kPlayer).body_id();
+  const v1::ClientMessage push = client::applyImpulse(body, {1, 0});
+  const CommandRow& pushRow = *findCommand(push);
+  ASSERT_TRUE(ownership.playerRefusal(pushRow, push, kPlayer).empty());
+
+  EXPECT_FALSE(applyAs(simulation, ownership, client::loadScene("not a scene"), kAdmin).ok());
+  EXPECT_TRUE(ownership.playerRefusal(pushRow, push, kPlayer).empty()) << "the world was not replaced";
+
+  const std::string scene = wire::saveScene(simulation.world());
+  ASSERT_TRUE(applyAs(simulation, ownership, client::loadScene(scene), kAdmin).ok());
+  ASSERT_TRUE(simulation.world().isValid(BodyId{body})) << "the scene has a body of that id";
+  EXPECT_NE(ownership.playerRefusal(pushRow, push, kPlayer).find("was not created by this client"), std::string::npos);
 }
 
 v1::Vec2 corner(double x, double y) {
