@@ -113,7 +113,7 @@ void completeReply(const v1::ClientMessage& message, std::uint64_t tick, v1::Ser
   if (!reply.has_command_result()) return;
   auto* result = reply.mutable_command_result();
   result->set_tick(tick);
-  // A stamp already past: it arrived late (a paused Step runs on from here).
+  // A stamp already past: the command arrived late, or a paused Step ran over its tick.
   if (message.has_for_tick() && message.for_tick() < tick) result->set_late(true);
   if (!result->ok()) result->set_error(inUserWords(message, result->error()));
 }
