@@ -395,7 +395,9 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
   const auto& message = queued.message;
   const std::uint32_t client = queued.client;
   const CommandRow* row = findCommand(message);
-  if (row == nullptr) return reply(client, refusal(message, noCommandError(message), simulation_.tick()), queued.bytes);
+  if (row == nullptr) {
+    return reply(client, refusal(message, noCommandError(message), simulation_.tick()), queued.bytes);
+  }
   if (!admin) {
     if (std::string error = ownership_.playerRefusal(*row, message, client); !error.empty()) {
       return reply(client, refusal(message, std::move(error), simulation_.tick()), queued.bytes);

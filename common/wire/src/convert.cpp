@@ -232,7 +232,8 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   auto angular = realFromWire(options.angular_velocity(), "options.angular_velocity");
   if (!angular.ok()) return Decoded<BodyOptions>::failure(std::move(angular.error));
   result.angularVelocity = *angular.value;
-  for (std::string error : {getOptionProperties(options, result), overridesFromWire(options, result.materialOverride)}) {
+  for (std::string error :
+       {getOptionProperties(options, result), overridesFromWire(options, result.materialOverride)}) {
     if (!error.empty()) return Decoded<BodyOptions>::failure(std::move(error));
   }
   result.interaction = shapeFlagsFromWire(options.shape_flags());
