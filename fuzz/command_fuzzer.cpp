@@ -39,6 +39,7 @@ std::uint64_t replyRequestId(const impulse::v1::ServerMessage& reply) {
   if (reply.has_joint_info()) return reply.joint_info().request_id();
   if (reply.has_room_list()) return reply.room_list().request_id();
   if (reply.has_scene_data()) return reply.scene_data().request_id();
+  if (reply.has_query_result()) return reply.query_result().request_id();
   FUZZ_CHECK(reply.has_pong());
   return reply.pong().request_id();
 }
