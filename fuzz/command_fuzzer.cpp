@@ -39,6 +39,7 @@ std::uint64_t replyRequestId(const impulse::v1::ServerMessage& reply) {
   if (reply.has_joint_info()) return reply.joint_info().request_id();
   if (reply.has_room_list()) return reply.room_list().request_id();
   if (reply.has_scene_data()) return reply.scene_data().request_id();
+  if (reply.has_query_result()) return reply.query_result().request_id();
   FUZZ_CHECK(reply.has_pong());
   return reply.pong().request_id();
 }
@@ -55,12 +56,14 @@ impulse::v1::ServerMessage runStep(Simulation& simulation,
 void applyOne(Simulation& simulation, impulse::server::Ownership& ownership,
               const impulse::v1::ClientMessage& message, bool asPlayer) {
   const impulse::server::CommandLimits limits{.maxStepTicks = 4};
-  if (asPlayer && !ownership.playerRefusal(message, kPlayer).empty()) return;
+  const impulse::server::CommandRow* row = impulse::server::findCommand(message);
+  if (asPlayer && row != nullptr && !ownership.playerRefusal(*row, message, kPlayer).empty()) return;
   const std::uint64_t hashBefore = simulation.world().stateHash();
   const int bodiesBefore = simulation.world().bodyCount();
   const impulse::Vec2 gravityBefore = simulation.world().gravity();
 
-  auto outcome = impulse::server::applyCommand(simulation, message, limits);
+  auto outcome = row != nullptr ? impulse::server::applyCommand(simulation, *row, message, limits)
+                                : impulse::server::applyCommand(simulation, message, limits);
   if (outcome.ticksToStep > 0) outcome.reply = runStep(simulation, std::move(outcome));
   FUZZ_CHECK(replyRequestId(outcome.reply) == message.request_id());
   if (outcome.reply.has_command_result() && !outcome.reply.command_result().ok()) {
@@ -69,7 +72,7 @@ void applyOne(Simulation& simulation, impulse::server::Ownership& ownership,
     FUZZ_CHECK(simulation.world().bodyCount() == bodiesBefore);
     FUZZ_CHECK(simulation.world().gravity() == gravityBefore);
   }
-  ownership.recordOutcome(message, outcome.reply, kPlayer, simulation);
+  if (row != nullptr) ownership.recordOutcome(*row, message, outcome.reply, kPlayer, simulation);
   checkWorldSane(simulation.world());
 }
 

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "impulse/server/commands.h"
-
 namespace impulse::server {
 
 namespace {
@@ -49,9 +47,10 @@ bool isLoopbackAddress(std::string_view address) {
   return address == "localhost" || address == "::1" || address.starts_with("127.");
 }
 
-std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint32_t client) const {
-  const std::string_view command = commandName(message);
-  switch (commandRole(message)) {
+std::string Ownership::playerRefusal(const CommandRow& row, const v1::ClientMessage& message,
+                                     std::uint32_t client) const {
+  const std::string_view command = row.name;
+  switch (row.role) {
     case CommandRole::Anyone:
       return {};
     case CommandRole::Admin:
@@ -62,7 +61,7 @@ std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint
       break;
   }
   // Body 0 (the world, which a player may pin its own bodies to) is not a target.
-  const CommandTargets targets = commandTargets(message);
+  const CommandTargets targets = row.targets(message);
   for (const std::uint32_t body : targets.bodies) {
     if (!ownedBy(ownerOf_, body, client)) return notCreatedBy(command, "body", body);
   }
@@ -72,8 +71,9 @@ std::string Ownership::playerRefusal(const v1::ClientMessage& message, std::uint
   return {};
 }
 
-void Ownership::recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
-                              std::uint32_t client, const Simulation& simulation) {
+void Ownership::recordOutcome(const CommandRow& row, const v1::ClientMessage& message,
+                              const v1::ServerMessage& reply, std::uint32_t client,
+                              const Simulation& simulation) {
   if (simulation.worldGeneration() != worldGeneration_) {
     worldGeneration_ = simulation.worldGeneration();
     ownerOf_.clear();
@@ -86,8 +86,8 @@ void Ownership::recordOutcome(const v1::ClientMessage& message, const v1::Server
   if (result.body_id() != 0) ownerOf_[result.body_id()] = client;
   if (result.joint_id() != 0) jointOwnerOf_[result.joint_id()] = client;
   // What it removed is forgotten now: a freed id may come back once its generation wraps.
-  if (commandRole(message) == CommandRole::Owner) {
-    const CommandTargets targets = commandTargets(message);
+  if (row.role == CommandRole::Owner) {
+    const CommandTargets targets = row.targets(message);
     for (const std::uint32_t body : targets.bodies) {
       if (!world.isValid(BodyId{body})) ownerOf_.erase(body);
     }

@@ -13,7 +13,8 @@ namespace impulse::server {
 CommandContext::CommandContext(Simulation& simulation_, const v1::ClientMessage& message_,
                                const CommandLimits& limits_)
     : simulation(simulation_), message(message_), limits(limits_) {
-  result().set_request_id(message.request_id());
+  // A CommandResult unless the handler answers with another message.
+  result();
 }
 
 void CommandContext::fail(std::string error) {
@@ -21,10 +22,7 @@ void CommandContext::fail(std::string error) {
   result().set_error(std::move(error));
 }
 
-void CommandContext::succeed() {
-  result().set_ok(true);
-  outcome.changed = true;
-}
+void CommandContext::succeed() { result().set_ok(true); }
 
 namespace handlers {
 
@@ -369,21 +367,12 @@ void queryBody(CommandContext& context, const v1::QueryBody& command) {
   const auto description = world.bodyDescription(id);
   const auto state = world.bodyState(id);
   if (!description || !state) return context.fail("query_body: " + unknownBody(id.value));
-  v1::ServerMessage reply;
-  auto* info = reply.mutable_body_info();
-  info->set_request_id(context.message.request_id());
-  wire::toWire(*description, *state, info);
-  context.outcome.reply = std::move(reply);
+  wire::toWire(*description, *state, context.outcome.reply.mutable_body_info());
 }
 
 namespace {
 
-// A query's reply, with the request id set.
-v1::QueryResult& queryReply(CommandContext& context) {
-  auto* reply = context.outcome.reply.mutable_query_result();
-  reply->set_request_id(context.message.request_id());
-  return *reply;
-}
+v1::QueryResult& queryReply(CommandContext& context) { return *context.outcome.reply.mutable_query_result(); }
 
 // The wire's "0 means the most" result count.
 int resultLimit(std::uint32_t asked) {
@@ -451,12 +440,9 @@ void queryAabb(CommandContext& context, const v1::QueryAABB& command) {
 
 void ping(CommandContext& context, const v1::Ping& command) {
   // The room adds its statistics (Room::answerPing): the world knows none.
-  v1::ServerMessage reply;
-  auto* pong = reply.mutable_pong();
+  auto* pong = context.outcome.reply.mutable_pong();
   pong->set_client_time_us(command.client_time_us());
   pong->set_server_tick(context.simulation.tick());
-  pong->set_request_id(context.message.request_id());
-  context.outcome.reply = std::move(reply);
 }
 
 void createJoint(CommandContext& context, const v1::CreateJoint& command) {
@@ -491,11 +477,7 @@ void queryJoint(CommandContext& context, const v1::QueryJoint& command) {
   const auto description = world.jointDescription(id);
   const auto state = world.jointState(id);
   if (!description || !state) return context.fail("query_joint: " + unknownJoint(id.value));
-  v1::ServerMessage reply;
-  auto* info = reply.mutable_joint_info();
-  info->set_request_id(context.message.request_id());
-  wire::toWire(*description, *state, info);
-  context.outcome.reply = std::move(reply);
+  wire::toWire(*description, *state, context.outcome.reply.mutable_joint_info());
 }
 
 void setTimeScale(CommandContext& context, const v1::SetTimeScale& command) {
@@ -522,11 +504,7 @@ void removeField(CommandContext& context, const v1::RemoveField& command) {
 }
 
 void saveScene(CommandContext& context, const v1::SaveScene&) {
-  v1::ServerMessage reply;
-  auto* scene = reply.mutable_scene_data();
-  scene->set_request_id(context.message.request_id());
-  scene->set_data(wire::saveScene(context.simulation.world()));
-  context.outcome.reply = std::move(reply);
+  context.outcome.reply.mutable_scene_data()->set_data(wire::saveScene(context.simulation.world()));
 }
 
 void loadScene(CommandContext& context, const v1::LoadScene& command) {
@@ -538,9 +516,7 @@ void loadScene(CommandContext& context, const v1::LoadScene& command) {
 
 void listRooms(CommandContext& context, const v1::ListRooms&) {
   // The server fills the list in (Server::deliver): a room knows only itself.
-  v1::ServerMessage reply;
-  reply.mutable_room_list()->set_request_id(context.message.request_id());
-  context.outcome.reply = std::move(reply);
+  context.outcome.reply.mutable_room_list();
 }
 
 }  // namespace handlers

@@ -4,20 +4,11 @@
 #include <array>
 
 #include "impulse/server/command_handlers.h"
+#include "impulse/server/user_words.h"
 
 namespace impulse::server {
 
 namespace {
-
-using Case = v1::ClientMessage::CommandCase;
-
-struct ServerCommand {
-  Case wireCase;
-  std::string_view wireName;
-  CommandRole role;
-  void (*apply)(CommandContext& context);
-  CommandTargets (*targets)(const v1::ClientMessage& message);
-};
 
 // The bodies and joints a command names, read from its fields by their
 // names: a new command acting on a body or joint is checked without a line
@@ -42,7 +33,7 @@ CommandTargets targetsOf(const Command& command) {
 }
 
 #define IMPULSE_SERVER_COMMAND(Case, field, role, handler, ...)                              \
-  ServerCommand{                                                                             \
+  CommandRow{                                                                                \
       v1::ClientMessage::k##Case, #field, CommandRole::role,                                 \
       [](CommandContext& context) { handlers::handler(context, context.message.field()); }, \
       [](const v1::ClientMessage& message) {                                                 \
@@ -52,47 +43,84 @@ CommandTargets targetsOf(const Command& command) {
                       "an Owner command must name a body or a joint");                       \
         return targetsOf(message.field());                                                   \
       }},
-constexpr std::array kServerCommands{IMPULSE_COMMAND_TABLE(IMPULSE_SERVER_COMMAND)};
+constexpr std::array kCommandRows{IMPULSE_COMMAND_TABLE(IMPULSE_SERVER_COMMAND)};
 #undef IMPULSE_SERVER_COMMAND
 
-const ServerCommand* find(Case wireCase) {
-  const auto it = std::find_if(kServerCommands.begin(), kServerCommands.end(),
-                               [&](const ServerCommand& row) { return row.wireCase == wireCase; });
-  return it == kServerCommands.end() ? nullptr : &*it;
+// Every answer to a command names its request: this is the one place the
+// id is set, whichever message answers.
+void setRequestId(v1::ServerMessage& reply, std::uint64_t id) {
+  using Answer = v1::ServerMessage;
+  switch (reply.message_case()) {
+    case Answer::kCommandResult: return reply.mutable_command_result()->set_request_id(id);
+    case Answer::kPong: return reply.mutable_pong()->set_request_id(id);
+    case Answer::kBodyInfo: return reply.mutable_body_info()->set_request_id(id);
+    case Answer::kJointInfo: return reply.mutable_joint_info()->set_request_id(id);
+    case Answer::kRoomList: return reply.mutable_room_list()->set_request_id(id);
+    case Answer::kSceneData: return reply.mutable_scene_data()->set_request_id(id);
+    case Answer::kQueryResult: return reply.mutable_query_result()->set_request_id(id);
+    // Not answers to a command.
+    case Answer::kWelcome:
+    case Answer::kError:
+    case Answer::kSnapshot:
+    case Answer::kEvents:
+    case Answer::MESSAGE_NOT_SET: return;
+  }
 }
 
 }  // namespace
 
-CommandOutcome applyCommand(Simulation& simulation, const v1::ClientMessage& message,
-                            const CommandLimits& limits) {
+const CommandRow* findCommand(const v1::ClientMessage& message) {
+  const auto it = std::find_if(kCommandRows.begin(), kCommandRows.end(), [&](const CommandRow& row) {
+    return row.wireCase == message.command_case();
+  });
+  return it == kCommandRows.end() ? nullptr : &*it;
+}
+
+std::string noCommandError(const v1::ClientMessage& message) {
+  return message.has_hello() ? "hello was already received"
+                             : "message carries no command (unknown or missing)";
+}
+
+CommandOutcome applyCommand(Simulation& simulation, const CommandRow& row,
+                            const v1::ClientMessage& message, const CommandLimits& limits) {
   CommandContext context(simulation, message, limits);
-  if (const ServerCommand* command = find(message.command_case())) {
-    command->apply(context);
-  } else if (message.has_hello()) {
-    context.fail("hello was already received");
-  } else {
-    context.fail("message carries no command (unknown or missing)");
-  }
-  if (context.outcome.reply.has_command_result()) {
-    context.outcome.reply.mutable_command_result()->set_tick(simulation.tick());
-  }
+  const std::uint64_t versionBefore = simulation.version();
+  row.apply(context);
+  context.outcome.changed = simulation.version() != versionBefore;
+  completeReply(message, simulation.tick(), context.outcome.reply);
   return std::move(context.outcome);
 }
 
+CommandOutcome applyCommand(Simulation& simulation, const v1::ClientMessage& message,
+                            const CommandLimits& limits) {
+  if (const CommandRow* row = findCommand(message)) return applyCommand(simulation, *row, message, limits);
+  CommandOutcome refused;
+  refused.reply = refusal(message, noCommandError(message), simulation.tick());
+  return refused;
+}
+
+v1::ServerMessage refusal(const v1::ClientMessage& message, std::string error, std::uint64_t tick) {
+  v1::ServerMessage reply;
+  auto* result = reply.mutable_command_result();
+  result->set_ok(false);
+  result->set_error(std::move(error));
+  completeReply(message, tick, reply);
+  return reply;
+}
+
+void completeReply(const v1::ClientMessage& message, std::uint64_t tick, v1::ServerMessage& reply) {
+  setRequestId(reply, message.request_id());
+  if (!reply.has_command_result()) return;
+  auto* result = reply.mutable_command_result();
+  result->set_tick(tick);
+  // A stamp already past: the command arrived late, or a paused Step ran over its tick.
+  if (message.has_for_tick() && message.for_tick() < tick) result->set_late(true);
+  if (!result->ok()) result->set_error(inUserWords(message, result->error()));
+}
+
 std::string_view commandName(const v1::ClientMessage& message) {
-  if (const ServerCommand* command = find(message.command_case())) return command->wireName;
+  if (const CommandRow* row = findCommand(message)) return row->name;
   return message.has_hello() ? "hello" : "(no command)";
-}
-
-CommandRole commandRole(const v1::ClientMessage& message) {
-  // A message without a known command is refused by applyCommand anyway.
-  const ServerCommand* command = find(message.command_case());
-  return command != nullptr ? command->role : CommandRole::Anyone;
-}
-
-CommandTargets commandTargets(const v1::ClientMessage& message) {
-  const ServerCommand* command = find(message.command_case());
-  return command != nullptr ? command->targets(message) : CommandTargets{};
 }
 
 }  // namespace impulse::server

@@ -5,34 +5,20 @@
 
 #include "impulse/shape.h"
 #include "impulse/server/message_format.h"
+#include "impulse/server/wire_box.h"
 
 namespace impulse::server {
 
-namespace {
-
-bool finite(const v1::Vec2& point) { return std::isfinite(point.x()) && std::isfinite(point.y()); }
-
-}  // namespace
-
 InterestAreaRequest interestAreaFromWire(const v1::SetInterestArea& command) {
-  if (!command.has_min() && !command.has_max()) return {};
-  if (!command.has_min()) return {{}, "set_interest_area.min is missing (leave out both corners for the whole room)"};
-  if (!command.has_max()) return {{}, "set_interest_area.max is missing (leave out both corners for the whole room)"};
-  if (!finite(command.min())) return {{}, "set_interest_area.min is not a finite point"};
-  if (!finite(command.max())) return {{}, "set_interest_area.max is not a finite point"};
-  const double width = command.max().x() - command.min().x();
-  const double height = command.max().y() - command.min().y();
-  if (width <= 0 || height <= 0) {
-    return {{}, formatted("set_interest_area is empty or inverted: max must exceed min in x and y "
-                          "(width %g m, height %g m)", width, height)};
-  }
-  if (width > kMaxInterestAreaSide || height > kMaxInterestAreaSide) {
-    return {{}, formatted("set_interest_area is %g m wide and %g m high: each side may be at most %g m", width,
-                          height, kMaxInterestAreaSide)};
-  }
-  return {AABB{Vec2(Real(command.min().x()), Real(command.min().y())),
-               Vec2(Real(command.max().x()), Real(command.max().y()))},
-          {}};
+  static constexpr WireBoxRules kRules{.message = "set_interest_area",
+                                       .minField = "min",
+                                       .maxField = "max",
+                                       .what = "area",
+                                       .bothOrNeither = "leave out both corners for the whole room",
+                                       .maxSide = kMaxInterestAreaSide};
+  WireBox area = boxFromWire(command.has_min() ? &command.min() : nullptr,
+                             command.has_max() ? &command.max() : nullptr, kRules);
+  return {area.box, std::move(area.error)};
 }
 
 BudgetRequest budgetFromWire(const v1::SetBandwidthBudget& command) {

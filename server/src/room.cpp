@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "impulse/server/log.h"
-#include "impulse/server/user_words.h"
 #include "impulse/wire/convert.h"
 #include "impulse/wire/framing.h"
 
@@ -30,24 +29,6 @@ SimulationSettings simulationSettings(const ServerOptions& options, const AABB& 
           .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost},
           .serverBodies = std::move(serverBodies),
           .bounds = bounds};
-}
-
-// A CommandResult refusing a command before it reached the world.
-v1::ServerMessage refusal(const v1::ClientMessage& message, const std::string& error, std::uint64_t tick) {
-  v1::ServerMessage reply;
-  auto* result = reply.mutable_command_result();
-  result->set_request_id(message.request_id());
-  result->set_ok(false);
-  result->set_error(inUserWords(message, error));
-  result->set_tick(tick);
-  return reply;
-}
-
-// A refusal goes out in the words its sender typed (user_words.h).
-void wordRefusal(const v1::ClientMessage& message, v1::ServerMessage& reply) {
-  if (!reply.has_command_result() || reply.command_result().ok()) return;
-  auto* result = reply.mutable_command_result();
-  result->set_error(inUserWords(message, result->error()));
 }
 
 double millisecondsSince(Clock::time_point start) {
@@ -413,20 +394,19 @@ void Room::applyDueCommands() {
 void Room::applyQueued(QueuedCommand& queued, bool admin) {
   const auto& message = queued.message;
   const std::uint32_t client = queued.client;
+  const CommandRow* row = findCommand(message);
+  if (row == nullptr) {
+    return reply(client, refusal(message, noCommandError(message), simulation_.tick()), queued.bytes);
+  }
   if (!admin) {
-    if (std::string error = ownership_.playerRefusal(message, client); !error.empty()) {
-      return reply(client, refusal(message, error, simulation_.tick()), queued.bytes);
+    if (std::string error = ownership_.playerRefusal(*row, message, client); !error.empty()) {
+      return reply(client, refusal(message, std::move(error), simulation_.tick()), queued.bytes);
     }
   }
-  auto outcome = applyCommand(simulation_, message, limits_);
-  // A stamp already past (it arrived late, or a paused Step ran over it).
-  if (message.has_for_tick() && message.for_tick() < simulation_.tick() && outcome.reply.has_command_result()) {
-    outcome.reply.mutable_command_result()->set_late(true);
-  }
-  ownership_.recordOutcome(message, outcome.reply, client, simulation_);
+  auto outcome = applyCommand(simulation_, *row, message, limits_);
+  ownership_.recordOutcome(*row, message, outcome.reply, client, simulation_);
   if (outcome.eventSubscription) subscribeEvents(client, *outcome.eventSubscription);
-  if (outcome.interestArea || outcome.budget) changeStream(client, message, outcome);
-  wordRefusal(message, outcome.reply);
+  if (outcome.interestArea || outcome.budget) changeStream(client, *row, message, outcome);
   if (outcome.ticksToStep > 0) {
     // The client's later commands wait for its Step, keeping their order.
     commands_.hold(client);
@@ -442,10 +422,11 @@ void Room::reply(std::uint32_t client, v1::ServerMessage message, std::size_t by
   outbox_.emplace_back(Reply{client, std::move(message), bytes});
 }
 
-void Room::changeStream(std::uint32_t client, const v1::ClientMessage& message, CommandOutcome& outcome) {
+void Room::changeStream(std::uint32_t client, const CommandRow& row, const v1::ClientMessage& message,
+                        CommandOutcome& outcome) {
   if (quantizedClients_.contains(client)) {
     outcome.reply = refusal(message,
-                            std::string(commandName(message)) +
+                            std::string(row.name) +
                                 ": areas of interest and budgets need plain snapshots "
                                 "(Hello.snapshot_encoding SNAPSHOT_ENCODING_PLAIN)",
                             simulation_.tick());

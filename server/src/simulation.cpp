@@ -41,12 +41,14 @@ void Simulation::step() {
   ++tick_;
   stepTimes_.record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  changes_.changed(world_.movedBodies(), world_.bodyCount());
-  for (const BodyId id : world_.escapedBodies()) changes_.leftWorld(id);
+  // The engine lists what this one step did; the changes gather them
+  // until the next snapshot takes them.
+  WorldChanges& changes = record();
+  changes.changed(world_.movedBodies(), world_.bodyCount());
+  for (const BodyId id : world_.escapedBodies()) changes.leftWorld(id);
   if (!world_.escapedBodies().empty()) serverShare_.set(world_.bodyCount());
   recordRemovedJoints();
   bodiesLeftWorld_ += world_.escapedBodies().size();
-  ++version_;
   recordEvents();
 }
 
@@ -81,8 +83,7 @@ CreateResult Simulation::spawn(Make make) {
   if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
   CreateResult created = make();
   if (created.ok()) {
-    changes_.added(created.id);
-    ++version_;
+    record().added(created.id);
     serverShare_.set(world_.bodyCount());
   }
   return created;
@@ -140,14 +141,13 @@ InputResult Simulation::setBodyType(BodyId id, BodyType type) {
 bool Simulation::removeBody(BodyId id) {
   if (!world_.destroyBody(id)) return false;
   serverShare_.set(world_.bodyCount());
-  changes_.removed(id);
+  record().removed(id);
   recordRemovedJoints();
-  ++version_;
   return true;
 }
 
 void Simulation::recordRemovedJoints() {
-  for (const JointId id : world_.removedJoints()) changes_.jointRemoved(id);
+  for (const JointId id : world_.removedJoints()) record().jointRemoved(id);
 }
 
 JointResult Simulation::createJoint(const JointDef& def) {
@@ -161,10 +161,10 @@ JointResult Simulation::createJoint(const JointDef& def) {
   }
   const auto created = world_.createJoint(def);
   if (created.ok()) {
-    changes_.jointAdded(created.id);
+    WorldChanges& changes = record();
+    changes.jointAdded(created.id);
     // The joint wakes its bodies: their states go out with the joint.
-    changes_.changed(std::array{def.bodyA, def.bodyB}, world_.bodyCount());
-    ++version_;
+    changes.changed(std::array{def.bodyA, def.bodyB}, world_.bodyCount());
   }
   return created;
 }
@@ -172,9 +172,9 @@ JointResult Simulation::createJoint(const JointDef& def) {
 bool Simulation::removeJoint(JointId id) {
   const auto description = world_.jointDescription(id);
   if (!description || !world_.destroyJoint(id)) return false;
-  changes_.jointRemoved(id);
-  changes_.changed(std::array{description->bodyA, description->bodyB}, world_.bodyCount());
-  ++version_;
+  WorldChanges& changes = record();
+  changes.jointRemoved(id);
+  changes.changed(std::array{description->bodyA, description->bodyB}, world_.bodyCount());
   return true;
 }
 
@@ -183,8 +183,7 @@ InputResult Simulation::updateJoint(JointId id, const JointUpdate& update) {
   if (!updated) return updated;
   // Sent again (joints_added replaces): a motor speed or mouse target is
   // part of the descriptor clients draw. The bodies move with the next step.
-  changes_.jointAdded(id);
-  ++version_;
+  record().jointAdded(id);
   return updated;
 }
 
@@ -209,19 +208,17 @@ InputResult Simulation::setShapeFlags(BodyId id, const ShapeInteraction& flags) 
 }
 
 void Simulation::changedBody(BodyId id) {
-  changes_.changed(std::span(&id, 1), world_.bodyCount());
-  ++version_;
+  record().changed(std::span(&id, 1), world_.bodyCount());
 }
 
 void Simulation::redescribedBody(BodyId id) {
-  changes_.added(id);
-  ++version_;
+  record().added(id);
 }
 
 InputResult Simulation::setGravity(const Vec2& gravity) {
   InputResult changed = world_.setGravity(gravity);
   // Every snapshot carries gravity and the pause flag: no body to list.
-  if (changed) ++version_;
+  if (changed) record();
   return changed;
 }
 
@@ -239,15 +236,13 @@ FieldResult Simulation::addField(const FieldDef& def) {
   }
   const FieldId id = world_.addField(std::move(build.field));
   // The bodies it wakes go out with the next step's moved bodies.
-  changes_.fieldAdded(id);
-  ++version_;
+  record().fieldAdded(id);
   return {id, {}};
 }
 
 bool Simulation::removeField(FieldId id) {
   if (!world_.removeField(id)) return false;
-  changes_.fieldRemoved(id);
-  ++version_;
+  record().fieldRemoved(id);
   return true;
 }
 
@@ -268,8 +263,7 @@ void Simulation::clear() {
 
 void Simulation::recordReplaced() {
   serverShare_.set(world_.bodyCount());
-  changes_.replaced();
-  ++version_;
+  record().replaced();
   ++worldGeneration_;
 }
 
@@ -290,7 +284,7 @@ InputResult Simulation::loadScene(std::string_view data) {
 
 void Simulation::setPaused(bool paused) {
   paused_ = paused;
-  ++version_;
+  record();
 }
 
 InputResult Simulation::setTimeScale(double scale) {
@@ -303,7 +297,7 @@ InputResult Simulation::setTimeScale(double scale) {
   timeScale_ = scale;
   ticksAtScale_ = 0;
   stepsAtScale_ = 0;
-  ++version_;
+  record();
   return {};
 }
 
@@ -315,6 +309,11 @@ int Simulation::stepsDueThisTick() {
   const auto due = owed - stepsAtScale_;
   stepsAtScale_ = owed;
   return int(due);
+}
+
+WorldChanges& Simulation::record() {
+  ++version_;
+  return changes_;
 }
 
 WorldChanges& Simulation::takeChanges() {

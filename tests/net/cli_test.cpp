@@ -208,7 +208,7 @@ TEST(Cli, NetworkedPlayWordsSetTheAreaAndBudget_AndRefusalsNameTheArgument) {
   EXPECT_EQ(run.exitCode, 1);
   ASSERT_EQ(run.lines.size(), 7u);
   for (int line = 1; line <= 4; ++line) EXPECT_TRUE(contains(run.lines[line], R"("ok":true)")) << run.lines[line];
-  EXPECT_TRUE(contains(run.lines[5], "area is empty or inverted")) << run.lines[5];
+  EXPECT_TRUE(contains(run.lines[5], "area X2 Y2 must exceed area X1 Y1")) << run.lines[5];
   EXPECT_TRUE(contains(run.lines[6], "budget BYTES_PER_SECOND 0 must be in [1000, 125000000]")) << run.lines[6];
 }
 

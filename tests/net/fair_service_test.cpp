@@ -89,19 +89,27 @@ TEST(Access, LoopbackAddresses) {
 constexpr std::uint32_t kPlayer = 7;
 constexpr std::uint32_t kAdmin = 1;
 
+// Why the player may not run `message` (its command's row resolved as the room does).
+std::string refusalFor(const Ownership& ownership, const v1::ClientMessage& message, std::uint32_t client) {
+  const CommandRow* row = findCommand(message);
+  EXPECT_NE(row, nullptr) << "a message with a command";
+  return row == nullptr ? "no command" : ownership.playerRefusal(*row, message, client);
+}
+
 // Applies `message` for `client` as the room does: refused when the player
 // may not, else applied and its outcome recorded. The reply.
 v1::ServerMessage applyAs(Simulation& simulation, Ownership& ownership,
                           const v1::ClientMessage& message, std::uint32_t client) {
+  const CommandRow& row = *findCommand(message);
   if (client == kPlayer) {
-    if (std::string refusal = ownership.playerRefusal(message, client); !refusal.empty()) {
+    if (std::string refusal = ownership.playerRefusal(row, message, client); !refusal.empty()) {
       v1::ServerMessage reply;
       reply.mutable_command_result()->set_error(refusal);
       return reply;
     }
   }
-  auto outcome = applyCommand(simulation, message, CommandLimits{});
-  ownership.recordOutcome(message, outcome.reply, client, simulation);
+  auto outcome = applyCommand(simulation, row, message, CommandLimits{});
+  ownership.recordOutcome(row, message, outcome.reply, client, simulation);
   return outcome.reply;
 }
 
@@ -114,20 +122,20 @@ TEST(Ownership, PlayersMayPushAndRemoveWhatTheySpawned) {
   const std::uint32_t body = spawned.command_result().body_id();
   ASSERT_TRUE(spawned.command_result().ok()) << errorOf(spawned);
 
-  EXPECT_TRUE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), kPlayer).empty());
-  EXPECT_NE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), 8)
+  EXPECT_TRUE(refusalFor(ownership, client::applyImpulse(body, {1, 0}), kPlayer).empty());
+  EXPECT_NE(refusalFor(ownership, client::applyImpulse(body, {1, 0}), 8)
                 .find("body " + std::to_string(body) + " was not created by this client"),
             std::string::npos);
   // Body 1 is the preset's floor: the admin's, not the player's.
-  EXPECT_FALSE(ownership.playerRefusal(client::removeBody(1), kPlayer).empty());
+  EXPECT_FALSE(refusalFor(ownership, client::removeBody(1), kPlayer).empty());
   EXPECT_NE(
-      ownership.playerRefusal(client::clearWorld(), kPlayer).find("refused for the player role"),
+      refusalFor(ownership, client::clearWorld(), kPlayer).find("refused for the player role"),
       std::string::npos);
-  EXPECT_TRUE(ownership.playerRefusal(client::queryBody(body), 8).empty());
+  EXPECT_TRUE(refusalFor(ownership, client::queryBody(body), 8).empty());
   // Removed: no longer the player's to push.
   ASSERT_TRUE(
       applyAs(simulation, ownership, client::removeBody(body), kPlayer).command_result().ok());
-  EXPECT_FALSE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), kPlayer).empty());
+  EXPECT_FALSE(refusalFor(ownership, client::applyImpulse(body, {1, 0}), kPlayer).empty());
 }
 
 // Ids start over with each world, so a player who created body (or joint)
@@ -147,8 +155,8 @@ TEST(Ownership, EveryWorldReplacementForgetsOwners) {
                                 client::distanceJoint({body, 0, {5, 5}, {5, 6}}, {}), kPlayer);
     const std::uint32_t joint = pinned.command_result().joint_id();
     ASSERT_TRUE(pinned.command_result().ok()) << errorOf(pinned);
-    ASSERT_TRUE(ownership.playerRefusal(client::applyImpulse(body, {1, 0}), kPlayer).empty());
-    ASSERT_TRUE(ownership.playerRefusal(client::removeJoint(joint), kPlayer).empty());
+    ASSERT_TRUE(refusalFor(ownership, client::applyImpulse(body, {1, 0}), kPlayer).empty());
+    ASSERT_TRUE(refusalFor(ownership, client::removeJoint(joint), kPlayer).empty());
 
     ASSERT_TRUE(applyAs(simulation, ownership, replacement, kAdmin).command_result().ok());
     // The admin's new bodies and joint take the ids the player had.

@@ -95,8 +95,8 @@ TEST(InterestArea, BadAreasAreRefusedNamingTheFieldAndChangeNothing) {
   v1::ClientMessage onlyMin = area(0, 0, 1, 1);
   onlyMin.mutable_set_interest_area()->clear_max();
   const std::vector<std::pair<v1::ClientMessage, std::string>> cases = {
-      {area(3, 3, 3, 8), "area is empty or inverted"},
-      {area(5, 0, 1, 8), "area is empty or inverted"},
+      {area(3, 3, 3, 8), "area is 0 m wide and 5 m high: area X2 Y2 must exceed area X1 Y1 in x and y"},
+      {area(5, 0, 1, 8), "area is -4 m wide and 8 m high: area X2 Y2 must exceed area X1 Y1"},
       {area(-15000, 0, 15000, 8), "each side may be at most 20000 m"},
       {area(std::nan(""), 0, 1, 1), "area X1 Y1 is not a finite point"},
       {area(0, 0, 1, INFINITY), "area X2 Y2 is not a finite point"},

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "body_properties.h"
+
 namespace impulse::wire {
 
 namespace {
@@ -87,16 +89,8 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
   out->set_id(description.id.value);
   toWire(description.shape, out->mutable_shape());
   out->set_material(toWire(description.material));
-  out->set_is_static(description.isStatic);
-  out->set_is_kinematic(description.isKinematic);
-  out->set_ignore_gravity(description.ignoreGravity);
-  out->set_density(description.density);
-  out->set_restitution(description.restitution);
-  out->set_static_friction(description.staticFriction);
-  out->set_dynamic_friction(description.dynamicFriction);
-  out->set_linear_damping(description.linearDrag);
-  out->set_angular_damping(description.angularDrag);
-  out->set_gravity_scale(description.gravityScale);
+  putBodyProperties(description, *out);
+  putCoefficients(description, *out);
   for (std::size_t i = 1; i < description.shapes.size(); ++i) {
     toWire(description.shapes[i].shape, out->add_extra_shapes());
   }
@@ -149,14 +143,8 @@ void toWire(const BodyDescription& description, const BodyState& state, v1::Body
   out->set_mass(description.mass.mass);
   out->set_inertia(description.mass.inertia);
   out->set_area(description.mass.area);
-  out->set_restitution(description.restitution);
-  out->set_static_friction(description.staticFriction);
-  out->set_dynamic_friction(description.dynamicFriction);
-  out->set_density(description.density);
-  out->set_linear_damping(description.linearDrag);
-  out->set_angular_damping(description.angularDrag);
-  out->set_gravity_scale(description.gravityScale);
-  out->set_rolling_resistance(description.rollingResistance);
+  putBodyProperties(description, *out);
+  putCoefficients(description, *out);
 }
 
 Decoded<Real> realFromWire(double value, std::string_view what) {
@@ -211,31 +199,19 @@ std::string optionalFromWire(bool present, double value, std::string_view what,
   return {};
 }
 
-// The per-body properties (docs/protocol.md) checked for finiteness here; their
-// ranges are the engine's to judge (World::createBody names the field).
-std::string propertiesFromWire(const v1::BodyOptions& options, BodyOptions& result) {
-  MaterialOverride& o = result.materialOverride;
+// The material overrides (docs/protocol.md) checked for finiteness here;
+// their ranges are the engine's to judge (World::createBody names the field).
+std::string overridesFromWire(const v1::BodyOptions& options, MaterialOverride& o) {
   std::optional<Real> friction;
-  std::optional<Real> gravityScale;
-  std::optional<Real> linearDamping;
-  std::optional<Real> angularDamping;
   for (std::string error :
        {optionalFromWire(options.has_density(), options.density(), "options.density", o.density),
         optionalFromWire(options.has_friction(), options.friction(), "options.friction", friction),
         optionalFromWire(options.has_restitution(), options.restitution(), "options.restitution",
-                         o.restitution),
-        optionalFromWire(options.has_gravity_scale(), options.gravity_scale(),
-                         "options.gravity_scale", gravityScale),
-        optionalFromWire(true, options.linear_damping(), "options.linear_damping", linearDamping),
-        optionalFromWire(true, options.angular_damping(), "options.angular_damping",
-                         angularDamping)}) {
+                         o.restitution)}) {
     if (!error.empty()) return error;
   }
   o.staticFriction = friction;
   o.dynamicFriction = friction;
-  result.gravityScale = gravityScale.value_or(Real(1));
-  result.linearDrag = *linearDamping;
-  result.angularDrag = *angularDamping;
   return {};
 }
 
@@ -249,18 +225,16 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
                                          " is not a material " + materialRange());
   }
   result.material = *material;
-  result.isStatic = options.is_static();
-  result.isKinematic = options.is_kinematic();
   result.isAwake = !options.has_is_awake() || options.is_awake();
-  result.ignoreGravity = options.ignore_gravity();
   auto velocity = vecFromWire(options.velocity(), "options.velocity");
   if (!velocity.ok()) return Decoded<BodyOptions>::failure(std::move(velocity.error));
   result.linearVelocity = *velocity.value;
   auto angular = realFromWire(options.angular_velocity(), "options.angular_velocity");
   if (!angular.ok()) return Decoded<BodyOptions>::failure(std::move(angular.error));
   result.angularVelocity = *angular.value;
-  if (std::string error = propertiesFromWire(options, result); !error.empty()) {
-    return Decoded<BodyOptions>::failure(std::move(error));
+  for (std::string error :
+       {getOptionProperties(options, result), overridesFromWire(options, result.materialOverride)}) {
+    if (!error.empty()) return Decoded<BodyOptions>::failure(std::move(error));
   }
   result.interaction = shapeFlagsFromWire(options.shape_flags());
   return Decoded<BodyOptions>::success(result);

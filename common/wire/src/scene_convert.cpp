@@ -6,8 +6,11 @@
 
 #include "impulse/wire/field_convert.h"
 
+#include "body_properties.h"
+
 #include <algorithm>
 #include <string>
+#include <type_traits>
 
 namespace impulse::wire {
 
@@ -25,22 +28,106 @@ void put(const Rot& q, v1::SceneRotation* out) {
   out->set_s(q.s);
 }
 
-void putSettings(const SolverSettingsState& s, v1::SceneSettings* out) {
-  put(s.gravity, out->mutable_gravity());
-  out->set_sub_steps(s.subSteps);
-  out->set_relax_iterations(s.relaxIterations);
-  out->set_contact_hertz(s.contactHertz);
-  out->set_contact_damping_ratio(s.contactDampingRatio);
-  out->set_max_contact_push_speed(s.maxContactPushSpeed);
-  out->set_restitution_threshold(s.restitutionThreshold);
-  out->set_stick_speed(s.stickSpeed);
-  out->set_enable_warm_starting(s.enableWarmStarting);
-  out->set_enable_sleep(s.enableSleep);
-  out->set_linear_sleep_tolerance(s.linearSleepTolerance);
-  out->set_time_to_sleep(s.timeToSleep);
-  out->set_enable_continuous(s.enableContinuous);
-  out->set_hit_event_threshold(s.hitEventThreshold);
+Vec2 get(const v1::SceneVec2& v) { return Vec2(v.x(), v.y()); }
+Rot get(const v1::SceneRotation& q) { return {q.c(), q.s()}; }
+
+// ------------------------------------------------------------ field tables
+// The plain fields of each state struct and its scene message, one row
+// (engine member, wire field) each, expanded into both directions by
+// IMPULSE_PUT_FIELD and IMPULSE_GET_FIELD: a field the state gains is a
+// row here. Fields that need a check, a cast or a list are converted by
+// hand below.
+
+// clang-format off
+#define IMPULSE_SETTINGS_FIELDS(FIELD)                                          \
+  FIELD(gravity, gravity) FIELD(subSteps, sub_steps)                            \
+  FIELD(relaxIterations, relax_iterations) FIELD(contactHertz, contact_hertz)   \
+  FIELD(contactDampingRatio, contact_damping_ratio)                             \
+  FIELD(maxContactPushSpeed, max_contact_push_speed)                            \
+  FIELD(restitutionThreshold, restitution_threshold) FIELD(stickSpeed, stick_speed) \
+  FIELD(enableWarmStarting, enable_warm_starting) FIELD(enableSleep, enable_sleep) \
+  FIELD(linearSleepTolerance, linear_sleep_tolerance) FIELD(timeToSleep, time_to_sleep) \
+  FIELD(enableContinuous, enable_continuous) FIELD(hitEventThreshold, hit_event_threshold)
+
+// The body's own properties (gravity scale, drags, type flags) are rows of
+// IMPULSE_BODY_PROPERTIES (body_properties.h).
+#define IMPULSE_BODY_FIELDS(FIELD)                                              \
+  FIELD(transform.p, position) FIELD(transform.q, rotation)                     \
+  FIELD(linearVelocity, velocity) FIELD(angularVelocity, angular_velocity)      \
+  FIELD(force, force) FIELD(torque, torque) FIELD(sleepTime, sleep_time)        \
+  FIELD(center0, start_center) FIELD(rotation0, start_rotation)                 \
+  FIELD(creationOrder, creation_order) FIELD(awake, awake)
+
+#define IMPULSE_CONTACT_FIELDS(FIELD)                                           \
+  FIELD(shapeA, shape_a) FIELD(shapeB, shape_b) FIELD(bodyA, body_a) FIELD(bodyB, body_b) \
+  FIELD(manifold.normal, normal) FIELD(manifold.rollingImpulse, rolling_impulse) \
+  FIELD(frame.computed, frame_computed) FIELD(frame.relative.p, frame_relative_position) \
+  FIELD(frame.relative.q, frame_relative_rotation) FIELD(frame.localNormal, frame_normal) \
+  FIELD(staticFriction, static_friction) FIELD(dynamicFriction, dynamic_friction) \
+  FIELD(restitution, restitution) FIELD(rollingResistance, rolling_resistance)  \
+  FIELD(touching, touching)
+
+#define IMPULSE_MANIFOLD_POINT_FIELDS(FIELD)                                    \
+  FIELD(point, point) FIELD(anchorA, anchor_a) FIELD(anchorB, anchor_b)         \
+  FIELD(separation, separation) FIELD(normalImpulse, normal_impulse)            \
+  FIELD(tangentImpulse, tangent_impulse) FIELD(supportImpulse, support_impulse)
+
+#define IMPULSE_JOINT_FIELDS(FIELD)                                             \
+  FIELD(bodyA, body_a) FIELD(bodyB, body_b)                                     \
+  FIELD(localAnchorA, local_anchor_a) FIELD(localAnchorB, local_anchor_b)       \
+  FIELD(localAxisA, local_axis_a) FIELD(referenceAngle, reference_angle)        \
+  FIELD(referenceTranslation, reference_translation)                            \
+  FIELD(referencePerpendicular, reference_perpendicular) FIELD(length, length)  \
+  FIELD(target, target) FIELD(reactionForce, reaction_force)                    \
+  FIELD(reactionTorque, reaction_torque) FIELD(collideConnected, collide_connected)
+
+#define IMPULSE_JOINT_IMPULSE_FIELDS(FIELD)                                     \
+  FIELD(point, point) FIELD(pointSpring, point_spring)                          \
+  FIELD(perpendicular, perpendicular) FIELD(angular, angular) FIELD(axial, axial) \
+  FIELD(spring, spring) FIELD(motor, motor) FIELD(lower, lower) FIELD(upper, upper)
+
+#define IMPULSE_TREE_NODE_FIELDS(FIELD)                                         \
+  FIELD(box.lower, lower) FIELD(box.upper, upper) FIELD(parent, parent)         \
+  FIELD(child1, child1) FIELD(child2, child2) FIELD(userValue, user_value)
+// clang-format on
+
+template <class Value>
+constexpr bool kIsSceneMessage = std::is_same_v<Value, Vec2> || std::is_same_v<Value, Rot>;
+
+// Engine `value` into a field: a vector or rotation into its message, a
+// number or flag set as it is. The accessors are generic lambdas, so only
+// the one that applies is instantiated.
+template <class Value, class Message, class Mutable, class Set>
+void putField(const Value& value, Message& out, Mutable mutableField, Set setField) {
+  if constexpr (kIsSceneMessage<Value>) {
+    put(value, mutableField(out));
+  } else {
+    setField(out, value);
+  }
 }
+
+// A field into engine `value`. An optional number left out keeps the
+// state's default (a scene written before the field existed).
+template <class Message, class Value, class Get, class Has>
+void getField(const Message& in, Value& value, Get field, Has present) {
+  if constexpr (kIsSceneMessage<Value>) {
+    value = get(field(in));
+  } else if (present(in)) {
+    value = static_cast<Value>(field(in));
+  }
+}
+
+#define IMPULSE_PUT_FIELD(member, field)                                                          \
+  putField(in.member, out, [](auto& message) { return message.mutable_##field(); },              \
+           [](auto& message, auto value) { message.set_##field(value); });
+#define IMPULSE_GET_FIELD(member, field)                                                          \
+  getField(in, out.member, [](const auto& message) -> decltype(auto) { return message.field(); }, \
+           [](const auto& message) {                                                              \
+             if constexpr (requires { message.has_##field(); }) return message.has_##field();     \
+             else return true;                                                                    \
+           });
+
+void putSettings(const SolverSettingsState& in, v1::SceneSettings& out) { IMPULSE_SETTINGS_FIELDS(IMPULSE_PUT_FIELD) }
 
 void put(const Segment& segment, v1::SceneSegment* out) {
   put(segment.point1, out->mutable_point1());
@@ -87,120 +174,59 @@ void putShape(const ShapeSlotState& s, v1::SceneShape* out) {
   out->set_body(s.body);
   putGeometry(s.shape, out);
   out->set_material(toWire(s.material));
-  out->set_density(s.density);
-  out->set_restitution(s.restitution);
-  out->set_static_friction(s.staticFriction);
-  out->set_dynamic_friction(s.dynamicFriction);
-  out->set_rolling_resistance(s.rollingResistance);
+  putCoefficients(s, *out);
   out->set_proxy_key(s.proxyKey);
   toWire(s.interaction, out->mutable_flags());
 }
 
-void putBody(const BodySlotState& b, v1::SceneBody* out) {
-  out->set_alive(b.alive);
-  out->set_generation(b.generation);
-  if (!b.alive) return;
-  for (std::int32_t shape : b.shapes) out->add_shapes(shape);
-  put(b.transform.p, out->mutable_position());
-  put(b.transform.q, out->mutable_rotation());
-  put(b.linearVelocity, out->mutable_velocity());
-  out->set_angular_velocity(b.angularVelocity);
-  put(b.force, out->mutable_force());
-  out->set_torque(b.torque);
-  out->set_linear_drag(b.linearDrag);
-  out->set_gravity_scale(b.gravityScale);
-  out->set_angular_drag(b.angularDrag);
-  out->set_sleep_time(b.sleepTime);
-  put(b.center0, out->mutable_start_center());
-  put(b.rotation0, out->mutable_start_rotation());
-  out->set_creation_order(b.creationOrder);
-  out->set_is_static(b.isStatic);
-  out->set_is_kinematic(b.isKinematic);
-  out->set_ignore_gravity(b.ignoreGravity);
-  out->set_awake(b.awake);
-  for (std::int32_t key : b.contactEdges) out->add_contact_edges(key);
-  for (std::int32_t key : b.jointEdges) out->add_joint_edges(key);
+void putBody(const BodySlotState& in, v1::SceneBody& out) {
+  out.set_alive(in.alive);
+  out.set_generation(in.generation);
+  if (!in.alive) return;
+  for (std::int32_t shape : in.shapes) out.add_shapes(shape);
+  IMPULSE_BODY_FIELDS(IMPULSE_PUT_FIELD)
+  putSceneBodyProperties(in, out);
+  for (std::int32_t key : in.contactEdges) out.add_contact_edges(key);
+  for (std::int32_t key : in.jointEdges) out.add_joint_edges(key);
 }
 
-void putContact(const ContactSlotState& c, v1::SceneContact* out) {
-  out->set_alive(c.alive);
-  if (!c.alive) return;
-  out->set_shape_a(c.shapeA);
-  out->set_shape_b(c.shapeB);
-  out->set_body_a(c.bodyA);
-  out->set_body_b(c.bodyB);
-  put(c.manifold.normal, out->mutable_normal());
-  for (int i = 0; i < c.manifold.pointCount; ++i) {
-    const ManifoldPoint& p = c.manifold.points[std::size_t(i)];
-    v1::SceneManifoldPoint* point = out->add_points();
-    put(p.point, point->mutable_point());
-    put(p.anchorA, point->mutable_anchor_a());
-    put(p.anchorB, point->mutable_anchor_b());
-    point->set_separation(p.separation);
-    point->set_feature(p.id);
-    point->set_normal_impulse(p.normalImpulse);
-    point->set_tangent_impulse(p.tangentImpulse);
-    point->set_support_impulse(p.supportImpulse);
-    put(c.frame.localPointA[i], point->mutable_frame_point_a());
-    put(c.frame.localPointB[i], point->mutable_frame_point_b());
-    point->set_frame_offset(c.frame.offset[i]);
+void putManifoldPoint(const ManifoldPoint& in, const ManifoldFrame& frame, int i, v1::SceneManifoldPoint& out) {
+  IMPULSE_MANIFOLD_POINT_FIELDS(IMPULSE_PUT_FIELD)
+  out.set_feature(in.id);
+  put(frame.localPointA[i], out.mutable_frame_point_a());
+  put(frame.localPointB[i], out.mutable_frame_point_b());
+  out.set_frame_offset(frame.offset[i]);
+}
+
+void putContact(const ContactSlotState& in, v1::SceneContact& out) {
+  out.set_alive(in.alive);
+  if (!in.alive) return;
+  IMPULSE_CONTACT_FIELDS(IMPULSE_PUT_FIELD)
+  for (int i = 0; i < in.manifold.pointCount; ++i) {
+    putManifoldPoint(in.manifold.points[std::size_t(i)], in.frame, i, *out.add_points());
   }
-  out->set_rolling_impulse(c.manifold.rollingImpulse);
-  out->set_frame_computed(c.frame.computed);
-  put(c.frame.relative.p, out->mutable_frame_relative_position());
-  put(c.frame.relative.q, out->mutable_frame_relative_rotation());
-  put(c.frame.localNormal, out->mutable_frame_normal());
-  out->set_static_friction(c.staticFriction);
-  out->set_dynamic_friction(c.dynamicFriction);
-  out->set_restitution(c.restitution);
-  out->set_rolling_resistance(c.rollingResistance);
-  out->set_touching(c.touching);
 }
 
-void putImpulses(const JointImpulses& i, v1::SceneJointImpulses* out) {
-  put(i.point, out->mutable_point());
-  put(i.pointSpring, out->mutable_point_spring());
-  out->set_perpendicular(i.perpendicular);
-  out->set_angular(i.angular);
-  out->set_axial(i.axial);
-  out->set_spring(i.spring);
-  out->set_motor(i.motor);
-  out->set_lower(i.lower);
-  out->set_upper(i.upper);
+void putImpulses(const JointImpulses& in, v1::SceneJointImpulses& out) {
+  IMPULSE_JOINT_IMPULSE_FIELDS(IMPULSE_PUT_FIELD)
 }
 
-void putJoint(const JointSlotState& j, v1::SceneJoint* out) {
-  out->set_alive(j.alive);
-  out->set_generation(j.generation);
-  if (!j.alive) return;
-  out->set_body_a(j.bodyA);
-  out->set_body_b(j.bodyB);
-  toWire(j.settings, out);
-  put(j.localAnchorA, out->mutable_local_anchor_a());
-  put(j.localAnchorB, out->mutable_local_anchor_b());
-  put(j.localAxisA, out->mutable_local_axis_a());
-  out->set_reference_angle(j.referenceAngle);
-  out->set_reference_translation(j.referenceTranslation);
-  out->set_reference_perpendicular(j.referencePerpendicular);
-  out->set_length(j.length);
-  put(j.target, out->mutable_target());
-  putImpulses(j.impulses, out->mutable_impulses());
-  put(j.reactionForce, out->mutable_reaction_force());
-  out->set_reaction_torque(j.reactionTorque);
-  out->set_collide_connected(j.collideConnected);
+void putJoint(const JointSlotState& in, v1::SceneJoint& out) {
+  out.set_alive(in.alive);
+  out.set_generation(in.generation);
+  if (!in.alive) return;
+  toWire(in.settings, &out);
+  IMPULSE_JOINT_FIELDS(IMPULSE_PUT_FIELD)
+  putImpulses(in.impulses, *out.mutable_impulses());
+}
+
+void putTreeNode(const DynamicTree::Node& in, v1::SceneTreeNode& out) {
+  IMPULSE_TREE_NODE_FIELDS(IMPULSE_PUT_FIELD)
+  out.set_height(in.height);
 }
 
 void putTree(const DynamicTree::State& tree, v1::SceneTree* out) {
-  for (const DynamicTree::Node& node : tree.nodes) {
-    v1::SceneTreeNode* n = out->add_nodes();
-    put(node.box.lower, n->mutable_lower());
-    put(node.box.upper, n->mutable_upper());
-    n->set_parent(node.parent);
-    n->set_child1(node.child1);
-    n->set_child2(node.child2);
-    n->set_user_value(node.userValue);
-    n->set_height(node.height);
-  }
+  for (const DynamicTree::Node& node : tree.nodes) putTreeNode(node, *out->add_nodes());
   out->set_root(tree.root);
   out->set_free_list(tree.freeList);
   out->set_leaf_count(tree.leafCount);
@@ -213,18 +239,10 @@ void putSlots(const std::vector<std::int32_t>& slots, Repeated* out) {
 
 // ------------------------------------------------------------ wire -> engine
 
-Vec2 get(const v1::SceneVec2& v) { return Vec2(v.x(), v.y()); }
-Rot get(const v1::SceneRotation& q) { return {q.c(), q.s()}; }
-
-SolverSettingsState getSettings(const v1::SceneSettings& s) {
-  return {get(s.gravity()),           s.sub_steps(),
-          s.relax_iterations(),       s.contact_hertz(),
-          s.contact_damping_ratio(),  s.max_contact_push_speed(),
-          s.restitution_threshold(),  s.stick_speed(),
-          s.enable_warm_starting(),   s.enable_sleep(),
-          s.linear_sleep_tolerance(), s.time_to_sleep(),
-          s.enable_continuous(),
-          s.has_hit_event_threshold() ? s.hit_event_threshold() : SolverSettingsState{}.hitEventThreshold};
+SolverSettingsState getSettings(const v1::SceneSettings& in) {
+  SolverSettingsState out;
+  IMPULSE_SETTINGS_FIELDS(IMPULSE_GET_FIELD)
+  return out;
 }
 
 Segment get(const v1::SceneSegment& s) { return {get(s.point1()), get(s.point2())}; }
@@ -274,11 +292,7 @@ std::string getMaterial(const Message& in, ShapeSlotState& s) {
   const std::optional<Material> material = materialFromWire(in.material());
   if (!material) return "material must be one of the Material enum";
   s.material = *material;
-  s.density = in.density();
-  s.restitution = in.restitution();
-  s.staticFriction = in.static_friction();
-  s.dynamicFriction = in.dynamic_friction();
-  s.rollingResistance = in.rolling_resistance();
+  getCoefficients(in, s);
   s.proxyKey = in.proxy_key();
   return {};
 }
@@ -309,117 +323,71 @@ std::string getVersion2Shape(const v1::SceneBody& in, std::int32_t slot, ShapeSl
   return getMaterial(in, s);
 }
 
-std::string getBody(const v1::SceneBody& in, BodySlotState& b) {
-  b.alive = in.alive();
-  b.generation = in.generation();
-  if (!b.alive) return {};
-  b.shapes.assign(in.shapes().begin(), in.shapes().end());
-  b.transform = {get(in.position()), get(in.rotation())};
-  b.linearVelocity = get(in.velocity());
-  b.angularVelocity = in.angular_velocity();
-  b.force = get(in.force());
-  b.torque = in.torque();
-  b.linearDrag = in.linear_drag();
-  b.gravityScale = in.has_gravity_scale() ? in.gravity_scale() : 1;
-  b.angularDrag = in.angular_drag();
-  b.sleepTime = in.sleep_time();
-  b.center0 = get(in.start_center());
-  b.rotation0 = get(in.start_rotation());
-  b.creationOrder = in.creation_order();
-  b.isStatic = in.is_static();
-  b.isKinematic = in.is_kinematic();
-  b.ignoreGravity = in.ignore_gravity();
-  b.awake = in.awake();
-  b.contactEdges.assign(in.contact_edges().begin(), in.contact_edges().end());
-  b.jointEdges.assign(in.joint_edges().begin(), in.joint_edges().end());
+std::string getBody(const v1::SceneBody& in, BodySlotState& out) {
+  out.alive = in.alive();
+  out.generation = in.generation();
+  if (!out.alive) return {};
+  out.shapes.assign(in.shapes().begin(), in.shapes().end());
+  IMPULSE_BODY_FIELDS(IMPULSE_GET_FIELD)
+  getSceneBodyProperties(in, out);
+  out.contactEdges.assign(in.contact_edges().begin(), in.contact_edges().end());
+  out.jointEdges.assign(in.joint_edges().begin(), in.joint_edges().end());
   return {};
 }
 
-std::string getContact(const v1::SceneContact& in, ContactSlotState& c) {
-  c.alive = in.alive();
-  if (!c.alive) return {};
+std::string getManifoldPoint(const v1::SceneManifoldPoint& in, int i, ManifoldPoint& out, ManifoldFrame& frame) {
+  if (in.feature() > 0xFFFF) return "a feature key has 16 bits";
+  IMPULSE_MANIFOLD_POINT_FIELDS(IMPULSE_GET_FIELD)
+  out.id = static_cast<std::uint16_t>(in.feature());
+  frame.localPointA[i] = get(in.frame_point_a());
+  frame.localPointB[i] = get(in.frame_point_b());
+  frame.offset[i] = in.frame_offset();
+  return {};
+}
+
+std::string getContact(const v1::SceneContact& in, ContactSlotState& out) {
+  out.alive = in.alive();
+  if (!out.alive) return {};
   if (in.points_size() > 2) return "a manifold has at most 2 points";
-  c.shapeA = in.shape_a();
-  c.shapeB = in.shape_b();
-  c.bodyA = in.body_a();
-  c.bodyB = in.body_b();
-  c.manifold.normal = get(in.normal());
-  c.manifold.pointCount = in.points_size();
+  IMPULSE_CONTACT_FIELDS(IMPULSE_GET_FIELD)
+  out.manifold.pointCount = in.points_size();
   for (int i = 0; i < in.points_size(); ++i) {
-    const v1::SceneManifoldPoint& p = in.points(i);
-    if (p.feature() > 0xFFFF) return "a feature key has 16 bits";
-    ManifoldPoint& point = c.manifold.points[std::size_t(i)];
-    point.point = get(p.point());
-    point.anchorA = get(p.anchor_a());
-    point.anchorB = get(p.anchor_b());
-    point.separation = p.separation();
-    point.id = static_cast<std::uint16_t>(p.feature());
-    point.normalImpulse = p.normal_impulse();
-    point.tangentImpulse = p.tangent_impulse();
-    point.supportImpulse = p.support_impulse();
-    c.frame.localPointA[i] = get(p.frame_point_a());
-    c.frame.localPointB[i] = get(p.frame_point_b());
-    c.frame.offset[i] = p.frame_offset();
+    if (std::string error = getManifoldPoint(in.points(i), i, out.manifold.points[std::size_t(i)], out.frame);
+        !error.empty()) {
+      return error;
+    }
   }
-  c.manifold.rollingImpulse = in.rolling_impulse();
-  c.frame.computed = in.frame_computed();
-  c.frame.relative = {get(in.frame_relative_position()), get(in.frame_relative_rotation())};
-  c.frame.localNormal = get(in.frame_normal());
-  c.staticFriction = in.static_friction();
-  c.dynamicFriction = in.dynamic_friction();
-  c.restitution = in.restitution();
-  c.rollingResistance = in.rolling_resistance();
-  c.touching = in.touching();
   return {};
 }
 
 JointImpulses getImpulses(const v1::SceneJointImpulses& in) {
-  return {get(in.point()),    get(in.point_spring()),
-          in.perpendicular(), in.angular(),
-          in.axial(),         in.spring(),
-          in.motor(),         in.lower(),
-          in.upper()};
+  JointImpulses out;
+  IMPULSE_JOINT_IMPULSE_FIELDS(IMPULSE_GET_FIELD)
+  return out;
 }
 
-std::string getJoint(const v1::SceneJoint& in, JointSlotState& j) {
-  j.alive = in.alive();
-  j.generation = in.generation();
-  if (!j.alive) return {};
+std::string getJoint(const v1::SceneJoint& in, JointSlotState& out) {
+  out.alive = in.alive();
+  out.generation = in.generation();
+  if (!out.alive) return {};
   Decoded<JointSettings> settings = jointSettingsFromWire(in);
   if (!settings.ok()) return settings.error;
-  j.settings = *settings.value;
-  j.bodyA = in.body_a();
-  j.bodyB = in.body_b();
-  j.localAnchorA = get(in.local_anchor_a());
-  j.localAnchorB = get(in.local_anchor_b());
-  j.localAxisA = get(in.local_axis_a());
-  j.referenceAngle = in.reference_angle();
-  j.referenceTranslation = in.reference_translation();
-  j.referencePerpendicular = in.reference_perpendicular();
-  j.length = in.length();
-  j.target = get(in.target());
-  j.impulses = getImpulses(in.impulses());
-  j.reactionForce = get(in.reaction_force());
-  j.reactionTorque = in.reaction_torque();
-  j.collideConnected = in.collide_connected();
+  out.settings = *settings.value;
+  IMPULSE_JOINT_FIELDS(IMPULSE_GET_FIELD)
+  out.impulses = getImpulses(in.impulses());
   return {};
 }
 
-std::string getTree(const v1::SceneTree& in, DynamicTree::State& tree) {
-  for (const v1::SceneTreeNode& n : in.nodes()) {
-    if (n.height() < -1 || n.height() > 1000) return "a tree node's height must be -1 to 1000";
-    DynamicTree::Node node;
-    node.box = {get(n.lower()), get(n.upper())};
-    node.parent = n.parent();
-    node.child1 = n.child1();
-    node.child2 = n.child2();
-    node.userValue = n.user_value();
-    node.height = static_cast<std::int16_t>(n.height());
-    tree.nodes.push_back(node);
+std::string getTree(const v1::SceneTree& tree, DynamicTree::State& state) {
+  for (const v1::SceneTreeNode& in : tree.nodes()) {
+    if (in.height() < -1 || in.height() > 1000) return "a tree node's height must be -1 to 1000";
+    DynamicTree::Node& out = state.nodes.emplace_back();
+    IMPULSE_TREE_NODE_FIELDS(IMPULSE_GET_FIELD)
+    out.height = static_cast<std::int16_t>(in.height());
   }
-  tree.root = in.root();
-  tree.freeList = in.free_list();
-  tree.leafCount = in.leaf_count();
+  state.root = tree.root();
+  state.freeList = tree.free_list();
+  state.leafCount = tree.leaf_count();
   return {};
 }
 
@@ -461,15 +429,15 @@ void nameVersion2ContactShapes(WorldState& state) {
 
 void toWire(const WorldState& state, v1::Scene* out) {
   out->set_version(kSceneVersion);
-  putSettings(state.settings, out->mutable_settings());
-  for (const BodySlotState& body : state.bodies) putBody(body, out->add_bodies());
+  putSettings(state.settings, *out->mutable_settings());
+  for (const BodySlotState& body : state.bodies) putBody(body, *out->add_bodies());
   putSlots(state.freeBodies, out->mutable_free_bodies());
   out->set_next_creation_order(state.nextCreationOrder);
   for (const ShapeSlotState& shape : state.shapes) putShape(shape, out->add_shapes());
   putSlots(state.freeShapes, out->mutable_free_shapes());
-  for (const ContactSlotState& contact : state.contacts) putContact(contact, out->add_contacts());
+  for (const ContactSlotState& contact : state.contacts) putContact(contact, *out->add_contacts());
   putSlots(state.freeContacts, out->mutable_free_contacts());
-  for (const JointSlotState& joint : state.joints) putJoint(joint, out->add_joints());
+  for (const JointSlotState& joint : state.joints) putJoint(joint, *out->add_joints());
   putSlots(state.freeJoints, out->mutable_free_joints());
   for (const FieldSlotState& field : state.fields) toWire(field.id, field.def, out->add_fields());
   out->set_next_field_id(state.nextFieldId);

@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "impulse.pb.h"
+#include "impulse/server/commands.h"
 #include "impulse/server/simulation.h"
 #include "impulse/world.h"
 
@@ -39,17 +40,19 @@ Admission admit(const AccessTokens& tokens, std::string_view offered);
 bool isLoopbackAddress(std::string_view address);
 
 /// Bodies and joints created by player clients, by id. What a player may do
-/// follows from the command table's role column (commandRole): Admin
-/// commands are refused, Owner commands only on what the player created.
+/// follows from the command's row of the command table (its role column):
+/// Admin commands are refused, Owner commands only on what the player
+/// created, Anyone commands allowed; a command without a row never gets here.
 class Ownership {
  public:
   /// Why a player may not run this command (empty when it may).
-  std::string playerRefusal(const v1::ClientMessage& message, std::uint32_t client) const;
+  std::string playerRefusal(const CommandRow& row, const v1::ClientMessage& message,
+                            std::uint32_t client) const;
   /// After a command was applied: remembers what a client created and
   /// forgets what left the world; forgets everything once the world was
   /// replaced (its ids start over). Bounded by the world's body limit.
-  void recordOutcome(const v1::ClientMessage& message, const v1::ServerMessage& reply,
-                     std::uint32_t client, const Simulation& simulation);
+  void recordOutcome(const CommandRow& row, const v1::ClientMessage& message,
+                     const v1::ServerMessage& reply, std::uint32_t client, const Simulation& simulation);
 
  private:
   /// Forgets bodies and joints the world no longer has (they also leave by

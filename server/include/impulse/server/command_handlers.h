@@ -15,6 +15,7 @@ namespace impulse::server {
 
 /// What a handler works with: the world to change, the limits, and the reply
 /// it fills in (a CommandResult unless it answers with another message).
+/// What every reply carries (request id, tick) is added by completeReply.
 struct CommandContext {
   CommandContext(Simulation& simulation, const v1::ClientMessage& message,
                  const CommandLimits& limits);
@@ -25,9 +26,9 @@ struct CommandContext {
   CommandOutcome outcome;
 
   void fail(std::string error);
-  /// The command changed the world or its meta.
+  /// The command was accepted (what it changed, the Simulation recorded).
   void succeed();
-  /// The reply as a CommandResult (the request id is already set).
+  /// The reply as a CommandResult.
   v1::CommandResult& result() { return *outcome.reply.mutable_command_result(); }
 };
 

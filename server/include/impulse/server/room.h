@@ -164,7 +164,8 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   void reply(std::uint32_t client, v1::ServerMessage message, std::size_t bytes);
   /// SetInterestArea or SetBandwidthBudget accepted by its handler: the
   /// client's stream follows (refused for a quantized subscriber).
-  void changeStream(std::uint32_t client, const v1::ClientMessage& message, CommandOutcome& outcome);
+  void changeStream(std::uint32_t client, const CommandRow& row, const v1::ClientMessage& message,
+                    CommandOutcome& outcome);
   /// The personal streams' frames of this broadcast; a stream back to the
   /// whole room without a budget takes a full shared snapshot and ends.
   std::vector<PersonalFrame> personalFrames(const WorldChanges& changes);

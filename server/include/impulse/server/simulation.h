@@ -1,7 +1,8 @@
 #pragma once
 /// The served world: the only way to change it. Every change goes through a
-/// method here, which records it in the world's changes for the next
-/// snapshot, so callers never report changes by hand.
+/// method here, which records it once (record()): in the world's changes for
+/// the next snapshot and in the version, so callers never report changes by
+/// hand (a command's "changed" is the version moving).
 
 #include <cstdint>
 #include <optional>
@@ -153,6 +154,9 @@ class Simulation {
   /// records it as added (a refused creation changes nothing).
   template <class Make>
   CreateResult spawn(Make make);
+  /// The one place a change is recorded: moves the version and returns the
+  /// changes for the caller to say what changed (nothing for the meta).
+  WorldChanges& record();
   /// After a successful change: records `id` (if any) as changed for snapshots.
   void changedBody(BodyId id);
   /// After a step: its events as an Events message, when wanted.
