@@ -30,11 +30,12 @@ bool pairLess(const ProxyPair& a, const ProxyPair& b) {
 }
 
 // Appends a pair of `userValue` with every leaf of `tree` overlapping `box`,
-// except `skipNode` (the querying proxy itself) and known pairs.
-void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, std::int32_t skipNode,
+// except the leaves `skip` names and known pairs.
+template <class Skip>
+void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, Skip&& skip,
                   const BroadPhase::KnownPair& known, std::vector<ProxyPair>& pairs) {
   tree.query(box, [&](std::int32_t node) {
-    if (node == skipNode) return true;
+    if (skip(node)) return true;
     const std::int32_t other = tree.userValue(node);
     const ProxyPair pair{std::min(userValue, other), std::max(userValue, other)};
     if (!known || !known(pair.first, pair.second)) pairs.push_back(pair);
@@ -86,6 +87,8 @@ std::span<const std::int32_t> BroadPhase::queuedProxies() {
   std::sort(moveBuffer_.begin(), moveBuffer_.end());
   moveBuffer_.erase(std::unique(moveBuffer_.begin(), moveBuffer_.end()), moveBuffer_.end());
   const auto live = std::upper_bound(moveBuffer_.begin(), moveBuffer_.end(), kNullKey);
+  for (int tree = 0; tree < 2; ++tree) queuedNode_[tree].assign(std::size_t(trees_[tree].nodeCapacity()), 0);
+  for (auto key = live; key != moveBuffer_.end(); ++key) queuedNode_[treeIndex(kindOf(*key))][std::size_t(nodeOf(*key))] = 1;
   return {live, moveBuffer_.end()};
 }
 
@@ -141,12 +144,17 @@ void BroadPhase::queryPairs(std::int32_t proxyKey, const KnownPair& known, std::
   const std::int32_t userValue = own.userValue(node);
   const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
   if (kind == ProxyKind::Movable) {
-    collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue, DynamicTree::kNull, known, pairs);
-    collectPairs(movable, box, userValue, node, known, pairs);
+    // A queued static partner finds this pair itself, and so does a queued
+    // movable one of a lower node.
+    collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue,
+                 [&](std::int32_t other) { return isQueued(ProxyKind::Static, other); }, known, pairs);
+    collectPairs(movable, box, userValue,
+                 [&](std::int32_t other) { return other == node || (other < node && isQueued(ProxyKind::Movable, other)); },
+                 known, pairs);
   } else {
     // A queued static proxy (touched or teleported) only looks for movable
     // partners: static-static pairs never collide.
-    collectPairs(movable, box, userValue, DynamicTree::kNull, known, pairs);
+    collectPairs(movable, box, userValue, [](std::int32_t) { return false; }, known, pairs);
   }
 }
 

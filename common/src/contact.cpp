@@ -161,7 +161,15 @@ enum CollideOutcome : std::uint8_t {
   kApart = 1,          // the fat boxes no longer overlap: the contact goes
   kRecomputed = 2,     // the manifold was computed afresh
   kTouchChanged = 4,   // it began or stopped touching
+  kWakes = 8,          // it touches a body that sleeps (woken in the serial pass)
 };
+
+// Whether touching the body wakes it (wakeIsland's own test).
+bool sleeps(const Body& body) { return !body.isStatic && !body.awake && body.alive; }
+
+std::uint8_t wakeOutcome(const Contact& contact, const Body& a, const Body& b) {
+  return contact.touching && (sleeps(a) || sleeps(b)) ? kWakes : kKept;
+}
 
 // Reads the bodies and shapes, writes only this contact: contacts can be
 // updated side by side.
@@ -175,7 +183,7 @@ std::uint8_t updateManifold(const WorldData& world, Contact& contact) {
   const bool carried = carriesManifold(contact);
   if (carried && manifoldIsCurrent(contact, a, b)) {
     refreshManifold(contact, a, b);
-    return kKept;
+    return wakeOutcome(contact, a, b);
   }
   Manifold next = contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
                                   world.shapes[contact.shapeB].ref().geometry, b.transform);
@@ -184,7 +192,7 @@ std::uint8_t updateManifold(const WorldData& world, Contact& contact) {
   const bool wasTouching = contact.touching;
   contact.touching = next.pointCount > 0;
   if (carried) recordFrame(contact, a, b);
-  return std::uint8_t(kRecomputed | (contact.touching != wasTouching ? kTouchChanged : 0));
+  return std::uint8_t(kRecomputed | (contact.touching != wasTouching ? kTouchChanged : 0) | wakeOutcome(contact, a, b));
 }
 
 // Contacts per range of the parallel update: a manifold costs about a
@@ -302,9 +310,11 @@ void collideContacts(WorldData& world, Real dt) {
     if (outcome & kRecomputed) ++world.profile.manifoldUpdates;
     if (outcome & kTouchChanged) reportTouchChange(world, contact);
     if (contact.reportsHits && contact.touching) reportHit(world, contact, dt);
-    // A touch from an awake body wakes a sleeping one, with its island.
-    if (contact.touching) {
-      world.touchingContacts.push_back(index);
+    if (contact.touching) world.touchingContacts.push_back(index);
+    // A touch from an awake body wakes a sleeping one, with its island. A
+    // body found asleep may have been woken since, and waking it again does
+    // nothing; one found awake stays so.
+    if (outcome & kWakes) {
       wakeIsland(world, contact.edges.bodyA);
       wakeIsland(world, contact.edges.bodyB);
     }

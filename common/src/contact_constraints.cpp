@@ -29,10 +29,16 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index) {
   return {index, a.state, b.state, false, a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
+// Refs per range when collecting them side by side.
+constexpr std::int32_t kRefsPerRange = 256;
+
 // The touching contacts the step solves: the narrow phase's list.
 void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs) {
-  refs.clear();
-  for (std::int32_t index : world.touchingContacts) refs.push_back(refOf(world, index));
+  const std::vector<std::int32_t>& touching = world.touchingContacts;
+  refs.resize(touching.size());
+  world.tasks.forRanges(static_cast<std::int32_t>(touching.size()), kRefsPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t i = begin; i < end; ++i) refs[std::size_t(i)] = refOf(world, touching[std::size_t(i)]);
+  });
 }
 
 ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {

@@ -36,12 +36,38 @@ Real sleepVelocity(const Body& body) {
   return std::max(body.linearVelocity.norm(), body.extent * std::abs(body.angularVelocity));
 }
 
+// Bodies per range of the per-body sleep passes, which run side by side.
+constexpr std::int32_t kBodiesPerSleepRange = 1024;
+
+// Each awake body's sleep time, and whether it has been slow long enough
+// for its island to be walked (world.sleepCandidates, by awake position).
 void updateSleepTimes(WorldData& world, Real dt) {
   const Real tolerance = world.settings.linearSleepTolerance;
-  for (std::int32_t slot : world.awakeBodies) {
-    Body& body = world.bodies[slot];
-    body.sleepTime = sleepVelocity(body) > tolerance ? Real(0) : body.sleepTime + dt;
-  }
+  const Real timeToSleep = world.settings.timeToSleep;
+  const std::vector<std::int32_t>& awake = world.awakeBodies;
+  world.sleepCandidates.resize(awake.size());
+  world.tasks.forRanges(static_cast<std::int32_t>(awake.size()), kBodiesPerSleepRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t i = begin; i < end; ++i) {
+                            Body& body = world.bodies[awake[std::size_t(i)]];
+                            body.sleepTime = sleepVelocity(body) > tolerance ? Real(0) : body.sleepTime + dt;
+                            world.sleepCandidates[std::size_t(i)] = body.sleepTime >= timeToSleep ? 1 : 0;
+                          }
+                        });
+}
+
+// Every awake body moved this step: appended to the moved list (after the
+// bodies that just fell asleep).
+void listMovedBodies(WorldData& world) {
+  const std::vector<std::int32_t>& awake = world.awakeBodies;
+  const std::size_t first = world.movedBodies.size();
+  world.movedBodies.resize(first + awake.size());
+  world.tasks.forRanges(static_cast<std::int32_t>(awake.size()), kBodiesPerSleepRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t i = begin; i < end; ++i) {
+                            world.movedBodies[first + std::size_t(i)] = world.idOf(awake[std::size_t(i)]);
+                          }
+                        });
 }
 
 // Collects the island of `seed` (awake dynamic bodies joined by touching
@@ -85,7 +111,7 @@ void putIslandToSleep(WorldData& world) {
 void updateSleep(WorldData& world, Real dt) {
   world.movedBodies.clear();
   if (!world.settings.enableSleep) {
-    for (std::int32_t slot : world.awakeBodies) world.movedBodies.push_back(world.idOf(slot));
+    listMovedBodies(world);
     return;
   }
   updateSleepTimes(world, dt);
@@ -95,9 +121,9 @@ void updateSleep(WorldData& world, Real dt) {
   ++world.islandStamp;
   const Real timeToSleep = world.settings.timeToSleep;
   bool anyAsleep = false;
-  for (std::int32_t slot : world.awakeBodies) {
-    const Body& body = world.bodies[slot];
-    if (body.sleepTime < timeToSleep || body.islandMark == world.islandStamp) continue;
+  for (std::size_t i = 0; i < world.awakeBodies.size(); ++i) {
+    const std::int32_t slot = world.awakeBodies[i];
+    if (world.sleepCandidates[i] == 0 || world.bodies[slot].islandMark == world.islandStamp) continue;
     if (collectIsland(world, slot) >= timeToSleep) {
       putIslandToSleep(world);
       anyAsleep = true;
@@ -109,7 +135,7 @@ void updateSleep(WorldData& world, Real dt) {
   if (!std::is_sorted(world.awakeBodies.begin(), world.awakeBodies.end())) {
     std::sort(world.awakeBodies.begin(), world.awakeBodies.end());
   }
-  for (std::int32_t slot : world.awakeBodies) world.movedBodies.push_back(world.idOf(slot));
+  listMovedBodies(world);
 }
 
 void wakeIsland(WorldData& world, std::int32_t seed) {

@@ -14,6 +14,8 @@ constexpr std::int32_t kUnreached = -1;
 // ones lean on their neighbour; among them the 30 degrees of circles packed
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
+// Contacts per range when classifying them side by side.
+constexpr std::int32_t kRefsPerRange = 256;
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
@@ -98,10 +100,12 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
 void SupportPass::classifyContacts(const WorldData& world, std::span<const ConstraintRef> refs) {
   const Vec2 up = -world.settings.gravity.normalized();
   facing_.resize(refs.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    const Real upward = world.contacts[refs[i].contact].manifold.normal.dot(up);
-    facing_[i] = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
-  }
+  world.tasks.forRanges(static_cast<std::int32_t>(refs.size()), kRefsPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t i = begin; i < end; ++i) {
+      const Real upward = world.contacts[refs[std::size_t(i)].contact].manifold.normal.dot(up);
+      facing_[std::size_t(i)] = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+    }
+  });
 }
 
 bool SupportPass::sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {

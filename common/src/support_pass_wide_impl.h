@@ -191,6 +191,8 @@ void holdUp(std::span<SolverState> states, F inverseSubStep, WideSupportRow<F>& 
 
 // Storey by storey from the ground; within a storey the groups run
 // backwards on the sub-steps that also reverse the contacts' point order.
+// A group's bundles run side by side: its rows lift distinct upper bodies
+// and only read lower ones.
 template <class F>
 void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
@@ -201,9 +203,13 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, 
     const std::int32_t count = storeys[storey + 1] - first;
     for (std::int32_t k = 0; k < count; ++k) {
       const std::size_t group = std::size_t(context.reversePointOrder ? first + count - 1 - k : first + k);
-      for (std::int32_t b = set.supportGroupBundle[group]; b < set.supportGroupBundle[group + 1]; ++b) {
-        holdUp(context.states, inverseSubStep, bundles[std::size_t(b)]);
-      }
+      const std::int32_t groupFirst = set.supportGroupBundle[group];
+      context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerRange,
+                               [&](std::int32_t begin, std::int32_t end) {
+                                 for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
+                                   holdUp(context.states, inverseSubStep, bundles[std::size_t(b)]);
+                                 }
+                               });
     }
   }
 }

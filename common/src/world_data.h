@@ -106,6 +106,8 @@ struct WorldData {
   /// The bodies continuous collision sweeps, and whether each was stopped.
   std::vector<std::int32_t> fastBodies;
   std::vector<std::uint8_t> fastBodyMoved;
+  /// Per awake body: slow long enough that its island may sleep.
+  std::vector<std::uint8_t> sleepCandidates;
   /// The touching contacts with an awake body, in solver order: the narrow
   /// phase's list for this step's solve.
   std::vector<std::int32_t> touchingContacts;

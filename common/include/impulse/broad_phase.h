@@ -115,8 +115,17 @@ class BroadPhase {
   std::int32_t leafUserValue(std::int32_t proxyKey) const;
 
  private:
+  bool isQueued(ProxyKind kind, std::int32_t node) const {
+    const std::vector<std::uint8_t>& queued = queuedNode_[static_cast<int>(kind)];
+    return std::size_t(node) < queued.size() && queued[std::size_t(node)] != 0;
+  }
+
   DynamicTree trees_[2];
   std::vector<std::int32_t> moveBuffer_;
+  /// During a pair search, per tree node: whether the proxy is queued. Two
+  /// queued proxies that overlap would find each other twice; one of them
+  /// leaves the pair to the other.
+  std::vector<std::uint8_t> queuedNode_[2];
 };
 
 }  // namespace impulse

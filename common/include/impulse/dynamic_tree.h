@@ -25,6 +25,9 @@ class DynamicTree {
   const AABB& box(std::int32_t node) const { return nodes_[node].box; }
   std::int32_t userValue(std::int32_t node) const { return nodes_[node].userValue; }
   /// Whether `node` is in range and a leaf in use.
+  /// Nodes are numbered below this.
+  std::int32_t nodeCapacity() const { return static_cast<std::int32_t>(nodes_.size()); }
+
   bool isLeafNode(std::int32_t node) const {
     return node >= 0 && node < static_cast<std::int32_t>(nodes_.size()) && nodes_[node].height == 0;
   }
