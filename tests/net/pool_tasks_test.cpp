@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "impulse/scenes/stress.h"
+#include "impulse/server/simulation.h"
+#include "impulse/wire/scene_convert.h"
 #include "impulse/world.h"
 
 namespace impulse::server {
@@ -142,6 +144,24 @@ TEST(PoolTasks, PoolSaturatedByAnotherRoom_StepFinishesWithoutItsHelpers) {
   EXPECT_EQ(tasks.helpedRanges(), 0);
   EXPECT_EQ(tasks.peakConcurrency(), 1);
   EXPECT_EQ(world->stateHash(), oneWorkerHash(kRows, kSteps));
+}
+
+TEST(PoolTasks, RoomWorldKeepsItsWorkers_AcrossPresetsScenesAndClear) {
+  asio::thread_pool pool(2);
+  PoolTasks tasks(pool, 2);
+  Simulation simulation({.tasks = tasks.taskSettings()});
+  const auto onThePool = [&] {
+    const TaskSettings now = simulation.world().taskSettings();
+    return now.workerCount == 2 && now.enqueueTask != nullptr && now.userContext == &tasks;
+  };
+  EXPECT_TRUE(onThePool());
+  ASSERT_TRUE(simulation.loadPreset(1, Material::Solid));
+  EXPECT_TRUE(onThePool());
+  ASSERT_TRUE(simulation.loadScene(wire::saveScene(simulation.world())).ok());
+  EXPECT_TRUE(onThePool());
+  simulation.clear();
+  EXPECT_TRUE(onThePool());
+  pool.join();
 }
 
 }  // namespace
