@@ -48,17 +48,22 @@ PoolTasks::PoolTasks(asio::thread_pool& pool, int workersPerTask)
 
 TaskSettings PoolTasks::taskSettings() {
   if (workersPerTask_ == 1) return {};
-  return {.workerCount = workersPerTask_, .enqueueTask = &enqueue, .finishTask = &finish, .userContext = this};
+  return {.workerCount = workersPerTask_,
+          .enqueueTask = &enqueue,
+          .finishTask = &finish,
+          .userContext = this};
 }
 
-void* PoolTasks::enqueue(TaskFunction* function, int itemCount, int minRange, void* taskContext, void* self) {
+void* PoolTasks::enqueue(TaskFunction* function, int itemCount, int minRange, void* taskContext,
+                         void* self) {
   auto& tasks = *static_cast<PoolTasks*>(self);
   const int rangeCount = rangeCountFor(itemCount, minRange, tasks.workersPerTask_);
   if (rangeCount == 1) {
     function(0, itemCount, 0, taskContext);
     return nullptr;
   }
-  auto task = std::make_shared<Task>(function, taskContext, itemCount, rangeCount, tasks.workersPerTask_);
+  auto task =
+      std::make_shared<Task>(function, taskContext, itemCount, rangeCount, tasks.workersPerTask_);
   {
     std::lock_guard lock(tasks.openMutex_);
     tasks.open_.push_back(task);
@@ -91,7 +96,8 @@ void PoolTasks::postHelpers(int wanted) {
 void PoolTasks::help() {
   const auto start = HelperClock::now();
   auto idleSince = start;
-  for (auto now = start; now - idleSince < kHelperIdleWait && now - start < kHelperTurn; now = HelperClock::now()) {
+  for (auto now = start; now - idleSince < kHelperIdleWait && now - start < kHelperTurn;
+       now = HelperClock::now()) {
     int worker = 0;
     std::shared_ptr<Task> task = openCount_.load() > 0 ? joinOpenTask(worker) : nullptr;
     if (!task) {
@@ -118,10 +124,12 @@ std::shared_ptr<PoolTasks::Task> PoolTasks::joinOpenTask(int& worker) {
 
 int PoolTasks::runRanges(Task& task, int worker) {
   const int running = concurrency_.fetch_add(1) + 1;
-  for (int peak = peakConcurrency_.load(); running > peak && !peakConcurrency_.compare_exchange_weak(peak, running);) {
+  for (int peak = peakConcurrency_.load();
+       running > peak && !peakConcurrency_.compare_exchange_weak(peak, running);) {
   }
   int ran = 0;
-  for (int range = task.nextRange.fetch_add(1); range < task.rangeCount; range = task.nextRange.fetch_add(1)) {
+  for (int range = task.nextRange.fetch_add(1); range < task.rangeCount;
+       range = task.nextRange.fetch_add(1)) {
     task.function(task.rangeBegin(range), task.rangeBegin(range + 1), worker, task.context);
     ++ran;
     if (task.doneRanges.fetch_add(1) + 1 == task.rangeCount) task.doneRanges.notify_all();
@@ -132,7 +140,8 @@ int PoolTasks::runRanges(Task& task, int worker) {
 
 void PoolTasks::close(const Task& task) {
   std::lock_guard lock(openMutex_);
-  std::erase_if(open_, [&](const std::shared_ptr<Task>& candidate) { return candidate.get() == &task; });
+  std::erase_if(open_,
+                [&](const std::shared_ptr<Task>& candidate) { return candidate.get() == &task; });
   openCount_.store(int(open_.size()));
 }
 

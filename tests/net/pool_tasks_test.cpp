@@ -53,7 +53,8 @@ std::future<void> stepOn(const Executor& executor, World& world, int steps) {
 
 int processThreads() {
   const std::filesystem::path tasks("/proc/self/task");
-  return int(std::distance(std::filesystem::directory_iterator(tasks), std::filesystem::directory_iterator()));
+  return int(std::distance(std::filesystem::directory_iterator(tasks),
+                           std::filesystem::directory_iterator()));
 }
 
 TEST(PoolTasks, BigWorldStepsOnTwoThreadsOfAnIdlePool_WithTheOneWorkerBits) {

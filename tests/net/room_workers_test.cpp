@@ -25,7 +25,8 @@ TEST(RoomWorkers, TakesAnyCountUpToTheRoomThreads) {
 TEST(RoomWorkers, MoreThanTheRoomThreads_IsRefusedByName) {
   const auto parsed = parse({"--room-workers", "3", "--room-threads", "2"});
   EXPECT_FALSE(parsed.options);
-  EXPECT_EQ(parsed.error, "--room-workers 3 exceeds --room-threads 2: a room works on the stepping threads only");
+  EXPECT_EQ(parsed.error,
+            "--room-workers 3 exceeds --room-threads 2: a room works on the stepping threads only");
 }
 
 TEST(RoomWorkers, OutOfRange_IsRefused) {
