@@ -182,6 +182,15 @@ const std::vector<Flag>& flags() {
        [](ServerOptions& o, std::string_view f, std::string_view v) {
          return intFlag(f, v, 1, 64, o.roomThreads);
        }},
+      {"--room-workers", true,
+       "N  of those, the most one room's step works on at once, 1 to --room-threads "
+       "(default --room-threads)",
+       [](ServerOptions& o, std::string_view f, std::string_view v) {
+         int workers = 0;
+         std::string error = intFlag(f, v, 1, 64, workers);
+         if (error.empty()) o.roomWorkers = workers;
+         return error;
+       }},
   };
   return table;
 }
@@ -224,9 +233,16 @@ ParsedOptions parseOptions(std::span<const std::string_view> args, const ServerO
   if (options.snapshotHz > options.tickHz) {
     return {std::nullopt, false, "--snapshot-hz may not exceed --tick-hz"};
   }
+  if (options.roomWorkers && *options.roomWorkers > options.roomThreads) {
+    return {std::nullopt, false,
+            "--room-workers " + std::to_string(*options.roomWorkers) + " exceeds --room-threads " +
+                std::to_string(options.roomThreads) + ": a room works on the stepping threads only"};
+  }
   if (std::string error = checkAccess(options); !error.empty()) return {std::nullopt, false, error};
   return {options, false, {}};
 }
+
+int workersPerRoom(const ServerOptions& options) { return options.roomWorkers.value_or(options.roomThreads); }
 
 ServerOptions optionsFromEnvironment() {
   ServerOptions options;

@@ -20,7 +20,7 @@ Clock::duration periodOf(double hz) {
 }
 
 SimulationSettings simulationSettings(const ServerOptions& options, const AABB& bounds,
-                                      std::shared_ptr<ServerBodies> serverBodies) {
+                                      std::shared_ptr<ServerBodies> serverBodies, const TaskSettings& tasks) {
   return {.tickHz = options.tickHz,
           .subSteps = options.subSteps,
           .maxBodies = options.maxBodies,
@@ -28,7 +28,8 @@ SimulationSettings simulationSettings(const ServerOptions& options, const AABB& 
           .paused = options.paused,
           .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost},
           .serverBodies = std::move(serverBodies),
-          .bounds = bounds};
+          .bounds = bounds,
+          .tasks = tasks};
 }
 
 double millisecondsSince(Clock::time_point start) {
@@ -37,7 +38,7 @@ double millisecondsSince(Clock::time_point start) {
 
 }  // namespace
 
-Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
+Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers, const TaskSettings& engineWorkers,
            const ServerOptions& options, RoomHost& host, const AABB& bounds)
     : name_(std::move(name)),
       bounds_(bounds),
@@ -46,7 +47,7 @@ Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
       options_(options),
       host_(host),
       timer_(strand_),
-      simulation_(simulationSettings(options, bounds, host.serverBodies())),
+      simulation_(simulationSettings(options, bounds, host.serverBodies(), engineWorkers)),
       snapshots_(simulation_),
       schedule_(periodOf(options.tickHz), Clock::now()),
       tickTimes_(std::size_t(std::ceil(options.tickHz))) {

@@ -40,9 +40,11 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
       sessionLimits_(sessionLimits(options)),
       tokens_{options.token, options.adminToken},
       steppers_(steppers),
+      engineWorkers_(steppers, workersPerRoom(options)),
       serverBodies_(std::make_shared<ServerBodies>(options.maxTotalBodies)) {
   const std::string defaultRoom(kDefaultRoom);
-  rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, options_, *this, WorldSettings{}.bounds);
+  rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, engineWorkers_.taskSettings(), options_,
+                                                *this, WorldSettings{}.bounds);
   const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
@@ -118,7 +120,8 @@ std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello
            " per address, --max-rooms-per-address); join an existing one (ListRooms)";
   }
   auto room =
-      std::make_shared<Room>(name, io_, steppers_, options_, *this, bounds.bounds.value_or(WorldSettings{}.bounds));
+      std::make_shared<Room>(name, io_, steppers_, engineWorkers_.taskSettings(), options_, *this,
+                             bounds.bounds.value_or(WorldSettings{}.bounds));
   rooms_[name] = room;
   roomMaker_[name] = address;
   room->start();

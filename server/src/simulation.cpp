@@ -18,6 +18,7 @@ WorldSettings worldSettings(const SimulationSettings& settings) {
   world.subSteps = settings.subSteps;
   world.maxBodies = settings.maxBodies;
   world.bounds = settings.bounds;
+  world.tasks = settings.tasks;
   return world;
 }
 

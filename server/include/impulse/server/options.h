@@ -58,6 +58,9 @@ struct ServerOptions {
   int maxRoomsPerAddress = 4;
   /// Threads stepping the rooms (each room on one thread at a time).
   int roomThreads = 2;
+  /// Of those, the most one room's step may work on (the engine's workers:
+  /// the room's own thread and idle ones); unset: all of them.
+  std::optional<int> roomWorkers;
   /// The HTTP health probes' port on the bind address (health_endpoint.h);
   /// none without --health-port, 0 picks a free one.
   std::optional<std::uint16_t> healthPort;
@@ -80,6 +83,9 @@ ParsedOptions parseOptions(std::span<const std::string_view> args,
 
 /// Defaults taken from the environment: IMPULSE_TOKEN, IMPULSE_ADMIN_TOKEN.
 ServerOptions optionsFromEnvironment();
+
+/// Stepping threads one room's step may work on (--room-workers).
+int workersPerRoom(const ServerOptions& options);
 
 /// The --help text.
 std::string usage();

@@ -61,7 +61,9 @@ class RoomHost {
 class Room final : public SnapshotSource, public std::enable_shared_from_this<Room> {
  public:
   /// `bounds`: the world's (Hello.room_min, room_max; checked by the server).
-  Room(std::string name, asio::io_context& io, asio::thread_pool& steppers,
+  /// `engineWorkers`: how the world's step gets threads of `steppers`
+  /// beside the room's own (pool_tasks.h).
+  Room(std::string name, asio::io_context& io, asio::thread_pool& steppers, const TaskSettings& engineWorkers,
        const ServerOptions& options, RoomHost& host, const AABB& bounds);
 
   const std::string& name() const { return name_; }

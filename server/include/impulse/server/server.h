@@ -19,6 +19,7 @@
 #include "impulse/server/access.h"
 #include "impulse/server/health_endpoint.h"
 #include "impulse/server/options.h"
+#include "impulse/server/pool_tasks.h"
 #include "impulse/server/room.h"
 #include "impulse/server/session.h"
 #include "impulse/server/tick_schedule.h"
@@ -77,6 +78,8 @@ class Server final : public SessionHost, public RoomHost {
   /// The probes' endpoint, with --health-port.
   std::unique_ptr<HealthEndpoint> health_;
   asio::thread_pool& steppers_;
+  /// Every room's engine workers: threads of steppers_ (--room-workers).
+  PoolTasks engineWorkers_;
   std::shared_ptr<ServerBodies> serverBodies_;
   /// By name. The default room lives as long as the server; any other is
   /// dropped when its last member leaves.

@@ -42,6 +42,8 @@ struct SimulationSettings {
   std::shared_ptr<ServerBodies> serverBodies = nullptr;
   /// Bodies may not be created with a centre outside (WorldSettings::bounds).
   AABB bounds = WorldSettings{}.bounds;
+  /// Worker threads for the world's step (the room's share of the stepping pool).
+  TaskSettings tasks{};
 };
 
 /// Events messages a Simulation keeps for its room between takes.

@@ -1,0 +1,148 @@
+#include "impulse/server/pool_tasks.h"
+
+#include <algorithm>
+#include <asio/post.hpp>
+#include <chrono>
+#include <cstdint>
+#include <thread>
+
+namespace impulse::server {
+
+namespace {
+
+using HelperClock = std::chrono::steady_clock;
+
+// Ranges per worker: more than one, so a thread that started late or was
+// slowed by another process still finds work, and the ranges even out.
+constexpr int kRangesPerWorker = 4;
+// A helper with no open task waits this long for the step's next phase
+// before it gives its thread back: waking a pool thread costs about as much.
+constexpr auto kHelperIdleWait = std::chrono::microseconds(100);
+// A helper gives its thread back after this long, so that another room's
+// tick queued behind it waits no longer: if the step still needs help, its
+// next phase posts a helper that queues behind that tick.
+constexpr auto kHelperTurn = std::chrono::milliseconds(1);
+
+int rangeCountFor(int itemCount, int minRange, int workers) {
+  return std::clamp(itemCount / std::max(minRange, 1), 1, workers * kRangesPerWorker);
+}
+
+}  // namespace
+
+struct PoolTasks::Task {
+  TaskFunction* function;
+  void* context;
+  int itemCount;
+  int rangeCount;
+  int workerCount;
+  std::atomic<int> nextRange = 0;
+  std::atomic<int> doneRanges = 0;
+  // Worker 0 is the thread that enqueued the task.
+  std::atomic<int> nextWorker = 1;
+
+  int rangeBegin(int range) const { return int(std::int64_t(itemCount) * range / rangeCount); }
+};
+
+PoolTasks::PoolTasks(asio::thread_pool& pool, int workersPerTask)
+    : pool_(pool), workersPerTask_(std::clamp(workersPerTask, 1, kMaxWorkers)) {}
+
+TaskSettings PoolTasks::taskSettings() {
+  if (workersPerTask_ == 1) return {};
+  return {.workerCount = workersPerTask_,
+          .enqueueTask = &enqueue,
+          .finishTask = &finish,
+          .userContext = this};
+}
+
+void* PoolTasks::enqueue(TaskFunction* function, int itemCount, int minRange, void* taskContext,
+                         void* self) {
+  auto& tasks = *static_cast<PoolTasks*>(self);
+  const int rangeCount = rangeCountFor(itemCount, minRange, tasks.workersPerTask_);
+  if (rangeCount == 1) {
+    function(0, itemCount, 0, taskContext);
+    return nullptr;
+  }
+  auto task =
+      std::make_shared<Task>(function, taskContext, itemCount, rangeCount, tasks.workersPerTask_);
+  {
+    std::lock_guard lock(tasks.openMutex_);
+    tasks.open_.push_back(task);
+    tasks.openCount_.store(int(tasks.open_.size()));
+  }
+  tasks.postHelpers(std::min(tasks.workersPerTask_, rangeCount) - 1);
+  return task.get();
+}
+
+void PoolTasks::finish(void* handle, void* self) {
+  auto& tasks = *static_cast<PoolTasks*>(self);
+  Task& task = *static_cast<Task*>(handle);
+  // Whatever no helper claimed runs here, so the task ends without them.
+  tasks.runRanges(task, 0);
+  // What is left is running on other threads right now.
+  for (int done = task.doneRanges.load(); done < task.rangeCount; done = task.doneRanges.load()) {
+    task.doneRanges.wait(done);
+  }
+  tasks.close(task);
+}
+
+void PoolTasks::postHelpers(int wanted) {
+  const int missing = wanted - waitingHelpers_.load();
+  for (int i = 0; i < missing; ++i) {
+    ++waitingHelpers_;
+    asio::post(pool_, [this] { help(); });
+  }
+}
+
+void PoolTasks::help() {
+  const auto start = HelperClock::now();
+  auto idleSince = start;
+  for (auto now = start; now - idleSince < kHelperIdleWait && now - start < kHelperTurn;
+       now = HelperClock::now()) {
+    int worker = 0;
+    std::shared_ptr<Task> task = openCount_.load() > 0 ? joinOpenTask(worker) : nullptr;
+    if (!task) {
+      std::this_thread::yield();
+      continue;
+    }
+    --waitingHelpers_;
+    helpedRanges_ += runRanges(*task, worker);
+    ++waitingHelpers_;
+    idleSince = HelperClock::now();
+  }
+  --waitingHelpers_;
+}
+
+std::shared_ptr<PoolTasks::Task> PoolTasks::joinOpenTask(int& worker) {
+  std::lock_guard lock(openMutex_);
+  for (const auto& task : open_) {
+    if (task->nextRange.load() >= task->rangeCount) continue;
+    worker = task->nextWorker.fetch_add(1);
+    if (worker < task->workerCount) return task;
+  }
+  return nullptr;
+}
+
+int PoolTasks::runRanges(Task& task, int worker) {
+  const int running = concurrency_.fetch_add(1) + 1;
+  for (int peak = peakConcurrency_.load();
+       running > peak && !peakConcurrency_.compare_exchange_weak(peak, running);) {
+  }
+  int ran = 0;
+  for (int range = task.nextRange.fetch_add(1); range < task.rangeCount;
+       range = task.nextRange.fetch_add(1)) {
+    task.function(task.rangeBegin(range), task.rangeBegin(range + 1), worker, task.context);
+    ++ran;
+    if (task.doneRanges.fetch_add(1) + 1 == task.rangeCount) task.doneRanges.notify_all();
+  }
+  --concurrency_;
+  return ran;
+}
+
+void PoolTasks::close(const Task& task) {
+  std::lock_guard lock(openMutex_);
+  std::erase_if(open_,
+                [&](const std::shared_ptr<Task>& candidate) { return candidate.get() == &task; });
+  openCount_.store(int(open_.size()));
+}
+
+}  // namespace impulse::server
