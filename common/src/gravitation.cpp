@@ -22,10 +22,10 @@ Pull pullPerUnitG(const PointMass& target, const PointMass& source) {
   const double apart = offset.norm();
   const double distance = std::max(apart, target.reach + source.reach);
   if (distance == 0) return {};
-  const double perCube = source.mass / (distance * distance * distance);
+  const double inverse = 1 / distance, inverseSquare = inverse * inverse;
+  const double perCube = source.mass * inverse * inverseSquare;
   const Vec2d closing = source.velocity - target.velocity;
-  const Vec2d turning =
-      apart < distance ? closing : Vec2d(closing - 3 * offset.dot(closing) / (distance * distance) * offset);
+  const Vec2d turning = apart < distance ? closing : Vec2d(closing - 3 * offset.dot(closing) * inverseSquare * offset);
   return {perCube * offset, perCube * turning};
 }
 
