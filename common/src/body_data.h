@@ -22,6 +22,8 @@ struct Body {
   Vec2 linearVelocity = Vec2::Zero();
   Real angularVelocity = 0;
   Vec2 force = Vec2::Zero();
+  // How fast the fields' part of `force` changes over the step (field.cpp).
+  Vec2 fieldForceChange = Vec2::Zero();
   Real torque = 0;
   Real invMass = 0;
   Real invInertia = 0;

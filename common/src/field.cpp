@@ -1,7 +1,8 @@
 // The field stage: each force field sees the awake dynamic bodies and adds
 // a force and torque (or an impulse) to each for this step. Without fields
 // it does nothing. A body the step's single kick would carry too far off its
-// path (impulse/field.h) gets its loads per sub-step instead, from the solver.
+// path (impulse/field.h) gets its loads per sub-step instead, from the solver;
+// a force that says how fast it changes is carried forward to each sub-step.
 
 #include <algorithm>
 #include <cmath>
@@ -96,8 +97,10 @@ bool isFiniteLoad(const FieldLoad& load) {
 }
 
 void addLoad(Body& body, const FieldLoad& load) {
-  if (!isFiniteLoad(load)) return;
+  body.fieldForceChange.setZero();
+  if (!isFiniteLoad(load) || !isFinite(load.forceChange)) return;
   body.force += load.force;
+  body.fieldForceChange = load.forceChange;
   body.torque += load.torque;
   body.linearVelocity += body.invMass * load.impulse;
   body.angularVelocity += body.invInertia * load.angularImpulse;
@@ -127,37 +130,24 @@ void gatherSubStepSources(WorldData& world) {
 
 void takePerSubStep(WorldData& world, std::int32_t slot) {
   world.bodies[slot].fieldsPerSubStep = true;
+  world.bodies[slot].fieldForceChange.setZero();
   world.subSteppedFieldBodies.push_back(slot);
 }
 
-}  // namespace
-
-void applyFields(WorldData& world, Real dt) {
-  for (std::int32_t slot : world.subSteppedFieldBodies) world.bodies[slot].fieldsPerSubStep = false;
-  world.subSteppedFieldBodies.clear();
-  if (world.fields.empty() || world.awakeBodies.empty()) return;
-  world.fieldStillBodies.clear();
-  if (anyFieldNeedsStillBodies(world)) gatherStillBodies(world);
-  // Every load comes per sub-step: no need to ask for the step's.
-  if (std::ranges::any_of(world.fields, [](const FieldSlot& slot) { return slot.field->everySubStep(); })) {
-    for (std::int32_t slot : world.awakeBodies) takePerSubStep(world, slot);
-    return;
-  }
-  gatherMovingBodies(world);
-  const FieldStep step{world.fieldBodies, world.fieldStillBodies, world.settings.gravity, dt};
-  for (const FieldSlot& slot : world.fields) slot.field->apply(step, world.fieldLoads);
-  for (std::size_t k = 0; k < world.fieldLoads.size(); ++k) {
-    const std::int32_t slot = world.awakeBodies[k];
-    if (needsSubSteps(world.fieldLoads[k], dt)) {
-      takePerSubStep(world, slot);
-    } else {
-      addLoad(world.bodies[slot], world.fieldLoads[k]);
+// Sub-step k starts k h into the step: what the step's force has become by
+// then, beyond the force itself, kicks the body over the sub-step.
+void addForceChanges(WorldData& world, int subStep, Real h) {
+  if (subStep == 0) return;
+  const Real kick = Real(subStep) * h * h;
+  for (std::int32_t slot : world.awakeBodies) {
+    const Body& body = world.bodies[slot];
+    if (body.isDynamic()) {
+      world.solverStates[body.solverIndex].linearVelocity += kick * body.invMass * body.fieldForceChange;
     }
   }
 }
 
-void applySubStepFields(WorldData& world, Real h) {
-  if (world.subSteppedFieldBodies.empty()) return;
+void loadSubSteppedBodies(WorldData& world, Real h) {
   world.fieldBodies.clear();
   world.fieldBodyShapes.clear();
   world.fieldBodyShapes.reserve(std::size_t(world.liveShapes));
@@ -175,6 +165,33 @@ void applySubStepFields(WorldData& world, Real h) {
     const Body& body = world.bodies[world.subSteppedFieldBodies[k]];
     addSubStepLoad(body, world.fieldLoads[k], h, world.solverStates[body.solverIndex]);
   }
+}
+
+}  // namespace
+
+void applyFields(WorldData& world, Real dt) {
+  for (std::int32_t slot : world.subSteppedFieldBodies) world.bodies[slot].fieldsPerSubStep = false;
+  world.subSteppedFieldBodies.clear();
+  if (world.fields.empty() || world.awakeBodies.empty()) return;
+  world.fieldStillBodies.clear();
+  if (anyFieldNeedsStillBodies(world)) gatherStillBodies(world);
+  gatherMovingBodies(world);
+  const FieldStep step{world.fieldBodies, world.fieldStillBodies, world.settings.gravity, dt};
+  for (const FieldSlot& slot : world.fields) slot.field->apply(step, world.fieldLoads);
+  for (std::size_t k = 0; k < world.fieldLoads.size(); ++k) {
+    const std::int32_t slot = world.awakeBodies[k];
+    if (needsSubSteps(world.fieldLoads[k], dt)) {
+      takePerSubStep(world, slot);
+    } else {
+      addLoad(world.bodies[slot], world.fieldLoads[k]);
+    }
+  }
+}
+
+void applySubStepFields(WorldData& world, int subStep, Real h) {
+  if (world.fields.empty()) return;
+  addForceChanges(world, subStep, h);
+  if (!world.subSteppedFieldBodies.empty()) loadSubSteppedBodies(world, h);
 }
 
 }  // namespace impulse

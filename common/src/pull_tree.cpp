@@ -60,14 +60,17 @@ int PullTree::buildCell(Vec2d lower, Vec2d upper, int begin, int end, int depth)
 void PullTree::summarise(Cell& cell) const {
   cell.mass = 0;
   Vec2d weighted = Vec2d::Zero();
+  Vec2d momentum = Vec2d::Zero();
   cell.maxReach = 0;
   for (int k = cell.begin; k < cell.end; ++k) {
     const PointMass& m = masses_[order_[k]];
     cell.mass += m.mass;
     weighted += m.mass * m.position;
+    momentum += m.mass * m.velocity;
     cell.maxReach = std::max(cell.maxReach, m.reach);
   }
   cell.centerOfMass = cell.mass > 0 ? Vec2d(weighted / cell.mass) : Vec2d(0.5 * (cell.lower + cell.upper));
+  cell.velocity = cell.mass > 0 ? Vec2d(momentum / cell.mass) : Vec2d::Zero();
   cell.spread = 0;
   cell.radius = 0;
   for (int k = cell.begin; k < cell.end; ++k) {
@@ -78,8 +81,12 @@ void PullTree::summarise(Cell& cell) const {
   }
 }
 
-Vec2d PullTree::acceleration(std::size_t target, double* bound) const {
-  Vec2d sum = Vec2d::Zero();
+Pull PullTree::pull(std::size_t target, double* bound) const {
+  Pull sum;
+  auto add = [&sum](const Pull& part) {
+    sum.acceleration += part.acceleration;
+    sum.change += part.change;
+  };
   if (cells_.empty()) return sum;
   const PointMass& body = masses_[target];
   stack_.assign(1, 0);
@@ -91,7 +98,7 @@ Vec2d PullTree::acceleration(std::size_t target, double* bound) const {
     const double clearance = distance - cell.radius;
     const bool far = cell.radius < theta_ * distance && clearance > body.reach + cell.maxReach;
     if (far) {
-      sum += pullPerUnitG(body, {cell.centerOfMass, cell.mass, 0});
+      add(pullPerUnitG(body, {cell.centerOfMass, cell.mass, 0, cell.velocity}));
       if (bound) *bound += 3 * cell.spread / std::pow(clearance, 4);
     } else if (!cell.isLeaf()) {
       for (int child : cell.children) {
@@ -99,7 +106,9 @@ Vec2d PullTree::acceleration(std::size_t target, double* bound) const {
       }
     } else {
       for (int k = cell.begin; k < cell.end; ++k) {
-        if (static_cast<std::size_t>(order_[k]) != target) sum += pullPerUnitG(body, masses_[order_[k]]);
+        const std::size_t source = static_cast<std::size_t>(order_[k]);
+        if (source == target) continue;
+        add(pullPerUnitG(body, masses_[source]));
       }
     }
   }

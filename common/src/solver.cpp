@@ -185,7 +185,7 @@ void solve(WorldData& world, Real dt) {
   for (const ConstraintKind* kind : kinds) kind->countPasses(world.profile.passes);
   for (int i = 0; i < step.subSteps; ++i) {
     const SubStep sub{world.solverStates, i, &world.tasks};
-    applySubStepFields(world, h);
+    applySubStepFields(world, i, h);
     integrateVelocities(world, h);
     for (ConstraintKind* kind : kinds) kind->warmStart(sub);
     for (ConstraintKind* kind : kinds) kind->solve(sub);

@@ -159,7 +159,7 @@ struct WorldData {
 void updatePairs(WorldData& world, Real dt);      // contact.cpp: new broad-phase pairs
 void collideContacts(WorldData& world, Real dt);  // contact.cpp: manifolds
 void applyFields(WorldData& world, Real dt);      // field.cpp: field forces
-void applySubStepFields(WorldData& world, Real h);  // field.cpp: per sub-step, where a body needs it
+void applySubStepFields(WorldData& world, int subStep, Real h);  // field.cpp: per sub-step, where a body needs it
 void solve(WorldData& world, Real dt);            // solver.cpp: constraints, integration
 void solveContinuous(WorldData& world, Real dt);  // continuous.cpp: time of impact
 void updateSleep(WorldData& world, Real dt);      // island.cpp: islands, sleeping

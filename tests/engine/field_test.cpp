@@ -56,6 +56,25 @@ class SpringField : public ForceField {
   bool reportsGradient_;
 };
 
+/// A force along x that grows at `change` N/s over the step, counting the
+/// times it is asked.
+class RisingField : public ForceField {
+ public:
+  RisingField(Real force, Real change) : force_(force), change_(change) {}
+  void apply(const FieldStep&, std::span<FieldLoad> loads) const override {
+    ++calls;
+    for (FieldLoad& load : loads) {
+      load.force.x() += force_;
+      load.forceChange.x() += change_;
+    }
+  }
+  mutable int calls = 0;
+
+ private:
+  Real force_;
+  Real change_;
+};
+
 WorldSettings weightless() {
   WorldSettings settings;
   settings.gravity = Vec2::Zero();
@@ -172,6 +191,22 @@ TEST(Field, SteepFieldReportingItsGradient_IsTakenPerSubStep) {
               perSubStep, perStep);
   EXPECT_LT(perSubStep, 0.01);
   EXPECT_GT(perStep, 0.012);
+}
+
+// Sub-step k of length h feels F + C k h: after one step of n sub-steps the
+// velocity is (F dt + C h^2 n (n - 1) / 2) / m, from one call of the field.
+TEST(Field, ChangingForce_IsCarriedForwardToEachSubStep_FromOneCallPerStep) {
+  World world(weightless());
+  BodyId ball = addCircle(world, {.center = Vec2(0, 10), .radius = Real(0.5)});
+  const double mass = kPi * 0.25 * materialProperties(Material::Solid).density;
+  auto field = std::make_shared<RisingField>(Real(3), Real(600));
+  world.addField(field);
+  world.step(kDt);
+  const int n = WorldSettings{}.subSteps;
+  const double h = double(kDt) / n;
+  const double expected = (3 * double(kDt) + 600 * h * h * n * (n - 1) / 2) / mass;
+  EXPECT_EQ(field->calls, 1);
+  EXPECT_NEAR(stateOf(world, ball).linearVelocity.x(), expected, 1e-5 * expected);
 }
 
 }  // namespace

@@ -14,10 +14,12 @@
 /// therefore given no load for the step: every field is asked again at
 /// every sub-step, with the body where the sub-step has it and dt the
 /// sub-step, and its load (impulse plus force times dt) is added to its
-/// velocity then. A field may ask for this for every body (everySubStep:
-/// gravitation); the world then asks every field per sub-step only. A world
-/// without fields pays nothing for the stage, and one whose fields are
-/// uniform or slow (gradient 0 or small) pays one call per field and step.
+/// velocity then. A field that can tell how fast its force changes
+/// (FieldLoad::forceChange: gravitation) reports no gradient instead: the
+/// force it gives for the step is carried forward to each sub-step along
+/// that rate, as if asked there, for one call per step. A world without
+/// fields pays nothing for the stage, and one whose fields are uniform or
+/// slow (gradient 0 or small) pays one call per field and step.
 
 #include <cstdint>
 #include <memory>
@@ -47,6 +49,9 @@ struct FieldBody {
 /// What a field adds to one body for the coming step.
 struct FieldLoad {
   Vec2 force = Vec2::Zero();  ///< spread over the step's sub-steps
+  /// N/s: how fast `force` changes over the step; sub-step k of length h
+  /// feels force + forceChange * k h (0 for a steady force).
+  Vec2 forceChange = Vec2::Zero();
   Real torque = 0;
   Vec2 impulse = Vec2::Zero();  ///< N*s, added to the velocity before the sub-steps
   Real angularImpulse = 0;      ///< N*m*s, added to the spin before the sub-steps
@@ -80,9 +85,6 @@ class ForceField {
   /// True for a field that comes from the bodies themselves and so needs
   /// FieldStep::stillBodies; the others do not pay for gathering them.
   virtual bool needsStillBodies() const { return false; }
-  /// True for a field that wants every body's load at every sub-step,
-  /// whatever the gradients: the world then asks every field so.
-  virtual bool everySubStep() const { return false; }
 };
 
 /// A field made from user numbers, or the reason they were refused (the

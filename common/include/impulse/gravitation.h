@@ -24,14 +24,22 @@ struct PointMass {
   Vec2d position = Vec2d::Zero();
   double mass = 0;
   double reach = 0;
+  Vec2d velocity = Vec2d::Zero();
 };
 
-/// Acceleration at masses[target] from masses[source] per unit G.
-Vec2d pullPerUnitG(const PointMass& target, const PointMass& source);
+/// A body's acceleration and how fast it changes (its time derivative).
+struct Pull {
+  Vec2d acceleration = Vec2d::Zero();
+  Vec2d change = Vec2d::Zero();
+};
 
-/// Exact pairwise sum: accelerations[i] for i < accelerations.size() (the
-/// moving masses come first in `masses`) from every other mass. O(n^2).
-void exactPull(std::span<const PointMass> masses, double constant, std::span<Vec2d> accelerations);
+/// Pull at masses[target] from masses[source] per unit G, its change taken
+/// as both move on at their velocities.
+Pull pullPerUnitG(const PointMass& target, const PointMass& source);
+
+/// Exact pairwise sum: pulls[i] for i < pulls.size() (the moving masses
+/// come first in `masses`) from every other mass. O(n^2).
+void exactPull(std::span<const PointMass> masses, double constant, std::span<Pull> pulls);
 
 /// Barnes-Hut quadtree over point masses. A cell whose masses lie within b
 /// of its centre of mass, seen from distance d, is taken as one mass at its
@@ -39,19 +47,21 @@ void exactPull(std::span<const PointMass> masses, double constant, std::span<Vec
 /// reach). The dipole term then vanishes and Taylor's remainder with the
 /// third derivative of 1/r (norm 6/r^4) bounds the error of that cell's pull
 /// by 3 G sum(m |x - com|^2) / (d - b)^4; a body's error is at most the sum
-/// over the cells taken whole, which acceleration() can report.
+/// over the cells taken whole, which pull() can report.
 class PullTree {
  public:
   explicit PullTree(double theta) : theta_(theta) {}
   void build(std::span<const PointMass> masses);
-  /// Acceleration of masses[target] (per unit G); adds this answer's error
-  /// bound (per unit G) to *bound when given.
-  Vec2d acceleration(std::size_t target, double* bound = nullptr) const;
+  /// Pull on masses[target] (per unit G; a cell taken whole moves at its
+  /// centre of mass's velocity); adds this answer's error bound on the
+  /// acceleration (per unit G) to *bound when given.
+  Pull pull(std::size_t target, double* bound = nullptr) const;
 
  private:
   struct Cell {
     Vec2d lower, upper;
     Vec2d centerOfMass = Vec2d::Zero();
+    Vec2d velocity = Vec2d::Zero();  ///< of the centre of mass
     double mass = 0;
     double spread = 0;       ///< sum of m |x - com|^2
     double radius = 0;       ///< b: no mass further than this from the com
@@ -81,20 +91,14 @@ class Gravitation : public ForceField {
   double constant() const { return constant_; }
   void apply(const FieldStep& step, std::span<FieldLoad> loads) const override;
   bool needsStillBodies() const override { return true; }
-  /// Every sub-step: a pull grows without bound as bodies close in, and a
-  /// body switched between the step's one kick and the sub-steps' as its
-  /// pull changed along an eccentric orbit would shift its energy at every
-  /// switch (16 % over 20 orbits, measured), and a pair taken at different
-  /// times would pull unequally.
-  bool everySubStep() const override { return true; }
 
  private:
-  void accelerations(std::size_t movingCount) const;
+  void pulls(std::size_t movingCount) const;
 
   double constant_;
   // Scratch reused every step (a field serves one world at a time).
   mutable std::vector<PointMass> masses_;
-  mutable std::vector<Vec2d> accelerations_;
+  mutable std::vector<Pull> pulls_;
   mutable PullTree tree_{kTheta};
 };
 
