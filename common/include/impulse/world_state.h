@@ -148,6 +148,9 @@ struct FieldSlotState {
 
 struct WorldState {
   SolverSettingsState settings;
+  /// The world's origin (World::origin); every position below is relative
+  /// to it.
+  Vec2d origin = Vec2d::Zero();
   std::vector<BodySlotState> bodies;
   /// Free slots in the order they are handed out again (last first).
   std::vector<std::int32_t> freeBodies;
