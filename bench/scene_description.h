@@ -138,6 +138,11 @@ struct KinematicTarget {
 
 struct SceneDescription {
   Vec2d gravity{0, -9.81};
+  /// Where an engine with a movable origin centres its world (Impulse:
+  /// World::shiftOrigin), as a user would for a level far from (0, 0);
+  /// positions here stay measured from (0, 0). Engines whose positions are
+  /// plain floats from (0, 0) ignore it.
+  Vec2d origin;
   bool allowSleep = false;
   std::vector<BodyDesc> bodies;
   std::vector<JointDesc> joints;

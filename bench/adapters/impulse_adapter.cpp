@@ -6,7 +6,8 @@
 // distance joints with the described stiffness and damping. A pin's spring,
 // given as Box2D v3 gives it (hertz, damping ratio), becomes the stiffness
 // and damping of the same oscillator on the pair's relative rotational
-// inertia. Chains are World::createChain bodies.
+// inertia. Chains are World::createChain bodies. The world's origin is the
+// scene's (World::shiftOrigin), so positions go in and come out relative to it.
 //
 // Collision filters are Impulse's own (the same rule as Box2D v3's). Bodies
 // described asleep are created asleep (BodyDef::isAwake). Box2D v3's linear damping
@@ -30,6 +31,12 @@ using impulse::Real;
 using impulse::Vec2;
 
 Vec2 toVec(const Vec2d& v) { return Vec2(Real(v.x), Real(v.y)); }
+
+/// A described point from (0, 0), relative to the scene's origin, for
+/// settings made before the world (World::toLocal afterwards).
+Vec2 toLocal(const SceneDescription& scene, const Vec2d& point) {
+  return toVec({point.x - scene.origin.x, point.y - scene.origin.y});
+}
 
 Vec2 rotate(const Vec2& v, Real angle) {
   const Real c = std::cos(angle), s = std::sin(angle);
@@ -74,7 +81,7 @@ impulse::WorldSettings settingsFor(const SceneDescription& scene, int subSteps, 
   // Bounds only gate creation (of bodies and joint anchors): fit them around
   // the scene.
   auto include = [&](const Vec2d& point, double margin) {
-    Vec2 p = toVec(point);
+    Vec2 p = toLocal(scene, point);
     const Vec2 reach = Vec2::Constant(Real(margin));
     settings.bounds = settings.bounds.unite({p - reach, p + reach});
   };
@@ -131,7 +138,8 @@ impulse::BodyOptions optionsFor(const BodyDesc& body) {
   return options;
 }
 
-impulse::BodyDef bodyDefFor(const BodyDesc& body, const impulse::ShapeLimits& limits) {
+impulse::BodyDef bodyDefFor(const SceneDescription& scene, const BodyDesc& body,
+                            const impulse::ShapeLimits& limits) {
   impulse::BodyDef def;
   def.shape = toShape(body.shape, limits);
   def.materialOverride = overrideFor(body, body.shape.friction);
@@ -140,7 +148,7 @@ impulse::BodyDef bodyDefFor(const BodyDesc& body, const impulse::ShapeLimits& li
     def.extraShapes.push_back(
         {toShape(shape, limits), body.material, overrideFor(body, shape.friction), interactionOf(shape)});
   }
-  def.position = toVec(body.position);
+  def.position = toLocal(scene, body.position);
   def.angle = Real(body.angle);
   def.linearVelocity = toVec(body.velocity);
   def.angularVelocity = Real(body.angularVelocity);
@@ -156,6 +164,8 @@ class ImpulseAdapter final : public EngineAdapter {
  public:
   ImpulseAdapter(const SceneDescription& scene, int subSteps, bool sse2Only, int threads)
       : scene_(scene), world_(settingsFor(scene, subSteps, sse2Only, threads)), schedule_(scene) {
+    impulse::InputResult moved = world_.shiftOrigin({scene.origin.x, scene.origin.y});
+    if (!moved.ok()) throw std::runtime_error("impulse: " + moved.error);
     bodies_.reserve(scene.bodies.size());
     spawnDue();
   }
@@ -172,7 +182,8 @@ class ImpulseAdapter final : public EngineAdapter {
     const std::size_t i = static_cast<std::size_t>(index);
     if (i >= bodies_.size()) return describedPose(scene_.bodies[i]);
     impulse::BodyState state = *world_.bodyState(bodies_[i].id);
-    const Vec2 origin = state.position - rotate(bodies_[i].originToCentre, state.angle);
+    const impulse::Vec2d origin =
+        world_.toGlobal(state.position - rotate(bodies_[i].originToCentre, state.angle));
     return {{origin.x(), origin.y()},
             state.angle,
             {state.linearVelocity.x(), state.linearVelocity.y()},
@@ -183,16 +194,16 @@ class ImpulseAdapter final : public EngineAdapter {
   bool hasQueries() const override { return true; }
 
   double castRayClosest(const Vec2d& origin, const Vec2d& translation) override {
-    const impulse::CastResult result = world_.castRayClosest(toVec(origin), toVec(translation));
+    const impulse::CastResult result = world_.castRayClosest(local(origin), toVec(translation));
     return result.hit ? double(result.hit->fraction) : -1;
   }
 
   int castRayCount(const Vec2d& origin, const Vec2d& translation) override {
-    return static_cast<int>(world_.castRay(toVec(origin), toVec(translation)).results.size());
+    return static_cast<int>(world_.castRay(local(origin), toVec(translation)).results.size());
   }
 
   int overlapBoxCount(const Vec2d& lower, const Vec2d& upper) override {
-    return static_cast<int>(world_.overlapAABB({toVec(lower), toVec(upper)}).results.size());
+    return static_cast<int>(world_.overlapAABB({local(lower), local(upper)}).results.size());
   }
 
   std::string passes() const override { return passTotals_.describe(stepCount_); }
@@ -243,25 +254,27 @@ class ImpulseAdapter final : public EngineAdapter {
 
   void create(const BodyDesc& body) {
     impulse::CreateResult created = body.shape.kind == ShapeKind::Chain ? createChain(body)
-                                                                         : world_.createBody(bodyDefFor(body, world_.settings().shapeLimits));
+                                                                         : world_.createBody(bodyDefFor(scene_, body, world_.settings().shapeLimits));
     if (!created.ok()) throw std::runtime_error("impulse: " + created.error);
     const Vec2 centre = world_.bodyState(created.id)->position;
-    bodies_.push_back({created.id, rotate(centre - toVec(body.position), -Real(body.angle))});
+    bodies_.push_back({created.id, rotate(centre - local(body.position), -Real(body.angle))});
   }
 
   impulse::CreateResult createChain(const BodyDesc& body) {
     std::vector<Vec2> points;
-    for (const Vec2d& v : body.shape.vertices) points.push_back(toVec(body.position) + rotate(toVec(v), Real(body.angle)));
+    for (const Vec2d& v : body.shape.vertices) points.push_back(local(body.position) + rotate(toVec(v), Real(body.angle)));
     return world_.createChain(points, body.shape.loop, optionsFor(body));
   }
 
   void steer(const KinematicTarget& target, double dt) {
     const Created& body = bodies_[static_cast<std::size_t>(target.body)];
     const Real angle = world_.bodyState(body.id)->angle;
-    const Vec2 centre = toVec(target.position(stepCount_ * dt)) + rotate(body.originToCentre, angle);
+    const Vec2 centre = local(target.position(stepCount_ * dt)) + rotate(body.originToCentre, angle);
     impulse::InputResult steered = world_.setTargetTransform(body.id, centre, angle, Real(dt));
     if (!steered.ok()) throw std::runtime_error("impulse: " + steered.error);
   }
+
+  Vec2 local(const Vec2d& point) const { return world_.toLocal({point.x, point.y}); }
 
   impulse::BodyId idOf(int index) const {
     return index == kWorldBody ? impulse::BodyId{} : bodies_[static_cast<std::size_t>(index)].id;
@@ -306,8 +319,8 @@ class ImpulseAdapter final : public EngineAdapter {
     impulse::JointDef def;
     def.bodyA = idOf(joint.bodyA);
     def.bodyB = idOf(joint.bodyB);
-    def.anchorA = toVec(joint.anchorA);
-    def.anchorB = toVec(joint.anchorB);
+    def.anchorA = local(joint.anchorA);
+    def.anchorB = local(joint.anchorB);
     def.settings = jointSettings(joint);
     impulse::JointResult created = world_.createJoint(def);
     if (!created.ok()) throw std::runtime_error("impulse: " + created.error);

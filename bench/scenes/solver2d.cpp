@@ -2,7 +2,8 @@
 // d178a56), scene for scene with its sizes, densities, frictions and
 // gravity (10 m/s^2), and Solver2D's defaults elsewhere: density 1,
 // friction 0.6, restitution 0. The "far" scenes are their near twins moved
-// 40-100 km from the origin, built and measured alike.
+// 40-100 km from the origin, built and measured alike, with the world's
+// origin moved out to them (SceneDescription::origin) where an engine can.
 //
 // Left to other families, as they are the same scene: the pyramid
 // (pyramid-20 and -100, stacking.cpp), the friction ramp (friction-ramp, the
@@ -50,8 +51,10 @@ SceneDescription solver2DWorld() {
   return scene;
 }
 
-/// The scene moved by `offset`: every body and every joint anchor.
+/// The scene moved by `offset`: every body and every joint anchor, with the
+/// world's origin put there, as a user building a level that far out would.
 SceneDescription shifted(SceneDescription scene, Vec2d offset) {
+  scene.origin = offset;
   auto move = [&](Vec2d& p) {
     p.x += offset.x;
     p.y += offset.y;

@@ -117,6 +117,10 @@ BroadPhase::State BroadPhase::state() const {
   return {{trees_[0].state(), trees_[1].state()}, moveBuffer_};
 }
 
+void BroadPhase::shift(const Vec2d& offset) {
+  for (DynamicTree& tree : trees_) tree.shift(offset);
+}
+
 bool BroadPhase::restore(const State& state) {
   BroadPhase candidate;
   for (int tree = 0; tree < 2; ++tree) {

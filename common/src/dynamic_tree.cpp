@@ -1,6 +1,7 @@
 #include "impulse/dynamic_tree.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <utility>
@@ -18,6 +19,22 @@ constexpr int kMaxHeightDifference = 2;
 bool heightsBalanced(int a, int b) { return std::abs(a - b) <= kMaxHeightDifference; }
 
 Vec2 center(const AABB& box) { return Real(0.5) * (box.lower + box.upper); }
+
+// value - offset in float, rounded down (towards -inf) or up, never to the
+// nearer float only: a box moved this way still covers what it covered.
+Real shiftedDown(Real value, double offset) {
+  const double exact = double(value) - offset;
+  const Real rounded = Real(exact);
+  return double(rounded) > exact ? std::nextafter(rounded, -std::numeric_limits<Real>::infinity())
+                                 : rounded;
+}
+
+Real shiftedUp(Real value, double offset) {
+  const double exact = double(value) - offset;
+  const Real rounded = Real(exact);
+  return double(rounded) < exact ? std::nextafter(rounded, std::numeric_limits<Real>::infinity())
+                                 : rounded;
+}
 
 // What descending into one child of the node being examined could cost.
 struct ChildCost {
@@ -61,6 +78,15 @@ bool DynamicTree::restore(const State& state) {
   }
   *this = std::move(candidate);
   return true;
+}
+
+void DynamicTree::shift(const Vec2d& offset) {
+  for (Node& node : nodes_) {
+    node.box.lower = Vec2(shiftedDown(node.box.lower.x(), offset.x()),
+                          shiftedDown(node.box.lower.y(), offset.y()));
+    node.box.upper = Vec2(shiftedUp(node.box.upper.x(), offset.x()),
+                          shiftedUp(node.box.upper.y(), offset.y()));
+  }
 }
 
 int DynamicTree::height() const { return root_ == kNull ? 0 : nodes_[root_].height; }

@@ -166,6 +166,12 @@ std::string checkForce(const WorldData& world, BodyId id, const Vec2& force,
   return {};
 }
 
+std::string checkOrigin(const Vec2d& origin) {
+  const double limit = kMaxOriginCoordinate;
+  std::string error = checkRange("origin x (m)", origin.x(), -limit, limit);
+  return error.empty() ? checkRange("origin y (m)", origin.y(), -limit, limit) : error;
+}
+
 std::string checkInsideBounds(const AABB& bounds, const Vec2& p) {
   if (p.x() >= bounds.lower.x() && p.y() >= bounds.lower.y() && p.x() <= bounds.upper.x() &&
       p.y() <= bounds.upper.y()) {

@@ -18,6 +18,9 @@ std::string describeNumber(double value);
 /// names the field and the range.
 std::string checkRange(const std::string& field, double value, double lo, double hi);
 
+/// A world origin: finite and within kMaxOriginCoordinate of (0, 0).
+std::string checkOrigin(const Vec2d& origin);
+
 /// A body's centre where it is created or moved to: inside the bounds.
 std::string checkInsideBounds(const AABB& bounds, const Vec2& position);
 

@@ -347,8 +347,10 @@ bool World::destroyBody(BodyId id) {
 
 void World::clear() {
   WorldSettings settings = impl_->settings;
+  const Vec2d origin = impl_->origin;
   impl_ = std::make_unique<WorldData>();
   impl_->settings = settings;
+  impl_->origin = origin;
   guard_.escaped.clear();
 }
 

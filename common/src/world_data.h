@@ -49,6 +49,8 @@ struct FieldSlot {
 
 struct WorldData {
   WorldSettings settings;
+  /// World::origin: every float position here is relative to it.
+  Vec2d origin = Vec2d::Zero();
   TaskRunner tasks;  ///< runs the step's parallel phases (settings.tasks)
   std::vector<Body> bodies;
   FreeList freeBodies;

@@ -130,6 +130,7 @@ WorldState World::exportState() const {
   const WorldData& w = *impl_;
   WorldState state;
   state.settings = solverSettingsOf(w.settings);
+  state.origin = w.origin;
   for (std::size_t slot = 0; slot < w.bodies.size(); ++slot) {
     state.bodies.push_back(exportBody(w, std::int32_t(slot)));
   }

@@ -230,7 +230,11 @@ class StateImport {
   std::unique_ptr<WorldData> take() { return std::move(next_); }
 
  private:
-  std::string settings() { return applySolverSettings(state_.settings, next_->settings); }
+  std::string settings() {
+    if (std::string error = checkOrigin(state_.origin); !error.empty()) return error;
+    next_->origin = state_.origin;
+    return applySolverSettings(state_.settings, next_->settings);
+  }
 
   // Each field made again from its numbers (so checked as AddField checks
   // them), under its own id.

@@ -185,5 +185,30 @@ TEST(Solver2D, Chain_NoPinOpensOverTwoCentimetres) {
   EXPECT_LT(runInImpulse("s2d-chain")["pin gap m"], 0.02);
 }
 
+// ---- the far scenes ---------------------------------------------------------
+
+// Built 40-100 km out with the world's origin moved there, each far scene
+// shows its near twin's figures: every one within 10 % (and 1 micrometre or
+// micrometre per second, for a figure of nearly nothing).
+void expectFarMatchesNear(const std::string& near, const std::string& far) {
+  const Figures nearFigures = runInImpulse("s2d-" + near);
+  const Figures farFigures = runInImpulse("s2d-" + far);
+  ASSERT_EQ(nearFigures.metrics.size(), farFigures.metrics.size());
+  for (const Metric& metric : nearFigures.metrics) {
+    EXPECT_NEAR(farFigures[metric.name], metric.value, 0.1 * std::abs(metric.value) + 1e-6)
+        << far << ": " << metric.name;
+  }
+}
+
+TEST(Solver2D, FarPyramid_ShowsItsNearTwinsFigures) { expectFarMatchesNear("loose-pyramid", "far-pyramid"); }
+TEST(Solver2D, FarStack_ShowsItsNearTwinsFigures) { expectFarMatchesNear("stack", "far-stack"); }
+TEST(Solver2D, FarRecovery_ShowsItsNearTwinsFigures) {
+  expectFarMatchesNear("overlap-recovery", "far-recovery");
+}
+TEST(Solver2D, FarRagdollPile_ShowsItsNearTwinsFigures) {
+  expectFarMatchesNear("ragdoll-pile", "far-ragdoll-pile");
+}
+TEST(Solver2D, FarChain_ShowsItsNearTwinsFigures) { expectFarMatchesNear("chain", "far-chain"); }
+
 }  // namespace
 }  // namespace bench

@@ -7,6 +7,9 @@
 #include <limits>
 #include <vector>
 
+#include "impulse/wire/scene_convert.h"
+#include "impulse/world.h"
+
 namespace impulse::wire {
 namespace {
 
@@ -228,6 +231,29 @@ TEST(Convert, JointDefFromWireNamesTheBadField) {
   EXPECT_EQ(jointUpdateFromWire(update).error, "update_joint.target.x is not a finite number");
   update.clear_target();
   EXPECT_FALSE(jointUpdateFromWire(update).value->motorSpeed.has_value());
+}
+
+// A saved scene carries the world's origin; one saved before origins (no
+// field) loads at (0, 0) with every position as saved.
+TEST(Convert, SceneCarriesTheWorldOrigin_OneWithoutLoadsAtZero) {
+  World original;
+  ASSERT_TRUE(original.shiftOrigin(Vec2d(100000, -80000)).ok());
+  ASSERT_TRUE(original.createCircle(Vec2(1, 2), Real(0.5)).ok());
+  original.step(Real(1) / 60);
+  const std::string bytes = saveScene(original);
+
+  World loaded;
+  ASSERT_TRUE(loadScene(loaded, bytes).ok());
+  EXPECT_EQ(loaded.origin(), original.origin());
+  EXPECT_EQ(loaded.stateHash(), original.stateHash());
+
+  v1::Scene withoutOrigin;
+  ASSERT_TRUE(withoutOrigin.ParseFromString(bytes));
+  withoutOrigin.clear_origin();
+  World old;
+  ASSERT_TRUE(loadScene(old, withoutOrigin.SerializeAsString()).ok());
+  EXPECT_EQ(old.origin(), Vec2d::Zero());
+  EXPECT_EQ(old.stateHash(), original.stateHash());
 }
 
 }  // namespace

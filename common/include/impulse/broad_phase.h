@@ -111,6 +111,8 @@ class BroadPhase {
   /// invalid or a queued key names no leaf. The caller checks that the
   /// leaves' user values are its own.
   bool restore(const State& state);
+  /// Moves both trees by -offset (the world's origin moved by offset).
+  void shift(const Vec2d& offset);
   /// The user value of the leaf a key names, or -1 when it names none.
   std::int32_t leafUserValue(std::int32_t proxyKey) const;
 

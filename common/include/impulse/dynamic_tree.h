@@ -80,6 +80,10 @@ class DynamicTree {
   /// Replaces the tree with a saved one; false (tree unchanged) when it is
   /// not a valid tree (isValid) or a leaf's box is not finite.
   bool restore(const State& state);
+  /// Moves every box by -offset (the world's origin moved by offset),
+  /// rounded outwards so a parent still holds its children and a box still
+  /// holds what it held.
+  void shift(const Vec2d& offset);
 
   int height() const;
   int leafCount() const { return leafCount_; }

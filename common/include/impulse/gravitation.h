@@ -15,8 +15,6 @@
 
 namespace impulse {
 
-using Vec2d = Eigen::Vector2d;
-
 /// A body as gravitation sees it. Two masses closer than the sum of their
 /// reaches (their extents) pull as if they were that far apart: overlapping
 /// bodies get a bounded pull, bodies apart get Newton's.

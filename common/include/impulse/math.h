@@ -12,9 +12,13 @@ namespace impulse {
 /// sub-step (the step is bandwidth-bound on large scenes) and Vector2f needs no
 /// special alignment. Determinism comes from fixed operation order and no
 /// fast-math, not from the width. The wire carries doubles; conversion happens
-/// at the protocol boundary.
+/// at the protocol boundary. A world far from (0, 0) keeps its floats small
+/// by moving its origin (World::shiftOrigin): positions are relative to it.
 using Real = float;
 using Vec2 = Eigen::Matrix<Real, 2, 1>;
+/// Double precision, where float would lose what matters: a world's origin
+/// and positions given relative to no origin, sums of long series.
+using Vec2d = Eigen::Vector2d;
 
 inline Real cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 /// cross(w, v) for a scalar angular velocity w: the velocity w x v of a point.

@@ -35,6 +35,10 @@ inline const Vec2 kDefaultGravity = Vec2(0, Real(-9.81));
 /// every width gives bit-identical results.
 enum class SimdWidth : std::uint8_t { Best, Sse2, Avx2 };
 
+/// How far from (0, 0) a world's origin may be put, in metres on each axis:
+/// a double resolves better than a micrometre there.
+inline constexpr double kMaxOriginCoordinate = 1e9;
+
 /// Solver and world parameters. The benchmark sweeps them.
 struct WorldSettings {
   Vec2 gravity = kDefaultGravity;
@@ -65,7 +69,8 @@ struct WorldSettings {
   bool enableContinuous = true;
   /// Touches that close faster than this (m/s) are hits (ContactHitEvent).
   Real hitEventThreshold = 1;
-  /// Bodies may not be created with a centre outside these bounds.
+  /// Bodies may not be created with a centre outside these bounds, relative
+  /// to the world's origin (they move with it, World::shiftOrigin).
   AABB bounds{Vec2(-25, -25), Vec2(50, 45)};
   /// Hard cap on live bodies (the server lowers it).
   int maxBodies = 200000;
@@ -330,6 +335,29 @@ class World {
   const StepEvents& events() const;
   /// What the step guard did (repairs and clamps since creation).
   const StepGuardReport& guardReport() const;
+
+  /// The large-world origin. Every position the world takes or gives as a
+  /// float (bodies, shapes, joint anchors, mouse targets, fields, queries,
+  /// contact points, events, the bounds) is relative to it; near it a float
+  /// resolves micrometres however far it is from (0, 0). It starts at (0, 0).
+  Vec2d origin() const;
+  /// Moves the origin to `origin` (metres from (0, 0), in double): every
+  /// body, joint anchor held by the world, mouse target, contact point,
+  /// field of a built-in kind and broad-phase box is moved by the
+  /// difference, so nothing moves in the world itself (to float rounding of
+  /// each position at its new place). Call it when the action has moved far
+  /// from the origin, between steps. The bounds stay where they are relative
+  /// to the origin. Fields of a kind of one's own are not moved (they see
+  /// positions relative to the origin). Refused, with the reason and nothing
+  /// changed: an origin not finite or past kMaxOriginCoordinate, a body
+  /// whose centre would lie further outside the bounds than the escape
+  /// margin (the step would remove it), a field that could not be made at
+  /// its new place.
+  InputResult shiftOrigin(const Vec2d& origin);
+  /// A point given from (0, 0), as a position relative to the origin.
+  Vec2 toLocal(const Vec2d& point) const;
+  /// A position relative to the origin, as a point from (0, 0).
+  Vec2d toGlobal(const Vec2& position) const;
 
   const WorldSettings& settings() const;
   /// Changes solver parameters between steps (gravity and bounds included).

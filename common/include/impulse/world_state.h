@@ -8,7 +8,7 @@
 /// cached frames, each body's edge lists in their order (they decide the
 /// order contacts are gathered, coloured and solved in), the awake list in
 /// its order, both broad-phase trees node by node with the queue of moved
-/// proxies, the solver settings, the step count and the time.
+/// proxies, the solver settings, the step count, the time and the origin.
 /// World::importState() of that state steps on bit-identically (same build).
 ///
 /// Left out, because they do not change what later steps compute: the step's
@@ -148,6 +148,9 @@ struct FieldSlotState {
 
 struct WorldState {
   SolverSettingsState settings;
+  /// The world's origin (World::origin); every position below is relative
+  /// to it.
+  Vec2d origin = Vec2d::Zero();
   std::vector<BodySlotState> bodies;
   /// Free slots in the order they are handed out again (last first).
   std::vector<std::int32_t> freeBodies;

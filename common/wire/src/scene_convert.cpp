@@ -447,6 +447,8 @@ void toWire(const WorldState& state, v1::Scene* out) {
   putSlots(state.awakeBodies, out->mutable_awake_bodies());
   out->set_step_count(state.stepCount);
   out->set_time(state.time);
+  out->mutable_origin()->set_x(state.origin.x());
+  out->mutable_origin()->set_y(state.origin.y());
 }
 
 std::string saveScene(const World& world) {
@@ -509,6 +511,7 @@ Decoded<WorldState> stateFromWire(const v1::Scene& scene) {
   state.awakeBodies.assign(scene.awake_bodies().begin(), scene.awake_bodies().end());
   state.stepCount = scene.step_count();
   state.time = scene.time();
+  state.origin = Vec2d(scene.origin().x(), scene.origin().y());
   return Result::success(std::move(state));
 }
 
