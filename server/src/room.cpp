@@ -154,6 +154,7 @@ void Room::leave(Session& session) {
     subscribeEvents(client, false);
     commands_.dropClient(client);
     stamped_.dropClient(client);
+    snapshots_.forgetClient(client);
     std::erase_if(steps_, [&](const StepJob& job) { return job.client() == client; });
   });
 }
@@ -413,6 +414,7 @@ void Room::applyDueCommands() {
 void Room::applyQueued(QueuedCommand& queued, bool admin) {
   const auto& message = queued.message;
   const std::uint32_t client = queued.client;
+  if (message.has_for_tick()) snapshots_.stampProcessed(client, message.request_id());
   if (!admin) {
     if (std::string error = ownership_.playerRefusal(message, client); !error.empty()) {
       return reply(client, refusal(message, error, simulation_.tick()), queued.bytes);
