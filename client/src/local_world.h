@@ -40,7 +40,8 @@ class LocalWorld {
   bool apply(const v1::ClientMessage& message, Real dt);
   /// Whether apply() predicts this kind of command.
   static bool predictsKind(const v1::ClientMessage& message);
-  /// The server's body ids the command names (nothing for a spawn).
+  /// The server's id of the body the command names (nothing for a spawn
+  /// and for commands naming a joint).
   static std::optional<std::uint32_t> namedBody(const v1::ClientMessage& message);
 
   World& world() { return world_; }

@@ -77,9 +77,21 @@ std::uint64_t Predictor::send(v1::ClientMessage message) {
   message.set_for_tick(tick_);
   const std::uint64_t id = client_.send(message);
   if (LocalWorld::predictsKind(message)) local_->apply(message, dt_);
-  if (const auto named = LocalWorld::namedBody(message)) touched_[*named] = tick_;
+  if (const auto named = bodyNamedBy(message)) touched_[*named] = tick_;
   pending_.push_back({id, tick_, std::move(message)});
   return id;
+}
+
+std::optional<std::uint32_t> Predictor::bodyNamedBy(const v1::ClientMessage& message) const {
+  if (const auto body = LocalWorld::namedBody(message)) return body;
+  // A joint moved or removed: its body (a mouse joint's, the one dragged).
+  const std::uint32_t joint = message.has_update_joint()   ? message.update_joint().joint_id()
+                              : message.has_remove_joint() ? message.remove_joint().joint_id()
+                                                           : 0;
+  const auto& joints = client_.mirror().joints();
+  const auto found = joints.find(joint);
+  if (found == joints.end()) return std::nullopt;
+  return found->second.bodyA.value;
 }
 
 void Predictor::advance() {

@@ -234,5 +234,46 @@ TEST(Prediction, DragAndThrowCorrectionsStaySmall) {
   EXPECT_LE(largestShown, predictor.largestCorrection()) << "blending never shows more than the correction";
 }
 
+// Another player's push reaches the predicting client only through a
+// snapshot: the replay then moves the box it threw, and the jump is shown as
+// an offset that shrinks by blendPerTick each frame instead of at once.
+TEST(Prediction, AnotherPlayersPushIsCorrectedSmoothly) {
+  ServerProcess server(predictionRates());
+  Client client(slowLink(server.port(), "thrower"));
+  Client other(localClient(server.port(), "pusher", false));
+  const DragScene scene = makeDragScene(client);
+  ASSERT_TRUE(result(client.request(client::removeJoint(scene.joint))).ok());
+  const client::PredictionOptions options{.leadTicks = kLeadTicks, .blendPerTick = 0.2};
+  Predictor predictor(client, options);
+  FrameLoop loop(client, &predictor);
+  for (int i = 0; i < 10; ++i) loop.run();
+  // Up at 6 m/s: a second in the air.
+  predictor.send(client::setVelocity(scene.box, {0, 6}));
+  for (int i = 0; i < 20; ++i) loop.run();
+  ASSERT_LT(predictor.largestCorrection(), 1e-4) << "alone, the copy steps as the server does";
+
+  // 3 m/s sideways for the 700 kg box, which the copy hears of a round trip
+  // and the lead later.
+  ASSERT_TRUE(result(other.request(client::applyImpulse(scene.box, {2100, 0}))).ok());
+  int frames = 0;
+  while (predictor.lastCorrection() < 0.01) {
+    loop.run();
+    ASSERT_LT(++frames, 120) << "the push never reached the predicting client";
+  }
+  double shown = predictor.shownCorrection();
+  const double correction = predictor.lastCorrection();
+  std::cout << "[ figures  ] another player's push: correction " << correction << " m, shown "
+            << shown << " m after " << frames << " frames\n";
+  EXPECT_GT(correction, 0.05) << "the copy learned of the push a round trip late";
+  EXPECT_LE(shown, correction + 1e-6);
+  // No new surprise follows: each frame shows 0.8 of the offset before.
+  for (int i = 0; i < 5; ++i) {
+    loop.run();
+    const double next = predictor.shownCorrection();
+    EXPECT_NEAR(next, shown * (1 - options.blendPerTick), 0.01 * shown + 1e-4) << "frame " << i;
+    shown = next;
+  }
+}
+
 }  // namespace
 }  // namespace impulse::net_test

@@ -106,6 +106,8 @@ class Predictor {
     Real angle = 0;
   };
 
+  /// The body (server id) a command acts on: named, or its joint's body A.
+  std::optional<std::uint32_t> bodyNamedBy(const v1::ClientMessage& message) const;
   /// Goes back to the snapshot's tick and replays up to the predicted tick.
   void takeSnapshot(const v1::Snapshot& snapshot);
   /// Forgets the commands the snapshot holds.
