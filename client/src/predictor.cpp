@@ -82,6 +82,8 @@ std::uint64_t Predictor::send(v1::ClientMessage message) {
   return id;
 }
 
+bool Predictor::predicts(const v1::ClientMessage& message) { return LocalWorld::predictsKind(message); }
+
 std::optional<std::uint32_t> Predictor::bodyNamedBy(const v1::ClientMessage& message) const {
   if (const auto body = LocalWorld::namedBody(message)) return body;
   // A joint moved or removed: its body (a mouse joint's, the one dragged).

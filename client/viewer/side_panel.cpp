@@ -230,11 +230,17 @@ void sameLineIfFits(float width) {
   if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
 }
 
+PixelRect lastItemRect() {
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  return {min.x, min.y, max.x - min.x, max.y - min.y};
+}
+
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
                    const PanelInput& input, const PanelActions& actions, PanelState& state) {
   const auto& act = actions.key;
   state.presetEntries.clear();
   state.stopButton.reset();
+  state.predictBox.reset();
   state.poseFields.reset();
   state.typeButtons = {};
   state.flagBoxes = {};
@@ -257,7 +263,7 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   }
   drawControlsSection(controls, act);
   if (ImGui::CollapsingHeader("Server and viewer", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawStatsSection(input);
+    drawStatsSection(input, actions, state);
   }
   if (ImGui::CollapsingHeader("Debug overlays", ImGuiTreeNodeFlags_DefaultOpen)) {
     drawOverlayToggles(controls, input);

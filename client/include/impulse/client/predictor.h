@@ -67,6 +67,9 @@ class Predictor {
   /// polygon spawns, joints made, moved, removed), applies it at once.
   /// Returns the request id (the reply comes as for Client::send).
   std::uint64_t send(v1::ClientMessage message);
+  /// Whether send() applies this kind of command to the copy at once (the
+  /// others are only sent stamped: a caller may send those unstamped).
+  static bool predicts(const v1::ClientMessage& message);
   /// One tick of the caller's clock (Welcome.tick_hz): takes the newest
   /// snapshot the client applied, when there is one, then steps the copy.
   /// A copy running too far ahead of the snapshots waits a tick instead.
