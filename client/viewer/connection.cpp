@@ -108,7 +108,6 @@ void Connection::update() {
   try {
     receive();
     pingIfDue();
-    runPredictor();
   } catch (const client::ConnectionError& error) {
     lose(error.what());
   }
@@ -153,7 +152,7 @@ void Connection::setPredicting(bool wanted) {
   if (!wanted) predictor_.reset();
 }
 
-void Connection::runPredictor() {
+void Connection::advancePrediction() {
   if (!predicting_ || !client_) return;
   const v1::Welcome& welcome = client_->welcome();
   if (!predictor_) {

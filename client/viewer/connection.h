@@ -72,6 +72,10 @@ class Connection {
   /// measured (its lead covers it); off drops it.
   void setPredicting(bool wanted);
   bool predicting() const { return predicting_; }
+  /// Once per frame, after the frame's commands were sent (so they show in
+  /// it): starts the predictor when wanted and possible, then steps it by
+  /// the room's ticks since the last frame.
+  void advancePrediction();
   /// The running predictor, or null (off, not connected, no round trip yet).
   const client::Predictor* predictor() const { return predictor_.get(); }
 
@@ -81,9 +85,6 @@ class Connection {
   void lose(const std::string& reason);
   void receive();
   void pingIfDue();
-  /// Starts the predictor when wanted and possible; then steps it by the
-  /// room's ticks since the last frame.
-  void runPredictor();
 
   client::ConnectOptions options_;
   InterpolatedWorld& world_;

@@ -126,7 +126,7 @@ void sameLineIfFits(float width);
 void drawScenePicker(const PanelInput& input, const PanelActions& actions, PanelState& state);
 void drawInspectorSection(const Controls& controls, const PanelInput& input,
                           const PanelActions& actions, PanelState& state);
-void drawStatsSection(const PanelInput& input, const PanelActions& actions, PanelState& state);
+void drawStatsSection(const PanelInput& input);
 void drawControlsTable();
 
 }  // namespace impulse::viewer

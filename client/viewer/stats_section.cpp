@@ -19,7 +19,7 @@ void plot(const char* label, const History& history, const std::string& caption)
 
 }  // namespace
 
-void drawStatsSection(const PanelInput& input, const PanelActions& actions, PanelState& state) {
+void drawStatsSection(const PanelInput& input) {
   if (const v1::ServerStats* stats = input.stats) {
     ImGui::TextWrapped("step %s ms (mean %s), tick %s ms",
                        formatNumber(stats->last_step_ms(), 3).c_str(),
@@ -39,17 +39,6 @@ void drawStatsSection(const PanelInput& input, const PanelActions& actions, Pane
   ImGui::TextWrapped("%s", figures.c_str());
   ImGui::TextWrapped("delay %s ms, zoom %sx", formatNumber(input.playoutDelayMs, 0).c_str(),
                      formatNumber(input.zoom, 2).c_str());
-  bool predicting = input.predicting;
-  if (ImGui::Checkbox("Predict my actions", &predicting)) actions.setPredicting(predicting);
-  if (ImGui::IsItemVisible()) state.predictBox = lastItemRect();
-  if (input.prediction) {
-    // What the viewer is correcting: the distance still blended in on its
-    // own bodies, and the largest a snapshot brought.
-    ImGui::TextWrapped("predicting %s ticks ahead, correcting %s m (largest %s m)",
-                       std::to_string(input.prediction->leadTicks).c_str(),
-                       formatNumber(input.prediction->shownCorrection, 3).c_str(),
-                       formatNumber(input.prediction->largestCorrection, 3).c_str());
-  }
   if (input.stepMs != nullptr) {
     plot("##step", *input.stepMs,
          "step time, ms (last " + formatNumber(input.stepMs->latest(), 3) + ")");
