@@ -47,7 +47,10 @@ std::optional<std::pair<std::string, std::uint16_t>> parseHostPort(std::string_v
 
 Client::Client(const ConnectOptions& options)
     : socket_(io_), reader_(options.maxFrameBytes), oneWayDelay_(options.addedRoundTrip / 2) {
-  if (options.addedRoundTrip.count() < 0) throw ConnectionError("addedRoundTrip may not be negative");
+  if (options.addedRoundTrip.count() < 0) {
+    throw ConnectionError("ConnectOptions::addedRoundTrip " + std::to_string(options.addedRoundTrip.count()) +
+                          " ms is negative");
+  }
   const auto deadline = SteadyClock::now() + options.timeout;
   asio::error_code ec;
   asio::ip::tcp::resolver resolver(io_);

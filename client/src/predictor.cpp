@@ -30,8 +30,9 @@ std::string outside(std::string_view field, double value, std::string_view range
   return "PredictionOptions::" + std::string(field) + " " + formatNumber(value) + " is outside " + std::string(range);
 }
 
-/// Refuses a client without snapshots and options out of range, naming them.
-void validate(const Client& client, const PredictionOptions& options) {
+/// The client, once it takes snapshots and the options are in range;
+/// std::invalid_argument naming what is not.
+Client& validated(Client& client, const PredictionOptions& options) {
   if (client.mirror().snapshotsApplied() == 0) {
     throw std::invalid_argument("Predictor: the client takes no snapshots (ConnectOptions::wantSnapshots)");
   }
@@ -49,6 +50,7 @@ void validate(const Client& client, const PredictionOptions& options) {
   if (options.subSteps < 1 || options.subSteps > 64) {
     throw std::invalid_argument(outside("subSteps", options.subSteps, "1..64"));
   }
+  return client;
 }
 
 /// The angle in (-pi, pi]: a turn through the shorter way.
@@ -59,7 +61,7 @@ Real wrapAngle(Real angle) {
 }  // namespace
 
 Predictor::Predictor(Client& client, const PredictionOptions& options)
-    : client_((validate(client, options), client)),
+    : client_(validated(client, options)),
       options_(options),
       dt_(Real(1.0 / client.welcome().tick_hz())),
       local_(std::make_unique<LocalWorld>(settingsOf(client.welcome(), options))) {

@@ -136,6 +136,15 @@ TEST(Prediction, BadOptionsAndClientsWithoutSnapshotsAreRefusedByName) {
   EXPECT_TRUE(mentions(refusal(watcher, {.blendPerTick = NAN}), "blendPerTick nan"));
   EXPECT_TRUE(mentions(refusal(watcher, {.snapDistance = -1}), "snapDistance -1"));
   EXPECT_EQ(refusal(watcher, {}), "accepted");
+
+  auto negative = localClient(server.port(), "negative");
+  negative.addedRoundTrip = milliseconds(-1);
+  try {
+    Client client(negative);
+    ADD_FAILURE() << "a negative added round trip was accepted";
+  } catch (const client::ConnectionError& error) {
+    EXPECT_TRUE(mentions(error.what(), "ConnectOptions::addedRoundTrip -1 ms is negative")) << error.what();
+  }
 }
 
 TEST(Prediction, AddedRoundTripDelaysARequestByIt) {

@@ -56,7 +56,8 @@ struct ConnectOptions {
   std::optional<Box> roomBounds;
   /// Added round trip (tests, trying a game over a slow link on loopback):
   /// every frame sent leaves half of it later, every frame received is
-  /// handled half of it later; 0: none.
+  /// handled half of it later; 0: none. Delayed frames go out during the
+  /// client's own calls (poll, awaitReply, ...), as everything it does.
   std::chrono::milliseconds addedRoundTrip{0};
 };
 
