@@ -76,6 +76,9 @@ Predictor::Predictor(Client& client, const PredictionOptions& options)
 Predictor::~Predictor() = default;
 
 std::uint64_t Predictor::send(v1::ClientMessage message) {
+  // A paused room never reaches a stamped tick: the command goes unstamped,
+  // applied at once, and shows with the snapshot it changes.
+  if (client_.mirror().paused()) return client_.send(std::move(message));
   message.set_for_tick(tick_);
   const std::uint64_t id = client_.send(message);
   if (LocalWorld::predictsKind(message)) local_->apply(message, dt_);
@@ -131,7 +134,7 @@ void Predictor::takeSnapshot(const v1::Snapshot& snapshot) {
   // jumps ahead; stamps never go back, so one ahead keeps its tick.
   constexpr std::uint64_t kLagAllowed = 2;
   const std::uint64_t wanted = tick + options_.leadTicks;
-  if (tick_ + kLagAllowed < wanted) tick_ = wanted;
+  if (tick_ + kLagAllowed < wanted || tick_ < tick) tick_ = wanted;
   rewindTo(tick);
   replayFrom(tick);
   blendCorrections(before);

@@ -65,6 +65,7 @@ class Predictor {
   /// Sends `message` stamped for the predicted tick and, for a kind the
   /// copy predicts (pushes, velocities, target transforms, circle and
   /// polygon spawns, joints made, moved, removed), applies it at once.
+  /// While the room is paused the command goes unstamped and unpredicted.
   /// Returns the request id (the reply comes as for Client::send).
   std::uint64_t send(v1::ClientMessage message);
   /// Whether send() applies this kind of command to the copy at once (the
