@@ -33,6 +33,10 @@ constexpr std::array kLanguageWords{
                "keep the id in COMMAND's reply (body, joint or field); $NAME = NUMBER, or A OP B "
                "with OP one of + - * /, keeps a number; $NAME then stands for it wherever a "
                "number goes (density=$NAME too)"},
+    ScriptWord{"at", "at TICK COMMAND | at +N COMMAND",
+               "send COMMAND stamped for the room's tick TICK (for_tick), or N ticks after the "
+               "room's tick as the client last saw it; the server applies it at that tick "
+               "(docs/networked-play.md)"},
     ScriptWord{"repeat", "repeat N [$I] { ... }",
                "run the lines up to the matching } (a line of its own) N times; $I counts the "
                "passes, 1 to N"},
@@ -79,8 +83,35 @@ ParsedLine parseLocalWord(const LocalWord& row, Arguments& arguments) {
   return {ScriptCommand{std::string(row.text.word), row.kind, {}}};
 }
 
+ParsedLine parseWords(std::vector<std::string_view> words);
+
+// `at TICK COMMAND ...` and `at +N COMMAND ...`: the command, stamped.
+ParsedLine parseStamped(std::vector<std::string_view> words) {
+  constexpr std::string_view kUsage = "at TICK COMMAND | at +N COMMAND";
+  if (words.size() < 3) return refused(kUsage, "expected a tick and a command after at");
+  const std::string_view tick = words[1];
+  const bool relative = tick.starts_with('+');
+  const auto value = wire::parseNumber<std::uint64_t>(relative ? tick.substr(1) : tick);
+  if (!value) {
+    return refused(kUsage, quoted(tick, " is not a tick (a whole number, 0 or more) nor +N (ticks ahead)"));
+  }
+  ParsedLine parsed = parseWords({words.begin() + 2, words.end()});
+  if (!parsed.command) return parsed;
+  if (parsed.command->kind != ScriptCommand::Kind::Server) {
+    return refused(kUsage, quoted(words[2], " is answered by the client itself: only commands sent to the "
+                                            "server can be stamped"));
+  }
+  if (relative) {
+    parsed.command->ticksAhead = *value;
+  } else {
+    parsed.command->message.set_for_tick(*value);
+  }
+  return parsed;
+}
+
 ParsedLine parseWords(std::vector<std::string_view> words) {
   const std::string_view name = words.front();
+  if (name == "at") return parseStamped(std::move(words));
   Arguments arguments(std::move(words));
   for (const ProtocolWord& row : protocolWords()) {
     if (row.text.word == name) return parseProtocolWord(row, arguments);

@@ -6,6 +6,7 @@
 // tests/net/command_table_test.cpp holds README.md and docs/server.md to it.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,6 +31,9 @@ struct ScriptCommand {
   /// `save`: where the reply's scene goes; `load`: the scene file, read
   /// when the line runs (after the lines before it, which may write it).
   std::string file{};
+  /// `at +N COMMAND`: sent stamped N ticks after the room's tick as the
+  /// client last saw it (`at TICK` stamps the message itself).
+  std::optional<std::uint64_t> ticksAhead{};
 };
 
 struct ParsedLine {

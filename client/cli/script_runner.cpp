@@ -197,6 +197,10 @@ void ScriptRunner::runCommand(const SourceLine& line, const std::string& variabl
   }
 }
 
+std::uint64_t ScriptRunner::lastSeenTick() const {
+  return client_.mirror().snapshotsApplied() > 0 ? client_.mirror().tick() : client_.welcome().tick();
+}
+
 void ScriptRunner::runServerCommand(const SourceLine& line, const std::string& variable,
                                     ScriptCommand command) {
   const std::uint32_t maxTicks = client_.welcome().max_step_ticks();
@@ -205,6 +209,7 @@ void ScriptRunner::runServerCommand(const SourceLine& line, const std::string& v
   }
   if (command.message.has_load_scene() && !readSceneFile(line, command)) return;
   setCurrent(line.number, command.name);
+  if (command.ticksAhead) command.message.set_for_tick(lastSeenTick() + *command.ticksAhead);
   sentMark_ = client_.mirror().snapshotsApplied();
   const Milliseconds timeout = replyTimeout(command.message);
   const std::uint64_t id = client_.send(std::move(command.message));

@@ -61,6 +61,9 @@ class ScriptRunner {
   void runRepeat(const std::vector<SourceLine>& lines, std::size_t header, std::size_t close);
   void runLine(const SourceLine& line);
   void runCommand(const SourceLine& line, const std::string& variable, ScriptCommand command);
+  /// The room's tick as the client last saw it: the newest snapshot's, or
+  /// the Welcome's without snapshots (what `at +N` counts from).
+  std::uint64_t lastSeenTick() const;
   void runServerCommand(const SourceLine& line, const std::string& variable,
                         ScriptCommand command);
   void runLongStep(const SourceLine& line, const ScriptCommand& command);

@@ -45,7 +45,12 @@ std::optional<std::pair<std::string, std::uint16_t>> parseHostPort(std::string_v
   return std::make_pair(std::string(host), std::uint16_t(*port));
 }
 
-Client::Client(const ConnectOptions& options) : socket_(io_), reader_(options.maxFrameBytes) {
+Client::Client(const ConnectOptions& options)
+    : socket_(io_), reader_(options.maxFrameBytes), oneWayDelay_(options.addedRoundTrip / 2) {
+  if (options.addedRoundTrip.count() < 0) {
+    throw ConnectionError("ConnectOptions::addedRoundTrip " + std::to_string(options.addedRoundTrip.count()) +
+                          " ms is negative");
+  }
   const auto deadline = SteadyClock::now() + options.timeout;
   asio::error_code ec;
   asio::ip::tcp::resolver resolver(io_);
@@ -115,14 +120,41 @@ std::uint64_t Client::send(v1::ClientMessage message) {
   throwIfFailed();
   const std::uint64_t id = nextRequestId_++;
   message.set_request_id(id);
-  const std::string frame = wire::encodeFrame(message);
+  std::string frame = wire::encodeFrame(message);
+  if (oneWayDelay_.count() == 0) {
+    writeFrame(frame);
+  } else {
+    delayedFrames_.emplace_back(SteadyClock::now() + oneWayDelay_, std::move(frame));
+    writeDueFrames();
+  }
+  return id;
+}
+
+void Client::writeFrame(const std::string& frame) {
   asio::error_code ec;
   asio::write(socket_, asio::buffer(frame), ec);
   if (ec) {
     failure_ = "sending failed: " + ec.message();
     throwIfFailed();
   }
-  return id;
+}
+
+void Client::writeDueFrames() {
+  const auto now = SteadyClock::now();
+  while (!delayedFrames_.empty() && delayedFrames_.front().first <= now) {
+    writeFrame(delayedFrames_.front().second);
+    delayedFrames_.pop_front();
+  }
+}
+
+SteadyClock::time_point Client::nextDue(SteadyClock::time_point deadline) const {
+  if (!delayedFrames_.empty()) deadline = std::min(deadline, delayedFrames_.front().first);
+  if (!inbox_.empty()) deadline = std::min(deadline, inbox_.front().due);
+  return deadline;
+}
+
+bool Client::receivedDue(SteadyClock::time_point now) const {
+  return !inbox_.empty() && inbox_.front().due <= now;
 }
 
 void Client::startRead() {
@@ -148,30 +180,33 @@ void Client::startRead() {
           failure_ = "a frame from the server does not parse";
           return;
         }
-        inbox_.emplace_back(std::move(message), reader_.frame().size());
+        inbox_.push_back({std::move(message), reader_.frame().size(), SteadyClock::now() + oneWayDelay_});
       }
     }
   });
 }
 
 bool Client::receiveOne(SteadyClock::time_point deadline) {
-  while (inbox_.empty()) {
+  while (true) {
+    writeDueFrames();
+    if (receivedDue(SteadyClock::now())) break;
     throwIfFailed();
     startRead();
     if (io_.stopped()) io_.restart();
     if (SteadyClock::now() >= deadline) {
       io_.poll();
-      if (inbox_.empty()) {
+      if (!receivedDue(SteadyClock::now())) {
         throwIfFailed();
         return false;
       }
     } else {
-      io_.run_one_until(deadline);
+      // Wakes for a delayed frame coming due, too.
+      io_.run_one_until(nextDue(deadline));
     }
   }
-  auto [message, bytes] = std::move(inbox_.front());
+  Received received = std::move(inbox_.front());
   inbox_.pop_front();
-  handle(std::move(message), bytes);
+  handle(std::move(received.message), received.bytes);
   throwIfFailed();
   return true;
 }

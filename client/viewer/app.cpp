@@ -51,7 +51,8 @@ App::App(ViewerOptions options)
 
   start_ = SDL_GetPerformanceCounter();
   gui_ = std::make_unique<Gui>(window_, renderer_, options_.fontPath);
-  connection_ = std::make_unique<Connection>(options_.connect, world_, [this] { return now(); });
+  connection_ =
+      std::make_unique<Connection>(options_.connect, world_, [this] { return now(); }, options_.predict);
 }
 
 App::~App() {
@@ -254,6 +255,7 @@ void App::exchange() {
       controls_.notify("Not connected: " + command.what + " not sent", t);
     }
   }
+  connection_->advancePrediction();
   if (controls_.selectedBody() && connection_->connected() && t >= nextInspect_) {
     connection_->send(client::queryBody(*controls_.selectedBody()), "inspect");
     nextInspect_ = t + kInspectInterval;
@@ -400,6 +402,11 @@ void App::draw() {
   input.stepMs = &stepMs_;
   input.kineticEnergy = &energy_;
   input.eventMessages = eventMessages_;
+  input.predicting = connection_->predicting();
+  if (const client::Predictor* predictor = connection_->predictor()) {
+    input.prediction = PredictionFigures{predictor->tick() - connection_->client()->mirror().tick(),
+                                         predictor->shownCorrection(), predictor->largestCorrection()};
+  }
   if (const client::Client* client = connection_->client()) {
     const auto& mirror = client->mirror();
     if (mirror.preset()) input.preset = &*mirror.preset();
@@ -418,7 +425,8 @@ void App::draw() {
                                if (!connection_->send(std::move(message), what)) {
                                  controls_.notify("Not connected: " + what + " not sent", now());
                                }
-                             }};
+                             },
+                             [this](bool wanted) { connection_->setPredicting(wanted); }};
   drawSidePanel(layout().panel, {gui_->textFont(), gui_->titleFont()}, controls_, input, actions,
                 panelState_);
 
@@ -464,6 +472,7 @@ bool App::frame() {
   while (SDL_PollEvent(&event) != 0) handleEvent(event);
   exchange();
   world_.update(now());
+  if (const client::Predictor* predictor = connection_->predictor()) world_.showPredicted(*predictor);
   flashes_.update(world_.renderTime(), now());
   const double drawn = now();
   draw();

@@ -1,6 +1,7 @@
 #include "connection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "impulse/client/commands.h"
@@ -19,8 +20,8 @@ constexpr std::chrono::milliseconds kConnectTimeout{3000};
 }  // namespace
 
 Connection::Connection(client::ConnectOptions options, InterpolatedWorld& world,
-                       std::function<double()> now)
-    : options_(std::move(options)), world_(world), now_(std::move(now)) {
+                       std::function<double()> now, bool predict)
+    : options_(std::move(options)), world_(world), now_(std::move(now)), predicting_(predict) {
   options_.wantSnapshots = true;
   options_.timeout = std::min(options_.timeout, kConnectTimeout);
   startConnecting();
@@ -57,6 +58,7 @@ std::optional<v1::ServerStats> Connection::takeStats() { return std::exchange(st
 double Connection::retryIn() const { return std::max(0.0, retryAt_ - now_()); }
 
 void Connection::adopt(std::unique_ptr<client::Client> client) {
+  predictor_.reset();
   client_ = std::move(client);
   state_ = LinkState::Connected;
   backoff_ = 0.25;
@@ -75,6 +77,7 @@ void Connection::adopt(std::unique_ptr<client::Client> client) {
 
 void Connection::lose(const std::string& reason) {
   std::fprintf(stderr, "impulse-viewer: %s\n", reason.c_str());
+  predictor_.reset();
   client_.reset();
   awaiting_.clear();
   pingId_.reset();
@@ -144,10 +147,38 @@ void Connection::pingIfDue() {
   nextPing_ = now + kPingInterval;
 }
 
+void Connection::setPredicting(bool wanted) {
+  predicting_ = wanted;
+  if (!wanted) predictor_.reset();
+}
+
+void Connection::advancePrediction() {
+  if (!predicting_ || !client_) return;
+  const v1::Welcome& welcome = client_->welcome();
+  if (!predictor_) {
+    if (roundTripMs_ < 0) return;
+    // The round trip in ticks, a tick for the snapshot interval and two for
+    // jitter (docs/networked-play.md, "Prediction").
+    const double roundTripTicks = std::ceil(roundTripMs_ / 1000 * welcome.tick_hz());
+    const auto lead = std::uint32_t(std::clamp(roundTripTicks + 3, 1.0, double(welcome.max_input_delay_ticks())));
+    predictor_ = std::make_unique<client::Predictor>(*client_, client::PredictionOptions{.leadTicks = lead});
+    predictorStart_ = now_();
+    predictorTicks_ = 0;
+  }
+  // The room's ticks run at tick_hz times its time scale; a long frame
+  // (a dragged window) catches up at most a few ticks.
+  constexpr std::uint64_t kMostTicksPerFrame = 8;
+  const double rate = welcome.tick_hz() * client_->mirror().timeScale();
+  const auto due = std::uint64_t(std::max(0.0, (now_() - predictorStart_) * rate));
+  if (due > predictorTicks_ + kMostTicksPerFrame) predictorTicks_ = due - kMostTicksPerFrame;
+  for (; predictorTicks_ < due; ++predictorTicks_) predictor_->advance();
+}
+
 bool Connection::send(v1::ClientMessage message, std::string what) {
   if (state_ != LinkState::Connected) return false;
   try {
-    const std::uint64_t id = client_->send(std::move(message));
+    const bool predicted = predictor_ && client::Predictor::predicts(message);
+    const std::uint64_t id = predicted ? predictor_->send(std::move(message)) : client_->send(std::move(message));
     awaiting_.emplace(id, std::move(what));
     return true;
   } catch (const client::ConnectionError& error) {

@@ -3,6 +3,10 @@
 /// window keeps drawing), reconnects after a loss with a growing pause, feeds
 /// every applied snapshot to the interpolated world, pings for latency and
 /// hands command replies back. Never blocks the frame loop.
+///
+/// While prediction is on (docs/networked-play.md), the commands a
+/// client::Predictor predicts go through it, stamped, and the viewer shows
+/// the bodies they act on from its copy of the world.
 
 #include <chrono>
 #include <cstdint>
@@ -15,6 +19,7 @@
 #include <vector>
 
 #include "impulse/client/client.h"
+#include "impulse/client/predictor.h"
 #include "interpolated_world.h"
 #include "link_state.h"
 
@@ -30,7 +35,7 @@ class Connection {
  public:
   /// `now` gives local seconds (the frame loop's clock).
   Connection(client::ConnectOptions options, InterpolatedWorld& world,
-             std::function<double()> now);
+             std::function<double()> now, bool predict = false);
   ~Connection();
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
@@ -63,6 +68,17 @@ class Connection {
   /// Connections made so far (reconnects included).
   int connections() const { return connections_; }
 
+  /// Prediction wanted: the predictor starts once the first round trip is
+  /// measured (its lead covers it); off drops it.
+  void setPredicting(bool wanted);
+  bool predicting() const { return predicting_; }
+  /// Once per frame, after the frame's commands were sent (so they show in
+  /// it): starts the predictor when wanted and possible, then steps it by
+  /// the room's ticks since the last frame.
+  void advancePrediction();
+  /// The running predictor, or null (off, not connected, no round trip yet).
+  const client::Predictor* predictor() const { return predictor_.get(); }
+
  private:
   void startConnecting();
   void adopt(std::unique_ptr<client::Client> client);
@@ -92,6 +108,12 @@ class Connection {
   int rateCount_ = 0;
   double snapshotRate_ = 0;
   std::optional<v1::ServerStats> stats_;
+
+  bool predicting_ = false;
+  std::unique_ptr<client::Predictor> predictor_;
+  /// Local time the predictor's ticks are counted from, and how many it ran.
+  double predictorStart_ = 0;
+  std::uint64_t predictorTicks_ = 0;
 };
 
 }  // namespace impulse::viewer

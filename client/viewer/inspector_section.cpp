@@ -132,12 +132,6 @@ void drawBodyTable(const v1::BodyInfo& info) {
   ImGui::EndTable();
 }
 
-// The last item's place in the window, for a test to point at.
-PixelRect lastItemRect() {
-  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  return {min.x, min.y, max.x - min.x, max.y - min.y};
-}
-
 // Three of the body's figures in one row of fields, `current` unless a
 // person is typing in them (the server's figures, five a second, would
 // overwrite the typing). Clicking a field selects its text, so typing

@@ -136,4 +136,20 @@ const BodySample* InterpolatedWorld::find(std::uint32_t id) const {
   return body != nullptr ? &body->state : nullptr;
 }
 
+std::size_t InterpolatedWorld::showPredicted(const client::Predictor& predictor) {
+  std::size_t shown = 0;
+  for (DrawnBody& body : drawn_) {
+    if (!predictor.owns(body.state.id)) continue;
+    const auto predicted = predictor.body(body.state.id);
+    if (!predicted) continue;
+    body.state.position = predicted->state.position;
+    body.state.angle = predicted->state.angle;
+    body.state.velocity = predicted->state.linearVelocity;
+    body.state.angularVelocity = predicted->state.angularVelocity;
+    body.state.awake = predicted->state.awake;
+    ++shown;
+  }
+  return shown;
+}
+
 }  // namespace impulse::viewer

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impulse.pb.h"
+#include "impulse/client/predictor.h"
 #include "impulse/client/world_mirror.h"
 #include "interpolation.h"
 #include "playout_clock.h"
@@ -60,6 +61,10 @@ class InterpolatedWorld {
 
   /// Samples the world for a frame drawn at local time `now`.
   void update(double now);
+  /// After update(): the bodies the predictor owns (the viewer's own drags
+  /// and pushes) are drawn where it predicts them, correction included;
+  /// the others stay as sampled. Returns how many it moved.
+  std::size_t showPredicted(const client::Predictor& predictor);
   /// In ascending id, as the snapshot frames hold them.
   const std::vector<DrawnBody>& bodies() const { return drawn_; }
   /// The drawn state of body `id`, or null when it is not drawn.

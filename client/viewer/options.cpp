@@ -54,6 +54,15 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
   app.add_option("--room", options.connect.room,
                  "room to join, made on first join (default: the room \"default\")")
       ->option_text("NAME");
+  app.add_flag("--no-predict", [&options](std::int64_t) { options.predict = false; },
+               "show the viewer's own drags and pushes only when the server's snapshots bring them "
+               "(default: predicted at once; the panel's \"Predict my actions\" box toggles it)");
+  app.add_option_function<int>(
+         "--added-rtt",
+         [&options](int ms) { options.connect.addedRoundTrip = std::chrono::milliseconds(ms); },
+         "add MS milliseconds to the round trip to the server (try a slow link on loopback)")
+      ->check(CLI::Range(0, 10000))
+      ->option_text("MS");
   app.add_flag_callback(
       "--quantized",
       [&options] { options.connect.snapshotEncoding = v1::SNAPSHOT_ENCODING_QUANTIZED; },

@@ -27,6 +27,9 @@ struct ViewerOptions {
   std::string sceneFile = "impulse.scene";
   /// The shape library (Ctrl+D, Ctrl+1..9).
   std::string shapeFile = "impulse-shapes.txt";
+  /// Predict the viewer's own drags and pushes (docs/networked-play.md);
+  /// the panel's "Predict my actions" box changes it while running.
+  bool predict = true;
 };
 
 struct ParsedViewerOptions {

@@ -115,6 +115,20 @@ void drawHeader(const PanelFonts& fonts, const Controls& controls, const PanelIn
   drawRayAnswer(controls);
 }
 
+// Under the link line, always in sight: whether the viewer predicts its own
+// drags and pushes, and the correction it is blending in.
+void drawPrediction(const PanelInput& input, const PanelActions& actions, PanelState& state) {
+  bool predicting = input.predicting;
+  if (ImGui::Checkbox("Predict my actions", &predicting)) actions.setPredicting(predicting);
+  if (ImGui::IsItemVisible()) state.predictBox = lastItemRect();
+  if (!input.prediction) return;
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s ticks ahead, correcting %s m (largest %s m)",
+                     std::to_string(input.prediction->leadTicks).c_str(),
+                     formatNumber(input.prediction->shownCorrection, 3).c_str(),
+                     formatNumber(input.prediction->largestCorrection, 3).c_str());
+}
+
 void swatch(Colour fill, Colour outline, float thickness, bool striped = false) {
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const float size = ImGui::GetTextLineHeight();
@@ -230,11 +244,17 @@ void sameLineIfFits(float width) {
   if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
 }
 
+PixelRect lastItemRect() {
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  return {min.x, min.y, max.x - min.x, max.y - min.y};
+}
+
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
                    const PanelInput& input, const PanelActions& actions, PanelState& state) {
   const auto& act = actions.key;
   state.presetEntries.clear();
   state.stopButton.reset();
+  state.predictBox.reset();
   state.poseFields.reset();
   state.typeButtons = {};
   state.flagBoxes = {};
@@ -243,6 +263,7 @@ void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& con
   ImGui::Begin("##side panel", nullptr,
                kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   drawHeader(fonts, controls, input, act);
+  drawPrediction(input, actions, state);
   ImGui::Separator();
   // Only the sections scroll; the header above stays.
   ImGui::BeginChild("##sections");

@@ -26,6 +26,13 @@
 namespace impulse::viewer {
 
 /// Everything the panel shows that is not in Controls.
+/// The predictor's figures (docs/networked-play.md, "Prediction").
+struct PredictionFigures {
+  std::uint64_t leadTicks = 0;    ///< how far the copy runs ahead of the last snapshot
+  double shownCorrection = 0;     ///< m, the largest correction still being blended in
+  double largestCorrection = 0;   ///< m, the largest a snapshot brought so far
+};
+
 struct PanelInput {
   const PresetInfo* preset = nullptr;
   std::string room;  ///< the room joined
@@ -55,6 +62,9 @@ struct PanelInput {
   /// Events messages received while the flashes are on.
   std::uint64_t eventMessages = 0;
   std::optional<std::string> notice;
+  /// Prediction wanted, and its figures once the predictor runs.
+  bool predicting = false;
+  std::optional<PredictionFigures> prediction;
 };
 
 /// Fonts of the panel (the title's is larger).
@@ -69,6 +79,8 @@ struct PanelActions {
   std::function<void(ControlKey)> key;
   std::function<void(const std::string&)> loadScene;
   std::function<void(v1::ClientMessage message, std::string what)> send;
+  /// The "Predict my actions" box: prediction on or off.
+  std::function<void(bool)> setPredicting;
 };
 
 /// A row of three of the inspector's fields while a person edits them: the
@@ -86,6 +98,8 @@ struct PanelState {
   std::vector<std::pair<int, PixelRect>> presetEntries;
   /// The inspector's Stop button, when it is on screen.
   std::optional<PixelRect> stopButton;
+  /// The "Predict my actions" check box, when on screen.
+  std::optional<PixelRect> predictBox;
   /// The inspector's position-and-angle fields, and its static, kinematic
   /// and dynamic buttons, when on screen.
   std::optional<PixelRect> poseFields;
@@ -100,6 +114,9 @@ struct PanelState {
 /// Draws the panel into `rect`; `state`'s positions are refilled.
 void drawSidePanel(const PixelRect& rect, const PanelFonts& fonts, Controls& controls,
                    const PanelInput& input, const PanelActions& actions, PanelState& state);
+
+/// The last item's place in the window, for a test to point at.
+PixelRect lastItemRect();
 
 /// SameLine() when an item `width` pixels wide still fits on this line;
 /// otherwise the item goes on the next line (rows that fit any width).

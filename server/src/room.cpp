@@ -136,6 +136,7 @@ void Room::leave(Session& session) {
     subscribeEvents(client, false);
     commands_.dropClient(client);
     stamped_.dropClient(client);
+    snapshots_.forgetClient(client);
     std::erase_if(steps_, [&](const StepJob& job) { return job.client() == client; });
   });
 }
@@ -395,6 +396,7 @@ void Room::applyDueCommands() {
 void Room::applyQueued(QueuedCommand& queued, bool admin) {
   const auto& message = queued.message;
   const std::uint32_t client = queued.client;
+  if (message.has_for_tick()) snapshots_.stampProcessed(client, message.request_id());
   const CommandRow* row = findCommand(message);
   if (row == nullptr) {
     return reply(client, refusal(message, noCommandError(message), simulation_.tick()), queued.bytes);

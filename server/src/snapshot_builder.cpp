@@ -11,8 +11,13 @@ namespace impulse::server {
 
 namespace {
 
-void fillMeta(const Simulation& simulation, bool full, v1::Snapshot* snapshot) {
+void fillMeta(const Simulation& simulation, const AppliedStamps& stamps, bool full, v1::Snapshot* snapshot) {
   const SnapshotMeta meta = simulation.meta();
+  for (const auto& [client, requestId] : stamps) {
+    auto* stamp = snapshot->add_applied_stamps();
+    stamp->set_client_id(client);
+    stamp->set_request_id(requestId);
+  }
   snapshot->set_tick(meta.tick);
   snapshot->set_sim_time(meta.simTime);
   wire::toWire(simulation.world().gravity(), snapshot->mutable_gravity());
@@ -80,18 +85,18 @@ bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
 }
 
 // A full snapshot's meta, preset, joints and fields: all but the bodies.
-void addWorldButBodies(const Simulation& simulation, v1::Snapshot* snapshot) {
+void addWorldButBodies(const Simulation& simulation, const AppliedStamps& stamps, v1::Snapshot* snapshot) {
   const World& world = simulation.world();
-  fillMeta(simulation, true, snapshot);
+  fillMeta(simulation, stamps, true, snapshot);
   wire::toWire(simulation.preset(), snapshot->mutable_preset());
   for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
   for (const FieldId id : world.fieldIds()) addField(world, id, snapshot);
 }
 
 // A full snapshot's meta, preset, descriptors and joints: all but the states.
-void addWholeWorld(const Simulation& simulation, v1::Snapshot* snapshot) {
+void addWholeWorld(const Simulation& simulation, const AppliedStamps& stamps, v1::Snapshot* snapshot) {
   const World& world = simulation.world();
-  addWorldButBodies(simulation, snapshot);
+  addWorldButBodies(simulation, stamps, snapshot);
   const auto ids = world.bodyIds();
   snapshot->mutable_added()->Reserve(int(ids.size()));
   for (const BodyId id : ids) addDescriptor(world, id, snapshot);
@@ -109,6 +114,15 @@ wire::quantized::Integration quantizedIntegration(const Simulation& simulation) 
 
 SnapshotBuilder::SnapshotBuilder(const Simulation& simulation) : simulation_(simulation) {}
 
+void SnapshotBuilder::stampProcessed(std::uint32_t client, std::uint64_t requestId) {
+  appliedStamps_[client] = requestId;
+  ++stampsVersion_;
+}
+
+void SnapshotBuilder::forgetClient(std::uint32_t client) {
+  if (appliedStamps_.erase(client) > 0) ++stampsVersion_;
+}
+
 SharedFrame SnapshotBuilder::delta(WorldChanges& changes) {
   if (changes.wasReplaced()) return full();
   const World& world = simulation_.world();
@@ -116,7 +130,7 @@ SharedFrame SnapshotBuilder::delta(WorldChanges& changes) {
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
-  fillMeta(simulation_, false, snapshot);
+  fillMeta(simulation_, appliedStamps_, false, snapshot);
 
   changes.normalise();
   addChangeLists(world, changes, snapshot);
@@ -129,20 +143,22 @@ SharedFrame SnapshotBuilder::delta(WorldChanges& changes) {
 
 SharedFrame SnapshotBuilder::full() {
   const SnapshotMeta meta = simulation_.meta();
-  if (cachedFull_ && cachedVersion_ == simulation_.version() && sameMeta(cachedMeta_, meta)) {
+  if (cachedFull_ && cachedVersion_ == simulation_.version() && sameMeta(cachedMeta_, meta) &&
+      cachedStampsVersion_ == stampsVersion_) {
     return cachedFull_;
   }
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
   const World& world = simulation_.world();
-  addWholeWorld(simulation_, snapshot);
+  addWholeWorld(simulation_, appliedStamps_, snapshot);
   snapshot->mutable_bodies()->Reserve(snapshot->added_size());
   for (const auto& descriptor : snapshot->added()) {
     wire::toWire(*world.bodyState(BodyId{descriptor.id()}), snapshot->add_bodies());
   }
   cachedFull_ = wire::encodeSharedFrame(message);
   cachedVersion_ = simulation_.version();
+  cachedStampsVersion_ = stampsVersion_;
   cachedMeta_ = meta;
   return cachedFull_;
 }
@@ -162,7 +178,7 @@ SharedFrame SnapshotBuilder::quantizedDelta(WorldChanges& changes) {
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
-  fillMeta(simulation_, false, snapshot);
+  fillMeta(simulation_, appliedStamps_, false, snapshot);
   addChangeLists(simulation_.world(), changes, snapshot);
   changedIds_.clear();
   for (const BodyId id : changes.changedIds()) changedIds_.push_back(id.value);
@@ -180,13 +196,13 @@ SharedFrame SnapshotBuilder::quantizedFull() {
   if (!encoder_.valid()) startQuantized();
   const SnapshotMeta meta = simulation_.meta();
   if (cachedKey_ && cachedKeyVersion_ == simulation_.version() && sameMeta(cachedKeyMeta_, meta) &&
-      cachedKeyGeneration_ == encoder_.generation()) {
+      cachedKeyGeneration_ == encoder_.generation() && cachedKeyStampsVersion_ == stampsVersion_) {
     return cachedKey_;
   }
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
-  addWholeWorld(simulation_, snapshot);
+  addWholeWorld(simulation_, appliedStamps_, snapshot);
   const auto added = addedIds(*snapshot);
   snapshot->set_quantized_bodies(encoder_.keyFrame(
       simulation_.world(), {.tick = simulation_.tick(),
@@ -195,6 +211,7 @@ SharedFrame SnapshotBuilder::quantizedFull() {
   cachedKey_ = wire::encodeSharedFrame(message);
   cachedKeyVersion_ = simulation_.version();
   cachedKeyGeneration_ = encoder_.generation();
+  cachedKeyStampsVersion_ = stampsVersion_;
   cachedKeyMeta_ = meta;
   return cachedKey_;
 }
@@ -232,7 +249,7 @@ SharedFrame SnapshotBuilder::personalDelta(PersonalStream& stream, const WorldCh
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
-  fillMeta(simulation_, false, snapshot);
+  fillMeta(simulation_, appliedStamps_, false, snapshot);
   for (const std::uint32_t id : plan.removed) snapshot->add_removed(id);
   for (const std::uint32_t id : plan.leftWorld) snapshot->add_left_world(id);
   for (const std::uint32_t id : plan.leftArea) snapshot->add_left_area(id);
@@ -273,7 +290,7 @@ SharedFrame SnapshotBuilder::personalFull(PersonalStream& stream) {
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
-  addWorldButBodies(simulation_, snapshot);
+  addWorldButBodies(simulation_, appliedStamps_, snapshot);
   const auto& ids = stream.planFull(places_);
   snapshot->mutable_added()->Reserve(int(ids.size()));
   snapshot->mutable_bodies()->Reserve(int(ids.size()));

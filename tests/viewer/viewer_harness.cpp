@@ -23,8 +23,9 @@ client::ConnectOptions observerOptions(std::uint16_t port) {
   return options;
 }
 
-ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::string token,
-                             std::string room) {
+namespace {
+
+viewer::ViewerOptions testOptions(std::uint16_t port) {
   // No display in CI: SDL's offscreen driver and its software renderer,
   // drawing straight into the window surface (without framebuffer
   // acceleration SDL never loads Mesa through EGL, whose unloaded drivers
@@ -35,12 +36,27 @@ ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::str
   viewer::ViewerOptions options;
   options.connect.port = port;
   options.connect.name = "viewer-under-test";
+  options.fontPath = viewer::defaultFontPath();
+  options.vsync = false;
+  return options;
+}
+
+}  // namespace
+
+ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::string token,
+                             std::string room) {
+  viewer::ViewerOptions options = testOptions(port);
   options.connect.token = std::move(token);
   options.connect.room = std::move(room);
   options.width = width;
   options.height = height;
-  options.fontPath = viewer::defaultFontPath();
-  options.vsync = false;
+  app_ = std::make_unique<viewer::App>(options);
+}
+
+ViewerHarness::ViewerHarness(std::uint16_t port, std::chrono::milliseconds addedRoundTrip, bool predict) {
+  viewer::ViewerOptions options = testOptions(port);
+  options.connect.addedRoundTrip = addedRoundTrip;
+  options.predict = predict;
   app_ = std::make_unique<viewer::App>(options);
 }
 

@@ -27,6 +27,9 @@ class ViewerHarness {
   /// as --room would.
   explicit ViewerHarness(std::uint16_t port, int width = 1280, int height = 720,
                          std::string token = {}, std::string room = {});
+  /// The viewer over a link made `addedRoundTrip` slower (--added-rtt),
+  /// predicting its own actions or not (--no-predict).
+  ViewerHarness(std::uint16_t port, std::chrono::milliseconds addedRoundTrip, bool predict);
 
   viewer::App& app() { return *app_; }
   /// Runs frames (about 60 per second) until `done` or `timeout`; true if done.

@@ -54,6 +54,11 @@ struct ConnectOptions {
   /// Hello.room_min and room_max: the world bounds of the room this
   /// connection makes (admin role); none: the server's.
   std::optional<Box> roomBounds;
+  /// Added round trip (tests, trying a game over a slow link on loopback):
+  /// every frame sent leaves half of it later, every frame received is
+  /// handled half of it later; 0: none. Delayed frames go out during the
+  /// client's own calls (poll, awaitReply, ...), as everything it does.
+  std::chrono::milliseconds addedRoundTrip{0};
 };
 
 /// "HOST:PORT" (or "[V6]:PORT") split; nothing when malformed.
@@ -111,6 +116,12 @@ class Client {
   void startRead();
   void handle(v1::ServerMessage&& message, std::size_t frameBytes);
   void throwIfFailed() const;
+  /// Writes the frames whose added delay has passed.
+  void writeDueFrames();
+  void writeFrame(const std::string& frame);
+  /// When the next delayed frame is due either way (else `deadline`).
+  std::chrono::steady_clock::time_point nextDue(std::chrono::steady_clock::time_point deadline) const;
+  bool receivedDue(std::chrono::steady_clock::time_point now) const;
 
   asio::io_context io_;
   asio::ip::tcp::socket socket_;
@@ -118,7 +129,15 @@ class Client {
   std::array<char, 64 * 1024> buffer_{};
   bool reading_ = false;
   std::string failure_;
-  std::deque<std::pair<v1::ServerMessage, std::size_t>> inbox_;
+  struct Received {
+    v1::ServerMessage message;
+    std::size_t bytes = 0;
+    std::chrono::steady_clock::time_point due;  ///< handled from then on
+  };
+  std::deque<Received> inbox_;
+  /// Half the added round trip, each way.
+  std::chrono::steady_clock::duration oneWayDelay_{};
+  std::deque<std::pair<std::chrono::steady_clock::time_point, std::string>> delayedFrames_;
 
   v1::Welcome welcome_;
   WorldMirror mirror_;

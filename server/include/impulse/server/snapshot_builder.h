@@ -15,6 +15,7 @@
 /// from the places of the bodies taken once per broadcast.
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,10 +29,19 @@
 namespace impulse::server {
 
 using SharedFrame = std::shared_ptr<const std::string>;
+/// Per client, the request id of its last stamped command the room processed.
+using AppliedStamps = std::map<std::uint32_t, std::uint64_t>;
 
 class SnapshotBuilder {
  public:
   explicit SnapshotBuilder(const Simulation& simulation);
+
+  /// The room processed `client`'s stamped command `requestId` (applied or
+  /// refused at its tick): every later snapshot lists it in applied_stamps,
+  /// so a predicting client knows which of its commands the state holds.
+  void stampProcessed(std::uint32_t client, std::uint64_t requestId);
+  /// The client left: its entry is listed no more.
+  void forgetClient(std::uint32_t client);
 
   /// `changes` as a ServerMessage frame: a full snapshot when the world was
   /// replaced. Normalises `changes` in place.
@@ -72,6 +82,10 @@ class SnapshotBuilder {
   const Simulation& simulation_;
   // Full-snapshot cache: valid while the simulation's version and meta are equal.
   std::uint64_t cachedVersion_ = ~std::uint64_t(0);
+  AppliedStamps appliedStamps_;
+  /// Changes with appliedStamps_: the cached frames list them too.
+  std::uint64_t stampsVersion_ = 0;
+  std::uint64_t cachedStampsVersion_ = 0;
   SnapshotMeta cachedMeta_;
   SharedFrame cachedFull_;
   wire::quantized::Encoder encoder_;
@@ -79,6 +93,7 @@ class SnapshotBuilder {
   // Key-frame cache: valid while version, meta and the encoder's generation are equal.
   std::uint64_t cachedKeyVersion_ = ~std::uint64_t(0);
   std::uint64_t cachedKeyGeneration_ = ~std::uint64_t(0);
+  std::uint64_t cachedKeyStampsVersion_ = 0;
   SnapshotMeta cachedKeyMeta_;
   SharedFrame cachedKey_;
   BodyPlaces places_;

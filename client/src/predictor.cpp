@@ -1,0 +1,248 @@
+#include "impulse/client/predictor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "impulse/client/client.h"
+#include "impulse/client/number_format.h"
+#include "local_world.h"
+
+namespace impulse::client {
+
+namespace {
+
+/// Offsets smaller than this (m, rad) are dropped: nothing left to see.
+constexpr Real kNegligibleOffset = Real(1e-4);
+
+WorldSettings settingsOf(const v1::Welcome& welcome, const PredictionOptions& options) {
+  WorldSettings settings;
+  settings.subSteps = options.subSteps;
+  settings.bounds = AABB{Vec2(Real(welcome.world_min().x()), Real(welcome.world_min().y())),
+                         Vec2(Real(welcome.world_max().x()), Real(welcome.world_max().y()))};
+  if (welcome.max_bodies() > 0) settings.maxBodies = int(welcome.max_bodies());
+  return settings;
+}
+
+std::string outside(std::string_view field, double value, std::string_view range) {
+  return "PredictionOptions::" + std::string(field) + " " + formatNumber(value) + " is outside " + std::string(range);
+}
+
+/// The client, once it takes snapshots and the options are in range;
+/// std::invalid_argument naming what is not.
+Client& validated(Client& client, const PredictionOptions& options) {
+  if (client.mirror().snapshotsApplied() == 0) {
+    throw std::invalid_argument("Predictor: the client takes no snapshots (ConnectOptions::wantSnapshots)");
+  }
+  const std::uint32_t bound = client.welcome().max_input_delay_ticks();
+  if (options.leadTicks == 0 || options.leadTicks > bound) {
+    throw std::invalid_argument(outside("leadTicks", options.leadTicks,
+                                        "1.." + std::to_string(bound) + " (Welcome.max_input_delay_ticks)"));
+  }
+  if (!(options.blendPerTick > 0 && options.blendPerTick <= 1)) {
+    throw std::invalid_argument(outside("blendPerTick", options.blendPerTick, "(0, 1]"));
+  }
+  if (!(options.snapDistance > 0 && std::isfinite(options.snapDistance))) {
+    throw std::invalid_argument(outside("snapDistance", options.snapDistance, "(0, inf) m"));
+  }
+  if (options.subSteps < 1 || options.subSteps > 64) {
+    throw std::invalid_argument(outside("subSteps", options.subSteps, "1..64"));
+  }
+  return client;
+}
+
+/// The angle in (-pi, pi]: a turn through the shorter way.
+Real wrapAngle(Real angle) {
+  return std::remainder(angle, Real(2 * std::numbers::pi));
+}
+
+}  // namespace
+
+Predictor::Predictor(Client& client, const PredictionOptions& options)
+    : client_(validated(client, options)),
+      options_(options),
+      dt_(Real(1.0 / client.welcome().tick_hz())),
+      local_(std::make_unique<LocalWorld>(settingsOf(client.welcome(), options))) {
+  const WorldMirror& mirror = client_.mirror();
+  snapshotsSeen_ = mirror.snapshotsApplied();
+  snapshotTick_ = mirror.tick();
+  tick_ = snapshotTick_ + options_.leadTicks;
+  local_->rebuild(mirror);
+  replayFrom(snapshotTick_);
+}
+
+Predictor::~Predictor() = default;
+
+std::uint64_t Predictor::send(v1::ClientMessage message) {
+  // A paused room never reaches a stamped tick: the command goes unstamped,
+  // applied at once, and shows with the snapshot it changes.
+  if (client_.mirror().paused()) return client_.send(std::move(message));
+  message.set_for_tick(tick_);
+  const std::uint64_t id = client_.send(message);
+  if (LocalWorld::predictsKind(message)) local_->apply(message, dt_);
+  if (const auto named = bodyNamedBy(message)) touched_[*named] = tick_;
+  pending_.push_back({id, tick_, std::move(message)});
+  return id;
+}
+
+bool Predictor::predicts(const v1::ClientMessage& message) { return LocalWorld::predictsKind(message); }
+
+std::optional<std::uint32_t> Predictor::bodyNamedBy(const v1::ClientMessage& message) const {
+  if (const auto body = LocalWorld::namedBody(message)) return body;
+  // A joint moved or removed: its body (a mouse joint's, the one dragged).
+  const std::uint32_t joint = message.has_update_joint()   ? message.update_joint().joint_id()
+                              : message.has_remove_joint() ? message.remove_joint().joint_id()
+                                                           : 0;
+  const auto& joints = client_.mirror().joints();
+  const auto found = joints.find(joint);
+  if (found == joints.end()) return std::nullopt;
+  return found->second.bodyA.value;
+}
+
+void Predictor::advance() {
+  if (client_.mirror().snapshotsApplied() != snapshotsSeen_ && client_.lastSnapshot()) {
+    snapshotsSeen_ = client_.mirror().snapshotsApplied();
+    takeSnapshot(*client_.lastSnapshot());
+  }
+  // The room does not step while paused; and a copy twice its lead ahead of
+  // the snapshots runs faster than the room: it waits for them.
+  if (client_.mirror().paused() || tick_ >= snapshotTick_ + 2 * std::uint64_t(options_.leadTicks)) return;
+  stepOnce();
+  fadeOffsets();
+}
+
+void Predictor::fadeOffsets() {
+  const Real keep = Real(1 - options_.blendPerTick);
+  for (auto it = offsets_.begin(); it != offsets_.end();) {
+    Offset& offset = it->second;
+    offset.position *= keep;
+    offset.angle *= keep;
+    const bool negligible = offset.position.norm() < kNegligibleOffset && std::abs(offset.angle) < kNegligibleOffset;
+    it = negligible ? offsets_.erase(it) : std::next(it);
+  }
+}
+
+void Predictor::takeSnapshot(const v1::Snapshot& snapshot) {
+  const std::uint64_t tick = snapshot.tick();
+  snapshotTick_ = tick;
+  ++snapshotsTaken_;
+  acknowledge(snapshot);
+  const auto before = ownedStates();
+  // A copy fallen behind its lead (a slow caller, a late first snapshot)
+  // jumps ahead; stamps never go back, so one ahead keeps its tick.
+  constexpr std::uint64_t kLagAllowed = 2;
+  const std::uint64_t wanted = tick + options_.leadTicks;
+  if (tick_ + kLagAllowed < wanted || tick_ < tick) tick_ = wanted;
+  rewindTo(tick);
+  replayFrom(tick);
+  blendCorrections(before);
+}
+
+void Predictor::acknowledge(const v1::Snapshot& snapshot) {
+  const std::uint32_t self = client_.welcome().client_id();
+  std::uint64_t applied = 0;
+  for (const auto& stamp : snapshot.applied_stamps()) {
+    if (stamp.client_id() == self) applied = stamp.request_id();
+  }
+  // A stamp the server refused on arrival is never listed: once past the
+  // server's bound it can no longer be applied.
+  const std::uint64_t bound = client_.welcome().max_input_delay_ticks();
+  std::erase_if(pending_, [&](const Command& command) {
+    return command.requestId <= applied || command.forTick + bound < snapshot.tick();
+  });
+}
+
+void Predictor::rewindTo(std::uint64_t tick) {
+  const WorldMirror& mirror = client_.mirror();
+  while (!history_.empty() && history_.front().first < tick) history_.pop_front();
+  bool own = !history_.empty() && history_.front().first == tick && local_->describes(mirror) &&
+             local_->world().importState(history_.front().second).ok();
+  // Bodies or joints predicted before the snapshot's tick and not in it
+  // yet (late commands) would be made twice by the replay.
+  own = own && local_->predictedBodies() == 0 && local_->predictedJoints() == 0;
+  if (own) {
+    local_->takeStates(mirror);
+  } else {
+    local_->rebuild(mirror);
+    ++rebuilds_;
+  }
+  history_.clear();
+}
+
+void Predictor::replayFrom(std::uint64_t from) {
+  for (std::uint64_t tick = from;; ++tick) {
+    history_.emplace_back(tick, local_->world().exportState());
+    for (const Command& command : pending_) {
+      // Commands stamped before the first tick replayed were late: the
+      // server applies them now, so the copy does too.
+      if (command.forTick == tick || (tick == from && command.forTick < from)) local_->apply(command.message, dt_);
+    }
+    if (tick == tick_) return;
+    local_->world().step(dt_);
+  }
+}
+
+void Predictor::stepOnce() {
+  local_->world().step(dt_);
+  ++tick_;
+  history_.emplace_back(tick_, local_->world().exportState());
+  // A copy holds at most twice its lead ahead of the last snapshot (advance).
+  while (history_.size() > 2 * std::size_t(options_.leadTicks) + 2) history_.pop_front();
+}
+
+std::map<std::uint32_t, BodyState> Predictor::ownedStates() const {
+  std::map<std::uint32_t, BodyState> states;
+  for (const auto& entry : touched_) {
+    if (!owns(entry.first)) continue;
+    const auto local = local_->localBody(entry.first);
+    if (const auto state = local ? local_->world().bodyState(*local) : std::nullopt) states[entry.first] = *state;
+  }
+  return states;
+}
+
+void Predictor::blendCorrections(const std::map<std::uint32_t, BodyState>& before) {
+  lastCorrection_ = 0;
+  for (const auto& [id, old] : before) {
+    const auto local = local_->localBody(id);
+    const auto now = local ? local_->world().bodyState(*local) : std::nullopt;
+    if (!now) continue;
+    const Vec2 jump = old.position - now->position;
+    lastCorrection_ = std::max(lastCorrection_, double(jump.norm()));
+    Offset& offset = offsets_[id];
+    offset.position += jump;
+    offset.angle = wrapAngle(offset.angle + wrapAngle(old.angle - now->angle));
+    if (offset.position.norm() > options_.snapDistance) offset = {};
+  }
+  largestCorrection_ = std::max(largestCorrection_, lastCorrection_);
+}
+
+std::optional<PredictedBody> Predictor::body(std::uint32_t serverBody) const {
+  const auto local = local_->localBody(serverBody);
+  const auto state = local ? local_->world().bodyState(*local) : std::nullopt;
+  if (!state) return std::nullopt;
+  PredictedBody shown{*state, Vec2::Zero()};
+  shown.state.id = BodyId{serverBody};
+  if (const auto offset = offsets_.find(serverBody); offset != offsets_.end()) {
+    shown.state.position += offset->second.position;
+    shown.state.angle += offset->second.angle;
+    shown.correction = offset->second.position;
+  }
+  return shown;
+}
+
+bool Predictor::owns(std::uint32_t serverBody) const {
+  const auto it = touched_.find(serverBody);
+  return it != touched_.end() && tick_ <= it->second + options_.holdTicks;
+}
+
+double Predictor::shownCorrection() const {
+  double largest = 0;
+  for (const auto& [id, offset] : offsets_) {
+    if (owns(id)) largest = std::max(largest, double(offset.position.norm()));
+  }
+  return largest;
+}
+
+}  // namespace impulse::client
