@@ -121,12 +121,15 @@ void drawPrediction(const PanelInput& input, const PanelActions& actions, PanelS
   bool predicting = input.predicting;
   if (ImGui::Checkbox("Predict my actions", &predicting)) actions.setPredicting(predicting);
   if (ImGui::IsItemVisible()) state.predictBox = lastItemRect();
-  if (!input.prediction) return;
-  ImGui::SameLine();
-  ImGui::TextWrapped("%s ticks ahead, correcting %s m (largest %s m)",
-                     std::to_string(input.prediction->leadTicks).c_str(),
-                     formatNumber(input.prediction->shownCorrection, 3).c_str(),
-                     formatNumber(input.prediction->largestCorrection, 3).c_str());
+  // Always one unwrapped line, so the sections below never move as the
+  // readout appears or its numbers change under the user's pointer.
+  if (!input.prediction) {
+    ImGui::TextDisabled("%s", predicting ? "predicting from the first snapshot" : "not predicting");
+    return;
+  }
+  ImGui::Text("%s ticks ahead, correcting %s m (largest %s m)", std::to_string(input.prediction->leadTicks).c_str(),
+              formatNumber(input.prediction->shownCorrection, 3).c_str(),
+              formatNumber(input.prediction->largestCorrection, 3).c_str());
 }
 
 void swatch(Colour fill, Colour outline, float thickness, bool striped = false) {
