@@ -30,6 +30,11 @@ int rangeCountFor(int itemCount, int minRange, int workers) {
 }  // namespace
 
 struct PoolTasks::Task {
+  // A constructor, not an aggregate: clang 14 has no parenthesised
+  // aggregate initialisation for make_shared.
+  Task(TaskFunction* taskFunction, void* taskContext, int items, int ranges, int workers)
+      : function(taskFunction), context(taskContext), itemCount(items), rangeCount(ranges), workerCount(workers) {}
+
   TaskFunction* function;
   void* context;
   int itemCount;
