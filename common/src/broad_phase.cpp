@@ -25,6 +25,11 @@ AABB fatten(const AABB& tight, BroadPhase::ProxyKind kind) {
   return kind == BroadPhase::ProxyKind::Movable ? tight.expanded(kAabbMargin) : tight;
 }
 
+// Sets or clears a queued proxy's flag (BroadPhase::queuedNode_, per tree).
+void markQueued(std::vector<std::uint8_t> (&queuedNode)[2], std::int32_t proxyKey, std::uint8_t queued) {
+  queuedNode[treeIndex(kindOf(proxyKey))][std::size_t(nodeOf(proxyKey))] = queued;
+}
+
 bool pairLess(const ProxyPair& a, const ProxyPair& b) {
   return a.first != b.first ? a.first < b.first : a.second < b.second;
 }
@@ -87,8 +92,13 @@ std::span<const std::int32_t> BroadPhase::queuedProxies() {
   std::sort(moveBuffer_.begin(), moveBuffer_.end());
   moveBuffer_.erase(std::unique(moveBuffer_.begin(), moveBuffer_.end()), moveBuffer_.end());
   const auto live = std::upper_bound(moveBuffer_.begin(), moveBuffer_.end(), kNullKey);
-  for (int tree = 0; tree < 2; ++tree) queuedNode_[tree].assign(std::size_t(trees_[tree].nodeCapacity()), 0);
-  for (auto key = live; key != moveBuffer_.end(); ++key) queuedNode_[treeIndex(kindOf(*key))][std::size_t(nodeOf(*key))] = 1;
+  // The flags are all clear between searches (finishPairSearch clears the
+  // ones set here), so a step pays for its queued proxies, not the trees.
+  for (int tree = 0; tree < 2; ++tree) {
+    const auto capacity = std::size_t(trees_[tree].nodeCapacity());
+    if (queuedNode_[tree].size() < capacity) queuedNode_[tree].resize(capacity, 0);
+  }
+  for (auto key = live; key != moveBuffer_.end(); ++key) markQueued(queuedNode_, *key, 1);
   return {live, moveBuffer_.end()};
 }
 
@@ -97,6 +107,9 @@ void BroadPhase::finishPairSearch(std::vector<ProxyPair>& pairs) {
   // output independent of tree shape, queue order and thread count.
   std::sort(pairs.begin(), pairs.end(), pairLess);
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for (std::int32_t proxyKey : moveBuffer_) {
+    if (proxyKey != kNullKey) markQueued(queuedNode_, proxyKey, 0);
+  }
   moveBuffer_.clear();
 }
 
