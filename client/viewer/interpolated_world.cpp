@@ -64,7 +64,15 @@ void InterpolatedWorld::onSnapshot(const client::WorldMirror& mirror,
       looks_[descriptor.id()] = lookOf(*body);
     }
   }
+  relinkDrawnLooks();
   record(mirror, time, mirror.timeScale(), snapshot.full(), snapshot.paused(), now);
+}
+
+void InterpolatedWorld::relinkDrawnLooks() {
+  std::erase_if(drawn_, [this](DrawnBody& body) {
+    body.look = lookAt(body.state.id, renderTime_);
+    return body.look == nullptr;
+  });
 }
 
 void InterpolatedWorld::retire(std::uint32_t id, double time) {

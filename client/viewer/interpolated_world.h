@@ -100,12 +100,17 @@ class InterpolatedWorld {
   /// The look of body `id` in frames sampled at server time `time`, or null.
   const BodyLook* lookAt(std::uint32_t id, double time) const;
   void retire(std::uint32_t id, double time);
+  /// A snapshot between two frames moves or frees looks (a removal moves
+  /// one into the retired ones) while the frame's drawn bodies are still
+  /// read (picking, the energy plot): they are pointed at the looks anew.
+  void relinkDrawnLooks();
 
   /// The bodies of the newest snapshot.
   Looks looks_;
   /// Oldest first; dropped once no buffered frame is older.
   std::deque<RetiredLooks> retired_;
   std::vector<BodySample> samples_;
+  /// Their looks point into looks_ and retired_, relinked whenever those change.
   std::vector<DrawnBody> drawn_;
   SampleMode mode_ = SampleMode::Empty;
   double renderTime_ = 0;

@@ -249,6 +249,32 @@ TEST(WorldPicture, ViewerDrawsABodyAddedUnderAnIdOfTheWorldItReplaced) {
   EXPECT_EQ(drawnRadius(view, 5), 1.0);
 }
 
+// A frame's bodies are read again before the next frame is sampled (the
+// energy plot, picking under the cursor), after the snapshots that arrived
+// in between. A removal retired the look its drawn body pointed at, freeing
+// it: the viewer read freed memory (a crash in CI, a re-added body's look
+// under the same address here).
+TEST(WorldPicture, AFramesBodiesKeepTheirLooksThroughTheSnapshotsThatFollowIt) {
+  WorldMirror mirror;
+  viewer::InterpolatedWorld view(1.0 / 30.0);
+  auto feed = [&](const v1::Snapshot& snapshot) {
+    ASSERT_TRUE(mirror.apply(snapshot));
+    view.onSnapshot(mirror, snapshot, snapshot.sim_time());
+  };
+  feed(snapshotAt(0, true, {{1, 0.5}, {2, 0.25}}));
+  for (int tick = 1; tick <= 10; ++tick) feed(snapshotAt(tick, false));
+  view.update(10 / 30.0);
+  ASSERT_EQ(drawnRadius(view, 2), 0.25);
+  v1::Snapshot removal = snapshotAt(11, false, {{3, 1.0}});
+  removal.add_removed(2);
+  feed(removal);
+  feed(snapshotAt(12, true, {{1, 0.75}}));
+  // Still the frame sampled before both snapshots, each body as it was.
+  ASSERT_EQ(view.bodies().size(), 2u);
+  EXPECT_EQ(drawnRadius(view, 1), 0.5);
+  EXPECT_EQ(drawnRadius(view, 2), 0.25);
+}
+
 // ------------------------------------------------------------- bursts
 
 // Random commands that mostly make sense for the world as last seen.
