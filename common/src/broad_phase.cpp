@@ -78,6 +78,19 @@ bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB) {
   return true;
 }
 
+bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB) {
+  const ProxyKind kind = kindOf(proxyKey);
+  if (kind == ProxyKind::Static) return updateProxy(proxyKey, tightAABB);
+  DynamicTree& tree = trees_[treeIndex(kind)];
+  const std::int32_t node = nodeOf(proxyKey);
+  if (tree.box(node).contains(tightAABB)) return false;
+  tree.enlargeProxy(node, fatten(tightAABB, kind));
+  moveBuffer_.push_back(proxyKey);
+  return true;
+}
+
+void BroadPhase::rebuildEnlarged() { trees_[treeIndex(ProxyKind::Movable)].rebuild(); }
+
 void BroadPhase::touchProxy(std::int32_t proxyKey) { moveBuffer_.push_back(proxyKey); }
 
 void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs, const KnownPair& known) {

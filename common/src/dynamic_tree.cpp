@@ -36,6 +36,15 @@ Real shiftedUp(Real value, double offset) {
                                  : rounded;
 }
 
+// Bins along an axis for the rebuild's surface area heuristic: a split
+// between bins is nearly as good as the best split between items, at a
+// fraction of the cost.
+constexpr int kBinCount = 16;
+
+// Below this depth the rebuild splits at the median instead: whatever the
+// boxes, the rest of the subtree is then log2(n) deep.
+constexpr int kSurfaceAreaDepth = 40;
+
 // What descending into one child of the node being examined could cost.
 struct ChildCost {
   Real direct = 0;  // perimeter of the child united with the new leaf
@@ -66,6 +75,138 @@ void DynamicTree::moveProxy(std::int32_t node, const AABB& box) {
   insertLeaf(node);
 }
 
+void DynamicTree::enlargeProxy(std::int32_t node, const AABB& box) {
+  nodes_[node].box = box;
+  // Ancestors grow until one already holds the box; marking goes on up to
+  // the first node marked before, whose ancestors are all marked.
+  for (std::int32_t index = nodes_[node].parent; index != kNull; index = nodes_[index].parent) {
+    Node& ancestor = nodes_[index];
+    const bool grows = !ancestor.box.contains(box);
+    if (grows) ancestor.box = ancestor.box.unite(box);
+    if (ancestor.enlarged && !grows) return;
+    ancestor.enlarged = true;
+  }
+}
+
+int DynamicTree::rebuild() {
+  if (root_ == kNull || !nodes_[root_].enlarged) return 0;
+  collectBuildItems(false);
+  root_ = buildSubtree(buildItems_, 0);
+  nodes_[root_].parent = kNull;
+  if (nodes_[root_].height > kMaxHeight) {
+    // Kept subtrees stacked too deep over many rebuilds: start afresh.
+    collectBuildItems(true);
+    root_ = buildSubtree(buildItems_, 0);
+    nodes_[root_].parent = kNull;
+  }
+  return static_cast<int>(buildItems_.size());
+}
+
+// The subtrees the rebuild joins: every leaf and every unmarked inner node
+// under marked ones (all leaves for the whole tree); the marked nodes above
+// them are freed for the build to reuse.
+void DynamicTree::collectBuildItems(bool wholeTree) {
+  buildItems_.clear();
+  std::int32_t stack[kStackSize];
+  int count = 0;
+  stack[count++] = root_;
+  while (count > 0) {
+    const std::int32_t index = stack[--count];
+    Node& node = nodes_[index];
+    if (node.isLeaf() || !(node.enlarged || wholeTree)) {
+      node.parent = kNull;
+      buildItems_.push_back({index, center(node.box)});
+      continue;
+    }
+    stack[count++] = node.child1;
+    stack[count++] = node.child2;
+    freeNode(index);
+  }
+}
+
+std::int32_t DynamicTree::buildSubtree(std::span<BuildItem> items, int depth) {
+  if (items.size() == 1) return items.front().node;
+  std::size_t split = depth < kSurfaceAreaDepth ? splitBySurfaceArea(items) : 0;
+  if (split == 0) {
+    // The median along the wider spread of centres (ties by node, so the
+    // split is the same on every run).
+    split = items.size() / 2;
+    AABB spread{items.front().center, items.front().center};
+    for (const BuildItem& item : items) spread = spread.unite(AABB{item.center, item.center});
+    const int axis = spread.upper.x() - spread.lower.x() >= spread.upper.y() - spread.lower.y() ? 0 : 1;
+    std::nth_element(items.begin(), items.begin() + std::ptrdiff_t(split), items.end(),
+                     [axis](const BuildItem& a, const BuildItem& b) {
+                       return a.center[axis] != b.center[axis] ? a.center[axis] < b.center[axis] : a.node < b.node;
+                     });
+  }
+  const std::int32_t child1 = buildSubtree(items.first(split), depth + 1);
+  const std::int32_t child2 = buildSubtree(items.subspan(split), depth + 1);
+  return joinUnderNewNode(child1, child2);
+}
+
+// Sorts the items into bins along the wider spread of their centres and
+// partitions them at the boundary that minimises the children's perimeters
+// weighted by their item counts. Returns the size of the first part, or 0
+// when no boundary separates them (all centres in one bin).
+std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) const {
+  AABB spread{items.front().center, items.front().center};
+  for (const BuildItem& item : items) spread = spread.unite(AABB{item.center, item.center});
+  const int axis = spread.upper.x() - spread.lower.x() >= spread.upper.y() - spread.lower.y() ? 0 : 1;
+  const Real width = spread.upper[axis] - spread.lower[axis];
+  if (!(width > 0)) return 0;
+  const Real scale = Real(kBinCount) / width;
+  auto binOf = [&](const BuildItem& item) {
+    return std::min(kBinCount - 1, static_cast<int>((item.center[axis] - spread.lower[axis]) * scale));
+  };
+  struct Bin {
+    AABB box;
+    std::size_t count = 0;
+  };
+  Bin bins[kBinCount];
+  for (const BuildItem& item : items) {
+    Bin& bin = bins[binOf(item)];
+    bin.box = bin.count == 0 ? nodes_[item.node].box : bin.box.unite(nodes_[item.node].box);
+    ++bin.count;
+  }
+  // The cost of the part above each boundary, swept from the top down.
+  Real aboveCost[kBinCount] = {};
+  AABB above{};
+  std::size_t aboveCount = 0;
+  for (int b = kBinCount - 1; b > 0; --b) {
+    if (bins[b].count > 0) above = aboveCount == 0 ? bins[b].box : above.unite(bins[b].box);
+    aboveCount += bins[b].count;
+    aboveCost[b] = aboveCount == 0 ? 0 : Real(aboveCount) * above.perimeter();
+  }
+  int bestBoundary = 0;
+  Real bestCost = std::numeric_limits<Real>::max();
+  AABB below{};
+  std::size_t belowCount = 0;
+  for (int b = 1; b < kBinCount; ++b) {
+    if (bins[b - 1].count > 0) below = belowCount == 0 ? bins[b - 1].box : below.unite(bins[b - 1].box);
+    belowCount += bins[b - 1].count;
+    if (belowCount == 0 || belowCount == items.size()) continue;
+    const Real cost = Real(belowCount) * below.perimeter() + aboveCost[b];
+    if (cost < bestCost) {
+      bestCost = cost;
+      bestBoundary = b;
+    }
+  }
+  if (bestBoundary == 0) return 0;
+  const auto middle = std::partition(items.begin(), items.end(),
+                                     [&](const BuildItem& item) { return binOf(item) < bestBoundary; });
+  return static_cast<std::size_t>(middle - items.begin());
+}
+
+std::int32_t DynamicTree::joinUnderNewNode(std::int32_t child1, std::int32_t child2) {
+  const std::int32_t parent = allocateNode();
+  nodes_[parent].child1 = child1;
+  nodes_[parent].child2 = child2;
+  nodes_[child1].parent = parent;
+  nodes_[child2].parent = parent;
+  refit(parent);
+  return parent;
+}
+
 bool DynamicTree::restore(const State& state) {
   DynamicTree candidate;
   candidate.nodes_ = state.nodes;
@@ -77,7 +218,14 @@ bool DynamicTree::restore(const State& state) {
     if (node.height == 0 && !(isFinite(node.box.lower) && isFinite(node.box.upper))) return false;
   }
   *this = std::move(candidate);
+  reserveBuildItems();
   return true;
+}
+
+// A rebuild joins at most every node; its scratch grows with the node
+// array, so a rebuild never allocates in a step.
+void DynamicTree::reserveBuildItems() {
+  if (buildItems_.capacity() < nodes_.capacity()) buildItems_.reserve(nodes_.capacity());
 }
 
 void DynamicTree::shift(const Vec2d& offset) {
@@ -118,12 +266,14 @@ bool DynamicTree::isValid() const {
       pending.push_back(node.child2);
     }
   }
-  return leaves == leafCount_ && reached + freeCount == static_cast<std::int64_t>(nodes_.size());
+  return leaves == leafCount_ && reached + freeCount == static_cast<std::int64_t>(nodes_.size()) &&
+         height() <= kMaxHeight;
 }
 
 std::int32_t DynamicTree::allocateNode() {
   if (freeList_ == kNull) {
     nodes_.emplace_back();
+    reserveBuildItems();
     return static_cast<std::int32_t>(nodes_.size()) - 1;
   }
   std::int32_t index = freeList_;
@@ -385,7 +535,7 @@ bool DynamicTree::isValidNode(std::int32_t index) const {
   const Node& b = nodes_[node.child2];
   const AABB enclosing = a.box.unite(b.box);
   return a.parent == index && b.parent == index && a.height >= 0 && b.height >= 0 &&
-         heightsBalanced(a.height, b.height) && node.height == 1 + std::max(a.height, b.height) &&
+         node.height == 1 + std::max(a.height, b.height) &&
          node.box.lower == enclosing.lower && node.box.upper == enclosing.upper;
 }
 

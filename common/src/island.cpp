@@ -71,27 +71,36 @@ void listMovedBodies(WorldData& world) {
 }
 
 // Collects the island of `seed` (awake dynamic bodies joined by touching
-// constraints) into world.islandBodies and returns its smallest sleep time.
-Real collectIsland(WorldData& world, std::int32_t seed) {
+// constraints) into world.islandBodies; true when every body in it has been
+// slow for timeToSleep. A walk stops at the first body that has not, or that
+// an earlier walk of this step stopped in (walks from `firstWalk` on): that
+// island stays awake, and what was walked stays marked, so no later walk of
+// the step repeats it. A pile in motion is given up on near where it moves.
+bool collectSleepyIsland(WorldData& world, std::int32_t seed, std::uint64_t firstWalk) {
+  const std::uint64_t walk = ++world.islandStamp;
+  const Real timeToSleep = world.settings.timeToSleep;
   world.islandBodies.clear();
   world.islandStack.clear();
   world.islandStack.push_back(seed);
-  world.bodies[seed].islandMark = world.islandStamp;
-  Real minSleepTime = std::numeric_limits<Real>::max();
-  while (!world.islandStack.empty()) {
-    std::int32_t slot = world.islandStack.back();
+  world.bodies[seed].islandMark = walk;
+  bool sleepy = true;
+  while (sleepy && !world.islandStack.empty()) {
+    const std::int32_t slot = world.islandStack.back();
     world.islandStack.pop_back();
+    if (world.bodies[slot].sleepTime < timeToSleep) return false;
     world.islandBodies.push_back(slot);
-    minSleepTime = std::min(minSleepTime, world.bodies[slot].sleepTime);
     forEachLinkedBody(world, slot, [&](std::int32_t linked) {
       Body& other = world.bodies[linked];
-      if (other.awake && other.islandMark != world.islandStamp) {
-        other.islandMark = world.islandStamp;
-        world.islandStack.push_back(linked);
+      if (!other.awake || other.islandMark == walk) return;
+      if (other.islandMark >= firstWalk) {
+        sleepy = false;
+        return;
       }
+      other.islandMark = walk;
+      world.islandStack.push_back(linked);
     });
   }
-  return minSleepTime;
+  return sleepy;
 }
 
 void putIslandToSleep(WorldData& world) {
@@ -118,13 +127,12 @@ void updateSleep(WorldData& world, Real dt) {
   // An island sleeps only when every body in it has been slow long enough,
   // so only such bodies need their island walked: a scene in motion walks
   // nothing.
-  ++world.islandStamp;
-  const Real timeToSleep = world.settings.timeToSleep;
+  const std::uint64_t firstWalk = world.islandStamp + 1;
   bool anyAsleep = false;
   for (std::size_t i = 0; i < world.awakeBodies.size(); ++i) {
     const std::int32_t slot = world.awakeBodies[i];
-    if (world.sleepCandidates[i] == 0 || world.bodies[slot].islandMark == world.islandStamp) continue;
-    if (collectIsland(world, slot) >= timeToSleep) {
+    if (world.sleepCandidates[i] == 0 || world.bodies[slot].islandMark >= firstWalk) continue;
+    if (collectSleepyIsland(world, slot, firstWalk)) {
       putIslandToSleep(world);
       anyAsleep = true;
     }

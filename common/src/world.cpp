@@ -111,10 +111,16 @@ void wakeAll(WorldData& world) {
   for (std::size_t slot = 0; slot < world.bodies.size(); ++slot) wakeIsland(world, static_cast<std::int32_t>(slot));
 }
 
-// The solve stage; then the broad phase learns where the bodies went.
+// The solve stage; then the broad phase learns where the bodies went, all
+// at once.
 void solveAndMoveProxies(WorldData& world, Real dt) {
   solve(world, dt);
-  for (std::int32_t slot : world.awakeBodies) moveBodyProxies(world, slot);
+  for (std::int32_t slot : world.awakeBodies) {
+    world.forEachShape(slot, [&](std::int32_t s) {
+      world.broadPhase.enlargeProxy(world.shapes[s].proxyKey, shapeAABB(world, s));
+    });
+  }
+  world.broadPhase.rebuildEnlarged();
 }
 
 /// One stage of the step: what it runs and where its time is recorded.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -51,9 +52,13 @@ struct ModelProxy {
 // Drives a BroadPhase and the model through the same random history of
 // creations, moves, touches and destructions, checking each step against a
 // brute-force pair search.
+// How a step's movers reach the broad phase: one re-insertion each, or
+// enlarged in place and the tree rebuilt once (as the world's step does).
+enum class Moves { OneByOne, InBulk };
+
 class Scenario {
  public:
-  explicit Scenario(unsigned seed) : rng_(seed) {}
+  explicit Scenario(unsigned seed, Moves moves = Moves::OneByOne) : rng_(seed), moves_(moves) {}
 
   void populate(int movable, int fixed) {
     for (int i = 0; i < movable; ++i) create(Kind::Movable);
@@ -72,6 +77,7 @@ class Scenario {
       const Real dy = jump ? large(rng_) : small(rng_);
       move(proxy, shifted(proxy.fat.expanded(-kAabbMargin), dx, dy));
     }
+    if (moves_ == Moves::InBulk) broadPhase_.rebuildEnlarged();
     for (ModelProxy& proxy : proxies_) {
       if (proxy.alive && percent(rng_) < 3) {
         broadPhase_.touchProxy(proxy.key);
@@ -143,7 +149,9 @@ class Scenario {
 
   void move(ModelProxy& proxy, const AABB& tight) {
     const bool leaves = !proxy.fat.contains(tight);
-    ASSERT_EQ(broadPhase_.updateProxy(proxy.key, tight), leaves);
+    const bool moved = moves_ == Moves::InBulk ? broadPhase_.enlargeProxy(proxy.key, tight)
+                                               : broadPhase_.updateProxy(proxy.key, tight);
+    ASSERT_EQ(moved, leaves);
     if (leaves) {
       proxy.fat = tight.expanded(kAabbMargin);
       proxy.queued = true;
@@ -151,12 +159,15 @@ class Scenario {
   }
 
   std::mt19937 rng_;
+  Moves moves_;
   BroadPhase broadPhase_;
   std::vector<ModelProxy> proxies_;
 };
 
-TEST(BroadPhase, FindsExactlyTheOverlappingPairsInvolvingQueuedProxies) {
-  Scenario scenario(42);
+class BroadPhaseMoves : public ::testing::TestWithParam<Moves> {};
+
+TEST_P(BroadPhaseMoves, FindsExactlyTheOverlappingPairsInvolvingQueuedProxies) {
+  Scenario scenario(42, GetParam());
   scenario.populate(300, 100);
   std::vector<Pair> expected = asPairs(scenario.expectedPairs());
   ASSERT_EQ(asPairs(scenario.findPairs()), expected);
@@ -175,6 +186,12 @@ TEST(BroadPhase, FindsExactlyTheOverlappingPairsInvolvingQueuedProxies) {
   // Moves within the margin must not hide every pair: real work was compared.
   EXPECT_GT(total, 500U);
 }
+
+std::string movesName(const ::testing::TestParamInfo<Moves>& moves) {
+  return moves.param == Moves::InBulk ? "InBulk" : "OneByOne";
+}
+
+INSTANTIATE_TEST_SUITE_P(OneByOneOrInBulk, BroadPhaseMoves, ::testing::Values(Moves::OneByOne, Moves::InBulk), movesName);
 
 TEST(BroadPhase, PairsAreSortedUniqueAndNeverStaticStatic) {
   Scenario scenario(9);

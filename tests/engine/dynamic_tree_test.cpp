@@ -223,6 +223,110 @@ TEST(DynamicTree, NodeIndicesStayStable_AndFreedNodesAreReused) {
   EXPECT_EQ(queried(tree, makeBox(5, 0, 0.5f, 0.5f)), std::vector<std::int32_t>{d});
 }
 
+// Many leaves moving at once: enlarged in place, then one rebuild.
+void moveAllInBulk(DynamicTree& tree, std::vector<Leaf>& leaves, BoxSource& source) {
+  for (Leaf& leaf : leaves) {
+    leaf.box = source.moved(leaf.box);
+    tree.enlargeProxy(leaf.node, leaf.box);
+  }
+  tree.rebuild();
+}
+
+TEST(DynamicTree, EnlargedAndRebuilt_StaysValidExactAndShallow_LeavesKeepTheirNodes) {
+  DynamicTree tree;
+  BoxSource source(17);
+  std::vector<Leaf> leaves;
+  for (int i = 0; i < 1000; ++i) {
+    const AABB box = source.box();
+    leaves.push_back({tree.createProxy(box, i), box});
+  }
+  for (int round = 0; round < 20; ++round) {
+    moveAllInBulk(tree, leaves, source);
+    ASSERT_TRUE(tree.isValid()) << "round " << round;
+    EXPECT_LE(tree.height(), heightLimit(1000)) << "round " << round;
+  }
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    ASSERT_EQ(tree.userValue(leaves[i].node), std::int32_t(i));
+    ASSERT_EQ(tree.box(leaves[i].node).lower, leaves[i].box.lower);
+  }
+  expectQueriesMatchBruteForce(tree, leaves, source);
+  // Single changes still work on a rebuilt tree.
+  for (std::size_t i = 0; i < 100; ++i) tree.destroyProxy(leaves[i].node);
+  leaves.erase(leaves.begin(), leaves.begin() + 100);
+  for (int i = 0; i < 100; ++i) {
+    const AABB box = source.box();
+    leaves.push_back({tree.createProxy(box, 1000 + i), box});
+  }
+  ASSERT_TRUE(tree.isValid());
+  expectQueriesMatchBruteForce(tree, leaves, source);
+}
+
+TEST(DynamicTree, RebuildJoinsOnlyWhatAMoveGrew) {
+  DynamicTree tree;
+  BoxSource source(23);
+  std::vector<Leaf> leaves;
+  for (int i = 0; i < 1000; ++i) {
+    const AABB box = source.box();
+    leaves.push_back({tree.createProxy(box, i), box});
+  }
+  EXPECT_EQ(tree.rebuild(), 0);
+  // Two leaves jump across the world: the paths above them come apart into
+  // their side subtrees, about two per level.
+  for (Leaf* leaf : {&leaves[10], &leaves[500]}) {
+    leaf->box = makeBox(Real(-50), Real(-50), 1, 1);
+    tree.enlargeProxy(leaf->node, leaf->box);
+  }
+  const int joined = tree.rebuild();
+  EXPECT_GT(joined, 2);
+  EXPECT_LE(joined, 4 * heightLimit(1000));
+  ASSERT_TRUE(tree.isValid());
+  EXPECT_EQ(queried(tree, makeBox(-50, -50, 0.5f, 0.5f)), (std::vector<std::int32_t>{leaves[10].node, leaves[500].node}));
+  EXPECT_EQ(tree.rebuild(), 0);
+}
+
+TEST(DynamicTree, RebuildStaysShallow_WhenBoxesAreIdenticalOrOnALine) {
+  DynamicTree identical;
+  DynamicTree line;
+  std::vector<std::int32_t> identicalNodes, lineNodes;
+  for (int i = 0; i < 1000; ++i) {
+    identicalNodes.push_back(identical.createProxy(makeBox(0, 0, 1, 1), i));
+    lineNodes.push_back(line.createProxy(makeBox(Real(i), 0, Real(0.4), Real(0.4)), i));
+  }
+  for (int i = 0; i < 1000; ++i) {
+    identical.enlargeProxy(identicalNodes[std::size_t(i)], makeBox(0, 0, 2, 2));
+    line.enlargeProxy(lineNodes[std::size_t(i)], makeBox(Real(i) * Real(1.001), 0, Real(0.4), Real(0.4)));
+  }
+  identical.rebuild();
+  line.rebuild();
+  ASSERT_TRUE(identical.isValid());
+  ASSERT_TRUE(line.isValid());
+  EXPECT_LE(identical.height(), heightLimit(1000));
+  EXPECT_LE(line.height(), heightLimit(1000));
+}
+
+TEST(DynamicTree, RebuiltTreesOfIdenticalHistoriesAreIdentical) {
+  auto history = [] {
+    DynamicTree tree;
+    BoxSource source(29);
+    std::vector<Leaf> leaves;
+    for (int i = 0; i < 300; ++i) {
+      const AABB box = source.box();
+      leaves.push_back({tree.createProxy(box, i), box});
+    }
+    for (int round = 0; round < 5; ++round) moveAllInBulk(tree, leaves, source);
+    return tree.state();
+  };
+  const DynamicTree::State first = history();
+  const DynamicTree::State second = history();
+  ASSERT_EQ(first.root, second.root);
+  ASSERT_EQ(first.nodes.size(), second.nodes.size());
+  for (std::size_t i = 0; i < first.nodes.size(); ++i) {
+    EXPECT_EQ(first.nodes[i].parent, second.nodes[i].parent) << i;
+    EXPECT_EQ(first.nodes[i].child1, second.nodes[i].child1) << i;
+    EXPECT_EQ(first.nodes[i].box.lower, second.nodes[i].box.lower) << i;
+  }
+}
+
 TEST(DynamicTree, RemovingEveryLeafLeavesAnEmptyValidTree) {
   DynamicTree tree;
   BoxSource source(3);

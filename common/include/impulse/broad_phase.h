@@ -3,8 +3,9 @@
 ///
 /// Two dynamic AABB trees (static proxies, movable proxies), so static-static
 /// pairs are never considered and a moving proxy only queries what it could
-/// touch. Only proxies that moved out of their fat box are re-inserted, and
-/// only proxies marked moved look for new pairs.
+/// touch. Only proxies that moved out of their fat box are re-inserted (or
+/// enlarged, and the tree above them rebuilt), and only proxies marked moved
+/// look for new pairs.
 
 #include <cstdint>
 #include <functional>
@@ -36,6 +37,12 @@ class BroadPhase {
   /// queues it for pair search) only when it left its fat AABB. Returns true
   /// when it was re-inserted.
   bool updateProxy(std::int32_t proxyKey, const AABB& tightAABB);
+  /// updateProxy for many proxies moving at once (a step's awake bodies): a
+  /// movable proxy that left its fat AABB is enlarged in place, and
+  /// rebuildEnlarged() must follow before any other change or query.
+  bool enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB);
+  /// Rebuilds the parts of the trees that enlargeProxy grew.
+  void rebuildEnlarged();
 
   /// Queues a proxy for pair search without moving it (e.g. a body woke up). A
   /// queued static proxy looks for movable partners only.

@@ -1,10 +1,13 @@
 #pragma once
-/// Dynamic AABB tree (bounding volume hierarchy) with incremental insert and
-/// remove, balanced by rotations, nodes in one contiguous array.
+/// Dynamic AABB tree (bounding volume hierarchy), nodes in one contiguous
+/// array. Single changes insert and remove leaves, balanced by rotations;
+/// many leaves moving together are enlarged in place and the part of the
+/// tree above them rebuilt in one go (surface area heuristic, binned).
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -21,6 +24,15 @@ class DynamicTree {
   void destroyProxy(std::int32_t node);
   /// Removes and re-inserts the leaf with a new box.
   void moveProxy(std::int32_t node, const AABB& box);
+  /// Gives the leaf a new box without restructuring: its ancestors grow to
+  /// hold it and are marked for rebuild(). For many moving leaves, a walk up
+  /// from each and one rebuild cost less than re-inserting each, and leave a
+  /// better tree for the queries that follow.
+  void enlargeProxy(std::int32_t node, const AABB& box);
+  /// Rebuilds the marked part of the tree, top down, keeping every unmarked
+  /// subtree as it is. Leaves keep their node indices. Returns how many
+  /// subtrees it joined (0 when nothing was marked).
+  int rebuild();
 
   const AABB& box(std::int32_t node) const { return nodes_[node].box; }
   std::int32_t userValue(std::int32_t node) const { return nodes_[node].userValue; }
@@ -65,6 +77,9 @@ class DynamicTree {
     std::int32_t child2 = kNull;
     std::int32_t userValue = -1;
     std::int16_t height = 0;
+    /// An inner node grown by enlargeProxy since the last rebuild (so are
+    /// all its ancestors).
+    bool enlarged = false;
     bool isLeaf() const { return child1 == kNull; }
   };
   /// The whole tree, node by node: its shape decides which nodes later
@@ -87,8 +102,8 @@ class DynamicTree {
 
   int height() const;
   int leafCount() const { return leafCount_; }
-  /// Checks parent links, heights and their balance, enclosing boxes, the leaf
-  /// count and the free list (for tests).
+  /// Checks parent links, heights, enclosing boxes, the height bound the
+  /// queries' stacks rely on, the leaf count and the free list.
   bool isValid() const;
 
  private:
@@ -106,10 +121,24 @@ class DynamicTree {
   bool isValidNode(std::int32_t node) const;
   std::int64_t freeNodeCount() const;
 
+  // A subtree a rebuild keeps whole (a leaf, or an inner node nothing moved
+  // in), with its box's centre, by which the rebuild sorts.
+  struct BuildItem {
+    std::int32_t node;
+    Vec2 center;
+  };
+  void reserveBuildItems();
+  void collectBuildItems(bool wholeTree);
+  std::int32_t buildSubtree(std::span<BuildItem> items, int depth);
+  std::size_t splitBySurfaceArea(std::span<BuildItem> items) const;
+  std::int32_t joinUnderNewNode(std::int32_t child1, std::int32_t child2);
+
   std::vector<Node> nodes_;
   std::int32_t root_ = kNull;
   std::int32_t freeList_ = kNull;
   int leafCount_ = 0;
+  // The rebuild's scratch, kept so that a step allocates nothing.
+  std::vector<BuildItem> buildItems_;
   // A node waiting in a ray cast, with where the ray enters its box.
   // Trivial, so a stack of them costs nothing to declare.
   struct RayEntry {
@@ -118,9 +147,12 @@ class DynamicTree {
   };
   // Queries and ray casts keep their stack on the C++ stack, so concurrent
   // const queries share nothing. Depth-first, a stack holds at most one
-  // pending sibling per level: the height plus one, and the balance bound
-  // keeps the height logarithmic (under 100 for any tree that fits in memory).
+  // pending sibling per level: the height plus one. Insertion's balance bound
+  // and the rebuild's median splits keep the height logarithmic, far below
+  // kMaxHeight for any tree that fits in memory; a rebuild that would pass it
+  // rebuilds the whole tree.
   static constexpr int kStackSize = 256;
+  static constexpr int kMaxHeight = kStackSize - 2;
 };
 
 template <typename Visit>
