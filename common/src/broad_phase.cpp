@@ -54,6 +54,7 @@ std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userVal
                                      ProxyKind kind) {
   const std::int32_t node = trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind), userValue);
   const std::int32_t key = makeKey(node, kind);
+  recordUserBox(key);
   // A new static proxy is not queued: it cannot pair with other static proxies,
   // and movable ones find it when they move (or the caller touches it).
   if (kind == ProxyKind::Movable) moveBuffer_.push_back(key);
@@ -74,6 +75,7 @@ bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB) {
   const std::int32_t node = nodeOf(proxyKey);
   if (tree.box(node).contains(tightAABB)) return false;
   tree.moveProxy(node, fatten(tightAABB, kind));
+  recordUserBox(proxyKey);
   moveBuffer_.push_back(proxyKey);
   return true;
 }
@@ -85,6 +87,7 @@ bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB) {
   const std::int32_t node = nodeOf(proxyKey);
   if (tree.box(node).contains(tightAABB)) return false;
   tree.enlargeProxy(node, fatten(tightAABB, kind));
+  recordUserBox(proxyKey);
   moveBuffer_.push_back(proxyKey);
   return true;
 }
@@ -126,8 +129,19 @@ void BroadPhase::finishPairSearch(std::vector<ProxyPair>& pairs) {
   moveBuffer_.clear();
 }
 
-bool BroadPhase::fatAABBsOverlap(std::int32_t proxyKeyA, std::int32_t proxyKeyB) const {
-  return fatAABB(proxyKeyA).overlaps(fatAABB(proxyKeyB));
+void BroadPhase::recordUserBox(std::int32_t proxyKey) {
+  const std::size_t user = std::size_t(leafUserValue(proxyKey));
+  if (user >= userBoxes_.size()) userBoxes_.resize(user + 1);
+  userBoxes_[user] = fatAABB(proxyKey);
+}
+
+void BroadPhase::recordAllUserBoxes() {
+  userBoxes_.clear();
+  for (int tree = 0; tree < 2; ++tree) {
+    for (std::int32_t node = 0; node < trees_[tree].nodeCapacity(); ++node) {
+      if (trees_[tree].isLeafNode(node)) recordUserBox(makeKey(node, ProxyKind(tree)));
+    }
+  }
 }
 
 const AABB& BroadPhase::fatAABB(std::int32_t proxyKey) const {
@@ -145,6 +159,7 @@ BroadPhase::State BroadPhase::state() const {
 
 void BroadPhase::shift(const Vec2d& offset) {
   for (DynamicTree& tree : trees_) tree.shift(offset);
+  recordAllUserBoxes();
 }
 
 bool BroadPhase::restore(const State& state) {
@@ -156,6 +171,7 @@ bool BroadPhase::restore(const State& state) {
     if (key != kNullKey && candidate.leafUserValue(key) < 0) return false;
   }
   candidate.moveBuffer_ = state.queued;
+  candidate.recordAllUserBoxes();
   *this = std::move(candidate);
   return true;
 }

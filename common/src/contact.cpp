@@ -174,8 +174,7 @@ std::uint8_t wakeOutcome(const Contact& contact, const Body& a, const Body& b) {
 // Reads the bodies and shapes, writes only this contact: contacts can be
 // updated side by side.
 std::uint8_t updateManifold(const WorldData& world, Contact& contact) {
-  if (!world.broadPhase.fatAABBsOverlap(world.shapes[contact.shapeA].proxyKey,
-                                        world.shapes[contact.shapeB].proxyKey)) {
+  if (!world.broadPhase.fatAABBsOverlap(contact.shapeA, contact.shapeB)) {
     return kApart;
   }
   const Body& a = world.bodies[contact.edges.bodyA];

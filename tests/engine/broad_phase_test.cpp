@@ -241,7 +241,7 @@ TEST(BroadPhase, StaticProxiesAreExact_MovableProxiesAreFat) {
   EXPECT_TRUE(sameBox(broadPhase.fatAABB(fixed), tight));
   EXPECT_TRUE(sameBox(broadPhase.fatAABB(movable), tight.expanded(kAabbMargin)));
   EXPECT_EQ(broadPhase.proxyCount(), 2);
-  EXPECT_TRUE(broadPhase.fatAABBsOverlap(fixed, movable));
+  EXPECT_TRUE(broadPhase.fatAABBsOverlap(1, 2));
   EXPECT_NE(fixed, movable);
 }
 
@@ -250,9 +250,15 @@ TEST(BroadPhase, FatAABBsOverlap_SeesTheMargin) {
   const std::int32_t a = broadPhase.createProxy(makeBox(0, 0, 1, 1), 1, Kind::Movable);
   // Tight boxes 0.15 apart: the two 0.1 margins bridge the gap.
   const std::int32_t b = broadPhase.createProxy(makeBox(Real(2.15), 0, 1, 1), 2, Kind::Movable);
-  const std::int32_t c = broadPhase.createProxy(makeBox(Real(2.15), 0, 1, 1), 3, Kind::Static);
-  EXPECT_TRUE(broadPhase.fatAABBsOverlap(a, b));
-  EXPECT_FALSE(broadPhase.fatAABBsOverlap(a, c));
+  broadPhase.createProxy(makeBox(Real(2.15), 0, 1, 1), 3, Kind::Static);
+  EXPECT_TRUE(broadPhase.fatAABBsOverlap(1, 2));
+  EXPECT_FALSE(broadPhase.fatAABBsOverlap(1, 3));
+  // Moved one by one or in bulk, the user values see the boxes moved.
+  broadPhase.updateProxy(b, makeBox(6, 0, 1, 1));
+  EXPECT_FALSE(broadPhase.fatAABBsOverlap(1, 2));
+  broadPhase.enlargeProxy(a, makeBox(Real(6.5), 0, 1, 1));
+  broadPhase.rebuildEnlarged();
+  EXPECT_TRUE(broadPhase.fatAABBsOverlap(1, 2));
 }
 
 TEST(BroadPhase, UpdateProxy_FalseInsideMargin_TrueWhenLeavingFatBox) {

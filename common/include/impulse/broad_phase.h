@@ -68,7 +68,12 @@ class BroadPhase {
   void queryPairs(std::int32_t proxyKey, const KnownPair& known, std::vector<ProxyPair>& pairs) const;
   void finishPairSearch(std::vector<ProxyPair>& pairs);
 
-  bool fatAABBsOverlap(std::int32_t proxyKeyA, std::int32_t proxyKeyB) const;
+  /// Whether the fat AABBs of the live proxies of two user values overlap.
+  /// Read from a copy kept by user value, so that a caller holding user
+  /// values (a contact's two shapes) touches one small array, not the trees.
+  bool fatAABBsOverlap(std::int32_t userValueA, std::int32_t userValueB) const {
+    return userBoxes_[std::size_t(userValueA)].overlaps(userBoxes_[std::size_t(userValueB)]);
+  }
   const AABB& fatAABB(std::int32_t proxyKey) const;
 
   /// Calls visit(userValue) for every proxy whose fat AABB overlaps box;
@@ -129,7 +134,13 @@ class BroadPhase {
     return std::size_t(node) < queued.size() && queued[std::size_t(node)] != 0;
   }
 
+  /// Copies the proxy's fat AABB to userBoxes_.
+  void recordUserBox(std::int32_t proxyKey);
+  void recordAllUserBoxes();
+
   DynamicTree trees_[2];
+  /// By user value: the fat AABB of its live proxy (what a dead one had).
+  std::vector<AABB> userBoxes_;
   std::vector<std::int32_t> moveBuffer_;
   /// During a pair search, per tree node: whether the proxy is queued. Two
   /// queued proxies that overlap would find each other twice; one of them
