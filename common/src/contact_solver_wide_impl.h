@@ -209,7 +209,16 @@ struct BundleInputs {
   F staticFriction, dynamicFriction;
 };
 
-// Copies one contact's numbers into its lane; finishBundle derives the rest.
+// Zeroes one lane of every field of a point.
+template <class F>
+void clearLane(WidePoint<F>& p, int lane) {
+  static_assert(sizeof(WidePoint<F>) % sizeof(F) == 0 && std::is_standard_layout_v<WidePoint<F>>);
+  F* fields = reinterpret_cast<F*>(&p);
+  for (std::size_t k = 0; k < sizeof(WidePoint<F>) / sizeof(F); ++k) setLane(fields[k], lane, 0.0f);
+}
+
+// Copies one contact's numbers into its lane (every field of the lane but
+// those finishBundle derives).
 template <class F>
 void gatherLane(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
                 WideConstraint<F>& w, BundleInputs<F>& in, int lane) {
@@ -233,7 +242,9 @@ void gatherLane(const WorldData& world, const ConstraintRef& ref, const ContactS
   setLane(w.rollingImpulse, lane, manifold.rollingImpulse);
   setLane(in.staticFriction, lane, contact.staticFriction);
   setLane(in.dynamicFriction, lane, contact.dynamicFriction);
-  // A one-point manifold leaves its second point at zero: it never acts.
+  for (WidePoint<F>& p : w.points) setLane(p.totalNormalImpulse, lane, 0.0f);
+  // A point the manifold does not have is all zero: it never acts.
+  for (int j = manifold.pointCount; j < 2; ++j) clearLane(w.points[j], lane);
   for (int j = 0; j < manifold.pointCount; ++j) {
     const ManifoldPoint& mp = manifold.points[j];
     WidePoint<F>& p = w.points[j];
@@ -388,9 +399,10 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
                         const ContactSoftness& softness, WideContactSet& set, std::int32_t b) {
   static const WideConstraint<F> kEmpty = emptyBundle<F>();
   WideConstraint<F>& c = bundlesOf<F>(set)[std::size_t(b)];
-  c = kEmpty;
   const std::span<const std::int32_t> entries(set.order.data() + set.contactSlices.first[std::size_t(b)],
                                                set.contactSlices.lanes[std::size_t(b)]);
+  // Each lane in use is written whole; only a short bundle has padding.
+  if (entries.size() < std::size_t(F::kLanes)) c = kEmpty;
   prefetchContacts(world, refs, entries);
   BundleInputs<F> inputs{};
   for (std::size_t lane = 0; lane < entries.size(); ++lane) {
