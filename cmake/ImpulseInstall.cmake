@@ -11,6 +11,12 @@ set(IMPULSE_VERSION 0.1.0)
 set_target_properties(impulse_engine PROPERTIES EXPORT_NAME engine)
 add_library(Impulse::engine ALIAS impulse_engine)
 
+# A sanitized build's archive calls into the sanitizer runtimes: a program
+# that links it has to link them too, through either way of finding it.
+if(IMPULSE_SANITIZER_LINK_FLAGS)
+  target_link_options(impulse_engine INTERFACE $<INSTALL_INTERFACE:${IMPULSE_SANITIZER_LINK_FLAGS}>)
+endif()
+
 install(TARGETS impulse_engine EXPORT ImpulseTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT engine
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
