@@ -66,8 +66,8 @@ class Calls {
   impulse::BodyOptions options() {
     impulse::BodyOptions o;
     o.material = static_cast<impulse::Material>(in_.ConsumeIntegralInRange(0, impulse::kMaterialCount - 1));
-    o.isStatic = in_.ConsumeIntegralInRange(0, 5) == 0;
-    o.ignoreGravity = in_.ConsumeBool();
+    o.properties.isStatic = in_.ConsumeIntegralInRange(0, 5) == 0;
+    o.properties.ignoreGravity = in_.ConsumeBool();
     o.linearVelocity = vector(600);
     o.angularVelocity = number(-1200, 1200);
     return o;
@@ -236,7 +236,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   World world(settings);
   // A floor, so that contacts are part of every run.
   world.createPolygon(std::array<Vec2, 4>{Vec2(-1, -1), Vec2(26, -1), Vec2(26, 0), Vec2(-1, 0)},
-                      {.isStatic = true});
+                      {.properties = {.isStatic = true}});
   Calls calls(data, size);
   Made made;
   for (int call = 0; call < kMaxCalls && calls.more(); ++call) {

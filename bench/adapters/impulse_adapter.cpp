@@ -131,7 +131,7 @@ impulse::BodyOptions optionsFor(const BodyDesc& body) {
   options.interaction = interactionOf(body.shape);
   options.material = body.material;
   options.materialOverride = overrideFor(body);
-  options.isKinematic = body.isKinematic;
+  options.properties.isKinematic = body.isKinematic;
   options.isAwake = !body.startsAsleep;
   options.linearVelocity = toVec(body.velocity);
   options.angularVelocity = Real(body.angularVelocity);
@@ -153,10 +153,10 @@ impulse::BodyDef bodyDefFor(const SceneDescription& scene, const BodyDesc& body,
   def.linearVelocity = toVec(body.velocity);
   def.angularVelocity = Real(body.angularVelocity);
   def.material = body.material;
-  def.isStatic = body.isStatic;
-  def.isKinematic = body.isKinematic;
+  def.properties.isStatic = body.isStatic;
+  def.properties.isKinematic = body.isKinematic;
+  def.properties.linearDrag = Real(body.linearDamping);
   def.isAwake = !body.startsAsleep;
-  def.linearDrag = Real(body.linearDamping);
   return def;
 }
 
@@ -283,7 +283,7 @@ class ImpulseAdapter final : public EngineAdapter {
   Real inertiaOf(int index) const {
     if (index == kWorldBody) return 0;
     const impulse::BodyDescription body = *world_.bodyDescription(idOf(index));
-    return body.isStatic || body.isKinematic ? 0 : body.mass.inertia;
+    return body.properties.isDynamic() ? body.mass.inertia : 0;
   }
 
   impulse::RevoluteJointSettings pinSettings(const JointDesc& joint) const {

@@ -233,8 +233,8 @@ std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror) {
     description.id = body.id;
     description.shape = body.shape;
     description.material = body.material;
-    description.isStatic = body.isStatic;
-    description.ignoreGravity = body.ignoreGravity;
+    description.properties.isStatic = body.isStatic;
+    description.properties.ignoreGravity = body.ignoreGravity;
     v1::BodyDescriptor descriptor;
     wire::toWire(description, &descriptor);
     v1::BodyState state;

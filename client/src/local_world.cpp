@@ -29,10 +29,10 @@ BodyDef bodyDefOf(const MirrorBody& body) {
   def.angularVelocity = body.state.angularVelocity;
   def.material = body.material;
   def.interaction = body.flags;
-  def.isStatic = body.isStatic;
-  def.isKinematic = body.isKinematic;
+  def.properties.isStatic = body.isStatic;
+  def.properties.isKinematic = body.isKinematic;
   def.isAwake = body.state.awake && !body.isStatic;
-  def.ignoreGravity = body.ignoreGravity;
+  def.properties.ignoreGravity = body.ignoreGravity;
   return def;
 }
 

@@ -1,7 +1,9 @@
-// Body definitions: building one from user-facing options, and the
-// per-body material override.
+// Body definitions: building one from user-facing options, the checks of
+// a body's own properties, and the per-body material override.
 
 #include "impulse/body.h"
+
+#include "input_limits.h"
 
 namespace impulse {
 
@@ -12,16 +14,28 @@ BodyDef makeBodyDef(const Shape& shape, const Vec2& position, const BodyOptions&
   def.linearVelocity = options.linearVelocity;
   def.angularVelocity = options.angularVelocity;
   def.material = options.material;
-  def.isStatic = options.isStatic;
-  def.isKinematic = options.isKinematic;
-  def.isAwake = options.isAwake;
-  def.ignoreGravity = options.ignoreGravity;
-  def.linearDrag = options.linearDrag;
-  def.angularDrag = options.angularDrag;
   def.materialOverride = options.materialOverride;
-  def.gravityScale = options.gravityScale;
   def.interaction = options.interaction;
+  def.properties = options.properties;
+  def.isAwake = options.isAwake;
   return def;
+}
+
+std::string validateBodyProperties(const BodyProperties& properties) {
+  const BodyProperties& p = properties;
+  if (p.isStatic && p.isKinematic) return "a body is static or kinematic, not both";
+  if (!isFinite(p.linearDrag) || !isFinite(p.angularDrag) || !isFinite(p.gravityScale)) {
+    return "body has a non-finite drag or gravity scale (NaN or infinity)";
+  }
+  auto outside = [](Real value, Real lo, Real hi) { return value < lo || value > hi; };
+  const std::string dragRange = " must be in [0, " + describeNumber(kMaxDrag) + "] 1/s";
+  if (outside(p.linearDrag, 0, kMaxDrag)) return "linear damping " + describeNumber(p.linearDrag) + dragRange;
+  if (outside(p.angularDrag, 0, kMaxDrag)) return "angular damping " + describeNumber(p.angularDrag) + dragRange;
+  if (outside(p.gravityScale, -kMaxGravityScale, kMaxGravityScale)) {
+    return "gravity scale " + describeNumber(p.gravityScale) + " must be in [-" + describeNumber(kMaxGravityScale) +
+           ", " + describeNumber(kMaxGravityScale) + "]";
+  }
+  return {};
 }
 
 bool shouldCollide(const CollisionFilter& a, const CollisionFilter& b) {

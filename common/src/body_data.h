@@ -10,13 +10,12 @@
 
 namespace impulse {
 
-struct Body {
-  bool isDynamic() const { return !isStatic && !isKinematic; }
-  BodyType type() const { return isStatic ? BodyType::Static : isKinematic ? BodyType::Kinematic : BodyType::Dynamic; }
-  void setType(BodyType type) {
-    isStatic = type == BodyType::Static;
-    isKinematic = type == BodyType::Kinematic;
-  }
+// The body's own properties (impulse/body.h) are a base, not a member, so
+// the step reads them as body.isStatic; they are copied whole through
+// properties().
+struct Body : BodyProperties {
+  BodyProperties& properties() { return *this; }
+  const BodyProperties& properties() const { return *this; }
 
   Transform transform;
   Vec2 linearVelocity = Vec2::Zero();
@@ -28,9 +27,6 @@ struct Body {
   Real invMass = 0;
   Real invInertia = 0;
   MassProperties mass;
-  Real linearDrag = 0;
-  Real angularDrag = 0;
-  Real gravityScale = 1;
   // Sizes used by sleeping (how fast the rim moves) and continuous collision
   // (how far a body may move in a step before it could skip a thin wall).
   // Over all of the body's shapes: the farthest point from the centre of
@@ -54,10 +50,6 @@ struct Body {
   std::uint64_t creationOrder = 0;
   std::uint32_t generation = 0;
   bool alive = false;
-  bool isStatic = false;
-  // Moved by its velocity only: infinite mass, no gravity, forces or drag.
-  bool isKinematic = false;
-  bool ignoreGravity = false;
   bool awake = false;
   // Its field loads come per sub-step this step (field.cpp).
   bool fieldsPerSubStep = false;

@@ -24,28 +24,10 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The per-body motion properties the material table does not bound.
-std::string checkDragAndGravityScale(const BodyDef& def) {
-  auto outside = [](Real value, Real lo, Real hi) { return !(value >= lo && value <= hi); };
-  const std::string dragRange = " must be in [0, " + describeNumber(kMaxDrag) + "] 1/s";
-  if (outside(def.linearDrag, 0, kMaxDrag)) {
-    return "linear damping " + describeNumber(def.linearDrag) + dragRange;
-  }
-  if (outside(def.angularDrag, 0, kMaxDrag)) {
-    return "angular damping " + describeNumber(def.angularDrag) + dragRange;
-  }
-  if (outside(def.gravityScale, -kMaxGravityScale, kMaxGravityScale)) {
-    return "gravity scale " + describeNumber(def.gravityScale) + " must be in [-" +
-           describeNumber(kMaxGravityScale) + ", " + describeNumber(kMaxGravityScale) + "]";
-  }
-  return {};
-}
-
 std::string validateDef(const WorldData& world, const BodyDef& def) {
   if (!isFinite(def.position) || !isFinite(def.angle) || !isFinite(def.linearVelocity) ||
-      !isFinite(def.angularVelocity) || !isFinite(def.linearDrag) || !isFinite(def.angularDrag) ||
-      !isFinite(def.gravityScale)) {
-    return "body has a non-finite position, angle, velocity, drag or gravity scale (NaN or infinity)";
+      !isFinite(def.angularVelocity)) {
+    return "body has a non-finite position, angle or velocity (NaN or infinity)";
   }
   if (std::string error = checkInsideBounds(world.settings.bounds, def.position); !error.empty()) return error;
   if (std::string error = checkBodyMotion(world.settings.inputLimits, def.linearVelocity,
@@ -53,9 +35,8 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
       !error.empty()) {
     return error;
   }
-  if (std::string error = checkDragAndGravityScale(def); !error.empty()) return error;
+  if (std::string error = validateBodyProperties(def.properties); !error.empty()) return error;
   if (static_cast<int>(def.material) >= kMaterialCount) return "unknown material";
-  if (def.isStatic && def.isKinematic) return "a body is static or kinematic, not both";
   if (std::string error = validateMaterialOverride(def.materialOverride); !error.empty()) return error;
   if (world.liveBodies >= world.settings.maxBodies) {
     return "body limit reached (" + std::to_string(world.settings.maxBodies) + " bodies)";
@@ -191,13 +172,8 @@ CreateResult World::createBody(const BodyDef& def) {
   body = Body{};
   body.generation = generation;
   body.alive = true;
-  body.isStatic = def.isStatic;
-  body.isKinematic = def.isKinematic;
-  body.ignoreGravity = def.ignoreGravity;
+  body.properties() = def.properties;
   body.transform = {def.position, Rot::fromAngle(def.angle)};
-  body.linearDrag = def.linearDrag;
-  body.angularDrag = def.angularDrag;
-  body.gravityScale = def.gravityScale;
   ++w.liveBodies;
   for (const ShapeDef& shape : shapeDefsOf(def)) attachShape(w, slot, shape);
   updateBodyMass(w, slot);
@@ -208,7 +184,7 @@ CreateResult World::createBody(const BodyDef& def) {
   body.creationOrder = w.nextCreationOrder++;
   w.forEachShape(slot, [&](std::int32_t s) { createShapeProxy(w, s); });
 
-  if (def.isStatic) {
+  if (def.properties.isStatic) {
     w.forEachShape(slot, [&](std::int32_t s) { wakeBodiesUnder(w, shapeAABB(w, s)); });
   } else {
     body.linearVelocity = def.linearVelocity;
@@ -288,7 +264,7 @@ CreateResult World::createCapsule(const Vec2& center1, const Vec2& center2, Real
 
 CreateResult World::createSegment(const Vec2& point1, const Vec2& point2, const BodyOptions& options) {
   BodyDef def = makeBodyDef(Shape::makeSegment(Vec2::Zero(), point2 - point1), point1, options);
-  def.isStatic = !options.isKinematic;
+  def.properties.isStatic = !options.properties.isKinematic;
   return createBody(def);
 }
 
@@ -304,7 +280,7 @@ CreateResult World::createChain(std::span<const Vec2> points, bool loop, const B
   const Vec2 origin = points.front();
   auto segment = [&](std::size_t i) { return translated(Shape{chain.segments[i]}, -origin); };
   BodyDef def = makeBodyDef(segment(0), origin, options);
-  def.isStatic = !options.isKinematic;
+  def.properties.isStatic = !options.properties.isKinematic;
   for (std::size_t i = 1; i < chain.segments.size(); ++i) {
     def.extraShapes.push_back({segment(i), options.material, options.materialOverride, options.interaction});
   }
@@ -387,13 +363,8 @@ std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
   out.dynamicFriction = first.coefficients.dynamicFriction;
   out.rollingResistance = first.coefficients.rollingResistance;
   out.density = first.coefficients.density;
-  out.isStatic = body->isStatic;
-  out.isKinematic = body->isKinematic;
-  out.ignoreGravity = body->ignoreGravity;
+  out.properties = body->properties();
   out.mass = body->mass;
-  out.linearDrag = body->linearDrag;
-  out.angularDrag = body->angularDrag;
-  out.gravityScale = body->gravityScale;
   return out;
 }
 

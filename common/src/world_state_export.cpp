@@ -43,16 +43,11 @@ BodySlotState exportBody(const WorldData& world, std::int32_t slot) {
   out.angularVelocity = body.angularVelocity;
   out.force = body.force;
   out.torque = body.torque;
-  out.linearDrag = body.linearDrag;
-  out.gravityScale = body.gravityScale;
-  out.angularDrag = body.angularDrag;
+  out.properties = body.properties();
   out.sleepTime = body.sleepTime;
   out.center0 = body.center0;
   out.rotation0 = body.rotation0;
   out.creationOrder = body.creationOrder;
-  out.isStatic = body.isStatic;
-  out.isKinematic = body.isKinematic;
-  out.ignoreGravity = body.ignoreGravity;
   out.awake = body.awake;
   out.contactEdges = edgeKeys(world.contacts, body.contactHead);
   out.jointEdges = edgeKeys(world.joints, body.jointHead);

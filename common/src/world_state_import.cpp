@@ -147,23 +147,20 @@ std::string checkBody(const WorldSettings& settings, const BodySlotState& b) {
       firstOf(checkApplicationPoint(limits, settings.bounds, b.transform.p, "position"),
               checkRotation("rotation", b.transform.q),
               checkBodyMotion(limits, b.linearVelocity, b.angularVelocity),
-              checkRange("linearDrag", b.linearDrag, 0, kMaxRate),
-              checkRange("angularDrag", b.angularDrag, 0, kMaxRate),
-              checkRange("gravityScale", b.gravityScale, -kMaxGravityScale, kMaxGravityScale),
+              validateBodyProperties(b.properties),
               checkRange("sleepTime", b.sleepTime, 0, kMaxSleepTime),
               checkApplicationPoint(limits, settings.bounds, b.center0, "center0"),
               checkRotation("rotation0", b.rotation0));
   if (!error.empty()) return error;
-  if (b.isStatic && b.awake) return "a static body cannot be awake";
-  if (b.isStatic && b.isKinematic) return "a body is static or kinematic, not both";
+  if (b.properties.isStatic && b.awake) return "a static body cannot be awake";
   return {};
 }
 
 // Pending forces within the accelerations InputLimits allow for the mass.
 std::string checkForces(const InputLimits& limits, const BodySlotState& b,
                         const MassProperties& mass) {
-  const double maxForce = b.isStatic ? 0 : double(limits.maxForceAcceleration) * mass.mass;
-  const double maxTorque = b.isStatic ? 0 : double(limits.maxTorqueAcceleration) * mass.inertia;
+  const double maxForce = b.properties.isStatic ? 0 : double(limits.maxForceAcceleration) * mass.mass;
+  const double maxTorque = b.properties.isStatic ? 0 : double(limits.maxTorqueAcceleration) * mass.inertia;
   return firstOf(checkVector("force", b.force, maxForce),
                  checkRange("torque", b.torque, -maxTorque, maxTorque));
 }
@@ -174,17 +171,12 @@ Body buildBody(const BodySlotState& b) {
   Body body;
   body.alive = true;
   body.generation = b.generation;
-  body.isStatic = b.isStatic;
-  body.isKinematic = b.isKinematic;
-  body.ignoreGravity = b.ignoreGravity;
+  body.properties() = b.properties;
   body.transform = b.transform;
   body.linearVelocity = b.linearVelocity;
   body.angularVelocity = b.angularVelocity;
   body.force = b.force;
   body.torque = b.torque;
-  body.linearDrag = b.linearDrag;
-  body.gravityScale = b.gravityScale;
-  body.angularDrag = b.angularDrag;
   body.sleepTime = b.sleepTime;
   body.center0 = b.center0;
   body.rotation0 = b.rotation0;

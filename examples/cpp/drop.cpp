@@ -12,7 +12,7 @@ int main() {
   // A static floor: a 20 m x 1 m slab whose top is at y = 0.
   const std::array<impulse::Vec2, 4> slab = {
       impulse::Vec2(-10, -1), impulse::Vec2(10, -1), impulse::Vec2(10, 0), impulse::Vec2(-10, 0)};
-  const auto floor = world.createPolygon(slab, {.isStatic = true});
+  const auto floor = world.createPolygon(slab, {.properties = {.isStatic = true}});
 
   const auto ball = world.createCircle({-2, 4}, 0.5f, {.material = impulse::Material::Rubber});
   const std::array<impulse::Vec2, 4> crate = {

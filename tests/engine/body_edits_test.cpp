@@ -31,9 +31,7 @@ BodyId addDullGround(World& world) {
 bool mentions(const std::string& text, const std::string& word) { return text.find(word) != std::string::npos; }
 
 BodyType typeOf(const World& world, BodyId id) {
-  const BodyDescription description = world.bodyDescription(id).value();
-  if (description.isStatic) return BodyType::Static;
-  return description.isKinematic ? BodyType::Kinematic : BodyType::Dynamic;
+  return world.bodyDescription(id).value().properties.type();
 }
 
 // Three unit boxes stacked on the box at `base`.
@@ -97,14 +95,14 @@ TEST(BodyType, KinematicKeepsItsVelocityAndPushesWithoutBeingPushed) {
   EXPECT_NEAR(state.position.y(), 0, 1e-6) << "gravity does not act on a kinematic body";
   EXPECT_EQ(state.linearVelocity, Vec2(2, 0));
   EXPECT_GT(stateOf(world, crate).position.x(), 4.9) << "the crate is pushed ahead of it";
-  EXPECT_EQ(world.bodyDescription(pusher)->isKinematic, true);
+  EXPECT_EQ(world.bodyDescription(pusher)->properties.isKinematic, true);
 }
 
 TEST(BodyType, KinematicTurnedDynamicFallsAgain) {
   World world;
   addDullGround(world);
   BodyOptions options;
-  options.isKinematic = true;
+  options.properties.isKinematic = true;
   options.material = kDull;
   const CreateResult platform = world.createCircle(Vec2(0, 4), Real(0.5), options);
   ASSERT_TRUE(platform.ok());

@@ -47,7 +47,7 @@ TEST(ChainCrossing, AFastBodySqueezedIntoAChainStaysInFront) {
   BodyDef plate;
   plate.shape = Shape::makePolygon(makeBox(20, Real(0.5)));
   plate.position = Vec2(0, Real(1.2));
-  plate.isKinematic = true;
+  plate.properties.isKinematic = true;
   plate.linearVelocity = Vec2(0, -6);
   plate.materialOverride = frictionless();
   const CreateResult press = world.createBody(plate);

@@ -41,7 +41,7 @@ ShapeDef boxAt(const Vec2& center, Real halfWidth, Real halfHeight, Real density
 
 BodyId createStaticGround(World& world) {
   BodyOptions ground;
-  ground.isStatic = true;
+  ground.properties.isStatic = true;
   const std::array<Vec2, 4> points{Vec2(-20, -1), Vec2(20, -1), Vec2(20, 0), Vec2(-20, 0)};
   return world.createPolygon(points, ground).id;
 }
@@ -259,7 +259,7 @@ TEST(CompoundBody, SaveAndLoadStepOnBitIdentically) {
 TEST(Kinematic, APlatformCarriesABoxUpAndIsNeverPushed) {
   World world;
   BodyOptions platformOptions;
-  platformOptions.isKinematic = true;
+  platformOptions.properties.isKinematic = true;
   const std::array<Vec2, 4> slab{Vec2(-2, 0), Vec2(2, 0), Vec2(2, Real(0.5)), Vec2(-2, Real(0.5))};
   const CreateResult platform = world.createPolygon(slab, platformOptions);
   ASSERT_TRUE(platform.ok()) << platform.error;
@@ -287,7 +287,7 @@ TEST(Kinematic, APlatformCarriesABoxUpAndIsNeverPushed) {
 TEST(Kinematic, TargetTransformArrivesInOneStep) {
   World world;
   BodyOptions options;
-  options.isKinematic = true;
+  options.properties.isKinematic = true;
   const CreateResult door = world.createCircle(Vec2(0, 0), Real(0.5), options);
   ASSERT_TRUE(door.ok());
   ASSERT_TRUE(world.setTargetTransform(door.id, Vec2(1, Real(0.5)), Real(0.4), kDt).ok());

@@ -23,7 +23,7 @@ struct Dropped {
 // Ground that does not bounce (restitution mixes to the larger of two).
 BodyId addGround(World& world, ShapeInteraction interaction = {}) {
   BodyOptions options;
-  options.isStatic = true;
+  options.properties.isStatic = true;
   options.materialOverride.restitution = 0;
   options.interaction = interaction;
   const Vec2 corners[] = {Vec2(-20, -1), Vec2(20, -1), Vec2(20, 0), Vec2(-20, 0)};
@@ -65,8 +65,8 @@ ShapeInteraction inCategory(std::uint64_t category, std::uint64_t mask) {
 // Options of a sensor body: static, or kinematic.
 BodyOptions sensorBody(bool kinematic = false) {
   BodyOptions options;
-  options.isStatic = !kinematic;
-  options.isKinematic = kinematic;
+  options.properties.isStatic = !kinematic;
+  options.properties.isKinematic = kinematic;
   options.interaction.isSensor = true;
   return options;
 }
@@ -166,7 +166,7 @@ TEST(Sensor, RemovedVisitorEndsItsVisit) {
   CreateResult zone = world.createCircle(Vec2(0, 0), 2, options);
   ASSERT_TRUE(zone.ok());
   BodyOptions floating;
-  floating.ignoreGravity = true;
+  floating.properties.ignoreGravity = true;
   CreateResult coin = world.createCircle(Vec2(1, 0), Real(0.25), floating);
   ASSERT_TRUE(coin.ok());
   world.step(kDt);

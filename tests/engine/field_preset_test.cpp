@@ -21,7 +21,7 @@ namespace {
 std::vector<BodyId> dynamicBodies(const World& world) {
   std::vector<BodyId> ids;
   for (BodyId id : world.bodyIds()) {
-    if (!world.bodyDescription(id)->isStatic) ids.push_back(id);
+    if (!world.bodyDescription(id)->properties.isStatic) ids.push_back(id);
   }
   return ids;
 }

@@ -44,7 +44,7 @@ TEST(MaterialOverride, ZeroRestitutionOnBothBodiesGivesNoBounce) {
   BodyDef floor;
   floor.shape = Shape::makePolygon(makeBox(10, 1));
   floor.position = Vec2(0, -1);
-  floor.isStatic = true;
+  floor.properties.isStatic = true;
   floor.materialOverride.restitution = 0;
   world.createBody(floor);
   BodyId ball = world.createBody(ballDef(Vec2(0, 3), {.restitution = 0})).id;

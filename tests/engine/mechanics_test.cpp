@@ -61,11 +61,11 @@ TEST(Drag, LinearAndAngularDragDecaySpeedExponentially_WhateverTheTickRate) {
     BodyDef def;
     def.shape = Shape::makeCircle(Real(0.5));
     def.position = Vec2(0, 10);
-    def.ignoreGravity = true;
+    def.properties.ignoreGravity = true;
     def.linearVelocity = Vec2(4, 0);
     def.angularVelocity = 6;
-    def.linearDrag = k;
-    def.angularDrag = k;
+    def.properties.linearDrag = k;
+    def.properties.angularDrag = k;
     BodyId id = world.createBody(def).id;
     const double t = 2;
     for (int i = 0; i < static_cast<int>(std::lround(t / dt)); ++i) world.step(dt);

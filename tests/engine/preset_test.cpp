@@ -251,7 +251,7 @@ TEST(Preset8WeightlessCrowd, NothingLeavesTheBox_AndEverythingSettles) {
   LoadedPreset p = load(8);
   ASSERT_EQ(p.dynamic.size(), 21u);
   int weightless = 0;
-  for (BodyId id : p.dynamic) weightless += p.world.bodyDescription(id)->ignoreGravity ? 1 : 0;
+  for (BodyId id : p.dynamic) weightless += p.world.bodyDescription(id)->properties.ignoreGravity ? 1 : 0;
   EXPECT_EQ(weightless, 20);
   // How far each ball reaches past the walls, floor or ceiling (negative
   // while clear of them).

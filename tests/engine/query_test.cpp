@@ -22,7 +22,7 @@ const Real kSqrt2 = std::sqrt(Real(2));
 
 BodyOptions staticOptions() {
   BodyOptions options;
-  options.isStatic = true;
+  options.properties.isStatic = true;
   return options;
 }
 
@@ -32,7 +32,7 @@ BodyId createStatic(World& world, const Shape& shape, const Vec2& position, Real
   def.shape = shape;
   def.position = position;
   def.angle = angle;
-  def.isStatic = true;
+  def.properties.isStatic = true;
   def.interaction = interaction;
   CreateResult created = world.createBody(def);
   EXPECT_TRUE(created.ok()) << created.error;

@@ -37,7 +37,7 @@ std::vector<BodyId> dynamicBodies(const World& world) {
   std::vector<BodyId> ids;
   for (BodyId id : world.bodyIds()) {
     const BodyDescription body = *world.bodyDescription(id);
-    if (!body.isStatic && !body.isKinematic) ids.push_back(id);
+    if (body.properties.isDynamic()) ids.push_back(id);
   }
   return ids;
 }

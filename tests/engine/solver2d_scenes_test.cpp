@@ -37,7 +37,7 @@ BodyId addSolver2DCircle(World& world, Vec2 center, Real radius, Real density, R
   BodyDef def;
   def.shape = Shape::makeCircle(radius);
   def.position = center;
-  def.isStatic = isStatic;
+  def.properties.isStatic = isStatic;
   def.materialOverride = solver2DMaterial(density, friction);
   CreateResult result = world.createBody(def);
   EXPECT_TRUE(result.ok()) << result.error;
@@ -57,7 +57,7 @@ TEST(Solver2D, WarmStartEnergy_RemovingTheHeavyCircleLaunchesNothing) {
   ASSERT_TRUE(
       world
           .createSegment(Vec2(-10, 0), Vec2(10, 0),
-                         {.isStatic = true, .materialOverride = solver2DMaterial(1, Real(0.6))})
+                         {.properties = {.isStatic = true}, .materialOverride = solver2DMaterial(1, Real(0.6))})
           .ok());
   const std::vector<BodyId> light = {
       addSolver2DCircle(world, Vec2(0, Real(0.5)), Real(0.5), 1, Real(0.6)),

@@ -51,7 +51,7 @@ void buildJointGrid(World& world) {
     for (int column = 0; column < kSide; ++column) {
       const bool pinned = row == 0 && (column == 0 || column == kSide - 1);
       bodies[std::size_t(row * kSide + column)] =
-          world.createCircle(Vec2(Real(column) - 30, 40 - Real(row)), Real(0.4), {.isStatic = pinned}).id;
+          world.createCircle(Vec2(Real(column) - 30, 40 - Real(row)), Real(0.4), {.properties = {.isStatic = pinned}}).id;
     }
   }
   auto join = [&](int a, int b) {

@@ -272,7 +272,7 @@ WorldState pileState(World& world) {
 
 std::int32_t firstDynamicSlot(const WorldState& state) {
   for (std::size_t slot = 0; slot < state.bodies.size(); ++slot) {
-    if (state.bodies[slot].alive && !state.bodies[slot].isStatic) return std::int32_t(slot);
+    if (state.bodies[slot].alive && !state.bodies[slot].properties.isStatic) return std::int32_t(slot);
   }
   return -1;
 }

@@ -64,8 +64,8 @@ BodyId addBody(World& world, const Shape& shape, const Spec& spec, Real angle = 
   def.position = spec.center;
   def.angle = angle;
   def.material = spec.material;
-  def.isStatic = spec.isStatic;
-  def.ignoreGravity = spec.ignoreGravity;
+  def.properties.isStatic = spec.isStatic;
+  def.properties.ignoreGravity = spec.ignoreGravity;
   def.linearVelocity = spec.velocity;
   def.angularVelocity = spec.angularVelocity;
   CreateResult result = world.createBody(def);
@@ -143,7 +143,7 @@ inline std::vector<BodyId> dynamicBodies(const World& world) {
   std::vector<BodyId> ids;
   for (BodyId id : world.bodyIds()) {
     std::optional<BodyDescription> d = world.bodyDescription(id);
-    if (d && !d->isStatic) ids.push_back(id);
+    if (d && !d->properties.isStatic) ids.push_back(id);
   }
   return ids;
 }

@@ -32,7 +32,7 @@ std::vector<std::uint32_t> buildSettlingScene(World& world, double stagger) {
   auto addWall = [&](Vec2 lower, Vec2 upper) {
     const std::array<Vec2, 4> corners = {lower, Vec2(upper.x(), lower.y()), upper,
                                          Vec2(lower.x(), upper.y())};
-    world.createPolygon(corners, {.isStatic = true});
+    world.createPolygon(corners, {.properties = {.isStatic = true}});
   };
   addWall(Vec2(-1, -1), Vec2(25, 0));
   addWall(Vec2(-1, 0), Vec2(0, 20));

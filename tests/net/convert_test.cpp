@@ -60,7 +60,7 @@ TEST(Convert, OptionsAreCheckedFieldByField) {
   const auto decoded = optionsFromWire(options);
   ASSERT_TRUE(decoded.ok()) << decoded.error;
   EXPECT_EQ(decoded.value->material, Material::Metal);
-  EXPECT_TRUE(decoded.value->isStatic);
+  EXPECT_TRUE(decoded.value->properties.isStatic);
   EXPECT_EQ(decoded.value->linearVelocity.x(), 2.0f);
 
   options.set_material(static_cast<v1::Material>(9));
@@ -76,7 +76,7 @@ TEST(Convert, PerBodyPropertiesDecodeAndNameTheirField) {
   ASSERT_TRUE(plain.ok()) << plain.error;
   EXPECT_FALSE(plain.value->materialOverride.density) << "unset: the material's";
   EXPECT_FALSE(plain.value->materialOverride.staticFriction);
-  EXPECT_EQ(plain.value->gravityScale, 1);
+  EXPECT_EQ(plain.value->properties.gravityScale, 1);
 
   options.set_density(250);
   options.set_friction(0.5);
@@ -91,9 +91,9 @@ TEST(Convert, PerBodyPropertiesDecodeAndNameTheirField) {
   EXPECT_EQ(o.staticFriction, 0.5f) << "friction sets both";
   EXPECT_EQ(o.dynamicFriction, 0.5f);
   EXPECT_EQ(o.restitution, 0.25f);
-  EXPECT_EQ(given.value->linearDrag, 2.0f);
-  EXPECT_EQ(given.value->angularDrag, 3.0f);
-  EXPECT_EQ(given.value->gravityScale, 0.0f) << "set to 0, not the unset 1";
+  EXPECT_EQ(given.value->properties.linearDrag, 2.0f);
+  EXPECT_EQ(given.value->properties.angularDrag, 3.0f);
+  EXPECT_EQ(given.value->properties.gravityScale, 0.0f) << "set to 0, not the unset 1";
 
   options.set_gravity_scale(std::numeric_limits<double>::infinity());
   EXPECT_EQ(optionsFromWire(options).error, "options.gravity_scale is not a finite number");
@@ -111,9 +111,9 @@ TEST(Convert, DescriptorCarriesThePropertiesInForce) {
   description.restitution = 0.75f;
   description.staticFriction = 0.5f;
   description.dynamicFriction = 0.25f;
-  description.linearDrag = 1.5f;
-  description.angularDrag = 0.125f;
-  description.gravityScale = -2;
+  description.properties.linearDrag = 1.5f;
+  description.properties.angularDrag = 0.125f;
+  description.properties.gravityScale = -2;
   v1::BodyDescriptor descriptor;
   toWire(description, &descriptor);
   EXPECT_EQ(descriptor.material(), v1::GLASS);

@@ -135,7 +135,7 @@ TEST(QuantizedPrediction, DeadZone_SendsNothingWithinAQuantum_ElseTheNearestQuan
 World fallingWorld() {
   World world;
   const std::array<Vec2, 4> ground = {Vec2(-20, -1), Vec2(20, -1), Vec2(20, 0), Vec2(-20, 0)};
-  world.createPolygon(ground, {.isStatic = true});
+  world.createPolygon(ground, {.properties = {.isStatic = true}});
   for (int i = 0; i < 30; ++i) {
     world.createCircle(Vec2(Real(-15 + i), Real(1 + (i % 5) * 0.7)), Real(0.3));
   }

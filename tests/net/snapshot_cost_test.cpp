@@ -1,6 +1,6 @@
 // Cost of serving 2000 bodies: tick time and snapshot bytes per body while
 // they fall and pile up (awake), then once they all sleep. Prints the
-// measurements (quoted in docs/server.md) and checks their bounds.
+// measurements (quoted in docs/measurements.md) and checks their bounds.
 #include <cstdio>
 
 #include "net_test_support.h"

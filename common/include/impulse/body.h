@@ -117,6 +117,55 @@ inline constexpr int kMaxShapesPerBody = 1024;
 inline constexpr int kShapesPerBodyOfLimit = 4;
 inline constexpr Real kMaxBodyExtent = 50;
 
+/// A body's own properties: its type and how gravity and air act on it
+/// (the material belongs to its shapes, the motion to its state). Declared
+/// once: BodyOptions and BodyDef hold the ones a body is made with,
+/// BodyDescription the ones it has, and a saved scene's body slot the ones it
+/// had; each copies them whole.
+struct BodyProperties {
+  bool isStatic = false;
+  /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
+  /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
+  bool isKinematic = false;
+  bool ignoreGravity = false;
+  /// Air drag rates in 1/s: dv/dt = -linearDrag * v, exact over any dt.
+  Real linearDrag = 0;
+  Real angularDrag = 0;
+  /// The body feels gravityScale * gravity (unless ignoreGravity).
+  Real gravityScale = 1;
+
+  bool isDynamic() const { return !isStatic && !isKinematic; }
+  BodyType type() const { return isStatic ? BodyType::Static : isKinematic ? BodyType::Kinematic : BodyType::Dynamic; }
+  void setType(BodyType type) {
+    isStatic = type == BodyType::Static;
+    isKinematic = type == BodyType::Kinematic;
+  }
+  friend bool operator==(const BodyProperties&, const BodyProperties&) = default;
+};
+
+/// Ranges of the per-body properties that the material table does not hold.
+inline constexpr Real kMaxDrag = 1000;         ///< 1/s, linear and angular
+inline constexpr Real kMaxGravityScale = 10;   ///< |gravityScale|
+
+/// Empty when the properties are consistent (not static and kinematic at
+/// once) and every number is finite and in its range, else what is wrong.
+std::string validateBodyProperties(const BodyProperties& properties);
+
+/// A body created from user-facing input (wire commands, tools): validated
+/// fully before anything changes.
+struct BodyOptions {
+  Material material = Material::Solid;
+  BodyProperties properties{};
+  /// False: the body starts asleep (BodyDef::isAwake).
+  bool isAwake = true;
+  Vec2 linearVelocity = Vec2::Zero();
+  Real angularVelocity = 0;
+  /// Per-body coefficients replacing the material's (unset: the material's).
+  MaterialOverride materialOverride{};
+  /// Every shape's filter, sensor flag and events.
+  ShapeInteraction interaction{};
+};
+
 /// Everything needed to create a body. Its shapes are given in a frame whose
 /// origin is `position`, turned by `angle`; the body's centre of mass is the
 /// union's centroid, and the shapes are kept relative to it. A body of one
@@ -134,47 +183,12 @@ struct BodyDef {
   MaterialOverride materialOverride;
   /// The first shape's filter, sensor flag and events.
   ShapeInteraction interaction;
-  bool isStatic = false;
-  /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
-  /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
-  bool isKinematic = false;
+  BodyProperties properties;
   /// False: the body starts asleep (b2BodyDef::isAwake). It keeps still,
   /// costing nothing per step, until something touches it, a push or a
   /// joint wakes it, or the world changes (gravity, a field). Static bodies
   /// are never awake.
   bool isAwake = true;
-  bool ignoreGravity = false;
-  /// Air drag rates in 1/s: dv/dt = -linearDrag * v, exact over any dt.
-  Real linearDrag = 0;
-  Real angularDrag = 0;
-  /// The body feels gravityScale * gravity (unless ignoreGravity).
-  Real gravityScale = 1;
-};
-
-/// Ranges of the per-body properties that the material table does not hold.
-inline constexpr Real kMaxDrag = 1000;         ///< 1/s, linear and angular
-inline constexpr Real kMaxGravityScale = 10;   ///< |gravityScale|
-
-/// A body created from user-facing input (wire commands, tools): validated
-/// fully before anything changes.
-struct BodyOptions {
-  Material material = Material::Solid;
-  bool isStatic = false;
-  /// Moved only by its velocity (setVelocity, setTargetTransform): infinite
-  /// mass, no gravity, forces or drag; pushes dynamic bodies, never pushed.
-  bool isKinematic = false;
-  /// False: the body starts asleep (BodyDef::isAwake).
-  bool isAwake = true;
-  bool ignoreGravity = false;
-  Vec2 linearVelocity = Vec2::Zero();
-  Real angularVelocity = 0;
-  Real linearDrag = 0;
-  Real angularDrag = 0;
-  /// Per-body coefficients replacing the material's (unset: the material's).
-  MaterialOverride materialOverride{};
-  Real gravityScale = 1;
-  /// Every shape's filter, sensor flag and events.
-  ShapeInteraction interaction{};
 };
 
 /// The definition of a body of `shape` (local to its centroid) whose
@@ -208,24 +222,20 @@ struct ShapeDescription {
   ShapeInteraction interaction;
 };
 
-/// What does not change over a body's life. The shape, material and
-/// coefficients are its first shape's; `shapes` lists every shape.
+/// What does not change over a body's life but by an edit. The shape,
+/// material and coefficients are its first shape's; `shapes` lists every
+/// shape.
 struct BodyDescription {
   BodyId id;
   Shape shape;
   Material material = Material::Solid;
-  bool isStatic = false;
-  bool isKinematic = false;
-  bool ignoreGravity = false;
+  BodyProperties properties;
   MassProperties mass;  ///< zero mass and inertia for static bodies
   Real restitution = 0;
   Real staticFriction = 0;
   Real dynamicFriction = 0;
   Real rollingResistance = 0;
   Real density = 0;  ///< kg/m^2, the one the mass came from
-  Real linearDrag = 0;
-  Real angularDrag = 0;
-  Real gravityScale = 1;
   std::vector<ShapeDescription> shapes;
 };
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "impulse/body.h"
 #include "impulse/broad_phase.h"
 #include "impulse/field_kinds.h"
 #include "impulse/joint.h"
@@ -83,17 +84,12 @@ struct BodySlotState {
   /// Forces applied for the next step.
   Vec2 force = Vec2::Zero();
   Real torque = 0;
-  Real linearDrag = 0;
-  Real angularDrag = 0;
-  Real gravityScale = 1;
+  BodyProperties properties;
   Real sleepTime = 0;
   /// Pose at the start of the last step.
   Vec2 center0 = Vec2::Zero();
   Rot rotation0;
   std::uint64_t creationOrder = 0;
-  bool isStatic = false;
-  bool isKinematic = false;
-  bool ignoreGravity = false;
   bool awake = false;
   /// Edge keys (element * 2 + side) of the body's contact and joint lists,
   /// head first.

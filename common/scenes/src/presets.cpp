@@ -26,7 +26,7 @@ constexpr Real kAirDrag = Real(0.25);
 
 void addStaticBox(World& world, Vec2 lower, Vec2 upper) {
   std::array<Vec2, 4> corners = {lower, Vec2(upper.x(), lower.y()), upper, Vec2(lower.x(), upper.y())};
-  world.createPolygon(corners, {.isStatic = true});
+  world.createPolygon(corners, {.properties = {.isStatic = true}});
 }
 
 /// Floor and two side walls, centred on the canvas edges as in the seed.
@@ -59,11 +59,11 @@ struct Ramp {
 void addRamp(World& world, const Ramp& ramp) {
   std::array<Vec2, 3> corners = {Vec2(ramp.left, ramp.base), Vec2(ramp.left + ramp.length, ramp.base),
                                  Vec2(ramp.left, ramp.base + ramp.height)};
-  world.createPolygon(corners, {.isStatic = true});
+  world.createPolygon(corners, {.properties = {.isStatic = true}});
 }
 
 BodyOptions ballOptions(Material material) {
-  return {.material = material, .linearDrag = kAirDrag, .angularDrag = kAirDrag};
+  return {.material = material, .properties = {.linearDrag = kAirDrag, .angularDrag = kAirDrag}};
 }
 
 /// A ball resting on the ramp, `along` metres from its top end.
@@ -113,8 +113,8 @@ PresetInfo valleyPreset(World& world) {
                               Vec2(kBorder, kFloor + height)};
   std::array<Vec2, 3> rightSide = {Vec2(Real(13.5), kFloor), Vec2(right, kFloor),
                                    Vec2(right, kFloor + height)};
-  world.createPolygon(left, {.isStatic = true});
-  world.createPolygon(rightSide, {.isStatic = true});
+  world.createPolygon(left, {.properties = {.isStatic = true}});
+  world.createPolygon(rightSide, {.properties = {.isStatic = true}});
   addBallOnRamp(world, Ramp{kFloor, height, Real(11.5) - kBorder}, Real(1.0), Material::Solid);
   return {2,
           "Valley",
@@ -213,7 +213,7 @@ PresetInfo weightlessCrowd(World& world) {
     for (int column = 0; column < 5; ++column) {
       Vec2 centre(Real(6 + 3 * column + (row % 2)), Real(2 + 1.6 * row));
       world.createCircle(centre, radius,
-                         {.ignoreGravity = true, .linearDrag = Real(0.5), .angularDrag = Real(0.5)});
+                         {.properties = {.ignoreGravity = true, .linearDrag = Real(0.5), .angularDrag = Real(0.5)}});
     }
   }
   world.createCircle(Vec2(Real(11.5), Real(14.5)), Real(3.125), ballOptions(Material::Solid));
@@ -379,7 +379,7 @@ void addBumps(World& world) {
     const Real x = 10 + Real(2.5) * Real(i);
     const Real h = i % 2 == 0 ? Real(0.25) : Real(0.4);
     std::array<Vec2, 3> bump = {Vec2(x, kFloor), Vec2(x + 2, kFloor), Vec2(x + 1, kFloor + h)};
-    world.createPolygon(bump, {.isStatic = true});
+    world.createPolygon(bump, {.properties = {.isStatic = true}});
   }
 }
 
@@ -433,7 +433,7 @@ PresetInfo carPreset(World& world) {
 PresetInfo orbitsPreset(World& world) {
   world.setGravity(Vec2::Zero());
   const Vec2 centre = kSceneSize / 2;
-  const BodyId sun = world.createCircle(centre, kSunRadius, {.material = Material::Metal, .isStatic = true}).id;
+  const BodyId sun = world.createCircle(centre, kSunRadius, {.material = Material::Metal, .properties = {.isStatic = true}}).id;
   // A static body pulls with its area times density.
   const Real sunMass = world.bodyDescription(sun)->mass.area * materialProperties(Material::Metal).density;
   world.addField(makeGravitation({kOrbitConstant}).field);

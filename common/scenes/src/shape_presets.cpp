@@ -71,7 +71,7 @@ Real elevatorHeight(double time) {
 PresetInfo elevatorPreset(World& world) {
   addBoundary(world);
   const Real x = kSceneCentre.x();
-  BodyOptions platformOptions{.material = Material::Metal, .isKinematic = true};
+  BodyOptions platformOptions{.material = Material::Metal, .properties = {.isKinematic = true}};
   const std::array<Vec2, 4> slab{Vec2(x - kElevatorHalfWidth, kElevatorLow - Real(0.25)),
                                  Vec2(x + kElevatorHalfWidth, kElevatorLow - Real(0.25)),
                                  Vec2(x + kElevatorHalfWidth, kElevatorLow + Real(0.25)),
@@ -227,7 +227,7 @@ PresetInfo ragdollStairsPreset(World& world) {
   for (int i = 0; i < 3; ++i) addRagdoll(world, Vec2(Real(1.3) + Real(0.9) * Real(i), topStep + Real(1.2) + Real(i)));
   // A push to send them over the edge.
   for (BodyId id : world.bodyIds()) {
-    if (!world.bodyDescription(id)->isStatic) world.setVelocity(id, Vec2(3, 0), 0);
+    if (!world.bodyDescription(id)->properties.isStatic) world.setVelocity(id, Vec2(3, 0), 0);
   }
   return {21,
           "Ragdolls on stairs",

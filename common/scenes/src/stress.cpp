@@ -19,7 +19,7 @@ void addGround(World& world, Real halfWidth) {
   BodyDef ground;
   ground.shape = Shape::makePolygon(makeBox(halfWidth, 1));
   ground.position = Vec2(0, -1);
-  ground.isStatic = true;
+  ground.properties.isStatic = true;
   world.createBody(ground);
 }
 
@@ -68,7 +68,7 @@ std::vector<BodyId> buildRain(World& world, int count, Real radius) {
   const Real wallHeight = width;
   auto addWall = [&](Vec2 lower, Vec2 upper) {
     std::array<Vec2, 4> corners = {lower, Vec2(upper.x(), lower.y()), upper, Vec2(lower.x(), upper.y())};
-    world.createPolygon(corners, {.isStatic = true});
+    world.createPolygon(corners, {.properties = {.isStatic = true}});
   };
   widenBounds(world, width, 4 * width + Real(count) * radius);
   addWall(Vec2(-width / 2 - 1, -1), Vec2(width / 2 + 1, 0));

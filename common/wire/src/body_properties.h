@@ -2,18 +2,21 @@
 // A body's properties described once, for every message that carries them.
 // Scenes, snapshots, body queries and spawn options are written and read
 // from these rows, so a new property is a row here (with its proto fields
-// and its engine member) instead of a line in each converter.
+// and its member of impulse::BodyProperties) instead of a line in each
+// converter.
 
 #include <string>
 #include <string_view>
 #include <utility>
 
+#include "impulse/body.h"
 #include "impulse/wire/convert.h"
 
-// A body's own properties, one row each: the engine member (the same name in
-// BodyOptions, BodyDescription and the scene's BodySlotState), its field in
-// the commands and snapshots (BodyOptions, BodyDescriptor, BodyInfo), its
-// field in a SceneBody, and what a message without the field means.
+// A body's own properties, one row each: the member of impulse::BodyProperties
+// (which BodyOptions, BodyDescription and the scene's BodySlotState hold
+// whole), its field in the commands and snapshots (BodyOptions,
+// BodyDescriptor, BodyInfo), its field in a SceneBody, and what a message
+// without the field means.
 // clang-format off
 #define IMPULSE_BODY_PROPERTIES(ROW)                           \
   ROW(isStatic,      is_static,       is_static,      false)   \
@@ -39,8 +42,8 @@ namespace impulse::wire {
 
 /// Writes the body properties into a snapshot message, each that the
 /// message has a field for (a BodyInfo's flags are in its descriptor).
-template <class Engine, class Message>
-void putBodyProperties(const Engine& in, Message& out) {
+template <class Message>
+void putBodyProperties(const BodyProperties& in, Message& out) {
 #define IMPULSE_PUT_PROPERTY(member, field, sceneField, fallback) \
   if constexpr (requires { out.set_##field(in.member); }) out.set_##field(in.member);
   IMPULSE_BODY_PROPERTIES(IMPULSE_PUT_PROPERTY)
@@ -48,8 +51,8 @@ void putBodyProperties(const Engine& in, Message& out) {
 }
 
 /// Writes every body property into a SceneBody: a scene carries them all.
-template <class Engine, class Message>
-void putSceneBodyProperties(const Engine& in, Message& out) {
+template <class Message>
+void putSceneBodyProperties(const BodyProperties& in, Message& out) {
 #define IMPULSE_PUT_SCENE_PROPERTY(member, field, sceneField, fallback) out.set_##sceneField(in.member);
   IMPULSE_BODY_PROPERTIES(IMPULSE_PUT_SCENE_PROPERTY)
 #undef IMPULSE_PUT_SCENE_PROPERTY
@@ -57,8 +60,8 @@ void putSceneBodyProperties(const Engine& in, Message& out) {
 
 /// Reads every body property from a SceneBody; an optional field left out
 /// means the row's value.
-template <class Message, class Engine>
-void getSceneBodyProperties(const Message& in, Engine& out) {
+template <class Message>
+void getSceneBodyProperties(const Message& in, BodyProperties& out) {
 #define IMPULSE_GET_SCENE_PROPERTY(member, field, sceneField, fallback)        \
   if constexpr (requires { in.has_##sceneField(); }) {                       \
     out.member = in.has_##sceneField() ? in.sceneField() : decltype(out.member)(fallback); \
@@ -93,8 +96,8 @@ inline std::string readProperty(bool present, double value, std::string_view wha
 
 /// Reads every body property from a spawn's BodyOptions: the error naming
 /// the first field that is not a finite number, or empty.
-template <class Message, class Engine>
-std::string getOptionProperties(const Message& in, Engine& out) {
+template <class Message>
+std::string getOptionProperties(const Message& in, BodyProperties& out) {
 #define IMPULSE_GET_OPTION(member, field, sceneField, fallback)                                       \
   {                                                                                                    \
     bool present = true;                                                                               \

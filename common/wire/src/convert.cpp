@@ -89,7 +89,7 @@ void toWire(const BodyDescription& description, v1::BodyDescriptor* out) {
   out->set_id(description.id.value);
   toWire(description.shape, out->mutable_shape());
   out->set_material(toWire(description.material));
-  putBodyProperties(description, *out);
+  putBodyProperties(description.properties, *out);
   putCoefficients(description, *out);
   for (std::size_t i = 1; i < description.shapes.size(); ++i) {
     toWire(description.shapes[i].shape, out->add_extra_shapes());
@@ -143,7 +143,7 @@ void toWire(const BodyDescription& description, const BodyState& state, v1::Body
   out->set_mass(description.mass.mass);
   out->set_inertia(description.mass.inertia);
   out->set_area(description.mass.area);
-  putBodyProperties(description, *out);
+  putBodyProperties(description.properties, *out);
   putCoefficients(description, *out);
 }
 
@@ -233,7 +233,7 @@ Decoded<BodyOptions> optionsFromWire(const v1::BodyOptions& options) {
   if (!angular.ok()) return Decoded<BodyOptions>::failure(std::move(angular.error));
   result.angularVelocity = *angular.value;
   for (std::string error :
-       {getOptionProperties(options, result), overridesFromWire(options, result.materialOverride)}) {
+       {getOptionProperties(options, result.properties), overridesFromWire(options, result.materialOverride)}) {
     if (!error.empty()) return Decoded<BodyOptions>::failure(std::move(error));
   }
   result.interaction = shapeFlagsFromWire(options.shape_flags());

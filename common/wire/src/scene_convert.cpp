@@ -185,7 +185,7 @@ void putBody(const BodySlotState& in, v1::SceneBody& out) {
   if (!in.alive) return;
   for (std::int32_t shape : in.shapes) out.add_shapes(shape);
   IMPULSE_BODY_FIELDS(IMPULSE_PUT_FIELD)
-  putSceneBodyProperties(in, out);
+  putSceneBodyProperties(in.properties, out);
   for (std::int32_t key : in.contactEdges) out.add_contact_edges(key);
   for (std::int32_t key : in.jointEdges) out.add_joint_edges(key);
 }
@@ -329,7 +329,7 @@ std::string getBody(const v1::SceneBody& in, BodySlotState& out) {
   if (!out.alive) return {};
   out.shapes.assign(in.shapes().begin(), in.shapes().end());
   IMPULSE_BODY_FIELDS(IMPULSE_GET_FIELD)
-  getSceneBodyProperties(in, out);
+  getSceneBodyProperties(in, out.properties);
   out.contactEdges.assign(in.contact_edges().begin(), in.contact_edges().end());
   out.jointEdges.assign(in.joint_edges().begin(), in.joint_edges().end());
   return {};
