@@ -202,9 +202,24 @@ void Predictor::acknowledge(const v1::Snapshot& snapshot) {
   // A stamp the server refused on arrival is never listed: once past the
   // server's bound it can no longer be applied.
   const std::uint64_t bound = client_.welcome().max_input_delay_ticks();
+  for (const Command& command : pending_) {
+    if (command.requestId <= applied) rememberTarget(command.message);
+  }
   std::erase_if(pending_, [&](const Command& command) {
     return command.requestId <= applied || command.forTick + bound < snapshot.tick();
   });
+}
+
+void Predictor::rememberTarget(const v1::ClientMessage& message) {
+  if (!message.has_update_joint() || !message.update_joint().has_target()) return;
+  const std::uint32_t tag = message.update_joint().joint_tag();
+  const auto joint = tag != 0 ? taggedJoint(tag) : std::optional(message.update_joint().joint_id());
+  if (joint) targets_[*joint] = byJointId(message, *joint);
+}
+
+void Predictor::restoreTargets() {
+  std::erase_if(targets_, [&](const auto& entry) { return !local_->localJoint(entry.first); });
+  for (const auto& [joint, update] : targets_) local_->apply(update, dt_);
 }
 
 void Predictor::rewindTo(std::uint64_t tick) {
@@ -219,6 +234,7 @@ void Predictor::rewindTo(std::uint64_t tick) {
     local_->takeStates(mirror);
   } else {
     local_->rebuild(mirror);
+    restoreTargets();
     ++rebuilds_;
   }
   history_.clear();

@@ -157,6 +157,11 @@ class Predictor {
   void takeSnapshot(const v1::Snapshot& snapshot);
   /// Forgets the commands the snapshot holds.
   void acknowledge(const v1::Snapshot& snapshot);
+  /// A mouse joint's target the server applied: a snapshot describes the
+  /// joint with the target it was made with, so a copy rebuilt from the
+  /// mirror takes the latest one again (restoreTargets).
+  void rememberTarget(const v1::ClientMessage& message);
+  void restoreTargets();
   /// The copy at `tick` with the server's states: its own older state when
   /// it kept one that still describes the room, else rebuilt from the mirror.
   void rewindTo(std::uint64_t tick);
@@ -189,6 +194,8 @@ class Predictor {
     std::uint32_t bodyA = 0;
   };
   std::map<std::uint32_t, TaggedJoint> tags_;
+  /// Server joint id -> the last UpdateJoint with a target the server applied.
+  std::map<std::uint32_t, v1::ClientMessage> targets_;
   static constexpr std::size_t kKeptTags = 64;
   std::uint64_t tick_ = 0;
   std::uint64_t snapshotsSeen_ = 0;
