@@ -235,9 +235,23 @@ void Client::handle(v1::ServerMessage&& message, std::size_t frameBytes) {
       failure_ = "server error: " + message.error().message();
       return;
     default:
+      remember(message);
       replies_[replyId(message)] = std::move(message);
       return;
   }
+}
+
+void Client::remember(const v1::ServerMessage& reply) {
+  if (!reply.has_command_result()) return;
+  const v1::CommandResult& result = reply.command_result();
+  if (result.body_id() == 0 && result.joint_id() == 0) return;
+  created_[result.request_id()] = Created{result.body_id(), result.joint_id()};
+  if (created_.size() > kKeptCreations) created_.erase(created_.begin());
+}
+
+std::optional<Client::Created> Client::created(std::uint64_t requestId) const {
+  const auto it = created_.find(requestId);
+  return it == created_.end() ? std::nullopt : std::optional(it->second);
 }
 
 std::optional<v1::ServerMessage> Client::awaitReply(std::uint64_t requestId, Duration timeout) {

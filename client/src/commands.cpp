@@ -340,6 +340,35 @@ v1::ClientMessage removeJoint(std::uint32_t joint) {
   return message;
 }
 
+v1::ClientMessage tagJoint(v1::ClientMessage createJoint, std::uint32_t tag) {
+  createJoint.mutable_create_joint()->set_tag(tag);
+  return createJoint;
+}
+
+namespace {
+
+/// An UpdateJoint or RemoveJoint naming its joint by `id` or by `tag`.
+v1::ClientMessage namingJoint(v1::ClientMessage jointCommand, std::uint32_t id, std::uint32_t tag) {
+  if (jointCommand.has_update_joint()) {
+    jointCommand.mutable_update_joint()->set_joint_id(id);
+    jointCommand.mutable_update_joint()->set_joint_tag(tag);
+  } else {
+    jointCommand.mutable_remove_joint()->set_joint_id(id);
+    jointCommand.mutable_remove_joint()->set_joint_tag(tag);
+  }
+  return jointCommand;
+}
+
+}  // namespace
+
+v1::ClientMessage byJointTag(v1::ClientMessage jointCommand, std::uint32_t tag) {
+  return namingJoint(std::move(jointCommand), 0, tag);
+}
+
+v1::ClientMessage byJointId(v1::ClientMessage jointCommand, std::uint32_t joint) {
+  return namingJoint(std::move(jointCommand), joint, 0);
+}
+
 v1::ClientMessage queryJoint(std::uint32_t joint) {
   v1::ClientMessage message;
   message.mutable_query_joint()->set_joint_id(joint);

@@ -55,6 +55,7 @@ void LocalWorld::rebuild(const WorldMirror& mirror) {
   world_ = World(settings_);
   bodies_.clear();
   joints_.clear();
+  forgetPredictions();
   world_.setGravity(mirror.gravity());
   for (const auto& [id, body] : mirror.bodies()) {
     // A body this world refuses (its limits are the server's, so none
@@ -80,7 +81,13 @@ void LocalWorld::rebuild(const WorldMirror& mirror) {
   }
 }
 
+void LocalWorld::forgetPredictions() {
+  spawns_.clear();
+  taggedJoints_.clear();
+}
+
 void LocalWorld::takeStates(const WorldMirror& mirror) {
+  forgetPredictions();
   for (const auto& [id, local] : bodies_) {
     const MirrorBody* body = mirror.find(BodyId{id});
     if (!body || body->isStatic) continue;
@@ -102,6 +109,23 @@ std::optional<BodyId> LocalWorld::localBody(std::uint32_t serverBody) const {
 std::optional<JointId> LocalWorld::localJoint(std::uint32_t serverJoint) const {
   const auto it = joints_.find(serverJoint);
   return it == joints_.end() ? std::nullopt : std::optional(it->second);
+}
+
+std::optional<BodyId> LocalWorld::localSpawn(std::uint64_t requestId) const {
+  const auto it = spawns_.find(requestId);
+  return it == spawns_.end() ? std::nullopt : std::optional(it->second);
+}
+
+std::optional<JointId> LocalWorld::namedJoint(std::uint32_t serverJoint, std::uint32_t tag) const {
+  if (tag == 0) return localJoint(serverJoint);
+  const auto it = taggedJoints_.find(tag);
+  return it == taggedJoints_.end() ? std::nullopt : std::optional(it->second);
+}
+
+bool LocalWorld::spawned(const CreateResult& made, std::uint64_t requestId) {
+  if (!made.ok()) return false;
+  if (requestId != 0) spawns_[requestId] = made.id;
+  return true;
 }
 
 bool LocalWorld::predictsKind(const v1::ClientMessage& message) {
@@ -130,7 +154,7 @@ std::optional<std::uint32_t> LocalWorld::namedBody(const v1::ClientMessage& mess
   }
 }
 
-bool LocalWorld::apply(const v1::ClientMessage& message, Real dt) {
+bool LocalWorld::apply(const v1::ClientMessage& message, Real dt, std::uint64_t requestId) {
   const auto named = namedBody(message);
   const auto body = named ? localBody(*named) : std::nullopt;
   if (named && !body) return false;
@@ -157,7 +181,7 @@ bool LocalWorld::apply(const v1::ClientMessage& message, Real dt) {
       const auto center = wire::vecFromWire(spawn.center(), "center");
       const auto options = wire::optionsFromWire(spawn.options());
       return center.ok() && options.ok() &&
-             world_.createCircle(*center.value, Real(spawn.radius()), *options.value).ok();
+             spawned(world_.createCircle(*center.value, Real(spawn.radius()), *options.value), requestId);
     }
     case v1::ClientMessage::kSpawnPolygon: {
       std::vector<Vec2> points;
@@ -167,7 +191,7 @@ bool LocalWorld::apply(const v1::ClientMessage& message, Real dt) {
         points.push_back(*point.value);
       }
       const auto options = wire::optionsFromWire(message.spawn_polygon().options());
-      return options.ok() && world_.createPolygon(points, *options.value).ok();
+      return options.ok() && spawned(world_.createPolygon(points, *options.value), requestId);
     }
     default:
       return applyJoint(message);
@@ -184,15 +208,19 @@ bool LocalWorld::applyJoint(const v1::ClientMessage& message) {
       if (!bodyA || !bodyB) return false;
       def.value->bodyA = *bodyA;
       def.value->bodyB = *bodyB;
-      return world_.createJoint(*def.value).ok();
+      const JointResult made = world_.createJoint(*def.value);
+      if (made.ok() && message.create_joint().tag() != 0) taggedJoints_[message.create_joint().tag()] = made.id;
+      return made.ok();
     }
     case v1::ClientMessage::kUpdateJoint: {
-      const auto joint = localJoint(message.update_joint().joint_id());
+      const auto& named = message.update_joint();
+      const auto joint = namedJoint(named.joint_id(), named.joint_tag());
       const auto update = wire::jointUpdateFromWire(message.update_joint());
       return joint && update.ok() && world_.updateJoint(*joint, *update.value).ok();
     }
     case v1::ClientMessage::kRemoveJoint: {
-      const auto joint = localJoint(message.remove_joint().joint_id());
+      const auto& named = message.remove_joint();
+      const auto joint = namedJoint(named.joint_id(), named.joint_tag());
       return joint && world_.destroyJoint(*joint);
     }
     default:

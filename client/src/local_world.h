@@ -37,7 +37,10 @@ class LocalWorld {
   /// transforms, circle and polygon spawns, joints made, moved and removed)
   /// for a step of `dt`. False for any other kind and for a command the
   /// world refuses or whose ids it does not know: it changes nothing.
-  bool apply(const v1::ClientMessage& message, Real dt);
+  /// A spawn's body is kept under `requestId` (localSpawn), a tagged
+  /// joint's under its tag (CreateJoint.tag, which UpdateJoint and
+  /// RemoveJoint may name), until the next rebuild or takeStates.
+  bool apply(const v1::ClientMessage& message, Real dt, std::uint64_t requestId = 0);
   /// Whether apply() predicts this kind of command.
   static bool predictsKind(const v1::ClientMessage& message);
   /// The server's id of the body the command names (nothing for a spawn
@@ -48,15 +51,27 @@ class LocalWorld {
   const World& world() const { return world_; }
   std::optional<BodyId> localBody(std::uint32_t serverBody) const;
   std::optional<JointId> localJoint(std::uint32_t serverJoint) const;
+  /// The body a predicted spawn sent as `requestId` made here.
+  std::optional<BodyId> localSpawn(std::uint64_t requestId) const;
 
  private:
   bool applyJoint(const v1::ClientMessage& message);
+  bool spawned(const CreateResult& made, std::uint64_t requestId);
+  /// The joint an UpdateJoint or RemoveJoint names: by id, or by the tag a
+  /// predicted CreateJoint gave it here.
+  std::optional<JointId> namedJoint(std::uint32_t serverJoint, std::uint32_t tag) const;
+  /// Forgets the bodies and joints predicted commands made (their
+  /// commands are replayed onto the new state).
+  void forgetPredictions();
 
   WorldSettings settings_;
   World world_;
   /// Server id -> this world's id, for the bodies and joints of the mirror.
   std::map<std::uint32_t, BodyId> bodies_;
   std::map<std::uint32_t, JointId> joints_;
+  /// Made here by predicted commands: spawns by request id, joints by tag.
+  std::map<std::uint64_t, BodyId> spawns_;
+  std::map<std::uint32_t, JointId> taggedJoints_;
 };
 
 }  // namespace impulse::client

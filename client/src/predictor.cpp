@@ -7,6 +7,7 @@
 #include <string>
 
 #include "impulse/client/client.h"
+#include "impulse/client/commands.h"
 #include "impulse/client/number_format.h"
 #include "local_world.h"
 
@@ -30,11 +31,22 @@ std::string outside(std::string_view field, double value, std::string_view range
   return "PredictionOptions::" + std::string(field) + " " + formatNumber(value) + " is outside " + std::string(range);
 }
 
+/// Why a snapshot that withheld states cannot be predicted from.
+std::string withheldStates(const v1::Snapshot& snapshot) {
+  return "Predictor: the snapshot of tick " + std::to_string(snapshot.tick()) + " withheld " +
+         std::to_string(snapshot.states_withheld()) +
+         " body states (states_withheld: a bandwidth budget too small for the area); the copy needs every "
+         "change of its area in every snapshot: raise the budget, narrow the area or stop predicting";
+}
+
 /// The client, once it takes snapshots and the options are in range;
 /// std::invalid_argument naming what is not.
 Client& validated(Client& client, const PredictionOptions& options) {
   if (client.mirror().snapshotsApplied() == 0) {
     throw std::invalid_argument("Predictor: the client takes no snapshots (ConnectOptions::wantSnapshots)");
+  }
+  if (client.lastSnapshot() && client.lastSnapshot()->states_withheld() > 0) {
+    throw std::invalid_argument(withheldStates(*client.lastSnapshot()));
   }
   const std::uint32_t bound = client.welcome().max_input_delay_ticks();
   if (options.leadTicks == 0 || options.leadTicks > bound) {
@@ -51,6 +63,13 @@ Client& validated(Client& client, const PredictionOptions& options) {
     throw std::invalid_argument(outside("subSteps", options.subSteps, "1..64"));
   }
   return client;
+}
+
+/// The tag an UpdateJoint or RemoveJoint names its joint by (0: its id).
+std::uint32_t jointTagOf(const v1::ClientMessage& message) {
+  if (message.has_update_joint()) return message.update_joint().joint_tag();
+  if (message.has_remove_joint()) return message.remove_joint().joint_tag();
+  return 0;
 }
 
 /// The angle in (-pi, pi]: a turn through the shorter way.
@@ -81,10 +100,38 @@ std::uint64_t Predictor::send(v1::ClientMessage message) {
   if (client_.mirror().paused()) return client_.send(std::move(message));
   message.set_for_tick(tick_);
   const std::uint64_t id = client_.send(message);
-  if (LocalWorld::predictsKind(message)) local_->apply(message, dt_);
+  if (message.has_create_joint() && message.create_joint().tag() != 0) rememberTag(message.create_joint(), id);
   if (const auto named = bodyNamedBy(message)) touched_[*named] = tick_;
   pending_.push_back({id, tick_, std::move(message)});
+  if (LocalWorld::predictsKind(pending_.back().message)) applyToCopy(pending_.back());
   return id;
+}
+
+void Predictor::rememberTag(const v1::CreateJoint& joint, std::uint64_t requestId) {
+  tags_[joint.tag()] = {requestId, joint.body_a()};
+  if (tags_.size() <= kKeptTags) return;
+  const auto oldest = std::ranges::min_element(tags_, {}, [](const auto& entry) { return entry.second.requestId; });
+  tags_.erase(oldest);
+}
+
+std::optional<std::uint32_t> Predictor::taggedJoint(std::uint32_t tag) const {
+  const auto it = tags_.find(tag);
+  const auto created = it == tags_.end() ? std::nullopt : client_.created(it->second.requestId);
+  if (!created || created->joint == 0) return std::nullopt;
+  return created->joint;
+}
+
+void Predictor::applyToCopy(const Command& command) {
+  const v1::ClientMessage& message = command.message;
+  const std::uint32_t tag = jointTagOf(message);
+  // Once the server's joint is in the copy (rebuilt from a snapshot that
+  // holds it), the tag names it by its id; before, the copy's own joint.
+  const auto server = tag != 0 ? taggedJoint(tag) : std::nullopt;
+  if (!server || !local_->localJoint(*server)) {
+    local_->apply(message, dt_, command.requestId);
+    return;
+  }
+  local_->apply(byJointId(message, *server), dt_, command.requestId);
 }
 
 bool Predictor::predicts(const v1::ClientMessage& message) { return LocalWorld::predictsKind(message); }
@@ -92,6 +139,7 @@ bool Predictor::predicts(const v1::ClientMessage& message) { return LocalWorld::
 std::optional<std::uint32_t> Predictor::bodyNamedBy(const v1::ClientMessage& message) const {
   if (const auto body = LocalWorld::namedBody(message)) return body;
   // A joint moved or removed: its body (a mouse joint's, the one dragged).
+  if (const auto tagged = tags_.find(jointTagOf(message)); tagged != tags_.end()) return tagged->second.bodyA;
   const std::uint32_t joint = message.has_update_joint()   ? message.update_joint().joint_id()
                               : message.has_remove_joint() ? message.remove_joint().joint_id()
                                                            : 0;
@@ -125,11 +173,16 @@ void Predictor::fadeOffsets() {
 }
 
 void Predictor::takeSnapshot(const v1::Snapshot& snapshot) {
+  // A withheld state leaves the mirror's older one: replaying from it
+  // would undo what the copy stepped since.
+  if (snapshot.states_withheld() > 0) throw PredictionError(withheldStates(snapshot));
   const std::uint64_t tick = snapshot.tick();
   snapshotTick_ = tick;
   ++snapshotsTaken_;
+  // Spawns the snapshot acknowledges leave pending_: their bodies first.
+  auto before = answeredSpawns();
   acknowledge(snapshot);
-  const auto before = ownedStates();
+  before.merge(ownedStates());
   // A copy fallen behind its lead (a slow caller, a late first snapshot)
   // jumps ahead; stamps never go back, so one ahead keeps its tick.
   constexpr std::uint64_t kLagAllowed = 2;
@@ -149,9 +202,24 @@ void Predictor::acknowledge(const v1::Snapshot& snapshot) {
   // A stamp the server refused on arrival is never listed: once past the
   // server's bound it can no longer be applied.
   const std::uint64_t bound = client_.welcome().max_input_delay_ticks();
+  for (const Command& command : pending_) {
+    if (command.requestId <= applied) rememberTarget(command.message);
+  }
   std::erase_if(pending_, [&](const Command& command) {
     return command.requestId <= applied || command.forTick + bound < snapshot.tick();
   });
+}
+
+void Predictor::rememberTarget(const v1::ClientMessage& message) {
+  if (!message.has_update_joint() || !message.update_joint().has_target()) return;
+  const std::uint32_t tag = message.update_joint().joint_tag();
+  const auto joint = tag != 0 ? taggedJoint(tag) : std::optional(message.update_joint().joint_id());
+  if (joint) targets_[*joint] = byJointId(message, *joint);
+}
+
+void Predictor::restoreTargets() {
+  std::erase_if(targets_, [&](const auto& entry) { return !local_->localJoint(entry.first); });
+  for (const auto& [joint, update] : targets_) local_->apply(update, dt_);
 }
 
 void Predictor::rewindTo(std::uint64_t tick) {
@@ -166,6 +234,7 @@ void Predictor::rewindTo(std::uint64_t tick) {
     local_->takeStates(mirror);
   } else {
     local_->rebuild(mirror);
+    restoreTargets();
     ++rebuilds_;
   }
   history_.clear();
@@ -177,7 +246,7 @@ void Predictor::replayFrom(std::uint64_t from) {
     for (const Command& command : pending_) {
       // Commands stamped before the first tick replayed were late: the
       // server applies them now, so the copy does too.
-      if (command.forTick == tick || (tick == from && command.forTick < from)) local_->apply(command.message, dt_);
+      if (command.forTick == tick || (tick == from && command.forTick < from)) applyToCopy(command);
     }
     if (tick == tick_) return;
     local_->world().step(dt_);
@@ -198,6 +267,19 @@ std::map<std::uint32_t, BodyState> Predictor::ownedStates() const {
     if (!owns(entry.first)) continue;
     const auto local = local_->localBody(entry.first);
     if (const auto state = local ? local_->world().bodyState(*local) : std::nullopt) states[entry.first] = *state;
+  }
+  return states;
+}
+
+std::map<std::uint32_t, BodyState> Predictor::answeredSpawns() {
+  std::map<std::uint32_t, BodyState> states;
+  for (const Command& command : pending_) {
+    const auto created = client_.created(command.requestId);
+    const auto local = local_->localSpawn(command.requestId);
+    const auto state = local ? local_->world().bodyState(*local) : std::nullopt;
+    if (!created || created->body == 0 || !state) continue;
+    states[created->body] = *state;
+    touched_[created->body] = command.forTick;
   }
   return states;
 }
@@ -232,9 +314,37 @@ std::optional<PredictedBody> Predictor::body(std::uint32_t serverBody) const {
   return shown;
 }
 
+std::optional<PredictedBody> Predictor::spawned(std::uint64_t requestId) const {
+  const auto local = local_->localSpawn(requestId);
+  const auto state = local ? local_->world().bodyState(*local) : std::nullopt;
+  if (!state) return std::nullopt;
+  PredictedBody shown{*state, Vec2::Zero()};
+  shown.state.id = BodyId{};
+  return shown;
+}
+
+std::vector<PredictedSpawn> Predictor::unmatchedSpawns() const {
+  std::vector<PredictedSpawn> spawns;
+  for (const Command& command : pending_) {
+    const auto local = local_->localSpawn(command.requestId);
+    auto description = local ? local_->world().bodyDescription(*local) : std::nullopt;
+    const auto shown = spawned(command.requestId);
+    if (description && shown) spawns.push_back({command.requestId, *shown, std::move(*description)});
+  }
+  return spawns;
+}
+
 bool Predictor::owns(std::uint32_t serverBody) const {
   const auto it = touched_.find(serverBody);
   return it != touched_.end() && tick_ <= it->second + options_.holdTicks;
+}
+
+std::vector<std::uint32_t> Predictor::ownedBodies() const {
+  std::vector<std::uint32_t> owned;
+  for (const auto& entry : touched_) {
+    if (owns(entry.first)) owned.push_back(entry.first);
+  }
+  return owned;
 }
 
 double Predictor::shownCorrection() const {

@@ -310,9 +310,6 @@ void App::handleReplies() {
     if (reply.what == "load scene" && result.ok()) {
       controls_.notify("Scene loaded from " + sceneFiles_.loadingFile(), now());
     }
-    if (reply.what == "drag") {
-      controls_.dragJointAnswered(result.ok() ? std::optional(result.joint_id()) : std::nullopt);
-    }
     if (result.ok()) {
       if (isDrawnShape(reply.what)) spawned_.insert(result.body_id());
     } else if (reply.what == "inspect") {
@@ -339,9 +336,12 @@ void App::updateJointFigures() {
   const client::Client* client = connection_->client();
   if (client == nullptr) return;
   for (const auto& [id, joint] : client->mirror().joints()) {
-    // The drag's own joint is drawn as the grab line, to the cursor: the
-    // mirror keeps the target the joint was made with.
-    if (id == controls_.dragJoint()) continue;
+    // The drag's own joint (a mouse joint on the grabbed body) is drawn as
+    // the grab line, to the cursor: the mirror keeps the target the joint
+    // was made with.
+    const bool dragged = std::holds_alternative<MouseJointSettings>(joint.settings) &&
+                         joint.bodyA.value == controls_.grabbedBody();
+    if (dragged) continue;
     if (auto figure = jointFigure(joint, world_.find(joint.bodyA.value), world_.find(joint.bodyB.value))) {
       jointFigures_.push_back(*figure);
     }
@@ -354,6 +354,7 @@ void App::drawScene(ImDrawList& list, const ViewTransform& view) {
     scene_.drawFields(list, view, client->mirror().fields());
   }
   scene_.drawBodies(list, view, world_.bodies(), controls_.selectedBody(), controls_.grabbedBody());
+  scene_.drawBodies(list, view, world_.spawnedBodies(), std::nullopt, std::nullopt);
   updateJointFigures();
   scene_.drawJoints(list, view, jointFigures_);
   if (const client::Client* client = connection_->client(); client && client->mirror().preset()) {

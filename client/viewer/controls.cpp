@@ -244,35 +244,30 @@ void Controls::repeatHeldKeys(const ControlContext& context, double now) {
 
 void Controls::steerGrabbed(const ControlContext& context, double now) {
   if (!grab_ || !grab_->dragging || !context.grabbed) return;
-  if (!grab_->jointRequested) {
+  if (grab_->jointTag == 0) {
     // The held point where the body is now (it may have moved since the press).
     const Vec2 held = *heldPoint(context.grabbed->position, context.grabbed->angle);
-    send(client::mouseJoint(grab_->body, toPoint(held), mouseSpring(context.grabbed->mass,
-                                                                     settings_.grab)),
+    // Tagged, so its targets go out at once, not after the reply naming
+    // its id: a predicted drag moves the body in the next frame.
+    grab_->jointTag = ++lastJointTag_;
+    send(client::tagJoint(client::mouseJoint(grab_->body, toPoint(held),
+                                             mouseSpring(context.grabbed->mass, settings_.grab)),
+                          grab_->jointTag),
          "drag");
-    grab_->jointRequested = true;
     grab_->sentTarget = held;
   }
   // A still cursor sends nothing: the joint keeps its target.
-  if (!grab_->joint || now < grab_->nextTarget || pointer_ == grab_->sentTarget) return;
-  send(client::setJointTarget(*grab_->joint, toPoint(pointer_)), "drag target");
+  if (now < grab_->nextTarget || pointer_ == grab_->sentTarget) return;
+  send(client::byJointTag(client::setJointTarget(0, toPoint(pointer_)), grab_->jointTag), "drag target");
   grab_->sentTarget = pointer_;
   grab_->nextTarget = now + 1 / settings_.grabHz;
 }
 
-void Controls::dragJointAnswered(std::optional<std::uint32_t> joint) {
-  if (abandonedJoints_ > 0) {
-    --abandonedJoints_;
-    if (joint) send(client::removeJoint(*joint), "drag end");
-    return;
-  }
-  if (grab_ && grab_->jointRequested && !grab_->joint) grab_->joint = joint;
-}
-
 void Controls::endGrab(bool bodyGone) {
   if (!grab_) return;
-  if (grab_->joint && !bodyGone) send(client::removeJoint(*grab_->joint), "drag end");
-  if (grab_->jointRequested && !grab_->joint) ++abandonedJoints_;
+  if (grab_->jointTag != 0 && !bodyGone) {
+    send(client::byJointTag(client::removeJoint(0), grab_->jointTag), "drag end");
+  }
   grab_.reset();
 }
 
@@ -322,11 +317,6 @@ std::optional<std::uint32_t> Controls::grabbedBody() const {
 std::optional<Vec2> Controls::heldPoint(const Vec2& position, Real angle) const {
   if (!grab_) return std::nullopt;
   return position + Rot::fromAngle(angle).apply(grab_->offset);
-}
-
-std::optional<std::uint32_t> Controls::dragJoint() const {
-  if (!grab_) return std::nullopt;
-  return grab_->joint;
 }
 
 void Controls::zoomAt(float factor, float px, float py, const PixelRect& viewport) {

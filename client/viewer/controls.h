@@ -165,9 +165,6 @@ class Controls {
   /// Once per frame: repeats held keys, steers a grabbed body.
   void update(const ControlContext& context, double now);
 
-  /// The server's answer to the drag's CreateJoint (`what` "drag"): the
-  /// joint's id, or nothing when it was refused.
-  void dragJointAnswered(std::optional<std::uint32_t> joint);
   /// The server's reply to the ray tool's cast (`what` "ray"); a refusal
   /// becomes a notice.
   void rayAnswered(const v1::ServerMessage& reply, double now);
@@ -198,8 +195,6 @@ class Controls {
   /// of mass is at `position` and it is turned by `angle`: the held point
   /// turns with the body.
   std::optional<Vec2> heldPoint(const Vec2& position, Real angle) const;
-  /// The mouse joint of the drag, once the server named it.
-  std::optional<std::uint32_t> dragJoint() const;
 
   // Next shape.
   DrawMode mode() const { return mode_; }
@@ -236,8 +231,8 @@ class Controls {
     Vec2 offset = Vec2::Zero();     ///< the grabbed point in the body's frame
     Vec2 pressedAt = Vec2::Zero();  ///< where the press was, world
     bool dragging = false;
-    bool jointRequested = false;
-    std::optional<std::uint32_t> joint;  ///< the mouse joint, once the server named it
+    /// The mouse joint's tag (CreateJoint.tag), once it was asked for.
+    std::uint32_t jointTag = 0;
     Vec2 sentTarget = Vec2::Zero();
     double nextTarget = 0;
   };
@@ -295,9 +290,8 @@ class Controls {
     double at;
   };
   std::optional<AskedScale> askedScale_;
-  /// Drag joints asked for by grabs that ended before the server answered:
-  /// removed as their ids arrive (answers come in order).
-  int abandonedJoints_ = 0;
+  /// The tag of the last drag's mouse joint: each drag's is new.
+  std::uint32_t lastJointTag_ = 0;
   Overlays overlays_;
   Camera camera_;
 

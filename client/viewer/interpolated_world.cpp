@@ -25,6 +25,19 @@ BodyLook lookOf(const client::MirrorBody& body) {
           body.isKinematic,   body.ignoreGravity, body.flags,    body.shapeIds};
 }
 
+BodyLook lookOf(const BodyDescription& body) {
+  BodyLook look{.shape = body.shape,
+                .material = body.material,
+                .isStatic = body.isStatic,
+                .isKinematic = body.isKinematic,
+                .ignoreGravity = body.ignoreGravity};
+  for (std::size_t i = 0; i < body.shapes.size(); ++i) {
+    if (i == 0) look.flags = body.shapes[i].interaction;
+    if (i > 0) look.extraShapes.push_back(body.shapes[i].shape);
+  }
+  return look;
+}
+
 InterpolatedWorld::InterpolatedWorld(double snapshotInterval)
     : buffer_(interpolationSettings(snapshotInterval)),
       clock_(playoutSettings(snapshotInterval)),
@@ -40,6 +53,7 @@ void InterpolatedWorld::reset(double snapshotInterval) {
   retired_.clear();
   drawn_.clear();
   samples_.clear();
+  spawned_.clear();
   mode_ = SampleMode::Empty;
 }
 
@@ -126,6 +140,7 @@ void InterpolatedWorld::update(double now) {
   const double oldest = buffer_.oldestTime();
   while (!retired_.empty() && retired_.front().until <= oldest) retired_.pop_front();
 
+  spawned_.clear();
   drawn_.clear();
   drawn_.reserve(samples_.size());
   for (const BodySample& sample : samples_) {
@@ -139,6 +154,20 @@ const DrawnBody* InterpolatedWorld::findDrawn(std::uint32_t id) const {
   return it != drawn_.end() && it->state.id == id ? &*it : nullptr;
 }
 
+void InterpolatedWorld::showSpawns(const client::Predictor& predictor) {
+  const auto spawns = predictor.unmatchedSpawns();
+  spawnedLooks_.clear();
+  spawned_.clear();
+  // Every look first: the drawn bodies point into the vector.
+  for (const client::PredictedSpawn& spawn : spawns) spawnedLooks_.push_back(lookOf(spawn.description));
+  for (std::size_t i = 0; i < spawns.size(); ++i) {
+    const BodyState& state = spawns[i].body.state;
+    spawned_.push_back({BodySample{0, state.position, state.angle, state.linearVelocity, state.angularVelocity,
+                                   state.awake},
+                        &spawnedLooks_[i]});
+  }
+}
+
 const BodySample* InterpolatedWorld::find(std::uint32_t id) const {
   const DrawnBody* body = findDrawn(id);
   return body != nullptr ? &body->state : nullptr;
@@ -146,6 +175,17 @@ const BodySample* InterpolatedWorld::find(std::uint32_t id) const {
 
 std::size_t InterpolatedWorld::showPredicted(const client::Predictor& predictor) {
   std::size_t shown = 0;
+  showSpawns(predictor);
+  // An owned body the playout has not reached yet (a spawn the server's
+  // snapshot just brought) is drawn from the copy already: the spawn never
+  // blinks out between the predicted body and the server's.
+  for (const std::uint32_t id : predictor.ownedBodies()) {
+    const BodyLook* look = lookAt(id, renderTime_);
+    if (findDrawn(id) || !look || !predictor.body(id)) continue;
+    const auto at = std::lower_bound(drawn_.begin(), drawn_.end(), id,
+                                     [](const DrawnBody& body, std::uint32_t key) { return body.state.id < key; });
+    drawn_.insert(at, DrawnBody{BodySample{.id = id}, look});
+  }
   for (DrawnBody& body : drawn_) {
     if (!predictor.owns(body.state.id)) continue;
     const auto predicted = predictor.body(body.state.id);

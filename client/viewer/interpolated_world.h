@@ -41,6 +41,8 @@ struct BodyLook {
 
 /// The look of a body as the client's mirror describes it.
 BodyLook lookOf(const client::MirrorBody& body);
+/// The look of a body as an engine world describes it (a predicted spawn).
+BodyLook lookOf(const BodyDescription& body);
 
 /// One body to draw.
 struct DrawnBody {
@@ -61,10 +63,15 @@ class InterpolatedWorld {
 
   /// Samples the world for a frame drawn at local time `now`.
   void update(double now);
-  /// After update(): the bodies the predictor owns (the viewer's own drags
-  /// and pushes) are drawn where it predicts them, correction included;
-  /// the others stay as sampled. Returns how many it moved.
+  /// After update(): the bodies the predictor owns (the viewer's own drags,
+  /// pushes and spawns) are drawn where it predicts them, correction
+  /// included; the others stay as sampled. Returns how many it moved. Its
+  /// spawns the server has not brought yet are spawnedBodies() until the
+  /// next update().
   std::size_t showPredicted(const client::Predictor& predictor);
+  /// The viewer's own spawns before the server's snapshot brings them (id
+  /// 0: nothing to select or inspect yet).
+  const std::vector<DrawnBody>& spawnedBodies() const { return spawned_; }
   /// In ascending id, as the snapshot frames hold them.
   const std::vector<DrawnBody>& bodies() const { return drawn_; }
   /// The drawn state of body `id`, or null when it is not drawn.
@@ -104,6 +111,8 @@ class InterpolatedWorld {
   /// one into the retired ones) while the frame's drawn bodies are still
   /// read (picking, the energy plot): they are pointed at the looks anew.
   void relinkDrawnLooks();
+  /// The predictor's unmatched spawns into spawned_.
+  void showSpawns(const client::Predictor& predictor);
 
   /// The bodies of the newest snapshot.
   Looks looks_;
@@ -114,6 +123,9 @@ class InterpolatedWorld {
   std::vector<DrawnBody> drawn_;
   SampleMode mode_ = SampleMode::Empty;
   double renderTime_ = 0;
+  /// The predicted spawns drawn, and their looks (which they point at).
+  std::vector<BodyLook> spawnedLooks_;
+  std::vector<DrawnBody> spawned_;
 };
 
 }  // namespace impulse::viewer

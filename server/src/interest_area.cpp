@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "impulse/field_kinds.h"
 #include "impulse/shape.h"
 #include "impulse/server/message_format.h"
 #include "impulse/server/wire_box.h"
@@ -57,6 +58,56 @@ void BodyPlaces::update(const World& world, const WorldChanges& changes) {
     }
   }
   std::ranges::sort(places_, {}, &BodyPlace::id);
+  takeJointsAndFields(world);
+}
+
+namespace {
+
+/// Where a field acts: a fluid's polygon, a fan's range about it; a field
+/// of the bodies themselves acts everywhere.
+std::optional<AABB> fieldReach(const FieldDef& def) {
+  if (const auto* fluid = std::get_if<FluidDef>(&def)) {
+    AABB box{fluid->polygon.front(), fluid->polygon.front()};
+    for (const Vec2& point : fluid->polygon) box = AABB{box.lower.cwiseMin(point), box.upper.cwiseMax(point)};
+    return box;
+  }
+  if (const auto* fan = std::get_if<FanDef>(&def)) {
+    const Vec2 range(fan->range, fan->range);
+    return AABB{fan->position - range, fan->position + range};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void BodyPlaces::takeJointsAndFields(const World& world) {
+  joints_.clear();
+  for (const JointId id : world.jointIds()) {
+    if (const auto joint = world.jointDescription(id)) joints_.push_back({id.value, joint->bodyA.value, joint->bodyB.value});
+  }
+  std::ranges::sort(joints_, {}, &JointPlace::id);
+  fields_.clear();
+  for (const FieldId id : world.fieldIds()) {
+    const ForceField* field = world.field(id);
+    const auto def = field ? describeField(*field) : std::nullopt;
+    if (def) fields_.push_back({id.value, fieldReach(*def)});
+  }
+  std::ranges::sort(fields_, {}, &FieldPlace::id);
+}
+
+void BodyPlaces::jointsOf(const std::vector<std::uint32_t>& bodies, std::vector<std::uint32_t>& ids) const {
+  ids.clear();
+  const auto held = [&](std::uint32_t body) { return body != 0 && std::ranges::binary_search(bodies, body); };
+  for (const JointPlace& joint : joints_) {
+    if (held(joint.bodyA) || held(joint.bodyB)) ids.push_back(joint.id);
+  }
+}
+
+void BodyPlaces::fieldsIn(const std::optional<AABB>& area, std::vector<std::uint32_t>& ids) const {
+  ids.clear();
+  for (const FieldPlace& field : fields_) {
+    if (!area || !field.reach || area->overlaps(*field.reach)) ids.push_back(field.id);
+  }
 }
 
 void BodyPlaces::rebuild(const World& world) {

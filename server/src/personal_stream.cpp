@@ -21,10 +21,11 @@ constexpr double kFastSpeed = 10;
 
 using Ids = std::vector<std::uint32_t>;
 
-Ids valuesOf(const std::vector<BodyId>& ids) {
+template <class Id>
+Ids valuesOf(const std::vector<Id>& ids) {
   Ids values;
   values.reserve(ids.size());
-  for (const BodyId id : ids) values.push_back(id.value);
+  for (const Id id : ids) values.push_back(id.value);
   return values;
 }
 
@@ -46,6 +47,15 @@ Ids setUnion(const Ids& a, const Ids& b) {
   return out;
 }
 
+/// `now` against `known` (both ascending): what the client must be sent
+/// (new to it, or among `added`, changed) and told to drop; `known`
+/// becomes `now`.
+void planLinkChanges(Ids& known, Ids& now, const Ids& added, LinkChanges& changes) {
+  changes.described = setUnion(difference(now, known), intersection(intersection(now, known), added));
+  changes.removed = difference(known, now);
+  known.swap(now);
+}
+
 AABB wholeRoom() {
   const Real far = std::numeric_limits<Real>::max();
   return {Vec2(-far, -far), Vec2(far, far)};
@@ -63,9 +73,18 @@ void PersonalStream::setBudget(std::optional<double> bytesPerSecond) {
 
 const std::vector<std::uint32_t>& PersonalStream::planFull(const BodyPlaces& places) {
   places.inside(area_.value_or(wholeRoom()), known_);
+  places.jointsOf(known_, knownJoints_);
+  places.fieldsIn(area_, knownFields_);
   withheld_.clear();
   startsOver_ = false;
   return known_;
+}
+
+void PersonalStream::planLinks(const BodyPlaces& places, const Ids& addedJoints, const Ids& addedFields) {
+  places.jointsOf(known_, linksNow_);
+  planLinkChanges(knownJoints_, linksNow_, addedJoints, delta_.joints);
+  places.fieldsIn(area_, linksNow_);
+  planLinkChanges(knownFields_, linksNow_, addedFields, delta_.fields);
 }
 
 const PersonalDelta& PersonalStream::planDelta(const BodyPlaces& places, const WorldChanges& changes,
@@ -86,15 +105,37 @@ const PersonalDelta& PersonalStream::planDelta(const BodyPlaces& places, const W
   if (!budget_) {
     delta_.states = setUnion(delta_.states, changed);
   } else {
-    for (const std::uint32_t id : changed) withheld_.try_emplace(id, Withheld{tick, 0});
-    std::erase_if(withheld_, [&](const auto& entry) {
-      return !std::ranges::binary_search(inside_, entry.first) ||
-             std::ranges::binary_search(redescribed, entry.first);
-    });
+    updateWithheld(changed, redescribed, tick);
     rank(places, maxRanked);
   }
   known_.swap(inside_);
+  Ids addedFields = valuesOf(changes.addedFieldIds());
+  std::ranges::sort(addedFields);
+  planLinks(places, valuesOf(changes.addedJointIds()), addedFields);
   return delta_;
+}
+
+void PersonalStream::updateWithheld(const Ids& changed, const Ids& redescribed, std::uint64_t tick) {
+  // One merge of the waiting states with the changed ones, keeping the
+  // bodies still inside (inside_, ascending, walked along).
+  withheldScratch_.clear();
+  auto waiting = withheld_.begin();
+  auto change = changed.begin();
+  auto in = inside_.begin();
+  while (waiting != withheld_.end() || change != changed.end()) {
+    const bool takeWaiting = change == changed.end() || (waiting != withheld_.end() && waiting->id <= *change);
+    Withheld next = takeWaiting ? *waiting : Withheld{*change, tick, 0, false};
+    if (takeWaiting && change != changed.end() && *change == waiting->id) ++change;
+    if (takeWaiting) {
+      ++waiting;
+    } else {
+      ++change;
+    }
+    while (in != inside_.end() && *in < next.id) ++in;
+    const bool inside = in != inside_.end() && *in == next.id;
+    if (inside && !std::ranges::binary_search(redescribed, next.id)) withheldScratch_.push_back(next);
+  }
+  withheld_.swap(withheldScratch_);
 }
 
 double PersonalStream::weight(const BodyPlace& place) const {
@@ -110,16 +151,25 @@ double PersonalStream::weight(const BodyPlace& place) const {
 
 void PersonalStream::rank(const BodyPlaces& places, std::size_t count) {
   ranking_.clear();
-  for (auto& [id, waiting] : withheld_) {
-    if (const BodyPlace* place = places.find(id)) waiting.priority += weight(*place);
-    ranking_.emplace_back(-waiting.priority, id);
+  // Both ascending by id: the places are walked along, not searched.
+  auto place = places.places().begin();
+  const auto end = places.places().end();
+  for (Withheld& waiting : withheld_) {
+    while (place != end && place->id < waiting.id) ++place;
+    if (place != end && place->id == waiting.id) waiting.priority += weight(*place);
+    ranking_.emplace_back(-waiting.priority, std::uint32_t(&waiting - withheld_.data()));
   }
-  // Highest priority first; equal ones by id, so a run is repeatable. Only
+  // Highest priority first; equal ones by id (withheld_ is by id), so a run
+  // is repeatable. Only
   // the few the budget can carry need an order.
   const auto top = ranking_.begin() + std::ptrdiff_t(std::min(count, ranking_.size()));
   std::ranges::nth_element(ranking_, top);
   std::sort(ranking_.begin(), top);
-  for (auto it = ranking_.begin(); it != top; ++it) delta_.ranked.push_back(it->second);
+  rankedAt_.clear();
+  for (auto it = ranking_.begin(); it != top; ++it) {
+    rankedAt_.push_back(it->second);
+    delta_.ranked.push_back(withheld_[it->second].id);
+  }
 }
 
 std::optional<double> PersonalStream::allowance(std::uint64_t tick, double tickHz) {
@@ -131,7 +181,9 @@ std::optional<double> PersonalStream::allowance(std::uint64_t tick, double tickH
 }
 
 void PersonalStream::markSent(std::size_t rankedSent) {
-  for (std::size_t i = 0; i < rankedSent && i < delta_.ranked.size(); ++i) withheld_.erase(delta_.ranked[i]);
+  // Marked where rank() found them, then dropped in one pass.
+  for (std::size_t i = 0; i < rankedSent && i < rankedAt_.size(); ++i) withheld_[rankedAt_[i]].sent = true;
+  std::erase_if(withheld_, [](const Withheld& waiting) { return waiting.sent; });
 }
 
 void PersonalStream::charge(std::size_t bytes) {
@@ -140,7 +192,7 @@ void PersonalStream::charge(std::size_t bytes) {
 
 std::uint64_t PersonalStream::oldestWithheldTicks(std::uint64_t tick) const {
   std::uint64_t oldest = 0;
-  for (const auto& [id, waiting] : withheld_) oldest = std::max(oldest, tick - waiting.since);
+  for (const Withheld& waiting : withheld_) oldest = std::max(oldest, tick - waiting.since);
   return oldest;
 }
 

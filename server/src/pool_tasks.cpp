@@ -30,26 +30,35 @@ int rangeCountFor(int itemCount, int minRange, int workers) {
 }  // namespace
 
 struct PoolTasks::Task {
-  // A constructor, not an aggregate: clang 14 has no parenthesised
-  // aggregate initialisation for make_shared.
-  Task(TaskFunction* taskFunction, void* taskContext, int items, int ranges, int workers)
-      : function(taskFunction), context(taskContext), itemCount(items), rangeCount(ranges), workerCount(workers) {}
-
-  TaskFunction* function;
-  void* context;
-  int itemCount;
-  int rangeCount;
-  int workerCount;
+  TaskFunction* function = nullptr;
+  void* context = nullptr;
+  int itemCount = 0;
+  int rangeCount = 0;
+  int workerCount = 0;
   std::atomic<int> nextRange = 0;
   std::atomic<int> doneRanges = 0;
   // Worker 0 is the thread that enqueued the task.
   std::atomic<int> nextWorker = 1;
+  // Helpers that joined and may still read the record.
+  std::atomic<int> helpers = 0;
 
+  void start(TaskFunction* taskFunction, void* taskContext, int items, int ranges, int workers) {
+    function = taskFunction;
+    context = taskContext;
+    itemCount = items;
+    rangeCount = ranges;
+    workerCount = workers;
+    nextRange = 0;
+    doneRanges = 0;
+    nextWorker = 1;
+  }
   int rangeBegin(int range) const { return int(std::int64_t(itemCount) * range / rangeCount); }
 };
 
-PoolTasks::PoolTasks(asio::thread_pool& pool, int workersPerTask)
-    : pool_(pool), workersPerTask_(std::clamp(workersPerTask, 1, kMaxWorkers)) {}
+PoolTasks::PoolTasks(asio::thread_pool& pool, int workersPerTask, PoolTaskCounts* counts)
+    : pool_(pool), workersPerTask_(std::clamp(workersPerTask, 1, kMaxWorkers)), counts_(counts) {}
+
+PoolTasks::~PoolTasks() = default;
 
 TaskSettings PoolTasks::taskSettings() {
   if (workersPerTask_ == 1) return {};
@@ -57,6 +66,11 @@ TaskSettings PoolTasks::taskSettings() {
           .enqueueTask = &enqueue,
           .finishTask = &finish,
           .userContext = this};
+}
+
+std::size_t PoolTasks::taskRecords() const {
+  std::lock_guard lock(openMutex_);
+  return records_.size();
 }
 
 void* PoolTasks::enqueue(TaskFunction* function, int itemCount, int minRange, void* taskContext,
@@ -67,15 +81,21 @@ void* PoolTasks::enqueue(TaskFunction* function, int itemCount, int minRange, vo
     function(0, itemCount, 0, taskContext);
     return nullptr;
   }
-  auto task =
-      std::make_shared<Task>(function, taskContext, itemCount, rangeCount, tasks.workersPerTask_);
+  Task* task = nullptr;
   {
     std::lock_guard lock(tasks.openMutex_);
+    if (tasks.free_.empty()) {
+      task = tasks.records_.emplace_back(std::make_unique<Task>()).get();
+    } else {
+      task = tasks.free_.back();
+      tasks.free_.pop_back();
+    }
+    task->start(function, taskContext, itemCount, rangeCount, tasks.workersPerTask_);
     tasks.open_.push_back(task);
     tasks.openCount_.store(int(tasks.open_.size()));
   }
   tasks.postHelpers(std::min(tasks.workersPerTask_, rangeCount) - 1);
-  return task.get();
+  return task;
 }
 
 void PoolTasks::finish(void* handle, void* self) {
@@ -104,34 +124,44 @@ void PoolTasks::help() {
   for (auto now = start; now - idleSince < kHelperIdleWait && now - start < kHelperTurn;
        now = HelperClock::now()) {
     int worker = 0;
-    std::shared_ptr<Task> task = openCount_.load() > 0 ? joinOpenTask(worker) : nullptr;
+    Task* task = openCount_.load() > 0 ? joinOpenTask(worker) : nullptr;
     if (!task) {
       std::this_thread::yield();
       continue;
     }
     --waitingHelpers_;
-    helpedRanges_ += runRanges(*task, worker);
+    const int ran = runRanges(*task, worker);
+    if (counts_) counts_->helpedRanges += ran;
+    // Left: its record may now serve the next task.
+    if (task->helpers.fetch_sub(1) == 1) task->helpers.notify_all();
     ++waitingHelpers_;
     idleSince = HelperClock::now();
   }
   --waitingHelpers_;
 }
 
-std::shared_ptr<PoolTasks::Task> PoolTasks::joinOpenTask(int& worker) {
+PoolTasks::Task* PoolTasks::joinOpenTask(int& worker) {
   std::lock_guard lock(openMutex_);
-  for (const auto& task : open_) {
+  for (Task* task : open_) {
     if (task->nextRange.load() >= task->rangeCount) continue;
     worker = task->nextWorker.fetch_add(1);
-    if (worker < task->workerCount) return task;
+    if (worker < task->workerCount) {
+      ++task->helpers;
+      return task;
+    }
   }
   return nullptr;
 }
 
-int PoolTasks::runRanges(Task& task, int worker) {
-  const int running = concurrency_.fetch_add(1) + 1;
-  for (int peak = peakConcurrency_.load();
-       running > peak && !peakConcurrency_.compare_exchange_weak(peak, running);) {
+void PoolTasks::countRunning() {
+  const int running = counts_->running.fetch_add(1) + 1;
+  for (int peak = counts_->peakRunning.load();
+       running > peak && !counts_->peakRunning.compare_exchange_weak(peak, running);) {
   }
+}
+
+int PoolTasks::runRanges(Task& task, int worker) {
+  if (counts_) countRunning();
   int ran = 0;
   for (int range = task.nextRange.fetch_add(1); range < task.rangeCount;
        range = task.nextRange.fetch_add(1)) {
@@ -139,15 +169,22 @@ int PoolTasks::runRanges(Task& task, int worker) {
     ++ran;
     if (task.doneRanges.fetch_add(1) + 1 == task.rangeCount) task.doneRanges.notify_all();
   }
-  --concurrency_;
+  if (counts_) --counts_->running;
   return ran;
 }
 
-void PoolTasks::close(const Task& task) {
+void PoolTasks::close(Task& task) {
+  {
+    std::lock_guard lock(openMutex_);
+    std::erase(open_, &task);
+    openCount_.store(int(open_.size()));
+  }
+  // No helper joins it any more; those that did are past their last range.
+  for (int helpers = task.helpers.load(); helpers != 0; helpers = task.helpers.load()) {
+    task.helpers.wait(helpers);
+  }
   std::lock_guard lock(openMutex_);
-  std::erase_if(open_,
-                [&](const std::shared_ptr<Task>& candidate) { return candidate.get() == &task; });
-  openCount_.store(int(open_.size()));
+  free_.push_back(&task);
 }
 
 }  // namespace impulse::server

@@ -136,6 +136,7 @@ void Room::leave(Session& session) {
     subscribeEvents(client, false);
     commands_.dropClient(client);
     stamped_.dropClient(client);
+    jointTags_.dropClient(client);
     snapshots_.forgetClient(client);
     std::erase_if(steps_, [&](const StepJob& job) { return job.client() == client; });
   });
@@ -394,12 +395,16 @@ void Room::applyDueCommands() {
 }
 
 void Room::applyQueued(QueuedCommand& queued, bool admin) {
-  const auto& message = queued.message;
+  auto& message = queued.message;
   const std::uint32_t client = queued.client;
   if (message.has_for_tick()) snapshots_.stampProcessed(client, message.request_id());
   const CommandRow* row = findCommand(message);
   if (row == nullptr) {
     return reply(client, refusal(message, noCommandError(message), simulation_.tick()), queued.bytes);
+  }
+  // A joint named by its tag: its id, now that the CreateJoint before it ran.
+  if (std::string error = jointTags_.resolve(message, client, simulation_); !error.empty()) {
+    return reply(client, refusal(message, std::move(error), simulation_.tick()), queued.bytes);
   }
   if (!admin) {
     if (std::string error = ownership_.playerRefusal(*row, message, client); !error.empty()) {
@@ -408,6 +413,7 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
   }
   auto outcome = applyCommand(simulation_, *row, message, limits_);
   ownership_.recordOutcome(*row, message, outcome.reply, client, simulation_);
+  jointTags_.record(message, outcome.reply, client, simulation_.world());
   if (outcome.eventSubscription) subscribeEvents(client, *outcome.eventSubscription);
   if (outcome.interestArea || outcome.budget) changeStream(client, *row, message, outcome);
   if (outcome.ticksToStep > 0) {

@@ -84,13 +84,26 @@ bool sameMeta(const SnapshotMeta& a, const SnapshotMeta& b) {
          a.timeScale == b.timeScale;
 }
 
+// A full snapshot's meta and preset.
+void addFullMeta(const Simulation& simulation, const AppliedStamps& stamps, v1::Snapshot* snapshot) {
+  fillMeta(simulation, stamps, true, snapshot);
+  wire::toWire(simulation.preset(), snapshot->mutable_preset());
+}
+
 // A full snapshot's meta, preset, joints and fields: all but the bodies.
 void addWorldButBodies(const Simulation& simulation, const AppliedStamps& stamps, v1::Snapshot* snapshot) {
   const World& world = simulation.world();
-  fillMeta(simulation, stamps, true, snapshot);
-  wire::toWire(simulation.preset(), snapshot->mutable_preset());
+  addFullMeta(simulation, stamps, snapshot);
   for (const JointId id : world.jointIds()) addJoint(world, id, snapshot);
   for (const FieldId id : world.fieldIds()) addField(world, id, snapshot);
+}
+
+// A personal snapshot's joints and fields: the ones its area holds.
+void addLinks(const World& world, const LinkChanges& joints, const LinkChanges& fields, v1::Snapshot* snapshot) {
+  for (const std::uint32_t id : joints.removed) snapshot->add_joints_removed(id);
+  for (const std::uint32_t id : joints.described) addJoint(world, JointId{id}, snapshot);
+  for (const std::uint32_t id : fields.removed) snapshot->add_fields_removed(id);
+  for (const std::uint32_t id : fields.described) addField(world, FieldId{id}, snapshot);
 }
 
 // A full snapshot's meta, preset, descriptors and joints: all but the states.
@@ -254,7 +267,7 @@ SharedFrame SnapshotBuilder::personalDelta(PersonalStream& stream, const WorldCh
   for (const std::uint32_t id : plan.leftWorld) snapshot->add_left_world(id);
   for (const std::uint32_t id : plan.leftArea) snapshot->add_left_area(id);
   for (const std::uint32_t id : plan.described) addDescriptor(world, BodyId{id}, snapshot);
-  addJointAndFieldChanges(world, changes, snapshot);
+  addLinks(world, plan.joints, plan.fields, snapshot);
   for (const std::uint32_t id : plan.states) addState(world, id, snapshot);
   stream.markSent(addRankedStates(plan, allowance, snapshot));
   snapshot->set_states_withheld(std::uint32_t(stream.withheldCount()));
@@ -290,8 +303,9 @@ SharedFrame SnapshotBuilder::personalFull(PersonalStream& stream) {
   google::protobuf::Arena arena(arenaOptions());
   auto& message = *google::protobuf::Arena::CreateMessage<v1::ServerMessage>(&arena);
   auto* snapshot = message.mutable_snapshot();
-  addWorldButBodies(simulation_, appliedStamps_, snapshot);
+  addFullMeta(simulation_, appliedStamps_, snapshot);
   const auto& ids = stream.planFull(places_);
+  addLinks(world, {.described = stream.knownJoints()}, {.described = stream.knownFields()}, snapshot);
   snapshot->mutable_added()->Reserve(int(ids.size()));
   snapshot->mutable_bodies()->Reserve(int(ids.size()));
   for (const std::uint32_t id : ids) addDescriptor(world, BodyId{id}, snapshot);

@@ -87,6 +87,67 @@ TEST(InterestArea, SubscriberHoldsOnlyTheBodiesInsideAndSeesThemComeAndGo) {
   EXPECT_EQ(mirrored(watcher).size(), 12u) << "the whole room again";
 }
 
+std::set<std::uint32_t> mirroredJoints(const Client& client) {
+  std::set<std::uint32_t> ids;
+  for (const auto& [id, joint] : client.mirror().joints()) ids.insert(id);
+  return ids;
+}
+
+std::set<std::uint32_t> mirroredFields(const Client& client) {
+  std::set<std::uint32_t> ids;
+  for (const auto& [id, field] : client.mirror().fields()) ids.insert(id);
+  return ids;
+}
+
+v1::ClientMessage fanAt(double x, double y) {
+  v1::Fan fan;
+  fan.mutable_position()->set_x(x);
+  fan.mutable_position()->set_y(y);
+  fan.mutable_direction()->set_x(1);
+  fan.set_speed(5);
+  fan.set_range(2);
+  fan.set_spread(0.3);
+  return client::fanField(fan);
+}
+
+// A joint goes to an area holding either of its bodies, a field to an area
+// its reach overlaps (gravitation reaches everywhere); as the area moves,
+// they come and go with the bodies.
+TEST(InterestArea, JointsAndFieldsGoOnlyWhereTheyReach) {
+  ServerProcess server({"--paused"});
+  Client driver(localClient(server.port(), "driver", false));
+  const Row row = spawnRow(driver);
+  const auto joined = [&](std::size_t a, std::size_t b) {
+    const client::Point pointA{2.0 * double(a), 5};
+    const client::Point pointB{2.0 * double(b), 5};
+    return result(driver.request(client::distanceJoint({row.resting[a], row.resting[b], pointA, pointB}, {})))
+        .joint_id();
+  };
+  const std::uint32_t left = joined(0, 1);     // x = 0 and 2
+  const std::uint32_t across = joined(4, 7);   // x = 8 and 14
+  const std::uint32_t right = joined(9, 10);   // x = 18 and 20
+  const std::uint32_t leftFan = result(driver.request(fanAt(1, 5))).field_id();
+  const std::uint32_t rightFan = result(driver.request(fanAt(19, 5))).field_id();
+  const std::uint32_t gravitation = result(driver.request(client::gravitationField(1))).field_id();
+
+  Client watcher(localClient(server.port(), "watcher"));
+  ASSERT_TRUE(result(watcher.request(area(-1, 0, 9, 10))).ok());
+  stepAndWatch(driver, watcher, 1);
+  EXPECT_EQ(mirroredJoints(watcher), (std::set{left, across})) << "full snapshot of the area";
+  EXPECT_EQ(mirroredFields(watcher), (std::set{leftFan, gravitation}));
+
+  ASSERT_TRUE(result(watcher.request(area(13, 0, 23, 10))).ok());
+  stepAndWatch(driver, watcher, 1);
+  EXPECT_EQ(mirroredJoints(watcher), (std::set{across, right})) << "a delta: the left joint left with its bodies";
+  EXPECT_EQ(mirroredFields(watcher), (std::set{rightFan, gravitation}));
+
+  ASSERT_TRUE(result(driver.request(client::removeJoint(across))).ok());
+  ASSERT_TRUE(result(driver.request(client::removeField(rightFan))).ok());
+  stepAndWatch(driver, watcher, 1);
+  EXPECT_EQ(mirroredJoints(watcher), (std::set{right}));
+  EXPECT_EQ(mirroredFields(watcher), (std::set{gravitation}));
+}
+
 TEST(InterestArea, BadAreasAreRefusedNamingTheFieldAndChangeNothing) {
   ServerProcess server({"--paused"});
   Client driver(localClient(server.port(), "driver", false));

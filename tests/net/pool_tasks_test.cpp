@@ -61,7 +61,8 @@ TEST(PoolTasks, BigWorldStepsOnTwoThreadsOfAnIdlePool_WithTheOneWorkerBits) {
   constexpr int kRows = 100;  // 5 050 boxes
   constexpr int kSteps = 60;
   asio::thread_pool pool(2);
-  PoolTasks tasks(pool, 2);
+  PoolTaskCounts counts;
+  PoolTasks tasks(pool, 2, &counts);
   auto world = pyramidWorld(kRows, tasks.taskSettings());
 
   auto stepped = stepOn(pool.get_executor(), *world, kSteps);
@@ -69,9 +70,11 @@ TEST(PoolTasks, BigWorldStepsOnTwoThreadsOfAnIdlePool_WithTheOneWorkerBits) {
   pool.join();
 
   // The pool's other thread ran part of the step.
-  EXPECT_GT(tasks.helpedRanges(), 0);
-  EXPECT_LE(tasks.peakConcurrency(), 2);
+  EXPECT_GT(counts.helpedRanges.load(), 0);
+  EXPECT_LE(counts.peakRunning.load(), 2);
   EXPECT_EQ(world->stateHash(), oneWorkerHash(kRows, kSteps));
+  // The step's phases run one after another: every one reused one record.
+  EXPECT_EQ(tasks.taskRecords(), 1u);
 }
 
 TEST(PoolTasks, BusyWorldsOnATwoThreadPool_NeverRunOnMoreThreads_AndAllAdvance) {
@@ -80,7 +83,8 @@ TEST(PoolTasks, BusyWorldsOnATwoThreadPool_NeverRunOnMoreThreads_AndAllAdvance) 
   constexpr int kSteps = 40;
   const int threadsBefore = processThreads();
   asio::thread_pool pool(2);
-  PoolTasks tasks(pool, 2);
+  PoolTaskCounts counts;
+  PoolTasks tasks(pool, 2, &counts);
   std::vector<std::unique_ptr<World>> worlds;
   std::vector<std::future<void>> stepped;
   for (int i = 0; i < kWorlds; ++i) {
@@ -97,7 +101,9 @@ TEST(PoolTasks, BusyWorldsOnATwoThreadPool_NeverRunOnMoreThreads_AndAllAdvance) 
   }
   pool.join();
 
-  EXPECT_LE(tasks.peakConcurrency(), 2);
+  EXPECT_LE(counts.peakRunning.load(), 2);
+  // A record per world stepping at once (two threads), however many phases.
+  EXPECT_LE(tasks.taskRecords(), 2u);
   // The pool's two threads and no world's own.
   EXPECT_LE(mostThreads, threadsBefore + 2);
   const std::uint64_t expected = oneWorkerHash(kRows, kSteps);
@@ -109,15 +115,16 @@ TEST(PoolTasks, OneThreadPool_RunsEveryRangeOnTheSteppingThread) {
   constexpr int kSteps = 30;
   asio::thread_pool pool(1);
   // More workers than threads: every helper queues behind the step itself.
-  PoolTasks tasks(pool, 2);
+  PoolTaskCounts counts;
+  PoolTasks tasks(pool, 2, &counts);
   auto world = pyramidWorld(kRows, tasks.taskSettings());
 
   auto stepped = stepOn(pool.get_executor(), *world, kSteps);
   ASSERT_EQ(stepped.wait_for(kNoStall), std::future_status::ready);
   pool.join();
 
-  EXPECT_EQ(tasks.helpedRanges(), 0);
-  EXPECT_EQ(tasks.peakConcurrency(), 1);
+  EXPECT_EQ(counts.helpedRanges.load(), 0);
+  EXPECT_EQ(counts.peakRunning.load(), 1);
   EXPECT_EQ(world->stateHash(), oneWorkerHash(kRows, kSteps));
 }
 
@@ -125,7 +132,8 @@ TEST(PoolTasks, PoolSaturatedByAnotherRoom_StepFinishesWithoutItsHelpers) {
   constexpr int kRows = 30;
   constexpr int kSteps = 30;
   asio::thread_pool pool(2);
-  PoolTasks tasks(pool, 2);
+  PoolTaskCounts counts;
+  PoolTasks tasks(pool, 2, &counts);
   auto world = pyramidWorld(kRows, tasks.taskSettings());
 
   // Another room's long tick holds the pool's other thread throughout.
@@ -142,8 +150,8 @@ TEST(PoolTasks, PoolSaturatedByAnotherRoom_StepFinishesWithoutItsHelpers) {
   pool.join();
 
   ASSERT_EQ(status, std::future_status::ready);
-  EXPECT_EQ(tasks.helpedRanges(), 0);
-  EXPECT_EQ(tasks.peakConcurrency(), 1);
+  EXPECT_EQ(counts.helpedRanges.load(), 0);
+  EXPECT_EQ(counts.peakRunning.load(), 1);
   EXPECT_EQ(world->stateHash(), oneWorkerHash(kRows, kSteps));
 }
 

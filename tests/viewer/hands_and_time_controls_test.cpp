@@ -110,19 +110,21 @@ TEST_F(ToolControls, DraggingMakesAMouseJoint_TheCursorMovesItsTarget_ReleaseRem
   controls.pointerMoved(Vec2(6, 5));
   controls.update(context, now);
   auto commands = sent();
-  ASSERT_EQ(commands.size(), 1u);
+  ASSERT_EQ(commands.size(), 2u) << "the joint and at once its first target";
   ASSERT_TRUE(commands[0].message.has_create_joint());
+  EXPECT_EQ(commands[1].message.update_joint().target().x(), 6);
   const auto& create = commands[0].message.create_joint();
   EXPECT_EQ(create.body_a(), 3u);
   EXPECT_EQ(create.body_b(), 0u);
   EXPECT_EQ(create.anchor_a().x(), 5);
   ASSERT_TRUE(create.has_mouse());
+  const std::uint32_t tag = create.tag();
+  ASSERT_NE(tag, 0u) << "later commands name the joint by its tag";
   // Mass-scaled: the same brisk follow for any body.
   EXPECT_NEAR(create.mouse().max_force(), 2.0 * settings.grab.maxAcceleration, 1e-9);
   EXPECT_GT(create.mouse().stiffness(), 0);
 
-  // Targets follow the cursor once the server named the joint, at most at grabHz.
-  controls.dragJointAnswered(41);
+  // Targets follow the cursor at once, naming the joint by its tag, at most at grabHz.
   for (int frame = 0; frame < 60; ++frame) {
     controls.pointerMoved(Vec2(6 + frame * 0.01f, 5));
     controls.update(context, now + frame / 60.0);
@@ -130,28 +132,32 @@ TEST_F(ToolControls, DraggingMakesAMouseJoint_TheCursorMovesItsTarget_ReleaseRem
   commands = sent();
   EXPECT_NEAR(double(commands.size()), settings.grabHz, 1.5);
   ASSERT_TRUE(commands[0].message.has_update_joint());
-  EXPECT_EQ(commands[0].message.update_joint().joint_id(), 41u);
+  EXPECT_EQ(commands[0].message.update_joint().joint_tag(), tag);
   EXPECT_TRUE(commands[0].message.update_joint().has_target());
 
   controls.pointerReleased(Vec2(6, 5));
   EXPECT_FALSE(controls.grabbedBody());
   commands = sent();
   ASSERT_EQ(commands.size(), 1u);
-  EXPECT_EQ(commands[0].message.remove_joint().joint_id(), 41u);
+  EXPECT_EQ(commands[0].message.remove_joint().joint_tag(), tag);
 }
 
-TEST_F(ToolControls, AJointAnsweredAfterTheReleaseIsRemovedAtOnce) {
-  controls.pointerPressed(Vec2(5, 5), BodyHit{3, false, Vec2(5, 5)}, now);
+TEST_F(ToolControls, AReleaseRightAfterThePressRemovesTheJointByItsTag_EachDragTagsAnew) {
   ControlContext context = sandbox;
   context.grabbed = GrabbedBody{Vec2(5, 5), 1.0};
-  controls.pointerMoved(Vec2(6, 5));
-  controls.update(context, now);
-  controls.pointerReleased(Vec2(6, 5));
-  sent();
-  controls.dragJointAnswered(7);
-  const auto commands = sent();
-  ASSERT_EQ(commands.size(), 1u);
-  EXPECT_EQ(commands[0].message.remove_joint().joint_id(), 7u);
+  std::vector<std::uint32_t> tags;
+  for (int drag = 0; drag < 2; ++drag) {
+    controls.pointerPressed(Vec2(5, 5), BodyHit{3, false, Vec2(5, 5)}, now);
+    controls.pointerMoved(Vec2(6, 5));
+    controls.update(context, now);
+    controls.pointerReleased(Vec2(6, 5));
+    const auto commands = sent();
+    ASSERT_EQ(commands.size(), 3u) << "the joint, its first target and its removal, without waiting for a reply";
+    tags.push_back(commands[0].message.create_joint().tag());
+    EXPECT_EQ(commands[1].message.update_joint().joint_tag(), tags.back());
+    EXPECT_EQ(commands[2].message.remove_joint().joint_tag(), tags.back());
+  }
+  EXPECT_NE(tags[0], tags[1]);
 }
 
 TEST_F(ToolControls, JPinsTheSelectedBodyAtTheCursorOnIt) {

@@ -106,6 +106,17 @@ class Client {
   std::vector<v1::Events> takeEvents();
   static constexpr std::size_t kMaxKeptEvents = 1024;
 
+  /// The ids a command of this client created (CommandResult body_id,
+  /// joint_id), by its request id, as its reply named them, whether or not
+  /// awaitReply() took the reply; the last kKeptCreations are kept. Nothing
+  /// before the reply came, and for a command that created nothing.
+  struct Created {
+    std::uint32_t body = 0;
+    std::uint32_t joint = 0;
+  };
+  std::optional<Created> created(std::uint64_t requestId) const;
+  static constexpr std::size_t kKeptCreations = 256;
+
   /// Round-trip: a Ping answered after every earlier command was applied.
   /// With `wantStateHash` the stats carry the world's state hash.
   v1::Pong ping(Duration timeout = Duration(10000), bool wantStateHash = false);
@@ -115,6 +126,8 @@ class Client {
   bool receiveOne(std::chrono::steady_clock::time_point deadline);
   void startRead();
   void handle(v1::ServerMessage&& message, std::size_t frameBytes);
+  /// Keeps what a reply says its command created (created()).
+  void remember(const v1::ServerMessage& reply);
   void throwIfFailed() const;
   /// Writes the frames whose added delay has passed.
   void writeDueFrames();
@@ -142,6 +155,7 @@ class Client {
   v1::Welcome welcome_;
   WorldMirror mirror_;
   std::map<std::uint64_t, v1::ServerMessage> replies_;
+  std::map<std::uint64_t, Created> created_;
   std::uint64_t nextRequestId_ = 1;
   std::function<void(const v1::Snapshot&, std::size_t)> snapshotCallback_;
   std::optional<v1::Snapshot> lastSnapshot_;

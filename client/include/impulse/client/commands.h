@@ -118,6 +118,15 @@ v1::ClientMessage setJointTarget(std::uint32_t joint, Point target);
 v1::ClientMessage setJointMotor(std::uint32_t joint, double speed,
                                 std::optional<double> maxForce = std::nullopt);
 v1::ClientMessage removeJoint(std::uint32_t joint);
+/// A CreateJoint given the client's own name for its joint
+/// (CreateJoint.tag, not 0), so later commands may name it by tag before
+/// the reply names its id.
+v1::ClientMessage tagJoint(v1::ClientMessage createJoint, std::uint32_t tag);
+/// An UpdateJoint or RemoveJoint naming the joint by the tag this client
+/// gave it (joint_tag) instead of its id: byJointTag(setJointTarget(0, p), 7).
+v1::ClientMessage byJointTag(v1::ClientMessage jointCommand, std::uint32_t tag);
+/// The same command naming the joint by its id instead.
+v1::ClientMessage byJointId(v1::ClientMessage jointCommand, std::uint32_t joint);
 /// Answered by a JointInfo.
 v1::ClientMessage queryJoint(std::uint32_t joint);
 /// Answered by a SceneData holding the serialised Scene.

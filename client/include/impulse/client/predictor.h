@@ -16,6 +16,8 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <vector>
 
 #include "impulse.pb.h"
 #include "impulse/body.h"
@@ -25,6 +27,13 @@ namespace impulse::client {
 
 class Client;
 class LocalWorld;
+
+/// The snapshots cannot keep the copy true (a bandwidth budget withheld
+/// states); the predictor that threw it is of no further use.
+class PredictionError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct PredictionOptions {
   /// Ticks the copy runs ahead of the last snapshot: the round trip plus a
@@ -50,13 +59,23 @@ struct PredictedBody {
   Vec2 correction = Vec2::Zero();  ///< the offset still shown (m)
 };
 
+/// A spawn the server's snapshot has not brought yet.
+struct PredictedSpawn {
+  std::uint64_t requestId = 0;
+  PredictedBody body;
+  BodyDescription description;
+};
+
 class Predictor {
  public:
-  /// Copies the client's world as its mirror holds it now. The client must
-  /// take snapshots of the whole room (no area of interest, no budget);
-  /// std::invalid_argument names a client without snapshots or an option
-  /// out of range (leadTicks 1..Welcome.max_input_delay_ticks, blendPerTick
-  /// in (0, 1], snapDistance > 0, subSteps 1..64).
+  /// Copies the client's world as its mirror holds it now: the whole room,
+  /// or the bodies of its area of interest (commands naming a body outside
+  /// go out stamped, unpredicted). Every snapshot must carry every change
+  /// of that area: std::invalid_argument names a client without snapshots,
+  /// one whose last snapshot withheld states (Snapshot.states_withheld, a
+  /// bandwidth budget too small for its area), or an option out of range
+  /// (leadTicks 1..Welcome.max_input_delay_ticks, blendPerTick in (0, 1],
+  /// snapDistance > 0, subSteps 1..64).
   Predictor(Client& client, const PredictionOptions& options = {});
   ~Predictor();
   Predictor(const Predictor&) = delete;
@@ -74,6 +93,7 @@ class Predictor {
   /// One tick of the caller's clock (Welcome.tick_hz): takes the newest
   /// snapshot the client applied, when there is one, then steps the copy.
   /// A copy running too far ahead of the snapshots waits a tick instead.
+  /// Throws PredictionError naming a snapshot that withheld states.
   void advance();
 
   /// The tick the next command is stamped for.
@@ -81,9 +101,19 @@ class Predictor {
   /// The body (server id) as predicted, with the correction still shown;
   /// nothing for a body the copy does not hold.
   std::optional<PredictedBody> body(std::uint32_t serverBody) const;
+  /// The body a spawn sent as `requestId` made in the copy, while the
+  /// server's snapshot has not brought it yet; nothing once it has (it is
+  /// then body(Client::created(requestId)->body), owned, its jump from the
+  /// predicted spawn blended as any correction).
+  std::optional<PredictedBody> spawned(std::uint64_t requestId) const;
+  /// The spawns shown by spawned() now, each with its body as the copy
+  /// made it (shapes, material), oldest first.
+  std::vector<PredictedSpawn> unmatchedSpawns() const;
   /// Whether the client's own commands named this body lately (holdTicks):
   /// a viewer shows these from the copy and the others as it did.
   bool owns(std::uint32_t serverBody) const;
+  /// The bodies owns() holds now, ascending.
+  std::vector<std::uint32_t> ownedBodies() const;
   /// Commands sent and not yet in a snapshot.
   std::size_t pending() const { return pending_.size(); }
 
@@ -112,10 +142,26 @@ class Predictor {
 
   /// The body (server id) a command acts on: named, or its joint's body A.
   std::optional<std::uint32_t> bodyNamedBy(const v1::ClientMessage& message) const;
+  /// Applies a pending command to the copy; a joint named by tag whose
+  /// CreateJoint the server answered is named by the server's id.
+  void applyToCopy(const Command& command);
+  void rememberTag(const v1::CreateJoint& joint, std::uint64_t requestId);
+  /// The server's id of the joint a tag names, once the reply to its
+  /// CreateJoint came.
+  std::optional<std::uint32_t> taggedJoint(std::uint32_t tag) const;
+  /// The pending spawns whose replies named the server's body, with
+  /// their bodies' states in the copy (to blend the jump when the
+  /// snapshot brings them).
+  std::map<std::uint32_t, BodyState> answeredSpawns();
   /// Goes back to the snapshot's tick and replays up to the predicted tick.
   void takeSnapshot(const v1::Snapshot& snapshot);
   /// Forgets the commands the snapshot holds.
   void acknowledge(const v1::Snapshot& snapshot);
+  /// A mouse joint's target the server applied: a snapshot describes the
+  /// joint with the target it was made with, so a copy rebuilt from the
+  /// mirror takes the latest one again (restoreTargets).
+  void rememberTarget(const v1::ClientMessage& message);
+  void restoreTargets();
   /// The copy at `tick` with the server's states: its own older state when
   /// it kept one that still describes the room, else rebuilt from the mirror.
   void rewindTo(std::uint64_t tick);
@@ -141,6 +187,16 @@ class Predictor {
   std::map<std::uint32_t, Offset> offsets_;
   /// Body (server id) -> the predicted tick of the last command naming it.
   std::map<std::uint32_t, std::uint64_t> touched_;
+  /// CreateJoint.tag -> the tagged CreateJoint's request id and body A
+  /// (the last kKeptTags tags).
+  struct TaggedJoint {
+    std::uint64_t requestId = 0;
+    std::uint32_t bodyA = 0;
+  };
+  std::map<std::uint32_t, TaggedJoint> tags_;
+  /// Server joint id -> the last UpdateJoint with a target the server applied.
+  std::map<std::uint32_t, v1::ClientMessage> targets_;
+  static constexpr std::size_t kKeptTags = 64;
   std::uint64_t tick_ = 0;
   std::uint64_t snapshotsSeen_ = 0;
   std::uint64_t snapshotTick_ = 0;

@@ -47,8 +47,24 @@ struct BodyPlace {
   Vec2 velocity = Vec2::Zero();
 };
 
-/// Every body's place, taken once per broadcast for all the subscribers
-/// with an area. Reaches are kept between broadcasts (shapes rarely change).
+/// A joint's two bodies (bodyB 0: the world): it goes to an area holding
+/// either of them.
+struct JointPlace {
+  std::uint32_t id = 0;
+  std::uint32_t bodyA = 0;
+  std::uint32_t bodyB = 0;
+};
+
+/// The box a field acts in (none: everywhere, as gravitation): it goes to
+/// an area the box overlaps.
+struct FieldPlace {
+  std::uint32_t id = 0;
+  std::optional<AABB> reach;
+};
+
+/// Every body's place, joint's bodies and field's reach, taken once per
+/// broadcast for all the subscribers with an area. Reaches are kept between
+/// broadcasts (shapes rarely change).
 class BodyPlaces {
  public:
   /// Takes every body's place now; `changes` (normalised) says whose shapes
@@ -58,15 +74,24 @@ class BodyPlaces {
   void rebuild(const World& world);
   /// By id, ascending.
   const std::vector<BodyPlace>& places() const { return places_; }
+  const std::vector<JointPlace>& joints() const { return joints_; }
+  const std::vector<FieldPlace>& fields() const { return fields_; }
   /// The ids of the bodies whose circle overlaps `area`, ascending.
   void inside(const AABB& area, std::vector<std::uint32_t>& ids) const;
+  /// The ids of the joints with a body among `bodies` (ascending), and of
+  /// the fields reaching into `area` (none: the whole room), ascending.
+  void jointsOf(const std::vector<std::uint32_t>& bodies, std::vector<std::uint32_t>& ids) const;
+  void fieldsIn(const std::optional<AABB>& area, std::vector<std::uint32_t>& ids) const;
   /// The body's place; null for a body the world no longer has.
   const BodyPlace* find(std::uint32_t id) const;
 
  private:
   Real reachOf(const World& world, std::uint32_t id);
+  void takeJointsAndFields(const World& world);
 
   std::vector<BodyPlace> places_;
+  std::vector<JointPlace> joints_;
+  std::vector<FieldPlace> fields_;
   std::unordered_map<std::uint32_t, Real> reaches_;
 };
 

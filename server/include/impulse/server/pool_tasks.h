@@ -18,6 +18,11 @@
 /// or idling for work. A helper that finds no open task idles for a moment
 /// (the step's next phase follows within microseconds) and then returns
 /// its thread to the pool.
+///
+/// Why a phase allocates nothing: task records are reused. One goes back to
+/// the free list once its task finished and every helper that joined it has
+/// left it, so a helper never claims a range of the next task through an old
+/// one; there are only ever as many records as tasks open at once.
 
 #include <asio/thread_pool.hpp>
 #include <atomic>
@@ -29,11 +34,21 @@
 
 namespace impulse::server {
 
+/// What tests read of a PoolTasks: threads running ranges at once, the most
+/// seen, and ranges run by helpers rather than the thread that enqueued
+/// them. A PoolTasks made without one counts nothing.
+struct PoolTaskCounts {
+  std::atomic<int> running = 0;
+  std::atomic<int> peakRunning = 0;
+  std::atomic<long long> helpedRanges = 0;
+};
+
 class PoolTasks {
  public:
   /// `workersPerTask`: threads one task may use, its caller's included
   /// (1..kMaxWorkers). The pool must be joined before this is destroyed.
-  PoolTasks(asio::thread_pool& pool, int workersPerTask);
+  PoolTasks(asio::thread_pool& pool, int workersPerTask, PoolTaskCounts* counts = nullptr);
+  ~PoolTasks();
   PoolTasks(const PoolTasks&) = delete;
   PoolTasks& operator=(const PoolTasks&) = delete;
 
@@ -41,10 +56,8 @@ class PoolTasks {
   /// none with one worker per task.
   TaskSettings taskSettings();
 
-  /// Most threads that ran ranges of tasks at the same time, any world's.
-  int peakConcurrency() const { return peakConcurrency_.load(); }
-  /// Ranges run by helpers rather than by the thread that enqueued them.
-  long long helpedRanges() const { return helpedRanges_.load(); }
+  /// Task records made so far: the most tasks that were open at once.
+  std::size_t taskRecords() const;
 
  private:
   struct Task;
@@ -57,22 +70,28 @@ class PoolTasks {
   void postHelpers(int wanted);
   /// A helper's job: works on open tasks until none is left for a moment.
   void help();
-  /// An open task with a range left and a worker index free, joined.
-  std::shared_ptr<Task> joinOpenTask(int& worker);
+  /// An open task with a range left and a worker index free, joined
+  /// (leave it after its ranges).
+  Task* joinOpenTask(int& worker);
   /// Runs ranges of `task` until none is left unclaimed; returns how many.
   int runRanges(Task& task, int worker);
-  void close(const Task& task);
+  /// Takes the finished task off the open list and, once its helpers left
+  /// it, puts its record back for the next task.
+  void close(Task& task);
+  /// Counts a thread starting on ranges (PoolTaskCounts).
+  void countRunning();
 
   asio::thread_pool& pool_;
   const int workersPerTask_;
-  std::mutex openMutex_;
-  std::vector<std::shared_ptr<Task>> open_;
+  PoolTaskCounts* const counts_;
+  mutable std::mutex openMutex_;
+  std::vector<Task*> open_;
   std::atomic<int> openCount_ = 0;
+  /// Every record made, and those free for the next task.
+  std::vector<std::unique_ptr<Task>> records_;
+  std::vector<Task*> free_;
   /// Helpers posted and not yet started, and started ones idling for work.
   std::atomic<int> waitingHelpers_ = 0;
-  std::atomic<int> concurrency_ = 0;
-  std::atomic<int> peakConcurrency_ = 0;
-  std::atomic<long long> helpedRanges_ = 0;
 };
 
 }  // namespace impulse::server

@@ -36,6 +36,7 @@
 #include "impulse/server/access.h"
 #include "impulse/server/commands.h"
 #include "impulse/server/fair_queue.h"
+#include "impulse/server/joint_tags.h"
 #include "impulse/server/options.h"
 #include "impulse/server/session.h"
 #include "impulse/server/simulation.h"
@@ -243,6 +244,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   StampedCommands stamped_;
   std::deque<StepJob> steps_;
   Ownership ownership_;
+  JointTags jointTags_;
   std::int64_t lastSnapshotSlot_ = 0;
   std::uint64_t lastSnapshotBytes_ = 0;
   Clock::time_point lastStatsLog_;
