@@ -70,23 +70,24 @@ void BroadPhase::destroyProxy(std::int32_t proxyKey) {
 }
 
 bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB) {
-  const ProxyKind kind = kindOf(proxyKey);
-  DynamicTree& tree = trees_[treeIndex(kind)];
-  const std::int32_t node = nodeOf(proxyKey);
-  if (tree.box(node).contains(tightAABB)) return false;
-  tree.moveProxy(node, fatten(tightAABB, kind));
-  recordUserBox(proxyKey);
-  moveBuffer_.push_back(proxyKey);
-  return true;
+  return moveOutOfFatBox(proxyKey, tightAABB, false);
 }
 
 bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB) {
+  return moveOutOfFatBox(proxyKey, tightAABB, true);
+}
+
+bool BroadPhase::moveOutOfFatBox(std::int32_t proxyKey, const AABB& tightAABB, bool inBulk) {
   const ProxyKind kind = kindOf(proxyKey);
-  if (kind == ProxyKind::Static) return updateProxy(proxyKey, tightAABB);
   DynamicTree& tree = trees_[treeIndex(kind)];
   const std::int32_t node = nodeOf(proxyKey);
   if (tree.box(node).contains(tightAABB)) return false;
-  tree.enlargeProxy(node, fatten(tightAABB, kind));
+  // Only the movable tree is rebuilt; a static proxy (teleported) re-inserts.
+  if (inBulk && kind == ProxyKind::Movable) {
+    tree.enlargeProxy(node, fatten(tightAABB, kind));
+  } else {
+    tree.moveProxy(node, fatten(tightAABB, kind));
+  }
   recordUserBox(proxyKey);
   moveBuffer_.push_back(proxyKey);
   return true;

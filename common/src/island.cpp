@@ -4,7 +4,6 @@
 // list, so it costs nothing per step until something touches or pushes it.
 
 #include <algorithm>
-#include <limits>
 
 #include "world_data.h"
 

@@ -48,6 +48,16 @@ int heightLimit(int leafCount) {
   return static_cast<int>(3 * std::log2(static_cast<double>(leafCount))) + 2;
 }
 
+// `count` random leaves, user values 0, 1, ...
+std::vector<Leaf> addRandomLeaves(DynamicTree& tree, BoxSource& source, int count) {
+  std::vector<Leaf> leaves;
+  for (int i = 0; i < count; ++i) {
+    const AABB box = source.box();
+    leaves.push_back({tree.createProxy(box, i), box});
+  }
+  return leaves;
+}
+
 std::vector<std::int32_t> queried(const DynamicTree& tree, const AABB& box) {
   std::vector<std::int32_t> found;
   tree.query(box, [&](std::int32_t node) {
@@ -91,11 +101,7 @@ TEST(DynamicTree, EmptyTreeIsValidAndQueriesNothing) {
 TEST(DynamicTree, StaysValidAndShallow_UnderRandomInsertMoveRemove) {
   DynamicTree tree;
   BoxSource source(7);
-  std::vector<Leaf> leaves;
-  for (int i = 0; i < 1000; ++i) {
-    const AABB box = source.box();
-    leaves.push_back({tree.createProxy(box, i), box});
-  }
+  std::vector<Leaf> leaves = addRandomLeaves(tree, source, 1000);
   ASSERT_TRUE(tree.isValid());
   EXPECT_EQ(tree.leafCount(), 1000);
   EXPECT_LE(tree.height(), heightLimit(1000));
@@ -147,11 +153,7 @@ TEST(DynamicTree, StaysShallow_WhenBoxesAreIdenticalOrNested) {
 TEST(DynamicTree, QueryReturnsExactlyTheOverlappingLeaves) {
   DynamicTree tree;
   BoxSource source(11);
-  std::vector<Leaf> leaves;
-  for (int i = 0; i < 1000; ++i) {
-    const AABB box = source.box();
-    leaves.push_back({tree.createProxy(box, i), box});
-  }
+  std::vector<Leaf> leaves = addRandomLeaves(tree, source, 1000);
   expectQueriesMatchBruteForce(tree, leaves, source);
 
   for (Leaf& leaf : leaves) {
@@ -235,11 +237,7 @@ void moveAllInBulk(DynamicTree& tree, std::vector<Leaf>& leaves, BoxSource& sour
 TEST(DynamicTree, EnlargedAndRebuilt_StaysValidExactAndShallow_LeavesKeepTheirNodes) {
   DynamicTree tree;
   BoxSource source(17);
-  std::vector<Leaf> leaves;
-  for (int i = 0; i < 1000; ++i) {
-    const AABB box = source.box();
-    leaves.push_back({tree.createProxy(box, i), box});
-  }
+  std::vector<Leaf> leaves = addRandomLeaves(tree, source, 1000);
   for (int round = 0; round < 20; ++round) {
     moveAllInBulk(tree, leaves, source);
     ASSERT_TRUE(tree.isValid()) << "round " << round;
@@ -264,11 +262,7 @@ TEST(DynamicTree, EnlargedAndRebuilt_StaysValidExactAndShallow_LeavesKeepTheirNo
 TEST(DynamicTree, RebuildJoinsOnlyWhatAMoveGrew) {
   DynamicTree tree;
   BoxSource source(23);
-  std::vector<Leaf> leaves;
-  for (int i = 0; i < 1000; ++i) {
-    const AABB box = source.box();
-    leaves.push_back({tree.createProxy(box, i), box});
-  }
+  std::vector<Leaf> leaves = addRandomLeaves(tree, source, 1000);
   EXPECT_EQ(tree.rebuild(), 0);
   // Two leaves jump across the world: the paths above them come apart into
   // their side subtrees, about two per level.
@@ -308,11 +302,7 @@ TEST(DynamicTree, RebuiltTreesOfIdenticalHistoriesAreIdentical) {
   auto history = [] {
     DynamicTree tree;
     BoxSource source(29);
-    std::vector<Leaf> leaves;
-    for (int i = 0; i < 300; ++i) {
-      const AABB box = source.box();
-      leaves.push_back({tree.createProxy(box, i), box});
-    }
+    std::vector<Leaf> leaves = addRandomLeaves(tree, source, 300);
     for (int round = 0; round < 5; ++round) moveAllInBulk(tree, leaves, source);
     return tree.state();
   };
