@@ -28,9 +28,9 @@ BodyLook lookOf(const client::MirrorBody& body) {
 BodyLook lookOf(const BodyDescription& body) {
   BodyLook look{.shape = body.shape,
                 .material = body.material,
-                .isStatic = body.isStatic,
-                .isKinematic = body.isKinematic,
-                .ignoreGravity = body.ignoreGravity};
+                .isStatic = body.properties.isStatic,
+                .isKinematic = body.properties.isKinematic,
+                .ignoreGravity = body.properties.ignoreGravity};
   for (std::size_t i = 0; i < body.shapes.size(); ++i) {
     if (i == 0) look.flags = body.shapes[i].interaction;
     if (i > 0) look.extraShapes.push_back(body.shapes[i].shape);
