@@ -17,20 +17,15 @@ std::string JointTags::resolve(v1::ClientMessage& message, std::uint32_t client,
     }
     return {};
   }
-  if (message.has_update_joint()) {
-    auto& update = *message.mutable_update_joint();
-    std::uint32_t id = update.joint_id();
-    std::string refusal = resolveTag(id, update.joint_tag(), client, world, "update_joint");
-    if (refusal.empty()) update.set_joint_id(id);
+  // Either command naming a joint by tag is given the joint's id instead.
+  auto nameById = [&](auto& command, const char* name) {
+    std::uint32_t id = command.joint_id();
+    std::string refusal = resolveTag(id, command.joint_tag(), client, world, name);
+    if (refusal.empty()) command.set_joint_id(id);
     return refusal;
-  }
-  if (message.has_remove_joint()) {
-    auto& remove = *message.mutable_remove_joint();
-    std::uint32_t id = remove.joint_id();
-    std::string refusal = resolveTag(id, remove.joint_tag(), client, world, "remove_joint");
-    if (refusal.empty()) remove.set_joint_id(id);
-    return refusal;
-  }
+  };
+  if (message.has_update_joint()) return nameById(*message.mutable_update_joint(), "update_joint");
+  if (message.has_remove_joint()) return nameById(*message.mutable_remove_joint(), "remove_joint");
   return {};
 }
 

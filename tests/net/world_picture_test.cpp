@@ -213,6 +213,16 @@ v1::Snapshot snapshotAt(int tick, bool full,
   return snapshot;
 }
 
+// A viewer's picture fed snapshots by hand, as its Connection feeds them.
+struct ViewerPicture {
+  WorldMirror mirror;
+  viewer::InterpolatedWorld view{1.0 / 30.0};
+  void feed(const v1::Snapshot& snapshot) {
+    ASSERT_TRUE(mirror.apply(snapshot));
+    view.onSnapshot(mirror, snapshot, snapshot.sim_time());
+  }
+};
+
 double drawnRadius(const viewer::InterpolatedWorld& view, std::uint32_t id) {
   for (const auto& body : view.bodies()) {
     if (body.state.id == id) return body.look->shape.circle().radius;
@@ -226,12 +236,9 @@ double drawnRadius(const viewer::InterpolatedWorld& view, std::uint32_t id) {
 // its frames were past T, dropped the look the ball had just been given:
 // the ball was never drawn again.
 TEST(WorldPicture, ViewerDrawsABodyAddedUnderAnIdOfTheWorldItReplaced) {
-  WorldMirror mirror;
-  viewer::InterpolatedWorld view(1.0 / 30.0);
-  auto feed = [&](const v1::Snapshot& snapshot) {
-    ASSERT_TRUE(mirror.apply(snapshot));
-    view.onSnapshot(mirror, snapshot, snapshot.sim_time());
-  };
+  ViewerPicture picture;
+  viewer::InterpolatedWorld& view = picture.view;
+  auto feed = [&](const v1::Snapshot& snapshot) { picture.feed(snapshot); };
   feed(snapshotAt(0, true, {{1, 0.5}, {2, 0.5}, {3, 0.5}, {4, 0.5}, {5, 0.25}}));
   for (int tick = 1; tick <= 10; ++tick) feed(snapshotAt(tick, false));
   feed(snapshotAt(11, true, {{1, 0.5}, {2, 0.5}, {3, 0.5}, {4, 0.5}}));
@@ -255,12 +262,9 @@ TEST(WorldPicture, ViewerDrawsABodyAddedUnderAnIdOfTheWorldItReplaced) {
 // it: the viewer read freed memory (a crash in CI, a re-added body's look
 // under the same address here).
 TEST(WorldPicture, AFramesBodiesKeepTheirLooksThroughTheSnapshotsThatFollowIt) {
-  WorldMirror mirror;
-  viewer::InterpolatedWorld view(1.0 / 30.0);
-  auto feed = [&](const v1::Snapshot& snapshot) {
-    ASSERT_TRUE(mirror.apply(snapshot));
-    view.onSnapshot(mirror, snapshot, snapshot.sim_time());
-  };
+  ViewerPicture picture;
+  viewer::InterpolatedWorld& view = picture.view;
+  auto feed = [&](const v1::Snapshot& snapshot) { picture.feed(snapshot); };
   feed(snapshotAt(0, true, {{1, 0.5}, {2, 0.25}}));
   for (int tick = 1; tick <= 10; ++tick) feed(snapshotAt(tick, false));
   view.update(10 / 30.0);
