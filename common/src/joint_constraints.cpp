@@ -59,7 +59,9 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   row.anchorA = a.q.apply(joint.localAnchorA);
   row.anchorB = mouse ? joint.target : b.q.apply(joint.localAnchorB);
   row.deltaCenter = b.center - a.center;
-  row.deltaAngle = jointAngle(joint, a.q, b.q);
+  row.plainPin = isPlainPin(joint.settings);
+  // The angle's atan2 is a frame's costliest part, and a pin never reads it.
+  row.deltaAngle = row.plainPin ? Real(0) : jointAngle(joint, a.q, b.q);
   row.axis = a.q.apply(joint.localAxisA);
   row.lastAxis = row.axis;
   if (world.settings.enableWarmStarting) row.impulses = joint.impulses;

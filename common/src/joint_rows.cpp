@@ -166,7 +166,8 @@ void pointRow(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumula
       -soft.massScale * solve22(pointInverseMass(row, f), pointVelocity(f, a, b) + bias) -
       soft.impulseScale * accumulated;
   Vec2 next = accumulated + impulse;
-  if (next.norm() > maxImpulse) next *= maxImpulse / next.norm();
+  // A rigid point is unbounded: no square root for it.
+  if (std::isfinite(maxImpulse) && next.norm() > maxImpulse) next *= maxImpulse / next.norm();
   applyPoint(row, f, next - accumulated, a, b);
   accumulated = next;
 }
@@ -422,6 +423,7 @@ void warmStartJoint(JointRow& row, SolverState& a, SolverState& b) {
   const JointImpulses& p = row.impulses;
   Frame f = frameOf(row, a, b);
   applyPoint(row, f, p.point, a, b);
+  if (row.plainPin) return;  // its other impulses are all zero
   apply(row, angularJacobian(), p.angular, a, b);
   Jacobian limits = limitJacobian(row, f, a);
   apply(row, limits, p.axial + p.lower - p.upper, a, b);
@@ -435,8 +437,18 @@ void warmStartJoint(JointRow& row, SolverState& a, SolverState& b) {
 
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass) {
   if (pass.useBias && row.inTree && !row.softRows) return;
+  if (row.plainPin) {
+    const Frame f = frameOf(row, a, b);
+    rigidPoint(row, f, f.d, row.impulses.point, pass, a, b);
+    return;
+  }
   Context x{row, a, b, pass, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { solveKind(x, settings); }, row.joint->settings);
+}
+
+bool isPlainPin(const JointSettings& settings) {
+  const auto* revolute = std::get_if<RevoluteJointSettings>(&settings);
+  return revolute != nullptr && !hasSoftRows(settings);
 }
 
 bool hasSoftRows(const JointSettings& settings) {
