@@ -115,7 +115,7 @@ void DynamicTree::collectBuildItems(bool wholeTree) {
     Node& node = nodes_[index];
     if (node.isLeaf() || !(node.enlarged || wholeTree)) {
       node.parent = kNull;
-      buildItems_.push_back({index, center(node.box)});
+      buildItems_.push_back({node.box, center(node.box), index, 0});
       continue;
     }
     stack[count++] = node.child1;
@@ -148,7 +148,7 @@ std::int32_t DynamicTree::buildSubtree(std::span<BuildItem> items, int depth) {
 // partitions them at the boundary that minimises the children's perimeters
 // weighted by their item counts. Returns the size of the first part, or 0
 // when no boundary separates them (all centres in one bin).
-std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) const {
+std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) {
   AABB spread{items.front().center, items.front().center};
   for (const BuildItem& item : items) spread = spread.unite(AABB{item.center, item.center});
   const int axis = spread.upper.x() - spread.lower.x() >= spread.upper.y() - spread.lower.y() ? 0 : 1;
@@ -163,9 +163,10 @@ std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) const {
     std::size_t count = 0;
   };
   Bin bins[kBinCount];
-  for (const BuildItem& item : items) {
-    Bin& bin = bins[binOf(item)];
-    bin.box = bin.count == 0 ? nodes_[item.node].box : bin.box.unite(nodes_[item.node].box);
+  for (BuildItem& item : items) {
+    item.bin = binOf(item);
+    Bin& bin = bins[item.bin];
+    bin.box = bin.count == 0 ? item.box : bin.box.unite(item.box);
     ++bin.count;
   }
   // The cost of the part above each boundary, swept from the top down.
@@ -193,7 +194,7 @@ std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) const {
   }
   if (bestBoundary == 0) return 0;
   const auto middle = std::partition(items.begin(), items.end(),
-                                     [&](const BuildItem& item) { return binOf(item) < bestBoundary; });
+                                     [&](const BuildItem& item) { return item.bin < bestBoundary; });
   return static_cast<std::size_t>(middle - items.begin());
 }
 

@@ -122,15 +122,18 @@ class DynamicTree {
   std::int64_t freeNodeCount() const;
 
   // A subtree a rebuild keeps whole (a leaf, or an inner node nothing moved
-  // in), with its box's centre, by which the rebuild sorts.
+  // in), with a copy of its box and the box's centre, by which the rebuild
+  // sorts: the splits read the items in order, never the scattered nodes.
   struct BuildItem {
-    std::int32_t node;
+    AABB box;
     Vec2 center;
+    std::int32_t node;
+    std::int32_t bin;  ///< splitBySurfaceArea's scratch
   };
   void reserveBuildItems();
   void collectBuildItems(bool wholeTree);
   std::int32_t buildSubtree(std::span<BuildItem> items, int depth);
-  std::size_t splitBySurfaceArea(std::span<BuildItem> items) const;
+  static std::size_t splitBySurfaceArea(std::span<BuildItem> items);
   std::int32_t joinUnderNewNode(std::int32_t child1, std::int32_t child2);
 
   std::vector<Node> nodes_;
