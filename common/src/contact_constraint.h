@@ -101,11 +101,12 @@ struct Avx2BundlesDeleter {
   void operator()(Avx2Bundles* bundles) const;  // contact_solver_wide_avx2.cpp
 };
 
-/// Where a prepared constraint sits: bundle and lane, or (bundle -1) its
-/// index in the overflow list.
-struct ContactPlace {
+/// The support lane a contact fills as it is prepared (bundle -1: its
+/// contact holds nothing up), and which side of it is the upper body.
+struct SupportPlace {
   std::int32_t bundle = -1;
-  std::int32_t lane = 0;
+  std::int16_t lane = 0;
+  bool upperIsB = false;
 };
 
 /// Runs of entries cut into bundles of a lane width: bundle b holds entries
@@ -127,8 +128,8 @@ struct WideContactSet {
   std::vector<WideConstraint<simd::F4>> bundles4;
   std::unique_ptr<Avx2Bundles, Avx2BundlesDeleter> bundles8;
   std::vector<ContactConstraint> overflow;
-  /// Per ConstraintRef, where its constraint went (the support pass's map).
-  std::vector<ContactPlace> placeOf;
+  /// Per ConstraintRef, its support lane (support_pass_wide_impl.h).
+  std::vector<SupportPlace> supportPlaceOf;
   /// Colour c's bundles are [colorBundleStart[c], colorBundleStart[c + 1]):
   /// one colour's bundles can be solved side by side.
   std::array<std::int32_t, GraphColoring::kOverflow + 1> colorBundleStart{};

@@ -55,9 +55,7 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
   const ContactSoftness softness = contactSoftness(world.settings, step.h);
   support_.order(world, refs_, world.solverStates.size(), softness, step.h);
-  bool intrusion = kernels_->build(world, refs_, softness, coloring, wide_);
-  kernels_->loadSupport(world.tasks, wide_, support_);
-  return intrusion;
+  return kernels_->build(world, refs_, softness, support_, coloring, wide_);
 }
 
 ContactSolverContext ContactConstraints::contextFor(const SubStep& sub) const {

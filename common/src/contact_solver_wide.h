@@ -19,19 +19,18 @@ struct WideContactKernels {
   int lanes;
   /// Colours the touching contacts `refs` (taking colours from the step's
   /// shared colouring) and prepares each straight into its bundle lane (or
-  /// the overflow list). Returns whether any contact overlaps deeper than
-  /// its load explains (the push pass is needed), and chooses the push
-  /// pass's contacts: those of the islands where one does.
+  /// the overflow list), and each of the support pass's rows into its
+  /// support lane from its prepared contact (support_pass.h). Returns
+  /// whether any contact overlaps deeper than its load explains (the push
+  /// pass is needed), and chooses the push pass's contacts: those of the
+  /// islands where one does.
   bool (*build)(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
-                GraphColoring& coloring, WideContactSet& set);
+                const SupportPass& support, GraphColoring& coloring, WideContactSet& set);
   void (*warmStart)(const ContactSolverContext& context, WideContactSet& set);
   void (*solve)(const ContactSolverContext& context, WideContactSet& set, bool useBias);
   /// The push pass (pushOverlap) on the contacts of the islands where one
   /// intruded when built (WideContactSet::pushBundles).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
-  /// Lays the support pass's rows out in bundles, each lane from its
-  /// prepared constraint (support_pass.h).
-  void (*loadSupport)(const TaskRunner& tasks, WideContactSet& set, const SupportPass& pass);
   /// The support pass of one sub-step, storey by storey from the ground.
   void (*solveSupport)(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);

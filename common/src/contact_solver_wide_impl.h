@@ -199,6 +199,24 @@ ContactSolverContext overflowContext(const ContactSolverContext& context, WideCo
   return overflow;
 }
 
+// Bundles per range when filling them side by side: filling one costs
+// about a microsecond, mostly waiting on its contacts.
+constexpr std::int32_t kBundlesPerFillRange = 16;
+
+// Bundles per range of a colour run side by side: a bundle's pass costs
+// tens of nanoseconds, a hand-off to a thread about a microsecond.
+constexpr std::int32_t kBundlesPerRange = 64;
+
+}  // namespace
+}  // namespace impulse
+
+// The support pass's kernels, on the body gather and scatter above; the
+// contacts fill its lanes as they are prepared.
+#include "support_pass_wide_impl.h"
+
+namespace impulse {
+namespace {
+
 // ---- passes ------------------------------------------------------------------
 
 // What preparing a bundle needs besides the constraint's own fields.
@@ -406,24 +424,21 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   prefetchContacts(world, refs, entries);
   BundleInputs<F> inputs{};
   for (std::size_t lane = 0; lane < entries.size(); ++lane) {
-    const int laneIndex = static_cast<int>(lane);
-    set.placeOf[std::size_t(entries[lane])] = {b, laneIndex};
-    gatherLane(world, refs[std::size_t(entries[lane])], softness, c, inputs, laneIndex);
+    gatherLane(world, refs[std::size_t(entries[lane])], softness, c, inputs, static_cast<int>(lane));
   }
-  return laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
+  const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
+  packSupportLanes(set, c, entries);
+  return intruding;
 }
-
-// Bundles per range when filling them side by side: filling one costs
-// about a microsecond, mostly waiting on its contacts.
-constexpr std::int32_t kBundlesPerFillRange = 16;
 
 template <class F>
 bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
-                       const ContactSoftness& softness, GraphColoring& coloring, WideContactSet& set) {
+                       const ContactSoftness& softness, const SupportPass& support, GraphColoring& coloring,
+                       WideContactSet& set) {
   set.colorOf.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) set.colorOf[i] = coloring.take(refs[i].stateA, refs[i].stateB);
   const ColorStarts start = sortByColor(set.colorOf, set.order);
-  set.placeOf.resize(refs.size());
+  placeSupportRows<F>(support, refs.size(), set);
   set.contactSlices.cut(std::span(start).first(GraphColoring::kOverflow + 1), F::kLanes, set.colorBundleStart);
   const std::int32_t bundleCount = set.contactSlices.count();
 
@@ -448,20 +463,20 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   set.overflow.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
-    set.placeOf[std::size_t(set.order[k])] = {-1, static_cast<std::int32_t>(set.overflow.size())};
     ContactConstraint& constraint = set.overflow.emplace_back();
     prepareContact(world, ref, softness, constraint);
+    const SupportPlace place = set.supportPlaceOf[std::size_t(set.order[k])];
+    if (place.bundle >= 0) {
+      packSupportLane(supportBundlesOf<F>(set)[std::size_t(place.bundle)], place.lane, constraint, place.upperIsB);
+    }
     if (!hasIntrusion(constraint, world.contacts[ref.contact].manifold)) continue;
     markPushed(set, constraint.stateA, constraint.stateB);
     anyIntrusion = true;
   }
+  finishSupportBundles<F>(world.tasks, set);
   selectPushedContacts<F>(set, anyIntrusion);
   return anyIntrusion;
 }
-
-// Bundles per range of a colour run side by side: a bundle's pass costs
-// tens of nanoseconds, a hand-off to a thread about a microsecond.
-constexpr std::int32_t kBundlesPerRange = 64;
 
 // visit(bundle) colour by colour; one colour's bundles side by side, since
 // none of their lanes shares a body.
@@ -563,15 +578,6 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   for (std::int32_t index : set.pushOverflow) pushOverlap(context, set.overflow[std::size_t(index)]);
 }
 
-}  // namespace
-}  // namespace impulse
-
-// The support pass's kernels, on the body gather and scatter above.
-#include "support_pass_wide_impl.h"
-
-namespace impulse {
-namespace {
-
 template <class F>
 void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   const F threshold = simd::broadcast<F>(-context.restitutionThreshold);
@@ -641,8 +647,8 @@ void storeWideImpulses(const WideContactSet& set, WorldData& world) {
 /// This width's passes as a table (contact_solver_wide.h).
 template <class F>
 WideContactKernels makeWideContactKernels() {
-  return {F::kLanes,        &buildWideContacts<F>, &warmStartWide<F>, &solveWide<F>,        &pushWide<F>,
-          &loadSupportWide<F>, &solveSupportWide<F>, &restitutionWide<F>, &storeWideImpulses<F>};
+  return {F::kLanes,      &buildWideContacts<F>, &warmStartWide<F>,    &solveWide<F>,
+          &pushWide<F>,    &solveSupportWide<F>,  &restitutionWide<F>, &storeWideImpulses<F>};
 }
 
 }  // namespace

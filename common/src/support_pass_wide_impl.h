@@ -101,40 +101,53 @@ void finishSupportBundle(WideSupportRow<F>& row) {
   row.pairInverse22 = simd::select(pair, k11 / det, zero);
 }
 
-// Support bundle b's lanes from the prepared contacts of its rows.
+// Lays the rows out group by group, each group in bundles of F::kLanes, and
+// notes each row's lane by its contact, which fills the lane as it is
+// prepared (packSupportLanes): the contact's numbers are at hand then.
+// Short bundles start empty; every other lane is written whole.
 template <class F>
-void fillSupportBundle(WideContactSet& set, const SupportPass& pass, std::int32_t b) {
+void placeSupportRows(const SupportPass& pass, std::size_t refCount, WideContactSet& set) {
   static const WideSupportRow<F> kEmpty = emptySupportBundle<F>();
-  const std::vector<WideConstraint<F>>& contacts = bundlesOf<F>(set);
-  WideSupportRow<F>& bundle = supportBundlesOf<F>(set)[std::size_t(b)];
-  bundle = kEmpty;
-  const std::int32_t first = set.supportSlices.first[std::size_t(b)];
-  ContactConstraint scratch;
-  for (int lane = 0; lane < set.supportSlices.lanes[std::size_t(b)]; ++lane) {
-    const SupportRow& row = pass.rows()[std::size_t(first + lane)];
-    const ContactPlace place = set.placeOf[std::size_t(row.ref)];
-    if (place.bundle < 0) {
-      packSupportLane(bundle, lane, set.overflow[std::size_t(place.lane)], row.upperIsB);
-      continue;
-    }
-    unpackForSupport(contacts[std::size_t(place.bundle)], place.lane, scratch);
-    packSupportLane(bundle, lane, scratch, row.upperIsB);
-  }
-  finishSupportBundle(bundle);
-}
-
-// Lays the rows out group by group, each group in bundles of F::kLanes,
-// then fills the bundles side by side.
-template <class F>
-void loadSupportWide(const TaskRunner& tasks, WideContactSet& set, const SupportPass& pass) {
   const std::span<const std::int32_t> groups = pass.groupStarts();
   set.supportGroupBundle.resize(groups.size());
   set.supportSlices.cut(groups, F::kLanes, set.supportGroupBundle);
   const std::int32_t count = set.supportSlices.count();
-  supportBundlesOf<F>(set).resize(std::size_t(count));
-  tasks.forRanges(count, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t b = begin; b < end; ++b) fillSupportBundle<F>(set, pass, b);
-  });
+  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
+  bundles.resize(std::size_t(count));
+  set.supportPlaceOf.assign(refCount, SupportPlace{});
+  for (std::int32_t b = 0; b < count; ++b) {
+    const std::int32_t first = set.supportSlices.first[std::size_t(b)];
+    const int lanes = set.supportSlices.lanes[std::size_t(b)];
+    if (lanes < F::kLanes) bundles[std::size_t(b)] = kEmpty;
+    for (int lane = 0; lane < lanes; ++lane) {
+      const SupportRow& row = pass.rows()[std::size_t(first + lane)];
+      set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
+    }
+  }
+}
+
+// The support lanes of a prepared contact bundle's lanes (`entries`, as
+// refs), for the lanes whose contact holds a body up.
+template <class F>
+void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std::span<const std::int32_t> entries) {
+  std::vector<WideSupportRow<F>>& support = supportBundlesOf<F>(set);
+  for (std::size_t lane = 0; lane < entries.size(); ++lane) {
+    const SupportPlace place = set.supportPlaceOf[std::size_t(entries[lane])];
+    if (place.bundle < 0) continue;
+    ContactConstraint scratch;
+    unpackForSupport(bundle, static_cast<int>(lane), scratch);
+    packSupportLane(support[std::size_t(place.bundle)], place.lane, scratch, place.upperIsB);
+  }
+}
+
+// Each support bundle's masses once all its lanes are in, side by side.
+template <class F>
+void finishSupportBundles(const TaskRunner& tasks, WideContactSet& set) {
+  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
+  tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
+                  [&](std::int32_t begin, std::int32_t end) {
+                    for (std::int32_t b = begin; b < end; ++b) finishSupportBundle(bundles[std::size_t(b)]);
+                  });
 }
 
 template <class F>
