@@ -22,11 +22,12 @@ RefSide sideOf(const Body& body) {
   return body.awake ? RefSide{body.solverIndex, body.invMass, body.invInertia} : RefSide{};
 }
 
-ConstraintRef refOf(const WorldData& world, std::int32_t index) {
+ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) {
   const Contact& contact = world.contacts[index];
   const RefSide a = sideOf(world.bodies[contact.edges.bodyA]);
   const RefSide b = sideOf(world.bodies[contact.edges.bodyB]);
-  return {index, a.state, b.state, false, a.invMass, a.invInertia, b.invMass, b.invInertia};
+  return {index,     a.state,      b.state,   false, facingOf(contact.manifold.normal, up),
+          a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
 // Refs per range when collecting them side by side.
@@ -36,8 +37,9 @@ constexpr std::int32_t kRefsPerRange = 256;
 void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs) {
   const std::vector<std::int32_t>& touching = world.touchingContacts;
   refs.resize(touching.size());
+  const Vec2 up = upwards(world.settings.gravity);
   world.tasks.forRanges(static_cast<std::int32_t>(touching.size()), kRefsPerRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t i = begin; i < end; ++i) refs[std::size_t(i)] = refOf(world, touching[std::size_t(i)]);
+    for (std::int32_t i = begin; i < end; ++i) refs[std::size_t(i)] = refOf(world, touching[std::size_t(i)], up);
   });
 }
 

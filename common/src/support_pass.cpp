@@ -14,8 +14,6 @@ constexpr std::int32_t kUnreached = -1;
 // ones lean on their neighbour; among them the 30 degrees of circles packed
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
-// Contacts per range when classifying them side by side.
-constexpr std::int32_t kRefsPerRange = 256;
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
@@ -63,23 +61,31 @@ std::int32_t findStack(std::vector<std::int32_t>& stack, std::int32_t state) {
 
 }  // namespace
 
+Vec2 upwards(const Vec2& gravity) {
+  return gravity.squaredNorm() > 0 ? Vec2(-gravity.normalized()) : Vec2::Zero();
+}
+
+std::int8_t facingOf(const Vec2& normal, const Vec2& up) {
+  const Real upward = normal.dot(up);
+  return upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+}
+
 // Breadth-first from the static dummy (state 0) over the level contacts
-// (by facing_), held as adjacency lists in one array (counted, then
+// (ConstraintRef::facing), held as adjacency lists in one array (counted, then
 // filled). Only level contacts count: a column of circles against a wall
 // touches the static world at every storey, yet stands on the ground alone.
 void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount) {
   edgeStart_.assign(stateCount + 1, 0);
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (facing_[i] == 0) continue;
-    ++edgeStart_[std::size_t(refs[i].stateA) + 1];
-    ++edgeStart_[std::size_t(refs[i].stateB) + 1];
+  for (const ConstraintRef& ref : refs) {
+    if (ref.facing == 0) continue;
+    ++edgeStart_[std::size_t(ref.stateA) + 1];
+    ++edgeStart_[std::size_t(ref.stateB) + 1];
   }
   for (std::size_t s = 1; s <= stateCount; ++s) edgeStart_[s] += edgeStart_[s - 1];
   neighbours_.resize(std::size_t(edgeStart_[stateCount]));
   cursor_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (facing_[i] == 0) continue;
-    const ConstraintRef& ref = refs[i];
+  for (const ConstraintRef& ref : refs) {
+    if (ref.facing == 0) continue;
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateA)]++)] = ref.stateB;
     neighbours_[std::size_t(cursor_[std::size_t(ref.stateB)]++)] = ref.stateA;
   }
@@ -97,28 +103,16 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
   }
 }
 
-void SupportPass::classifyContacts(const WorldData& world, std::span<const ConstraintRef> refs) {
-  const Vec2 up = -world.settings.gravity.normalized();
-  facing_.resize(refs.size());
-  world.tasks.forRanges(static_cast<std::int32_t>(refs.size()), kRefsPerRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t i = begin; i < end; ++i) {
-      const Real upward = world.contacts[refs[std::size_t(i)].contact].manifold.normal.dot(up);
-      facing_[std::size_t(i)] = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
-    }
-  });
-}
-
 bool SupportPass::sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
   auto sameRef = [](const ConstraintRef& a, const ConstraintRef& b) {
-    return a.contact == b.contact && a.stateA == b.stateA && a.stateB == b.stateB;
+    return a.contact == b.contact && a.stateA == b.stateA && a.stateB == b.stateB && a.facing == b.facing;
   };
-  return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ && facing_ == lastFacing_ &&
+  return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ &&
          world.awakeBodies == lastAwake_ && std::equal(refs.begin(), refs.end(), lastRefs_.begin(), lastRefs_.end(), sameRef);
 }
 
 void SupportPass::remember(const WorldData& world, std::span<const ConstraintRef> refs) {
   lastRefs_.assign(refs.begin(), refs.end());
-  lastFacing_ = facing_;
   lastAwake_ = world.awakeBodies;
   lastJointLinkChanges_ = world.jointLinkChanges;
   haveLast_ = true;
@@ -220,7 +214,6 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   }
   weightPerMass_ = world.settings.gravity.norm() * h;
   compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
-  classifyContacts(world, refs);
   if (!sameGraphAsLastStep(world, refs)) {
     findCandidates(world, refs, stateCount);
     remember(world, refs);
@@ -242,8 +235,8 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const ConstraintRef& ref = refs[i];
-    if (facing_[i] == 0) continue;
-    const bool upperIsB = facing_[i] > 0;
+    if (ref.facing == 0) continue;
+    const bool upperIsB = ref.facing > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;

@@ -37,6 +37,12 @@ struct WorldData;
 /// taller or heavier keep the pass. Rows on the static world always run.
 inline constexpr Real kSupportedSink = Real(0.001);
 
+/// Up: against gravity (zero without it).
+Vec2 upwards(const Vec2& gravity);
+/// A contact of this normal is level enough to stand on (ConstraintRef::facing):
+/// +1 with B above, -1 with A above, 0 not level.
+std::int8_t facingOf(const Vec2& normal, const Vec2& up);
+
 /// One supporting contact: its ConstraintRef and which side holds the upper
 /// body.
 struct SupportRow {
@@ -85,7 +91,6 @@ class SupportPass {
     Real dynamic = 0;
   };
 
-  void classifyContacts(const WorldData& world, std::span<const ConstraintRef> refs);
   bool sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const;
   void remember(const WorldData& world, std::span<const ConstraintRef> refs);
   void findCandidates(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
@@ -99,11 +104,8 @@ class SupportPass {
 
   Real weightPerMass_ = 0;  ///< g * h: a unit mass's weight per sub-step
   Compliance compliance_;
-  /// By ref: +1 level with B above, -1 level with A above, 0 not level.
-  std::vector<std::int8_t> facing_;
   /// What last step's candidates were built from (sameGraphAsLastStep).
   std::vector<ConstraintRef> lastRefs_;
-  std::vector<std::int8_t> lastFacing_;
   std::vector<std::int32_t> lastAwake_;
   std::uint64_t lastJointLinkChanges_ = 0;
   bool haveLast_ = false;
