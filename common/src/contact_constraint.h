@@ -34,6 +34,9 @@ struct ConstraintRef {
   Real invInertiaA = 0;
   Real invMassB = 0;
   Real invInertiaB = 0;
+  /// What its points carried in the last sub-step of last step (normal
+  /// plus support impulses): the support pass's measured load.
+  Real lastLoad = 0;
 };
 
 struct ConstraintPoint {

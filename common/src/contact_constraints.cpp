@@ -22,12 +22,22 @@ RefSide sideOf(const Body& body) {
   return body.awake ? RefSide{body.solverIndex, body.invMass, body.invInertia} : RefSide{};
 }
 
+Real lastLoad(const Manifold& manifold) {
+  Real load = 0;
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    load += manifold.points[j].normalImpulse + manifold.points[j].supportImpulse;
+  }
+  return load;
+}
+
+// Everything the step reads of a contact outside its bundle lane, read
+// together while its lines are in.
 ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) {
   const Contact& contact = world.contacts[index];
   const RefSide a = sideOf(world.bodies[contact.edges.bodyA]);
   const RefSide b = sideOf(world.bodies[contact.edges.bodyB]);
-  return {index,     a.state,      b.state,   false, facingOf(contact.manifold.normal, up),
-          a.invMass, a.invInertia, b.invMass, b.invInertia};
+  return {index,     a.state,      b.state,   false,        facingOf(contact.manifold.normal, up),
+          a.invMass, a.invInertia, b.invMass, b.invInertia, lastLoad(contact.manifold)};
 }
 
 // Refs per range when collecting them side by side.

@@ -41,16 +41,6 @@ Real complianceOf(const Softness& softness) {
   return softness.impulseScale / (softness.massScale * softness.biasRate);
 }
 
-// What the contact's points carried in the last sub-step of last step.
-Real lastLoad(const WorldData& world, const ConstraintRef& ref) {
-  const Manifold& manifold = world.contacts[ref.contact].manifold;
-  Real load = 0;
-  for (int j = 0; j < manifold.pointCount; ++j) {
-    load += manifold.points[j].normalImpulse + manifold.points[j].supportImpulse;
-  }
-  return load;
-}
-
 std::int32_t findStack(std::vector<std::int32_t>& stack, std::int32_t state) {
   while (stack[std::size_t(state)] != state) {
     stack[std::size_t(state)] = stack[std::size_t(stack[std::size_t(state)])];
@@ -137,7 +127,7 @@ std::int32_t SupportPass::lowerOf(const SupportRow& row, std::span<const Constra
 // the soft contact's under that load (ground first): load times the pair's
 // inverse mass times the contact's compliance. An estimate within a small
 // factor: the points' lever arms and the load's true spread are left out.
-void SupportPass::estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs) {
+void SupportPass::estimateSinks(std::span<const ConstraintRef> refs) {
   const std::size_t stateCount = level_.size();
   carried_.assign(stateCount, 0);
   supports_.assign(stateCount, 0);
@@ -157,7 +147,7 @@ void SupportPass::estimateSinks(const WorldData& world, std::span<const Constrai
     const std::int32_t upper = upperOf(row, refs);
     const std::int32_t lower = lowerOf(row, refs);
     const Real atRest = weightPerMass_ * carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
-    const Real load = std::max(atRest, lastLoad(world, ref));
+    const Real load = std::max(atRest, ref.lastLoad);
     const Real compliance = lower == 0 ? compliance_.statics : compliance_.dynamic;
     const Real soft = compliance * load * (lowerInvMass(row, ref) + upperInvMass(row, ref));
     sink_[std::size_t(upper)] = std::max(sink_[std::size_t(upper)], sink_[std::size_t(lower)] + soft);
@@ -218,7 +208,7 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
     findCandidates(world, refs, stateCount);
     remember(world, refs);
   }
-  estimateSinks(world, refs);
+  estimateSinks(refs);
   keepStacksThatSink(refs);
   for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
 }

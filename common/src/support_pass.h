@@ -96,7 +96,7 @@ class SupportPass {
   void findCandidates(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
   void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
-  void estimateSinks(const WorldData& world, std::span<const ConstraintRef> refs);
+  void estimateSinks(std::span<const ConstraintRef> refs);
   void keepStacksThatSink(std::span<const ConstraintRef> refs);
   bool keeps(const SupportRow& row, std::span<const ConstraintRef> refs);
   std::int32_t upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
