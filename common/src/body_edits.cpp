@@ -110,6 +110,7 @@ InputResult World::setTransform(BodyId id, const Vec2& position, Real angle) {
   } else {
     wakeIsland(w, slot);
   }
+  w.changes.mark(BodyChange::Moved, id);
   return {};
 }
 
@@ -129,6 +130,7 @@ InputResult World::setMaterial(BodyId id, Material material) {
   // One density over every shape keeps the shapes where they are and gives
   // a mass with area wherever there was one: nothing for the check to refuse.
   reshapeBody(w, slot);
+  w.changes.mark(BodyChange::Redescribed, id);
   return {};
 }
 
@@ -164,6 +166,7 @@ InputResult World::setBodyType(BodyId id, BodyType type) {
     body->rotation0 = body->transform.q;
     wakeIsland(w, slot);
   }
+  w.changes.mark(BodyChange::Redescribed, id);
   return {};
 }
 

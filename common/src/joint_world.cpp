@@ -188,6 +188,15 @@ void wakeJointBodies(WorldData& world, const Joint& joint) {
   }
 }
 
+// A joint made or destroyed by a call wakes its bodies: a reader gets their
+// states (awake now) with the joint.
+void markJointBodiesMoved(WorldData& world, const Joint& joint) {
+  for (int side = 0; side < 2; ++side) {
+    if (joint.edges.body(side) != kNullIndex)
+      world.changes.mark(BodyChange::Moved, world.idOf(joint.edges.body(side)));
+  }
+}
+
 void destroyContactsBetween(WorldData& world, std::int32_t a, std::int32_t b) {
   if (a == kNullIndex || b == kNullIndex) return;
   std::int32_t key = world.bodies[a].contactHead;
@@ -214,6 +223,7 @@ JointId idOf(const WorldData& world, std::int32_t index) {
 
 void removeJoint(WorldData& world, std::int32_t index) {
   Joint& joint = world.joints[index];
+  world.changes.mark(JointChange::Destroyed, idOf(world, index));
   wakeJointBodies(world, joint);
   unlinkJoint(world, index);
   rediscoverPair(world, joint);
@@ -236,9 +246,7 @@ bool jointBlocksContact(const WorldData& world, std::int32_t bodyA, std::int32_t
 
 void destroyBodyJoints(WorldData& world, std::int32_t body) {
   while (world.bodies[body].jointHead != kNullIndex) {
-    std::int32_t index = edgeElement(world.bodies[body].jointHead);
-    world.removedJoints.push_back(idOf(world, index));
-    removeJoint(world, index);
+    removeJoint(world, edgeElement(world.bodies[body].jointHead));
   }
 }
 
@@ -253,11 +261,15 @@ JointResult World::createJoint(const JointDef& def) {
   const Joint& joint = w.joints[index];
   if (!joint.collideConnected) destroyContactsBetween(w, joint.edges.bodyA, joint.edges.bodyB);
   wakeJointBodies(w, joint);
+  w.changes.mark(JointChange::Created, idOf(w, index));
+  markJointBodiesMoved(w, joint);
   return {idOf(w, index), {}};
 }
 
 bool World::destroyJoint(JointId id) {
-  if (findLive(impl_->joints, id) == nullptr) return false;
+  const Joint* joint = findLive(impl_->joints, id);
+  if (joint == nullptr) return false;
+  markJointBodiesMoved(*impl_, *joint);
   removeJoint(*impl_, id.slot());
   return true;
 }
@@ -305,6 +317,7 @@ InputResult World::updateJoint(JointId id, const JointUpdate& update) {
   if (std::string error = applyUpdate(changed, update); !error.empty()) return {error};
   *joint = changed;
   wakeJointBodies(w, *joint);
+  w.changes.mark(JointChange::Updated, id);
   return {};
 }
 
@@ -344,6 +357,5 @@ std::optional<JointState> World::jointState(JointId id) const {
 std::vector<JointId> World::jointIds() const { return liveIds<JointId>(impl_->joints, impl_->liveJoints); }
 
 int World::jointCount() const { return impl_->liveJoints; }
-std::span<const JointId> World::removedJoints() const { return impl_->removedJoints; }
 
 }  // namespace impulse

@@ -159,7 +159,26 @@ World::World(const WorldSettings& settings) : impl_(std::make_unique<WorldData>(
 }
 World::~World() = default;
 World::World(World&&) noexcept = default;
-World& World::operator=(World&&) noexcept = default;
+
+World& World::operator=(World&& other) noexcept {
+  if (this == &other) return *this;
+  guard_ = std::move(other.guard_);
+  replaceContents(std::move(other.impl_));
+  return *this;
+}
+
+// The change record is this world's, not its contents': its reader learns
+// that everything was replaced, and the revision keeps counting up.
+void World::replaceContents(std::unique_ptr<WorldData> next) {
+  if (impl_ && next) next->changes = std::move(impl_->changes);
+  if (next) next->changes.replaced();
+  impl_ = std::move(next);
+  guard_.escaped.clear();
+}
+
+ChangeView World::changes() const { return impl_->changes.view(); }
+
+void World::clearChanges() { impl_->changes.clear(); }
 
 CreateResult World::createBody(const BodyDef& def) {
   WorldData& w = *impl_;
@@ -195,6 +214,7 @@ CreateResult World::createBody(const BodyDef& def) {
       w.awakeBodies.push_back(slot);
     }
   }
+  w.changes.mark(BodyChange::Created, w.idOf(slot));
   return {w.idOf(slot), {}};
 }
 
@@ -217,6 +237,7 @@ ShapeResult World::createShape(BodyId id, const ShapeDef& def) {
     return {{}, error};
   }
   if (w.bodies[slot].isStatic) wakeBodiesUnder(w, shapeAABB(w, s));
+  w.changes.mark(BodyChange::Redescribed, id);
   return {w.shapeIdOf(s), {}};
 }
 
@@ -238,6 +259,7 @@ InputResult World::destroyShape(ShapeId id) {
   destroyShapeContacts(w, id.slot());
   detachShape(w, id.slot());
   reshapeBody(w, body);
+  w.changes.mark(BodyChange::Redescribed, w.idOf(body));
   return {};
 }
 
@@ -303,7 +325,7 @@ CreateResult World::createConcavePolygon(std::span<const Vec2> points, const Bod
 
 namespace {
 
-// Removes a body with its contacts and joints (added to removedJoints).
+// Removes a body with its contacts and joints.
 bool removeBody(WorldData& w, BodyId id) {
   Body* body = w.find(id);
   if (body == nullptr) return false;
@@ -317,23 +339,19 @@ bool removeBody(WorldData& w, BodyId id) {
   ++body->generation;
   w.freeBodies.release(slot);
   --w.liveBodies;
+  w.changes.mark(BodyChange::Destroyed, id);
   return true;
 }
 
 }  // namespace
 
-bool World::destroyBody(BodyId id) {
-  impl_->removedJoints.clear();
-  return removeBody(*impl_, id);
-}
+bool World::destroyBody(BodyId id) { return removeBody(*impl_, id); }
 
 void World::clear() {
-  WorldSettings settings = impl_->settings;
-  const Vec2d origin = impl_->origin;
-  impl_ = std::make_unique<WorldData>();
-  impl_->settings = settings;
-  impl_->origin = origin;
-  guard_.escaped.clear();
+  auto empty = std::make_unique<WorldData>();
+  empty->settings = impl_->settings;
+  empty->origin = impl_->origin;
+  replaceContents(std::move(empty));
 }
 
 bool World::isValid(BodyId id) const { return impl_->find(id) != nullptr; }
@@ -382,8 +400,11 @@ std::optional<ShapeInteraction> World::shapeInteraction(ShapeId id) const {
 
 InputResult World::setShapeInteraction(ShapeId id, const ShapeInteraction& interaction) {
   WorldData& w = *impl_;
-  if (w.find(id) == nullptr) return {"no shape " + std::to_string(id.value)};
+  const ShapeSlot* shape = w.find(id);
+  if (shape == nullptr) return {"no shape " + std::to_string(id.value)};
+  const BodyId body = w.idOf(shape->body);
   changeShapeInteraction(w, id.slot(), interaction);
+  w.changes.mark(BodyChange::Redescribed, body);
   return {};
 }
 
@@ -403,6 +424,7 @@ InputResult World::setGravity(const Vec2& gravity) {
   impl_->settings.gravity = gravity;
   // Resting bodies must feel the new gravity.
   wakeAll(*impl_);
+  impl_->changes.mark(WorldChange::Settings);
   return {};
 }
 
@@ -428,6 +450,7 @@ InputResult World::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Ve
   wakeIsland(*impl_, id.slot());
   body->linearVelocity += body->invMass * impulse;
   if (point) body->angularVelocity += body->invInertia * cross(*point - body->transform.p, impulse);
+  impl_->changes.mark(BodyChange::Moved, id);
   return {};
 }
 
@@ -437,6 +460,7 @@ InputResult World::applyForce(BodyId id, const Vec2& force, std::optional<Vec2> 
   wakeIsland(*impl_, id.slot());
   body->force += force;
   if (point) body->torque += cross(*point - body->transform.p, force);
+  impl_->changes.mark(BodyChange::Moved, id);
   return {};
 }
 
@@ -448,6 +472,7 @@ InputResult World::setVelocity(BodyId id, const Vec2& linear, Real angular) {
   wakeIsland(*impl_, id.slot());
   body->linearVelocity = linear;
   body->angularVelocity = angular;
+  impl_->changes.mark(BodyChange::Moved, id);
   return {};
 }
 
@@ -473,8 +498,11 @@ void World::step(Real dt) {
     w.profile.*stage.time = millisecondsSince(stageStart);
   }
   guardStep(w, guard_);
-  w.removedJoints.clear();
-  for (BodyId id : guard_.escaped) removeBody(w, id);
+  for (BodyId id : guard_.escaped) {
+    removeBody(w, id);
+    w.changes.mark(BodyChange::Escaped, id);
+  }
+  w.changes.stepped(w.movedBodies);
   publishEvents(w);
 
   w.profile.total = millisecondsSince(start);
@@ -487,11 +515,15 @@ FieldId World::addField(std::shared_ptr<const ForceField> field) {
   FieldId id{impl_->nextFieldId++};
   impl_->fields.push_back({id, std::move(field)});
   wakeAll(*impl_);
+  impl_->changes.mark(FieldChange::Added, id);
   return id;
 }
 
 bool World::removeField(FieldId id) {
-  return std::erase_if(impl_->fields, [&](const FieldSlot& slot) { return slot.id == id; }) > 0;
+  if (std::erase_if(impl_->fields, [&](const FieldSlot& slot) { return slot.id == id; }) == 0)
+    return false;
+  impl_->changes.mark(FieldChange::Removed, id);
+  return true;
 }
 
 int World::fieldCount() const { return static_cast<int>(impl_->fields.size()); }
@@ -523,6 +555,7 @@ void World::setSettings(const WorldSettings& settings) {
   Vec2 previousGravity = impl_->settings.gravity;
   impl_->settings = settings;
   if (settings.gravity != previousGravity) setGravity(settings.gravity);
+  impl_->changes.mark(WorldChange::Settings);
 }
 
 const StepProfile& World::profile() const { return impl_->profile; }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "body_data.h"
+#include "change_record.h"
 #include "shape_data.h"
 #include "contact_constraints.h"
 #include "contact_data.h"
@@ -71,7 +72,6 @@ struct WorldData {
   std::vector<Joint> joints;
   FreeList freeJoints;
   int liveJoints = 0;
-  std::vector<JointId> removedJoints;
   /// Counts every joint linked to or unlinked from its bodies: which bodies
   /// are jointed has not changed while it stays.
   std::uint64_t jointLinkChanges = 0;
@@ -79,6 +79,11 @@ struct WorldData {
   /// In the order they were added, which is the order they apply in.
   std::vector<FieldSlot> fields;
   std::uint32_t nextFieldId = 1;
+
+  /// What changed since the reader last cleared it (World::changes). It
+  /// belongs to the World, not to its contents: a clear or a load carries
+  /// it over.
+  ChangeRecord changes;
 
   /// Sensor shapes by slot, each with what overlapped it after the last step.
   std::vector<Sensor> sensors;
@@ -200,7 +205,7 @@ void moveBodyProxies(WorldData& world, std::int32_t body);
 void touchBodyProxies(WorldData& world, std::int32_t body);
 // joint_world.cpp: a joint with collideConnected off between the bodies.
 bool jointBlocksContact(const WorldData& world, std::int32_t bodyA, std::int32_t bodyB);
-// joint_world.cpp: removes the body's joints, listing them in removedJoints.
+// joint_world.cpp: removes the body's joints, marking them destroyed.
 void destroyBodyJoints(WorldData& world, std::int32_t body);
 // joint_world.cpp: empty when the settings' numbers are finite and in range.
 std::string checkJointSettings(const JointSettings& settings);

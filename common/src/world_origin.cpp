@@ -74,10 +74,12 @@ std::string shiftedFields(const WorldData& world, const Vec2d& offset,
 }
 
 void shiftBodies(WorldData& world, const Vec2d& offset) {
-  for (Body& body : world.bodies) {
+  for (std::size_t slot = 0; slot < world.bodies.size(); ++slot) {
+    Body& body = world.bodies[slot];
     if (!body.alive) continue;
     body.transform.p = shifted(body.transform.p, offset);
     body.center0 = shifted(body.center0, offset);
+    world.changes.mark(BodyChange::Moved, world.idOf(std::int32_t(slot)));
   }
 }
 
@@ -131,6 +133,7 @@ InputResult World::shiftOrigin(const Vec2d& origin) {
   shiftHits(world.pendingEvents, offset);
   world.broadPhase.shift(offset);
   world.origin = origin;
+  world.changes.mark(WorldChange::Origin);
   return {};
 }
 

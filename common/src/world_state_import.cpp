@@ -641,8 +641,7 @@ class StateImport {
 InputResult World::importState(const WorldState& state) {
   StateImport import(impl_->settings, state);
   if (std::string error = import.run(); !error.empty()) return {"scene refused: " + error};
-  impl_ = import.take();
-  guard_.escaped.clear();
+  replaceContents(import.take());
   return {};
 }
 

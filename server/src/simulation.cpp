@@ -1,6 +1,5 @@
 #include "impulse/server/simulation.h"
 
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -42,13 +41,7 @@ void Simulation::step() {
   ++tick_;
   stepTimes_.record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  // The engine lists what this one step did; the changes gather them
-  // until the next snapshot takes them.
-  WorldChanges& changes = record();
-  changes.changed(world_.movedBodies(), world_.bodyCount());
-  for (const BodyId id : world_.escapedBodies()) changes.leftWorld(id);
   if (!world_.escapedBodies().empty()) serverShare_.set(world_.bodyCount());
-  recordRemovedJoints();
   bodiesLeftWorld_ += world_.escapedBodies().size();
   recordEvents();
 }
@@ -83,10 +76,7 @@ template <class Make>
 CreateResult Simulation::spawn(Make make) {
   if (std::string refusal = spawnRefusal(); !refusal.empty()) return {{}, std::move(refusal)};
   CreateResult created = make();
-  if (created.ok()) {
-    record().added(created.id);
-    serverShare_.set(world_.bodyCount());
-  }
+  if (created.ok()) serverShare_.set(world_.bodyCount());
   return created;
 }
 
@@ -116,39 +106,25 @@ CreateResult Simulation::createBody(const BodyDef& def) {
 }
 
 InputResult Simulation::setTargetTransform(BodyId id, const Vec2& position, Real angle) {
-  const InputResult moved = world_.setTargetTransform(id, position, angle, Real(1 / tickHz_));
-  if (moved) changedBody(id);
-  return moved;
+  return world_.setTargetTransform(id, position, angle, Real(1 / tickHz_));
 }
 
 InputResult Simulation::setTransform(BodyId id, const Vec2& position, Real angle) {
-  const InputResult moved = world_.setTransform(id, position, angle);
-  if (moved) changedBody(id);
-  return moved;
+  return world_.setTransform(id, position, angle);
 }
 
 InputResult Simulation::setMaterial(BodyId id, Material material) {
-  const InputResult set = world_.setMaterial(id, material);
-  if (set) redescribedBody(id);
-  return set;
+  return world_.setMaterial(id, material);
 }
 
 InputResult Simulation::setBodyType(BodyId id, BodyType type) {
-  const InputResult set = world_.setBodyType(id, type);
-  if (set) redescribedBody(id);
-  return set;
+  return world_.setBodyType(id, type);
 }
 
 bool Simulation::removeBody(BodyId id) {
   if (!world_.destroyBody(id)) return false;
   serverShare_.set(world_.bodyCount());
-  record().removed(id);
-  recordRemovedJoints();
   return true;
-}
-
-void Simulation::recordRemovedJoints() {
-  for (const JointId id : world_.removedJoints()) record().jointRemoved(id);
 }
 
 JointResult Simulation::createJoint(const JointDef& def) {
@@ -160,68 +136,32 @@ JointResult Simulation::createJoint(const JointDef& def) {
             "joint limit reached: a room holds at most " + std::to_string(maxJoints) + " joints (" +
                 std::to_string(wire::kJointSlotsPerBody) + " per body of --max-bodies)"};
   }
-  const auto created = world_.createJoint(def);
-  if (created.ok()) {
-    WorldChanges& changes = record();
-    changes.jointAdded(created.id);
-    // The joint wakes its bodies: their states go out with the joint.
-    changes.changed(std::array{def.bodyA, def.bodyB}, world_.bodyCount());
-  }
-  return created;
+  return world_.createJoint(def);
 }
 
-bool Simulation::removeJoint(JointId id) {
-  const auto description = world_.jointDescription(id);
-  if (!description || !world_.destroyJoint(id)) return false;
-  WorldChanges& changes = record();
-  changes.jointRemoved(id);
-  changes.changed(std::array{description->bodyA, description->bodyB}, world_.bodyCount());
-  return true;
-}
+bool Simulation::removeJoint(JointId id) { return world_.destroyJoint(id); }
 
 InputResult Simulation::updateJoint(JointId id, const JointUpdate& update) {
-  InputResult updated = world_.updateJoint(id, update);
-  if (!updated) return updated;
-  // Sent again (joints_added replaces): a motor speed or mouse target is
-  // part of the descriptor clients draw. The bodies move with the next step.
-  record().jointAdded(id);
-  return updated;
+  return world_.updateJoint(id, update);
 }
 
 InputResult Simulation::applyImpulse(BodyId id, const Vec2& impulse, std::optional<Vec2> point) {
-  InputResult applied = world_.applyImpulse(id, impulse, point);
-  if (applied) changedBody(id);
-  return applied;
+  return world_.applyImpulse(id, impulse, point);
 }
 
 InputResult Simulation::setVelocity(BodyId id, const Vec2& linear, Real angular) {
-  InputResult set = world_.setVelocity(id, linear, angular);
-  if (set) changedBody(id);
-  return set;
+  return world_.setVelocity(id, linear, angular);
 }
 
 InputResult Simulation::setShapeFlags(BodyId id, const ShapeInteraction& flags) {
   const std::optional<BodyDescription> description = world_.bodyDescription(id);
   if (!description) return {"unknown body id " + std::to_string(id.value)};
-  for (const ShapeDescription& shape : description->shapes) world_.setShapeInteraction(shape.id, flags);
-  redescribedBody(id);
+  for (const ShapeDescription& shape : description->shapes)
+    world_.setShapeInteraction(shape.id, flags);
   return {};
 }
 
-void Simulation::changedBody(BodyId id) {
-  record().changed(std::span(&id, 1), world_.bodyCount());
-}
-
-void Simulation::redescribedBody(BodyId id) {
-  record().added(id);
-}
-
-InputResult Simulation::setGravity(const Vec2& gravity) {
-  InputResult changed = world_.setGravity(gravity);
-  // Every snapshot carries gravity and the pause flag: no body to list.
-  if (changed) record();
-  return changed;
-}
+InputResult Simulation::setGravity(const Vec2& gravity) { return world_.setGravity(gravity); }
 
 FieldResult Simulation::addField(const FieldDef& def) {
   FieldBuild build = makeField(def);
@@ -235,23 +175,16 @@ FieldResult Simulation::addField(const FieldDef& def) {
   if (std::string refusal = fieldRefusal(world_, def, fieldLimits_); !refusal.empty()) {
     return {{}, std::move(refusal)};
   }
-  const FieldId id = world_.addField(std::move(build.field));
-  // The bodies it wakes go out with the next step's moved bodies.
-  record().fieldAdded(id);
-  return {id, {}};
+  return {world_.addField(std::move(build.field)), {}};
 }
 
-bool Simulation::removeField(FieldId id) {
-  if (!world_.removeField(id)) return false;
-  record().fieldRemoved(id);
-  return true;
-}
+bool Simulation::removeField(FieldId id) { return world_.removeField(id); }
 
 bool Simulation::loadPreset(int id, Material selected) {
   const auto info = impulse::loadPreset(world_, id, selected);
   if (!info) return false;
   preset_ = *info;
-  recordReplaced();
+  startWorldGeneration();
   return true;
 }
 
@@ -259,12 +192,11 @@ void Simulation::clear() {
   world_.clear();
   // The cleared world has none of the bodies the preset's script moved.
   preset_.drive = nullptr;
-  recordReplaced();
+  startWorldGeneration();
 }
 
-void Simulation::recordReplaced() {
+void Simulation::startWorldGeneration() {
   serverShare_.set(world_.bodyCount());
-  record().replaced();
   ++worldGeneration_;
 }
 
@@ -279,13 +211,13 @@ InputResult Simulation::loadScene(std::string_view data) {
   world_ = std::move(candidate);
   // The scene's bodies are not the ones the preset's script moved.
   preset_.drive = nullptr;
-  recordReplaced();
+  startWorldGeneration();
   return loaded;
 }
 
 void Simulation::setPaused(bool paused) {
   paused_ = paused;
-  record();
+  ++metaChanges_;
 }
 
 InputResult Simulation::setTimeScale(double scale) {
@@ -298,7 +230,7 @@ InputResult Simulation::setTimeScale(double scale) {
   timeScale_ = scale;
   ticksAtScale_ = 0;
   stepsAtScale_ = 0;
-  record();
+  ++metaChanges_;
   return {};
 }
 
@@ -312,21 +244,18 @@ int Simulation::stepsDueThisTick() {
   return int(due);
 }
 
-WorldChanges& Simulation::record() {
-  ++version_;
-  return changes_;
-}
+std::uint64_t Simulation::version() const { return world_.changes().revision + metaChanges_; }
 
 WorldChanges& Simulation::takeChanges() {
-  std::swap(changes_, taken_);
-  changes_.clear();
+  taken_.assign(world_.changes());
+  world_.clearChanges();
   return taken_;
 }
 
 std::uint64_t Simulation::stateHash() {
-  if (hashVersion_ != version_) {
+  if (hashVersion_ != version()) {
     hash_ = world_.stateHash();
-    hashVersion_ = version_;
+    hashVersion_ = version();
   }
   return hash_;
 }

@@ -1,6 +1,7 @@
 #include "impulse/server/world_changes.h"
 
 #include <algorithm>
+#include <span>
 
 namespace impulse::server {
 
@@ -12,47 +13,26 @@ void sortUnique(std::vector<Id>& ids) {
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
 }
 
+// Keeps the list's capacity, so a broadcast allocates no new lists.
+template <class Id>
+void assignUnion(std::vector<Id>& list, std::span<const Id> first,
+                 std::span<const Id> second = {}) {
+  list.assign(first.begin(), first.end());
+  list.insert(list.end(), second.begin(), second.end());
+}
+
 }  // namespace
 
-void WorldChanges::added(BodyId id) { added_.push_back(id); }
-
-void WorldChanges::removed(BodyId id) { removed_.push_back(id); }
-
-void WorldChanges::jointAdded(JointId id) { jointsAdded_.push_back(id); }
-
-void WorldChanges::jointRemoved(JointId id) { jointsRemoved_.push_back(id); }
-
-void WorldChanges::fieldAdded(FieldId id) { fieldsAdded_.push_back(id); }
-
-void WorldChanges::fieldRemoved(FieldId id) { fieldsRemoved_.push_back(id); }
-
-void WorldChanges::leftWorld(BodyId id) {
-  leftWorld_.push_back(id);
-  removed(id);
-}
-
-void WorldChanges::changed(std::span<const BodyId> ids, int bodyCount) {
-  changed_.insert(changed_.end(), ids.begin(), ids.end());
-  // Several steps between snapshots repeat the same ids.
-  const std::size_t limit = 4 * std::max<std::size_t>(std::size_t(bodyCount), 256);
-  if (changed_.size() > limit) sortUnique(changed_);
-}
-
-void WorldChanges::replaced() {
-  clear();
-  replaced_ = true;
-}
-
-void WorldChanges::clear() {
-  added_.clear();
-  removed_.clear();
-  leftWorld_.clear();
-  changed_.clear();
-  jointsAdded_.clear();
-  jointsRemoved_.clear();
-  fieldsAdded_.clear();
-  fieldsRemoved_.clear();
-  replaced_ = false;
+void WorldChanges::assign(const ChangeView& world) {
+  assignUnion(added_, world.createdBodies, world.redescribedBodies);
+  assignUnion(removed_, world.destroyedBodies);
+  assignUnion(leftWorld_, world.escapedBodies);
+  assignUnion(changed_, world.movedBodies);
+  assignUnion(jointsAdded_, world.createdJoints, world.updatedJoints);
+  assignUnion(jointsRemoved_, world.destroyedJoints);
+  assignUnion(fieldsAdded_, world.addedFields);
+  assignUnion(fieldsRemoved_, world.removedFields);
+  replaced_ = world.replaced;
 }
 
 void WorldChanges::normalise() {

@@ -126,9 +126,10 @@ TEST(JointLifetime, RemovingABody_RemovesAndListsItsJoints) {
   BodyId c = addBox(scene.world, {.center = Vec2(4, 2)});
   JointId third =
       addJoint(scene.world, scene.b, c, Vec2(2, 2), Vec2(4, 2), DistanceJointSettings{});
+  scene.world.clearChanges();
   ASSERT_TRUE(scene.world.destroyBody(scene.a));
-  std::vector<JointId> removed(scene.world.removedJoints().begin(),
-                               scene.world.removedJoints().end());
+  const std::span<const JointId> destroyed = scene.world.changes().destroyedJoints;
+  std::vector<JointId> removed(destroyed.begin(), destroyed.end());
   std::sort(removed.begin(), removed.end());
   EXPECT_EQ(removed, (std::vector<JointId>{first, second}));
   EXPECT_EQ(scene.world.jointIds(), std::vector<JointId>{third});

@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
+
+#include "impulse/wire/scene_convert.h"
 
 namespace impulse::server {
 namespace {
@@ -112,6 +115,49 @@ TEST(Simulation, JointsAreRecordedWhenAddedRemovedOrTakenWithTheirBodies) {
 
   ASSERT_TRUE(sim.removeBody(b.id));
   EXPECT_TRUE(hasJoint(sim.takeChanges().removedJointIds(), spring.id));
+}
+
+// The world records its edits; the Simulation's changes read them in
+// snapshot terms: a new descriptor is `added`, a new joint descriptor
+// `joints_added`.
+TEST(Simulation, RedescribedBodiesAndUpdatedJointsGoOutAsAdded) {
+  Simulation sim = pausedSandbox();
+  const auto ball = sim.createCircle(Vec2(5, 5), 0.5f, {});
+  ASSERT_TRUE(ball.ok()) << ball.error;
+  JointDef def;
+  def.bodyA = ball.id;
+  def.anchorA = Vec2(5, 5);
+  def.anchorB = Vec2(5, 5);
+  def.settings = MouseJointSettings{};
+  const auto pull = sim.createJoint(def);
+  ASSERT_TRUE(pull.ok()) << pull.error;
+  sim.takeChanges();
+
+  ASSERT_TRUE(sim.setMaterial(ball.id, Material::Rubber));
+  JointUpdate update;
+  update.target = Vec2(6, 6);
+  ASSERT_TRUE(sim.updateJoint(pull.id, update));
+  auto changes = sim.takeChanges();
+  changes.normalise();
+  EXPECT_EQ(changes.addedIds(), std::vector{ball.id});
+  EXPECT_EQ(changes.changedIds(), std::vector{ball.id}) << "a new descriptor comes with the state";
+  EXPECT_EQ(changes.addedJointIds(), std::vector{pull.id});
+  EXPECT_TRUE(sim.takeChanges().addedIds().empty()) << "taken once";
+}
+
+// A scene replaces the world object whole: the version still only moves
+// forward, so nothing cached for an earlier version is taken for it.
+TEST(Simulation, ALoadedSceneIsReplacedAndTheVersionMovesOn) {
+  Simulation sim = pausedSandbox();
+  for (int i = 0; i < 20; ++i) ASSERT_TRUE(sim.createCircle(Vec2(float(i) - 10, 5), 0.2f, {}).ok());
+  const std::string scene = wire::saveScene(World());
+  const auto version = sim.version();
+  const auto hash = sim.stateHash();
+  ASSERT_TRUE(sim.loadScene(scene));
+  EXPECT_GT(sim.version(), version);
+  EXPECT_TRUE(sim.takeChanges().wasReplaced());
+  EXPECT_NE(sim.stateHash(), hash);
+  EXPECT_EQ(sim.stateHash(), sim.world().stateHash());
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 /// The world does no I/O and starts threads only when its settings ask for
 /// workers (impulse/tasks.h). Callers create bodies, call
 /// step(dt) at a fixed rate and read states back (movedBodies() lists only
-/// bodies whose state changed in the last step).
+/// bodies whose state changed in the last step; changes() what changed
+/// since the reader last cleared them).
 
 #include <cstdint>
 #include <functional>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "impulse/body.h"
+#include "impulse/change_view.h"
 #include "impulse/events.h"
 #include "impulse/field.h"
 #include "impulse/joint.h"
@@ -132,6 +134,8 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
   World(World&&) noexcept;
+  /// Takes the other world's contents; this world's changes() then say
+  /// `replaced`, at a later revision than before.
   World& operator=(World&&) noexcept;
 
   /// Validates the definition (finite numbers, bounds, shape, body limit).
@@ -259,9 +263,6 @@ class World {
   /// Every live joint's id in slot order.
   std::vector<JointId> jointIds() const;
   int jointCount() const;
-  /// Joints that went with their bodies in the last destroyBody call, or in
-  /// the last step (bodies the step guard removed), whichever came later.
-  std::span<const JointId> removedJoints() const;
 
   /// Adds a force field; it acts from the next step on, after the fields
   /// added before it. Wakes every body, as a change of gravity does.
@@ -379,7 +380,20 @@ class World {
   /// for determinism tests.
   std::uint64_t stateHash() const;
 
+  /// What every call that changed the world, and every step, changed since
+  /// the last clearChanges (impulse/change_view.h): a mirror of the world
+  /// reads this instead of tracking its own calls. A refused call marks
+  /// nothing.
+  ChangeView changes() const;
+  /// Forgets the changes (the revision stays). Until a reader clears them
+  /// they only gather: each edit adds at most an id to a list.
+  void clearChanges();
+
  private:
+  /// Installs new contents (clear, importState, assignment), keeping this
+  /// world's change record, which then says `replaced`.
+  void replaceContents(std::unique_ptr<WorldData> next);
+
   std::unique_ptr<WorldData> impl_;
   StepGuardReport guard_;
 };

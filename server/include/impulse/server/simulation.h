@@ -1,8 +1,9 @@
 #pragma once
-/// The served world: the only way to change it. Every change goes through a
-/// method here, which records it once (record()): in the world's changes for
-/// the next snapshot and in the version, so callers never report changes by
-/// hand (a command's "changed" is the version moving).
+/// The served world: the only way to change it, with the server's limits
+/// on top of the engine's. The world records what each change changed
+/// (World::changes): takeChanges hands that to the snapshots and version()
+/// names the state, so nothing here or in the callers records a change (a
+/// command's "changed" is the version moving).
 
 #include <cstdint>
 #include <optional>
@@ -136,12 +137,13 @@ class Simulation {
   /// The preset in force (cleared worlds keep the last one's text).
   const PresetInfo& preset() const { return preset_; }
   /// Changes with every change of the world or its meta: names its state.
-  std::uint64_t version() const { return version_; }
+  std::uint64_t version() const;
   /// Changes each time the world is replaced (clear, preset, scene), after
   /// which body and joint ids start over.
   std::uint64_t worldGeneration() const { return worldGeneration_; }
-  /// The changes since the last call, forgotten here. Valid until the next
-  /// call: two buffers take turns, so a broadcast allocates no new lists.
+  /// The world's changes since the last call, which the world then forgets.
+  /// Valid until the next call; its lists keep their capacity, so a
+  /// broadcast allocates no new ones.
   WorldChanges& takeChanges();
 
   /// Wall-clock milliseconds of the world steps over the last second.
@@ -152,24 +154,15 @@ class Simulation {
   std::uint64_t bodiesLeftWorld() const { return bodiesLeftWorld_; }
 
  private:
-  /// Creates a body by `make` unless spawnRefusal() says why not, and
-  /// records it as added (a refused creation changes nothing).
+  /// Creates a body by `make` unless spawnRefusal() says why not (a
+  /// refused creation changes nothing).
   template <class Make>
   CreateResult spawn(Make make);
-  /// The one place a change is recorded: moves the version and returns the
-  /// changes for the caller to say what changed (nothing for the meta).
-  WorldChanges& record();
-  /// After a successful change: records `id` (if any) as changed for snapshots.
-  void changedBody(BodyId id);
   /// After a step: its events as an Events message, when wanted.
   void recordEvents();
-  /// The body's descriptor changed: Snapshot.added replaces it in clients.
-  void redescribedBody(BodyId id);
-  /// Records the joints the world removed with their bodies (last
-  /// destroyBody call or step).
-  void recordRemovedJoints();
-  /// After the world was replaced: the next snapshot is full.
-  void recordReplaced();
+  /// After the world was replaced: its bodies are counted again and its
+  /// ids start over.
+  void startWorldGeneration();
   /// Why one more body may not be made (fields' cost, server-wide limit,
   /// creation counter at the most a scene may carry).
   std::string spawnRefusal() const;
@@ -179,11 +172,12 @@ class Simulation {
   World world_;
   /// This world's bodies in the server's total (after every change).
   ServerBodies::Share serverShare_;
-  WorldChanges changes_;
   /// The changes last taken (takeChanges), kept for their lists' capacity.
   WorldChanges taken_;
   PresetInfo preset_;
-  std::uint64_t version_ = 0;
+  /// Changes of the meta (pause, time scale): the version adds them to the
+  /// world's revision.
+  std::uint64_t metaChanges_ = 0;
   std::uint64_t worldGeneration_ = 0;
   std::uint64_t tick_ = 0;
   bool paused_ = false;
