@@ -4,17 +4,17 @@ namespace impulse {
 
 void ChangeRecord::mark(BodyChange change, BodyId id) {
   ++revision_;
-  if (!id.isNull()) bodies_[std::size_t(change)].add(id);
+  if (keepLists_ && !id.isNull()) bodies_[std::size_t(change)].add(id);
 }
 
 void ChangeRecord::mark(JointChange change, JointId id) {
   ++revision_;
-  joints_[std::size_t(change)].add(id);
+  if (keepLists_) joints_[std::size_t(change)].add(id);
 }
 
 void ChangeRecord::mark(FieldChange change, FieldId id) {
   ++revision_;
-  fields_[std::size_t(change)].push_back(id);
+  if (keepLists_) fields_[std::size_t(change)].push_back(id);
 }
 
 void ChangeRecord::mark(WorldChange change) {
@@ -24,6 +24,7 @@ void ChangeRecord::mark(WorldChange change) {
 
 void ChangeRecord::stepped(std::span<const BodyId> moved) {
   ++revision_;
+  if (!keepLists_) return;
   UniqueIds<BodyId>& listed = bodies_[std::size_t(BodyChange::Moved)];
   for (const BodyId id : moved) listed.add(id);
 }

@@ -3,7 +3,7 @@
 // cleared (World::changes). Every edit path and the step mark what they
 // change here, so a reader learns it in one place instead of wrapping each
 // call. A mark is an append, after a check that the id is not listed yet;
-// a world nobody reads the changes of pays nothing more.
+// a world nobody reads the changes of keeps no lists (keepLists).
 
 #include <array>
 #include <cstdint>
@@ -46,6 +46,10 @@ enum class WorldChange { Settings, Origin };
 
 class ChangeRecord {
  public:
+  /// Off (the default), a mark only moves the revision: a world nobody
+  /// mirrors keeps no lists, which would otherwise grow with every body
+  /// ever made.
+  void keepLists(bool on) { keepLists_ = on; }
   /// A null id (a joint's missing second body) marks nothing.
   void mark(BodyChange change, BodyId id);
   void mark(JointChange change, JointId id);
@@ -61,6 +65,7 @@ class ChangeRecord {
 
  private:
   std::uint64_t revision_ = 0;
+  bool keepLists_ = false;
   bool replaced_ = false;
   bool settingsChanged_ = false;
   bool originShifted_ = false;

@@ -180,6 +180,11 @@ ChangeView World::changes() const { return impl_->changes.view(); }
 
 void World::clearChanges() { impl_->changes.clear(); }
 
+void World::recordChanges(bool on) {
+  impl_->changes.clear();
+  impl_->changes.keepLists(on);
+}
+
 CreateResult World::createBody(const BodyDef& def) {
   WorldData& w = *impl_;
   if (std::string error = validateDef(w, def); !error.empty()) return {{}, error};

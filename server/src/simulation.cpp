@@ -30,6 +30,7 @@ Simulation::Simulation(const SimulationSettings& settings)
       serverShare_(settings.serverBodies),
       paused_(settings.paused),
       stepTimes_(std::size_t(settings.tickHz + 0.5)) {
+  world_.recordChanges(true);
   loadPreset(settings.preset, Material::Solid);
 }
 

@@ -42,18 +42,34 @@ JointDef rodBetween(BodyId a, Vec2 anchorA, BodyId b, Vec2 anchorB) {
   return {a, b, anchorA, anchorB, false, DistanceJointSettings{}};
 }
 
+// A world that lists its changes (World::recordChanges).
+World recordingWorld(const WorldSettings& settings = {}) {
+  World world(settings);
+  world.recordChanges(true);
+  return world;
+}
+
 // Two boxes side by side in a world with nothing else, changes cleared.
 struct TwoBoxes {
-  World world;
+  World world = recordingWorld();
   BodyId left = addBox(world, {.center = Vec2(0, 5)});
   BodyId right = addBox(world, {.center = Vec2(3, 5)});
   TwoBoxes() { world.clearChanges(); }
 };
 
 TEST(WorldChanges, ANewWorld_ListsNothing) {
-  World world;
+  World world = recordingWorld();
   EXPECT_TRUE(nothingListed(world.changes()));
   EXPECT_EQ(world.changes().revision, 0u);
+}
+
+TEST(WorldChanges, AWorldNotRecording_ListsNothing_ButItsRevisionMoves) {
+  World world;
+  const BodyId ball = addCircle(world, {.center = Vec2(0, 5)});
+  for (int i = 0; i < 10; ++i) world.step(Real(1) / 60);
+  ASSERT_TRUE(world.destroyBody(ball));
+  EXPECT_TRUE(nothingListed(world.changes()));
+  EXPECT_GE(world.changes().revision, 12u);
 }
 
 TEST(WorldChanges, EachBodyEdit_ListsTheBodyOnceUnderItsKind) {
@@ -125,7 +141,7 @@ TEST(WorldChanges, JointEdits_ListTheJointAndTheBodiesTheyWake) {
 }
 
 TEST(WorldChanges, FieldsAndGravity_AreListed) {
-  World world;
+  World world = recordingWorld();
   const FieldId fan =
       world.addField(makeFan({.position = Vec2(0, 0), .direction = Vec2(1, 0)}).field);
   ASSERT_FALSE(fan.isNull());
@@ -201,7 +217,7 @@ TEST(WorldChanges, ASlotReused_ListsTheOldAndTheNewBody) {
 }
 
 TEST(WorldChanges, Steps_ListTheBodiesTheyMoved_ButNotSleepers) {
-  World world;
+  World world = recordingWorld();
   addGround(world);
   const BodyId sleeper = addBox(world, {.center = Vec2(-5, 0.5f)});
   ASSERT_GT(simulateUntilAsleep(world, 5), 0);
@@ -218,7 +234,7 @@ TEST(WorldChanges, Steps_ListTheBodiesTheyMoved_ButNotSleepers) {
 TEST(WorldChanges, ABodyTheStepRemoves_IsEscapedAndDestroyedWithItsJoints) {
   WorldSettings settings;
   settings.inputLimits.escapeMargin = 5;
-  World world(settings);
+  World world = recordingWorld(settings);
   const BodyId rocket =
       addCircle(world, {.center = Vec2(5, 40), .ignoreGravity = true, .velocity = Vec2(0, 50)});
   const BodyId anchor = addCircle(world, {.center = Vec2(0, 0), .isStatic = true});

@@ -388,6 +388,10 @@ class World {
   /// Forgets the changes (the revision stays). Until a reader clears them
   /// they only gather: each edit adds at most an id to a list.
   void clearChanges();
+  /// Starts or stops listing changes. Off by default: changes() then lists
+  /// nothing and only its revision moves, so a world nobody mirrors keeps
+  /// no lists. Turned on, the lists start empty.
+  void recordChanges(bool on);
 
  private:
   /// Installs new contents (clear, importState, assignment), keeping this
