@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "impulse/server/log.h"
-#include "impulse/wire/convert.h"
 #include "impulse/wire/framing.h"
 #include "impulse/wire/wire_positions.h"
 
