@@ -22,8 +22,8 @@ inline constexpr double kMinRoomSide = 1;
 /// resolve a millimetre (2^-10 m up to 16 384 m).
 inline constexpr double kMaxRoomSide = 20'000;
 /// A room's origin is its bounds' centre rounded to a multiple of this
-/// (metres): every room within 5 km of (0, 0) keeps (0, 0), so its world
-/// computes exactly what it computed before rooms had origins.
+/// (metres): every room whose centre lies within 5 km of (0, 0) on each
+/// axis keeps (0, 0), so its world computes as a world at (0, 0) does.
 inline constexpr double kOriginGrid = 10'000;
 
 /// A room's bounds as Hello gave them: metres from (0, 0), in double.
