@@ -239,6 +239,10 @@ std::string bodiesReport(std::size_t line, const client::WorldMirror& mirror) {
     wire::toWire(description, &descriptor);
     v1::BodyState state;
     wire::toWire(body.state, &state);
+    // Reported from (0, 0), as the wire gives positions.
+    const Vec2d position = mirror.toGlobal(body.state.position);
+    state.mutable_position()->set_x(position.x());
+    state.mutable_position()->set_y(position.y());
     bodies.push_back(bodyJson(descriptor, state));
   }
   Json report = lineReport(line, "bodies");

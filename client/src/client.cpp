@@ -215,12 +215,16 @@ void Client::handle(v1::ServerMessage&& message, std::size_t frameBytes) {
   switch (message.message_case()) {
     case v1::ServerMessage::kWelcome:
       welcome_ = message.welcome();
+      mirror_.setOrigin({welcome_.world_origin().x(), welcome_.world_origin().y()});
       return;
     case v1::ServerMessage::kSnapshot: {
       std::string error;
       if (!mirror_.apply(message.snapshot(), &error)) {
         failure_ = "malformed snapshot: " + error;
         return;
+      }
+      if (const std::uint32_t withheld = message.snapshot().states_withheld(); withheld > 0) {
+        withheld_ = {withheld_.snapshots + 1, message.snapshot().tick(), withheld};
       }
       if (snapshotCallback_) snapshotCallback_(message.snapshot(), frameBytes);
       lastSnapshot_ = std::move(*message.mutable_snapshot());

@@ -4,6 +4,7 @@
 
 #include "impulse/field_kinds.h"
 #include "impulse/wire/convert.h"
+#include "impulse/wire/wire_positions.h"
 
 namespace impulse::client {
 
@@ -53,6 +54,9 @@ bool sameKeys(const std::map<std::uint32_t, A>& a, const std::map<std::uint32_t,
 
 void LocalWorld::rebuild(const WorldMirror& mirror) {
   world_ = World(settings_);
+  // The mirror's positions are relative to the room's origin, as the
+  // room's world computes them (an empty world takes any origin).
+  world_.shiftOrigin(mirror.origin());
   bodies_.clear();
   joints_.clear();
   forgetPredictions();
@@ -154,7 +158,11 @@ std::optional<std::uint32_t> LocalWorld::namedBody(const v1::ClientMessage& mess
   }
 }
 
-bool LocalWorld::apply(const v1::ClientMessage& message, Real dt, std::uint64_t requestId) {
+bool LocalWorld::apply(const v1::ClientMessage& command, Real dt, std::uint64_t requestId) {
+  // The command's positions are from (0, 0): relative to the origin, in
+  // double, before any becomes a float.
+  v1::ClientMessage message = command;
+  wire::shiftPositions(message, -world_.origin());
   const auto named = namedBody(message);
   const auto body = named ? localBody(*named) : std::nullopt;
   if (named && !body) return false;

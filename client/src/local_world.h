@@ -19,7 +19,8 @@ class LocalWorld {
   explicit LocalWorld(const WorldSettings& settings) : settings_(settings), world_(settings) {}
 
   /// Starts over from the mirror: every body in its latest state, every
-  /// joint (anchored where the bodies are now) and field, the gravity.
+  /// joint (anchored where the bodies are now) and field, the gravity, the
+  /// origin (positions relative to the mirror's).
   void rebuild(const WorldMirror& mirror);
   /// Every mirror body this world knows takes the mirror's pose and
   /// velocity (after this world went back to an older state of its own).
@@ -33,7 +34,8 @@ class LocalWorld {
   int predictedBodies() const { return world_.bodyCount() - int(bodies_.size()); }
   int predictedJoints() const { return world_.jointCount() - int(joints_.size()); }
 
-  /// Applies a command of a predicted kind (pushes, velocities, target
+  /// Applies a command (its positions from (0, 0), as sent) of a predicted
+  /// kind (pushes, velocities, target
   /// transforms, circle and polygon spawns, joints made, moved and removed)
   /// for a step of `dt`. False for any other kind and for a command the
   /// world refuses or whose ids it does not know: it changes nothing.

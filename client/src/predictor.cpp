@@ -18,11 +18,16 @@ namespace {
 /// Offsets smaller than this (m, rad) are dropped: nothing left to see.
 constexpr Real kNegligibleOffset = Real(1e-4);
 
+/// A point of the welcome, relative to the room's origin (in double first).
+Vec2 relativeToOrigin(const v1::Vec2& point, const v1::Welcome& welcome) {
+  return Vec2(Real(point.x() - welcome.world_origin().x()), Real(point.y() - welcome.world_origin().y()));
+}
+
 WorldSettings settingsOf(const v1::Welcome& welcome, const PredictionOptions& options) {
   WorldSettings settings;
   settings.subSteps = options.subSteps;
-  settings.bounds = AABB{Vec2(Real(welcome.world_min().x()), Real(welcome.world_min().y())),
-                         Vec2(Real(welcome.world_max().x()), Real(welcome.world_max().y()))};
+  // The copy computes around the room's origin, as the room does.
+  settings.bounds = AABB{relativeToOrigin(welcome.world_min(), welcome), relativeToOrigin(welcome.world_max(), welcome)};
   if (welcome.max_bodies() > 0) settings.maxBodies = int(welcome.max_bodies());
   return settings;
 }
@@ -32,9 +37,8 @@ std::string outside(std::string_view field, double value, std::string_view range
 }
 
 /// Why a snapshot that withheld states cannot be predicted from.
-std::string withheldStates(const v1::Snapshot& snapshot) {
-  return "Predictor: the snapshot of tick " + std::to_string(snapshot.tick()) + " withheld " +
-         std::to_string(snapshot.states_withheld()) +
+std::string withheldStates(std::uint64_t tick, std::uint32_t states) {
+  return "Predictor: the snapshot of tick " + std::to_string(tick) + " withheld " + std::to_string(states) +
          " body states (states_withheld: a bandwidth budget too small for the area); the copy needs every "
          "change of its area in every snapshot: raise the budget, narrow the area or stop predicting";
 }
@@ -46,7 +50,7 @@ Client& validated(Client& client, const PredictionOptions& options) {
     throw std::invalid_argument("Predictor: the client takes no snapshots (ConnectOptions::wantSnapshots)");
   }
   if (client.lastSnapshot() && client.lastSnapshot()->states_withheld() > 0) {
-    throw std::invalid_argument(withheldStates(*client.lastSnapshot()));
+    throw std::invalid_argument(withheldStates(client.lastSnapshot()->tick(), client.lastSnapshot()->states_withheld()));
   }
   const std::uint32_t bound = client.welcome().max_input_delay_ticks();
   if (options.leadTicks == 0 || options.leadTicks > bound) {
@@ -86,6 +90,7 @@ Predictor::Predictor(Client& client, const PredictionOptions& options)
       local_(std::make_unique<LocalWorld>(settingsOf(client.welcome(), options))) {
   const WorldMirror& mirror = client_.mirror();
   snapshotsSeen_ = mirror.snapshotsApplied();
+  withheldSeen_ = client_.withheldSnapshots().snapshots;
   snapshotTick_ = mirror.tick();
   tick_ = snapshotTick_ + options_.leadTicks;
   local_->rebuild(mirror);
@@ -152,6 +157,11 @@ std::optional<std::uint32_t> Predictor::bodyNamedBy(const v1::ClientMessage& mes
 void Predictor::advance() {
   if (client_.mirror().snapshotsApplied() != snapshotsSeen_ && client_.lastSnapshot()) {
     snapshotsSeen_ = client_.mirror().snapshotsApplied();
+    // A withheld state, in the newest snapshot or one before it, leaves the
+    // mirror's older one: replaying from it would undo what the copy
+    // stepped since.
+    const Client::WithheldSnapshots& withheld = client_.withheldSnapshots();
+    if (withheld.snapshots != withheldSeen_) throw PredictionError(withheldStates(withheld.lastTick, withheld.lastStates));
     takeSnapshot(*client_.lastSnapshot());
   }
   // The room does not step while paused; and a copy twice its lead ahead of
@@ -173,9 +183,6 @@ void Predictor::fadeOffsets() {
 }
 
 void Predictor::takeSnapshot(const v1::Snapshot& snapshot) {
-  // A withheld state leaves the mirror's older one: replaying from it
-  // would undo what the copy stepped since.
-  if (snapshot.states_withheld() > 0) throw PredictionError(withheldStates(snapshot));
   const std::uint64_t tick = snapshot.tick();
   snapshotTick_ = tick;
   ++snapshotsTaken_;

@@ -2,10 +2,24 @@
 
 #include "impulse/wire/convert.h"
 #include "impulse/wire/field_convert.h"
+#include "impulse/wire/wire_positions.h"
 
 namespace impulse::client {
 
+void WorldMirror::setOrigin(const Vec2d& origin) {
+  origin_ = origin;
+  decoder_.setOrigin(origin);
+}
+
 bool WorldMirror::apply(const v1::Snapshot& snapshot, std::string* error) {
+  if (origin_ == Vec2d::Zero()) return applyRelative(snapshot, error);
+  // Taken from every position in double, before it becomes a float.
+  v1::Snapshot relative = snapshot;
+  wire::shiftPositions(relative, -origin_);
+  return applyRelative(relative, error);
+}
+
+bool WorldMirror::applyRelative(const v1::Snapshot& snapshot, std::string* error) {
   auto failed = [error](std::string message) {
     if (error != nullptr) *error = std::move(message);
     return false;

@@ -255,7 +255,7 @@ void App::exchange() {
       controls_.notify("Not connected: " + command.what + " not sent", t);
     }
   }
-  connection_->advancePrediction();
+  if (std::optional<std::string> stopped = connection_->advancePrediction()) controls_.notify(*stopped, t);
   if (controls_.selectedBody() && connection_->connected() && t >= nextInspect_) {
     connection_->send(client::queryBody(*controls_.selectedBody()), "inspect");
     nextInspect_ = t + kInspectInterval;

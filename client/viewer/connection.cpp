@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "impulse/client/commands.h"
 #include "impulse/client/number_format.h"
+#include "impulse/wire/wire_positions.h"
 
 namespace impulse::viewer {
 
@@ -121,6 +123,8 @@ void Connection::receive() {
       ++it;
       continue;
     }
+    // The viewer works in its mirror's frame, around the room's origin.
+    wire::shiftPositions(*reply, -client_->mirror().origin());
     replies_.push_back({std::move(it->second), std::move(*reply)});
     it = awaiting_.erase(it);
   }
@@ -152,7 +156,24 @@ void Connection::setPredicting(bool wanted) {
   if (!wanted) predictor_.reset();
 }
 
-void Connection::advancePrediction() {
+std::optional<std::string> Connection::advancePrediction() {
+  try {
+    stepPrediction();
+    return std::nullopt;
+  } catch (const client::PredictionError& error) {
+    return stopPrediction(error);
+  } catch (const std::invalid_argument& error) {
+    // The predictor refused to start from this stream (client::Predictor's constructor).
+    return stopPrediction(error);
+  }
+}
+
+std::string Connection::stopPrediction(const std::exception& why) {
+  setPredicting(false);
+  return std::string("Prediction off: ") + why.what();
+}
+
+void Connection::stepPrediction() {
   if (!predicting_ || !client_) return;
   const v1::Welcome& welcome = client_->welcome();
   if (!predictor_) {
@@ -177,6 +198,8 @@ void Connection::advancePrediction() {
 bool Connection::send(v1::ClientMessage message, std::string what) {
   if (state_ != LinkState::Connected) return false;
   try {
+    // From the viewer's frame (its mirror's) to the wire's, from (0, 0).
+    wire::shiftPositions(message, client_->mirror().origin());
     const bool predicted = predictor_ && client::Predictor::predicts(message);
     const std::uint64_t id = predicted ? predictor_->send(std::move(message)) : client_->send(std::move(message));
     awaiting_.emplace(id, std::move(what));
@@ -190,7 +213,10 @@ bool Connection::send(v1::ClientMessage message, std::string what) {
 std::vector<Reply> Connection::takeReplies() { return std::exchange(replies_, {}); }
 
 std::vector<v1::Events> Connection::takeEvents() {
-  return connected() ? client_->takeEvents() : std::vector<v1::Events>{};
+  if (!connected()) return {};
+  std::vector<v1::Events> events = client_->takeEvents();
+  for (v1::Events& each : events) wire::shiftPositions(each, -client_->mirror().origin());
+  return events;
 }
 
 double Connection::tickSeconds() const {

@@ -4,6 +4,11 @@
 /// every applied snapshot to the interpolated world, pings for latency and
 /// hands command replies back. Never blocks the frame loop.
 ///
+/// The viewer works in its mirror's frame: positions relative to the room's
+/// origin (Welcome.world_origin), floats precise however far the room lies
+/// from (0, 0). Its commands leave, and replies and events arrive, converted
+/// here from and to the wire's positions from (0, 0).
+///
 /// While prediction is on (docs/networked-play.md), the commands a
 /// client::Predictor predicts go through it, stamped, and the viewer shows
 /// the bodies they act on from its copy of the world.
@@ -74,12 +79,19 @@ class Connection {
   bool predicting() const { return predicting_; }
   /// Once per frame, after the frame's commands were sent (so they show in
   /// it): starts the predictor when wanted and possible, then steps it by
-  /// the room's ticks since the last frame.
-  void advancePrediction();
+  /// the room's ticks since the last frame. When the snapshots cannot keep
+  /// a copy true (client::PredictionError, or a stream that already
+  /// withholds states), prediction turns itself off and the viewer goes on
+  /// from its interpolated picture: returns the message saying why, once.
+  std::optional<std::string> advancePrediction();
   /// The running predictor, or null (off, not connected, no round trip yet).
   const client::Predictor* predictor() const { return predictor_.get(); }
 
  private:
+  /// advancePrediction's work; throws what the predictor throws.
+  void stepPrediction();
+  /// Turns prediction off for `why`; the message saying so.
+  std::string stopPrediction(const std::exception& why);
   void startConnecting();
   void adopt(std::unique_ptr<client::Client> client);
   void lose(const std::string& reason);

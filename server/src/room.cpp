@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "impulse/server/log.h"
-#include "impulse/wire/convert.h"
 #include "impulse/wire/framing.h"
+#include "impulse/wire/wire_positions.h"
 
 namespace impulse::server {
 
@@ -19,7 +19,7 @@ Clock::duration periodOf(double hz) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
 }
 
-SimulationSettings simulationSettings(const ServerOptions& options, const AABB& bounds,
+SimulationSettings simulationSettings(const ServerOptions& options, const RoomBounds& bounds,
                                       std::shared_ptr<ServerBodies> serverBodies, const TaskSettings& tasks) {
   return {.tickHz = options.tickHz,
           .subSteps = options.subSteps,
@@ -28,8 +28,21 @@ SimulationSettings simulationSettings(const ServerOptions& options, const AABB& 
           .paused = options.paused,
           .fieldLimits = {.maxFields = options.maxFields, .maxCost = options.maxFieldCost},
           .serverBodies = std::move(serverBodies),
-          .bounds = bounds,
+          .bounds = bounds.relativeToOrigin(),
+          .origin = bounds.origin(),
           .tasks = tasks};
+}
+
+void putPoint(const Vec2d& point, v1::Vec2* out) {
+  out->set_x(point.x());
+  out->set_y(point.y());
+}
+
+// Welcome's and RoomInfo's bounds and origin, from (0, 0).
+void putBounds(const RoomBounds& bounds, v1::Vec2* min, v1::Vec2* max, v1::Vec2* origin) {
+  putPoint(bounds.lower, min);
+  putPoint(bounds.upper, max);
+  putPoint(bounds.origin(), origin);
 }
 
 double millisecondsSince(Clock::time_point start) {
@@ -39,7 +52,7 @@ double millisecondsSince(Clock::time_point start) {
 }  // namespace
 
 Room::Room(std::string name, asio::io_context& io, asio::thread_pool& steppers, const TaskSettings& engineWorkers,
-           const ServerOptions& options, RoomHost& host, const AABB& bounds)
+           const ServerOptions& options, RoomHost& host, const RoomBounds& bounds)
     : name_(std::move(name)),
       bounds_(bounds),
       io_(io),
@@ -106,9 +119,7 @@ void Room::welcome(std::uint32_t client, bool admin, bool quantized, bool wantSn
   welcome->set_snapshot_hz(options_.snapshotHz);
   welcome->set_tick(simulation_.tick());
   welcome->set_paused(simulation_.paused());
-  const auto& bounds = simulation_.world().settings().bounds;
-  wire::toWire(bounds.lower, welcome->mutable_world_min());
-  wire::toWire(bounds.upper, welcome->mutable_world_max());
+  putBounds(bounds_, welcome->mutable_world_min(), welcome->mutable_world_max(), welcome->mutable_world_origin());
   welcome->set_max_frame_bytes(std::uint32_t(options_.maxFrameBytes));
   welcome->set_max_bodies(std::uint32_t(options_.maxBodies));
   welcome->set_max_step_ticks(limits_.maxStepTicks);
@@ -169,8 +180,7 @@ v1::RoomInfo Room::info() const {
   info.set_clients(std::uint32_t(members_.size()));
   info.set_bodies(publishedBodies_.load());
   info.set_tick(publishedTick_.load());
-  wire::toWire(bounds_.lower, info.mutable_world_min());
-  wire::toWire(bounds_.upper, info.mutable_world_max());
+  putBounds(bounds_, info.mutable_world_min(), info.mutable_world_max(), info.mutable_world_origin());
   return info;
 }
 
@@ -397,6 +407,8 @@ void Room::applyDueCommands() {
 void Room::applyQueued(QueuedCommand& queued, bool admin) {
   auto& message = queued.message;
   const std::uint32_t client = queued.client;
+  // Positions from (0, 0) become the world's, in double, before any float.
+  wire::shiftPositions(message, -simulation_.world().origin());
   if (message.has_for_tick()) snapshots_.stampProcessed(client, message.request_id());
   const CommandRow* row = findCommand(message);
   if (row == nullptr) {
@@ -428,6 +440,7 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
 }
 
 void Room::reply(std::uint32_t client, v1::ServerMessage message, std::size_t bytes) {
+  wire::shiftPositions(message, simulation_.world().origin());
   outbox_.emplace_back(Reply{client, std::move(message), bytes});
 }
 
@@ -508,7 +521,8 @@ std::vector<Room::PersonalFrame> Room::personalFrames(const WorldChanges& change
 }
 
 void Room::broadcastEvents() {
-  for (const v1::ServerMessage& message : simulation_.takeEvents()) {
+  for (v1::ServerMessage& message : simulation_.takeEvents()) {
+    wire::shiftPositions(message, simulation_.world().origin());
     outbox_.emplace_back(EventsBroadcast{wire::encodeSharedFrame(message), eventSubscribers_});
   }
 }

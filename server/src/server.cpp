@@ -44,7 +44,7 @@ Server::Server(asio::io_context& io, asio::thread_pool& steppers, const ServerOp
       serverBodies_(std::make_shared<ServerBodies>(options.maxTotalBodies)) {
   const std::string defaultRoom(kDefaultRoom);
   rooms_[defaultRoom] = std::make_shared<Room>(defaultRoom, io, steppers_, engineWorkers_.taskSettings(), options_,
-                                                *this, WorldSettings{}.bounds);
+                                                *this, RoomBounds::defaults());
   const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(options.bind), options.port);
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
@@ -100,9 +100,8 @@ std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello
            "with the server's)";
   }
   if (const auto it = rooms_.find(name); it != rooms_.end()) {
-    const AABB& held = it->second->bounds();
-    const bool same = !bounds.bounds || (bounds.bounds->lower == held.lower && bounds.bounds->upper == held.upper);
-    if (!same) {
+    const RoomBounds& held = it->second->bounds();
+    if (bounds.bounds && *bounds.bounds != held) {
       return "room " + name + " exists with bounds " + describeBounds(held) +
              ": hello.room_min and room_max may only make a room (leave them out to join it)";
     }
@@ -121,7 +120,7 @@ std::variant<std::shared_ptr<Room>, std::string> Server::roomFor(const v1::Hello
   }
   auto room =
       std::make_shared<Room>(name, io_, steppers_, engineWorkers_.taskSettings(), options_, *this,
-                             bounds.bounds.value_or(WorldSettings{}.bounds));
+                             bounds.bounds.value_or(RoomBounds::defaults()));
   rooms_[name] = room;
   roomMaker_[name] = address;
   room->start();

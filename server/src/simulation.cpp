@@ -31,6 +31,8 @@ Simulation::Simulation(const SimulationSettings& settings)
       paused_(settings.paused),
       stepTimes_(std::size_t(settings.tickHz + 0.5)) {
   world_.recordChanges(true);
+  // An empty world takes any origin the room's bounds allow.
+  world_.shiftOrigin(settings.origin);
   loadPreset(settings.preset, Material::Solid);
 }
 
@@ -206,6 +208,8 @@ InputResult Simulation::loadScene(std::string_view data) {
   World candidate(world_.settings());
   InputResult loaded = wire::loadScene(candidate, data);
   if (!loaded) return loaded;
+  // Saved with its own origin: moved to the room's, where its bounds are.
+  if (InputResult moved = candidate.shiftOrigin(world_.origin()); !moved) return {"scene refused: " + moved.error};
   std::string refusal = worldRefusal(candidate, fieldLimits_);
   if (refusal.empty()) refusal = serverShare_.refusal(candidate.bodyCount() - world_.bodyCount());
   if (!refusal.empty()) return {"scene refused: " + refusal};

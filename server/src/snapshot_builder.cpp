@@ -6,6 +6,7 @@
 #include "impulse/wire/convert.h"
 #include "impulse/wire/field_convert.h"
 #include "impulse/wire/framing.h"
+#include "impulse/wire/wire_positions.h"
 
 namespace impulse::server {
 
@@ -24,6 +25,13 @@ void fillMeta(const Simulation& simulation, const AppliedStamps& stamps, bool fu
   snapshot->set_full(full);
   snapshot->set_paused(meta.paused);
   snapshot->set_time_scale(meta.timeScale);
+}
+
+// Positions leave the room from (0, 0), as the wire carries them
+// (wire_positions.h); the quantized states code theirs so themselves.
+SharedFrame encodeSnapshot(v1::ServerMessage& message, const World& world) {
+  wire::shiftPositions(*message.mutable_snapshot(), world.origin());
+  return wire::encodeSharedFrame(message);
 }
 
 google::protobuf::ArenaOptions arenaOptions() {
@@ -151,7 +159,7 @@ SharedFrame SnapshotBuilder::delta(WorldChanges& changes) {
   for (const BodyId id : changes.changedIds()) {
     if (const auto state = world.bodyState(id)) wire::toWire(*state, snapshot->add_bodies());
   }
-  return wire::encodeSharedFrame(message);
+  return encodeSnapshot(message, simulation_.world());
 }
 
 SharedFrame SnapshotBuilder::full() {
@@ -169,7 +177,7 @@ SharedFrame SnapshotBuilder::full() {
   for (const auto& descriptor : snapshot->added()) {
     wire::toWire(*world.bodyState(BodyId{descriptor.id()}), snapshot->add_bodies());
   }
-  cachedFull_ = wire::encodeSharedFrame(message);
+  cachedFull_ = encodeSnapshot(message, simulation_.world());
   cachedVersion_ = simulation_.version();
   cachedStampsVersion_ = stampsVersion_;
   cachedMeta_ = meta;
@@ -202,7 +210,7 @@ SharedFrame SnapshotBuilder::quantizedDelta(WorldChanges& changes) {
                             .removed = {snapshot->removed().data(), std::size_t(snapshot->removed_size())},
                             .added = added,
                             .changed = changedIds_}));
-  return wire::encodeSharedFrame(message);
+  return encodeSnapshot(message, simulation_.world());
 }
 
 SharedFrame SnapshotBuilder::quantizedFull() {
@@ -221,7 +229,7 @@ SharedFrame SnapshotBuilder::quantizedFull() {
       simulation_.world(), {.tick = simulation_.tick(),
                             .integration = quantizedIntegration(simulation_),
                             .added = added}));
-  cachedKey_ = wire::encodeSharedFrame(message);
+  cachedKey_ = encodeSnapshot(message, simulation_.world());
   cachedKeyVersion_ = simulation_.version();
   cachedKeyGeneration_ = encoder_.generation();
   cachedKeyStampsVersion_ = stampsVersion_;
@@ -272,7 +280,7 @@ SharedFrame SnapshotBuilder::personalDelta(PersonalStream& stream, const WorldCh
   stream.markSent(addRankedStates(plan, allowance, snapshot));
   snapshot->set_states_withheld(std::uint32_t(stream.withheldCount()));
   snapshot->set_oldest_withheld_ticks(stream.oldestWithheldTicks(simulation_.tick()));
-  SharedFrame frame = wire::encodeSharedFrame(message);
+  SharedFrame frame = encodeSnapshot(message, simulation_.world());
   stream.charge(frame->size());
   return frame;
 }
@@ -310,7 +318,7 @@ SharedFrame SnapshotBuilder::personalFull(PersonalStream& stream) {
   snapshot->mutable_bodies()->Reserve(int(ids.size()));
   for (const std::uint32_t id : ids) addDescriptor(world, BodyId{id}, snapshot);
   for (const std::uint32_t id : ids) addState(world, id, snapshot);
-  SharedFrame frame = wire::encodeSharedFrame(message);
+  SharedFrame frame = encodeSnapshot(message, simulation_.world());
   // Paid for like a delta: the budget refills from this tick on.
   stream.allowance(simulation_.tick(), simulation_.tickHz());
   stream.charge(frame->size());

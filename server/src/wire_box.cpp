@@ -22,7 +22,7 @@ std::string cornerRefusal(const v1::Vec2& corner, std::string_view field,
     return fieldName(rules, field) +
            formatted(" (%g, %g) lies outside the largest ", corner.x(), corner.y()) +
            std::string(rules.what) +
-           formatted(": each coordinate must be within +-%g m", rules.maxCoordinate);
+           formatted(": each coordinate must be within +-%.0f m", rules.maxCoordinate);
   }
   return {};
 }

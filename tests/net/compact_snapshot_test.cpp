@@ -123,7 +123,7 @@ SettleCost settleAndMeasure(double stagger) {
   // Bodies the decoder did not report as moved keep their decoded state:
   // the baselines on both ends hold the same states.
   for (const std::uint32_t id : circles) {
-    expectWithinQuantum(world, dequantize(BodyId{id}, stream.decoder.baseline().bodies.at(id)));
+    expectWithinQuantum(world, dequantize(BodyId{id}, stream.decoder.baseline().bodies.at(id), Vec2d::Zero()));
   }
   const SettleCost cost{double(bits) / (2000.0 * snapshots), double(bits) / 8 / 2000.0};
   std::printf("[ measure ] 2000 bodies settling from rest to sleep (rows staggered %.2f m): "

@@ -472,5 +472,39 @@ TEST(Prediction, WorksInAnAreaOfInterest_AndStopsByNameWhenABudgetWithholdsState
   }
 }
 
+// A budget withholds states in one snapshot and is lifted before the next:
+// the newest snapshot the predictor takes withholds nothing, yet the older
+// one left stale states in the mirror, so advance() still stops, naming it.
+TEST(Prediction, StopsForAWithheldStateInAnOlderSnapshotThanTheNewest) {
+  ServerProcess server(predictionRates());
+  Client client(localClient(server.port(), "budget"));
+  makeBoxOnFloor(client);
+  ASSERT_TRUE(result(client.request(client::setInterestArea(client::Box{{-5, -2}, {5, 5}}))).ok());
+  Predictor predictor(client, {.leadTicks = kLeadTicks});
+  predictor.advance();
+
+  std::vector<v1::ClientMessage> circles;
+  for (int i = 0; i < 300; ++i) {
+    circles.push_back(client::spawnCircle({-4.5 + 0.3 * (i % 30), 1.5 + 0.15 * (i / 30)}, 0.1,
+                                          {.ignoreGravity = true, .velocityY = 0.5}));
+  }
+  requestAll(client, circles);
+  ASSERT_TRUE(result(client.request(client::setBandwidthBudget(1000))).ok());
+  // Snapshots applied, the predictor not advanced: the caller's frame was late.
+  while (client.withheldSnapshots().snapshots == 0) ASSERT_TRUE(client.awaitSnapshot(milliseconds(3000)));
+  const std::uint64_t withheldTick = client.withheldSnapshots().lastTick;
+  ASSERT_TRUE(result(client.request(client::setBandwidthBudget(std::nullopt))).ok());
+  while (client.lastSnapshot()->states_withheld() > 0) ASSERT_TRUE(client.awaitSnapshot(milliseconds(3000)));
+  ASSERT_GT(client.lastSnapshot()->tick(), withheldTick);
+
+  try {
+    predictor.advance();
+    ADD_FAILURE() << "the snapshot of tick " << withheldTick << " withheld states and the predictor went on";
+  } catch (const client::PredictionError& error) {
+    EXPECT_TRUE(mentions(error.what(), "tick " + std::to_string(withheldTick))) << error.what();
+    EXPECT_TRUE(mentions(error.what(), "states_withheld")) << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace impulse::net_test

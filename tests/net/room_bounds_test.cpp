@@ -71,7 +71,8 @@ TEST(RoomBounds, BadBoundsAreRefusedNamingTheFieldAndMakeNoRoom) {
       {point(0, 0), std::nullopt, "hello.room_max is missing"},
       {std::nullopt, point(5, 5), "hello.room_min is missing"},
       {point(std::nan(""), 0), point(5, 5), "hello.room_min is not a finite point"},
-      {point(0, 0), point(20000, 5), "hello.room_max (20000, 5) lies outside the largest room"},
+      {point(0, 0), point(2e6, 5), "hello.room_max (2e+06, 5) lies outside the largest room: each coordinate must be within +-1000000 m"},
+      {point(0, 0), point(20001, 5), "each side may be at most 20000 m"},
       {point(0, 0), point(0.5, 5), "at least 1 m"},
       {point(10, 0), point(0, 5), "at least 1 m"},
   };
@@ -85,6 +86,21 @@ TEST(RoomBounds, BadBoundsAreRefusedNamingTheFieldAndMakeNoRoom) {
   const auto differing = boundsRefusal(server.port(), "default", point(-50, -50), point(50, 50));
   ASSERT_TRUE(differing);
   EXPECT_TRUE(mentions(*differing, "room default exists with bounds (-25, -25) to (50, 45) m")) << *differing;
+}
+
+TEST(RoomBounds, ARoomFarOutGetsTheOriginItsWorldComputesAround) {
+  ServerProcess server;
+  auto options = localClient(server.port(), "maker", false);
+  options.room = "far";
+  options.roomBounds = client::Box{{985000, -20000}, {999000, -15000}};
+  Client maker(options);
+  EXPECT_EQ(maker.welcome().world_origin().x(), 990000) << "the centre (992000, -17500) rounded to 10 km";
+  EXPECT_EQ(maker.welcome().world_origin().y(), -20000);
+  EXPECT_EQ(maker.welcome().world_min().x(), 985000);
+  const v1::ServerMessage list = maker.request(client::listRooms());
+  for (const auto& room : list.room_list().rooms()) {
+    EXPECT_EQ(room.world_origin().x(), room.name() == "far" ? 990000 : 0) << room.name();
+  }
 }
 
 TEST(RoomBounds, PlayersMayNotGiveBounds) {

@@ -153,7 +153,7 @@ std::optional<std::string> Decoder::decodeEntries(BitReader& bits, std::int64_t 
       if (!readWhole(bits, state)) {
         return "quantized_bodies: body " + std::to_string(id) + ": a whole state cut short or out of range";
       }
-      moved.push_back(dequantize(BodyId{id}, state));
+      moved.push_back(dequantize(BodyId{id}, state, origin_));
       continue;
     }
     while (runLeft == 0) {
@@ -173,7 +173,7 @@ std::optional<std::string> Decoder::decodeEntries(BitReader& bits, std::int64_t 
       return "quantized_bodies: body " + std::to_string(id) + ": a correction cut short or out of range";
     }
     if (!runSent) state = predict(before, ticks, integration);
-    if (runSent || before.awake) moved.push_back(dequantize(BodyId{id}, state));
+    if (runSent || before.awake) moved.push_back(dequantize(BodyId{id}, state, origin_));
   }
   return std::nullopt;
 }

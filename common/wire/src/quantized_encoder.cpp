@@ -9,7 +9,7 @@ namespace {
 
 State stateNow(const World& world, std::uint32_t id) {
   const auto state = world.bodyState(BodyId{id});
-  return state ? quantize(*state) : State{};
+  return state ? quantize(*state, world.origin()) : State{};
 }
 
 // Bodies are coded in ascending id order whatever order the lists come in;
@@ -111,7 +111,7 @@ void Encoder::advance(State& state, const World& world, std::uint32_t id, bool m
                       std::uint64_t ticks, const Integration& integration) {
   const State predicted = predict(state, std::int64_t(ticks), integration);
   const auto truth = mayHaveChanged ? world.bodyState(BodyId{id}) : std::nullopt;
-  const State now = truth ? quantize(*truth) : predicted;
+  const State now = truth ? quantize(*truth, world.origin()) : predicted;
   const Residuals residuals = residualsBetween(predicted, now);
   const RecordKind kind = recordKind(now.awake, residuals);
   if (kind == recordKind(predicted.awake, Residuals{})) {

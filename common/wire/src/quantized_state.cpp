@@ -28,10 +28,11 @@ std::int64_t divideRounded(std::int64_t a, std::int64_t b) {
   return a >= 0 ? (a + b / 2) / b : -((-a + b / 2) / b);
 }
 
-State quantize(const BodyState& state) {
+State quantize(const BodyState& state, const Vec2d& origin) {
   State q;
-  q.position = {toUnits(state.position.x(), kPositionUnit),
-                toUnits(state.position.y(), kPositionUnit), toUnits(state.angle, kPositionUnit)};
+  q.position = {toUnits(origin.x() + double(state.position.x()), kPositionUnit),
+                toUnits(origin.y() + double(state.position.y()), kPositionUnit),
+                toUnits(state.angle, kPositionUnit)};
   q.velocity = {toUnits(state.linearVelocity.x(), kVelocityUnit),
                 toUnits(state.linearVelocity.y(), kVelocityUnit),
                 toUnits(state.angularVelocity, kVelocityUnit)};
@@ -39,11 +40,11 @@ State quantize(const BodyState& state) {
   return q;
 }
 
-BodyState dequantize(BodyId id, const State& q) {
+BodyState dequantize(BodyId id, const State& q, const Vec2d& origin) {
   BodyState state;
   state.id = id;
-  state.position = Vec2(Real(double(q.position[0]) * kPositionUnit),
-                        Real(double(q.position[1]) * kPositionUnit));
+  state.position = Vec2(Real(double(q.position[0]) * kPositionUnit - origin.x()),
+                        Real(double(q.position[1]) * kPositionUnit - origin.y()));
   state.angle = Real(double(q.position[2]) * kPositionUnit);
   state.linearVelocity = Vec2(Real(double(q.velocity[0]) * kVelocityUnit),
                               Real(double(q.velocity[1]) * kVelocityUnit));

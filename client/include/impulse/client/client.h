@@ -77,8 +77,17 @@ class Client {
 
   const v1::Welcome& welcome() const { return welcome_; }
   const WorldMirror& mirror() const { return mirror_; }
-  /// The last snapshot applied.
+  /// The last snapshot applied (its positions from (0, 0), as sent).
   const std::optional<v1::Snapshot>& lastSnapshot() const { return lastSnapshot_; }
+  /// The snapshots applied that withheld states (Snapshot.states_withheld):
+  /// how many, and the latest one's tick and count. Read between polls, it
+  /// tells of every snapshot applied since, not only the last.
+  struct WithheldSnapshots {
+    std::uint64_t snapshots = 0;
+    std::uint64_t lastTick = 0;
+    std::uint32_t lastStates = 0;
+  };
+  const WithheldSnapshots& withheldSnapshots() const { return withheld_; }
 
   /// Sends a command with a fresh request id, which it returns.
   std::uint64_t send(v1::ClientMessage message);
@@ -159,6 +168,7 @@ class Client {
   std::uint64_t nextRequestId_ = 1;
   std::function<void(const v1::Snapshot&, std::size_t)> snapshotCallback_;
   std::optional<v1::Snapshot> lastSnapshot_;
+  WithheldSnapshots withheld_;
   std::function<void(const v1::Events&)> eventsCallback_;
   std::deque<v1::Events> events_;
 };

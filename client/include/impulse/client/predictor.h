@@ -93,7 +93,8 @@ class Predictor {
   /// One tick of the caller's clock (Welcome.tick_hz): takes the newest
   /// snapshot the client applied, when there is one, then steps the copy.
   /// A copy running too far ahead of the snapshots waits a tick instead.
-  /// Throws PredictionError naming a snapshot that withheld states.
+  /// Throws PredictionError naming a snapshot that withheld states: any
+  /// the client applied since the last call, not only the newest.
   void advance();
 
   /// The tick the next command is stamped for.
@@ -199,6 +200,8 @@ class Predictor {
   static constexpr std::size_t kKeptTags = 64;
   std::uint64_t tick_ = 0;
   std::uint64_t snapshotsSeen_ = 0;
+  /// Client::withheldSnapshots().snapshots when the copy last took one.
+  std::uint64_t withheldSeen_ = 0;
   std::uint64_t snapshotTick_ = 0;
   double lastCorrection_ = 0;
   double largestCorrection_ = 0;

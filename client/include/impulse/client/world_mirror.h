@@ -1,6 +1,8 @@
 #pragma once
 /// A client's copy of the server's world, kept current by applying snapshots
-/// in the order they arrive.
+/// in the order they arrive. Its positions are floats relative to its
+/// origin (the room's, Welcome.world_origin: Client sets it), so a room far
+/// from (0, 0) keeps the precision the wire's doubles bring.
 
 #include <cstdint>
 #include <map>
@@ -46,6 +48,15 @@ class WorldMirror {
   /// returns false with the reason; bodies already applied stay applied.
   bool apply(const v1::Snapshot& snapshot, std::string* error = nullptr);
 
+  /// Positions of the snapshots applied from now on are kept relative to
+  /// `origin` (metres from (0, 0)); set it before the first snapshot.
+  void setOrigin(const Vec2d& origin);
+  const Vec2d& origin() const { return origin_; }
+  /// A position of this mirror, from (0, 0); and one from (0, 0), relative
+  /// to the origin (as commands and the wire give them).
+  Vec2d toGlobal(const Vec2& position) const { return origin_ + position.cast<double>(); }
+  Vec2 toLocal(const Vec2d& point) const { return (point - origin_).cast<Real>(); }
+
   /// Bodies by id (ascending).
   const std::map<std::uint32_t, MirrorBody>& bodies() const { return bodies_; }
   const MirrorBody* find(BodyId id) const;
@@ -79,6 +90,10 @@ class WorldMirror {
   std::vector<BodyState> decoded_;
   std::vector<std::uint32_t> addedIds_;
 
+  Vec2d origin_ = Vec2d::Zero();
+
+  /// apply(), the snapshot's positions relative to the origin.
+  bool applyRelative(const v1::Snapshot& snapshot, std::string* error);
   std::optional<std::string> applyQuantized(const v1::Snapshot& snapshot);
 };
 

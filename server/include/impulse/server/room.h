@@ -8,6 +8,11 @@
 /// through the command table -> Simulation (records its changes) ->
 /// SnapshotBuilder -> every subscribed member.
 ///
+/// Positions: the wire's are from (0, 0); the world computes around the
+/// room's origin (RoomBounds::origin). The room's edge moves them: commands
+/// as they are applied, replies and events as they leave, snapshots as the
+/// builder encodes them (wire_positions.h).
+///
 /// Threads (docs/server.md, "Rooms"): a room lives on two sides.
 /// - The I/O thread (the io_context, like every Session) owns the members
 ///   and calls every public function.
@@ -38,6 +43,7 @@
 #include "impulse/server/fair_queue.h"
 #include "impulse/server/joint_tags.h"
 #include "impulse/server/options.h"
+#include "impulse/server/room_bounds.h"
 #include "impulse/server/session.h"
 #include "impulse/server/simulation.h"
 #include "impulse/server/snapshot_builder.h"
@@ -61,15 +67,16 @@ class RoomHost {
 
 class Room final : public SnapshotSource, public std::enable_shared_from_this<Room> {
  public:
-  /// `bounds`: the world's (Hello.room_min, room_max; checked by the server).
+  /// `bounds`: the world's (Hello.room_min, room_max; checked by the server),
+  /// which also place its origin.
   /// `engineWorkers`: how the world's step gets threads of `steppers`
   /// beside the room's own (pool_tasks.h).
   Room(std::string name, asio::io_context& io, asio::thread_pool& steppers, const TaskSettings& engineWorkers,
-       const ServerOptions& options, RoomHost& host, const AABB& bounds);
+       const ServerOptions& options, RoomHost& host, const RoomBounds& bounds);
 
   const std::string& name() const { return name_; }
   /// The world bounds it was made with.
-  const AABB& bounds() const { return bounds_; }
+  const RoomBounds& bounds() const { return bounds_; }
 
   /// Starts the tick timer.
   void start();
@@ -191,7 +198,7 @@ class Room final : public SnapshotSource, public std::enable_shared_from_this<Ro
   void publish();
 
   const std::string name_;
-  const AABB bounds_;
+  const RoomBounds bounds_;
   asio::io_context& io_;
   asio::strand<asio::thread_pool::executor_type> strand_;
   const ServerOptions& options_;

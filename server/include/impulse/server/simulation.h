@@ -41,8 +41,12 @@ struct SimulationSettings {
   FieldLimits fieldLimits{};
   /// The server-wide body count this world is part of; none: unbounded.
   std::shared_ptr<ServerBodies> serverBodies = nullptr;
-  /// Bodies may not be created with a centre outside (WorldSettings::bounds).
+  /// Bodies may not be created with a centre outside (WorldSettings::bounds,
+  /// relative to the origin).
   AABB bounds = WorldSettings{}.bounds;
+  /// The world's origin (World::shiftOrigin): where its float positions are
+  /// precise. Presets load around it; scenes are moved to it.
+  Vec2d origin = Vec2d::Zero();
   /// Worker threads for the world's step (the room's share of the stepping pool).
   TaskSettings tasks{};
 };
@@ -115,9 +119,10 @@ class Simulation {
   bool loadPreset(int id, Material selected);
   /// Removes every body.
   void clear();
-  /// Replaces the world with a serialised Scene (docs/scenes.md); refused,
-  /// with the reason and the world untouched, when it does not parse, the
-  /// engine refuses its state, or its fields break the field limits.
+  /// Replaces the world with a serialised Scene (docs/scenes.md), moved to
+  /// this world's origin; refused, with the reason and the world untouched,
+  /// when it does not parse, the engine refuses its state, a body would lie
+  /// outside the bounds at this origin, or its fields break the field limits.
   InputResult loadScene(std::string_view data);
   void setPaused(bool paused);
   /// Simulated seconds per wall second, kMinTimeScale..kMaxTimeScale; an

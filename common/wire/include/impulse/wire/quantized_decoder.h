@@ -28,6 +28,9 @@ class Decoder {
                                     std::span<const std::uint32_t> removed,
                                     std::span<const std::uint32_t> added,
                                     std::vector<BodyState>& moved);
+  /// States come out with positions relative to `origin` (the room's,
+  /// Welcome.world_origin); (0, 0) until set.
+  void setOrigin(const Vec2d& origin) { origin_ = origin; }
   /// A snapshot without quantized states replaced the world.
   void forget() { baseline_ = Baseline{}; }
   const Baseline& baseline() const { return baseline_; }
@@ -44,6 +47,7 @@ class Decoder {
   std::vector<std::uint32_t> whole_;
   /// The correction code of the delta being decoded.
   CorrectionCode code_;
+  Vec2d origin_ = Vec2d::Zero();
 };
 
 }  // namespace impulse::wire::quantized

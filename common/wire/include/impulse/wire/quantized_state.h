@@ -59,10 +59,13 @@ struct State {
 std::int64_t divideRounded(std::int64_t a, std::int64_t b);
 
 /// The state in units (rounded to nearest, clamped to half of kValueLimit
-/// to leave room for corrections), no acceleration.
-State quantize(const BodyState& state);
-/// Back to metres, radians and seconds.
-BodyState dequantize(BodyId id, const State& state);
+/// to leave room for corrections), no acceleration. Its position is the
+/// world's `origin` plus the state's (relative to it): units count from
+/// (0, 0), as every position on the wire does.
+State quantize(const BodyState& state, const Vec2d& origin);
+/// Back to metres, radians and seconds, the position relative to `origin`
+/// (taken away in double, before it becomes a float).
+BodyState dequantize(BodyId id, const State& state, const Vec2d& origin);
 
 /// Where an awake body is `ticks` ticks later if it keeps its acceleration
 /// (the engine's semi-implicit Euler over every substep); a sleeping body

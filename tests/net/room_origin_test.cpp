@@ -1,0 +1,171 @@
+// Rooms far from (0, 0): a room's world computes around its origin (its
+// bounds' centre rounded to 10 km) and every position on the wire is from
+// (0, 0), converted in double at the room's edge and the client's. So a
+// pyramid 80 km out settles as the same pyramid at (0, 0) does, and a
+// command at a far position lands where it asked, in both encodings.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "net_test_support.h"
+
+namespace impulse::net_test {
+namespace {
+
+using client::Client;
+
+/// The far room's floor centre: off its origin (80 km), so its positions are
+/// not the near room's numbers shifted but floats of their own.
+constexpr double kFarBaseX = 80037.5;
+constexpr int kPyramidRows = 10;
+constexpr std::uint32_t kSettleTicks = 300;
+
+/// The admin making a 100 x 100 m room around a floor centred at (baseX, 0).
+client::ConnectOptions roomAround(std::uint16_t port, double baseX,
+                                  v1::SnapshotEncoding encoding = v1::SNAPSHOT_ENCODING_PLAIN) {
+  auto options = localClient(port, "maker");
+  options.room = "at" + std::to_string(std::int64_t(baseX));
+  options.roomBounds = client::Box{{baseX - 50, -10}, {baseX + 50, 90}};
+  options.snapshotEncoding = encoding;
+  return options;
+}
+
+/// A client joining the room the maker made with those options.
+client::ConnectOptions joinerOf(const client::ConnectOptions& maker, v1::SnapshotEncoding encoding) {
+  auto options = maker;
+  options.roomBounds.reset();
+  options.name = "joiner";
+  options.snapshotEncoding = encoding;
+  return options;
+}
+
+/// Runs until the client's mirror holds `body` alone (ids start over after
+/// a clear: an older body may have had its id).
+void awaitOnly(Client& client, std::uint32_t body) {
+  while (client.mirror().bodies().size() != 1 || !client.mirror().find(BodyId{body})) {
+    ASSERT_TRUE(client.awaitSnapshot(milliseconds(3000)));
+  }
+}
+
+Vec2d globalPosition(const Client& client, std::uint32_t body) {
+  return client.mirror().toGlobal(client.mirror().find(BodyId{body})->state.position);
+}
+
+/// What a settled pyramid looks like from its base, metres.
+struct PyramidFigures {
+  double topHeight = 0;
+  double meanHeight = 0;
+  double largestDrift = 0;  ///< a box's sideways move from where it was made
+  std::vector<Vec2d> relative;  ///< each box's position from the base
+};
+
+/// A floor at (baseX, 0) and a pyramid of 1 m boxes on it, built paused and
+/// stepped kSettleTicks ticks; its boxes as the client's mirror holds them.
+PyramidFigures settledPyramid(Client& client, double baseX) {
+  EXPECT_TRUE(result(client.request(client::clearWorld())).ok());
+  EXPECT_TRUE(result(client.request(client::setPaused(true))).ok());
+  const std::vector<client::Point> floor{{baseX - 40, -1}, {baseX + 40, -1}, {baseX + 40, 0}, {baseX - 40, 0}};
+  EXPECT_TRUE(result(client.request(client::spawnPolygon(floor, {.isStatic = true}))).ok());
+  std::vector<std::pair<std::uint32_t, double>> boxes;  // id, x made at (from the base)
+  for (int row = 0; row < kPyramidRows; ++row) {
+    for (int column = 0; column < kPyramidRows - row; ++column) {
+      const double x = (column - (kPyramidRows - row - 1) / 2.0) * 1.05;
+      const double y = row * 1.0;
+      const std::vector<client::Point> box{
+          {baseX + x - 0.5, y}, {baseX + x + 0.5, y}, {baseX + x + 0.5, y + 1}, {baseX + x - 0.5, y + 1}};
+      const v1::CommandResult made = result(client.request(client::spawnPolygon(box)));
+      EXPECT_TRUE(made.ok()) << made.error();
+      boxes.emplace_back(made.body_id(), x);
+    }
+  }
+  const v1::CommandResult stepped = result(client.request(client::step(kSettleTicks)));
+  EXPECT_TRUE(stepped.ok()) << stepped.error();
+  while (client.mirror().tick() < stepped.tick()) EXPECT_TRUE(client.awaitSnapshot(milliseconds(3000)));
+
+  PyramidFigures figures;
+  for (const auto& [id, madeAtX] : boxes) {
+    const Vec2d relative = globalPosition(client, id) - Vec2d(baseX, 0);
+    figures.relative.push_back(relative);
+    figures.topHeight = std::max(figures.topHeight, relative.y());
+    figures.meanHeight += relative.y() / double(boxes.size());
+    figures.largestDrift = std::max(figures.largestDrift, std::abs(relative.x() - madeAtX));
+  }
+  return figures;
+}
+
+TEST(RoomOrigin, APyramid80KmOutSettlesAsTheSamePyramidAtTheOrigin) {
+  ServerProcess server;
+  Client near(roomAround(server.port(), 0));
+  Client far(roomAround(server.port(), kFarBaseX));
+  EXPECT_EQ(far.welcome().world_origin().x(), 80000);
+  EXPECT_EQ(far.welcome().world_origin().y(), 0);
+  EXPECT_EQ(far.welcome().world_min().x(), kFarBaseX - 50) << "bounds from (0, 0)";
+
+  const PyramidFigures atOrigin = settledPyramid(near, 0);
+  const PyramidFigures farOut = settledPyramid(far, kFarBaseX);
+  double largestDifference = 0;
+  for (std::size_t i = 0; i < atOrigin.relative.size(); ++i) {
+    largestDifference = std::max(largestDifference, (farOut.relative[i] - atOrigin.relative[i]).norm());
+  }
+  std::cout << "pyramid of " << atOrigin.relative.size() << " boxes after " << kSettleTicks
+            << " ticks, at (0, 0) / at 80 km: top " << atOrigin.topHeight << " / " << farOut.topHeight << " m, mean "
+            << atOrigin.meanHeight << " / " << farOut.meanHeight << " m, largest drift " << atOrigin.largestDrift
+            << " / " << farOut.largestDrift << " m; largest difference of a box " << largestDifference << " m\n";
+  EXPECT_NEAR(atOrigin.topHeight, kPyramidRows - 0.5, 0.1) << "the pyramid stands";
+  EXPECT_NEAR(farOut.topHeight, atOrigin.topHeight, 0.1 * atOrigin.topHeight);
+  EXPECT_NEAR(farOut.meanHeight, atOrigin.meanHeight, 0.1 * atOrigin.meanHeight);
+  EXPECT_NEAR(farOut.largestDrift, atOrigin.largestDrift, 0.1 * atOrigin.largestDrift + 1e-4);
+  EXPECT_LT(largestDifference, 0.01) << "a float 80 km from its origin would step by 7.8 mm";
+}
+
+TEST(RoomOrigin, ACommandAtAFarPositionLandsWhereItAsked_InEitherEncoding) {
+  ServerProcess server;
+  const client::ConnectOptions making = roomAround(server.port(), kFarBaseX);
+  Client maker(making);
+  Client quantized(joinerOf(making, v1::SNAPSHOT_ENCODING_QUANTIZED));
+  ASSERT_TRUE(result(maker.request(client::clearWorld())).ok());
+  const client::Point asked{kFarBaseX + 12.345678, 20.125};
+  const std::uint32_t ball =
+      result(maker.request(client::spawnCircle(asked, 0.5, {.isStatic = true}))).body_id();
+
+  const v1::ServerMessage info = maker.request(client::queryBody(ball));
+  EXPECT_NEAR(info.body_info().state().position().x(), asked.x, 1e-5);
+  EXPECT_NEAR(info.body_info().state().position().y(), asked.y, 1e-5);
+  awaitOnly(maker, ball);
+  EXPECT_NEAR(globalPosition(maker, ball).x(), asked.x, 1e-5);
+  EXPECT_NEAR(maker.lastSnapshot()->bodies(0).position().x(), asked.x, 1e-5) << "the snapshot from (0, 0)";
+  awaitOnly(quantized, ball);
+  // A quantized position is within a quantum (2^-9 m) of the truth.
+  EXPECT_NEAR(globalPosition(quantized, ball).x(), asked.x, 1.0 / 512);
+  EXPECT_NEAR(globalPosition(quantized, ball).y(), asked.y, 1.0 / 512);
+
+  const v1::ServerMessage hit = maker.request(client::rayCast({asked.x - 5, asked.y}, {10, 0}));
+  ASSERT_EQ(hit.query_result().hits_size(), 1);
+  EXPECT_NEAR(hit.query_result().hits(0).point().x(), asked.x - 0.5, 1e-4) << "a query far out, answered from (0, 0)";
+
+  const client::Point moved{kFarBaseX - 30.5, 2.75};
+  ASSERT_TRUE(result(maker.request(client::setTransform(ball, moved))).ok());
+  const v1::ServerMessage after = maker.request(client::queryBody(ball));
+  EXPECT_NEAR(after.body_info().state().position().x(), moved.x, 1e-5);
+  EXPECT_NEAR(after.body_info().state().position().y(), moved.y, 1e-5);
+}
+
+TEST(RoomOrigin, AFarRoomsSceneLoadsBackInPlace_AndIsRefusedWhereItsBodiesLieOutside) {
+  ServerProcess server;
+  Client far(roomAround(server.port(), kFarBaseX));
+  ASSERT_TRUE(result(far.request(client::clearWorld())).ok());
+  const client::Point asked{kFarBaseX + 3.25, 4.5};
+  const std::uint32_t ball = result(far.request(client::spawnCircle(asked, 0.5, {.isStatic = true}))).body_id();
+  const std::string scene = far.request(client::saveScene()).scene_data().data();
+
+  ASSERT_TRUE(result(far.request(client::loadScene(scene))).ok());
+  EXPECT_NEAR(far.request(client::queryBody(ball)).body_info().state().position().x(), asked.x, 1e-5);
+
+  Client near(localClient(server.port(), "near"));
+  const v1::CommandResult refused = result(near.request(client::loadScene(scene)));
+  EXPECT_FALSE(refused.ok());
+  EXPECT_TRUE(mentions(refused.error(), "outside the bounds")) << refused.error();
+}
+
+}  // namespace
+}  // namespace impulse::net_test
