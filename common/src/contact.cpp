@@ -111,7 +111,12 @@ bool muchHeavier(const Body& body, const Body& other) {
 // apart would only stand in their way. The narrow phase keeps points this
 // much beyond the speculative distance, so such a closing meets a contact
 // at the step's start instead of ending the step deep inside the other body.
+// Against a body that cannot move (static or kinematic) nothing changes its
+// path that way; there a point out at the reach meets the body a step before
+// it lands and bounces it off the speed it had then (a dropped ball's
+// rebound height 4.2 -> 6.1 cm off the closed form).
 Real closingReach(const Body& a, const Body& b, Real dt) {
+  if (a.invMass == 0 || b.invMass == 0) return 0;
   const Vec2 between = b.transform.apply(b.mass.center) - a.transform.apply(a.mass.center);
   const bool aCloses = a.linearVelocity.dot(between) > 0 && !muchHeavier(a, b);
   const bool bCloses = b.linearVelocity.dot(between) < 0 && !muchHeavier(b, a);
