@@ -71,11 +71,12 @@ LocalPoint midwayPoint(const Vec2& c, const Vec2& n, Real s, Real referenceRadiu
 //     cross at an angle and the closest points say more)
 //   else one point midway between c1 and c2, normal along c2 - c1
 Manifold collideCores(const Vec2& p1, const Vec2& q1, Real rA, const Vec2& p2, const Vec2& q2,
-                      Real rB, const Transform& xfA, const Transform& xfB) {
+                      Real rB, const Transform& xfA, const Transform& xfB,
+                      Real speculativeDistance) {
   SegmentClosestPoints closest = closestPoints(p1, q1, p2, q2);
   Vec2 gap = closest.point2 - closest.point1;
   Real distance = gap.norm();
-  if (distance - rA - rB >= kSpeculativeDistance) {
+  if (distance - rA - rB >= speculativeDistance) {
     return {};
   }
   Real length1 = (q1 - p1).norm();
@@ -94,7 +95,7 @@ Manifold collideCores(const Vec2& p1, const Vec2& q1, Real rA, const Vec2& p2, c
         std::array<LocalPoint, 2> points = {
             midwayPoint(c.first, sideA.normal, s1, rA, rB, makeFeatureId(0, 0)),
             midwayPoint(c.second, sideA.normal, s2, rA, rB, makeFeatureId(0, 1))};
-        return toWorld(sideA.normal, points, xfA, xfB);
+        return toWorld(sideA.normal, points, xfA, xfB, speculativeDistance);
       }
     } else {
       Clipped c = clipToSlab(p1, q1, p2, u2, length2);
@@ -104,7 +105,7 @@ Manifold collideCores(const Vec2& p1, const Vec2& q1, Real rA, const Vec2& p2, c
         std::array<LocalPoint, 2> points = {
             midwayPoint(c.first, sideB.normal, s1, rB, rA, makeFeatureId(0, 0)),
             midwayPoint(c.second, sideB.normal, s2, rB, rA, makeFeatureId(1, 0))};
-        return toWorld(-sideB.normal, points, xfA, xfB);
+        return toWorld(-sideB.normal, points, xfA, xfB, speculativeDistance);
       }
     }
   }
@@ -121,18 +122,19 @@ Manifold collideCores(const Vec2& p1, const Vec2& q1, Real rA, const Vec2& p2, c
   Vec2 surfaceB = closest.point2 - rB * normal;
   LocalPoint point{Real(0.5) * (surfaceA + surfaceB), distance - rA - rB,
                    makeFeatureId(closest.fraction1 == 0 ? 0 : 1, closest.fraction2 == 0 ? 0 : 1)};
-  return toWorld(normal, std::span(&point, 1), xfA, xfB);
+  return toWorld(normal, std::span(&point, 1), xfA, xfB, speculativeDistance);
 }
 
 // A core segment p-q of radius rA against circle B: the point of the segment
 // nearest the centre plays the first circle's centre.
 Manifold collideCoreAndCircle(const Vec2& p, const Vec2& q, Real rA, const Circle& b,
-                              const Transform& xfA, const Transform& xfB) {
+                              const Transform& xfA, const Transform& xfB,
+                              Real speculativeDistance) {
   Vec2 center = placeInA(relativeTransform(xfA, xfB), b.center);
   Vec2 nearest = closestPointOnSegment(center, p, q);
   Vec2 offset = center - nearest;
   Real distance = offset.norm();
-  if (distance - rA - b.radius >= kSpeculativeDistance) {
+  if (distance - rA - b.radius >= speculativeDistance) {
     return {};
   }
   // A centre on the core: push out of the segment's left side.
@@ -142,33 +144,33 @@ Manifold collideCoreAndCircle(const Vec2& p, const Vec2& q, Real rA, const Circl
   Vec2 surfaceB = center - b.radius * normal;
   LocalPoint point{Real(0.5) * (surfaceA + surfaceB), distance - rA - b.radius,
                    makeFeatureId(0, 0)};
-  return toWorld(normal, std::span(&point, 1), xfA, xfB);
+  return toWorld(normal, std::span(&point, 1), xfA, xfB, speculativeDistance);
 }
 
 }  // namespace
 
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,
-                                 const Transform& xfB) {
-  return collideCoreAndCircle(a.center1, a.center2, a.radius, b, xfA, xfB);
+                                 const Transform& xfB, Real speculativeDistance) {
+  return collideCoreAndCircle(a.center1, a.center2, a.radius, b, xfA, xfB, speculativeDistance);
 }
 
 Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& b,
-                         const Transform& xfB) {
+                         const Transform& xfB, Real speculativeDistance) {
   Transform relative = relativeTransform(xfA, xfB);
   return collideCores(a.center1, a.center2, a.radius, relative.apply(b.center1),
-                      relative.apply(b.center2), b.radius, xfA, xfB);
+                      relative.apply(b.center2), b.radius, xfA, xfB, speculativeDistance);
 }
 
 Manifold collideSegmentAndCircle(const Segment& a, const Transform& xfA, const Circle& b,
-                                 const Transform& xfB) {
-  return collideCoreAndCircle(a.point1, a.point2, 0, b, xfA, xfB);
+                                 const Transform& xfB, Real speculativeDistance) {
+  return collideCoreAndCircle(a.point1, a.point2, 0, b, xfA, xfB, speculativeDistance);
 }
 
 Manifold collideSegmentAndCapsule(const Segment& a, const Transform& xfA, const Capsule& b,
-                                  const Transform& xfB) {
+                                  const Transform& xfB, Real speculativeDistance) {
   Transform relative = relativeTransform(xfA, xfB);
   return collideCores(a.point1, a.point2, 0, relative.apply(b.center1), relative.apply(b.center2),
-                      b.radius, xfA, xfB);
+                      b.radius, xfA, xfB, speculativeDistance);
 }
 
 }  // namespace impulse

@@ -119,7 +119,7 @@ bool reachesFromTheFront(const Joins& joins, const Polygon& polygon, int inciden
 //   it), or past point2 and within the next one's: the neighbour's contact
 //   else the nearest point of the segment, as for a segment and a circle
 Manifold collideChainSegmentAndCircle(const ChainSegment& a, const Transform& xfA, const Circle& b,
-                                      const Transform& xfB) {
+                                      const Transform& xfB, Real speculativeDistance) {
   Vec2 center = placeInA(relativeTransform(xfA, xfB), b.center);
   const Vec2& p1 = a.segment.point1;
   const Vec2& p2 = a.segment.point2;
@@ -139,14 +139,14 @@ Manifold collideChainSegmentAndCircle(const ChainSegment& a, const Transform& xf
   }
   Vec2 offset = center - nearest;
   Real distance = offset.norm();
-  if (distance - b.radius >= kSpeculativeDistance) {
+  if (distance - b.radius >= speculativeDistance) {
     return {};
   }
   Vec2 normal =
       distance > kMinDirectionLength ? Vec2(offset / distance) : Vec2(rightPerp(edge).normalized());
   Vec2 surfaceB = center - b.radius * normal;
   LocalPoint point{Real(0.5) * (nearest + surfaceB), distance - b.radius, makeFeatureId(0, 0)};
-  return toWorld(normal, std::span(&point, 1), xfA, xfB);
+  return toWorld(normal, std::span(&point, 1), xfA, xfB, speculativeDistance);
 }
 
 // In the segment's frame (the polygon, rounded by r, transformed into it):
@@ -164,7 +164,8 @@ Manifold collideChainSegmentAndCircle(const ChainSegment& a, const Transform& xf
 //   a single corner point whose normal the segment does not admit: none;
 //   within a sine of 0.01 of the face normal: the face normal
 Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform& xfA,
-                                       const Polygon& b, const Transform& xfB) {
+                                       const Polygon& b, const Transform& xfB,
+                                       Real speculativeDistance) {
   Polygon localB = transformPolygon(b, relativeTransform(xfA, xfB));
   Joins joins = makeJoins(a);
   const Vec2& c = localB.centroid;
@@ -178,7 +179,7 @@ Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform& x
   Polygon segment = makeTwoSidedPolygon(joins.point1, joins.point2, 0);
   Real coreSeparation = std::max(findMaxSeparation(segment, localB).separation,
                                  findMaxSeparation(localB, segment).separation);
-  if (coreSeparation - localB.radius >= kSpeculativeDistance) {
+  if (coreSeparation - localB.radius >= speculativeDistance) {
     return {};
   }
 
@@ -228,14 +229,16 @@ Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform& x
     // puts the vertex.
     if (nearFaceNormal(joins, contacts.normal)) contacts.normal = joins.normal;
   }
-  return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB);
+  return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB,
+                 speculativeDistance);
 }
 
 // A capsule is a rounded two-vertex polygon.
 Manifold collideChainSegmentAndCapsule(const ChainSegment& a, const Transform& xfA,
-                                       const Capsule& b, const Transform& xfB) {
+                                       const Capsule& b, const Transform& xfB,
+                                       Real speculativeDistance) {
   return collideChainSegmentAndPolygon(a, xfA, makeTwoSidedPolygon(b.center1, b.center2, b.radius),
-                                       xfB);
+                                       xfB, speculativeDistance);
 }
 
 }  // namespace impulse

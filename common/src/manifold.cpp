@@ -220,10 +220,10 @@ EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const
 std::uint16_t swapFeatures(std::uint16_t id) { return makeFeatureId(id & 0xFF, id >> 8); }
 
 Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, const Transform& xfA,
-                 const Transform& xfB) {
+                 const Transform& xfB, Real speculativeDistance) {
   Manifold manifold;
   for (const LocalPoint& local : points) {
-    if (local.separation >= kSpeculativeDistance) {
+    if (local.separation >= speculativeDistance) {
       continue;
     }
     ManifoldPoint& mp = manifold.points[manifold.pointCount++];
@@ -275,7 +275,7 @@ static bool closestVertexPair(const Polygon& reference, int referenceEdge, const
 // radius of its core:
 //   sA, faceA = max separation of the cores over A's edge normals (SAT);
 //   sB, faceB likewise
-//   if max(sA, sB) - radii > speculative distance: no contact
+//   if max(sA, sB) - radii >= speculative distance: no contact
 //   reference face = faceA unless sB > sA + tolerance (then faceB, flipped)
 //   incident edge = edge of the other polygon most anti-parallel to it
 //   (rounded or two-vertex polygons) if the nearest points of the two edges
@@ -287,11 +287,11 @@ static bool closestVertexPair(const Polygon& reference, int referenceEdge, const
 //   keep the points within the speculative distance
 //   flipped: negate the normal so it points from A to B, swap id features
 Manifold collideLocalPolygons(const Polygon& a, const Polygon& localB, const Transform& xfA,
-                              const Transform& xfB) {
+                              const Transform& xfB, Real speculativeDistance) {
   FaceQuery faceA = findMaxSeparation(a, localB);
   FaceQuery faceB = findMaxSeparation(localB, a);
   if (std::max(faceA.separation, faceB.separation) - (a.radius + localB.radius) >=
-      kSpeculativeDistance) {
+      speculativeDistance) {
     return {};
   }
 
@@ -318,7 +318,8 @@ Manifold collideLocalPolygons(const Polygon& a, const Polygon& localB, const Tra
       point.id = swapFeatures(point.id);
     }
   }
-  return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB);
+  return toWorld(contacts.normal, std::span(contacts.points.data(), contacts.count), xfA, xfB,
+                 speculativeDistance);
 }
 
 }  // namespace narrow
@@ -332,21 +333,23 @@ using namespace narrow;
 // feature of A they touch, so a circle rolling over a polygon's vertex keeps
 // its warm-start impulse.
 Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
-                       Real separation, const Transform& xfA, const Transform& xfB) {
+                       Real separation, const Transform& xfA, const Transform& xfB,
+                       Real speculativeDistance) {
   Vec2 surfaceB = centerB - radiusB * normal;
   LocalPoint point{Real(0.5) * (surfaceA + surfaceB), separation, makeFeatureId(0, 0)};
-  return toWorld(normal, std::span(&point, 1), xfA, xfB);
+  return toWorld(normal, std::span(&point, 1), xfA, xfB, speculativeDistance);
 }
 
 // Circle B whose centre lies in the Voronoi region of a vertex of A (a core
 // vertex, `radiusA` out from A's surface).
 Manifold circleVertexContact(const Vec2& vertex, Real radiusA, const Vec2& centerB, Real radiusB,
-                             const Transform& xfA, const Transform& xfB) {
+                             const Transform& xfA, const Transform& xfB, Real speculativeDistance) {
   Vec2 offset = centerB - vertex;
   Real distance = offset.norm();
   Vec2 normal = offset / distance;
   Vec2 surfaceA = radiusA != 0 ? Vec2(vertex + radiusA * normal) : vertex;
-  return circleContact(surfaceA, centerB, radiusB, normal, distance - radiusA - radiusB, xfA, xfB);
+  return circleContact(surfaceA, centerB, radiusB, normal, distance - radiusA - radiusB, xfA, xfB,
+                       speculativeDistance);
 }
 
 }  // namespace
@@ -355,7 +358,7 @@ Manifold circleVertexContact(const Vec2& vertex, Real radiusA, const Vec2& cente
 // separation is the centre distance minus both radii, and the point lies
 // midway between the two surface points along the normal.
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
-                        const Transform& xfB) {
+                        const Transform& xfB, Real speculativeDistance) {
   Vec2 centerB = placeInA(relativeTransform(xfA, xfB), b.center);
   Vec2 offset = a.center.isZero() ? centerB : Vec2(centerB - a.center);
   Real distance = offset.norm();
@@ -364,7 +367,7 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
   Vec2 normal = distance > kMinDirectionLength ? Vec2(offset / distance) : Vec2(0, 1);
   Vec2 surfaceA = a.center.isZero() ? Vec2(a.radius * normal) : Vec2(a.center + a.radius * normal);
   return circleContact(surfaceA, centerB, b.radius, normal, distance - a.radius - b.radius, xfA,
-                       xfB);
+                       xfB, speculativeDistance);
 }
 
 // In A's frame, with c the circle centre, r its radius and R A's rounding:
@@ -375,10 +378,10 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
 //   else (face region, also when c is inside):
 //     normal = n_i, separation = s - r - R
 Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
-                                 const Transform& xfB) {
+                                 const Transform& xfB, Real speculativeDistance) {
   Vec2 center = placeInA(relativeTransform(xfA, xfB), b.center);
   FaceQuery face = findMaxSeparation(a, center);
-  if (face.separation - b.radius - a.radius >= kSpeculativeDistance) {
+  if (face.separation - b.radius - a.radius >= speculativeDistance) {
     return {};
   }
 
@@ -388,10 +391,10 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
   // |c - v| >= s then guarantees a length to normalise.
   if (face.separation > kMinDirectionLength) {
     if ((center - v1).dot(v2 - v1) < 0) {
-      return circleVertexContact(v1, a.radius, center, b.radius, xfA, xfB);
+      return circleVertexContact(v1, a.radius, center, b.radius, xfA, xfB, speculativeDistance);
     }
     if ((center - v2).dot(v1 - v2) < 0) {
-      return circleVertexContact(v2, a.radius, center, b.radius, xfA, xfB);
+      return circleVertexContact(v2, a.radius, center, b.radius, xfA, xfB, speculativeDistance);
     }
   }
 
@@ -399,24 +402,27 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
   Vec2 onFace = center - face.separation * normal;
   if (a.radius != 0) onFace += a.radius * normal;
   return circleContact(onFace, center, b.radius, normal, face.separation - b.radius - a.radius, xfA,
-                       xfB);
+                       xfB, speculativeDistance);
 }
 
 Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
-                         const Transform& xfB) {
-  return collideLocalPolygons(a, transformPolygon(b, relativeTransform(xfA, xfB)), xfA, xfB);
+                         const Transform& xfB, Real speculativeDistance) {
+  return collideLocalPolygons(a, transformPolygon(b, relativeTransform(xfA, xfB)), xfA, xfB,
+                              speculativeDistance);
 }
 
 // A capsule is a rounded two-vertex polygon.
 Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b,
-                                  const Transform& xfB) {
-  return collidePolygons(a, xfA, makeTwoSidedPolygon(b.center1, b.center2, b.radius), xfB);
+                                  const Transform& xfB, Real speculativeDistance) {
+  return collidePolygons(a, xfA, makeTwoSidedPolygon(b.center1, b.center2, b.radius), xfB,
+                         speculativeDistance);
 }
 
 // A segment is a two-vertex polygon of radius 0.
 Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b,
-                                  const Transform& xfB) {
-  return collidePolygons(makeTwoSidedPolygon(a.point1, a.point2, 0), xfA, b, xfB);
+                                  const Transform& xfB, Real speculativeDistance) {
+  return collidePolygons(makeTwoSidedPolygon(a.point1, a.point2, 0), xfA, b, xfB,
+                         speculativeDistance);
 }
 
 }  // namespace impulse

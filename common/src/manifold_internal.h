@@ -98,10 +98,10 @@ EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const
 // Converts contacts computed in A's frame to world, keeping only those within
 // the speculative distance.
 Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, const Transform& xfA,
-                 const Transform& xfB);
+                 const Transform& xfB, Real speculativeDistance);
 
 // The manifold of two polygons already in A's frame (localB transformed).
 Manifold collideLocalPolygons(const Polygon& a, const Polygon& localB, const Transform& xfA,
-                              const Transform& xfB);
+                              const Transform& xfB, Real speculativeDistance);
 
 }  // namespace impulse::narrow

@@ -20,64 +20,65 @@ using namespace narrow;
 // below is generated from this set, and a static_assert refuses to compile
 // when a pair has no overload, or one in each order.
 
-Manifold pairManifold(const Circle& a, const Transform& xfA, const Circle& b,
-                      const Transform& xfB) {
-  return collideCircles(a, xfA, b, xfB);
+Manifold pairManifold(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB,
+                      Real speculativeDistance) {
+  return collideCircles(a, xfA, b, xfB, speculativeDistance);
 }
-Manifold pairManifold(const Capsule& a, const Transform& xfA, const Circle& b,
-                      const Transform& xfB) {
-  return collideCapsuleAndCircle(a, xfA, b, xfB);
+Manifold pairManifold(const Capsule& a, const Transform& xfA, const Circle& b, const Transform& xfB,
+                      Real speculativeDistance) {
+  return collideCapsuleAndCircle(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const Capsule& a, const Transform& xfA, const Capsule& b,
-                      const Transform& xfB) {
-  return collideCapsules(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collideCapsules(a, xfA, b, xfB, speculativeDistance);
 }
-Manifold pairManifold(const Segment& a, const Transform& xfA, const Circle& b,
-                      const Transform& xfB) {
-  return collideSegmentAndCircle(a, xfA, b, xfB);
+Manifold pairManifold(const Segment& a, const Transform& xfA, const Circle& b, const Transform& xfB,
+                      Real speculativeDistance) {
+  return collideSegmentAndCircle(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const Segment& a, const Transform& xfA, const Capsule& b,
-                      const Transform& xfB) {
-  return collideSegmentAndCapsule(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collideSegmentAndCapsule(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const Segment& a, const Transform& xfA, const Polygon& b,
-                      const Transform& xfB) {
-  return collideSegmentAndPolygon(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collideSegmentAndPolygon(a, xfA, b, xfB, speculativeDistance);
 }
-Manifold pairManifold(const Polygon& a, const Transform& xfA, const Circle& b,
-                      const Transform& xfB) {
-  return collidePolygonAndCircle(a, xfA, b, xfB);
+Manifold pairManifold(const Polygon& a, const Transform& xfA, const Circle& b, const Transform& xfB,
+                      Real speculativeDistance) {
+  return collidePolygonAndCircle(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const Polygon& a, const Transform& xfA, const Capsule& b,
-                      const Transform& xfB) {
-  return collidePolygonAndCapsule(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collidePolygonAndCapsule(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const Polygon& a, const Transform& xfA, const Polygon& b,
-                      const Transform& xfB) {
-  return collidePolygons(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collidePolygons(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const ChainSegment& a, const Transform& xfA, const Circle& b,
-                      const Transform& xfB) {
-  return collideChainSegmentAndCircle(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collideChainSegmentAndCircle(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const ChainSegment& a, const Transform& xfA, const Capsule& b,
-                      const Transform& xfB) {
-  return collideChainSegmentAndCapsule(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collideChainSegmentAndCapsule(a, xfA, b, xfB, speculativeDistance);
 }
 Manifold pairManifold(const ChainSegment& a, const Transform& xfA, const Polygon& b,
-                      const Transform& xfB) {
-  return collideChainSegmentAndPolygon(a, xfA, b, xfB);
+                      const Transform& xfB, Real speculativeDistance) {
+  return collideChainSegmentAndPolygon(a, xfA, b, xfB, speculativeDistance);
 }
 // Boundaries have no inside to push out of: no contact between two of them
 // (shapesCanCollide lets the world skip these pairs altogether).
-Manifold pairManifold(const Segment&, const Transform&, const Segment&, const Transform&) {
+Manifold pairManifold(const Segment&, const Transform&, const Segment&, const Transform&, Real) {
   return {};
 }
-Manifold pairManifold(const ChainSegment&, const Transform&, const Segment&, const Transform&) {
+Manifold pairManifold(const ChainSegment&, const Transform&, const Segment&, const Transform&,
+                      Real) {
   return {};
 }
-Manifold pairManifold(const ChainSegment&, const Transform&, const ChainSegment&,
-                      const Transform&) {
+Manifold pairManifold(const ChainSegment&, const Transform&, const ChainSegment&, const Transform&,
+                      Real) {
   return {};
 }
 
@@ -89,14 +90,15 @@ using GeometryAt = std::variant_alternative_t<I, Geometry>;
 
 template <std::size_t I, std::size_t J>
 constexpr bool kHasEntry = requires(const GeometryAt<I>& a, const GeometryAt<J>& b,
-                                    const Transform& xf) {
-  { pairManifold(a, xf, b, xf) } -> std::same_as<Manifold>;
+                                    const Transform& xf, Real distance) {
+  { pairManifold(a, xf, b, xf, distance) } -> std::same_as<Manifold>;
 };
 
 template <std::size_t I, std::size_t J>
-Manifold collideEntry(const void* a, const Transform& xfA, const void* b, const Transform& xfB) {
+Manifold collideEntry(const void* a, const Transform& xfA, const void* b, const Transform& xfB,
+                      Real speculativeDistance) {
   return pairManifold(*static_cast<const GeometryAt<I>*>(a), xfA,
-                      *static_cast<const GeometryAt<J>*>(b), xfB);
+                      *static_cast<const GeometryAt<J>*>(b), xfB, speculativeDistance);
 }
 
 template <std::size_t I, std::size_t J>
@@ -264,12 +266,13 @@ CollideFunction collideFunction(ShapeType a, ShapeType b) {
 
 bool shapesCanCollide(ShapeType a, ShapeType b) { return isSolid(a) || isSolid(b); }
 
-Manifold collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB) {
+Manifold collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
+                 Real speculativeDistance) {
   if (CollideFunction function = collideFunction(a.type(), b.type())) {
-    return function(refOf(a).geometry, xfA, refOf(b).geometry, xfB);
+    return function(refOf(a).geometry, xfA, refOf(b).geometry, xfB, speculativeDistance);
   }
   CollideFunction function = collideFunction(b.type(), a.type());
-  return reversed(function(refOf(b).geometry, xfB, refOf(a).geometry, xfA));
+  return reversed(function(refOf(b).geometry, xfB, refOf(a).geometry, xfA, speculativeDistance));
 }
 
 // The distance is symmetric: a circle is measured in its partner's frame,

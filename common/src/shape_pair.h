@@ -19,7 +19,7 @@ struct ShapeRef {
 ShapeRef refOf(const Shape& shape);
 
 using CollideFunction = Manifold (*)(const void* a, const Transform& xfA, const void* b,
-                                     const Transform& xfB);
+                                     const Transform& xfB, Real speculativeDistance);
 
 /// The table's function for the ordered pair of types, nullptr when the table
 /// holds it the other way round (then swap the shapes: normals point from A

@@ -10,44 +10,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "scene.h"
+#include "impulse_figures.h"
 
 namespace bench {
 namespace {
 
-struct Figures {
-  std::vector<Metric> metrics;
-
-  double operator[](const std::string& name) const {
-    for (const Metric& metric : metrics) {
-      if (metric.name == name) return metric.value;
-    }
-    ADD_FAILURE() << "no figure named " << name;
-    return std::nan("");
-  }
-};
-
-/// The scene run in Impulse for its bench length, observed every step.
-Figures runInImpulse(const std::string& name) {
-  for (const auto& scene : solver2DScenes(false)) {
-    if (scene->name() != name) continue;
-    const SceneDescription description = scene->describe();
-    std::unique_ptr<EngineAdapter> engine = makeImpulseAdapter(description, 4);
-    std::unique_ptr<Measure> measure = scene->measure(description, Engine::Impulse);
-    for (int step = 0; step < scene->length().steps; ++step) {
-      engine->step(kDt);
-      measure->observe(*engine, step);
-    }
-    Figures figures{measure->results(*engine)};
-    std::printf("measured: %s", name.c_str());
-    for (const Metric& metric : figures.metrics)
-      std::printf("  %s %.4g", metric.name.c_str(), metric.value);
-    std::printf("\n");
-    return figures;
-  }
-  ADD_FAILURE() << "no scene named " << name;
-  return {};
-}
+/// The Solver2D scene named `name`, run in Impulse.
+Figures runInImpulse(const std::string& name) { return runInImpulse(solver2DScenes(false), name); }
 
 // ---- contact scenes --------------------------------------------------------
 

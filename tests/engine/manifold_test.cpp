@@ -36,7 +36,8 @@ void expectVecNear(const Vec2& actual, const Vec2& expected, Real tolerance) {
 
 // Invariants every manifold must satisfy whatever the configuration.
 void expectWellFormed(const Manifold& m, const Transform& xfA, const Transform& xfB,
-                      Real tolerance = kTolerance) {
+                      Real tolerance = kTolerance,
+                      Real speculativeDistance = kSpeculativeDistance) {
   ASSERT_GE(m.pointCount, 0);
   ASSERT_LE(m.pointCount, 2);
   if (m.pointCount > 0) {
@@ -47,7 +48,7 @@ void expectWellFormed(const Manifold& m, const Transform& xfA, const Transform& 
     const ManifoldPoint& mp = m.points[i];
     EXPECT_TRUE(isFinite(mp.point));
     EXPECT_TRUE(isFinite(mp.separation));
-    EXPECT_LT(mp.separation, kSpeculativeDistance);
+    EXPECT_LT(mp.separation, speculativeDistance);
     expectVecNear(mp.anchorA, mp.point - xfA.p, tolerance);
     expectVecNear(mp.anchorB, mp.point - xfB.p, tolerance);
     EXPECT_EQ(mp.normalImpulse, 0);
@@ -56,15 +57,15 @@ void expectWellFormed(const Manifold& m, const Transform& xfA, const Transform& 
 }
 
 // The table's function for the pair in this order, checked well formed.
-Manifold collideChecked(const Shape& a, const Transform& xfA, const Shape& b,
-                        const Transform& xfB) {
+Manifold collideChecked(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
+                        Real speculativeDistance = kSpeculativeDistance) {
   CollideFunction function = collideFunction(a.type(), b.type());
   if (function == nullptr) {
     ADD_FAILURE() << "no collide function for this pair";
     return {};
   }
-  Manifold m = function(refOf(a).geometry, xfA, refOf(b).geometry, xfB);
-  expectWellFormed(m, xfA, xfB);
+  Manifold m = function(refOf(a).geometry, xfA, refOf(b).geometry, xfB, speculativeDistance);
+  expectWellFormed(m, xfA, xfB, kTolerance, speculativeDistance);
   return m;
 }
 
@@ -390,7 +391,8 @@ TEST(CollideFunctions, RotatedTranslatedFrames_GiveTheAxisAlignedManifoldTransfo
     Transform movedA = compose(frame, xfA);
     Transform movedB = compose(frame, pair.xfB);
     CollideFunction function = collideFunction(pair.a.type(), pair.b.type());
-    Manifold moved = function(refOf(pair.a).geometry, movedA, refOf(pair.b).geometry, movedB);
+    Manifold moved = function(refOf(pair.a).geometry, movedA, refOf(pair.b).geometry, movedB,
+                              kSpeculativeDistance);
     expectWellFormed(moved, movedA, movedB, kFarTolerance);
 
     ASSERT_GT(aligned.pointCount, 0);
@@ -442,11 +444,43 @@ TEST(CollideFunction, DispatchesEachOrderedPairAndLeavesCirclePolygonToTheCaller
   Transform xfA = makeTransform(0, 0);
   Transform xfB = makeTransform(Real(0.2), Real(0.9));
   Manifold viaTable = collideFunction(ShapeType::Polygon, ShapeType::Circle)(
-      refOf(kUnitBox).geometry, xfA, refOf(circle).geometry, xfB);
+      refOf(kUnitBox).geometry, xfA, refOf(circle).geometry, xfB, kSpeculativeDistance);
   Manifold direct = collidePolygonAndCircle(kUnitBox.polygon(), xfA, circle.circle(), xfB);
   ASSERT_EQ(viaTable.pointCount, 1);
   ASSERT_EQ(direct.pointCount, 1);
   expectVecNear(viaTable.points[0].point, direct.points[0].point, 0);
+}
+
+// The world grows a contact's speculative distance by how far its pair may
+// close in a step (contact.cpp): every function keeps points out to the
+// distance it is given, and only that far.
+TEST(CollideFunctions, KeepPointsOutToTheSpeculativeDistanceGiven) {
+  const Shape circle = Shape::makeCircle(Real(0.5));
+  const Shape capsule = Shape::makeCapsule(Vec2(Real(-0.5), 0), Vec2(Real(0.5), 0), Real(0.25));
+  const Shape segment = Shape::makeSegment(Vec2(-1, 0), Vec2(1, 0));
+  // B straight above A, touching when its centre is `touching` above A's.
+  struct Pair {
+    const Shape& a;
+    const Shape& b;
+    Real touching;
+  };
+  const Pair pairs[] = {
+      {circle, circle, 1},           {kUnitBox, circle, 1},
+      {kUnitBox, kUnitBox, 1},       {capsule, circle, Real(0.75)},
+      {capsule, capsule, Real(0.5)}, {kUnitBox, capsule, Real(0.75)},
+      {segment, circle, Real(0.5)},  {segment, kUnitBox, Real(0.5)},
+  };
+  const Real gap = 3 * kSpeculativeDistance;
+  const Transform xfA = makeTransform(0, 0);
+  for (const Pair& pair : pairs) {
+    const Transform xfB = makeTransform(0, pair.touching + gap);
+    EXPECT_EQ(collideChecked(pair.a, xfA, pair.b, xfB).pointCount, 0);
+    EXPECT_EQ(collideChecked(pair.a, xfA, pair.b, xfB, Real(0.9) * gap).pointCount, 0);
+    const Manifold m = collideChecked(pair.a, xfA, pair.b, xfB, 2 * gap);
+    ASSERT_GT(m.pointCount, 0);
+    expectVecNear(m.normal, Vec2(0, 1), kTolerance);
+    for (int i = 0; i < m.pointCount; ++i) EXPECT_NEAR(m.points[i].separation, gap, kTolerance);
+  }
 }
 
 // ---- computeSeparation ----

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 
+#include "impulse/constants.h"
 #include "impulse/math.h"
 #include "impulse/shape.h"
 
@@ -58,37 +59,50 @@ constexpr std::uint16_t makeFeatureId(int a, int b) {
 }
 
 // Each function returns the points whose separation is below
-// kSpeculativeDistance (speculative contacts), and no points otherwise.
+// `speculativeDistance` (speculative contacts), and no points otherwise. The
+// world passes kSpeculativeDistance grown by how far the pair can close in a
+// step (contact.cpp), so a fast approach meets its contact before it
+// overlaps.
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
-                        const Transform& xfB);
+                        const Transform& xfB, Real speculativeDistance = kSpeculativeDistance);
 Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
-                                 const Transform& xfB);
+                                 const Transform& xfB,
+                                 Real speculativeDistance = kSpeculativeDistance);
 Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
-                         const Transform& xfB);
+                         const Transform& xfB, Real speculativeDistance = kSpeculativeDistance);
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,
-                                 const Transform& xfB);
+                                 const Transform& xfB,
+                                 Real speculativeDistance = kSpeculativeDistance);
 /// Two points when the capsules lie along each other, one otherwise.
 Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& b,
-                         const Transform& xfB);
+                         const Transform& xfB, Real speculativeDistance = kSpeculativeDistance);
 Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b,
-                                  const Transform& xfB);
+                                  const Transform& xfB,
+                                  Real speculativeDistance = kSpeculativeDistance);
 Manifold collideSegmentAndCircle(const Segment& a, const Transform& xfA, const Circle& b,
-                                 const Transform& xfB);
+                                 const Transform& xfB,
+                                 Real speculativeDistance = kSpeculativeDistance);
 Manifold collideSegmentAndCapsule(const Segment& a, const Transform& xfA, const Capsule& b,
-                                  const Transform& xfB);
+                                  const Transform& xfB,
+                                  Real speculativeDistance = kSpeculativeDistance);
 Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b,
-                                  const Transform& xfB);
+                                  const Transform& xfB,
+                                  Real speculativeDistance = kSpeculativeDistance);
 /// Chain segments collide on their right side only, and leave to their
 /// neighbours (through the ghost vertices) the contacts that belong to them.
 Manifold collideChainSegmentAndCircle(const ChainSegment& a, const Transform& xfA, const Circle& b,
-                                      const Transform& xfB);
+                                      const Transform& xfB,
+                                      Real speculativeDistance = kSpeculativeDistance);
 Manifold collideChainSegmentAndCapsule(const ChainSegment& a, const Transform& xfA,
-                                       const Capsule& b, const Transform& xfB);
+                                       const Capsule& b, const Transform& xfB,
+                                       Real speculativeDistance = kSpeculativeDistance);
 Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform& xfA,
-                                       const Polygon& b, const Transform& xfB);
+                                       const Polygon& b, const Transform& xfB,
+                                       Real speculativeDistance = kSpeculativeDistance);
 
 /// The manifold of any two shapes, normal from a to b (dispatches on their
 /// types; the world caches the function per contact instead, shape_pair.h).
-Manifold collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB);
+Manifold collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
+                 Real speculativeDistance = kSpeculativeDistance);
 
 }  // namespace impulse
