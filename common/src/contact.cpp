@@ -125,11 +125,12 @@ Real closingReach(const Body& a, const Body& b, Real dt) {
 
 // A manifold without points says nothing about gaps beyond the distance it
 // was computed with; once the pair may close by more than the approach
-// tolerance in a step, it is computed afresh with its reach.
-bool manifoldIsCurrent(const Contact& contact, const Body& a, const Body& b, Real reach) {
+// tolerance in a step, it is computed afresh with its reach. (Only then is
+// the reach worked out: a resting pile's carried manifolds have points.)
+bool manifoldIsCurrent(const Contact& contact, const Body& a, const Body& b, Real dt) {
   const ManifoldFrame& frame = contact.frame;
   if (!frame.computed) return false;
-  if (contact.manifold.pointCount == 0 && reach > kApproachTolerance) return false;
+  if (contact.manifold.pointCount == 0 && closingReach(a, b, dt) > kApproachTolerance) return false;
   Transform now = relativePose(a, b);
   Vec2 shift = now.p - frame.relative.p;
   Real approach = shift.dot(frame.localNormal);
@@ -217,15 +218,14 @@ std::uint8_t updateManifold(const WorldData& world, Contact& contact, Real dt) {
   }
   const Body& a = world.bodies[contact.edges.bodyA];
   const Body& b = world.bodies[contact.edges.bodyB];
-  const Real reach = closingReach(a, b, dt);
   const bool carried = carriesManifold(contact);
-  if (carried && manifoldIsCurrent(contact, a, b, reach)) {
+  if (carried && manifoldIsCurrent(contact, a, b, dt)) {
     refreshManifold(contact, a, b);
     return wakeOutcome(contact, a, b);
   }
   Manifold next = contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
                                   world.shapes[contact.shapeB].ref().geometry, b.transform,
-                                  kSpeculativeDistance + reach);
+                                  kSpeculativeDistance + closingReach(a, b, dt));
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
   const bool wasTouching = contact.touching;
