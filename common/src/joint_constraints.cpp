@@ -59,7 +59,8 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   row.anchorA = a.q.apply(joint.localAnchorA);
   row.anchorB = mouse ? joint.target : b.q.apply(joint.localAnchorB);
   row.deltaCenter = b.center - a.center;
-  row.plainPin = isPlainPin(joint.settings);
+  row.softRows = hasSoftRows(joint.settings);
+  row.plainPin = std::holds_alternative<RevoluteJointSettings>(joint.settings) && !row.softRows;
   // The angle's atan2 is a frame's costliest part, and a pin never reads it.
   row.deltaAngle = row.plainPin ? Real(0) : jointAngle(joint, a.q, b.q);
   row.axis = a.q.apply(joint.localAxisA);
@@ -68,7 +69,6 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   // The count is the rows themselves at the step's start: one definition.
   RigidRows scratch;
   row.rigidRowCount = rigidRows(row, SolverState{}, SolverState{}, scratch);
-  row.softRows = hasSoftRows(joint.settings);
   return row;
 }
 

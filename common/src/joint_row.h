@@ -79,8 +79,6 @@ void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& 
 /// Whether a joint of these settings has rows besides its rigid ones (a
 /// motor, a limit, a spring; every rope and mouse joint).
 bool hasSoftRows(const JointSettings& settings);
-/// Whether a joint of these settings is a plain pin (JointRow::plainPin).
-bool isPlainPin(const JointSettings& settings);
 /// Fills `out` with the joint's rigid rows at the states' geometry and
 /// returns how many (0 to 3): the pin of a revolute or rigid weld, a rod's
 /// length, a rigid weld's angle, a prismatic's angle and offset, a wheel's

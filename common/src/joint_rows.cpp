@@ -446,11 +446,6 @@ void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& 
   std::visit([&](const auto& settings) { solveKind(x, settings); }, row.joint->settings);
 }
 
-bool isPlainPin(const JointSettings& settings) {
-  const auto* revolute = std::get_if<RevoluteJointSettings>(&settings);
-  return revolute != nullptr && !hasSoftRows(settings);
-}
-
 bool hasSoftRows(const JointSettings& settings) {
   return std::visit(
       [](const auto& s) -> bool {
