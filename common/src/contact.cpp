@@ -269,7 +269,11 @@ std::int32_t firstAwakeBody(const WorldData& world, const Contact& contact) {
 void sortTouchingByBody(WorldData& world) {
   std::vector<std::int32_t>& list = world.touchingContacts;
   std::vector<std::int32_t>& keys = world.touchingKeys;
-  if (list.empty()) return;
+  if (list.empty()) {
+    world.touchingUnsorted.clear();
+    world.touchingOrder.clear();
+    return;
+  }
   keys.clear();
   std::int32_t lastKey = 0;
   for (std::int32_t index : list) {
@@ -279,9 +283,9 @@ void sortTouchingByBody(WorldData& world) {
   // Keys up to the highest only: a sleeping crowd costs nothing here.
   world.touchingStarts.resize(static_cast<std::size_t>(lastKey) + 2);
   countingSort(keys, world.touchingStarts, world.touchingOrder);
-  world.touchingSorted.clear();
-  for (std::int32_t position : world.touchingOrder) world.touchingSorted.push_back(list[std::size_t(position)]);
-  list.swap(world.touchingSorted);
+  world.touchingUnsorted.swap(list);
+  list.clear();
+  for (std::int32_t position : world.touchingOrder) list.push_back(world.touchingUnsorted[std::size_t(position)]);
 }
 
 }  // namespace

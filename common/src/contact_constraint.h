@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "contact_data.h"
 #include "graph_coloring.h"
 #include "simd.h"
 #include "solver_data.h"
@@ -37,6 +38,13 @@ struct ConstraintRef {
   /// What its points carried in the last sub-step of last step (normal
   /// plus support impulses): the support pass's measured load.
   Real lastLoad = 0;
+};
+
+/// A touching contact as the bundles are filled from it: its ref and a
+/// copy of its solver part, laid out in colour order (WideContactSet::staged).
+struct StagedContact {
+  ConstraintRef ref;
+  ContactSolverPart part;
 };
 
 struct ConstraintPoint {
@@ -161,6 +169,12 @@ struct WideContactSet {
   // Scratch for sorting by colour, kept to avoid allocation per step.
   std::vector<std::int32_t> colorOf;
   std::vector<std::int32_t> order;
+  /// Per entry of WorldData::touchingUnsorted, its ConstraintRef; per
+  /// ConstraintRef, its place in `order`; and the touching contacts copied
+  /// there, so bundles fill from consecutive memory.
+  std::vector<std::int32_t> refOfUnsorted;
+  std::vector<std::int32_t> rankOf;
+  std::vector<StagedContact> staged;
   /// The contact bundles' entries of `order`, and the support bundles'
   /// rows; per contact bundle, its lanes that intruded when prepared
   /// (bundles fill side by side, the intrusions are marked after).

@@ -43,13 +43,21 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
 // Refs per range when collecting them side by side.
 constexpr std::int32_t kRefsPerRange = 256;
 
-// The touching contacts the step solves: the narrow phase's list.
-void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs) {
-  const std::vector<std::int32_t>& touching = world.touchingContacts;
-  refs.resize(touching.size());
+// The touching contacts the step solves: the narrow phase's list. Made in
+// the order memory holds the contacts (reading them in the list's order
+// misses the cache about once a contact); `refOfUnsorted` keeps where each
+// went.
+void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs,
+                     std::vector<std::int32_t>& refOfUnsorted) {
+  const std::vector<std::int32_t>& order = world.touchingOrder;
+  refs.resize(world.touchingContacts.size());
+  refOfUnsorted.resize(refs.size());
+  for (std::size_t k = 0; k < refs.size(); ++k) refOfUnsorted[std::size_t(order[k])] = std::int32_t(k);
   const Vec2 up = upwards(world.settings.gravity);
-  world.tasks.forRanges(static_cast<std::int32_t>(touching.size()), kRefsPerRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t i = begin; i < end; ++i) refs[std::size_t(i)] = refOf(world, touching[std::size_t(i)], up);
+  world.tasks.forRanges(static_cast<std::int32_t>(refs.size()), kRefsPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t j = begin; j < end; ++j) {
+      refs[std::size_t(refOfUnsorted[std::size_t(j)])] = refOf(world, world.touchingUnsorted[std::size_t(j)], up);
+    }
   });
 }
 
@@ -62,7 +70,7 @@ ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
 }  // namespace
 
 bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
-  collectTouching(world, refs_);
+  collectTouching(world, refs_, wide_.refOfUnsorted);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
   const ContactSoftness softness = contactSoftness(world.settings, step.h);

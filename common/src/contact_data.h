@@ -18,20 +18,28 @@ inline std::uint64_t contactPairKey(std::int32_t a, std::int32_t b) {
   return (lo << 32) | hi;
 }
 
-struct Contact {
-  /// The two bodies and this contact's place in their edge lists.
-  EdgeLinks edges;
-  /// The two shapes (slots), A's on edges.bodyA.
-  std::int32_t shapeA = -1;
-  std::int32_t shapeB = -1;
+/// What preparing the solver reads of a contact: its manifold and the
+/// coefficients mixed from the two materials. A contact begins with it, on
+/// the first two cache lines of an aligned contact, and the solver copies
+/// it out whole (StagedContact, contact_constraint.h).
+struct ContactSolverPart {
   Manifold manifold;
-  ManifoldFrame frame;
-  CollideFunction collide = nullptr;
   Real staticFriction = 0;
   Real dynamicFriction = 0;
   Real restitution = 0;
   /// Rolling resistance as a length: c_rr times the rolling radius.
   Real rollingResistance = 0;
+};
+static_assert(sizeof(ContactSolverPart) <= 128, "the solver's part of a contact fits two cache lines");
+
+struct alignas(64) Contact : ContactSolverPart {
+  /// The two bodies and this contact's place in their edge lists.
+  EdgeLinks edges;
+  /// The two shapes (slots), A's on edges.bodyA.
+  std::int32_t shapeA = -1;
+  std::int32_t shapeB = -1;
+  ManifoldFrame frame;
+  CollideFunction collide = nullptr;
   std::uint64_t pairKey = 0;
   bool touching = false;
   /// Either shape asked for touch events, or for hit events.

@@ -118,10 +118,13 @@ struct WorldData {
   /// The touching contacts with an awake body, in solver order: the narrow
   /// phase's list for this step's solve.
   std::vector<std::int32_t> touchingContacts;
+  /// The same contacts in the narrow phase's order, near the order memory
+  /// holds them in (reading them so is far cheaper), and for each of
+  /// touchingContacts its position there.
+  std::vector<std::int32_t> touchingUnsorted;
+  std::vector<std::int32_t> touchingOrder;
   std::vector<std::int32_t> touchingKeys;
   std::vector<std::int32_t> touchingStarts;
-  std::vector<std::int32_t> touchingOrder;
-  std::vector<std::int32_t> touchingSorted;
   std::vector<FieldBody> fieldBodies;
   std::vector<FieldBody> fieldStillBodies;
   std::vector<const Shape*> fieldBodyShapes;
