@@ -37,6 +37,19 @@ Side sideOf(const WorldData& world, std::int32_t slot) {
   return side;
 }
 
+// Marks the solver states of the awake bodies of this step's touching
+// contacts, reading the contacts in the order memory holds them.
+void markTouchingStates(const WorldData& world, std::vector<std::uint8_t>& touching) {
+  touching.assign(world.solverStates.size(), 0);
+  for (const std::int32_t index : world.touchingUnsorted) {
+    const EdgeLinks& edges = world.contacts[index].edges;
+    for (const std::int32_t slot : {edges.bodyA, edges.bodyB}) {
+      const Body& body = world.bodies[slot];
+      if (body.awake) touching[std::size_t(body.solverIndex)] = 1;
+    }
+  }
+}
+
 bool hasAwakeBody(const WorldData& world, const Joint& joint) {
   auto awake = [&](std::int32_t slot) { return slot != kNullIndex && world.bodies[slot].awake; };
   return joint.alive && (awake(joint.edges.bodyA) || awake(joint.edges.bodyB));
@@ -104,9 +117,10 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   // Solved in colour order, so a colour's joints could run side by side.
   colorStarts_ = sortByColor(colorOf_, order_);
   for (std::int32_t position : order_) rows_.push_back(gathered_[position]);
-  tree_.order(rows_, world.solverStates.size());
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
+  markTouchingStates(world, touching_);
+  tree_.order(rows_, pass_.rigid, touching_);
   return false;
 }
 

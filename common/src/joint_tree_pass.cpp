@@ -1,6 +1,7 @@
 #include "joint_tree_pass.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace impulse {
@@ -74,14 +75,49 @@ void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matr
 
 }  // namespace
 
-void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount) {
-  if (!sameRowsAsOrdered(rows)) orderAnew(rows, stateCount);
+void JointTreePass::order(std::span<JointRow> rows, const Softness& rigid, std::span<const std::uint8_t> touching) {
+  if (!sameRowsAsOrdered(rows)) orderAnew(rows, touching.size());
+  const Real compliance = rigid.impulseScale / (rigid.massScale * rigid.biasRate);
   jointCount_ = 0;
-  for (const Node& node : nodes_) {
-    if (!node.isJoint) continue;
-    rows[node.row].inTree = true;
-    ++jointCount_;
+  groupSolved_.assign(groupEnds_.size(), 0);
+  std::size_t begin = 0;
+  for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
+    const std::span<const Node> group(nodes_.data() + begin, std::size_t(groupEnds_[g]) - begin);
+    begin = std::size_t(groupEnds_[g]);
+    if (!needsExactPass(group, rows, compliance, touching)) continue;
+    groupSolved_[g] = 1;
+    for (const Node& node : group) {
+      if (!node.isJoint) continue;
+      rows[node.row].inTree = true;
+      ++jointCount_;
+    }
   }
+}
+
+// A group held by the world (a chain, a bridge, a pendulum, a crane) hangs
+// its weight on its joints all the time, and swings through unloaded
+// moments: it is always solved exactly. So is a group touching anything: a
+// contact loads its joints in the step it begins, before any load is
+// measured. A group in flight is measured: each joint's linear load last
+// step (its stored impulses, warm started or not) over its rows' effective
+// mass, the pair's masses taken as points.
+bool JointTreePass::needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance,
+                                   std::span<const std::uint8_t> touching) {
+  // The walk roots a group at a joint to the world when it has one.
+  const Node& root = group.back();
+  if (root.sides[0] < 0 || root.sides[1] < 0) return true;
+  for (const Node& node : group) {
+    if (!node.isJoint && touching[std::size_t(node.state)] != 0) return true;
+  }
+  Real give = 0;
+  for (const Node& node : group) {
+    if (!node.isJoint) continue;
+    const JointRow& row = rows[node.row];
+    const JointImpulses& last = row.joint->impulses;
+    const Real load = last.point.norm() + std::abs(last.perpendicular) + std::abs(last.axial);
+    give += load * compliance * (row.invMassA + row.invMassB);
+  }
+  return give >= kExactTreeStretch;
 }
 
 JointTreePass::RowShape JointTreePass::shapeOf(const JointRow& row) {
@@ -213,18 +249,19 @@ Eigen::Vector3d JointTreePass::bodyMass(std::span<const JointRow> rows, const Vi
 }
 
 template <class Pass>
-void JointTreePass::forEachGroup(Pass&& pass) {
+void JointTreePass::forEachSolvedGroup(Pass&& pass) {
   std::size_t begin = 0;
-  for (const std::int32_t end : groupEnds_) {
-    pass(std::span<Node>(nodes_).subspan(begin, static_cast<std::size_t>(end) - begin));
-    begin = static_cast<std::size_t>(end);
+  for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
+    const auto end = static_cast<std::size_t>(groupEnds_[g]);
+    if (groupSolved_[g] != 0) pass(std::span<Node>(nodes_).subspan(begin, end - begin));
+    begin = end;
   }
 }
 
 // Group by group, so that a group's nodes stay in cache through the passes.
 void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h) {
   const double errorRate = kErrorShare / h;
-  forEachGroup([&](std::span<Node> group) {
+  forEachSolvedGroup([&](std::span<Node> group) {
     assemble(group, rows, states, errorRate);
     factor(group);
     substitute(group);
@@ -233,7 +270,7 @@ void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> state
 }
 
 void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> states) {
-  forEachGroup([&](std::span<Node> group) {
+  forEachSolvedGroup([&](std::span<Node> group) {
     if (!assembleSpeeds(group, rows, states)) return;  // nothing pushed it: no change
     substitute(group);
     applyVelocities(group, states, false);

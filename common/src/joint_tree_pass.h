@@ -15,6 +15,16 @@
 // Groups with a loop keep the soft rows alone. Limits, motors, springs,
 // ropes and mouse joints stay soft rows: they are inequalities or are soft
 // by design.
+//
+// Only groups that need it are solved so: every group held by the world (a
+// chain, a bridge, a pendulum), and free groups (a ragdoll, a car) while
+// they touch anything or carry a load. A soft rigid row holding a load L
+// gives way by about L times its compliance (Softness: impulseScale /
+// (massScale * biasRate), over the row's effective mass), and a group by the
+// sum over its joints; each step the pass estimates that from the loads the
+// joints carried last step, and a free group in flight is solved exactly
+// while it would give way by kExactTreeStretch or more. A ragdoll falling
+// keeps the soft rows alone; from the step it lands, it does not.
 
 #include <array>
 #include <cstdint>
@@ -27,18 +37,25 @@
 
 namespace impulse {
 
+/// Free groups whose joints the soft rows would let give way by less than
+/// this (m), summed over the group, keep the soft rows alone.
+inline constexpr Real kExactTreeStretch = Real(0.0001);
+
 class JointTreePass {
  public:
   /// Once per step: finds the acyclic groups among `rows` (bodies are their
   /// solver states, state 0 and massless bodies are the world) and orders
   /// each group's bodies and joints from the leaves to a root. Last step's
   /// groups are kept while every row joins the same states with the same
-  /// masses; either way the rows of the groups are marked `inTree`.
-  void order(std::span<JointRow> rows, std::size_t stateCount);
+  /// masses. Then marks `inTree` the rows of the groups it solves this
+  /// step (needsExactPass; `rigid` is the soft rigid rows' softness,
+  /// `touching` flags the states whose body touches anything).
+  void order(std::span<JointRow> rows, const Softness& rigid, std::span<const std::uint8_t> touching);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() {
     nodes_.clear();
     groupEnds_.clear();
+    groupSolved_.clear();
     orderedFrom_.clear();
     jointCount_ = 0;
   }
@@ -96,10 +113,14 @@ class JointTreePass {
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
   void storeReversed(std::span<const JointRow> rows);
   Eigen::Vector3d bodyMass(std::span<const JointRow> rows, const Visit& body) const;
-  /// Runs pass(group) for each group's nodes, a span of nodes_ (whose
-  /// parent and side indices stay positions in nodes_).
+  /// Whether a group is held by the world, touches anything, or the soft
+  /// rows alone would let its joints give way by kExactTreeStretch or more.
+  static bool needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance,
+                             std::span<const std::uint8_t> touching);
+  /// Runs pass(group) for each solved group's nodes, a span of nodes_
+  /// (whose parent and side indices stay positions in nodes_).
   template <class Pass>
-  void forEachGroup(Pass&& pass);
+  void forEachSolvedGroup(Pass&& pass);
   void assemble(std::span<Node> group, std::span<JointRow> rows, std::span<const SolverState> states,
                 double errorRate);
   void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
@@ -121,6 +142,7 @@ class JointTreePass {
   std::vector<Visit> walk_;
   std::vector<Node> nodes_;  ///< every group, each leaves first, root last
   std::vector<std::int32_t> groupEnds_;  ///< where each group's nodes end in nodes_
+  std::vector<std::uint8_t> groupSolved_;  ///< by group: needs the pass this step
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
   int jointCount_ = 0;
 };

@@ -248,6 +248,52 @@ TEST(JointAccuracy, HeavyChain_300To1And1000To1WeightOn20Links_StretchesBelow1Pe
   }
 }
 
+/// `links` bars of 0.5 m pinned end to end in a row at height y, centred
+/// on x = 0, not held by the world; returns the bars.
+std::vector<BodyId> addFreeChain(World& world, int links, Real y) {
+  std::vector<BodyId> bars;
+  const Real left = -Real(0.25) * Real(links);
+  for (int i = 0; i < links; ++i) {
+    bars.push_back(addBox(world, {.center = Vec2(left + Real(0.5) * Real(i) + Real(0.25), y),
+                                  .halfWidth = Real(0.25), .halfHeight = Real(0.05)}));
+    if (i == 0) continue;
+    const Vec2 pin(left + Real(0.5) * Real(i), y);
+    addJoint(world, bars[i], bars[i - 1], pin, pin, RevoluteJointSettings{});
+  }
+  return bars;
+}
+
+// The exact pass runs where the soft rows would fall short
+// (joint_tree_pass.h): on a group held by the world at every step, on a free
+// group while its joints carry a load. A free chain falling carries none;
+// slung over a peg, its two hanging halves load every joint.
+TEST(JointTreePass, FreeChainSolvedExactlyWhileLoaded_HeldChainAlways) {
+  WorldSettings settings;
+  settings.enableSleep = false;
+  World world(settings);
+  addCircle(world, {.center = Vec2(0, 10), .radius = Real(0.5), .isStatic = true});
+  const std::vector<BodyId> slung = addFreeChain(world, 12, Real(12));
+  // A pendulum of two bars beside it, held by a world pin.
+  const BodyId upper = addBox(world, {.center = Vec2(20, 9.75), .halfWidth = 0.05, .halfHeight = 0.25});
+  const BodyId lower = addBox(world, {.center = Vec2(20, 9.25), .halfWidth = 0.05, .halfHeight = 0.25});
+  addJoint(world, upper, BodyId{}, Vec2(20, 10), Vec2(20, 10), RevoluteJointSettings{});
+  addJoint(world, lower, upper, Vec2(20, 9.5), Vec2(20, 9.5), RevoluteJointSettings{});
+  const int heldJoints = 2;
+  const int allJoints = heldJoints + static_cast<int>(slung.size()) - 1;
+
+  int fallingSteps = 0;
+  int fallingSoft = 0;
+  while (stateOf(world, slung.front()).position.y() > Real(11)) {
+    world.step(kDt);
+    ++fallingSteps;
+    if (world.profile().passes.treeJoints == heldJoints) ++fallingSoft;
+  }
+  EXPECT_GT(fallingSteps, 10);
+  EXPECT_EQ(fallingSoft, fallingSteps) << "the falling chain carries no load: soft rows alone";
+  simulate(world, 4);
+  EXPECT_EQ(world.profile().passes.treeJoints, allJoints) << "slung over the peg, every joint is loaded";
+}
+
 /// A chain of `links` bars pinned to the world at both ends (a bridge's
 /// loop through the world), sagging from a V; the worst distance between
 /// the two bodies' ends at any pin over `seconds`.
