@@ -35,11 +35,6 @@ Real overlapForLoad(const Softness& softness, Real normalMass, Real impulse) {
   return stiffness > 0 ? softness.impulseScale * impulse / stiffness : Real(0);
 }
 
-Real pushCapForLoad(const Softness& softness, Real loadOverlap, Real maxPushSpeed) {
-  return std::clamp(kLoadPushMargin * softness.biasRate * loadOverlap, kMinPushSpeed,
-                    std::max(maxPushSpeed, kMinPushSpeed));
-}
-
 Real effectiveMass(const ContactConstraint& c, const Vec2& anchorA, const Vec2& anchorB,
                    const Vec2& direction) {
   Real ra = cross(anchorA, direction);
@@ -103,7 +98,15 @@ void solveRollingRow(ContactConstraint& c, SolverState& a, SolverState& b, Real 
   b.angularVelocity += c.invInertiaB * impulse;
 }
 
+bool intrudes(Real separation, Real loadOverlap) { return separation + loadOverlap < -kIntrusionSlop; }
+
 }  // namespace
+
+Real pushCapForLoad(Real biasRate, Real loadOverlap, bool heldToLoad, Real maxPushSpeed) {
+  const Real fastest = std::max(maxPushSpeed, kMinPushSpeed);
+  if (heldToLoad) return std::min(biasRate * loadOverlap, fastest);
+  return std::clamp(kLoadPushMargin * biasRate * loadOverlap, kMinPushSpeed, fastest);
+}
 
 void prepareContact(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
                     ContactConstraint& c) {
@@ -148,7 +151,9 @@ void prepareContact(const WorldData& world, const ConstraintRef& ref, const Cont
     // The load includes what the support pass carried, or a held-up body's
     // resting overlap would read as an intrusion to push out.
     cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, mp.normalImpulse + cp.supportImpulse);
-    cp.pushCap = pushCapForLoad(c.softness, cp.loadOverlap, world.settings.maxContactPushSpeed);
+    const bool heldToLoad = c.stateA != 0 && c.stateB != 0 && intrudes(mp.separation, cp.loadOverlap);
+    cp.pushCap = pushCapForLoad(c.softness.biasRate, cp.loadOverlap, heldToLoad,
+                                world.settings.maxContactPushSpeed);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.
     cp.friction = std::abs(relative.dot(tangent)) < stickSpeed ? contact.staticFriction
@@ -186,7 +191,7 @@ void solveContacts(const ContactSolverContext& context, bool useBias) {
 
 bool hasIntrusion(const ContactConstraint& c, const Manifold& manifold) {
   for (int j = 0; j < c.pointCount; ++j) {
-    if (manifold.points[j].separation + c.points[j].loadOverlap < -kIntrusionSlop) return true;
+    if (intrudes(manifold.points[j].separation, c.points[j].loadOverlap)) return true;
   }
   return false;
 }

@@ -33,6 +33,19 @@ inline constexpr Real kMinPushSpeed = Real(0.02);
 /// pushed into each other) beyond this is pushed out by the push pass.
 inline constexpr Real kIntrusionSlop = Real(0.005);
 
+/// The soft push's cap of a point: the speed that carries its load, with
+/// kLoadPushMargin and at least kMinPushSpeed; held to exactly that speed
+/// (heldToLoad) where two moving bodies overlap deeper than their load
+/// explains, which the push pass moves out through positions alone. Pushed
+/// faster, a packed crowd's intrusions made velocity one relax pass could
+/// not take back (each contact's floor push adds up along its chains), and
+/// the load that push produced raised the next step's cap by the margin
+/// again, until the crowd's whole overlap was a loaded spring whose
+/// rearrangements threw circles at 1.2 m/s. A body pressed into a static one
+/// keeps the margin: nothing pushes back along a chain there, and overlap
+/// recovery needs it.
+Real pushCapForLoad(Real biasRate, Real loadOverlap, bool heldToLoad, Real maxPushSpeed);
+
 /// True when a point of the prepared constraint overlaps deeper than its
 /// load explains by more than kIntrusionSlop.
 bool hasIntrusion(const ContactConstraint& constraint, const Manifold& manifold);

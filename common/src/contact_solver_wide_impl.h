@@ -226,6 +226,7 @@ struct BundleInputs {
   F present[2];  ///< all-ones where the manifold has the point
   F separation[2];  ///< the manifold's
   F staticFriction, dynamicFriction;
+  F bothMove;  ///< all-ones where neither body is the static dummy
 };
 
 // Zeroes one lane of every field of a point.
@@ -262,6 +263,7 @@ void gatherLane(const StagedContact& staged, const ContactSoftness& softness, Wi
   setLane(w.rollingImpulse, lane, manifold.rollingImpulse);
   setLane(in.staticFriction, lane, contact.staticFriction);
   setLane(in.dynamicFriction, lane, contact.dynamicFriction);
+  setLaneFlag(in.bothMove, lane, ref.stateA != 0 && ref.stateB != 0);
   for (WidePoint<F>& p : w.points) setLane(p.totalNormalImpulse, lane, 0.0f);
   // A point the manifold does not have is all zero: it never acts.
   for (int j = manifold.pointCount; j < 2; ++j) clearLane(w.points[j], lane);
@@ -325,13 +327,16 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     const F stiffness = p.normalMass * c.massScale * c.biasRate;
     p.loadOverlap = simd::select(simd::greater(stiffness, zero),
                                  c.impulseScale * (p.normalImpulse + p.supportImpulse) / stiffness, zero);
-    p.pushCap = simd::select(present, simd::clamp(simd::broadcast<F>(kLoadPushMargin) * c.biasRate * p.loadOverlap,
-                                                  minPush, maxPush), zero);
+    // pushCapForLoad, lane by lane.
+    const F deep = simd::less(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
+    const F loadCap = simd::min(c.biasRate * p.loadOverlap, maxPush);
+    const F marginCap =
+        simd::clamp(simd::broadcast<F>(kLoadPushMargin) * c.biasRate * p.loadOverlap, minPush, maxPush);
+    p.pushCap = simd::select(present, simd::select(simd::both(deep, in.bothMove), loadCap, marginCap), zero);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.
     const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
     p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
-    const F deep = simd::less(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
     intrusion = simd::either(intrusion, simd::both(present, deep));
   }
   return intrusion;
@@ -504,18 +509,28 @@ void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& s
 // visit(k) for each entry k of the push pass's bundle list, colour by
 // colour, one colour's side by side. The list is in bundle order, so each
 // colour's entries are one run of it.
+//
+// The colours run backwards on the sub-steps that reverse the point order.
+// The push starts from rest every sub-step and sweeps once, so the contacts
+// solved last have the last word: in one fixed order a body is pushed into
+// the contacts solved before, the same way every sub-step, and in a packed
+// crowd pairs of circles were squeezed almost through each other.
 template <class Visit>
 void forEachPushBundleByColor(const ContactSolverContext& context, const WideContactSet& set, Visit&& visit) {
   const std::vector<std::int32_t>& list = set.pushBundles;
-  auto colorBegin = list.begin();
-  for (int color = 0; color < GraphColoring::kOverflow && colorBegin != list.end(); ++color) {
-    const auto colorEnd = std::lower_bound(colorBegin, list.end(), set.colorBundleStart[std::size_t(color) + 1]);
-    const auto first = std::size_t(colorBegin - list.begin());
-    context.tasks->forRanges(std::int32_t(colorEnd - colorBegin), kBundlesPerRange,
+  std::array<std::size_t, GraphColoring::kOverflow + 1> colorStart{};
+  for (std::size_t color = 0; color < GraphColoring::kOverflow; ++color) {
+    const auto from = list.begin() + std::ptrdiff_t(colorStart[color]);
+    const auto to = std::lower_bound(from, list.end(), set.colorBundleStart[color + 1]);
+    colorStart[color + 1] = std::size_t(to - list.begin());
+  }
+  for (std::size_t k = 0; k < GraphColoring::kOverflow; ++k) {
+    const std::size_t color = context.reversePointOrder ? GraphColoring::kOverflow - 1 - k : k;
+    const std::size_t first = colorStart[color];
+    context.tasks->forRanges(std::int32_t(colorStart[color + 1] - first), kBundlesPerRange,
                              [&](std::int32_t begin, std::int32_t end) {
-                               for (std::int32_t k = begin; k < end; ++k) visit(first + std::size_t(k));
+                               for (std::int32_t entry = begin; entry < end; ++entry) visit(first + std::size_t(entry));
                              });
-    colorBegin = colorEnd;
   }
 }
 

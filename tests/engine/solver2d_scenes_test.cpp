@@ -85,12 +85,11 @@ constexpr Real kRushForce = 1000;
 // constant 1000 N applied every step. With a force of constant size the
 // pull's potential energy is 1000 N times the distance, so kinetic plus that
 // potential is what the rush has: contacts and friction may only lose it.
-// The largest gain over the 6 s must stay within 1 % of the potential they
-// start with (the integrator's own error), and the pile must settle (fastest
-// circle below 1 m/s at the end). The last circles arrive and roll into
-// place until about 5 s, faster than 1 m/s now and then (up to 5 m/s): the
-// figure at 4 s says which of them happened to be rolling then, not whether
-// the pile settles.
+// The largest gain over 7 s must stay within 1 % of the potential they
+// start with (the integrator's own error), and the pile must settle: the
+// last circles arrive and roll into place until about 6.5 s, faster than
+// 1 m/s now and then (up to 5 m/s), so the fastest circle is held under
+// 0.1 m/s at 7 s.
 TEST(Solver2D, Rush_GainsNoEnergy) {
   World world(solver2DSettings(Vec2(0, 0)));
   world.setSettings([&] {
@@ -123,7 +122,7 @@ TEST(Solver2D, Rush_GainsNoEnergy) {
   };
   const double start = energy();
   double worstGain = 0;
-  for (int step = 0; step < stepsFor(6); ++step) {
+  for (int step = 0; step < stepsFor(7); ++step) {
     for (BodyId id : circles) {
       const Vec2 p = stateOf(world, id).position;
       const Real length = p.norm();
@@ -135,10 +134,10 @@ TEST(Solver2D, Rush_GainsNoEnergy) {
   }
   Real fastest = 0;
   for (BodyId id : circles) fastest = std::max(fastest, speedOf(world, id));
-  std::printf("measured: rush worst gain %.4g J of %.4g J (%.3g %%), fastest at 6 s %.3g m/s\n",
+  std::printf("measured: rush worst gain %.4g J of %.4g J (%.3g %%), fastest at 7 s %.3g m/s\n",
               worstGain, start, 100 * worstGain / start, double(fastest));
   EXPECT_LT(worstGain, 0.01 * start);
-  EXPECT_LT(fastest, Real(1));
+  EXPECT_LT(fastest, Real(0.1));
 }
 
 }  // namespace

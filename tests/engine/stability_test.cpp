@@ -337,7 +337,10 @@ TEST(Crowd, ThousandRandomBodiesStayFiniteAndInsideClosedBox_ForSixtySeconds) {
 
 // Box2D v3's "confined" benchmark: 625 unit circles at 0.72 m pitch (28 %
 // overlap) in a closed 20 m box without gravity. They cannot all fit, so
-// the overlap stays; what matters is that pushing it does not throw them.
+// the overlap stays; what matters is that pushing it does not throw them
+// (no circle faster than 0.5 m/s; measured 0.14) and that no two circles
+// end squeezed most of the way through each other (the deepest pair is
+// 0.68 m in; Box2D 2.4.1 and Chipmunk end at 0.39-0.67 in the bench).
 TEST(Crowd, ConfinedOverlappingCircles_AreNotThrownApart) {
   WorldSettings settings;
   settings.gravity = Vec2::Zero();
@@ -356,9 +359,17 @@ TEST(Crowd, ConfinedOverlappingCircles_AreNotThrownApart) {
     for (BodyId id : circles) fastest = std::max(fastest, double(stateOf(world, id).linearVelocity.norm()));
     return false;
   });
-  // Was 22 m/s (Box2D v3: 15.5 m/s); measured 0.90 m/s now. The issue asks
-  // for 0.5 m/s: not met yet, so the bound here guards the gain.
-  EXPECT_LT(fastest, 1.5);
+  double deepest = 0;
+  for (std::size_t i = 0; i < circles.size(); ++i) {
+    const Vec2 p = stateOf(world, circles[i]).position;
+    for (std::size_t j = i + 1; j < circles.size(); ++j) {
+      deepest = std::max(deepest, 1 - double((stateOf(world, circles[j]).position - p).norm()));
+    }
+  }
+  std::printf("measured: confined crowd fastest body %.3g m/s, deepest pair at the end %.3g m\n", fastest,
+              deepest);
+  EXPECT_LT(fastest, 0.5);
+  EXPECT_LT(deepest, 0.75);
 }
 
 // A squeezed crowd (the bench's squeeze-900): a 30x30 square lattice of
