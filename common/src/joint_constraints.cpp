@@ -100,9 +100,9 @@ bool isAwayFromTarget(const JointRow& row) {
 
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
-  rows_.clear();
   colorStarts_ = {};
   if (world.liveJoints == 0) {
+    rows_.clear();
     tree_.clear();
     return false;
   }
@@ -115,8 +115,13 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
     colorOf_.push_back(coloring.take(gathered_.back().stateA, gathered_.back().stateB));
   }
   // Solved in colour order, so a colour's joints could run side by side.
+  // Each gathered row is written to its place there, read in order: rows
+  // read in colour order instead jump across the list, a miss a row.
   colorStarts_ = sortByColor(colorOf_, order_);
-  for (std::int32_t position : order_) rows_.push_back(gathered_[position]);
+  rankOf_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) rankOf_[std::size_t(order_[k])] = std::int32_t(k);
+  rows_.resize(gathered_.size());
+  for (std::size_t i = 0; i < gathered_.size(); ++i) rows_[std::size_t(rankOf_[i])] = gathered_[i];
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
   markTouchingStates(world, touching_);

@@ -33,6 +33,8 @@ class JointConstraints final : public ConstraintKind {
   std::vector<JointRow> gathered_;
   std::vector<std::int32_t> colorOf_;
   std::vector<std::int32_t> order_;
+  /// Per gathered row, its place in colour order.
+  std::vector<std::int32_t> rankOf_;
   /// Per solver state: its body touches something this step.
   std::vector<std::uint8_t> touching_;
   /// Colour c's rows are [colorStarts_[c], colorStarts_[c + 1]), overflow last.
