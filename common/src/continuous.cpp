@@ -86,8 +86,8 @@ Real timeOfImpactWithCore(ShapeRef moving, const Sweep& sweep, Real extent, Real
 // the target separation of a static shape.
 Real firstStaticHit(const WorldData& world, const Body& body, const Sweep& sweep, std::int32_t shape) {
   const ShapeSlot& moving = world.shapes[shape];
-  AABB start = computeAABB(moving.shape, {sweep.c0, body.rotation0});
-  AABB swept = start.unite(computeAABB(moving.shape, body.transform));
+  AABB start = computeAABB(moving.ref(), {sweep.c0, body.rotation0});
+  AABB swept = start.unite(computeAABB(moving.ref(), body.transform));
   Real firstHit = 1;
   world.broadPhase.queryStatic(swept, [&](std::int32_t other) {
     const ShapeSlot& candidate = world.shapes[other];
@@ -142,7 +142,7 @@ bool keepCentreInFrontOfChains(const WorldData& world, Body& body) {
       const ShapeSlot& candidate = world.shapes[other];
       const Body& owner = world.bodies[candidate.body];
       if (candidate.type() == ShapeType::ChainSegment) {
-        movedThisPass = keepCentreInFront(owner.transform, candidate.shape.chainSegment(), start, end) || movedThisPass;
+        movedThisPass = keepCentreInFront(owner.transform, *static_cast<const ChainSegment*>(candidate.ref().geometry), start, end) || movedThisPass;
       }
       return true;
     });
