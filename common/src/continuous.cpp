@@ -1,4 +1,5 @@
-// Continuous collision for fast bodies against static geometry.
+// Continuous collision for fast bodies against static geometry, and for
+// bodies pressed into static chains.
 //
 // Speculative contacts stop bodies that the broad phase pairs in time, but a
 // small body moving several of its own sizes per step can skip a thin wall
@@ -165,6 +166,35 @@ bool sweepAgainstStatics(WorldData& world, std::int32_t slot) {
   return firstHit < 1 || heldInFront;
 }
 
+// A body slow for its size can still be pushed across a chain segment it is
+// pressed into: a crowd, or a pusher that does not give way, presses it
+// deeper than the segment's soft contact gives back within one solve (the
+// spinner's overlapping crowd at one sub-step), and its centre ends behind
+// the segment's line, where the one-sided segment lets it go for good. Such
+// a body touches the segment, so the dynamic bodies touching a static chain
+// segment have their centre's path held in front as the fast ones do. They
+// are appended to `bodies` once each, in slot order; fast ones are there
+// already.
+void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bodies) {
+  const std::size_t first = bodies.size();
+  const auto onChain = [&](std::int32_t shape, std::int32_t chainShape) {
+    const std::int32_t slot = world.shapes[shape].body;
+    const Body& body = world.bodies[slot];
+    const bool pressed = world.shapes[chainShape].type() == ShapeType::ChainSegment && body.isDynamic() &&
+                         !isFast(body) && world.bodies[world.shapes[chainShape].body].isStatic;
+    // The list is sorted by body: a body's contacts come together.
+    if (pressed && (bodies.size() == first || bodies.back() != slot)) bodies.push_back(slot);
+  };
+  for (std::int32_t index : world.touchingContacts) {
+    const Contact& contact = world.contacts[index];
+    onChain(contact.shapeA, contact.shapeB);
+    onChain(contact.shapeB, contact.shapeA);
+  }
+  // Each once, whatever the order: the bodies are moved side by side.
+  std::sort(bodies.begin() + std::ptrdiff_t(first), bodies.end());
+  bodies.erase(std::unique(bodies.begin() + std::ptrdiff_t(first), bodies.end()), bodies.end());
+}
+
 // Fast bodies per range of the side-by-side sweep: a sweep costs several
 // microseconds.
 constexpr std::int32_t kFastBodiesPerRange = 8;
@@ -181,13 +211,19 @@ void solveContinuous(WorldData& world, Real /*dt*/) {
     const Body& body = world.bodies[slot];
     if (body.isDynamic() && isFast(body)) fast.push_back(slot);
   }
+  const std::size_t fastCount = fast.size();
+  if (world.shapeGeometries.liveCount<ChainSegment>() > 0) addSlowBodiesOnChains(world, fast);
   std::vector<std::uint8_t>& moved = world.fastBodyMoved;
   moved.reserve(world.awakeBodies.size());
   moved.resize(fast.size());
   world.tasks.forRanges(static_cast<std::int32_t>(fast.size()), kFastBodiesPerRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           for (std::int32_t i = begin; i < end; ++i) {
-                            moved[std::size_t(i)] = sweepAgainstStatics(world, fast[std::size_t(i)]) ? 1 : 0;
+                            const std::size_t at = std::size_t(i);
+                            const bool held = at < fastCount
+                                                  ? sweepAgainstStatics(world, fast[at])
+                                                  : keepCentreInFrontOfChains(world, world.bodies[fast[at]]);
+                            moved[at] = held ? 1 : 0;
                           }
                         });
   // The tree is shared: the moved bodies' proxies follow one by one.

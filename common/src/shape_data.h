@@ -61,6 +61,7 @@ class GeometryPool {
     return index;
   }
   void remove(std::int32_t index) { free_.release(index); }
+  std::int32_t liveCount() const { return count_ - std::int32_t(free_.slots().size()); }
   Geometry& at(std::int32_t index) { return chunks_[std::size_t(index / kPerChunk)][index % kPerChunk]; }
 
  private:
@@ -97,6 +98,12 @@ class ShapeGeometries {
     });
     slot.geometry = {};
     slot.geometryIndex = kNullIndex;
+  }
+
+  /// How many live shapes are of the type.
+  template <class Geometry>
+  std::int32_t liveCount() const {
+    return std::get<GeometryPool<Geometry>>(pools_).liveCount();
   }
 
  private:

@@ -127,7 +127,8 @@ struct WorldData {
   /// found (parallel first, then applied in that order).
   std::vector<std::int32_t> collideList;
   std::vector<std::uint8_t> collideOutcomes;
-  /// The bodies continuous collision sweeps, and whether each was stopped.
+  /// The bodies continuous collision looks at (the fast ones, then the slow
+  /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;
   std::vector<std::uint8_t> fastBodyMoved;
   /// Per awake body: slow long enough that its island may sleep.
