@@ -42,7 +42,8 @@ MassProperties unionMass(WorldData& world, std::int32_t body) {
   parts.clear();
   world.forEachShape(body, [&](std::int32_t s) {
     const ShapeSlot& slot = world.shapes[s];
-    if (isSolid(slot.type())) parts.push_back(computeMassProperties(slot.ref(), slot.coefficients.density));
+    if (isSolid(slot.type()))
+      parts.push_back(computeMassProperties(slot.ref(), slot.coefficients.density));
   });
   if (parts.empty()) return {};
   return combineMassProperties(parts);

@@ -143,7 +143,9 @@ bool keepCentreInFrontOfChains(const WorldData& world, Body& body) {
       const ShapeSlot& candidate = world.shapes[other];
       const Body& owner = world.bodies[candidate.body];
       if (candidate.type() == ShapeType::ChainSegment) {
-        movedThisPass = keepCentreInFront(owner.transform, *static_cast<const ChainSegment*>(candidate.ref().geometry), start, end) || movedThisPass;
+        movedThisPass = keepCentreInFront(owner.transform,
+                                          geometryAs<ChainSegment>(candidate.ref()), start, end) ||
+                        movedThisPass;
       }
       return true;
     });
@@ -180,8 +182,9 @@ void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bo
   const auto onChain = [&](std::int32_t shape, std::int32_t chainShape) {
     const std::int32_t slot = world.shapes[shape].body;
     const Body& body = world.bodies[slot];
-    const bool pressed = world.shapes[chainShape].type() == ShapeType::ChainSegment && body.isDynamic() &&
-                         !isFast(body) && world.bodies[world.shapes[chainShape].body].isStatic;
+    const bool pressed = world.shapes[chainShape].type() == ShapeType::ChainSegment &&
+                         body.isDynamic() && !isFast(body) &&
+                         world.bodies[world.shapes[chainShape].body].isStatic;
     // The list is sorted by body: a body's contacts come together.
     if (pressed && (bodies.size() == first || bodies.back() != slot)) bodies.push_back(slot);
   };
@@ -203,32 +206,34 @@ constexpr std::int32_t kFastBodiesPerRange = 8;
 
 void solveContinuous(WorldData& world, Real /*dt*/) {
   if (!world.settings.enableContinuous) return;
-  std::vector<std::int32_t>& fast = world.fastBodies;
-  fast.clear();
-  fast.reserve(world.awakeBodies.size());  // the first fast body allocates nothing mid-game
+  // The fast bodies, to sweep, then the slow ones on chains, to hold.
+  std::vector<std::int32_t>& bodies = world.fastBodies;
+  bodies.clear();
+  bodies.reserve(world.awakeBodies.size());  // the first fast body allocates nothing mid-game
   for (std::int32_t slot : world.awakeBodies) {
     // Kinematic bodies go where their velocity takes them, walls or not.
     const Body& body = world.bodies[slot];
-    if (body.isDynamic() && isFast(body)) fast.push_back(slot);
+    if (body.isDynamic() && isFast(body)) bodies.push_back(slot);
   }
-  const std::size_t fastCount = fast.size();
-  if (world.shapeGeometries.liveCount<ChainSegment>() > 0) addSlowBodiesOnChains(world, fast);
+  const std::size_t fastCount = bodies.size();
+  if (world.shapeGeometries.liveCount<ChainSegment>() > 0) addSlowBodiesOnChains(world, bodies);
   std::vector<std::uint8_t>& moved = world.fastBodyMoved;
   moved.reserve(world.awakeBodies.size());
-  moved.resize(fast.size());
-  world.tasks.forRanges(static_cast<std::int32_t>(fast.size()), kFastBodiesPerRange,
+  moved.resize(bodies.size());
+  world.tasks.forRanges(static_cast<std::int32_t>(bodies.size()), kFastBodiesPerRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           for (std::int32_t i = begin; i < end; ++i) {
                             const std::size_t at = std::size_t(i);
+                            const std::int32_t slot = bodies[at];
                             const bool held = at < fastCount
-                                                  ? sweepAgainstStatics(world, fast[at])
-                                                  : keepCentreInFrontOfChains(world, world.bodies[fast[at]]);
+                                                  ? sweepAgainstStatics(world, slot)
+                                                  : keepCentreInFrontOfChains(world, world.bodies[slot]);
                             moved[at] = held ? 1 : 0;
                           }
                         });
   // The tree is shared: the moved bodies' proxies follow one by one.
-  for (std::size_t i = 0; i < fast.size(); ++i) {
-    if (moved[i] != 0) moveBodyProxies(world, fast[i]);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (moved[i] != 0) moveBodyProxies(world, bodies[i]);
   }
 }
 

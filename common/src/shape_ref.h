@@ -23,17 +23,23 @@ ShapeRef refOf(const Shape& shape);
 /// A definition holding a copy of the geometry.
 Shape shapeOf(ShapeRef shape);
 
+/// The geometry as `Geometry`, which must be the struct its type names.
+template <class Geometry>
+const Geometry& geometryAs(ShapeRef shape) {
+  return *static_cast<const Geometry*>(shape.geometry);
+}
+
 /// Calls visit with the geometry as the struct its type names.
 template <class Visit>
 decltype(auto) visitGeometry(ShapeRef shape, Visit&& visit) {
   switch (shape.type) {
-    case ShapeType::Circle: return visit(*static_cast<const Circle*>(shape.geometry));
-    case ShapeType::Capsule: return visit(*static_cast<const Capsule*>(shape.geometry));
-    case ShapeType::Segment: return visit(*static_cast<const Segment*>(shape.geometry));
-    case ShapeType::Polygon: return visit(*static_cast<const Polygon*>(shape.geometry));
+    case ShapeType::Circle: return visit(geometryAs<Circle>(shape));
+    case ShapeType::Capsule: return visit(geometryAs<Capsule>(shape));
+    case ShapeType::Segment: return visit(geometryAs<Segment>(shape));
+    case ShapeType::Polygon: return visit(geometryAs<Polygon>(shape));
     case ShapeType::ChainSegment: break;
   }
-  return visit(*static_cast<const ChainSegment*>(shape.geometry));
+  return visit(geometryAs<ChainSegment>(shape));
 }
 
 // The functions of impulse/shape.h of the same names, on a ShapeRef.
