@@ -27,7 +27,8 @@ BroadPhase::ProxyKind proxyKindOf(const Body& body) {
 // Moves every shape of the body by `offset` in its frame.
 void translateShapes(WorldData& world, std::int32_t body, const Vec2& offset) {
   world.forEachShape(body, [&](std::int32_t s) {
-    world.shapes[s].shape = translated(world.shapes[s].shape, offset);
+    ShapeSlot& slot = world.shapes[s];
+    world.shapeGeometries.store(slot, translated(shapeOf(slot.ref()), offset));
   });
 }
 
@@ -41,7 +42,8 @@ MassProperties unionMass(WorldData& world, std::int32_t body) {
   parts.clear();
   world.forEachShape(body, [&](std::int32_t s) {
     const ShapeSlot& slot = world.shapes[s];
-    if (isSolid(slot.type())) parts.push_back(computeMassProperties(slot.shape, slot.coefficients.density));
+    if (isSolid(slot.type()))
+      parts.push_back(computeMassProperties(slot.ref(), slot.coefficients.density));
   });
   if (parts.empty()) return {};
   return combineMassProperties(parts);
@@ -81,7 +83,7 @@ std::int32_t attachShape(WorldData& world, std::int32_t body, const ShapeDef& de
   slot = ShapeSlot{};
   slot.generation = generation;
   slot.alive = true;
-  slot.shape = def.shape;
+  world.shapeGeometries.store(slot, def.shape);
   slot.material = def.material;
   slot.coefficients = resolveCoefficients(def.material, def.materialOverride);
   slot.rollingRadius = rollingRadiusOf(def.shape);
@@ -122,6 +124,7 @@ void detachShape(WorldData& world, std::int32_t s) {
   --body.shapeCount;
   if (slot.proxyKey != kNullIndex) world.broadPhase.destroyProxy(slot.proxyKey);
   if (slot.interaction.isSensor) removeSensor(world, s);
+  world.shapeGeometries.release(slot);
   slot.alive = false;
   ++slot.generation;
   world.freeShapes.release(s);
@@ -193,9 +196,9 @@ Vec2 setMassFromShapes(WorldData& world, std::int32_t b) {
   body.innerRadius = 0;
   bool anySolid = false;
   world.forEachShape(b, [&](std::int32_t s) {
-    const Shape& shape = world.shapes[s].shape;
+    const ShapeRef shape = world.shapes[s].ref();
     body.extent = std::max(body.extent, computeExtent(shape));
-    if (!isSolid(shape.type())) return;
+    if (!isSolid(shape.type)) return;
     const Real inner = computeInnerRadius(shape);
     body.innerRadius = anySolid ? std::min(body.innerRadius, inner) : inner;
     anySolid = true;

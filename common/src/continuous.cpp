@@ -1,4 +1,5 @@
-// Continuous collision for fast bodies against static geometry.
+// Continuous collision for fast bodies against static geometry, and for
+// bodies pressed into static chains.
 //
 // Speculative contacts stop bodies that the broad phase pairs in time, but a
 // small body moving several of its own sizes per step can skip a thin wall
@@ -86,8 +87,8 @@ Real timeOfImpactWithCore(ShapeRef moving, const Sweep& sweep, Real extent, Real
 // the target separation of a static shape.
 Real firstStaticHit(const WorldData& world, const Body& body, const Sweep& sweep, std::int32_t shape) {
   const ShapeSlot& moving = world.shapes[shape];
-  AABB start = computeAABB(moving.shape, {sweep.c0, body.rotation0});
-  AABB swept = start.unite(computeAABB(moving.shape, body.transform));
+  AABB start = computeAABB(moving.ref(), {sweep.c0, body.rotation0});
+  AABB swept = start.unite(computeAABB(moving.ref(), body.transform));
   Real firstHit = 1;
   world.broadPhase.queryStatic(swept, [&](std::int32_t other) {
     const ShapeSlot& candidate = world.shapes[other];
@@ -142,7 +143,9 @@ bool keepCentreInFrontOfChains(const WorldData& world, Body& body) {
       const ShapeSlot& candidate = world.shapes[other];
       const Body& owner = world.bodies[candidate.body];
       if (candidate.type() == ShapeType::ChainSegment) {
-        movedThisPass = keepCentreInFront(owner.transform, candidate.shape.chainSegment(), start, end) || movedThisPass;
+        movedThisPass = keepCentreInFront(owner.transform,
+                                          geometryAs<ChainSegment>(candidate.ref()), start, end) ||
+                        movedThisPass;
       }
       return true;
     });
@@ -165,6 +168,36 @@ bool sweepAgainstStatics(WorldData& world, std::int32_t slot) {
   return firstHit < 1 || heldInFront;
 }
 
+// A body slow for its size can still be pushed across a chain segment it is
+// pressed into: a crowd, or a pusher that does not give way, presses it
+// deeper than the segment's soft contact gives back within one solve (the
+// spinner's overlapping crowd at one sub-step), and its centre ends behind
+// the segment's line, where the one-sided segment lets it go for good. Such
+// a body touches the segment, so the dynamic bodies touching a static chain
+// segment have their centre's path held in front as the fast ones do. They
+// are appended to `bodies` once each, in slot order; fast ones are there
+// already.
+void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bodies) {
+  const std::size_t first = bodies.size();
+  const auto onChain = [&](std::int32_t shape, std::int32_t chainShape) {
+    const std::int32_t slot = world.shapes[shape].body;
+    const Body& body = world.bodies[slot];
+    const bool pressed = world.shapes[chainShape].type() == ShapeType::ChainSegment &&
+                         body.isDynamic() && !isFast(body) &&
+                         world.bodies[world.shapes[chainShape].body].isStatic;
+    // The list is sorted by body: a body's contacts come together.
+    if (pressed && (bodies.size() == first || bodies.back() != slot)) bodies.push_back(slot);
+  };
+  for (std::int32_t index : world.touchingContacts) {
+    const Contact& contact = world.contacts[index];
+    onChain(contact.shapeA, contact.shapeB);
+    onChain(contact.shapeB, contact.shapeA);
+  }
+  // Each once, whatever the order: the bodies are moved side by side.
+  std::sort(bodies.begin() + std::ptrdiff_t(first), bodies.end());
+  bodies.erase(std::unique(bodies.begin() + std::ptrdiff_t(first), bodies.end()), bodies.end());
+}
+
 // Fast bodies per range of the side-by-side sweep: a sweep costs several
 // microseconds.
 constexpr std::int32_t kFastBodiesPerRange = 8;
@@ -173,26 +206,34 @@ constexpr std::int32_t kFastBodiesPerRange = 8;
 
 void solveContinuous(WorldData& world, Real /*dt*/) {
   if (!world.settings.enableContinuous) return;
-  std::vector<std::int32_t>& fast = world.fastBodies;
-  fast.clear();
-  fast.reserve(world.awakeBodies.size());  // the first fast body allocates nothing mid-game
+  // The fast bodies, to sweep, then the slow ones on chains, to hold.
+  std::vector<std::int32_t>& bodies = world.fastBodies;
+  bodies.clear();
+  bodies.reserve(world.awakeBodies.size());  // the first fast body allocates nothing mid-game
   for (std::int32_t slot : world.awakeBodies) {
     // Kinematic bodies go where their velocity takes them, walls or not.
     const Body& body = world.bodies[slot];
-    if (body.isDynamic() && isFast(body)) fast.push_back(slot);
+    if (body.isDynamic() && isFast(body)) bodies.push_back(slot);
   }
+  const std::size_t fastCount = bodies.size();
+  if (world.shapeGeometries.liveCount<ChainSegment>() > 0) addSlowBodiesOnChains(world, bodies);
   std::vector<std::uint8_t>& moved = world.fastBodyMoved;
   moved.reserve(world.awakeBodies.size());
-  moved.resize(fast.size());
-  world.tasks.forRanges(static_cast<std::int32_t>(fast.size()), kFastBodiesPerRange,
+  moved.resize(bodies.size());
+  world.tasks.forRanges(static_cast<std::int32_t>(bodies.size()), kFastBodiesPerRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           for (std::int32_t i = begin; i < end; ++i) {
-                            moved[std::size_t(i)] = sweepAgainstStatics(world, fast[std::size_t(i)]) ? 1 : 0;
+                            const std::size_t at = std::size_t(i);
+                            const std::int32_t slot = bodies[at];
+                            const bool held = at < fastCount
+                                                  ? sweepAgainstStatics(world, slot)
+                                                  : keepCentreInFrontOfChains(world, world.bodies[slot]);
+                            moved[at] = held ? 1 : 0;
                           }
                         });
   // The tree is shared: the moved bodies' proxies follow one by one.
-  for (std::size_t i = 0; i < fast.size(); ++i) {
-    if (moved[i] != 0) moveBodyProxies(world, fast[i]);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (moved[i] != 0) moveBodyProxies(world, bodies[i]);
   }
 }
 

@@ -41,21 +41,21 @@ Motion motionInSubStep(const WorldData& world, const Body& body) {
           state.angularVelocity};
 }
 
-// `shapes` was reserved for every live shape, so the spans handed out stay
-// valid while it fills.
 FieldBody fieldBodyOf(const WorldData& world, std::int32_t slot, const Motion& motion, Real mass,
-                      std::vector<const Shape*>& shapes) {
+                      FieldShapes& shapes) {
   const Body& body = world.bodies[slot];
-  const std::size_t first = shapes.size();
-  world.forEachShape(slot, [&](std::int32_t s) { shapes.push_back(&world.shapes[s].shape); });
+  const std::size_t first = shapes.addresses.size();
+  world.forEachShape(slot, [&](std::int32_t s) {
+    shapes.copies.push_back(shapeOf(world.shapes[s].ref()));
+    shapes.addresses.push_back(&shapes.copies.back());
+  });
   return {world.idOf(slot), motion.transform, motion.linearVelocity, motion.angularVelocity, mass,
-          body.mass.inertia, std::span(shapes).subspan(first), body.mass.area, body.extent};
+          body.mass.inertia, std::span(shapes.addresses).subspan(first), body.mass.area, body.extent};
 }
 
 void gatherMovingBodies(WorldData& world) {
   world.fieldBodies.clear();
-  world.fieldBodyShapes.clear();
-  world.fieldBodyShapes.reserve(std::size_t(world.liveShapes));
+  world.fieldBodyShapes.reset(world.liveShapes);
   for (std::int32_t slot : world.awakeBodies) {
     const Body& body = world.bodies[slot];
     world.fieldBodies.push_back(fieldBodyOf(world, slot, motionAtStepStart(body), body.mass.mass, world.fieldBodyShapes));
@@ -68,7 +68,7 @@ Real staticMass(const WorldData& world, std::int32_t slot) {
   Real mass = 0;
   world.forEachShape(slot, [&](std::int32_t s) {
     const ShapeSlot& shape = world.shapes[s];
-    mass += computeMassProperties(shape.shape, shape.coefficients.density).mass;
+    mass += computeMassProperties(shape.ref(), shape.coefficients.density).mass;
   });
   return mass;
 }
@@ -76,8 +76,7 @@ Real staticMass(const WorldData& world, std::int32_t slot) {
 // Static bodies weigh their area times density here: they pull without moving.
 void gatherStillBodies(WorldData& world) {
   world.fieldStillBodies.clear();
-  world.fieldStillShapes.clear();
-  world.fieldStillShapes.reserve(std::size_t(world.liveShapes));
+  world.fieldStillShapes.reset(world.liveShapes);
   for (std::int32_t slot = 0; slot < static_cast<std::int32_t>(world.bodies.size()); ++slot) {
     const Body& body = world.bodies[slot];
     if (!body.alive || (body.awake && !body.isStatic)) continue;
@@ -117,8 +116,7 @@ void addSubStepLoad(const Body& body, const FieldLoad& load, Real h, SolverState
 // the still ones: the sources a field such as gravitation pulls from.
 void gatherSubStepSources(WorldData& world) {
   world.fieldSources.clear();
-  world.fieldSourceShapes.clear();
-  world.fieldSourceShapes.reserve(std::size_t(world.liveShapes));
+  world.fieldSourceShapes.reset(world.liveShapes);
   for (std::int32_t slot : world.awakeBodies) {
     const Body& body = world.bodies[slot];
     if (body.fieldsPerSubStep) continue;
@@ -149,8 +147,7 @@ void addForceChanges(WorldData& world, int subStep, Real h) {
 
 void loadSubSteppedBodies(WorldData& world, Real h) {
   world.fieldBodies.clear();
-  world.fieldBodyShapes.clear();
-  world.fieldBodyShapes.reserve(std::size_t(world.liveShapes));
+  world.fieldBodyShapes.reset(world.liveShapes);
   for (std::int32_t slot : world.subSteppedFieldBodies) {
     const Body& body = world.bodies[slot];
     world.fieldBodies.push_back(

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <span>
-#include <variant>
 
 #include "manifold_internal.h"
 
@@ -161,11 +160,11 @@ std::optional<LocalHit> rayCastLocal(const LocalRay& ray, const ChainSegment& ch
 
 }  // namespace
 
-std::optional<ShapeRayHit> rayCastShape(const Shape& shape, const Transform& transform,
+std::optional<ShapeRayHit> rayCastShape(ShapeRef shape, const Transform& transform,
                                         const Vec2& origin, const Vec2& translation) {
   const LocalRay ray{transform.applyInverse(origin), transform.q.applyInverse(translation)};
   const std::optional<LocalHit> hit =
-      std::visit([&](const auto& geometry) { return rayCastLocal(ray, geometry); }, shape.geometry);
+      visitGeometry(shape, [&](const auto& geometry) { return rayCastLocal(ray, geometry); });
   if (!hit) return std::nullopt;
   return ShapeRayHit{hit->fraction, transform.q.apply(hit->normal)};
 }

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "impulse/shape.h"
+#include "shape_ref.h"
 
 namespace impulse {
 
@@ -19,7 +20,7 @@ struct ShapeRayHit {
 /// when it starts inside a solid shape, or when it meets a chain segment
 /// from behind (chains are hit from their collision side only). The
 /// translation must not be zero.
-std::optional<ShapeRayHit> rayCastShape(const Shape& shape, const Transform& transform,
+std::optional<ShapeRayHit> rayCastShape(ShapeRef shape, const Transform& transform,
                                         const Vec2& origin, const Vec2& translation);
 
 }  // namespace impulse

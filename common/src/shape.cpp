@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "shape_ref.h"
+
 namespace impulse {
 namespace {
 
@@ -562,14 +564,26 @@ ShapeError validateShape(const Shape& shape, const ShapeLimits& limits) {
       shape.geometry);
 }
 
+ShapeRef refOf(const Shape& shape) {
+  return std::visit([&](const auto& geometry) { return ShapeRef{shape.type(), &geometry}; },
+                    shape.geometry);
+}
+
+Shape shapeOf(ShapeRef shape) {
+  return visitGeometry(shape, [](const auto& geometry) { return Shape{geometry}; });
+}
+
 MassProperties computeMassProperties(const Shape& shape, Real density) {
-  return std::visit(Overloaded{
+  return computeMassProperties(refOf(shape), density);
+}
+
+MassProperties computeMassProperties(ShapeRef shape, Real density) {
+  return visitGeometry(shape, Overloaded{
                         [&](const Circle& circle) { return circleMass(circle, density); },
                         [&](const Capsule& capsule) { return capsuleMass(capsule, density); },
                         [&](const Polygon& polygon) { return polygonMass(polygon, density); },
                         [](const auto&) { return MassProperties{}; },
-                    },
-                    shape.geometry);
+                    });
 }
 
 // Sums in double: a single part comes back exactly as it went in, since
@@ -625,7 +639,12 @@ Shape translated(const Shape& shape, const Vec2& offset) {
 }
 
 AABB computeAABB(const Shape& shape, const Transform& transform) {
-  return std::visit(
+  return computeAABB(refOf(shape), transform);
+}
+
+AABB computeAABB(ShapeRef shape, const Transform& transform) {
+  return visitGeometry(
+      shape,
       Overloaded{
           [&](const Circle& circle) {
             // A centred circle (the common case) skips the rotation.
@@ -646,12 +665,13 @@ AABB computeAABB(const Shape& shape, const Transform& transform) {
             const std::array<Vec2, 2> points = {lineOf(line).point1, lineOf(line).point2};
             return boxAround(points, transform, 0);
           },
-      },
-      shape.geometry);
+      });
 }
 
-Real computeExtent(const Shape& shape) {
-  return std::visit(Overloaded{
+Real computeExtent(const Shape& shape) { return computeExtent(refOf(shape)); }
+
+Real computeExtent(ShapeRef shape) {
+  return visitGeometry(shape, Overloaded{
                         [](const Circle& circle) { return circle.center.norm() + circle.radius; },
                         [](const Capsule& capsule) {
                           return std::max(capsule.center1.norm(), capsule.center2.norm()) +
@@ -667,12 +687,14 @@ Real computeExtent(const Shape& shape) {
                         [](const auto& line) {
                           return std::max(lineOf(line).point1.norm(), lineOf(line).point2.norm());
                         },
-                    },
-                    shape.geometry);
+                    });
 }
 
-Real computeInnerRadius(const Shape& shape) {
-  return std::visit(
+Real computeInnerRadius(const Shape& shape) { return computeInnerRadius(refOf(shape)); }
+
+Real computeInnerRadius(ShapeRef shape) {
+  return visitGeometry(
+      shape,
       Overloaded{
           [](const Circle& circle) { return circle.radius; },
           [](const Capsule& capsule) { return capsule.radius; },
@@ -687,13 +709,17 @@ Real computeInnerRadius(const Shape& shape) {
             return inner + polygon.radius;
           },
           [](const auto&) { return Real(0); },
-      },
-      shape.geometry);
+      });
 }
 
 bool containsPoint(const Shape& shape, const Transform& transform, const Vec2& point) {
+  return containsPoint(refOf(shape), transform, point);
+}
+
+bool containsPoint(ShapeRef shape, const Transform& transform, const Vec2& point) {
   const Vec2 local = transform.applyInverse(point);
-  return std::visit(
+  return visitGeometry(
+      shape,
       Overloaded{
           [&](const Circle& circle) {
             return (local - circle.center).squaredNorm() <= circle.radius * circle.radius;
@@ -719,8 +745,7 @@ bool containsPoint(const Shape& shape, const Transform& transform, const Vec2& p
             return distance <= polygon.radius;
           },
           [](const auto&) { return false; },
-      },
-      shape.geometry);
+      });
 }
 
 PolygonBuild buildPolygon(std::span<const Vec2> points, const ShapeLimits& limits) {

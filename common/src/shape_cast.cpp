@@ -7,7 +7,6 @@
 
 #include "shape_cast.h"
 
-#include "impulse/manifold.h"
 #include "impulse/query.h"
 #include "shape_pair.h"
 
@@ -20,7 +19,7 @@ constexpr int kMaxAdvances = 100;
 // manifold (normal from the moving shape to the target, points midway
 // between the surfaces). A chain segment met from behind, or through a join
 // that belongs to its neighbour, has no manifold and so no touch.
-std::optional<ShapeCastTouch> touchAt(const Shape& moving, const Transform& pose, const Shape& target,
+std::optional<ShapeCastTouch> touchAt(ShapeRef moving, const Transform& pose, ShapeRef target,
                                       const Transform& targetTransform, Real fraction) {
   const Manifold manifold = collide(moving, pose, target, targetTransform);
   if (manifold.pointCount == 0) return std::nullopt;
@@ -34,16 +33,14 @@ std::optional<ShapeCastTouch> touchAt(const Shape& moving, const Transform& pose
 
 }  // namespace
 
-std::optional<ShapeCastTouch> castShapeAgainst(const Shape& moving, const Transform& start,
-                                               const Vec2& translation, const Shape& target,
+std::optional<ShapeCastTouch> castShapeAgainst(ShapeRef moving, const Transform& start,
+                                               const Vec2& translation, ShapeRef target,
                                                const Transform& targetTransform) {
   const Real length = translation.norm();
-  const ShapeRef movingRef = refOf(moving);
-  const ShapeRef targetRef = refOf(target);
   Real fraction = 0;
   for (int advance = 0; advance < kMaxAdvances; ++advance) {
     const Transform pose{start.p + fraction * translation, start.q};
-    const Real gap = computeSeparation(movingRef, pose, targetRef, targetTransform);
+    const Real gap = computeSeparation(moving, pose, target, targetTransform);
     if (gap < kShapeCastTolerance) return touchAt(moving, pose, target, targetTransform, fraction);
     fraction += gap / length;
     if (fraction > 1) return std::nullopt;

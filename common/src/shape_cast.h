@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "impulse/shape.h"
+#include "shape_ref.h"
 
 namespace impulse {
 
@@ -21,8 +22,8 @@ struct ShapeCastTouch {
 /// within kShapeCastTolerance; fraction 0 when they start overlapping.
 /// Nothing when it passes by, or meets a chain segment from behind. The
 /// translation must not be zero.
-std::optional<ShapeCastTouch> castShapeAgainst(const Shape& moving, const Transform& start,
-                                               const Vec2& translation, const Shape& target,
+std::optional<ShapeCastTouch> castShapeAgainst(ShapeRef moving, const Transform& start,
+                                               const Vec2& translation, ShapeRef target,
                                                const Transform& targetTransform);
 
 }  // namespace impulse

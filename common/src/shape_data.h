@@ -1,26 +1,39 @@
 #pragma once
 // A shape as the step sees it (the public face is ShapeDef, ShapeId and
 // World's shape functions). Shapes live in one slot array; each body threads
-// its shapes through `nextInBody`, in the order they were added.
+// its shapes through `nextInBody`, in the order they were added. A slot holds
+// no geometry: each type's geometry lives in a pool of its own, at the size
+// of its type (a circle takes 12 bytes, a polygon 268), and the slot points
+// at it, so the arrays the step strides over hold no polygon-sized slots.
 
+#include <algorithm>
 #include <cstdint>
+#include <memory>
+#include <tuple>
+#include <type_traits>
+#include <variant>
+#include <vector>
 
 #include "edge_list.h"
+#include "free_list.h"
 #include "impulse/body.h"
 #include "impulse/material.h"
 #include "impulse/shape.h"
-#include "shape_pair.h"
+#include "shape_ref.h"
 
 namespace impulse {
 
 struct ShapeSlot {
-  /// Geometry in the body's frame (origin at its centre of mass).
-  Shape shape;
+  /// The geometry, in the body's frame (origin at its centre of mass): its
+  /// type and its address in that type's pool (ShapeGeometries).
+  ShapeRef geometry;
   /// The material's coefficients with any override applied.
   MaterialProperties coefficients{};
+  ShapeInteraction interaction;
+  /// The geometry's place in its type's pool.
+  std::int32_t geometryIndex = kNullIndex;
   /// Rolling resistance acts on round shapes only: their radius, else 0.
   Real rollingRadius = 0;
-  ShapeInteraction interaction;
   std::int32_t body = kNullIndex;
   std::int32_t nextInBody = kNullIndex;
   std::int32_t proxyKey = kNullIndex;
@@ -28,8 +41,80 @@ struct ShapeSlot {
   Material material = Material::Solid;
   bool alive = false;
 
-  ShapeType type() const { return shape.type(); }
-  ShapeRef ref() const { return refOf(shape); }
+  ShapeType type() const { return geometry.type; }
+  ShapeRef ref() const { return geometry; }
+};
+
+/// One type's geometries in chunks that are never moved or freed while the
+/// world lives, so an address handed out stays valid however the pool grows.
+/// Freed places are handed out again, last freed first.
+template <class Geometry>
+class GeometryPool {
+ public:
+  std::int32_t add(const Geometry& geometry) {
+    const std::int32_t index = free_.acquire(std::size_t(count_));
+    if (index == count_) {
+      if (index % kPerChunk == 0) chunks_.push_back(std::make_unique<Geometry[]>(kPerChunk));
+      ++count_;
+    }
+    at(index) = geometry;
+    return index;
+  }
+  void remove(std::int32_t index) { free_.release(index); }
+  std::int32_t liveCount() const { return count_ - std::int32_t(free_.slots().size()); }
+  Geometry& at(std::int32_t index) { return chunks_[std::size_t(index / kPerChunk)][index % kPerChunk]; }
+
+ private:
+  // About 16 KiB a chunk: 1365 circles or 61 polygons side by side.
+  static constexpr std::int32_t kPerChunk = std::max<std::int32_t>(1, std::int32_t(16384 / sizeof(Geometry)));
+  std::vector<std::unique_ptr<Geometry[]>> chunks_;
+  std::int32_t count_ = 0;  ///< places handed out at least once
+  FreeList free_;
+};
+
+/// The world's shape geometry, one pool per type. Which place a geometry
+/// takes changes nothing the step computes (it reads through the address),
+/// so a loaded world need not put its shapes where the saved one had them.
+class ShapeGeometries {
+ public:
+  /// Stores a copy of the shape's geometry for the slot, giving back any
+  /// geometry the slot held.
+  void store(ShapeSlot& slot, const Shape& shape) {
+    release(slot);
+    std::visit(
+        [&](const auto& geometry) {
+          auto& pool = poolOf<std::decay_t<decltype(geometry)>>();
+          slot.geometryIndex = pool.add(geometry);
+          slot.geometry = {shape.type(), &pool.at(slot.geometryIndex)};
+        },
+        shape.geometry);
+  }
+
+  /// Gives the slot's geometry back to its pool (nothing when it has none).
+  void release(ShapeSlot& slot) {
+    if (slot.geometryIndex == kNullIndex) return;
+    visitGeometry(slot.geometry, [&](const auto& geometry) {
+      poolOf<std::decay_t<decltype(geometry)>>().remove(slot.geometryIndex);
+    });
+    slot.geometry = {};
+    slot.geometryIndex = kNullIndex;
+  }
+
+  /// How many live shapes are of the type.
+  template <class Geometry>
+  std::int32_t liveCount() const {
+    return std::get<GeometryPool<Geometry>>(pools_).liveCount();
+  }
+
+ private:
+  template <class Geometry>
+  GeometryPool<Geometry>& poolOf() {
+    return std::get<GeometryPool<Geometry>>(pools_);
+  }
+
+  std::tuple<GeometryPool<Circle>, GeometryPool<Capsule>, GeometryPool<Segment>, GeometryPool<Polygon>,
+             GeometryPool<ChainSegment>>
+      pools_;
 };
 
 }  // namespace impulse

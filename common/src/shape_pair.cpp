@@ -246,14 +246,6 @@ Real coreSeparation(const Polygon& a, const Polygon& b) {
 
 }  // namespace
 
-ShapeRef refOf(const Shape& shape) {
-  return std::visit(
-      [&](const auto& geometry) {
-        return ShapeRef{shape.type(), &geometry};
-      },
-      shape.geometry);
-}
-
 CollideFunction collideFunction(ShapeType a, ShapeType b) {
   auto indexA = static_cast<std::size_t>(a);
   auto indexB = static_cast<std::size_t>(b);
@@ -266,13 +258,18 @@ CollideFunction collideFunction(ShapeType a, ShapeType b) {
 
 bool shapesCanCollide(ShapeType a, ShapeType b) { return isSolid(a) || isSolid(b); }
 
+Manifold collide(ShapeRef a, const Transform& xfA, ShapeRef b, const Transform& xfB,
+                 Real speculativeDistance) {
+  if (CollideFunction function = collideFunction(a.type, b.type)) {
+    return function(a.geometry, xfA, b.geometry, xfB, speculativeDistance);
+  }
+  CollideFunction function = collideFunction(b.type, a.type);
+  return reversed(function(b.geometry, xfB, a.geometry, xfA, speculativeDistance));
+}
+
 Manifold collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
                  Real speculativeDistance) {
-  if (CollideFunction function = collideFunction(a.type(), b.type())) {
-    return function(refOf(a).geometry, xfA, refOf(b).geometry, xfB, speculativeDistance);
-  }
-  CollideFunction function = collideFunction(b.type(), a.type());
-  return reversed(function(refOf(b).geometry, xfB, refOf(a).geometry, xfA, speculativeDistance));
+  return collide(refOf(a), xfA, refOf(b), xfB, speculativeDistance);
 }
 
 // The distance is symmetric: a circle is measured in its partner's frame,

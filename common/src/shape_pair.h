@@ -1,22 +1,13 @@
 #pragma once
 // Narrow-phase dispatch over pairs of shape types, for the world's contacts.
-// Shapes are stored by type (each at its own size), so a contact holds a
-// pointer to each geometry and the function for their pair of types.
+// A world stores shapes by type (each at its own size): a contact keeps the
+// function for its pair of types and reads each geometry through a ShapeRef.
 
 #include "impulse/manifold.h"
 #include "impulse/shape.h"
+#include "shape_ref.h"
 
 namespace impulse {
-
-/// One shape's geometry: `geometry` points at the struct its type names
-/// (Circle, Capsule, Segment, Polygon or ChainSegment).
-struct ShapeRef {
-  ShapeType type = ShapeType::Circle;
-  const void* geometry = nullptr;
-};
-
-/// The alternative held by the shape, as a ShapeRef (valid while it lives).
-ShapeRef refOf(const Shape& shape);
 
 using CollideFunction = Manifold (*)(const void* a, const Transform& xfA, const void* b,
                                      const Transform& xfB, Real speculativeDistance);
@@ -26,6 +17,11 @@ using CollideFunction = Manifold (*)(const void* a, const Transform& xfA, const 
 /// to B). Every unordered pair of types has exactly one order in the table,
 /// which a static_assert checks when the table is built.
 CollideFunction collideFunction(ShapeType a, ShapeType b);
+
+/// The manifold of any two shapes, normal from a to b (impulse/manifold.h's
+/// collide, on ShapeRefs).
+Manifold collide(ShapeRef a, const Transform& xfA, ShapeRef b, const Transform& xfB,
+                 Real speculativeDistance = kSpeculativeDistance);
 
 /// False for pairs that never make contacts: two boundary shapes (segments
 /// and chain segments have no inside to push out of).

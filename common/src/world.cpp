@@ -141,7 +141,7 @@ const ShapeSlot* WorldData::find(ShapeId id) const { return findLive(shapes, id)
 
 AABB shapeAABB(const WorldData& world, std::int32_t shape) {
   const ShapeSlot& slot = world.shapes[shape];
-  return computeAABB(slot.shape, world.bodies[slot.body].transform);
+  return computeAABB(slot.ref(), world.bodies[slot.body].transform);
 }
 
 void moveBodyProxies(WorldData& world, std::int32_t body) {
@@ -376,7 +376,7 @@ std::optional<BodyDescription> World::bodyDescription(BodyId id) const {
   out.id = id;
   w.forEachShape(id.slot(), [&](std::int32_t s) {
     const ShapeSlot& shape = w.shapes[s];
-    out.shapes.push_back({w.shapeIdOf(s), shape.shape, shape.material, shape.coefficients, shape.interaction});
+    out.shapes.push_back({w.shapeIdOf(s), shapeOf(shape.ref()), shape.material, shape.coefficients, shape.interaction});
   });
   const ShapeDescription& first = out.shapes.front();
   out.shape = first.shape;

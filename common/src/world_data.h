@@ -43,6 +43,22 @@ struct Sensor {
   std::vector<SensorVisitor> visitors;
 };
 
+/// Copies of the shapes of the bodies a field sees, and their addresses,
+/// which FieldBody::shapes spans (the world stores geometry by type, not as
+/// Shapes). reset() reserves room for every live shape, so the addresses
+/// handed out stay valid while the copies fill.
+struct FieldShapes {
+  std::vector<Shape> copies;
+  std::vector<const Shape*> addresses;
+
+  void reset(int liveShapes) {
+    copies.clear();
+    addresses.clear();
+    copies.reserve(std::size_t(liveShapes));
+    addresses.reserve(std::size_t(liveShapes));
+  }
+};
+
 struct FieldSlot {
   FieldId id;
   std::shared_ptr<const ForceField> field;
@@ -58,6 +74,7 @@ struct WorldData {
   int liveBodies = 0;
   std::vector<ShapeSlot> shapes;
   FreeList freeShapes;
+  ShapeGeometries shapeGeometries;  ///< the geometry the live shapes point at
   int liveShapes = 0;
   std::uint64_t nextCreationOrder = 1;
 
@@ -110,7 +127,8 @@ struct WorldData {
   /// found (parallel first, then applied in that order).
   std::vector<std::int32_t> collideList;
   std::vector<std::uint8_t> collideOutcomes;
-  /// The bodies continuous collision sweeps, and whether each was stopped.
+  /// The bodies continuous collision looks at (the fast ones, then the slow
+  /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;
   std::vector<std::uint8_t> fastBodyMoved;
   /// Per awake body: slow long enough that its island may sleep.
@@ -127,14 +145,14 @@ struct WorldData {
   std::vector<std::int32_t> touchingStarts;
   std::vector<FieldBody> fieldBodies;
   std::vector<FieldBody> fieldStillBodies;
-  std::vector<const Shape*> fieldBodyShapes;
-  std::vector<const Shape*> fieldStillShapes;
+  FieldShapes fieldBodyShapes;
+  FieldShapes fieldStillShapes;
   std::vector<FieldLoad> fieldLoads;
   /// The awake bodies whose field loads come per sub-step this step, and
   /// the sources the fields see meanwhile (field.cpp).
   std::vector<std::int32_t> subSteppedFieldBodies;
   std::vector<FieldBody> fieldSources;
-  std::vector<const Shape*> fieldSourceShapes;
+  FieldShapes fieldSourceShapes;
   std::vector<SolverState> solverStates;
   std::vector<SolverIntegration> solverIntegration;
   std::vector<ParkedVelocity> parkedVelocities;

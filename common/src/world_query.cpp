@@ -105,7 +105,7 @@ std::optional<ShapeRayHit> rayCastSlot(const WorldData& world, std::int32_t shap
                                        const Vec2& translation) {
   const ShapeSlot& slot = world.shapes[shape];
   if (!isVisible(slot, filter)) return std::nullopt;
-  return rayCastShape(slot.shape, transformOf(world, shape), origin, translation);
+  return rayCastShape(slot.ref(), transformOf(world, shape), origin, translation);
 }
 
 // The shape slots found, in slot order, as ids: at most maxResults of them.
@@ -129,7 +129,7 @@ std::optional<BodyId> World::queryPoint(const Vec2& point, const QueryFilter& fi
   w.broadPhase.query(AABB{point, point}, [&](std::int32_t shape) {
     const ShapeSlot& slot = w.shapes[shape];
     const bool newer = !best || w.bodies[slot.body].creationOrder > w.bodies[*best].creationOrder;
-    if (newer && isVisible(slot, filter) && containsPoint(slot.shape, transformOf(w, shape), point)) {
+    if (newer && isVisible(slot, filter) && containsPoint(slot.ref(), transformOf(w, shape), point)) {
       best = slot.body;
     }
     return true;
@@ -200,7 +200,7 @@ CastResult World::castShape(const Shape& shape, const Transform& start, const Ve
     const ShapeSlot& slot = w.shapes[other];
     if (!isVisible(slot, filter)) return maxFraction;
     const std::optional<ShapeCastTouch> touch =
-        castShapeAgainst(shape, start, translation, slot.shape, transformOf(w, other));
+        castShapeAgainst(refOf(shape), start, translation, slot.ref(), transformOf(w, other));
     if (!touch || !nearest.beats(touch->fraction, other)) return maxFraction;
     nearest.keep(makeHit(w, other, touch->point, touch->normal, touch->fraction), other);
     return touch->fraction;
@@ -221,7 +221,7 @@ QueryResult<ShapeId> World::overlapAABB(const AABB& box, const QueryFilter& filt
   std::vector<std::int32_t> found;
   w.broadPhase.query(box, [&](std::int32_t shape) {
     const ShapeSlot& slot = w.shapes[shape];
-    if (isVisible(slot, filter) && computeAABB(slot.shape, transformOf(w, shape)).overlaps(box)) {
+    if (isVisible(slot, filter) && computeAABB(slot.ref(), transformOf(w, shape)).overlaps(box)) {
       found.push_back(shape);
     }
     return true;

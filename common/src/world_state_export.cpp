@@ -60,7 +60,7 @@ ShapeSlotState exportShape(const ShapeSlot& shape) {
   out.generation = shape.generation;
   if (!shape.alive) return out;
   out.body = shape.body;
-  out.shape = shape.shape;
+  out.shape = shapeOf(shape.ref());
   out.material = shape.material;
   out.density = shape.coefficients.density;
   out.restitution = shape.coefficients.restitution;

@@ -127,12 +127,13 @@ std::string checkShapeSlot(const WorldSettings& settings, const ShapeSlotState& 
   return firstOf(checkShape(s.shape, settings.shapeLimits), validateMaterialOverride(coefficientsOf(s)));
 }
 
-ShapeSlot buildShape(const ShapeSlotState& s) {
+// Its geometry goes into the world's pools.
+ShapeSlot buildShape(const ShapeSlotState& s, ShapeGeometries& geometries) {
   ShapeSlot shape;
   shape.alive = true;
   shape.generation = s.generation;
   shape.body = s.body;
-  shape.shape = s.shape;
+  geometries.store(shape, s.shape);
   shape.material = s.material;
   shape.coefficients = resolveCoefficients(s.material, coefficientsOf(s));
   shape.rollingRadius = rollingRadiusOf(s.shape);
@@ -294,7 +295,7 @@ class StateImport {
       if (s.alive) {
         if (!liveBody(s.body)) return at("shape slot", slot) + "body must be a live body";
         if (std::string error = checkShapeSlot(w.settings, s); !error.empty()) return at("shape slot", slot) + error;
-        shape = buildShape(s);
+        shape = buildShape(s, w.shapeGeometries);
         ++w.liveShapes;
       }
       w.shapes.push_back(shape);
