@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "contact_solver_wide.h"
+#include "counting_sort.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -49,10 +50,8 @@ constexpr std::int32_t kRefsPerRange = 256;
 // went.
 void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs,
                      std::vector<std::int32_t>& refOfUnsorted) {
-  const std::vector<std::int32_t>& order = world.touchingOrder;
   refs.resize(world.touchingContacts.size());
-  refOfUnsorted.resize(refs.size());
-  for (std::size_t k = 0; k < refs.size(); ++k) refOfUnsorted[std::size_t(order[k])] = std::int32_t(k);
+  placesInOrder(world.touchingOrder, refOfUnsorted);
   const Vec2 up = upwards(world.settings.gravity);
   world.tasks.forRanges(static_cast<std::int32_t>(refs.size()), kRefsPerRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t j = begin; j < end; ++j) {

@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "contact_solver_wide.h"
+#include "counting_sort.h"
 
 namespace impulse {
 namespace {
@@ -409,8 +410,7 @@ void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
 // written one stream per colour: read in colour order instead, they cost
 // about two cache misses each.
 void stageInColorOrder(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set) {
-  set.rankOf.resize(refs.size());
-  for (std::size_t k = 0; k < set.order.size(); ++k) set.rankOf[std::size_t(set.order[k])] = std::int32_t(k);
+  placesInOrder(set.order, set.rankOf);
   set.staged.resize(refs.size());
   world.tasks.forRanges(static_cast<std::int32_t>(refs.size()), kRefsPerStageRange,
                         [&](std::int32_t begin, std::int32_t end) {

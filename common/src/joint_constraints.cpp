@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "counting_sort.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -118,8 +119,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   // Each gathered row is written to its place there, read in order: rows
   // read in colour order instead jump across the list, a miss a row.
   colorStarts_ = sortByColor(colorOf_, order_);
-  rankOf_.resize(order_.size());
-  for (std::size_t k = 0; k < order_.size(); ++k) rankOf_[std::size_t(order_[k])] = std::int32_t(k);
+  placesInOrder(order_, rankOf_);
   rows_.resize(gathered_.size());
   for (std::size_t i = 0; i < gathered_.size(); ++i) rows_[std::size_t(rankOf_[i])] = gathered_[i];
   Real hertz = Real(0.25) / step.h;
