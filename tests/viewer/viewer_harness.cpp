@@ -60,6 +60,12 @@ ViewerHarness::ViewerHarness(std::uint16_t port, std::chrono::milliseconds added
   app_ = std::make_unique<viewer::App>(options);
 }
 
+ViewerHarness::ViewerHarness(std::uint16_t port, const std::function<void(viewer::ViewerOptions&)>& adjust) {
+  viewer::ViewerOptions options = testOptions(port);
+  adjust(options);
+  app_ = std::make_unique<viewer::App>(options);
+}
+
 bool ViewerHarness::runUntil(const std::function<bool()>& done,
                              std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
