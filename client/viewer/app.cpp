@@ -280,7 +280,8 @@ void App::followView() {
   const AABB wanted = viewArea(view(), margin);
   if (areaConnection_ == link && !areaMoved(sentArea_, wanted, margin / 2)) return;
   // In the mirror's frame: the link turns it into the wire's.
-  const client::Box area{{wanted.lower.x(), wanted.lower.y()}, {wanted.upper.x(), wanted.upper.y()}};
+  const client::Box area{{wanted.lower.x(), wanted.lower.y()},
+                         {wanted.upper.x(), wanted.upper.y()}};
   if (connection_->send(client::setInterestArea(area), "area")) {
     areaConnection_ = link;
     sentArea_ = wanted;

@@ -32,7 +32,8 @@ std::string checkFan(const FanDef& def) {
       std::abs(def.position.y()) > kMaxCoordinate) {
     // Said from the origin: in a world moved far out, +-10000 m would read as
     // coordinates from (0, 0).
-    return "fan position is not finite or lies more than 10000 m from the world's origin on an axis";
+    return "fan position is not finite or lies more than 10000 m from the world's origin on an "
+           "axis";
   }
   const Real length = isFinite(def.direction) ? def.direction.norm() : Real(0);
   if (!(length >= Real(1e-6) && length <= Real(1e6))) return "fan direction must be finite with length in [1e-6, 1e6]";

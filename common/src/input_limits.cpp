@@ -81,7 +81,8 @@ double leverMoment(const Body& body, const std::optional<Vec2>& point, const Vec
 std::string checkPush(const WorldData& world, const Vec2& push, const std::optional<Vec2>& point,
                       const char* field, const char* pointField) {
   if (std::string error = checkFinite(push, field); !error.empty()) return error;
-  return checkApplicationPoint(world.settings.inputLimits, world.settings.bounds, world.origin, point, pointField);
+  return checkApplicationPoint(world.settings.inputLimits, world.settings.bounds, world.origin,
+                               point, pointField);
 }
 
 }  // namespace
@@ -130,8 +131,9 @@ std::string checkGravity(const InputLimits& limits, const Vec2& gravity) {
   return {};
 }
 
-std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds, const Vec2d& origin,
-                                  const std::optional<Vec2>& point, const char* field) {
+std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds,
+                                  const Vec2d& origin, const std::optional<Vec2>& point,
+                                  const char* field) {
   if (!point) return {};
   if (std::string error = checkFinite(*point, field); !error.empty()) return error;
   const Vec2 margin(limits.escapeMargin, limits.escapeMargin);
@@ -139,9 +141,9 @@ std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds,
   const Vec2 upper = bounds.upper + margin;
   const Vec2& p = *point;
   if (p.x() < lower.x() || p.y() < lower.y() || p.x() > upper.x() || p.y() > upper.y()) {
-    return std::string(field) + " " + globalPosition(origin, p) + " is outside " + globalPosition(origin, lower) +
-           " to " + globalPosition(origin, upper) + " (the world bounds grown by " +
-           describeNumber(limits.escapeMargin) + " m)";
+    return std::string(field) + " " + globalPosition(origin, p) + " is outside " +
+           globalPosition(origin, lower) + " to " + globalPosition(origin, upper) +
+           " (the world bounds grown by " + describeNumber(limits.escapeMargin) + " m)";
   }
   return {};
 }
@@ -213,8 +215,8 @@ std::string checkInsideBounds(const WorldData& world, const Vec2& p) {
       p.y() <= bounds.upper.y()) {
     return {};
   }
-  return "position is outside the world bounds " + globalPosition(world.origin, bounds.lower) + " to " +
-         globalPosition(world.origin, bounds.upper);
+  return "position is outside the world bounds " + globalPosition(world.origin, bounds.lower) +
+         " to " + globalPosition(world.origin, bounds.upper);
 }
 
 std::string checkSetVelocity(const WorldData& world, BodyId id, const Vec2& linear, Real angular) {

@@ -59,7 +59,8 @@ TEST(FarRoom, ABodyFarOutIsDrawnWhereItIs_AndACircleDrawnThereLandsAtItsAbsolute
   const auto centre = viewer.pixel(ballInView);
   const float radius = viewer.app().view().scale();
   const viewer::Colour fill = viewer::bodyFill(Material::Solid, true);
-  EXPECT_LE(colourDistance(pixelAt(shot.get(), int(centre.x + radius / 2), int(centre.y)), fill), 8);
+  EXPECT_LE(colourDistance(pixelAt(shot.get(), int(centre.x + radius / 2), int(centre.y)), fill),
+            8);
   EXPECT_LE(colourDistance(pixelAt(shot.get(), int(centre.x), int(centre.y - 2 * radius)),
                            viewer::palette::kSceneBackground),
             8);

@@ -11,10 +11,13 @@
 namespace impulse::viewer_test {
 namespace {
 
-bool holds(const client::Client& client, std::uint32_t id) { return client.mirror().find(BodyId{id}) != nullptr; }
+bool holds(const client::Client& client, std::uint32_t id) {
+  return client.mirror().find(BodyId{id}) != nullptr;
+}
 
 std::uint32_t spawnedBall(client::Client& maker, client::Point at, bool isStatic) {
-  const v1::ServerMessage made = maker.request(client::spawnCircle(at, 0.5, {.isStatic = isStatic}));
+  const v1::ServerMessage made =
+      maker.request(client::spawnCircle(at, 0.5, {.isStatic = isStatic}));
   EXPECT_TRUE(made.command_result().ok()) << made.command_result().error();
   return made.command_result().body_id();
 }
@@ -26,13 +29,15 @@ TEST(ViewArea, TheViewerReceivesTheBodiesInItsView_AndOneOutsideOnceTheViewZooms
   const std::uint32_t inView = spawnedBall(maker, {12, 9}, true);
   const std::uint32_t farCorner = spawnedBall(maker, {45, 40}, true);
 
-  ViewerHarness viewer(server.port(), [](viewer::ViewerOptions& options) { options.areaMargin = 1; });
+  ViewerHarness viewer(server.port(),
+                       [](viewer::ViewerOptions& options) { options.areaMargin = 1; });
   ASSERT_TRUE(viewer.runUntil([&] {
     const client::Client* seen = viewer.app().connection().client();
     return seen != nullptr && holds(*seen, inView);
   }));
   viewer.runFrames(20);
-  EXPECT_FALSE(holds(*viewer.app().connection().client(), farCorner)) << "outside the view and its margin";
+  EXPECT_FALSE(holds(*viewer.app().connection().client(), farCorner))
+      << "outside the view and its margin";
 
   // Zoomed out about the scene's bottom-left corner: the view reaches 100 m
   // by 75 m from it.
@@ -41,7 +46,8 @@ TEST(ViewArea, TheViewerReceivesTheBodiesInItsView_AndOneOutsideOnceTheViewZooms
   viewer.wheel(-12);
   viewer.runFrames(2);
   ASSERT_TRUE(viewer::viewArea(viewer.app().view(), 0).contains(AABB{Vec2(45, 40), Vec2(45, 40)}));
-  EXPECT_TRUE(viewer.runUntil([&] { return holds(*viewer.app().connection().client(), farCorner); }));
+  EXPECT_TRUE(
+      viewer.runUntil([&] { return holds(*viewer.app().connection().client(), farCorner); }));
   EXPECT_TRUE(holds(*viewer.app().connection().client(), inView));
 }
 
@@ -49,9 +55,11 @@ TEST(ViewArea, ABudgetTooSmallForTheRoomsChangesMakesTheServerWithholdStates) {
   net_test::ServerProcess server;
   client::Client maker(observerOptions(server.port()));
   ASSERT_TRUE(maker.request(client::clearWorld()).command_result().ok());
-  for (int i = 0; i < 60; ++i) spawnedBall(maker, {2.0 + (i % 20) * 1.1, 5.0 + (i / 20) * 1.1}, false);
+  for (int i = 0; i < 60; ++i)
+    spawnedBall(maker, {2.0 + (i % 20) * 1.1, 5.0 + (i / 20) * 1.1}, false);
 
-  ViewerHarness viewer(server.port(), [](viewer::ViewerOptions& options) { options.budget = 1000; });
+  ViewerHarness viewer(server.port(),
+                       [](viewer::ViewerOptions& options) { options.budget = 1000; });
   EXPECT_TRUE(viewer.runUntil([&] {
     const client::Client* seen = viewer.app().connection().client();
     return seen != nullptr && seen->lastSnapshot() && seen->lastSnapshot()->states_withheld() > 0;
