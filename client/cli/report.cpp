@@ -107,6 +107,9 @@ std::string welcomeReport(const v1::Welcome& welcome) {
   report["snapshot_hz"] = number(welcome.snapshot_hz());
   report["world_min"] = pair(welcome.world_min());
   report["world_max"] = pair(welcome.world_max());
+  // Every position on the wire is from (0, 0); the origin says where the
+  // room computes (docs/networked-play.md, "Far from (0, 0)").
+  report["world_origin"] = pair(welcome.world_origin());
   return report.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
@@ -191,7 +194,10 @@ std::string replyReport(std::size_t line, std::string_view command,
       rooms.push_back({{"name", room.name()},
                        {"clients", room.clients()},
                        {"bodies", room.bodies()},
-                       {"tick", room.tick()}});
+                       {"tick", room.tick()},
+                       {"world_min", pair(room.world_min())},
+                       {"world_max", pair(room.world_max())},
+                       {"world_origin", pair(room.world_origin())}});
     }
     report["ok"] = true;
     report["rooms"] = std::move(rooms);

@@ -10,6 +10,7 @@
 #include "impulse/client/commands.h"
 #include "key_map.h"
 #include "side_panel.h"
+#include "view_area.h"
 
 namespace impulse::viewer {
 
@@ -263,7 +264,28 @@ void App::exchange() {
   if (!controls_.selectedBody()) inspected_.reset();
   handleReplies();
   followEvents(t);
+  followView();
   recordFigures();
+}
+
+void App::followView() {
+  const int link = connection_->connected() ? connection_->connections() : 0;
+  if (link == 0) return;
+  if (options_.budget && budgetConnection_ != link &&
+      connection_->send(client::setBandwidthBudget(*options_.budget), "budget")) {
+    budgetConnection_ = link;
+  }
+  if (!options_.areaMargin) return;
+  const float margin = *options_.areaMargin;
+  const AABB wanted = viewArea(view(), margin);
+  if (areaConnection_ == link && !areaMoved(sentArea_, wanted, margin / 2)) return;
+  // In the mirror's frame: the link turns it into the wire's.
+  const client::Box area{{wanted.lower.x(), wanted.lower.y()},
+                         {wanted.upper.x(), wanted.upper.y()}};
+  if (connection_->send(client::setInterestArea(area), "area")) {
+    areaConnection_ = link;
+    sentArea_ = wanted;
+  }
 }
 
 void App::followEvents(double now) {

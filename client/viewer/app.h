@@ -90,6 +90,9 @@ class App {
   /// after a reconnect), unsubscribes when they go off, and turns the
   /// events received into flashes.
   void followEvents(double now);
+  /// Sends --budget on every new connection, and --area-margin's area on
+  /// every new connection and whenever the view moves past half the margin.
+  void followView();
   void recordFigures();
   void draw();
   void drawScene(ImDrawList& list, const ViewTransform& view);
@@ -120,6 +123,10 @@ class App {
   EventFlashes flashes_;
   /// The connection (Connection::connections()) subscribed to events, 0 for none.
   int eventsConnection_ = 0;
+  /// The connection that has the budget, and the one that has sentArea_.
+  int budgetConnection_ = 0;
+  int areaConnection_ = 0;
+  AABB sentArea_;
   std::uint64_t eventMessages_ = 0;
   std::optional<v1::BodyInfo> inspected_;
   double nextInspect_ = 0;

@@ -63,6 +63,18 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
          "add MS milliseconds to the round trip to the server (try a slow link on loopback)")
       ->check(CLI::Range(0, 10000))
       ->option_text("MS");
+  app.add_option_function<float>(
+         "--area-margin", [&options](float metres) { options.areaMargin = metres; },
+         "receive only the bodies in the view and M metres around it (an area of interest, sent "
+         "again as the view pans or zooms; default: the whole room)")
+      ->check(CLI::Range(0.0f, 1000.0f))
+      ->option_text("M");
+  app.add_option_function<double>(
+         "--budget", [&options](double bytes) { options.budget = bytes; },
+         "the server sends at most BYTES snapshot bytes a second, the most important changes "
+         "first (a bandwidth budget, 1000-125000000; default: none)")
+      ->check(CLI::Range(1000.0, 125e6))
+      ->option_text("BYTES");
   app.add_flag_callback(
       "--quantized",
       [&options] { options.connect.snapshotEncoding = v1::SNAPSHOT_ENCODING_QUANTIZED; },

@@ -30,6 +30,12 @@ struct ViewerOptions {
   /// Predict the viewer's own drags and pushes (docs/networked-play.md);
   /// the panel's "Predict my actions" box changes it while running.
   bool predict = true;
+  /// Receive only the bodies in the view grown by this many metres (an area
+  /// of interest, sent again as the view pans or zooms); none: the whole room.
+  std::optional<float> areaMargin;
+  /// Snapshot bytes a second the server may send this viewer, the most
+  /// important changes first (a bandwidth budget); none: no budget.
+  std::optional<double> budget;
 };
 
 struct ParsedViewerOptions {

@@ -95,7 +95,7 @@ InputResult World::setTransform(BodyId id, const Vec2& position, Real angle) {
   if (!isFinite(position) || !isFinite(angle)) return {"position and angle must be finite numbers"};
   Body* body = w.find(id);
   if (body == nullptr) return {unknownBody(id)};
-  if (std::string error = checkInsideBounds(w.settings.bounds, position); !error.empty()) return {error};
+  if (std::string error = checkInsideBounds(w, position); !error.empty()) return {error};
   const std::int32_t slot = id.slot();
   wakeTouchingBodies(w, slot);
   body->transform = {position, Rot::fromAngle(angle)};

@@ -30,7 +30,10 @@ std::string outside(const char* field, Real value, const char* range) {
 std::string checkFan(const FanDef& def) {
   if (!isFinite(def.position) || std::abs(def.position.x()) > kMaxCoordinate ||
       std::abs(def.position.y()) > kMaxCoordinate) {
-    return "fan position is not finite or outside +-10000 m";
+    // Said from the origin: in a world moved far out, +-10000 m would read as
+    // coordinates from (0, 0).
+    return "fan position is not finite or lies more than 10000 m from the world's origin on an "
+           "axis";
   }
   const Real length = isFinite(def.direction) ? def.direction.norm() : Real(0);
   if (!(length >= Real(1e-6) && length <= Real(1e6))) return "fan direction must be finite with length in [1e-6, 1e6]";

@@ -37,7 +37,9 @@ std::string checkRange(Real value, Real low, Real high, const char* field, bool 
 std::string checkPolygon(const std::vector<Vec2>& points) {
   for (const Vec2& p : points) {
     if (!isFinite(p) || std::abs(p.x()) > kMaxCoordinate || std::abs(p.y()) > kMaxCoordinate) {
-      return "fluid polygon point is not finite or outside +-" + describeNumber(kMaxCoordinate) + " m";
+      // Said from the origin, as a fan's place is (fan.cpp).
+      return "fluid polygon point is not finite or lies more than " +
+             describeNumber(kMaxCoordinate) + " m from the world's origin on an axis";
     }
   }
   ShapeLimits limits;

@@ -4,21 +4,44 @@
 
 #include "input_limits.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 namespace impulse {
 
 namespace {
 
-std::string vector(const Vec2& v) {
+// A pair of numbers as "(x, y)", each written by `describe`.
+template <class Describe>
+std::string pair(double x, double y, Describe describe) {
   // Appended piece by piece: GCC 12 warns (falsely, -Wrestrict) on "(" + string.
   std::string text = "(";
-  text += describeNumber(v.x());
+  text += describe(x);
   text += ", ";
-  text += describeNumber(v.y());
+  text += describe(y);
   text += ')';
   return text;
+}
+
+std::string vector(const Vec2& v) { return pair(v.x(), v.y(), describeNumber); }
+
+// A float as its shortest decimal says it: 37.3f holds 37.2999992, and 37.3
+// is what its caller wrote.
+double asWritten(Real value) {
+  char text[32];
+  const char* end = std::to_chars(text, text + sizeof text, value).ptr;
+  double written = 0;
+  std::from_chars(text, end, written);
+  return written;
+}
+
+// A position as the caller's level has it: from (0, 0), the world's origin
+// added in double, so a world moved far out quotes the numbers its user
+// gives and sees, not the float frame's.
+std::string globalPosition(const Vec2d& origin, const Vec2& p) {
+  return pair(origin.x() + asWritten(p.x()), origin.y() + asWritten(p.y()), describeCoordinate);
 }
 
 double length(double x, double y) { return std::hypot(x, y); }
@@ -58,7 +81,8 @@ double leverMoment(const Body& body, const std::optional<Vec2>& point, const Vec
 std::string checkPush(const WorldData& world, const Vec2& push, const std::optional<Vec2>& point,
                       const char* field, const char* pointField) {
   if (std::string error = checkFinite(push, field); !error.empty()) return error;
-  return checkApplicationPoint(world.settings.inputLimits, world.settings.bounds, point, pointField);
+  return checkApplicationPoint(world.settings.inputLimits, world.settings.bounds, world.origin,
+                               point, pointField);
 }
 
 }  // namespace
@@ -73,6 +97,17 @@ std::string describeNumber(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", value);
   return text;
+}
+
+std::string describeCoordinate(double value) {
+  // Past any origin a world may have, six significant digits say enough.
+  if (!(std::abs(value) < 2 * kMaxOriginCoordinate)) return describeNumber(value);
+  char text[48];
+  std::snprintf(text, sizeof text, "%.6f", value);
+  std::string_view digits(text);
+  while (digits.back() == '0') digits.remove_suffix(1);
+  if (digits.back() == '.') digits.remove_suffix(1);
+  return digits == "-0" ? "0" : std::string(digits);
 }
 
 std::string checkBodyMotion(const InputLimits& limits, const Vec2& linearVelocity,
@@ -97,7 +132,8 @@ std::string checkGravity(const InputLimits& limits, const Vec2& gravity) {
 }
 
 std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds,
-                                  const std::optional<Vec2>& point, const char* field) {
+                                  const Vec2d& origin, const std::optional<Vec2>& point,
+                                  const char* field) {
   if (!point) return {};
   if (std::string error = checkFinite(*point, field); !error.empty()) return error;
   const Vec2 margin(limits.escapeMargin, limits.escapeMargin);
@@ -105,8 +141,9 @@ std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds,
   const Vec2 upper = bounds.upper + margin;
   const Vec2& p = *point;
   if (p.x() < lower.x() || p.y() < lower.y() || p.x() > upper.x() || p.y() > upper.y()) {
-    return std::string(field) + " " + vector(p) + " is outside " + vector(lower) + " to " +
-           vector(upper) + " (the world bounds grown by " + describeNumber(limits.escapeMargin) + " m)";
+    return std::string(field) + " " + globalPosition(origin, p) + " is outside " +
+           globalPosition(origin, lower) + " to " + globalPosition(origin, upper) +
+           " (the world bounds grown by " + describeNumber(limits.escapeMargin) + " m)";
   }
   return {};
 }
@@ -172,14 +209,14 @@ std::string checkOrigin(const Vec2d& origin) {
   return error.empty() ? checkRange("origin y (m)", origin.y(), -limit, limit) : error;
 }
 
-std::string checkInsideBounds(const AABB& bounds, const Vec2& p) {
+std::string checkInsideBounds(const WorldData& world, const Vec2& p) {
+  const AABB& bounds = world.settings.bounds;
   if (p.x() >= bounds.lower.x() && p.y() >= bounds.lower.y() && p.x() <= bounds.upper.x() &&
       p.y() <= bounds.upper.y()) {
     return {};
   }
-  return "position is outside the world bounds (" + std::to_string(bounds.lower.x()) + ", " +
-         std::to_string(bounds.lower.y()) + ") to (" + std::to_string(bounds.upper.x()) + ", " +
-         std::to_string(bounds.upper.y()) + ")";
+  return "position is outside the world bounds " + globalPosition(world.origin, bounds.lower) +
+         " to " + globalPosition(world.origin, bounds.upper);
 }
 
 std::string checkSetVelocity(const WorldData& world, BodyId id, const Vec2& linear, Real angular) {

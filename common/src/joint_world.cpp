@@ -84,7 +84,8 @@ std::string checkSettings(const MouseJointSettings& s) {
 
 // Anchors and targets may lie where a push may act (limits.h).
 std::string checkPoint(const WorldData& world, const char* field, const Vec2& p) {
-  return checkApplicationPoint(world.settings.inputLimits, world.settings.bounds, p, field);
+  return checkApplicationPoint(world.settings.inputLimits, world.settings.bounds, world.origin, p,
+                               field);
 }
 
 std::string validateJoint(const WorldData& world, const JointDef& def) {

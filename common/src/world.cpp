@@ -29,7 +29,7 @@ std::string validateDef(const WorldData& world, const BodyDef& def) {
       !isFinite(def.angularVelocity)) {
     return "body has a non-finite position, angle or velocity (NaN or infinity)";
   }
-  if (std::string error = checkInsideBounds(world.settings.bounds, def.position); !error.empty()) return error;
+  if (std::string error = checkInsideBounds(world, def.position); !error.empty()) return error;
   if (std::string error = checkBodyMotion(world.settings.inputLimits, def.linearVelocity,
                                           def.angularVelocity);
       !error.empty()) {

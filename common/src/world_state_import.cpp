@@ -142,15 +142,15 @@ ShapeSlot buildShape(const ShapeSlotState& s, ShapeGeometries& geometries) {
   return shape;
 }
 
-std::string checkBody(const WorldSettings& settings, const BodySlotState& b) {
+std::string checkBody(const WorldSettings& settings, const Vec2d& origin, const BodySlotState& b) {
   const InputLimits& limits = settings.inputLimits;
   std::string error =
-      firstOf(checkApplicationPoint(limits, settings.bounds, b.transform.p, "position"),
+      firstOf(checkApplicationPoint(limits, settings.bounds, origin, b.transform.p, "position"),
               checkRotation("rotation", b.transform.q),
               checkBodyMotion(limits, b.linearVelocity, b.angularVelocity),
               validateBodyProperties(b.properties),
               checkRange("sleepTime", b.sleepTime, 0, kMaxSleepTime),
-              checkApplicationPoint(limits, settings.bounds, b.center0, "center0"),
+              checkApplicationPoint(limits, settings.bounds, origin, b.center0, "center0"),
               checkRotation("rotation0", b.rotation0));
   if (!error.empty()) return error;
   if (b.properties.isStatic && b.awake) return "a static body cannot be awake";
@@ -260,7 +260,7 @@ class StateImport {
       Body body;
       body.generation = b.generation;
       if (b.alive) {
-        if (std::string error = checkBody(w.settings, b); !error.empty())
+        if (std::string error = checkBody(w.settings, w.origin, b); !error.empty())
           return at("body slot", slot) + error;
         if (b.creationOrder >= state_.nextCreationOrder) {
           return at("body slot", slot) + "creationOrder must be below nextCreationOrder";
@@ -481,7 +481,7 @@ class StateImport {
         checkRange("referencePerpendicular", j.referencePerpendicular, -kMaxLocalLength,
                    kMaxLocalLength),
         checkRange("length", j.length, 0, kMaxLocalLength),
-        checkApplicationPoint(w.settings.inputLimits, w.settings.bounds, j.target, "target"),
+        checkApplicationPoint(w.settings.inputLimits, w.settings.bounds, w.origin, j.target, "target"),
         checkVector("impulses.point", i.point, kMaxImpulse),
         checkVector("impulses.pointSpring", i.pointSpring, kMaxImpulse),
         checkRange("impulses.perpendicular", i.perpendicular, -kMaxImpulse, kMaxImpulse),

@@ -436,7 +436,9 @@ void Room::applyQueued(QueuedCommand& queued, bool admin) {
   }
   if (outcome.reply.has_pong()) answerPing(message.ping(), outcome.reply);
   reply(client, std::move(outcome.reply), queued.bytes);
-  if (outcome.changed && simulation_.paused()) broadcastSnapshot();
+  // A paused room broadcasts only when something changes, and a new area
+  // changes what its client sees: the bodies it now covers come at once.
+  if ((outcome.changed || outcome.interestArea) && simulation_.paused()) broadcastSnapshot();
 }
 
 void Room::reply(std::uint32_t client, v1::ServerMessage message, std::size_t bytes) {

@@ -20,7 +20,7 @@ std::string cornerRefusal(const v1::Vec2& corner, std::string_view field,
   }
   if (std::abs(corner.x()) > rules.maxCoordinate || std::abs(corner.y()) > rules.maxCoordinate) {
     return fieldName(rules, field) +
-           formatted(" (%g, %g) lies outside the largest ", corner.x(), corner.y()) +
+           formatted(" (%.10g, %.10g) lies outside the largest ", corner.x(), corner.y()) +
            std::string(rules.what) +
            formatted(": each coordinate must be within +-%.0f m", rules.maxCoordinate);
   }

@@ -201,6 +201,27 @@ TEST(Cli, ServerErrorsUseTheScriptsWordsAndPlainNumbers) {
   EXPECT_FALSE(contains(run.lines[2], ".000000")) << run.lines[2];
 }
 
+TEST(Cli, AFarRoomsLinesGiveItsOrigin_AndItsRefusalsTheClientsCoordinates) {
+  ServerProcess server({"--paused"});
+  // Centred on 80 037.5 m: the room computes around (80 000, 0).
+  const auto run = runCli(server.port(), "circle 80200 5 0.5\nrooms\n", false,
+                          "--room far --room-bounds 79987.5 -10 80087.5 90 --");
+  EXPECT_EQ(run.exitCode, 1);
+  ASSERT_EQ(run.lines.size(), 3u);
+  EXPECT_TRUE(
+      contains(run.lines[0],
+               R"("world_min":[79987.5,-10],"world_max":[80087.5,90],"world_origin":[80000,0])"))
+      << run.lines[0];
+  EXPECT_TRUE(contains(
+      run.lines[1], "circle: position is outside the world bounds (79987.5, -10) to (80087.5, 90)"))
+      << run.lines[1];
+  EXPECT_TRUE(contains(run.lines[2], R"("name":"far","clients":1,"bodies":)")) << run.lines[2];
+  EXPECT_TRUE(
+      contains(run.lines[2],
+               R"("world_min":[79987.5,-10],"world_max":[80087.5,90],"world_origin":[80000,0]})"))
+      << run.lines[2];
+}
+
 TEST(Cli, NetworkedPlayWordsSetTheAreaAndBudget_AndRefusalsNameTheArgument) {
   ServerProcess server({"--paused"});
   const auto run = runCli(server.port(), "area 0 0 10 10\nbudget 32000\narea all\nbudget off\n"

@@ -87,6 +87,20 @@ TEST(InterestArea, SubscriberHoldsOnlyTheBodiesInsideAndSeesThemComeAndGo) {
   EXPECT_EQ(mirrored(watcher).size(), 12u) << "the whole room again";
 }
 
+TEST(InterestArea, InAPausedRoomANewAreaComesAtOnce_WithoutAStep) {
+  ServerProcess server({"--paused"});
+  Client driver(localClient(server.port(), "driver", false));
+  const Row row = spawnRow(driver);
+  Client watcher(localClient(server.port(), "watcher"));
+  while (mirrored(watcher).size() != 12) ASSERT_TRUE(watcher.awaitSnapshot(milliseconds(5000)));
+  const std::uint64_t pausedAt = watcher.mirror().tick();
+
+  ASSERT_TRUE(result(watcher.request(area(7, 0, 13, 10))).ok());
+  const std::set<std::uint32_t> middle{row.resting[4], row.resting[5], row.resting[6]};
+  while (mirrored(watcher) != middle) ASSERT_TRUE(watcher.awaitSnapshot(milliseconds(5000)));
+  EXPECT_EQ(watcher.mirror().tick(), pausedAt) << "the room did not step";
+}
+
 std::set<std::uint32_t> mirroredJoints(const Client& client) {
   std::set<std::uint32_t> ids;
   for (const auto& [id, joint] : client.mirror().joints()) ids.insert(id);

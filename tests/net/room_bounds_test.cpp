@@ -71,7 +71,7 @@ TEST(RoomBounds, BadBoundsAreRefusedNamingTheFieldAndMakeNoRoom) {
       {point(0, 0), std::nullopt, "hello.room_max is missing"},
       {std::nullopt, point(5, 5), "hello.room_min is missing"},
       {point(std::nan(""), 0), point(5, 5), "hello.room_min is not a finite point"},
-      {point(0, 0), point(2e6, 5), "hello.room_max (2e+06, 5) lies outside the largest room: each coordinate must be within +-1000000 m"},
+      {point(0, 0), point(2e6, 5), "hello.room_max (2000000, 5) lies outside the largest room: each coordinate must be within +-1000000 m"},
       {point(0, 0), point(20001, 5), "each side may be at most 20000 m"},
       {point(0, 0), point(0.5, 5), "at least 1 m"},
       {point(10, 0), point(0, 5), "at least 1 m"},

@@ -5,7 +5,9 @@
 // command at a far position lands where it asked, in both encodings.
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "net_test_support.h"
 
@@ -165,6 +167,48 @@ TEST(RoomOrigin, AFarRoomsSceneLoadsBackInPlace_AndIsRefusedWhereItsBodiesLieOut
   const v1::CommandResult refused = result(near.request(client::loadScene(scene)));
   EXPECT_FALSE(refused.ok());
   EXPECT_TRUE(mentions(refused.error(), "outside the bounds")) << refused.error();
+}
+
+/// "(x, y)" as a refusal quotes a point: as written, without trailing zeros.
+std::string quoted(double x, double y) {
+  std::ostringstream text;
+  text << std::setprecision(12) << "(" << x << ", " << y << ")";
+  return text.str();
+}
+
+TEST(RoomOrigin, RefusalsQuotePositionsAndBoundsFromZero_AsTheClientGaveThem) {
+  ServerProcess server;
+  const client::ConnectOptions making = roomAround(server.port(), kFarBaseX);
+  Client far(making);
+  ASSERT_TRUE(result(far.request(client::clearWorld())).ok());
+  const client::Box bounds = *making.roomBounds;
+
+  const std::string outside =
+      errorOf(far.request(client::spawnCircle({bounds.max.x + 100, 5}, 0.5)));
+  EXPECT_TRUE(mentions(outside, "position is outside the world bounds " +
+                                    quoted(bounds.min.x, bounds.min.y) + " to " +
+                                    quoted(bounds.max.x, bounds.max.y)))
+      << outside;
+
+  // Points of application may lie within the bounds grown by the escape
+  // margin (1000 m); one 2 km past the bounds is quoted as it was given.
+  const std::uint32_t ball =
+      result(far.request(client::spawnCircle({kFarBaseX + 0.25, 5}, 0.5))).body_id();
+  const client::Point wayOut{bounds.max.x + 2000.75, 5.5};
+  const std::string grown = quoted(bounds.min.x - 1000, bounds.min.y - 1000) + " to " +
+                            quoted(bounds.max.x + 1000, bounds.max.y + 1000);
+  const std::string pushed = errorOf(far.request(client::applyImpulse(ball, {1, 0}, wayOut)));
+  EXPECT_TRUE(
+      mentions(pushed, "impulse point " + quoted(wayOut.x, wayOut.y) + " is outside " + grown))
+      << pushed;
+
+  v1::MouseJoint mouse;
+  mouse.set_max_force(1000);
+  const std::uint32_t hand =
+      result(far.request(client::mouseJoint(ball, {kFarBaseX + 0.25, 5}, mouse))).joint_id();
+  const std::string dragged = errorOf(far.request(client::setJointTarget(hand, wayOut)));
+  EXPECT_TRUE(mentions(dragged, "target " + quoted(wayOut.x, wayOut.y) + " is outside " + grown))
+      << dragged;
 }
 
 }  // namespace

@@ -44,19 +44,25 @@ viewer::ViewerOptions testOptions(std::uint16_t port) {
 }  // namespace
 
 ViewerHarness::ViewerHarness(std::uint16_t port, int width, int height, std::string token,
-                             std::string room) {
-  viewer::ViewerOptions options = testOptions(port);
-  options.connect.token = std::move(token);
-  options.connect.room = std::move(room);
-  options.width = width;
-  options.height = height;
-  app_ = std::make_unique<viewer::App>(options);
-}
+                             std::string room)
+    : ViewerHarness(port, [&](viewer::ViewerOptions& options) {
+        options.connect.token = std::move(token);
+        options.connect.room = std::move(room);
+        options.width = width;
+        options.height = height;
+      }) {}
 
-ViewerHarness::ViewerHarness(std::uint16_t port, std::chrono::milliseconds addedRoundTrip, bool predict) {
+ViewerHarness::ViewerHarness(std::uint16_t port, std::chrono::milliseconds addedRoundTrip,
+                             bool predict)
+    : ViewerHarness(port, [&](viewer::ViewerOptions& options) {
+        options.connect.addedRoundTrip = addedRoundTrip;
+        options.predict = predict;
+      }) {}
+
+ViewerHarness::ViewerHarness(std::uint16_t port,
+                             const std::function<void(viewer::ViewerOptions&)>& adjust) {
   viewer::ViewerOptions options = testOptions(port);
-  options.connect.addedRoundTrip = addedRoundTrip;
-  options.predict = predict;
+  adjust(options);
   app_ = std::make_unique<viewer::App>(options);
 }
 

@@ -30,6 +30,9 @@ class ViewerHarness {
   /// The viewer over a link made `addedRoundTrip` slower (--added-rtt),
   /// predicting its own actions or not (--no-predict).
   ViewerHarness(std::uint16_t port, std::chrono::milliseconds addedRoundTrip, bool predict);
+  /// The viewer with the test's options changed by `adjust` (a flag's
+  /// effect, set as the command line would set it).
+  ViewerHarness(std::uint16_t port, const std::function<void(viewer::ViewerOptions&)>& adjust);
 
   viewer::App& app() { return *app_; }
   /// Runs frames (about 60 per second) until `done` or `timeout`; true if done.

@@ -63,9 +63,11 @@ std::string checkBodyMotion(const InputLimits& limits, const Vec2& linearVelocit
 /// Error (empty when accepted) for a gravity vector.
 std::string checkGravity(const InputLimits& limits, const Vec2& gravity);
 /// Error (empty when accepted) for a point of application: finite and within
-/// the world bounds grown by the escape margin.
+/// the world bounds grown by the escape margin. The point and the bounds are
+/// relative to `origin` (World::origin()); the error quotes them from (0, 0).
 std::string checkApplicationPoint(const InputLimits& limits, const AABB& bounds,
-                                  const std::optional<Vec2>& point, const char* field);
+                                  const Vec2d& origin, const std::optional<Vec2>& point,
+                                  const char* field);
 
 /// A body's motion in double precision, so checks on huge requests cannot
 /// overflow while they are computed.
