@@ -38,17 +38,14 @@ Side sideOf(const WorldData& world, std::int32_t slot) {
   return side;
 }
 
-// Marks the solver states of the awake bodies of this step's touching
-// contacts, reading the contacts in the order memory holds them.
-void markTouchingStates(const WorldData& world, std::vector<std::uint8_t>& touching) {
-  touching.assign(world.solverStates.size(), 0);
-  for (const std::int32_t index : world.touchingUnsorted) {
-    const EdgeLinks& edges = world.contacts[index].edges;
-    for (const std::int32_t slot : {edges.bodyA, edges.bodyB}) {
-      const Body& body = world.bodies[slot];
-      if (body.awake) touching[std::size_t(body.solverIndex)] = 1;
-    }
-  }
+// An awake body with a touching contact. A static or sleeping one counts
+// for nothing (the ground's list holds every contact on it).
+bool touchesAnything(const WorldData& world, std::int32_t slot) {
+  if (slot == kNullIndex || !world.bodies[slot].awake) return false;
+  bool touches = false;
+  forEachEdge(world.contacts, world.bodies[slot].contactHead,
+              [&](std::int32_t, const Contact& contact) { touches = touches || contact.touching; });
+  return touches;
 }
 
 bool hasAwakeBody(const WorldData& world, const Joint& joint) {
@@ -75,6 +72,7 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   row.deltaCenter = b.center - a.center;
   row.softRows = hasSoftRows(joint.settings);
   row.plainPin = std::holds_alternative<RevoluteJointSettings>(joint.settings) && !row.softRows;
+  row.touches = touchesAnything(world, joint.edges.bodyA) || (!mouse && touchesAnything(world, joint.edges.bodyB));
   // The angle's atan2 is a frame's costliest part, and a pin never reads it.
   row.deltaAngle = row.plainPin ? Real(0) : jointAngle(joint, a.q, b.q);
   row.axis = a.q.apply(joint.localAxisA);
@@ -124,8 +122,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   for (std::size_t i = 0; i < gathered_.size(); ++i) rows_[std::size_t(rankOf_[i])] = gathered_[i];
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
-  markTouchingStates(world, touching_);
-  tree_.order(rows_, pass_.rigid, touching_);
+  tree_.order(rows_, world.solverStates.size(), pass_.rigid);
   return false;
 }
 

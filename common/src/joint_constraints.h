@@ -35,8 +35,6 @@ class JointConstraints final : public ConstraintKind {
   std::vector<std::int32_t> order_;
   /// Per gathered row, its place in colour order.
   std::vector<std::int32_t> rankOf_;
-  /// Per solver state: its body touches something this step.
-  std::vector<std::uint8_t> touching_;
   /// Colour c's rows are [colorStarts_[c], colorStarts_[c + 1]), overflow last.
   ColorStarts colorStarts_{};
   JointPass pass_;

@@ -39,6 +39,9 @@ struct JointRow {
   /// else, the commonest joint (chains, ragdolls, grids). Its rows need
   /// neither its settings nor its angle, so they skip both.
   bool plainPin = false;
+  /// One of its awake bodies touches something this step: its group gets
+  /// the exact tree pass (joint_tree_pass.h).
+  bool touches = false;
 };
 
 /// What every row's pass needs besides the row and its two states.

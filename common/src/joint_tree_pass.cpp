@@ -75,8 +75,8 @@ void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matr
 
 }  // namespace
 
-void JointTreePass::order(std::span<JointRow> rows, const Softness& rigid, std::span<const std::uint8_t> touching) {
-  if (!sameRowsAsOrdered(rows)) orderAnew(rows, touching.size());
+void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid) {
+  if (!sameRowsAsOrdered(rows)) orderAnew(rows, stateCount);
   const Real compliance = rigid.impulseScale / (rigid.massScale * rigid.biasRate);
   jointCount_ = 0;
   groupSolved_.assign(groupEnds_.size(), 0);
@@ -84,7 +84,7 @@ void JointTreePass::order(std::span<JointRow> rows, const Softness& rigid, std::
   for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
     const std::span<const Node> group(nodes_.data() + begin, std::size_t(groupEnds_[g]) - begin);
     begin = std::size_t(groupEnds_[g]);
-    if (!needsExactPass(group, rows, compliance, touching)) continue;
+    if (!needsExactPass(group, rows, compliance)) continue;
     groupSolved_[g] = 1;
     for (const Node& node : group) {
       if (!node.isJoint) continue;
@@ -101,18 +101,15 @@ void JointTreePass::order(std::span<JointRow> rows, const Softness& rigid, std::
 // measured. A group in flight is measured: each joint's linear load last
 // step (its stored impulses, warm started or not) over its rows' effective
 // mass, the pair's masses taken as points.
-bool JointTreePass::needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance,
-                                   std::span<const std::uint8_t> touching) {
+bool JointTreePass::needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance) {
   // The walk roots a group at a joint to the world when it has one.
   const Node& root = group.back();
   if (root.sides[0] < 0 || root.sides[1] < 0) return true;
-  for (const Node& node : group) {
-    if (!node.isJoint && touching[std::size_t(node.state)] != 0) return true;
-  }
   Real give = 0;
   for (const Node& node : group) {
     if (!node.isJoint) continue;
     const JointRow& row = rows[node.row];
+    if (row.touches) return true;
     const JointImpulses& last = row.joint->impulses;
     const Real load = last.point.norm() + std::abs(last.perpendicular) + std::abs(last.axial);
     give += load * compliance * (row.invMassA + row.invMassB);

@@ -48,9 +48,8 @@ class JointTreePass {
   /// each group's bodies and joints from the leaves to a root. Last step's
   /// groups are kept while every row joins the same states with the same
   /// masses. Then marks `inTree` the rows of the groups it solves this
-  /// step (needsExactPass; `rigid` is the soft rigid rows' softness,
-  /// `touching` flags the states whose body touches anything).
-  void order(std::span<JointRow> rows, const Softness& rigid, std::span<const std::uint8_t> touching);
+  /// step (needsExactPass; `rigid` is the soft rigid rows' softness).
+  void order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() {
     nodes_.clear();
@@ -115,8 +114,7 @@ class JointTreePass {
   Eigen::Vector3d bodyMass(std::span<const JointRow> rows, const Visit& body) const;
   /// Whether a group is held by the world, touches anything, or the soft
   /// rows alone would let its joints give way by kExactTreeStretch or more.
-  static bool needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance,
-                             std::span<const std::uint8_t> touching);
+  static bool needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance);
   /// Runs pass(group) for each solved group's nodes, a span of nodes_
   /// (whose parent and side indices stay positions in nodes_).
   template <class Pass>
