@@ -176,7 +176,7 @@ bool sweepAgainstStatics(WorldData& world, std::int32_t slot) {
 // a body touches the segment, so the dynamic bodies touching a static chain
 // segment have their centre's path held in front as the fast ones do. They
 // are appended to `bodies` once each, in slot order; fast ones are there
-// already.
+// already. The contacts are read in the order memory holds them.
 void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bodies) {
   const std::size_t first = bodies.size();
   const auto onChain = [&](std::int32_t shape, std::int32_t chainShape) {
@@ -185,15 +185,14 @@ void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bo
     const bool pressed = world.shapes[chainShape].type() == ShapeType::ChainSegment &&
                          body.isDynamic() && !isFast(body) &&
                          world.bodies[world.shapes[chainShape].body].isStatic;
-    // The list is sorted by body: a body's contacts come together.
-    if (pressed && (bodies.size() == first || bodies.back() != slot)) bodies.push_back(slot);
+    if (pressed) bodies.push_back(slot);
   };
-  for (std::int32_t index : world.touchingContacts) {
+  for (std::int32_t index : world.touchingUnsorted) {
     const Contact& contact = world.contacts[index];
     onChain(contact.shapeA, contact.shapeB);
     onChain(contact.shapeB, contact.shapeA);
   }
-  // Each once, whatever the order: the bodies are moved side by side.
+  // Each once: the bodies are moved side by side.
   std::sort(bodies.begin() + std::ptrdiff_t(first), bodies.end());
   bodies.erase(std::unique(bodies.begin() + std::ptrdiff_t(first), bodies.end()), bodies.end());
 }
