@@ -298,11 +298,14 @@ namespace {
 // step allocates nothing).
 constexpr std::int32_t kPairChunksPerWorker = 4;
 
-// The broad phase's new pairs: the queued proxies' queries side by side
-// (the trees and the contact set are only read), then joined and sorted.
+// The broad phase's new pairs that may touch: the queued proxies' queries
+// side by side (the world is only read), then joined and sorted. A pair
+// that never may (shapes of one body, or of two a joint keeps apart) is
+// passed over like a known one, so a jointed body that keeps moving out of
+// its box does not list its neighbours again every step.
 void searchNewPairs(WorldData& world) {
   const BroadPhase::KnownPair known = [&](std::int32_t first, std::int32_t second) {
-    return world.contactByPair.contains(contactPairKey(first, second));
+    return world.contactByPair.contains(contactPairKey(first, second)) || !pairMayTouch(world, {first, second});
   };
   const std::span<const std::int32_t> queued = world.broadPhase.queuedProxies();
   const std::int32_t chunks = kPairChunksPerWorker * world.tasks.workerCount();
@@ -328,9 +331,7 @@ void searchNewPairs(WorldData& world) {
 
 void updatePairs(WorldData& world, Real /*dt*/) {
   searchNewPairs(world);
-  for (const ProxyPair& pair : world.newPairs) {
-    if (pairMayTouch(world, pair)) createContact(world, pair.first, pair.second);
-  }
+  for (const ProxyPair& pair : world.newPairs) createContact(world, pair.first, pair.second);
 }
 
 void collideContacts(WorldData& world, Real dt) {
@@ -369,6 +370,15 @@ void collideContacts(WorldData& world, Real dt) {
     });
   }
   sortTouchingByBody(world);
+}
+
+bool hasTouchingContact(const WorldData& world, std::int32_t body) {
+  for (std::int32_t key = world.bodies[body].contactHead; key != kNullIndex;) {
+    const Contact& contact = world.contacts[edgeElement(key)];
+    if (contact.touching) return true;
+    key = contact.edges.next[edgeSide(key)];
+  }
+  return false;
 }
 
 void destroyContact(WorldData& world, std::int32_t index) {

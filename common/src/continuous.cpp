@@ -203,7 +203,7 @@ constexpr std::int32_t kFastBodiesPerRange = 8;
 
 }  // namespace
 
-void solveContinuous(WorldData& world, Real /*dt*/) {
+void solveContinuous(WorldData& world, Real dt) {
   if (!world.settings.enableContinuous) return;
   // The fast bodies, to sweep, then the slow ones on chains, to hold.
   std::vector<std::int32_t>& bodies = world.fastBodies;
@@ -232,7 +232,7 @@ void solveContinuous(WorldData& world, Real /*dt*/) {
                         });
   // The tree is shared: the moved bodies' proxies follow one by one.
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (moved[i] != 0) moveBodyProxies(world, bodies[i]);
+    if (moved[i] != 0) moveBodyProxies(world, bodies[i], dt);
   }
 }
 

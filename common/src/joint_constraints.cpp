@@ -41,11 +41,7 @@ Side sideOf(const WorldData& world, std::int32_t slot) {
 // An awake body with a touching contact. A static or sleeping one counts
 // for nothing (the ground's list holds every contact on it).
 bool touchesAnything(const WorldData& world, std::int32_t slot) {
-  if (slot == kNullIndex || !world.bodies[slot].awake) return false;
-  bool touches = false;
-  forEachEdge(world.contacts, world.bodies[slot].contactHead,
-              [&](std::int32_t, const Contact& contact) { touches = touches || contact.touching; });
-  return touches;
+  return slot != kNullIndex && world.bodies[slot].awake && hasTouchingContact(world, slot);
 }
 
 bool hasAwakeBody(const WorldData& world, const Joint& joint) {

@@ -220,8 +220,12 @@ void setContactEventFlags(const WorldData& world, Contact& contact);
 void publishEvents(WorldData& world);
 // world.cpp: the shape's tight box where its body is now.
 AABB shapeAABB(const WorldData& world, std::int32_t shape);
-// world.cpp: the broad phase learns where the body went (every shape's proxy).
-void moveBodyProxies(WorldData& world, std::int32_t body);
+// world.cpp: the broad phase learns where the body went (every shape's proxy)
+// and, for dt > 0, where its velocity takes it over a step of dt (0: a body
+// placed by hand, whose next motion is unknown).
+void moveBodyProxies(WorldData& world, std::int32_t body, Real dt = 0);
+// contact.cpp: whether any of the body's contacts touches (has points).
+bool hasTouchingContact(const WorldData& world, std::int32_t body);
 // world.cpp: the body's proxies look for new pairs without having moved.
 void touchBodyProxies(WorldData& world, std::int32_t body);
 // joint_world.cpp: a joint with collideConnected off between the bodies.

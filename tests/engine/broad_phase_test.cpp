@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -44,6 +45,7 @@ bool containsUser(const std::vector<ProxyPair>& pairs, std::int32_t user) {
 struct ModelProxy {
   std::int32_t key = -1;
   Kind kind = Kind::Static;
+  AABB tight;
   AABB fat;
   bool alive = true;
   bool queued = false;
@@ -75,7 +77,7 @@ class Scenario {
       const bool jump = percent(rng_) < 30;
       const Real dx = jump ? large(rng_) : small(rng_);
       const Real dy = jump ? large(rng_) : small(rng_);
-      move(proxy, shifted(proxy.fat.expanded(-kAabbMargin), dx, dy));
+      move(proxy, shifted(proxy.tight, dx, dy));
     }
     if (moves_ == Moves::InBulk) broadPhase_.rebuildEnlarged();
     for (ModelProxy& proxy : proxies_) {
@@ -141,7 +143,8 @@ class Scenario {
     const AABB tight = makeBox(position(rng_), position(rng_), half(rng_), half(rng_));
     ModelProxy proxy;
     proxy.kind = kind;
-    proxy.fat = kind == Kind::Movable ? tight.expanded(kAabbMargin) : tight;
+    proxy.tight = tight;
+    proxy.fat = kind == Kind::Movable ? BroadPhase::fatBox(tight, {}) : tight;
     proxy.queued = kind == Kind::Movable;
     proxy.key = broadPhase_.createProxy(tight, static_cast<std::int32_t>(proxies_.size()), kind);
     proxies_.push_back(proxy);
@@ -152,8 +155,9 @@ class Scenario {
     const bool moved = moves_ == Moves::InBulk ? broadPhase_.enlargeProxy(proxy.key, tight)
                                                : broadPhase_.updateProxy(proxy.key, tight);
     ASSERT_EQ(moved, leaves);
+    proxy.tight = tight;
     if (leaves) {
-      proxy.fat = tight.expanded(kAabbMargin);
+      proxy.fat = BroadPhase::fatBox(tight, {});
       proxy.queued = true;
     }
   }
@@ -243,6 +247,45 @@ TEST(BroadPhase, StaticProxiesAreExact_MovableProxiesAreFat) {
   EXPECT_EQ(broadPhase.proxyCount(), 2);
   EXPECT_TRUE(broadPhase.fatAABBsOverlap(1, 2));
   EXPECT_NE(fixed, movable);
+}
+
+bool nearlySameBox(const AABB& a, const AABB& b) {
+  constexpr Real kTolerance = Real(1e-6);
+  return (a.lower - b.lower).cwiseAbs().maxCoeff() < kTolerance && (a.upper - b.upper).cwiseAbs().maxCoeff() < kTolerance;
+}
+
+TEST(BroadPhase, FatBox_MarginFollowsTheShapesSize_StretchedAlongItsMotion) {
+  // A 20 cm box: the speculative distance plus a quarter of its half-diagonal.
+  const AABB small = makeBox(0, 0, Real(0.1), Real(0.1));
+  const Real smallMargin = kSpeculativeDistance + Real(0.25) * Real(0.1) * std::sqrt(Real(2));
+  EXPECT_TRUE(nearlySameBox(BroadPhase::fatBox(small, {}), small.expanded(smallMargin)));
+  // A 2 m box: capped at kAabbMargin.
+  const AABB large = makeBox(0, 0, 1, 1);
+  EXPECT_TRUE(sameBox(BroadPhase::fatBox(large, {}), large.expanded(kAabbMargin)));
+  // Moving right and down, turning: grown by the turn's reach all round and
+  // stretched ahead by the displacement, not behind.
+  const ProxyMotion motion{Vec2(Real(0.3), Real(-0.2)), Real(0.01)};
+  const AABB fat = BroadPhase::fatBox(large, motion);
+  const Real around = kAabbMargin + Real(0.01);
+  EXPECT_TRUE(nearlySameBox(fat, AABB{Vec2(-1 - around, -1 - around - Real(0.2)),
+                                      Vec2(1 + around + Real(0.3), 1 + around)}));
+}
+
+TEST(BroadPhase, UpdateProxy_RefattensWhenTheComingStepWouldLeaveTheBox) {
+  BroadPhase broadPhase;
+  const AABB tight = makeBox(0, 0, 1, 1);
+  const std::int32_t key = broadPhase.createProxy(tight, 1, Kind::Movable);
+  // A wall 0.4 m ahead: beyond the margin, within the coming step's motion.
+  broadPhase.createProxy(makeBox(Real(1.5), 0, Real(0.1), 1), 2, Kind::Static);
+  std::vector<ProxyPair> pairs;
+  broadPhase.findNewPairs(pairs);
+  EXPECT_TRUE(pairs.empty());
+  // At rest inside its box it stays; about to move 0.5 m right it is
+  // re-fattened ahead and meets the wall before it arrives.
+  EXPECT_FALSE(broadPhase.updateProxy(key, tight));
+  EXPECT_TRUE(broadPhase.updateProxy(key, tight, ProxyMotion{Vec2(Real(0.5), 0), 0}));
+  broadPhase.findNewPairs(pairs);
+  EXPECT_EQ(pairs, (std::vector<ProxyPair>{{1, 2}}));
 }
 
 TEST(BroadPhase, FatAABBsOverlap_SeesTheMargin) {

@@ -319,7 +319,7 @@ TEST(ShapeCast, PassingBesideAShape_MissesIt) {
 
 TEST(Overlap, AABBListsShapesWhoseTightBoxOverlaps_NotTheirFatBox) {
   World world;
-  // Dynamic bodies: their broad-phase boxes are fattened by kAabbMargin.
+  // Dynamic bodies: their broad-phase boxes are fattened (by up to kAabbMargin).
   const CreateResult inside = world.createCircle(Vec2(0, 0), Real(0.5));
   const CreateResult near = world.createCircle(Vec2(Real(1.55), 0), Real(0.5));
   ASSERT_TRUE(inside.ok() && near.ok());

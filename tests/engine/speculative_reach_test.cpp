@@ -57,5 +57,31 @@ TEST(SpeculativeReach, BoxFallingOntoOneThatLanded_StopsNearItsSurface) {
   EXPECT_LT(deepest, 0.025);
 }
 
+// A ball thrown at a free box covers 50 cm a step, more than the two
+// bodies' broad-phase margins: were their boxes only fattened, the pair
+// would first exist with the ball already 15 cm into the box. A body in
+// free flight has its box stretched along its motion, so the pair exists
+// a step before the ball arrives and its speculative contact stops it at
+// the box's face, which it pushes ahead.
+TEST(SpeculativeReach, BallThrownAtAFreeBoxMeetsItAsAPairBeforeArriving) {
+  World world;
+  const Real radius = Real(0.1);
+  const Real halfWidth = Real(0.25);
+  const BodyId ball = addCircle(
+      world, {.center = Vec2(Real(0.3), 0), .radius = radius, .ignoreGravity = true, .velocity = Vec2(30, 0)});
+  const BodyId box = addBox(world, {.center = Vec2(2, 0), .halfWidth = halfWidth, .halfHeight = halfWidth,
+                                    .ignoreGravity = true});
+  double deepest = 0;
+  simulateUntil(world, 0.5, [&] {
+    const double front = stateOf(world, ball).position.x() + radius;
+    const double face = stateOf(world, box).position.x() - halfWidth;
+    deepest = std::max(deepest, front - face);
+    return false;
+  });
+  EXPECT_LT(deepest, 0.02);
+  EXPECT_LT(stateOf(world, ball).position.x(), stateOf(world, box).position.x());
+  EXPECT_GT(stateOf(world, box).linearVelocity.x(), 1);
+}
+
 }  // namespace
 }  // namespace impulse::test

@@ -5,7 +5,9 @@
 /// pairs are never considered and a moving proxy only queries what it could
 /// touch. Only proxies that moved out of their fat box are re-inserted (or
 /// enlarged, and the tree above them rebuilt), and only proxies marked moved
-/// look for new pairs.
+/// look for new pairs. A movable proxy's fat box is its tight box grown by a
+/// margin in proportion to its size and stretched along the motion its
+/// shape is expected to make over the next step.
 
 #include <cstdint>
 #include <functional>
@@ -24,23 +26,40 @@ struct ProxyPair {
   friend bool operator==(const ProxyPair&, const ProxyPair&) = default;
 };
 
+/// How a movable proxy's shape is expected to move over the next step (as
+/// over the last one): its centre's displacement, and how far a point of it
+/// may move by the turn.
+struct ProxyMotion {
+  Vec2 displacement = Vec2::Zero();
+  Real turnReach = 0;
+};
+
 class BroadPhase {
  public:
   enum class ProxyKind : std::uint8_t { Static = 0, Movable = 1 };
 
-  /// Adds a proxy for a tight AABB; movable proxies are fattened by
-  /// kAabbMargin. Returns a proxy key (tree index and kind packed together).
-  std::int32_t createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind);
+  /// The fat box of a movable proxy: the tight box grown by the speculative
+  /// distance plus a quarter of its half-diagonal (at most kAabbMargin) and
+  /// by the turn reach, and stretched along the displacement, so that a
+  /// shape keeping its motion meets what lies ahead as a pair before it
+  /// arrives.
+  static AABB fatBox(const AABB& tightAABB, const ProxyMotion& motion);
+
+  /// Adds a proxy for a tight AABB; movable proxies are fattened (fatBox).
+  /// Returns a proxy key (tree index and kind packed together).
+  std::int32_t createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind,
+                           const ProxyMotion& motion = {});
   void destroyProxy(std::int32_t proxyKey);
 
   /// Called with the new tight AABB of a moving proxy. Re-inserts it (and
-  /// queues it for pair search) only when it left its fat AABB. Returns true
-  /// when it was re-inserted.
-  bool updateProxy(std::int32_t proxyKey, const AABB& tightAABB);
+  /// queues it for pair search) only when the tight box, with the motion
+  /// the proxy is about to make, leaves its fat AABB. Returns true when it
+  /// was re-inserted.
+  bool updateProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion = {});
   /// updateProxy for many proxies moving at once (a step's awake bodies): a
   /// movable proxy that left its fat AABB is enlarged in place, and
   /// rebuildEnlarged() must follow before any other change or query.
-  bool enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB);
+  bool enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion = {});
   /// Rebuilds the parts of the trees that enlargeProxy grew.
   void rebuildEnlarged();
 
@@ -136,7 +155,7 @@ class BroadPhase {
 
   /// Gives a proxy that left its fat AABB a new one (enlarged in place when
   /// in bulk, else re-inserted) and queues it; false when it stayed inside.
-  bool moveOutOfFatBox(std::int32_t proxyKey, const AABB& tightAABB, bool inBulk);
+  bool moveOutOfFatBox(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion, bool inBulk);
   /// Copies the proxy's fat AABB to userBoxes_.
   void recordUserBox(std::int32_t proxyKey);
   void recordAllUserBoxes();

@@ -11,8 +11,10 @@ inline constexpr Real kLinearSlop = Real(0.005);
 /// Contacts are generated this far before shapes touch, so the solver can stop
 /// an approaching body exactly at the surface (speculative contact).
 inline constexpr Real kSpeculativeDistance = 4 * kLinearSlop;
-/// Fat AABB margin: a moving proxy is re-inserted in the tree only after it
-/// leaves its enlarged box.
+/// Largest fat AABB margin: a moving proxy is re-inserted in the tree only
+/// after it leaves its enlarged box. A small shape's margin is smaller
+/// (BroadPhase::fatBox), so a crowd of them does not pair every body with
+/// its neighbours' neighbours.
 inline constexpr Real kAabbMargin = Real(0.1);
 /// Polygon vertex limits of docs/product.md.
 inline constexpr int kMinPolygonVertices = 3;
