@@ -1,6 +1,8 @@
 #include "support_pass.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "world_data.h"
@@ -14,6 +16,14 @@ constexpr std::int32_t kUnreached = -1;
 // ones lean on their neighbour; among them the 30 degrees of circles packed
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
+// cos(5 degrees): a body is held up on another body only by a contact this
+// close to level (on the static world, 25 degrees do). A row lifts its
+// upper body along the contact's normal and leaves the lower one as it is:
+// off level, every lift pushes the upper body sideways with nothing pushing
+// the lower one back, and an arch's stones, leaning 7 to 23 degrees on each
+// other, crept apart at 1 cm/s.
+constexpr Real kMinFlatNormal = Real(0.9962);
+constexpr std::int8_t kFlat = 2;
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
@@ -57,7 +67,8 @@ Vec2 upwards(const Vec2& gravity) {
 
 std::int8_t facingOf(const Vec2& normal, const Vec2& up) {
   const Real upward = normal.dot(up);
-  return upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+  const std::int8_t side = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+  return std::abs(upward) >= kMinFlatNormal ? std::int8_t(kFlat * side) : side;
 }
 
 // Breadth-first from the static dummy (state 0) over the level contacts
@@ -230,6 +241,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;
+    if (lower > 0 && std::abs(ref.facing) != kFlat) continue;
     SupportRow row;
     row.ref = static_cast<std::int32_t>(i);
     row.upperIsB = upperIsB;

@@ -10,6 +10,8 @@
 // into its support. The soft rows still carry the loads (their impulses are
 // what the lower bodies feel); the support pass removes the sinking they
 // leave behind, and its impulse raises the friction limit to the whole load.
+// On the static world a row is a rigid contact: where friction holds its
+// body sideways, the row also keeps its lift from making the points slip.
 //
 // Only stacks that need it get rows. A soft contact holding a load L sinks
 // by about L times its compliance, and a stack's top by the sum of those
@@ -40,7 +42,8 @@ inline constexpr Real kSupportedSink = Real(0.001);
 /// Up: against gravity (zero without it).
 Vec2 upwards(const Vec2& gravity);
 /// A contact of this normal is level enough to stand on (ConstraintRef::facing):
-/// +1 with B above, -1 with A above, 0 not level.
+/// +1 with B above, -1 with A above, 0 not level; twice that when within
+/// 5 degrees of level, flat enough to stand on another body.
 std::int8_t facingOf(const Vec2& normal, const Vec2& up);
 
 /// One supporting contact: its ConstraintRef and which side holds the upper
@@ -62,8 +65,8 @@ class SupportPass {
   /// 1, a box on it 2), and takes as rows the level contacts whose upper
   /// body is a level above the lower one and has no joints, lowest storey
   /// first: those on the static world, and those of the stacks (bodies
-  /// joined by such contacts) whose estimated sink under the soft contacts
-  /// of `softness` reaches kSupportedSink;
+  /// joined by such contacts, within 5 degrees of level) whose estimated
+  /// sink under the soft contacts of `softness` reaches kSupportedSink;
   /// marks those refs `holdsUp`. Within a storey, a body's k-th row goes to
   /// the storey's k-th group. No gravity, no rows.
   ///
