@@ -16,12 +16,8 @@ constexpr std::int32_t kUnreached = -1;
 // ones lean on their neighbour; among them the 30 degrees of circles packed
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
-// cos(5 degrees): a body is held up on another body only by a contact this
-// close to level (on the static world, 25 degrees do). A row lifts its
-// upper body along the contact's normal and leaves the lower one as it is:
-// off level, every lift pushes the upper body sideways with nothing pushing
-// the lower one back, and an arch's stones, leaning 7 to 23 degrees on each
-// other, crept apart at 1 cm/s.
+// cos(5 degrees): a row between two bodies on a contact further off level
+// than this leans, and runs before the soft rows (support_pass.h).
 constexpr Real kMinFlatNormal = Real(0.9962);
 constexpr std::int8_t kFlat = 2;
 
@@ -190,13 +186,16 @@ void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
     deepest = std::max(deepest, sink_[std::size_t(upper)]);
   }
   rows_.clear();
+  leaningRows_ = 0;
   groupStart_.assign(1, 0);
   storeyGroupStart_.assign(1, 0);
   for (std::size_t storey = 0; storey + 1 < candidateStoreyStart_.size(); ++storey) {
     for (std::int32_t group = candidateStoreyStart_[storey]; group < candidateStoreyStart_[storey + 1]; ++group) {
       for (std::int32_t r = candidateGroupStart_[std::size_t(group)]; r < candidateGroupStart_[std::size_t(group) + 1]; ++r) {
         const SupportRow& row = candidates_[std::size_t(r)];
-        if (keeps(row, refs)) rows_.push_back(row);
+        if (!keeps(row, refs)) continue;
+        rows_.push_back(row);
+        leaningRows_ += row.leans ? 1 : 0;
       }
       if (std::int32_t(rows_.size()) > groupStart_.back()) groupStart_.push_back(std::int32_t(rows_.size()));
     }
@@ -207,6 +206,7 @@ void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
 void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
                         const ContactSoftness& softness, Real h) {
   rows_.clear();
+  leaningRows_ = 0;
   groupStart_.assign(1, 0);
   storeyGroupStart_.assign(1, 0);
   if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
@@ -241,10 +241,10 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || isJointed(world, upperIsB ? ref.stateB : ref.stateA)) continue;
-    if (lower > 0 && std::abs(ref.facing) != kFlat) continue;
     SupportRow row;
     row.ref = static_cast<std::int32_t>(i);
     row.upperIsB = upperIsB;
+    row.leans = lower > 0 && std::abs(ref.facing) != kFlat;
     unsorted_.push_back(row);
     rowLevel_.push_back(lower);
     topLevel = std::max(topLevel, lower);

@@ -146,6 +146,7 @@ void placeSupportRows(const SupportPass& pass, std::size_t refCount, WideContact
     for (int lane = 0; lane < lanes; ++lane) {
       const SupportRow& row = pass.rows()[std::size_t(first + lane)];
       set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
+      setLaneFlag(bundles[std::size_t(b)].leans, lane, row.leans);
     }
   }
 }
@@ -258,8 +259,25 @@ void holdSlip(const WideBody<F>& lower, WideBody<F>& upper, const WideSupportRow
   upper.w += row.invInertia * arm * impulse;
 }
 
+// The lift of the lanes a run solves (`rows`), and none in the others, whose
+// impulses stay as their own run left them.
 template <class F>
-void holdUp(std::span<SolverState> states, F inverseSubStep, bool onStaticWorld, WideSupportRow<F>& row) {
+Lift<F> liftOf(SupportRows rows, const Lift<F>& lift, WideSupportRow<F>& row) {
+  const F zero = simd::broadcast<F>(0);
+  if (rows == SupportRows::Leaning) {
+    row.points[0].impulse = simd::select(row.leans, lift.first, row.points[0].impulse);
+    row.points[1].impulse = simd::select(row.leans, lift.second, row.points[1].impulse);
+    return {simd::select(row.leans, lift.first, zero), simd::select(row.leans, lift.second, zero)};
+  }
+  row.points[0].impulse = simd::select(row.leans, row.points[0].impulse, lift.first);
+  row.points[1].impulse = simd::select(row.leans, row.points[1].impulse, lift.second);
+  return {simd::select(row.leans, zero, lift.first), simd::select(row.leans, zero, lift.second)};
+}
+
+template <class F>
+void holdUp(std::span<SolverState> states, F inverseSubStep, SupportRows rows, bool onStaticWorld,
+            WideSupportRow<F>& row) {
+  if (rows == SupportRows::Leaning && !simd::any(row.leans)) return;
   const WideBody<F> lower = gather<F>(states, row.stateA);
   WideBody<F> upper = gather<F>(states, row.stateB);
   F slipBefore[2] = {};
@@ -267,9 +285,7 @@ void holdUp(std::span<SolverState> states, F inverseSubStep, bool onStaticWorld,
     for (int j = 0; j < 2; ++j) slipBefore[j] = slipSpeed(lower, upper, row, row.points[j]);
   }
   const Lift<F> shortfall = shortfalls(lower, upper, inverseSubStep, row);
-  const Lift<F> lift = liftImpulses(row, shortfall.first, shortfall.second);
-  row.points[0].impulse = lift.first;
-  row.points[1].impulse = lift.second;
+  const Lift<F> lift = liftOf(rows, liftImpulses(row, shortfall.first, shortfall.second), row);
   const F push = row.invMass * (lift.first + lift.second);
   upper.vx += push * row.normalX;
   upper.vy += push * row.normalY;
@@ -283,7 +299,8 @@ void holdUp(std::span<SolverState> states, F inverseSubStep, bool onStaticWorld,
 // also reverse the contacts' point order. A group's bundles run side by
 // side: its rows lift distinct upper bodies and only read lower ones.
 template <class F>
-void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass) {
+void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass,
+                      SupportRows rows) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   const F inverseSubStep = simd::broadcast<F>(context.inverseSubStep);
   const std::span<const std::int32_t> storeys = pass.storeyStarts();
@@ -296,7 +313,7 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, 
       context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerRange,
                                [&](std::int32_t begin, std::int32_t end) {
                                  for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
-                                   holdUp(context.states, inverseSubStep, storey == 0, bundles[std::size_t(b)]);
+                                   holdUp(context.states, inverseSubStep, rows, storey == 0, bundles[std::size_t(b)]);
                                  }
                                });
     }

@@ -40,6 +40,8 @@ struct WideSupportRow {
   /// making the points slip: the contact's where friction holds it
   /// sideways, else zero (support_pass_wide_impl.h, holdSlip).
   F slipFriction;
+  /// All-ones where the row leans (SupportRow::leans).
+  F leans;
   WideSupportPoint<F> points[2];
 };
 
