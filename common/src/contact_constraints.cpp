@@ -90,7 +90,8 @@ void ContactConstraints::solve(const SubStep& sub) {
   const ContactSolverContext context = contextFor(sub);
   // Leaning rows first, so that the soft rows' friction has the last word
   // on how their bodies slide (support_pass.h).
-  if (support_.leaningRows() > 0) kernels_->solveSupport(context, wide_, support_, SupportRows::Leaning);
+  if (support_.leaningRows() > 0)
+    kernels_->solveSupport(context, wide_, support_, SupportRows::Leaning);
   kernels_->solve(context, wide_, true);
   kernels_->solveSupport(context, wide_, support_, SupportRows::Standing);
 }

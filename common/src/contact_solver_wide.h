@@ -33,8 +33,8 @@ struct WideContactKernels {
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
   /// The support pass's `rows` of one sub-step, storey by storey from the
   /// ground.
-  void (*solveSupport)(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass,
-                       SupportRows rows);
+  void (*solveSupport)(const ContactSolverContext& context, WideContactSet& set,
+                       const SupportPass& pass, SupportRows rows);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
   /// Writes the impulses back into the manifolds for next step's warm start
   /// (the support pass's last, for next step's friction limit).

@@ -919,7 +919,8 @@ bool strictlyConvex(std::span<const Point> points, const std::vector<int>& piece
     const Point& a = points[piece[(i + n - 1) % n]];
     const Point& b = points[piece[i]];
     const Point& c = points[piece[(i + 1) % n]];
-    if (cross2(b - a, c - b) <= 0 || distanceToChord(a, b, c) < kPolygonPointTolerance) return false;
+    if (cross2(b - a, c - b) <= 0 || distanceToChord(a, b, c) < kPolygonPointTolerance)
+      return false;
   }
   return true;
 }

@@ -106,7 +106,8 @@ void finishSupportBundle(WideSupportRow<F>& row) {
   for (WideSupportPoint<F>& p : row.points) {
     p.arm = simd::select(p.present, p.anchorBX * row.normalY - p.anchorBY * row.normalX, zero);
     // anchor x tangent, the tangent being (normalY, -normalX).
-    p.tangentArm = simd::select(p.present, -(p.anchorBX * row.normalX + p.anchorBY * row.normalY), zero);
+    p.tangentArm =
+        simd::select(p.present, -(p.anchorBX * row.normalX + p.anchorBY * row.normalY), zero);
   }
   const F arm0 = row.points[0].arm;
   const F arm1 = row.points[1].arm;
@@ -248,7 +249,8 @@ void holdSlip(const WideBody<F>& lower, WideBody<F>& upper, const WideSupportRow
   const F slip0 = slipSpeed(lower, upper, row, first) - slipBefore[0];
   const F slip1 = slipSpeed(lower, upper, row, second) - slipBefore[1];
   const F both = simd::both(first.present, second.present);
-  const F slip = simd::select(both, half * (slip0 + slip1), simd::select(first.present, slip0, zero));
+  const F slip =
+      simd::select(both, half * (slip0 + slip1), simd::select(first.present, slip0, zero));
   const F arm = simd::select(both, half * (first.tangentArm + second.tangentArm), first.tangentArm);
   const F response = row.invMass + row.invInertia * arm * arm;
   const F mass = simd::select(first.present, simd::broadcast<F>(1) / response, zero);
@@ -299,8 +301,8 @@ void holdUp(std::span<SolverState> states, F inverseSubStep, SupportRows rows, b
 // also reverse the contacts' point order. A group's bundles run side by
 // side: its rows lift distinct upper bodies and only read lower ones.
 template <class F>
-void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass,
-                      SupportRows rows) {
+void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
+                      const SupportPass& pass, SupportRows rows) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   const F inverseSubStep = simd::broadcast<F>(context.inverseSubStep);
   const std::span<const std::int32_t> storeys = pass.storeyStarts();
@@ -313,7 +315,8 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, 
       context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerRange,
                                [&](std::int32_t begin, std::int32_t end) {
                                  for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
-                                   holdUp(context.states, inverseSubStep, rows, storey == 0, bundles[std::size_t(b)]);
+                                   holdUp(context.states, inverseSubStep, rows, storey == 0,
+                                          bundles[std::size_t(b)]);
                                  }
                                });
     }

@@ -251,8 +251,8 @@ TEST(ShapeErrorTest, PointOnTheLineOfItsNeighboursIsCollinear) {
   const std::vector<Vec2> midEdge = {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(2, 2), Vec2(0, 2)};
   const std::vector<Vec2> allOnALine = {Vec2(0, 0), Vec2(1, 1), Vec2(3, 3)};
   // 0.2 mm off the line, below the 0.5 mm tolerance.
-  const std::vector<Vec2> nearlyOnEdge = {Vec2(0, 0), Vec2(1, Real(-0.0002)), Vec2(2, 0), Vec2(2, 2),
-                                          Vec2(0, 2)};
+  const std::vector<Vec2> nearlyOnEdge = {Vec2(0, 0), Vec2(1, Real(-0.0002)), Vec2(2, 0),
+                                          Vec2(2, 2), Vec2(0, 2)};
   expectRefused(midEdge, ShapeError::CollinearPoints);
   expectRefused(allOnALine, ShapeError::CollinearPoints);
   expectRefused(nearlyOnEdge, ShapeError::CollinearPoints);
@@ -263,8 +263,8 @@ TEST(ShapeErrorTest, PointOnTheLineOfItsNeighboursIsCollinear) {
 // world's lower minimum area. A sliver ten times thinner is refused.
 TEST(ShapeErrorTest, TwoMillimetreCardIsValid_TwoTenthsOfAMillimetreSliverIsNot) {
   const auto box = [](Real halfWidth) {
-    return std::vector<Vec2>{Vec2(-halfWidth, Real(-0.2)), Vec2(halfWidth, Real(-0.2)), Vec2(halfWidth, Real(0.2)),
-                             Vec2(-halfWidth, Real(0.2))};
+    return std::vector<Vec2>{Vec2(-halfWidth, Real(-0.2)), Vec2(halfWidth, Real(-0.2)),
+                             Vec2(halfWidth, Real(0.2)), Vec2(-halfWidth, Real(0.2))};
   };
   const ShapeLimits smallShapes{.minArea = Real(1e-5)};
   const PolygonBuild card = buildPolygon(box(Real(0.001)), smallShapes);
