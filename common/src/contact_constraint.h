@@ -26,7 +26,8 @@ struct ConstraintRef {
   /// Holds its upper body up in the support pass (support_pass.h).
   bool holdsUp = false;
   /// Whether the contact is level enough to stand on, and which way up
-  /// (support_pass.h): +1 with B above, -1 with A above, 0 not level.
+  /// (support_pass.h, facingOf): +1 with B above, -1 with A above, 0 not
+  /// level; twice that when flat.
   /// Read with the contact's bodies, whose line holds its normal too.
   std::int8_t facing = 0;
   /// The bodies' inverse mass and inertia, zero unless awake: read once

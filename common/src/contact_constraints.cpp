@@ -88,8 +88,12 @@ ContactSolverContext ContactConstraints::contextFor(const SubStep& sub) const {
 void ContactConstraints::warmStart(const SubStep& sub) { kernels_->warmStart(contextFor(sub), wide_); }
 void ContactConstraints::solve(const SubStep& sub) {
   const ContactSolverContext context = contextFor(sub);
+  // Leaning rows first, so that the soft rows' friction has the last word
+  // on how their bodies slide (support_pass.h).
+  if (support_.leaningRows() > 0)
+    kernels_->solveSupport(context, wide_, support_, SupportRows::Leaning);
   kernels_->solve(context, wide_, true);
-  kernels_->solveSupport(context, wide_, support_);
+  kernels_->solveSupport(context, wide_, support_, SupportRows::Standing);
 }
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }
 void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }

@@ -31,8 +31,10 @@ struct WideContactKernels {
   /// The push pass (pushOverlap) on the contacts of the islands where one
   /// intruded when built (WideContactSet::pushBundles).
   void (*push)(const ContactSolverContext& context, WideContactSet& set);
-  /// The support pass of one sub-step, storey by storey from the ground.
-  void (*solveSupport)(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass);
+  /// The support pass's `rows` of one sub-step, storey by storey from the
+  /// ground.
+  void (*solveSupport)(const ContactSolverContext& context, WideContactSet& set,
+                       const SupportPass& pass, SupportRows rows);
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
   /// Writes the impulses back into the manifolds for next step's warm start
   /// (the support pass's last, for next step's friction limit).

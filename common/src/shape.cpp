@@ -71,12 +71,13 @@ void computeNormals(Polygon& polygon) {
   }
 }
 
-// Points closer than this are one point to the user (half the linear slop,
-// far above float resolution at world scale).
-constexpr double kDuplicateTolerance = 0.5 * kLinearSlop;
-// A vertex this close to the line through its neighbours adds no corner, as
-// Box2D's hull builder also judges with a linear tolerance.
-constexpr double kCollinearTolerance = 0.5 * kLinearSlop;
+// A polygon's points closer than this are one point to the user, and a
+// vertex this close to the line through its neighbours adds no corner (as
+// Box2D's hull builder also judges, with a linear tolerance). A tenth of
+// the linear slop: far above float resolution at world scale, so slivers
+// and repeated clicks are refused, yet below a playing card's 2 mm, which
+// a house of cards is built from.
+constexpr double kPolygonPointTolerance = 0.1 * kLinearSlop;
 
 // Points of a closed outline, read with wrap-around indices.
 class Ring {
@@ -131,7 +132,7 @@ double signedArea(const Ring& ring) {
 bool hasDuplicates(const Ring& ring) {
   for (int i = 0; i < ring.size(); ++i) {
     for (int j = i + 1; j < ring.size(); ++j) {
-      if ((ring.at(i) - ring.at(j)).norm() < kDuplicateTolerance) return true;
+      if ((ring.at(i) - ring.at(j)).norm() < kPolygonPointTolerance) return true;
     }
   }
   return false;
@@ -147,7 +148,7 @@ double distanceToChord(const Point& a, const Point& b, const Point& c) {
 // line of its neighbours.
 bool hasCollinearVertex(const Ring& ring) {
   for (int i = 0; i < ring.size(); ++i) {
-    if (distanceToChord(ring.at(i - 1), ring.at(i), ring.at(i + 1)) < kCollinearTolerance) {
+    if (distanceToChord(ring.at(i - 1), ring.at(i), ring.at(i + 1)) < kPolygonPointTolerance) {
       return true;
     }
   }
@@ -247,7 +248,7 @@ PolygonBuild refused(ShapeError error) {
 // describe() cannot see the caller's limits; its figures quote the defaults.
 static_assert(ShapeLimits{}.minArea == Real(1e-3) && ShapeLimits{}.maxArea == Real(1000));
 static_assert(ShapeLimits{}.minRadius == Real(0.02) && ShapeLimits{}.maxRadius == Real(20));
-static_assert(kLinearSlop == Real(0.005), "duplicate message quotes 2.5 mm");
+static_assert(kLinearSlop == Real(0.005), "duplicate message quotes 0.5 mm");
 
 }  // namespace
 
@@ -262,7 +263,7 @@ std::string_view describe(ShapeError error) {
     case ShapeError::NonFinite:
       return "shape has a non-finite coordinate (NaN or infinity)";
     case ShapeError::DuplicatePoints:
-      return "polygon has duplicate points (closer than 2.5 mm)";
+      return "polygon has duplicate points (closer than 0.5 mm)";
     case ShapeError::CollinearPoints:
       return "polygon has three collinear points";
     case ShapeError::SelfIntersecting:
@@ -782,11 +783,14 @@ namespace {
 constexpr double kChainPointSpacing = kLinearSlop;
 
 // Edges a and b of a chain (a before b) share vertex `joint`: they fold back
-// when b leaves the joint along a, collinear and reversed.
+// when b leaves the joint along a, reversed and within half the linear slop
+// of collinear.
+constexpr double kChainFoldTolerance = 0.5 * kLinearSlop;
+
 bool foldsBack(const Point& before, const Point& joint, const Point& after) {
   const Point in = joint - before;
   const Point out = after - joint;
-  return in.dot(out) < 0 && std::abs(cross2(in, out)) <= kCollinearTolerance * out.norm();
+  return in.dot(out) < 0 && std::abs(cross2(in, out)) <= kChainFoldTolerance * out.norm();
 }
 
 // Every edge of the polyline against every other edge that shares no point
@@ -915,7 +919,8 @@ bool strictlyConvex(std::span<const Point> points, const std::vector<int>& piece
     const Point& a = points[piece[(i + n - 1) % n]];
     const Point& b = points[piece[i]];
     const Point& c = points[piece[(i + 1) % n]];
-    if (cross2(b - a, c - b) <= 0 || distanceToChord(a, b, c) < kCollinearTolerance) return false;
+    if (cross2(b - a, c - b) <= 0 || distanceToChord(a, b, c) < kPolygonPointTolerance)
+      return false;
   }
   return true;
 }

@@ -1,6 +1,8 @@
 #include "support_pass.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "world_data.h"
@@ -14,6 +16,10 @@ constexpr std::int32_t kUnreached = -1;
 // ones lean on their neighbour; among them the 30 degrees of circles packed
 // in a pile, which lifting one-sidedly would keep stirring.
 constexpr Real kMinUpwardNormal = Real(0.9);
+// cos(5 degrees): a row between two bodies on a contact further off level
+// than this leans, and runs before the soft rows (support_pass.h).
+constexpr Real kMinFlatNormal = Real(0.9962);
+constexpr std::int8_t kFlat = 2;
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
@@ -57,7 +63,8 @@ Vec2 upwards(const Vec2& gravity) {
 
 std::int8_t facingOf(const Vec2& normal, const Vec2& up) {
   const Real upward = normal.dot(up);
-  return upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+  const std::int8_t side = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+  return std::abs(upward) >= kMinFlatNormal ? std::int8_t(kFlat * side) : side;
 }
 
 // Breadth-first from the static dummy (state 0) over the level contacts
@@ -179,13 +186,16 @@ void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
     deepest = std::max(deepest, sink_[std::size_t(upper)]);
   }
   rows_.clear();
+  leaningRows_ = 0;
   groupStart_.assign(1, 0);
   storeyGroupStart_.assign(1, 0);
   for (std::size_t storey = 0; storey + 1 < candidateStoreyStart_.size(); ++storey) {
     for (std::int32_t group = candidateStoreyStart_[storey]; group < candidateStoreyStart_[storey + 1]; ++group) {
       for (std::int32_t r = candidateGroupStart_[std::size_t(group)]; r < candidateGroupStart_[std::size_t(group) + 1]; ++r) {
         const SupportRow& row = candidates_[std::size_t(r)];
-        if (keeps(row, refs)) rows_.push_back(row);
+        if (!keeps(row, refs)) continue;
+        rows_.push_back(row);
+        leaningRows_ += row.leans ? 1 : 0;
       }
       if (std::int32_t(rows_.size()) > groupStart_.back()) groupStart_.push_back(std::int32_t(rows_.size()));
     }
@@ -196,6 +206,7 @@ void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
 void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
                         const ContactSoftness& softness, Real h) {
   rows_.clear();
+  leaningRows_ = 0;
   groupStart_.assign(1, 0);
   storeyGroupStart_.assign(1, 0);
   if (refs.empty() || world.settings.gravity.squaredNorm() == 0) {
@@ -233,6 +244,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     SupportRow row;
     row.ref = static_cast<std::int32_t>(i);
     row.upperIsB = upperIsB;
+    row.leans = lower > 0 && std::abs(ref.facing) != kFlat;
     unsorted_.push_back(row);
     rowLevel_.push_back(lower);
     topLevel = std::max(topLevel, lower);

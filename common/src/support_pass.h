@@ -10,6 +10,17 @@
 // into its support. The soft rows still carry the loads (their impulses are
 // what the lower bodies feel); the support pass removes the sinking they
 // leave behind, and its impulse raises the friction limit to the whole load.
+// On the static world a row is a rigid contact: where friction holds its
+// body sideways, the row also keeps its lift from making the points slip.
+//
+// A row lifts its upper body along the contact's normal and leaves the
+// lower one as it is. Off level, that lift also pushes the upper body
+// sideways, with nothing pushing the lower one back: run after the soft
+// rows, it left each sub-step's slide to the next, and an arch's stones,
+// leaning 7 to 23 degrees on each other, crept apart at 1 cm/s. The rows
+// between two bodies that lean more than 5 degrees therefore run before the
+// soft rows, whose friction then has the last word on how they slide; the
+// others (flat ones, and all on the static world) after them.
 //
 // Only stacks that need it get rows. A soft contact holding a load L sinks
 // by about L times its compliance, and a stack's top by the sum of those
@@ -40,15 +51,22 @@ inline constexpr Real kSupportedSink = Real(0.001);
 /// Up: against gravity (zero without it).
 Vec2 upwards(const Vec2& gravity);
 /// A contact of this normal is level enough to stand on (ConstraintRef::facing):
-/// +1 with B above, -1 with A above, 0 not level.
+/// +1 with B above, -1 with A above, 0 not level; twice that when within
+/// 5 degrees of level (flat: a row on it does not lean).
 std::int8_t facingOf(const Vec2& normal, const Vec2& up);
 
-/// One supporting contact: its ConstraintRef and which side holds the upper
-/// body.
+/// One supporting contact: its ConstraintRef, which side holds the upper
+/// body, and whether it leans (between two bodies, more than 5 degrees off
+/// level).
 struct SupportRow {
   std::int32_t ref = 0;
   bool upperIsB = false;
+  bool leans = false;
 };
+
+/// Which of the pass's rows a run of it solves: the leaning ones, before
+/// the soft rows of a sub-step, or the others, after them.
+enum class SupportRows : std::uint8_t { Leaning, Standing };
 
 /// Which contacts hold which bodies up, and in what order. The pass itself
 /// runs on bundles of rows (the wide contact kernels, contact_solver_wide.h):
@@ -82,6 +100,8 @@ class SupportPass {
   /// pass runs storey by storey from the ground up, each storey's groups
   /// backwards on alternate sub-steps (so no side is favoured).
   std::span<const std::int32_t> storeyStarts() const { return storeyGroupStart_; }
+  /// How many of the rows lean (SupportRow::leans).
+  int leaningRows() const { return leaningRows_; }
 
  private:
   /// Compliance (impulseScale / (massScale * biasRate)) of the soft contacts
@@ -138,6 +158,7 @@ class SupportPass {
   std::vector<std::int32_t> stack_;
   std::vector<Real> stackSink_;
   std::vector<SupportRow> rows_;
+  int leaningRows_ = 0;
   std::vector<std::int32_t> groupStart_;
   std::vector<std::int32_t> storeyGroupStart_;
 };

@@ -9,6 +9,7 @@
 // and only read their lower ones, which nothing in the storey moves: the
 // lanes of a bundle are independent, and any width gives the same result.
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 
@@ -44,7 +45,27 @@ void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c
     cp.anchorB = Vec2(p.anchorBX.v[lane], p.anchorBY.v[lane]);
     cp.baseSeparation = p.baseSeparation.v[lane];
     cp.normalMass = p.normalMass.v[lane];
+    cp.friction = p.friction.v[lane];
+    cp.normalImpulse = p.normalImpulse.v[lane];
+    cp.tangentImpulse = p.tangentImpulse.v[lane];
+    cp.supportImpulse = p.supportImpulse.v[lane];
   }
+}
+
+// A contact holds its upper body sideways when last step's friction
+// carried at least this share of what its cone allowed: a body pushed from
+// one side (an arch's foot), not one standing free.
+constexpr Real kSidewaysShare = Real(0.5);
+
+Real slipFrictionOf(const ContactConstraint& c) {
+  Real tangent = 0;
+  Real normal = 0;
+  for (int j = 0; j < c.pointCount; ++j) {
+    tangent += c.points[j].tangentImpulse;
+    normal += c.points[j].normalImpulse + c.points[j].supportImpulse;
+  }
+  const Real friction = c.points[0].friction;
+  return std::abs(tangent) >= kSidewaysShare * friction * normal && normal > 0 ? friction : Real(0);
 }
 
 // One row's numbers into its lane, upper body as B: a row holding up A is
@@ -60,6 +81,7 @@ void packSupportLane(WideSupportRow<F>& w, int lane, const ContactConstraint& c,
   setLane(w.normalY, lane, normal.y());
   setLane(w.invMass, lane, upperIsB ? c.invMassB : c.invMassA);
   setLane(w.invInertia, lane, upperIsB ? c.invInertiaB : c.invInertiaA);
+  setLane(w.slipFriction, lane, slipFrictionOf(c));
   for (int j = 0; j < 2; ++j) {
     const ConstraintPoint& cp = c.points[j];
     const Vec2& lower = upperIsB ? cp.anchorA : cp.anchorB;
@@ -83,6 +105,9 @@ void finishSupportBundle(WideSupportRow<F>& row) {
   const F zero = simd::broadcast<F>(0);
   for (WideSupportPoint<F>& p : row.points) {
     p.arm = simd::select(p.present, p.anchorBX * row.normalY - p.anchorBY * row.normalX, zero);
+    // anchor x tangent, the tangent being (normalY, -normalX).
+    p.tangentArm =
+        simd::select(p.present, -(p.anchorBX * row.normalX + p.anchorBY * row.normalY), zero);
   }
   const F arm0 = row.points[0].arm;
   const F arm1 = row.points[1].arm;
@@ -122,6 +147,7 @@ void placeSupportRows(const SupportPass& pass, std::size_t refCount, WideContact
     for (int lane = 0; lane < lanes; ++lane) {
       const SupportRow& row = pass.rows()[std::size_t(first + lane)];
       set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
+      setLaneFlag(bundles[std::size_t(b)].leans, lane, row.leans);
     }
   }
 }
@@ -178,11 +204,13 @@ Lift<F> liftImpulses(const WideSupportRow<F>& row, F b1, F b2) {
   return {simd::select(anyShortfall, first, zero), simd::select(anyShortfall, second, zero)};
 }
 
+// How much faster each point's normal speed must be for it to stop
+// approaching the lower body (or, when apart, closing more than the gap
+// this sub-step).
 template <class F>
-void holdUp(std::span<SolverState> states, F inverseSubStep, WideSupportRow<F>& row) {
+Lift<F> shortfalls(const WideBody<F>& lower, const WideBody<F>& upper, F inverseSubStep,
+                   const WideSupportRow<F>& row) {
   const F zero = simd::broadcast<F>(0);
-  const WideBody<F> lower = gather<F>(states, row.stateA);
-  WideBody<F> upper = gather<F>(states, row.stateB);
   const F dpx = upper.dpx - lower.dpx;
   const F dpy = upper.dpy - lower.dpy;
   F shortfall[2];
@@ -192,22 +220,89 @@ void holdUp(std::span<SolverState> states, F inverseSubStep, WideSupportRow<F>& 
     const F slowestAllowed = simd::select(simd::greater(separation, zero), (-separation) * inverseSubStep, zero);
     shortfall[j] = simd::select(p.present, slowestAllowed - normalVelocity(lower, upper, row, p), zero);
   }
-  const Lift<F> lift = liftImpulses(row, shortfall[0], shortfall[1]);
-  row.points[0].impulse = lift.first;
-  row.points[1].impulse = lift.second;
+  return {shortfall[0], shortfall[1]};
+}
+
+// Speed of the upper body's point over the lower body's along the tangent.
+template <class F>
+F slipSpeed(const WideBody<F>& lower, const WideBody<F>& upper, const WideSupportRow<F>& row,
+            const WideSupportPoint<F>& p) {
+  const Relative<F> dv = relativeVelocity(lower, upper, p);
+  return dv.vx * row.normalY - dv.vy * row.normalX;
+}
+
+// A row on the static world is a rigid contact, and its lift must not make
+// its points slip. Lifting one point more than the other turns the upper
+// body about its centre, which slides its points along the ground after the
+// friction rows have held them: a stone pushed from one side (an arch's
+// foot) was turned the same way every sub-step and crept outwards. Friction
+// at the face (the points' mean) takes that slip back, within the friction
+// of the lift; both points at once, as one point after the other would
+// lean a straight tower.
+template <class F>
+void holdSlip(const WideBody<F>& lower, WideBody<F>& upper, const WideSupportRow<F>& row,
+              const F slipBefore[2], const Lift<F>& lift) {
+  const F zero = simd::broadcast<F>(0);
+  const F half = simd::broadcast<F>(0.5f);
+  const WideSupportPoint<F>& first = row.points[0];
+  const WideSupportPoint<F>& second = row.points[1];
+  const F slip0 = slipSpeed(lower, upper, row, first) - slipBefore[0];
+  const F slip1 = slipSpeed(lower, upper, row, second) - slipBefore[1];
+  const F both = simd::both(first.present, second.present);
+  const F slip =
+      simd::select(both, half * (slip0 + slip1), simd::select(first.present, slip0, zero));
+  const F arm = simd::select(both, half * (first.tangentArm + second.tangentArm), first.tangentArm);
+  const F response = row.invMass + row.invInertia * arm * arm;
+  const F mass = simd::select(first.present, simd::broadcast<F>(1) / response, zero);
+  const F limit = row.slipFriction * (lift.first + lift.second);
+  const F impulse = simd::clamp(-(mass * slip), -limit, limit);
+  upper.vx += row.invMass * impulse * row.normalY;
+  upper.vy -= row.invMass * impulse * row.normalX;
+  upper.w += row.invInertia * arm * impulse;
+}
+
+// The lift of the lanes a run solves (`rows`), and none in the others, whose
+// impulses stay as their own run left them.
+template <class F>
+Lift<F> liftOf(SupportRows rows, const Lift<F>& lift, WideSupportRow<F>& row) {
+  const F zero = simd::broadcast<F>(0);
+  if (rows == SupportRows::Leaning) {
+    row.points[0].impulse = simd::select(row.leans, lift.first, row.points[0].impulse);
+    row.points[1].impulse = simd::select(row.leans, lift.second, row.points[1].impulse);
+    return {simd::select(row.leans, lift.first, zero), simd::select(row.leans, lift.second, zero)};
+  }
+  row.points[0].impulse = simd::select(row.leans, row.points[0].impulse, lift.first);
+  row.points[1].impulse = simd::select(row.leans, row.points[1].impulse, lift.second);
+  return {simd::select(row.leans, zero, lift.first), simd::select(row.leans, zero, lift.second)};
+}
+
+template <class F>
+void holdUp(std::span<SolverState> states, F inverseSubStep, SupportRows rows, bool onStaticWorld,
+            WideSupportRow<F>& row) {
+  if (rows == SupportRows::Leaning && !simd::any(row.leans)) return;
+  const WideBody<F> lower = gather<F>(states, row.stateA);
+  WideBody<F> upper = gather<F>(states, row.stateB);
+  F slipBefore[2] = {};
+  if (onStaticWorld) {
+    for (int j = 0; j < 2; ++j) slipBefore[j] = slipSpeed(lower, upper, row, row.points[j]);
+  }
+  const Lift<F> shortfall = shortfalls(lower, upper, inverseSubStep, row);
+  const Lift<F> lift = liftOf(rows, liftImpulses(row, shortfall.first, shortfall.second), row);
   const F push = row.invMass * (lift.first + lift.second);
   upper.vx += push * row.normalX;
   upper.vy += push * row.normalY;
   upper.w += row.invInertia * (row.points[0].arm * lift.first + row.points[1].arm * lift.second);
+  if (onStaticWorld) holdSlip(lower, upper, row, slipBefore, lift);
   scatter<F>(states, row.stateB, upper);
 }
 
-// Storey by storey from the ground; within a storey the groups run
-// backwards on the sub-steps that also reverse the contacts' point order.
-// A group's bundles run side by side: its rows lift distinct upper bodies
-// and only read lower ones.
+// Storey by storey from the ground (storey 0: the rows on the static
+// world); within a storey the groups run backwards on the sub-steps that
+// also reverse the contacts' point order. A group's bundles run side by
+// side: its rows lift distinct upper bodies and only read lower ones.
 template <class F>
-void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, const SupportPass& pass) {
+void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
+                      const SupportPass& pass, SupportRows rows) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   const F inverseSubStep = simd::broadcast<F>(context.inverseSubStep);
   const std::span<const std::int32_t> storeys = pass.storeyStarts();
@@ -220,7 +315,8 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set, 
       context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerRange,
                                [&](std::int32_t begin, std::int32_t end) {
                                  for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
-                                   holdUp(context.states, inverseSubStep, bundles[std::size_t(b)]);
+                                   holdUp(context.states, inverseSubStep, rows, storey == 0,
+                                          bundles[std::size_t(b)]);
                                  }
                                });
     }

@@ -20,6 +20,9 @@ struct WideSupportPoint {
   F impulse;
   /// 1 / K_jj: this point lifting alone.
   F singleMass;
+  /// The upper body's lever arm about the tangent (the normal's right
+  /// perpendicular).
+  F tangentArm;
 };
 
 template <class F>
@@ -33,6 +36,12 @@ struct WideSupportRow {
   /// The upper body's response K at both points, inverted (zero when singular).
   F pairInverse11, pairInverse12, pairInverse22;
   F k12;
+  /// The friction with which a row on the static world holds its lift from
+  /// making the points slip: the contact's where friction holds it
+  /// sideways, else zero (support_pass_wide_impl.h, holdSlip).
+  F slipFriction;
+  /// All-ones where the row leans (SupportRow::leans).
+  F leans;
   WideSupportPoint<F> points[2];
 };
 

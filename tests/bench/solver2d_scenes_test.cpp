@@ -63,14 +63,25 @@ TEST(Solver2D, VerticalStack_EveryBoxWithinFiveCentimetresOfStraightBelow) {
 
 // 17 stones without mortar and four slabs, friction 0.6: Solver2D asks that
 // no piece moves more than 1 cm in 10 s; Impulse does not reach it. The
-// arch stands but sags: its feet spread (the stones slip on their joints
-// at friction 0.6; with friction 1 they hold and the sag is the soft
-// contacts' give, 10 cm), the top slab 47 cm down after 10 s and still
-// sinking at about 1 cm/s. Held to that so it can only get better.
-TEST(Solver2D, Arch_StandsSaggingUnderSixtyCentimetres) {
+// arch settles within its first second, the farthest piece 9.9 cm from its
+// start (Box2D v3: 31 cm), most of it its joints slipping at friction 0.6
+// before the soft contacts have built the thrust that holds them (at
+// friction 1 it settles 3.1 cm). Then it rests (0.1 mm/s at the end). Held
+// to under 12 cm and at rest, so it can only get better.
+TEST(Solver2D, Arch_SettlesUnderTwelveCentimetres_ThenRests) {
   const Figures figures = runInImpulse("s2d-arch");
-  EXPECT_LT(figures["max slip m"], 0.6);
-  EXPECT_LT(figures["end speed m/s"], 0.05);
+  EXPECT_LT(figures["max slip m"], 0.12);
+  EXPECT_LT(figures["end speed m/s"], 0.002);
+}
+
+// Five storeys of 2 mm cards leaning at 25 degrees, friction 0.7: Solver2D
+// asks that no card moves more than 1 cm in 10 s; Impulse does not reach
+// it. The house stands: no card gets more than 3.9 cm from its start, and
+// all rest at the end (0.03 mm/s). Held to under 5 cm and at rest.
+TEST(Solver2D, CardHouse_StandsWithNoCardMovingOverFiveCentimetres) {
+  const Figures figures = runInImpulse("s2d-card-house");
+  EXPECT_LT(figures["max slip m"], 0.05);
+  EXPECT_LT(figures["end speed m/s"], 0.002);
 }
 
 // The 15 dominoes all fall (past 30 degrees) within 10 s, each after the

@@ -240,9 +240,9 @@ TEST(ShapeErrorTest, NanOrInfinityIsNonFinite) {
 
 TEST(ShapeErrorTest, RepeatedOrNearlyRepeatedPointIsDuplicate) {
   const std::vector<Vec2> repeated = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 0), Vec2(0, 1)};
-  // 1 mm apart: below the 2.5 mm duplicate tolerance.
+  // 0.2 mm apart: below the 0.5 mm duplicate tolerance.
   const std::vector<Vec2> nearly = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1),
-                                    Vec2(Real(0.001), 0)};
+                                    Vec2(Real(0.0002), 0)};
   expectRefused(repeated, ShapeError::DuplicatePoints);
   expectRefused(nearly, ShapeError::DuplicatePoints);
 }
@@ -250,12 +250,27 @@ TEST(ShapeErrorTest, RepeatedOrNearlyRepeatedPointIsDuplicate) {
 TEST(ShapeErrorTest, PointOnTheLineOfItsNeighboursIsCollinear) {
   const std::vector<Vec2> midEdge = {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(2, 2), Vec2(0, 2)};
   const std::vector<Vec2> allOnALine = {Vec2(0, 0), Vec2(1, 1), Vec2(3, 3)};
-  // 1 mm off the line, below the 2.5 mm tolerance.
-  const std::vector<Vec2> nearlyOnEdge = {Vec2(0, 0), Vec2(1, Real(-0.001)), Vec2(2, 0), Vec2(2, 2),
-                                          Vec2(0, 2)};
+  // 0.2 mm off the line, below the 0.5 mm tolerance.
+  const std::vector<Vec2> nearlyOnEdge = {Vec2(0, 0), Vec2(1, Real(-0.0002)), Vec2(2, 0),
+                                          Vec2(2, 2), Vec2(0, 2)};
   expectRefused(midEdge, ShapeError::CollinearPoints);
   expectRefused(allOnALine, ShapeError::CollinearPoints);
   expectRefused(nearlyOnEdge, ShapeError::CollinearPoints);
+}
+
+// A playing card (2 mm by 40 cm) is a valid box: its corners 2 mm apart are
+// distinct points, each off the line of its neighbours. Its 8 cm^2 needs a
+// world's lower minimum area. A sliver ten times thinner is refused.
+TEST(ShapeErrorTest, TwoMillimetreCardIsValid_TwoTenthsOfAMillimetreSliverIsNot) {
+  const auto box = [](Real halfWidth) {
+    return std::vector<Vec2>{Vec2(-halfWidth, Real(-0.2)), Vec2(halfWidth, Real(-0.2)),
+                             Vec2(halfWidth, Real(0.2)), Vec2(-halfWidth, Real(0.2))};
+  };
+  const ShapeLimits smallShapes{.minArea = Real(1e-5)};
+  const PolygonBuild card = buildPolygon(box(Real(0.001)), smallShapes);
+  EXPECT_EQ(card.error, ShapeError::None) << describe(card.error);
+  EXPECT_NEAR(card.polygon.vertices[1].x() - card.polygon.vertices[0].x(), 0.002, 1e-6);
+  expectRefused(box(Real(0.0001)), ShapeError::DuplicatePoints, smallShapes);
 }
 
 TEST(ShapeErrorTest, CrossingEdgesAreSelfIntersecting) {
