@@ -10,7 +10,7 @@ namespace impulse::viewer {
 namespace {
 
 const PixelRect kViewport{100, 0, 800, 600};
-const Vec2 kScene(25, 18.75f);
+const AABB kScene = kPresetScene;
 
 TEST(ViewArea, IsTheViewportsWorldRectangleGrownByTheMargin) {
   const ViewTransform view(kViewport, kScene);
@@ -21,7 +21,7 @@ TEST(ViewArea, IsTheViewportsWorldRectangleGrownByTheMargin) {
   EXPECT_NEAR(area.lower.y(), lower.y() - 2, 1e-4);
   EXPECT_NEAR(area.upper.x(), upper.x() + 2, 1e-4);
   EXPECT_NEAR(area.upper.y(), upper.y() + 2, 1e-4);
-  EXPECT_TRUE(area.contains(AABB{Vec2(0, 0), kScene})) << "the fitted scene is in view";
+  EXPECT_TRUE(area.contains(kScene)) << "the fitted scene is in view";
 }
 
 TEST(ViewArea, AMoveWithinHalfTheMarginKeepsTheAreaSent_APanOrZoomPastItAsksAgain) {
