@@ -451,6 +451,7 @@ void App::draw() {
   }
   if (const client::Client* client = connection_->client()) {
     const auto& mirror = client->mirror();
+    input.origin = mirror.origin();
     if (mirror.preset()) input.preset = &*mirror.preset();
     input.gravity = mirror.gravity();
     input.serverPaused = mirror.paused();

@@ -159,5 +159,38 @@ TEST(FarRoom, ARoomTooLargeToShowOpensOnItsBodies) {
   EXPECT_NEAR(frame.upper.y(), -9910 + margin, 1e-2);
 }
 
+TEST(FarRoom, TheInspectorShowsAndTakesPositionsFromZero_InDouble) {
+  net_test::ServerProcess server({"--paused"});
+  client::Client maker(roomMaker(server.port(), "level", {{83000, 0}, {83100, 100}}));
+  ASSERT_TRUE(maker.request(client::clearWorld()).command_result().ok());
+  const v1::ServerMessage made =
+      maker.request(client::spawnCircle({83012.5, 10.25}, kBallRadius, {.isStatic = true}));
+  ASSERT_TRUE(made.command_result().ok()) << made.command_result().error();
+  const std::uint32_t ball = made.command_result().body_id();
+
+  ViewerHarness viewer(server.port(), 1280, 720, {}, "level");
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().world().find(ball) != nullptr; }));
+  const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
+  viewer.tap(SDLK_m);
+  viewer.click(mirror.toLocal({83012.5, 10.25}));
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().panelState().poseFields.has_value(); }));
+  viewer.runFrames(3);
+  const viewer::FieldsEdit& shown = viewer.app().panelState().poseEdit;
+  EXPECT_EQ(shown.body, ball);
+  EXPECT_EQ(shown.values[0], 83012.5) << "x from (0, 0), not from the room's origin";
+  EXPECT_EQ(shown.values[1], 10.25);
+
+  // x is the first of the three fields: a click selects its text, typing replaces it.
+  const viewer::PixelRect pose = *viewer.app().panelState().poseFields;
+  viewer.clickPixel(pose.x + pose.w / 6, pose.y + pose.h / 2);
+  viewer.typeText("83020.125");
+  viewer.tap(SDLK_RETURN);
+  const auto queried = [&] { return maker.request(client::queryBody(ball)).body_info().state().position(); };
+  ASSERT_TRUE(observeUntil(viewer, maker, [&] { return std::abs(queried().x() - 83020.125) < 1e-3; }))
+      << "the ball is at x = " << queried().x();
+  EXPECT_NEAR(queried().y(), 10.25, 1e-3);
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().panelState().poseEdit.values[0] == 83020.125; }));
+}
+
 }  // namespace
 }  // namespace impulse::viewer_test
