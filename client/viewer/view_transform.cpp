@@ -24,11 +24,13 @@ ViewTransform::ViewTransform(PixelRect viewport, const AABB& frame, Camera camer
 }
 
 PixelPoint ViewTransform::toPixels(const Vec2& world) const {
-  return {offsetX_ + (world.x() - frame_.lower.x()) * scale_, offsetY_ + (frame_.upper.y() - world.y()) * scale_};
+  return {offsetX_ + (world.x() - frame_.lower.x()) * scale_,
+          offsetY_ + (frame_.upper.y() - world.y()) * scale_};
 }
 
 Vec2 ViewTransform::toWorld(float px, float py) const {
-  return Vec2(frame_.lower.x() + (px - offsetX_) / scale_, frame_.upper.y() - (py - offsetY_) / scale_);
+  return Vec2(frame_.lower.x() + (px - offsetX_) / scale_,
+              frame_.upper.y() - (py - offsetY_) / scale_);
 }
 
 Camera zoomAt(const Camera& camera, PixelRect viewport, const AABB& frame, float factor, float px,

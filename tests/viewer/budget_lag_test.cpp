@@ -42,8 +42,8 @@ void spawnDriftingGrid(client::Client& maker) {
   std::vector<std::uint64_t> requests;
   for (int i = 0; i < kBodies; ++i) {
     const client::Point at{2 + kSpacing * (i % kColumns), 1 + kSpacing * (i / kColumns)};
-    requests.push_back(maker.send(
-        client::spawnCircle(at, 0.1, {.ignoreGravity = true, .velocityX = kSpeed, .velocityY = 0})));
+    requests.push_back(maker.send(client::spawnCircle(
+        at, 0.1, {.ignoreGravity = true, .velocityX = kSpeed, .velocityY = 0})));
   }
   for (const std::uint64_t id : requests) {
     const auto reply = maker.awaitReply(id, std::chrono::seconds(20));
@@ -55,8 +55,9 @@ void spawnDriftingGrid(client::Client& maker) {
 // frame of kMeasured after kWarmUp.
 Lag measureLag(std::uint16_t port, client::Client& observer, std::optional<double> budget) {
   ViewerHarness viewer(port, [&](viewer::ViewerOptions& options) { options.budget = budget; });
-  EXPECT_TRUE(observeUntil(viewer, observer,
-                           [&] { return viewer.app().world().bodies().size() == std::size_t(kBodies); }));
+  EXPECT_TRUE(observeUntil(viewer, observer, [&] {
+    return viewer.app().world().bodies().size() == std::size_t(kBodies);
+  }));
   const auto start = std::chrono::steady_clock::now();
   Lag lag;
   observeUntil(
@@ -66,7 +67,8 @@ Lag measureLag(std::uint16_t port, client::Client& observer, std::optional<doubl
         if (since < kWarmUp) return false;
         for (const viewer::DrawnBody& drawn : viewer.app().world().bodies()) {
           const client::MirrorBody* truth = observer.mirror().find(BodyId{drawn.state.id});
-          if (truth != nullptr) lag.metres.push_back((truth->state.position - drawn.state.position).norm());
+          if (truth != nullptr)
+            lag.metres.push_back((truth->state.position - drawn.state.position).norm());
         }
         return since > kWarmUp + kMeasured;
       },
@@ -76,9 +78,11 @@ Lag measureLag(std::uint16_t port, client::Client& observer, std::optional<doubl
 
 void report(const char* stream, const Lag& lag) {
   const auto ms = [](double metres) { return metres / kSpeed * 1000; };
-  std::printf("%-22s %8zu samples  lag median %.3f m (%.0f ms)  p99 %.3f m (%.0f ms)  max %.3f m (%.0f ms)\n",
-              stream, lag.metres.size(), lag.quantile(0.5), ms(lag.quantile(0.5)), lag.quantile(0.99),
-              ms(lag.quantile(0.99)), lag.maximum(), ms(lag.maximum()));
+  std::printf(
+      "%-22s %8zu samples  lag median %.3f m (%.0f ms)  p99 %.3f m (%.0f ms)  max %.3f m (%.0f "
+      "ms)\n",
+      stream, lag.metres.size(), lag.quantile(0.5), ms(lag.quantile(0.5)), lag.quantile(0.99),
+      ms(lag.quantile(0.99)), lag.maximum(), ms(lag.maximum()));
 }
 
 TEST(ViewerUnderBudget, ThePictureLagsByThePlayoutDelayWithout_AndWithinTheStatedWaitWithABudget) {
@@ -89,8 +93,10 @@ TEST(ViewerUnderBudget, ThePictureLagsByThePlayoutDelayWithout_AndWithinTheState
 
   const Lag free = measureLag(server.port(), observer, std::nullopt);
   const Lag budgeted = measureLag(server.port(), observer, kBudget);
-  std::printf("%d bodies drifting at %.1f m/s; lag = distance from the server's state (unbudgeted observer)\n",
-              kBodies, kSpeed);
+  std::printf(
+      "%d bodies drifting at %.1f m/s; lag = distance from the server's state (unbudgeted "
+      "observer)\n",
+      kBodies, kSpeed);
   report("no budget", free);
   report("budget 32000 B/s", budgeted);
   ASSERT_FALSE(free.metres.empty());

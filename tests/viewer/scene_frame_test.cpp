@@ -45,8 +45,10 @@ TEST(SceneFrame, AHugeRoomOpensOnItsBodiesGrownByTheMargin_OrItsCentreWhenEmpty)
 
   // One body: the preset scene's size around it.
   const std::vector<Vec2> one{Vec2(100, 200)};
-  expectBox(openingFrame(bounds, one), {Vec2(100, 200) - kSceneSize / 2, Vec2(100, 200) + kSceneSize / 2});
-  expectBox(openingFrame(bounds, {}), {Vec2(5030, 3000) - kSceneSize / 2, Vec2(5030, 3000) + kSceneSize / 2});
+  expectBox(openingFrame(bounds, one),
+            {Vec2(100, 200) - kSceneSize / 2, Vec2(100, 200) + kSceneSize / 2});
+  expectBox(openingFrame(bounds, {}),
+            {Vec2(5030, 3000) - kSceneSize / 2, Vec2(5030, 3000) + kSceneSize / 2});
 }
 
 TEST(SceneFrame, TheViewMapsTheFramesCornersToTheFittedRectangle_AndBack) {
