@@ -9,6 +9,7 @@
 #include "body_metrics.h"
 #include "impulse/client/commands.h"
 #include "key_map.h"
+#include "scene_frame.h"
 #include "side_panel.h"
 #include "view_area.h"
 
@@ -76,7 +77,7 @@ WindowLayout App::layout() const {
 }
 
 ViewTransform App::view() const {
-  return ViewTransform(layout().scene, kSceneSize, controls_.camera());
+  return ViewTransform(layout().scene, controls_.frame(), controls_.camera());
 }
 
 const client::MirrorBody* App::mirrored(std::uint32_t id) const {
@@ -264,8 +265,26 @@ void App::exchange() {
   if (!controls_.selectedBody()) inspected_.reset();
   handleReplies();
   followEvents(t);
+  frameRoom();
   followView();
   recordFigures();
+}
+
+void App::frameRoom() {
+  const int link = connection_->connected() ? connection_->connections() : 0;
+  if (link == 0 || framedConnection_ == link) return;
+  const client::Client& client = *connection_->client();
+  const client::WorldMirror& mirror = client.mirror();
+  const auto local = [&](const v1::Vec2& p) { return mirror.toLocal(Vec2d(p.x(), p.y())); };
+  const AABB bounds{local(client.welcome().world_min()), local(client.welcome().world_max())};
+  if (opensOnBodies(bounds) && mirror.snapshotsApplied() == 0) return;
+  framedConnection_ = link;
+  if (framedBounds_ && framedBounds_->lower == bounds.lower && framedBounds_->upper == bounds.upper) return;
+  std::vector<Vec2> bodies;
+  bodies.reserve(mirror.bodies().size());
+  for (const auto& [id, body] : mirror.bodies()) bodies.push_back(body.state.position);
+  controls_.setFrame(openingFrame(bounds, bodies));
+  framedBounds_ = bounds;
 }
 
 void App::followView() {
@@ -275,7 +294,7 @@ void App::followView() {
       connection_->send(client::setBandwidthBudget(*options_.budget), "budget")) {
     budgetConnection_ = link;
   }
-  if (!options_.areaMargin) return;
+  if (!options_.areaMargin || framedConnection_ != link) return;
   const float margin = *options_.areaMargin;
   const AABB wanted = viewArea(view(), margin);
   if (areaConnection_ == link && !areaMoved(sentArea_, wanted, margin / 2)) return;
@@ -432,6 +451,7 @@ void App::draw() {
   }
   if (const client::Client* client = connection_->client()) {
     const auto& mirror = client->mirror();
+    input.origin = mirror.origin();
     if (mirror.preset()) input.preset = &*mirror.preset();
     input.gravity = mirror.gravity();
     input.serverPaused = mirror.paused();

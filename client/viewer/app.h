@@ -90,8 +90,13 @@ class App {
   /// after a reconnect), unsubscribes when they go off, and turns the
   /// events received into flashes.
   void followEvents(double now);
+  /// Frames the room on a new connection (scene_frame.h), once its bounds
+  /// (and, for a room too large to open on, its first snapshot) are known;
+  /// a reconnect to a room with the same bounds keeps the view.
+  void frameRoom();
   /// Sends --budget on every new connection, and --area-margin's area on
-  /// every new connection and whenever the view moves past half the margin.
+  /// every new connection once the room is framed and whenever the view
+  /// moves past half the margin.
   void followView();
   void recordFigures();
   void draw();
@@ -127,6 +132,9 @@ class App {
   int budgetConnection_ = 0;
   int areaConnection_ = 0;
   AABB sentArea_;
+  /// The connection whose room is framed, and the bounds it was framed for.
+  int framedConnection_ = 0;
+  std::optional<AABB> framedBounds_;
   std::uint64_t eventMessages_ = 0;
   std::optional<v1::BodyInfo> inspected_;
   double nextInspect_ = 0;

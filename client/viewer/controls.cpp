@@ -320,7 +320,12 @@ std::optional<Vec2> Controls::heldPoint(const Vec2& position, Real angle) const 
 }
 
 void Controls::zoomAt(float factor, float px, float py, const PixelRect& viewport) {
-  camera_ = viewer::zoomAt(camera_, viewport, kSceneSize, factor, px, py);
+  camera_ = viewer::zoomAt(camera_, viewport, frame_, factor, px, py);
+}
+
+void Controls::setFrame(const AABB& frame) {
+  frame_ = frame;
+  camera_ = {};
 }
 
 void Controls::pan(float dx, float dy) {

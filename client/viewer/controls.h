@@ -185,6 +185,11 @@ class Controls {
   Overlays& overlays() { return overlays_; }
   const Overlays& overlays() const { return overlays_; }
   const Camera& camera() const { return camera_; }
+  /// The world rectangle the view fits before zoom and pan (F fits it
+  /// again): the preset scene until a room's frame is set.
+  const AABB& frame() const { return frame_; }
+  /// Where the room opens (scene_frame.h); zoom and pan start afresh.
+  void setFrame(const AABB& frame);
   /// Mouse wheel: zoom by `factor` about the window pixel (px, py).
   void zoomAt(float factor, float px, float py, const PixelRect& viewport);
   /// Right or middle drag: moves the view by pixels.
@@ -294,6 +299,7 @@ class Controls {
   std::uint32_t lastJointTag_ = 0;
   Overlays overlays_;
   Camera camera_;
+  AABB frame_ = kPresetScene;
 
   DrawMode mode_ = DrawMode::None;
   bool nextStatic_ = false;

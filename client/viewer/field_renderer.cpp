@@ -1,6 +1,6 @@
 // Fields drawn under the bodies (WorldRenderer::drawFields): a liquid as its
 // tinted polygon with the surface edge brighter, a fan as its cone out to
-// its range, gravitation as a small marker in the scene's corner (it acts
+// its range, gravitation as a small marker in the frame's corner (it acts
 // everywhere, so there is nothing to outline).
 
 #include <cmath>
@@ -42,8 +42,9 @@ void WorldRenderer::drawFan(ImDrawList& list, const ViewTransform& view, const F
 }
 
 void WorldRenderer::drawGravitationMarker(ImDrawList& list, const ViewTransform& view) {
-  // An orbit glyph above the scene's top-left corner: a dot and its ring.
-  const ImVec2 at = pixelOf(view, Vec2(Real(0.6), kSceneSize.y() - Real(0.6)));
+  // An orbit glyph inside the frame's top-left corner: a dot and its ring.
+  const AABB& frame = view.frame();
+  const ImVec2 at = pixelOf(view, Vec2(frame.lower.x() + Real(0.6), frame.upper.y() - Real(0.6)));
   list.AddCircleFilled(at, 4, packed(palette::kGravitation));
   list.AddCircle(at, 10, packed(palette::kGravitation), 0, 1.5f);
 }

@@ -17,13 +17,15 @@ namespace {
 
 using client::formatNumber;
 
-std::string vec(const v1::Vec2& v, int decimals) {
+std::string vec(const Vec2d& v, int decimals) {
   std::string text = "(";
   text += formatNumber(v.x(), decimals);
   text += ", ";
   text += formatNumber(v.y(), decimals);
   return text += ")";
 }
+
+std::string vec(const v1::Vec2& v, int decimals) { return vec(Vec2d(v.x(), v.y()), decimals); }
 
 std::string yesNo(bool value) { return value ? "yes" : "no"; }
 
@@ -103,7 +105,12 @@ std::string describeShapeIds(const v1::BodyDescriptor& d) {
   return text;
 }
 
-void drawBodyTable(const v1::BodyInfo& info) {
+// The body's position from (0, 0): the reply's is from the room's origin.
+Vec2d absolutePosition(const v1::BodyInfo& info, const Vec2d& origin) {
+  return origin + Vec2d(info.state().position().x(), info.state().position().y());
+}
+
+void drawBodyTable(const v1::BodyInfo& info, const Vec2d& origin) {
   const auto& d = info.descriptor();
   const auto& s = info.state();
   const auto material = wire::materialFromWire(d.material()).value_or(Material::Solid);
@@ -115,7 +122,7 @@ void drawBodyTable(const v1::BodyInfo& info) {
   row("type", d.is_static() ? "static" : d.is_kinematic() ? "kinematic" : "dynamic");
   row("awake", yesNo(s.awake()));
   row("gravity", d.ignore_gravity() ? "ignored" : "felt");
-  row("position", vec(s.position(), 3) + " m");
+  row("position", vec(absolutePosition(info, origin), 3) + " m");
   row("angle", formatNumber(degrees, 1) + " deg (" + formatNumber(s.angle(), 3) + " rad)");
   row("velocity", vec(s.velocity(), 3) + " m/s");
   row("angular vel.", formatNumber(s.angular_velocity(), 3) + " rad/s");
@@ -136,24 +143,30 @@ void drawBodyTable(const v1::BodyInfo& info) {
 // person is typing in them (the server's figures, five a second, would
 // overwrite the typing). Clicking a field selects its text, so typing
 // replaces it. True when Enter was pressed: `edit.values` are then sent.
-bool editFields(const char* id, FieldsEdit& edit, std::uint32_t body, const std::array<float, 3>& current) {
+// Doubles: a position 83 km from (0, 0) keeps its millimetres.
+bool editFields(const char* id, FieldsEdit& edit, std::uint32_t body, const std::array<double, 3>& current) {
   if (edit.body != body || !edit.editing) edit = {body, {current[0], current[1], current[2]}, false};
   ImGui::SetNextItemWidth(-FLT_MIN);
-  const bool entered = ImGui::InputFloat3(id, edit.values, "%.3f",
-                                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  const bool entered =
+      ImGui::InputScalarN(id, ImGuiDataType_Double, edit.values, 3, nullptr, nullptr, "%.3f",
+                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   edit.editing = ImGui::IsItemActive();
   return entered;
 }
 
-// Position and angle: Enter moves the body there at once (SetTransform).
-void drawPoseEditor(const v1::BodyInfo& info, const PanelActions& actions, PanelState& state) {
+// Position (from (0, 0)) and angle: Enter moves the body there at once
+// (SetTransform). The command goes out in the mirror's frame, from the
+// room's origin, as every command of the viewer does: the link adds it back.
+void drawPoseEditor(const v1::BodyInfo& info, const Vec2d& origin, const PanelActions& actions,
+                    PanelState& state) {
   const std::uint32_t id = info.descriptor().id();
-  const auto& s = info.state();
-  const float degrees = float(s.angle() * 180 / std::numbers::pi);
+  const Vec2d position = absolutePosition(info, origin);
+  const double degrees = info.state().angle() * 180 / std::numbers::pi;
   ImGui::TextDisabled("set x, y (m), angle (deg); Enter moves it:");
-  if (editFields("##pose", state.poseEdit, id, {float(s.position().x()), float(s.position().y()), degrees})) {
+  if (editFields("##pose", state.poseEdit, id, {position.x(), position.y(), degrees})) {
     const FieldsEdit& edit = state.poseEdit;
-    actions.send(client::setTransform(id, {edit.values[0], edit.values[1]}, edit.values[2] * std::numbers::pi / 180),
+    const Vec2d target = Vec2d(edit.values[0], edit.values[1]) - origin;
+    actions.send(client::setTransform(id, {target.x(), target.y()}, edit.values[2] * std::numbers::pi / 180),
                  "move");
   }
   if (ImGui::IsItemVisible()) state.poseFields = lastItemRect();
@@ -164,12 +177,12 @@ void drawPoseEditor(const v1::BodyInfo& info, const PanelActions& actions, Panel
 void drawVelocityEditor(const v1::BodyInfo& info, const PanelActions& actions, PanelState& state) {
   const std::uint32_t id = info.descriptor().id();
   const auto& s = info.state();
-  const auto send = [&](float vx, float vy, float angular) {
+  const auto send = [&](double vx, double vy, double angular) {
     actions.send(client::setVelocity(id, {vx, vy}, angular), "velocity");
   };
   ImGui::TextDisabled("set vx, vy (m/s), angular (rad/s); Enter sends:");
   if (editFields("##velocity", state.velocityEdit, id,
-                 {float(s.velocity().x()), float(s.velocity().y()), float(s.angular_velocity())})) {
+                 {s.velocity().x(), s.velocity().y(), s.angular_velocity()})) {
     const FieldsEdit& edit = state.velocityEdit;
     send(edit.values[0], edit.values[1], edit.values[2]);
   }
@@ -248,8 +261,8 @@ void drawInspectorSection(const Controls& controls, const PanelInput& input,
     ImGui::Text("body %u: waiting for the server...", *controls.selectedBody());
     return;
   }
-  drawBodyTable(*input.inspected);
-  drawPoseEditor(*input.inspected, actions, state);
+  drawBodyTable(*input.inspected, input.origin);
+  drawPoseEditor(*input.inspected, input.origin, actions, state);
   if (!input.inspected->descriptor().is_static()) drawVelocityEditor(*input.inspected, actions, state);
   drawMaterialAndType(*input.inspected, actions, state);
   ImGui::TextDisabled("arrows push it, Delete removes it");

@@ -63,12 +63,16 @@ void describe(CLI::App& app, ViewerOptions& options, TextValues& text) {
          "add MS milliseconds to the round trip to the server (try a slow link on loopback)")
       ->check(CLI::Range(0, 10000))
       ->option_text("MS");
-  app.add_option_function<float>(
-         "--area-margin", [&options](float metres) { options.areaMargin = metres; },
-         "receive only the bodies in the view and M metres around it (an area of interest, sent "
-         "again as the view pans or zooms; default: the whole room)")
-      ->check(CLI::Range(0.0f, 1000.0f))
-      ->option_text("M");
+  auto* margin = app.add_option_function<float>(
+                        "--area-margin", [&options](float metres) { options.areaMargin = metres; },
+                        "receive only the bodies in the view and M metres around it (an area of "
+                        "interest, sent again as the view pans or zooms; default: 5)")
+                     ->check(CLI::Range(0.0f, 1000.0f))
+                     ->option_text("M");
+  app.add_flag_callback("--whole-room", [&options] { options.areaMargin.reset(); },
+                        "receive every body of the room, not only the view's (no area of interest; "
+                        "also with --quantized, which areas cannot use)")
+      ->excludes(margin);
   app.add_option_function<double>(
          "--budget", [&options](double bytes) { options.budget = bytes; },
          "the server sends at most BYTES snapshot bytes a second, the most important changes "
@@ -145,6 +149,12 @@ ParsedViewerOptions parseViewerOptions(std::span<const std::string_view> args) {
     return parsed;
   }
   if (options.screenshot && options.frames == 0) options.frames = 60;
+  // Areas of interest need plain snapshots: quantized ones go to the whole
+  // room unless a margin was asked for (the server then says why not).
+  if (options.connect.snapshotEncoding == v1::SNAPSHOT_ENCODING_QUANTIZED &&
+      app.count("--area-margin") == 0) {
+    options.areaMargin.reset();
+  }
   parsed.options = std::move(options);
   return parsed;
 }

@@ -10,6 +10,11 @@
 
 namespace impulse::viewer {
 
+/// The viewer's area of interest reaches this far past its view by default
+/// (metres): a body at 20 m/s enters it 7 snapshots before it reaches the
+/// view's edge.
+inline constexpr float kDefaultAreaMargin = 5;
+
 struct ViewerOptions {
   client::ConnectOptions connect;
   int width = 1280;
@@ -31,8 +36,9 @@ struct ViewerOptions {
   /// the panel's "Predict my actions" box changes it while running.
   bool predict = true;
   /// Receive only the bodies in the view grown by this many metres (an area
-  /// of interest, sent again as the view pans or zooms); none: the whole room.
-  std::optional<float> areaMargin;
+  /// of interest, sent again as the view pans or zooms); none: the whole
+  /// room (--whole-room, and --quantized without --area-margin).
+  std::optional<float> areaMargin = kDefaultAreaMargin;
   /// Snapshot bytes a second the server may send this viewer, the most
   /// important changes first (a bandwidth budget); none: no budget.
   std::optional<double> budget;

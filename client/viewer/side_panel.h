@@ -44,8 +44,12 @@ struct PanelInput {
   std::uint64_t tick = 0;
   double simTime = 0;
   double timeScale = 1;  ///< simulated seconds per wall second
-  /// The selected body's details (QueryBody), when they arrived.
+  /// The selected body's details (QueryBody), when they arrived; their
+  /// positions are in the mirror's frame, from `origin`.
   const v1::BodyInfo* inspected = nullptr;
+  /// The room's origin (Welcome.world_origin): the inspector shows and takes
+  /// positions from (0, 0), in double.
+  Vec2d origin = Vec2d::Zero();
   LinkState link = LinkState::Connecting;
   std::string linkText;  ///< what the connection line says
   std::size_t bodies = 0;
@@ -87,7 +91,7 @@ struct PanelActions {
 /// server's figures (five a second) would overwrite the typing otherwise.
 struct FieldsEdit {
   std::uint32_t body = 0;
-  float values[3] = {};
+  double values[3] = {};
   bool editing = false;
 };
 

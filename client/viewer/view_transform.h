@@ -1,12 +1,17 @@
 #pragma once
-/// World metres <-> window pixels. The 25 m x 18.75 m scene is fitted into
-/// the scene viewport (the window minus the side panel), centred, y up,
-/// origin at the scene's bottom-left; the camera then zooms and pans that
-/// fitted view.
+/// World metres <-> window pixels. A frame (a world rectangle: the preset
+/// scene, or where a room opens, scene_frame.h) is fitted into the scene
+/// viewport (the window minus the side panel), centred, y up; the camera
+/// then zooms and pans that fitted view.
 
 #include "impulse/math.h"
+#include "impulse/scenes/presets.h"
 
 namespace impulse::viewer {
+
+/// The 25 m x 18.75 m rectangle every preset is built in, around the room's
+/// origin (the mirror's frame).
+inline const AABB kPresetScene{Vec2::Zero(), kSceneSize};
 
 struct PixelPoint {
   float x = 0;
@@ -24,7 +29,7 @@ struct PixelRect {
 
 /// How far the user zoomed and panned away from the fitted view.
 struct Camera {
-  /// 1 = the scene fits the viewport.
+  /// 1 = the frame fits the viewport.
   float zoom = 1;
   /// Pan of the view, pixels (added after fitting and zooming).
   float panX = 0;
@@ -33,33 +38,36 @@ struct Camera {
 
 class ViewTransform {
  public:
-  /// Scene of `sceneSize` metres fitted into `viewport`, then `camera` applied.
-  ViewTransform(PixelRect viewport, Vec2 sceneSize, Camera camera = {});
+  /// `frame` (world metres) fitted into `viewport`, then `camera` applied.
+  ViewTransform(PixelRect viewport, const AABB& frame, Camera camera = {});
 
   PixelPoint toPixels(const Vec2& world) const;
   Vec2 toWorld(float px, float py) const;
   /// Pixels per metre.
   float scale() const { return scale_; }
-  /// The scene's rectangle on screen (may extend past the viewport when zoomed).
+  /// The frame's rectangle on screen (may extend past the viewport when zoomed).
   float left() const { return offsetX_; }
   float top() const { return offsetY_; }
-  float width() const { return sceneWidth_ * scale_; }
-  float height() const { return sceneHeight_ * scale_; }
+  float width() const { return frameSize().x() * scale_; }
+  float height() const { return frameSize().y() * scale_; }
+  /// The world rectangle fitted before zoom and pan.
+  const AABB& frame() const { return frame_; }
   /// Where the scene is drawn: nothing of the scene goes outside it.
   const PixelRect& viewport() const { return viewport_; }
 
  private:
+  Vec2 frameSize() const { return frame_.upper - frame_.lower; }
+
   PixelRect viewport_;
+  AABB frame_;
   float scale_;
   float offsetX_;
   float offsetY_;
-  float sceneWidth_;
-  float sceneHeight_;
 };
 
 /// Zooms by `factor` about the window pixel (px, py): the world point under
 /// it stays under it. Zoom is kept within [0.25, 40].
-Camera zoomAt(const Camera& camera, PixelRect viewport, Vec2 sceneSize, float factor, float px,
+Camera zoomAt(const Camera& camera, PixelRect viewport, const AABB& frame, float factor, float px,
               float py);
 
 }  // namespace impulse::viewer

@@ -1,10 +1,13 @@
 // The viewer in a room 80 km from (0, 0): it draws in its mirror's frame,
 // around the room's origin, and converts at its link, so a body the server
 // holds far out is drawn where the view puts that absolute point, and a
-// circle drawn under the cursor lands at the absolute point under it.
+// circle drawn under the cursor lands at the absolute point under it. A
+// room that does not hold the preset scene opens on its bounds, or on its
+// bodies when the bounds are too large to show.
 #include <gtest/gtest.h>
 
 #include "palette.h"
+#include "scene_frame.h"
 #include "server_process.h"
 #include "viewer_harness.h"
 
@@ -15,13 +18,15 @@ namespace {
 constexpr client::Box kFarBounds{{79987.5, -10}, {80087.5, 90}};
 const Vec2d kFarOrigin(80000, 0);
 
-/// An admin making (or joining) the far room.
-client::ConnectOptions farRoomMaker(std::uint16_t port) {
+/// An admin making (or joining) the room `name` with `bounds`.
+client::ConnectOptions roomMaker(std::uint16_t port, const std::string& name, const client::Box& bounds) {
   client::ConnectOptions options = observerOptions(port);
-  options.room = "far";
-  options.roomBounds = kFarBounds;
+  options.room = name;
+  options.roomBounds = bounds;
   return options;
 }
+
+client::ConnectOptions farRoomMaker(std::uint16_t port) { return roomMaker(port, "far", kFarBounds); }
 
 const client::MirrorBody* bodyAt(const client::Client& client, const Vec2d& place, double within) {
   for (const auto& [id, body] : client.mirror().bodies()) {
@@ -82,6 +87,109 @@ TEST(FarRoom, ABodyFarOutIsDrawnWhereItIs_AndACircleDrawnThereLandsAtItsAbsolute
   ASSERT_TRUE(observeUntil(viewer, maker, [&] { return bodyAt(maker, expected, 0.05) != nullptr; }))
       << "no body near (" << expected.x() << ", " << expected.y() << ")";
   EXPECT_NEAR(bodyAt(maker, expected, 0.05)->shape.circle().radius, 1, 0.05);
+}
+
+/// Radius of the balls the framing tests look for on screen.
+constexpr double kBallRadius = 2;
+
+/// Makes the room `name` with `bounds` holding a static ball at each of
+/// `places` (metres from (0, 0)); a viewer joining it must show every ball
+/// within its scene viewport, in the ball's colour. Returns the view's frame.
+AABB framedWithBallsOnScreen(const std::string& name, const client::Box& bounds,
+                             const std::vector<Vec2d>& places, const std::string& screenshot) {
+  net_test::ServerProcess server({"--paused"});
+  client::Client maker(roomMaker(server.port(), name, bounds));
+  EXPECT_TRUE(maker.request(client::clearWorld()).command_result().ok());
+  for (const Vec2d& place : places) {
+    const v1::ServerMessage made =
+        maker.request(client::spawnCircle({place.x(), place.y()}, kBallRadius, {.isStatic = true}));
+    EXPECT_TRUE(made.command_result().ok()) << made.command_result().error();
+  }
+  ViewerHarness viewer(server.port(), 1280, 720, {}, name);
+  const auto allSeen = [&] {
+    return viewer.app().world().bodies().size() == places.size() &&
+           viewer.app().view().frame().lower != viewer::kPresetScene.lower;
+  };
+  if (!viewer.runUntil(allSeen)) {
+    const AABB frame = viewer.app().view().frame();
+    ADD_FAILURE() << "the viewer did not show the room's " << places.size() << " balls, framed; it shows "
+                  << viewer.app().world().bodies().size() << " bodies, framed at (" << frame.lower.x() << ", "
+                  << frame.lower.y() << ") to (" << frame.upper.x() << ", " << frame.upper.y() << ")";
+    return {};
+  }
+  viewer.runFrames(3);
+  auto shot = viewer.capture(screenshotPath(screenshot));
+  EXPECT_NE(shot, nullptr) << SDL_GetError();
+  const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
+  const viewer::PixelRect scene = viewer.app().layout().scene;
+  const float radius = float(kBallRadius) * viewer.app().view().scale();
+  for (const Vec2d& place : places) {
+    const auto centre = viewer.pixel(mirror.toLocal(place));
+    EXPECT_TRUE(scene.contains(centre.x, centre.y))
+        << "the ball at (" << place.x() << ", " << place.y() << ") is drawn at pixel (" << centre.x
+        << ", " << centre.y << "), off the scene";
+    if (shot == nullptr || !scene.contains(centre.x, centre.y)) continue;
+    // Below the centre: clear of the rotation mark, which points along +x.
+    EXPECT_LE(colourDistance(pixelAt(shot.get(), int(centre.x), int(centre.y + radius / 2)),
+                             viewer::bodyFill(Material::Solid, true)),
+              8)
+        << "the ball at (" << place.x() << ", " << place.y() << ")";
+  }
+  return viewer.app().view().frame();
+}
+
+TEST(FarRoom, ARoom83KmOutOpensFramedOnItsBounds_WithItsBodiesOnScreen) {
+  const client::Box bounds{{83000, 0}, {83100, 100}};
+  const std::vector<Vec2d> balls{{83012.5, 10}, {83050, 50}, {83088, 90}};
+  const AABB frame = framedWithBallsOnScreen("level", bounds, balls, "far_room_framed.bmp");
+  // The room's origin is (80 000, 0): its bounds are 3 000 to 3 100 m from it.
+  EXPECT_EQ(frame.lower, Vec2(3000, 0));
+  EXPECT_EQ(frame.upper, Vec2(3100, 100));
+}
+
+TEST(FarRoom, ARoomTooLargeToShowOpensOnItsBodies) {
+  const client::Box bounds{{83000, 0}, {93000, 10000}};
+  const std::vector<Vec2d> balls{{83012.5, 10}, {83050, 50}, {83088, 90}};
+  const AABB frame = framedWithBallsOnScreen("region", bounds, balls, "large_room_framed.bmp");
+  // Origin (90 000, 10 000): the balls' centres, grown by the margin.
+  const Real margin = viewer::kBodiesAreaMargin;
+  EXPECT_NEAR(frame.lower.x(), -6987.5 - margin, 1e-2);
+  EXPECT_NEAR(frame.lower.y(), -9990 - margin, 1e-2);
+  EXPECT_NEAR(frame.upper.x(), -6912 + margin, 1e-2);
+  EXPECT_NEAR(frame.upper.y(), -9910 + margin, 1e-2);
+}
+
+TEST(FarRoom, TheInspectorShowsAndTakesPositionsFromZero_InDouble) {
+  net_test::ServerProcess server({"--paused"});
+  client::Client maker(roomMaker(server.port(), "level", {{83000, 0}, {83100, 100}}));
+  ASSERT_TRUE(maker.request(client::clearWorld()).command_result().ok());
+  const v1::ServerMessage made =
+      maker.request(client::spawnCircle({83012.5, 10.25}, kBallRadius, {.isStatic = true}));
+  ASSERT_TRUE(made.command_result().ok()) << made.command_result().error();
+  const std::uint32_t ball = made.command_result().body_id();
+
+  ViewerHarness viewer(server.port(), 1280, 720, {}, "level");
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().world().find(ball) != nullptr; }));
+  const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
+  viewer.tap(SDLK_m);
+  viewer.click(mirror.toLocal({83012.5, 10.25}));
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().panelState().poseFields.has_value(); }));
+  viewer.runFrames(3);
+  const viewer::FieldsEdit& shown = viewer.app().panelState().poseEdit;
+  EXPECT_EQ(shown.body, ball);
+  EXPECT_EQ(shown.values[0], 83012.5) << "x from (0, 0), not from the room's origin";
+  EXPECT_EQ(shown.values[1], 10.25);
+
+  // x is the first of the three fields: a click selects its text, typing replaces it.
+  const viewer::PixelRect pose = *viewer.app().panelState().poseFields;
+  viewer.clickPixel(pose.x + pose.w / 6, pose.y + pose.h / 2);
+  viewer.typeText("83020.125");
+  viewer.tap(SDLK_RETURN);
+  const auto queried = [&] { return maker.request(client::queryBody(ball)).body_info().state().position(); };
+  ASSERT_TRUE(observeUntil(viewer, maker, [&] { return std::abs(queried().x() - 83020.125) < 1e-3; }))
+      << "the ball is at x = " << queried().x();
+  EXPECT_NEAR(queried().y(), 10.25, 1e-3);
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().panelState().poseEdit.values[0] == 83020.125; }));
 }
 
 }  // namespace

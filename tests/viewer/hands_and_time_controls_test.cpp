@@ -190,20 +190,20 @@ TEST_F(ToolControls, StaticBodiesAreNotGrabbed) {
 
 TEST_F(ToolControls, WheelZoomsAtTheCursor_FitKeyRestoresTheFittedView) {
   const PixelRect viewport{0, 0, 900, 720};
-  const ViewTransform fitted(viewport, kSceneSize, controls.camera());
+  const ViewTransform fitted(viewport, kPresetScene, controls.camera());
   const Vec2 anchor = fitted.toWorld(300, 200);
   controls.zoomAt(2, 300, 200, viewport);
-  const ViewTransform zoomed(viewport, kSceneSize, controls.camera());
+  const ViewTransform zoomed(viewport, kPresetScene, controls.camera());
   EXPECT_FLOAT_EQ(zoomed.scale(), 2 * fitted.scale());
   EXPECT_NEAR(zoomed.toWorld(300, 200).x(), anchor.x(), 1e-4);
   EXPECT_NEAR(zoomed.toWorld(300, 200).y(), anchor.y(), 1e-4);
   controls.pan(40, -10);
-  const ViewTransform panned(viewport, kSceneSize, controls.camera());
+  const ViewTransform panned(viewport, kPresetScene, controls.camera());
   EXPECT_FLOAT_EQ(panned.left(), zoomed.left() + 40);
   EXPECT_FLOAT_EQ(panned.top(), zoomed.top() - 10);
   press(Control::FitView, sandbox);
   EXPECT_FLOAT_EQ(controls.camera().zoom, 1);
-  EXPECT_FLOAT_EQ(ViewTransform(viewport, kSceneSize, controls.camera()).left(), fitted.left());
+  EXPECT_FLOAT_EQ(ViewTransform(viewport, kPresetScene, controls.camera()).left(), fitted.left());
 }
 
 TEST_F(ToolControls, OverlayKeysToggleEachOverlay) {

@@ -10,7 +10,7 @@ namespace impulse::viewer {
 namespace {
 
 const PixelRect kViewport{100, 0, 800, 600};
-const Vec2 kScene(25, 18.75f);
+const AABB kScene = kPresetScene;
 
 TEST(ViewArea, IsTheViewportsWorldRectangleGrownByTheMargin) {
   const ViewTransform view(kViewport, kScene);
@@ -21,7 +21,7 @@ TEST(ViewArea, IsTheViewportsWorldRectangleGrownByTheMargin) {
   EXPECT_NEAR(area.lower.y(), lower.y() - 2, 1e-4);
   EXPECT_NEAR(area.upper.x(), upper.x() + 2, 1e-4);
   EXPECT_NEAR(area.upper.y(), upper.y() + 2, 1e-4);
-  EXPECT_TRUE(area.contains(AABB{Vec2(0, 0), kScene})) << "the fitted scene is in view";
+  EXPECT_TRUE(area.contains(kScene)) << "the fitted scene is in view";
 }
 
 TEST(ViewArea, AMoveWithinHalfTheMarginKeepsTheAreaSent_APanOrZoomPastItAsksAgain) {
@@ -36,11 +36,15 @@ TEST(ViewArea, AMoveWithinHalfTheMarginKeepsTheAreaSent_APanOrZoomPastItAsksAgai
   EXPECT_TRUE(areaMoved(sent, zoomed, 1));
 }
 
-TEST(ViewerOptions, AreaMarginAndBudgetAreOffByDefault_AndRefusedOutOfRange) {
+TEST(ViewerOptions, TheViewIsTheAreaByDefault_WholeRoomOrQuantizedTurnItOff_NoBudget_OutOfRangeRefused) {
   const auto parse = [](std::vector<std::string_view> args) { return parseViewerOptions(args); };
   const auto defaults = parse({});
-  EXPECT_FALSE(defaults.options->areaMargin);
+  EXPECT_EQ(defaults.options->areaMargin, kDefaultAreaMargin);
   EXPECT_FALSE(defaults.options->budget);
+  EXPECT_FALSE(parse({"--whole-room"}).options->areaMargin);
+  EXPECT_FALSE(parse({"--quantized"}).options->areaMargin) << "areas need plain snapshots";
+  EXPECT_EQ(parse({"--quantized", "--area-margin", "2"}).options->areaMargin, 2.0f);
+  EXPECT_FALSE(parse({"--whole-room", "--area-margin", "2"}).options);
   const auto given = parse({"--area-margin", "3.5", "--budget", "32000"});
   ASSERT_TRUE(given.options) << given.error;
   EXPECT_EQ(given.options->areaMargin, 3.5f);

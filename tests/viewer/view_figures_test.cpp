@@ -27,7 +27,7 @@ TEST(WindowLayout, PanelAndSceneNeverOverlapAndCoverTheWindow) {
 
 TEST(ViewTransform, FitsTheSceneInsideTheViewportOnly) {
   const WindowLayout layout = layoutWindow(1280, 720);
-  const ViewTransform view(layout.scene, kSceneSize);
+  const ViewTransform view(layout.scene, kPresetScene);
   const PixelPoint topRight = view.toPixels(kSceneSize);
   const PixelPoint bottomLeft = view.toPixels(Vec2(0, 0));
   EXPECT_LE(topRight.x, layout.scene.x + layout.scene.w + 1e-3f);
