@@ -270,8 +270,10 @@ void App::exchange() {
   recordFigures();
 }
 
+int App::currentLink() const { return connection_->connected() ? connection_->connections() : 0; }
+
 void App::frameRoom() {
-  const int link = connection_->connected() ? connection_->connections() : 0;
+  const int link = currentLink();
   if (link == 0 || framedConnection_ == link) return;
   const client::Client& client = *connection_->client();
   const client::WorldMirror& mirror = client.mirror();
@@ -288,7 +290,7 @@ void App::frameRoom() {
 }
 
 void App::followView() {
-  const int link = connection_->connected() ? connection_->connections() : 0;
+  const int link = currentLink();
   if (link == 0) return;
   if (options_.budget && budgetConnection_ != link &&
       connection_->send(client::setBandwidthBudget(*options_.budget), "budget")) {
@@ -309,7 +311,7 @@ void App::followView() {
 
 void App::followEvents(double now) {
   const bool wanted = controls_.overlays().eventFlashes;
-  const int link = connection_->connected() ? connection_->connections() : 0;
+  const int link = currentLink();
   if (eventsConnection_ != 0 && (!wanted || eventsConnection_ != link)) {
     // Off, or the connection subscribed is gone (a new one starts unsubscribed).
     if (eventsConnection_ == link) connection_->send(client::subscribeEvents(false), "events off");

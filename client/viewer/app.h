@@ -86,6 +86,9 @@ class App {
   ControlContext context() const;
   void exchange();
   void handleReplies();
+  /// The number of the connection now up (counted from 1), 0 when none:
+  /// what a per-connection request remembers it was sent on.
+  int currentLink() const;
   /// Subscribes to the server's events while the flashes are on (again
   /// after a reconnect), unsubscribes when they go off, and turns the
   /// events received into flashes.

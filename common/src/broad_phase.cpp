@@ -70,12 +70,11 @@ void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userVal
 AABB BroadPhase::fatBox(const AABB& tightAABB, const ProxyMotion& motion) {
   const Real halfDiagonal = Real(0.5) * (tightAABB.upper - tightAABB.lower).norm();
   const Real margin = std::min(kAabbMargin, kSpeculativeDistance + kMarginPerSize * halfDiagonal);
-  return swept(tightAABB.expanded(margin + motion.turnReach), motion.displacement);
+  return expectedReach(tightAABB, motion).expanded(margin);
 }
 
-std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind,
-                                     const ProxyMotion& motion) {
-  const std::int32_t node = trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind, motion), userValue);
+std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind) {
+  const std::int32_t node = trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind, {}), userValue);
   const std::int32_t key = makeKey(node, kind);
   recordUserBox(key);
   // A new static proxy is not queued: it cannot pair with other static proxies,

@@ -45,10 +45,10 @@ class BroadPhase {
   /// arrives.
   static AABB fatBox(const AABB& tightAABB, const ProxyMotion& motion);
 
-  /// Adds a proxy for a tight AABB; movable proxies are fattened (fatBox).
-  /// Returns a proxy key (tree index and kind packed together).
-  std::int32_t createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind,
-                           const ProxyMotion& motion = {});
+  /// Adds a proxy for a tight AABB; movable proxies are fattened (fatBox,
+  /// without motion: a new body's first step is not known yet). Returns a
+  /// proxy key (tree index and kind packed together).
+  std::int32_t createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind);
   void destroyProxy(std::int32_t proxyKey);
 
   /// Called with the new tight AABB of a moving proxy. Re-inserts it (and
