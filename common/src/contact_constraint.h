@@ -41,13 +41,6 @@ struct ConstraintRef {
   Real lastLoad = 0;
 };
 
-/// A touching contact as the bundles are filled from it: its ref and a
-/// copy of its solver part, laid out in colour order (WideContactSet::staged).
-struct StagedContact {
-  ConstraintRef ref;
-  ContactSolverPart part;
-};
-
 struct ConstraintPoint {
   Vec2 anchorA = Vec2::Zero();
   Vec2 anchorB = Vec2::Zero();
@@ -170,12 +163,8 @@ struct WideContactSet {
   // Scratch for sorting by colour, kept to avoid allocation per step.
   std::vector<std::int32_t> colorOf;
   std::vector<std::int32_t> order;
-  /// Per entry of WorldData::touchingUnsorted, its ConstraintRef; per
-  /// ConstraintRef, its place in `order`; and the touching contacts copied
-  /// there, so bundles fill from consecutive memory.
+  /// Per entry of WorldData::touchingUnsorted, its ConstraintRef.
   std::vector<std::int32_t> refOfUnsorted;
-  std::vector<std::int32_t> rankOf;
-  std::vector<StagedContact> staged;
   /// The contact bundles' entries of `order`, and the support bundles'
   /// rows; per contact bundle, its lanes that intruded when prepared
   /// (bundles fill side by side, the intrusions are marked after).

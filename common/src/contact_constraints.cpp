@@ -1,6 +1,7 @@
 #include "contact_constraints.h"
 
 #include <algorithm>
+#include <span>
 
 #include "contact_solver_wide.h"
 #include "counting_sort.h"
@@ -60,6 +61,17 @@ void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs,
   });
 }
 
+// Per solver state, whether one of the refs is its: read off the refs in
+// their order, not off each body's contact list (a miss per contact).
+void markTouchingStates(std::span<const ConstraintRef> refs, std::size_t stateCount,
+                        std::vector<std::uint8_t>& touching) {
+  touching.assign(stateCount, 0);
+  for (const ConstraintRef& ref : refs) {
+    touching[std::size_t(ref.stateA)] = 1;
+    touching[std::size_t(ref.stateB)] = 1;
+  }
+}
+
 ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
   Real hertz = std::min(settings.contactHertz, Real(0.25) / h);
   return {makeSoftness(hertz, settings.contactDampingRatio, h),
@@ -70,6 +82,7 @@ ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
 
 bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
   collectTouching(world, refs_, wide_.refOfUnsorted);
+  markTouchingStates(refs_, world.solverStates.size(), touching_);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
   const ContactSoftness softness = contactSoftness(world.settings, step.h);

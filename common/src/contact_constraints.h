@@ -23,11 +23,15 @@ class ContactConstraints final : public ConstraintKind {
   void restitution(const SubStep& sub) override;
   void store(WorldData& world) override;
   void countPasses(SolverPasses& passes) const override;
+  /// Whether the awake body of solver state k is on a touching contact this
+  /// step (false for the static dummy 0).
+  bool touches(std::int32_t state) const { return state > 0 && touching_[std::size_t(state)] != 0; }
 
  private:
   ContactSolverContext contextFor(const SubStep& sub) const;
 
   std::vector<ConstraintRef> refs_;
+  std::vector<std::uint8_t> touching_;  // per solver state
   SupportPass support_;
   WideContactSet wide_;
   const WideContactKernels* kernels_ = nullptr;

@@ -20,8 +20,8 @@ inline std::uint64_t contactPairKey(std::int32_t a, std::int32_t b) {
 
 /// What preparing the solver reads of a contact: its manifold and the
 /// coefficients mixed from the two materials. A contact begins with it, on
-/// the first two cache lines of an aligned contact, and the solver copies
-/// it out whole (StagedContact, contact_constraint.h).
+/// the first two cache lines of an aligned contact, which the solver fetches
+/// ahead of filling the contact's bundle lane (contact_solver_wide_impl.h).
 struct ContactSolverPart {
   Manifold manifold;
   Real staticFriction = 0;

@@ -202,8 +202,6 @@ ContactSolverContext overflowContext(const ContactSolverContext& context, WideCo
 
 // Bundles per range when filling them side by side.
 constexpr std::int32_t kBundlesPerFillRange = 16;
-// Contacts per range when staging them in colour order side by side.
-constexpr std::int32_t kRefsPerStageRange = 256;
 
 // Bundles per range of a colour run side by side: a bundle's pass costs
 // tens of nanoseconds, a hand-off to a thread about a microsecond.
@@ -241,10 +239,8 @@ void clearLane(WidePoint<F>& p, int lane) {
 // Copies one contact's numbers into its lane (every field of the lane but
 // those finishBundle derives).
 template <class F>
-void gatherLane(const StagedContact& staged, const ContactSoftness& softness, WideConstraint<F>& w,
-                BundleInputs<F>& in, int lane) {
-  const ConstraintRef& ref = staged.ref;
-  const ContactSolverPart& contact = staged.part;
+void gatherLane(const ConstraintRef& ref, const ContactSolverPart& contact, const ContactSoftness& softness,
+                WideConstraint<F>& w, BundleInputs<F>& in, int lane) {
   const Manifold& manifold = contact.manifold;
   w.stateA[lane] = ref.stateA;
   w.stateB[lane] = ref.stateB;
@@ -405,30 +401,30 @@ void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
   }
 }
 
-// Copies each touching contact's ref and solver part to its place in
-// colour order. The contacts are read in the order memory holds them and
-// written one stream per colour: read in colour order instead, they cost
-// about two cache misses each.
-void stageInColorOrder(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set) {
-  placesInOrder(set.order, set.rankOf);
-  set.staged.resize(refs.size());
-  world.tasks.forRanges(static_cast<std::int32_t>(refs.size()), kRefsPerStageRange,
-                        [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t j = begin; j < end; ++j) {
-                            const std::int32_t r = set.refOfUnsorted[std::size_t(j)];
-                            StagedContact& staged = set.staged[std::size_t(set.rankOf[std::size_t(r)])];
-                            staged.ref = refs[std::size_t(r)];
-                            staged.part = world.contacts[world.touchingUnsorted[std::size_t(j)]];
-                          }
-                        });
+// Bundles ahead of the one being filled whose contacts are fetched into the
+// cache meanwhile: a colour's contacts lie scattered in memory, and asking
+// for the next bundles' lines early overlaps their misses with the filling.
+constexpr std::int32_t kPrefetchBundles = 6;
+
+// Starts loading the solver parts of bundle b's contacts (the first two
+// lines of each: ContactSolverPart).
+void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs, const WideContactSet& set,
+                            std::int32_t b) {
+  if (b >= set.contactSlices.count()) return;
+  const std::int32_t first = set.contactSlices.first[std::size_t(b)];
+  for (std::int32_t k = first; k < first + set.contactSlices.lanes[std::size_t(b)]; ++k) {
+    const char* part = reinterpret_cast<const char*>(&world.contacts[refs[std::size_t(set.order[std::size_t(k)])].contact]);
+    __builtin_prefetch(part);
+    __builtin_prefetch(part + 64);
+  }
 }
 
 // Prepares bundle b from its lanes' contacts; returns its lanes with a
 // point deeper than its load explains. Reads only its own lanes' contacts
 // and writes only its own bundle, so bundles fill side by side.
 template <class F>
-std::uint8_t fillBundle(const WorldData& world, const ContactSoftness& softness, WideContactSet& set,
-                        std::int32_t b) {
+std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
+                        WideContactSet& set, std::int32_t b) {
   static const WideConstraint<F> kEmpty = emptyBundle<F>();
   WideConstraint<F>& c = bundlesOf<F>(set)[std::size_t(b)];
   const std::int32_t first = set.contactSlices.first[std::size_t(b)];
@@ -436,8 +432,10 @@ std::uint8_t fillBundle(const WorldData& world, const ContactSoftness& softness,
   // Each lane in use is written whole; only a short bundle has padding.
   if (entries.size() < std::size_t(F::kLanes)) c = kEmpty;
   BundleInputs<F> inputs{};
+  prefetchBundleContacts(world, refs, set, b + kPrefetchBundles);
   for (std::size_t lane = 0; lane < entries.size(); ++lane) {
-    gatherLane(set.staged[std::size_t(first) + lane], softness, c, inputs, static_cast<int>(lane));
+    const ConstraintRef& ref = refs[std::size_t(entries[lane])];
+    gatherLane(ref, world.contacts[ref.contact], softness, c, inputs, static_cast<int>(lane));
   }
   const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
   packSupportLanes(set, c, entries);
@@ -454,13 +452,17 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   placeSupportRows<F>(support, refs.size(), set);
   set.contactSlices.cut(std::span(start).first(GraphColoring::kOverflow + 1), F::kLanes, set.colorBundleStart);
   const std::int32_t bundleCount = set.contactSlices.count();
-  stageInColorOrder(world, refs, set);
 
   auto& bundles = bundlesOf<F>(set);
   bundles.resize(std::size_t(bundleCount));
   set.bundleIntrusion.resize(std::size_t(bundleCount));
   world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t b = begin; b < end; ++b) set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, softness, set, b);
+    for (std::int32_t b = begin; b < std::min(begin + kPrefetchBundles, end); ++b) {
+      prefetchBundleContacts(world, refs, set, b);
+    }
+    for (std::int32_t b = begin; b < end; ++b) {
+      set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b);
+    }
   });
 
   joinIslands(refs, world.solverStates.size(), set);

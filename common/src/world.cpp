@@ -99,12 +99,11 @@ void wakeAll(WorldData& world) {
 // on or moving with others has them as pairs already; stretching its boxes
 // too would pair it with their neighbours (a tumbling drum's crowd: 1.4 times
 // the contacts).
-ProxyMotion expectedMotion(const WorldData& world, std::int32_t slot, Real dt) {
-  const Body& body = world.bodies[slot];
+ProxyMotion expectedMotion(const Body& body, Real dt, bool touches) {
+  if (touches) return {};
   const ProxyMotion motion{body.linearVelocity * dt, body.extent * std::abs(body.angularVelocity) * dt};
   const bool barelyMoves = motion.displacement.norm() + motion.turnReach <= kLinearSlop;
-  if (barelyMoves || hasTouchingContact(world, slot)) return {};
-  return motion;
+  return barelyMoves ? ProxyMotion{} : motion;
 }
 
 // The solve stage; then the broad phase learns where the bodies went and
@@ -112,7 +111,10 @@ ProxyMotion expectedMotion(const WorldData& world, std::int32_t slot, Real dt) {
 void solveAndMoveProxies(WorldData& world, Real dt) {
   solve(world, dt);
   for (std::int32_t slot : world.awakeBodies) {
-    const ProxyMotion motion = expectedMotion(world, slot, dt);
+    const Body& body = world.bodies[slot];
+    // The solver knows which bodies touched: asking it spares a walk of
+    // every moving body's contact list.
+    const ProxyMotion motion = expectedMotion(body, dt, world.contactConstraints.touches(body.solverIndex));
     world.forEachShape(slot, [&](std::int32_t s) {
       world.broadPhase.enlargeProxy(world.shapes[s].proxyKey, shapeAABB(world, s), motion);
     });
@@ -161,7 +163,7 @@ AABB shapeAABB(const WorldData& world, std::int32_t shape) {
 }
 
 void moveBodyProxies(WorldData& world, std::int32_t body, Real dt) {
-  const ProxyMotion motion = expectedMotion(world, body, dt);
+  const ProxyMotion motion = expectedMotion(world.bodies[body], dt, hasTouchingContact(world, body));
   world.forEachShape(body, [&](std::int32_t s) {
     world.broadPhase.updateProxy(world.shapes[s].proxyKey, shapeAABB(world, s), motion);
   });
