@@ -99,12 +99,16 @@ bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, cons
   return moveOutOfFatBox(proxyKey, tightAABB, motion, true);
 }
 
+bool BroadPhase::holds(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) const {
+  return trees_[treeIndex(kindOf(proxyKey))].box(nodeOf(proxyKey)).contains(expectedReach(tightAABB, motion));
+}
+
 bool BroadPhase::moveOutOfFatBox(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion,
                                  bool inBulk) {
+  if (holds(proxyKey, tightAABB, motion)) return false;
   const ProxyKind kind = kindOf(proxyKey);
   DynamicTree& tree = trees_[treeIndex(kind)];
   const std::int32_t node = nodeOf(proxyKey);
-  if (tree.box(node).contains(expectedReach(tightAABB, motion))) return false;
   // Only the movable tree is rebuilt; a static proxy (teleported) re-inserts.
   if (inBulk && kind == ProxyKind::Movable) {
     tree.enlargeProxy(node, fatten(tightAABB, kind, motion));

@@ -201,6 +201,8 @@ enum CollideOutcome : std::uint8_t {
   kRecomputed = 2,     // the manifold was computed afresh
   kTouchChanged = 4,   // it began or stopped touching
   kWakes = 8,          // it touches a body that sleeps (woken in the serial pass)
+  kTouching = 16,      // it touches after the update (and stays)
+  kHits = 32,          // it touches and reports hits
 };
 
 // Whether touching the body wakes it (wakeIsland's own test).
@@ -238,19 +240,6 @@ std::uint8_t updateManifold(const WorldData& world, Contact& contact, Real dt) {
 // microsecond, a hand-off to a thread about as much.
 constexpr std::int32_t kContactsPerRange = 64;
 
-void updateManifolds(WorldData& world, Real dt) {
-  world.collideList.clear();
-  world.contactsToCollide.forEachDescending([&](std::int32_t index) { world.collideList.push_back(index); });
-  world.collideOutcomes.resize(world.collideList.size());
-  world.tasks.forRanges(std::int32_t(world.collideList.size()), kContactsPerRange,
-                        [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t i = begin; i < end; ++i) {
-                            world.collideOutcomes[std::size_t(i)] = updateManifold(
-                                world, world.contacts[world.collideList[std::size_t(i)]], dt);
-                          }
-                        });
-}
-
 // The lowest slot among the contact's awake bodies.
 std::int32_t firstAwakeBody(const WorldData& world, const Contact& contact) {
   const std::int32_t a = contact.edges.bodyA;
@@ -260,13 +249,40 @@ std::int32_t firstAwakeBody(const WorldData& world, const Contact& contact) {
   return std::min(a, b);
 }
 
+// updateManifold's outcome with what the serial pass would otherwise read
+// off the contact, and its key in the touching list (sortTouchingByBody):
+// read here, side by side, the serial pass touches only the contacts whose
+// outcome asks for it.
+std::uint8_t collideOutcome(const WorldData& world, Contact& contact, Real dt, std::int32_t& touchingKey) {
+  const std::uint8_t outcome = updateManifold(world, contact, dt);
+  if ((outcome & kApart) != 0 || !contact.touching) return outcome;
+  touchingKey = firstAwakeBody(world, contact);
+  return std::uint8_t(outcome | kTouching | (contact.reportsHits ? kHits : kKept));
+}
+
+void updateManifolds(WorldData& world, Real dt) {
+  world.collideList.clear();
+  world.contactsToCollide.forEachDescending([&](std::int32_t index) { world.collideList.push_back(index); });
+  world.collideOutcomes.resize(world.collideList.size());
+  world.collideKeys.resize(world.collideList.size());
+  world.tasks.forRanges(std::int32_t(world.collideList.size()), kContactsPerRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t i = begin; i < end; ++i) {
+                            const auto k = std::size_t(i);
+                            world.collideOutcomes[k] = collideOutcome(world, world.contacts[world.collideList[k]], dt,
+                                                                      world.collideKeys[k]);
+                          }
+                        });
+}
+
 // The solver colours the touching contacts in list order, and in a stack
 // the order shows: taken body by body from the lowest slot (scenes are
 // mostly built from the ground up), a 100-row pyramid's top drifts 1 mm in
 // 10 s and a heavy box on a pyramid creeps under 4 cm; taken by contact slot
 // alone, 17 mm and 6 cm, always one way. So the list is sorted by body, in
-// linear time (a counting sort; ties keep the walk's order).
-void sortTouchingByBody(WorldData& world) {
+// linear time (a counting sort; ties keep the walk's order). The keys come
+// with the list (collideOutcome), unless a body woke since they were read.
+void sortTouchingByBody(WorldData& world, bool keysStale) {
   std::vector<std::int32_t>& list = world.touchingContacts;
   std::vector<std::int32_t>& keys = world.touchingKeys;
   if (list.empty()) {
@@ -274,12 +290,11 @@ void sortTouchingByBody(WorldData& world) {
     world.touchingOrder.clear();
     return;
   }
-  keys.clear();
-  std::int32_t lastKey = 0;
-  for (std::int32_t index : list) {
-    keys.push_back(firstAwakeBody(world, world.contacts[index]));
-    lastKey = std::max(lastKey, keys.back());
+  if (keysStale) {
+    keys.clear();
+    for (std::int32_t index : list) keys.push_back(firstAwakeBody(world, world.contacts[index]));
   }
+  const std::int32_t lastKey = *std::max_element(keys.begin(), keys.end());
   // Keys up to the highest only: a sleeping crowd costs nothing here.
   world.touchingStarts.resize(static_cast<std::size_t>(lastKey) + 2);
   countingSort(keys, world.touchingStarts, world.touchingOrder);
@@ -334,6 +349,22 @@ void updatePairs(WorldData& world, Real /*dt*/) {
   for (const ProxyPair& pair : world.newPairs) createContact(world, pair.first, pair.second);
 }
 
+namespace {
+
+// A kept contact's touch and hit reports, and the wake of a sleeping body it
+// touches, with its island. A body found asleep may have been woken since,
+// and waking it again does nothing; one found awake stays so.
+void applyCollideEvents(WorldData& world, Contact& contact, std::uint8_t outcome, Real dt) {
+  if (outcome & kTouchChanged) reportTouchChange(world, contact);
+  if (outcome & kHits) reportHit(world, contact, dt);
+  if (outcome & kWakes) {
+    wakeIsland(world, contact.edges.bodyA);
+    wakeIsland(world, contact.edges.bodyB);
+  }
+}
+
+}  // namespace
+
 void collideContacts(WorldData& world, Real dt) {
   world.profile.manifoldUpdates = 0;
   world.touchingContacts.clear();
@@ -343,6 +374,7 @@ void collideContacts(WorldData& world, Real dt) {
   world.contactsToCollide.assign(world.activeContacts);
   updateManifolds(world, dt);
   // What changes lists and other bodies runs in the visiting order.
+  world.touchingKeys.clear();
   for (std::size_t i = 0; i < world.collideList.size(); ++i) {
     const std::int32_t index = world.collideList[i];
     const std::uint8_t outcome = world.collideOutcomes[i];
@@ -350,26 +382,21 @@ void collideContacts(WorldData& world, Real dt) {
       destroyContact(world, index);
       continue;
     }
-    Contact& contact = world.contacts[index];
     if (outcome & kRecomputed) ++world.profile.manifoldUpdates;
-    if (outcome & kTouchChanged) reportTouchChange(world, contact);
-    if (contact.reportsHits && contact.touching) reportHit(world, contact, dt);
-    if (contact.touching) world.touchingContacts.push_back(index);
-    // A touch from an awake body wakes a sleeping one, with its island. A
-    // body found asleep may have been woken since, and waking it again does
-    // nothing; one found awake stays so.
-    if (outcome & kWakes) {
-      wakeIsland(world, contact.edges.bodyA);
-      wakeIsland(world, contact.edges.bodyB);
+    if (outcome & (kTouchChanged | kHits | kWakes)) applyCollideEvents(world, world.contacts[index], outcome, dt);
+    if (outcome & kTouching) {
+      world.touchingContacts.push_back(index);
+      world.touchingKeys.push_back(world.collideKeys[i]);
     }
   }
   // Woken bodies' touching contacts are solved this step all the same.
-  if (world.awakeBodies.size() != awakeCount) {
+  const bool woke = world.awakeBodies.size() != awakeCount;
+  if (woke) {
     world.activeContacts.forEachDescendingExcept(world.contactsToCollide, [&](std::int32_t index) {
       if (world.contacts[index].touching) world.touchingContacts.push_back(index);
     });
   }
-  sortTouchingByBody(world);
+  sortTouchingByBody(world, woke);
 }
 
 bool hasTouchingContact(const WorldData& world, std::int32_t body) {

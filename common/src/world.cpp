@@ -106,17 +106,44 @@ ProxyMotion expectedMotion(const Body& body, Real dt, bool touches) {
   return barelyMoves ? ProxyMotion{} : motion;
 }
 
+// Awake bodies per range when finding the ones whose boxes must grow: a
+// body costs its shapes' boxes, tens of nanoseconds.
+constexpr std::int32_t kBodiesPerReachRange = 256;
+
+// Per awake body (in awakeBodies' order), the motion its boxes are stretched
+// along and whether a shape's box no longer holds where it is heading. Side
+// by side: only reads the bodies, the solver and the broad phase.
+void findEscapingBodies(WorldData& world, Real dt) {
+  world.awakeReach.resize(world.awakeBodies.size());
+  world.tasks.forRanges(std::int32_t(world.awakeBodies.size()), kBodiesPerReachRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t i = begin; i < end; ++i) {
+                            const std::int32_t slot = world.awakeBodies[std::size_t(i)];
+                            const Body& body = world.bodies[slot];
+                            // The solver knows which bodies touched: asking it
+                            // spares a walk of the body's contact list.
+                            BodyReach& reach = world.awakeReach[std::size_t(i)];
+                            reach.motion = expectedMotion(body, dt, world.contactConstraints.touches(body.solverIndex));
+                            reach.escapes = false;
+                            world.forEachShape(slot, [&](std::int32_t s) {
+                              reach.escapes = reach.escapes ||
+                                              !world.broadPhase.holds(world.shapes[s].proxyKey, shapeAABB(world, s), reach.motion);
+                            });
+                          }
+                        });
+}
+
 // The solve stage; then the broad phase learns where the bodies went and
-// where they are heading, all at once.
+// where they are heading: the boxes they left grow in place, and the tree
+// is rebuilt around them at once.
 void solveAndMoveProxies(WorldData& world, Real dt) {
   solve(world, dt);
-  for (std::int32_t slot : world.awakeBodies) {
-    const Body& body = world.bodies[slot];
-    // The solver knows which bodies touched: asking it spares a walk of
-    // every moving body's contact list.
-    const ProxyMotion motion = expectedMotion(body, dt, world.contactConstraints.touches(body.solverIndex));
-    world.forEachShape(slot, [&](std::int32_t s) {
-      world.broadPhase.enlargeProxy(world.shapes[s].proxyKey, shapeAABB(world, s), motion);
+  findEscapingBodies(world, dt);
+  for (std::size_t i = 0; i < world.awakeBodies.size(); ++i) {
+    const BodyReach& reach = world.awakeReach[i];
+    if (!reach.escapes) continue;
+    world.forEachShape(world.awakeBodies[i], [&](std::int32_t s) {
+      world.broadPhase.enlargeProxy(world.shapes[s].proxyKey, shapeAABB(world, s), reach.motion);
     });
   }
   world.broadPhase.rebuildEnlarged();

@@ -64,6 +64,13 @@ struct FieldSlot {
   std::shared_ptr<const ForceField> field;
 };
 
+/// How an awake body's boxes are stretched after a solve, and whether one
+/// of them left its fat box.
+struct BodyReach {
+  ProxyMotion motion;
+  bool escapes = false;
+};
+
 struct WorldData {
   WorldSettings settings;
   /// World::origin: every float position here is relative to it.
@@ -127,6 +134,12 @@ struct WorldData {
   /// found (parallel first, then applied in that order).
   std::vector<std::int32_t> collideList;
   std::vector<std::uint8_t> collideOutcomes;
+  /// Per touching entry of collideList, its key in the touching list
+  /// (the lowest slot of its awake bodies).
+  std::vector<std::int32_t> collideKeys;
+  /// Per awake body after the solve: how its boxes stretch, and whether one
+  /// left its fat box (world.cpp, solveAndMoveProxies).
+  std::vector<BodyReach> awakeReach;
   /// The bodies continuous collision looks at (the fast ones, then the slow
   /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;

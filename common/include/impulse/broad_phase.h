@@ -60,6 +60,10 @@ class BroadPhase {
   /// movable proxy that left its fat AABB is enlarged in place, and
   /// rebuildEnlarged() must follow before any other change or query.
   bool enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion = {});
+  /// Whether the proxy's fat AABB still holds its tight box with the motion
+  /// it is about to make (then updateProxy and enlargeProxy leave it). Safe
+  /// from several threads at once while nothing moves a proxy.
+  bool holds(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) const;
   /// Rebuilds the parts of the trees that enlargeProxy grew.
   void rebuildEnlarged();
 
