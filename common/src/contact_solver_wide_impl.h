@@ -658,13 +658,28 @@ void storeBundleImpulses(const WideConstraint<F>& w, WorldData& world) {
   }
 }
 
-// Each bundle writes only its own lanes' manifolds: side by side.
+// Starts loading, to be written, the manifolds bundle w stores into.
+template <class F>
+void prefetchStoreTargets(const WideConstraint<F>& w, const WorldData& world) {
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    if (w.source[lane] < 0) continue;
+    const char* manifold = reinterpret_cast<const char*>(&world.contacts[w.source[lane]].manifold);
+    __builtin_prefetch(manifold, 1);
+    __builtin_prefetch(manifold + 64, 1);
+  }
+}
+
+// Each bundle writes only its own lanes' manifolds: side by side, fetching
+// the manifolds of the bundles ahead meanwhile (as fillBundle).
 template <class F>
 void storeWideImpulses(const WideContactSet& set, WorldData& world) {
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(const_cast<WideContactSet&>(set));
   world.tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
                         [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t b = begin; b < end; ++b) storeBundleImpulses(bundles[std::size_t(b)], world);
+                          for (std::int32_t b = begin; b < end; ++b) {
+                            if (b + kPrefetchBundles < end) prefetchStoreTargets(bundles[std::size_t(b + kPrefetchBundles)], world);
+                            storeBundleImpulses(bundles[std::size_t(b)], world);
+                          }
                         });
   storeImpulses(set.overflow, world);
   storeSupportWide<F>(const_cast<WideContactSet&>(set), world);
