@@ -406,11 +406,21 @@ void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
 // for the next bundles' lines early overlaps their misses with the filling.
 constexpr std::int32_t kPrefetchBundles = 6;
 
+// visit(b) for each bundle b of [begin, end), fetch(b) having been asked
+// kPrefetchBundles bundles before.
+template <class Fetch, class Visit>
+void visitFetchingAhead(std::int32_t begin, std::int32_t end, Fetch&& fetch, Visit&& visit) {
+  for (std::int32_t b = begin; b < std::min(begin + kPrefetchBundles, end); ++b) fetch(b);
+  for (std::int32_t b = begin; b < end; ++b) {
+    if (b + kPrefetchBundles < end) fetch(b + kPrefetchBundles);
+    visit(b);
+  }
+}
+
 // Starts loading the solver parts of bundle b's contacts (the first two
 // lines of each: ContactSolverPart).
 void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs, const WideContactSet& set,
                             std::int32_t b) {
-  if (b >= set.contactSlices.count()) return;
   const std::int32_t first = set.contactSlices.first[std::size_t(b)];
   for (std::int32_t k = first; k < first + set.contactSlices.lanes[std::size_t(b)]; ++k) {
     const char* part = reinterpret_cast<const char*>(&world.contacts[refs[std::size_t(set.order[std::size_t(k)])].contact]);
@@ -432,7 +442,6 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   // Each lane in use is written whole; only a short bundle has padding.
   if (entries.size() < std::size_t(F::kLanes)) c = kEmpty;
   BundleInputs<F> inputs{};
-  prefetchBundleContacts(world, refs, set, b + kPrefetchBundles);
   for (std::size_t lane = 0; lane < entries.size(); ++lane) {
     const ConstraintRef& ref = refs[std::size_t(entries[lane])];
     gatherLane(ref, world.contacts[ref.contact], softness, c, inputs, static_cast<int>(lane));
@@ -457,12 +466,9 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   bundles.resize(std::size_t(bundleCount));
   set.bundleIntrusion.resize(std::size_t(bundleCount));
   world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t b = begin; b < std::min(begin + kPrefetchBundles, end); ++b) {
-      prefetchBundleContacts(world, refs, set, b);
-    }
-    for (std::int32_t b = begin; b < end; ++b) {
-      set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b);
-    }
+    visitFetchingAhead(
+        begin, end, [&](std::int32_t b) { prefetchBundleContacts(world, refs, set, b); },
+        [&](std::int32_t b) { set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b); });
   });
 
   joinIslands(refs, world.solverStates.size(), set);
@@ -676,10 +682,10 @@ void storeWideImpulses(const WideContactSet& set, WorldData& world) {
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(const_cast<WideContactSet&>(set));
   world.tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
                         [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t b = begin; b < end; ++b) {
-                            if (b + kPrefetchBundles < end) prefetchStoreTargets(bundles[std::size_t(b + kPrefetchBundles)], world);
-                            storeBundleImpulses(bundles[std::size_t(b)], world);
-                          }
+                          visitFetchingAhead(
+                              begin, end,
+                              [&](std::int32_t b) { prefetchStoreTargets(bundles[std::size_t(b)], world); },
+                              [&](std::int32_t b) { storeBundleImpulses(bundles[std::size_t(b)], world); });
                         });
   storeImpulses(set.overflow, world);
   storeSupportWide<F>(const_cast<WideContactSet&>(set), world);
