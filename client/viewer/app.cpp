@@ -287,7 +287,9 @@ void App::frameRoom() {
 
 AABB App::roomBounds() const {
   const client::Client& client = *connection_->client();
-  const auto local = [&](const v1::Vec2& p) { return client.mirror().toLocal(Vec2d(p.x(), p.y())); };
+  const auto local = [&](const v1::Vec2& p) {
+    return client.mirror().toLocal(Vec2d(p.x(), p.y()));
+  };
   return {local(client.welcome().world_min()), local(client.welcome().world_max())};
 }
 

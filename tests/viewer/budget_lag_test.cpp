@@ -64,7 +64,8 @@ struct Lag {
 void spawnDriftingGrid(client::Client& maker, const GridRun& run) {
   std::vector<std::uint64_t> requests;
   for (int i = 0; i < run.bodies; ++i) {
-    const client::Point at{2 + run.spacing * (i % run.columns), 1 + run.spacing * (i / run.columns)};
+    const client::Point at{2 + run.spacing * (i % run.columns),
+                           1 + run.spacing * (i / run.columns)};
     requests.push_back(maker.send(client::spawnCircle(
         at, run.radius, {.ignoreGravity = true, .velocityX = run.speed, .velocityY = 0})));
   }
@@ -79,9 +80,10 @@ void spawnDriftingGrid(client::Client& maker, const GridRun& run) {
 Lag measureLag(std::uint16_t port, client::Client& observer, const GridRun& run,
                std::optional<double> budget) {
   ViewerHarness viewer(port, [&](viewer::ViewerOptions& options) { options.budget = budget; });
-  EXPECT_TRUE(observeUntil(viewer, observer, [&] {
-    return viewer.app().world().bodies().size() == std::size_t(run.bodies);
-  }, std::chrono::seconds(60)));
+  EXPECT_TRUE(observeUntil(
+      viewer, observer,
+      [&] { return viewer.app().world().bodies().size() == std::size_t(run.bodies); },
+      std::chrono::seconds(60)));
   const auto start = std::chrono::steady_clock::now();
   Lag lag;
   observeUntil(

@@ -8,8 +8,8 @@
 
 #include "palette.h"
 #include "scene_frame.h"
-#include "view_area.h"
 #include "server_process.h"
+#include "view_area.h"
 #include "viewer_harness.h"
 
 namespace impulse::viewer_test {
@@ -173,9 +173,10 @@ TEST(FarRoom, FFramesTheBodiesTheViewerKnowsNow) {
   ASSERT_TRUE(maker.request(client::clearWorld()).command_result().ok());
   const std::vector<Vec2d> balls{{83012.5, 10}, {83050, 50}, {83088, 90}};
   for (const Vec2d& place : balls)
-    ASSERT_TRUE(maker.request(client::spawnCircle({place.x(), place.y()}, kBallRadius, {.isStatic = true}))
-                    .command_result()
-                    .ok());
+    ASSERT_TRUE(
+        maker.request(client::spawnCircle({place.x(), place.y()}, kBallRadius, {.isStatic = true}))
+            .command_result()
+            .ok());
   ViewerHarness viewer(server.port(), [](viewer::ViewerOptions& options) {
     options.connect.room = "region";
     options.areaMargin.reset();  // --whole-room: the viewer hears of the ball made off the view
@@ -185,9 +186,10 @@ TEST(FarRoom, FFramesTheBodiesTheViewerKnowsNow) {
   const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
   const viewer::PixelRect scene = viewer.app().layout().scene;
   const Vec2d late(84000, 1000);
-  ASSERT_TRUE(maker.request(client::spawnCircle({late.x(), late.y()}, kBallRadius, {.isStatic = true}))
-                  .command_result()
-                  .ok());
+  ASSERT_TRUE(
+      maker.request(client::spawnCircle({late.x(), late.y()}, kBallRadius, {.isStatic = true}))
+          .command_result()
+          .ok());
   ASSERT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 4); }));
   const auto lateAt = [&] { return viewer.pixel(mirror.toLocal(late)); };
   EXPECT_FALSE(scene.contains(lateAt().x, lateAt().y)) << "the ball made later starts off the view";
@@ -203,7 +205,8 @@ TEST(FarRoom, FFramesTheBodiesTheViewerKnowsNow) {
   EXPECT_NEAR(frame.upper.y(), -9000 + margin, 1e-2);
   for (const Vec2d& place : {balls[0], balls[1], balls[2], late}) {
     const auto at = viewer.pixel(mirror.toLocal(place));
-    EXPECT_TRUE(scene.contains(at.x, at.y)) << "(" << place.x() << ", " << place.y() << ") off the view";
+    EXPECT_TRUE(scene.contains(at.x, at.y))
+        << "(" << place.x() << ", " << place.y() << ") off the view";
   }
 }
 
@@ -232,9 +235,11 @@ TEST(FarRoom, AfterAZoomFFramesTheBodiesLeftInTheArea_AndTheAreaFollowsTheNewVie
     viewer.runFrames(1);
   }
   const AABB shown = viewer::viewArea(viewer.app().view(), 0);
-  ASSERT_LT(shown.upper.x() - shown.lower.x(), 4.f) << "the view is not zoomed in enough for the test";
+  ASSERT_LT(shown.upper.x() - shown.lower.x(), 4.f)
+      << "the view is not zoomed in enough for the test";
   ASSERT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 1); }))
-      << "the area did not shrink to the zoomed view; the viewer knows " << viewer.app().world().bodies().size();
+      << "the area did not shrink to the zoomed view; the viewer knows "
+      << viewer.app().world().bodies().size();
 
   viewer.tap(SDLK_f);
   viewer.runFrames(2);
