@@ -140,7 +140,10 @@ std::optional<BodyHit> App::bodyAt(const Vec2& point) const {
   return staticHit;
 }
 
-void App::act(ControlKey key) { controls_.keyPressed(key, context(), now()); }
+void App::act(ControlKey key) {
+  controls_.keyPressed(key, context(), now());
+  if (key.control == Control::FitView) fitFrame();
+}
 
 void App::actOnScene(SceneKey key) {
   const Controls& c = controls_;
@@ -275,13 +278,26 @@ int App::currentLink() const { return connection_->connected() ? connection_->co
 void App::frameRoom() {
   const int link = currentLink();
   if (link == 0 || framedConnection_ == link) return;
-  const client::Client& client = *connection_->client();
-  const client::WorldMirror& mirror = client.mirror();
-  const auto local = [&](const v1::Vec2& p) { return mirror.toLocal(Vec2d(p.x(), p.y())); };
-  const AABB bounds{local(client.welcome().world_min()), local(client.welcome().world_max())};
-  if (opensOnBodies(bounds) && mirror.snapshotsApplied() == 0) return;
+  const AABB bounds = roomBounds();
+  if (opensOnBodies(bounds) && connection_->client()->mirror().snapshotsApplied() == 0) return;
   framedConnection_ = link;
   if (framedBounds_ && framedBounds_->lower == bounds.lower && framedBounds_->upper == bounds.upper) return;
+  fitFrame();
+}
+
+AABB App::roomBounds() const {
+  const client::Client& client = *connection_->client();
+  const auto local = [&](const v1::Vec2& p) {
+    return client.mirror().toLocal(Vec2d(p.x(), p.y()));
+  };
+  return {local(client.welcome().world_min()), local(client.welcome().world_max())};
+}
+
+void App::fitFrame() {
+  const int link = currentLink();
+  if (link == 0 || framedConnection_ != link) return;
+  const AABB bounds = roomBounds();
+  const client::WorldMirror& mirror = connection_->client()->mirror();
   std::vector<Vec2> bodies;
   bodies.reserve(mirror.bodies().size());
   for (const auto& [id, body] : mirror.bodies()) bodies.push_back(body.state.position);

@@ -97,6 +97,12 @@ class App {
   /// (and, for a room too large to open on, its first snapshot) are known;
   /// a reconnect to a room with the same bounds keeps the view.
   void frameRoom();
+  /// The room's bounds from its welcome, in the mirror's frame.
+  AABB roomBounds() const;
+  /// Fits the frame (scene_frame.h) to the room as it is now: on a new
+  /// connection, and on F, where a room that opens on its bodies is framed
+  /// on the bodies the mirror holds now (the area sent follows the view).
+  void fitFrame();
   /// Sends --budget on every new connection, and --area-margin's area on
   /// every new connection once the room is framed and whenever the view
   /// moves past half the margin.

@@ -9,6 +9,7 @@
 #include "palette.h"
 #include "scene_frame.h"
 #include "server_process.h"
+#include "view_area.h"
 #include "viewer_harness.h"
 
 namespace impulse::viewer_test {
@@ -157,6 +158,103 @@ TEST(FarRoom, ARoomTooLargeToShowOpensOnItsBodies) {
   EXPECT_NEAR(frame.lower.y(), -9990 - margin, 1e-2);
   EXPECT_NEAR(frame.upper.x(), -6912 + margin, 1e-2);
   EXPECT_NEAR(frame.upper.y(), -9910 + margin, 1e-2);
+}
+
+/// A room too large to show, whose origin is (90 000, 10 000).
+constexpr client::Box kRegionBounds{{83000, 0}, {93000, 10000}};
+
+bool knowsBodies(ViewerHarness& viewer, std::size_t count) {
+  return viewer.app().world().bodies().size() == count;
+}
+
+TEST(FarRoom, FFramesTheBodiesTheViewerKnowsNow) {
+  net_test::ServerProcess server({"--paused"});
+  client::Client maker(roomMaker(server.port(), "region", kRegionBounds));
+  ASSERT_TRUE(maker.request(client::clearWorld()).command_result().ok());
+  const std::vector<Vec2d> balls{{83012.5, 10}, {83050, 50}, {83088, 90}};
+  for (const Vec2d& place : balls)
+    ASSERT_TRUE(
+        maker.request(client::spawnCircle({place.x(), place.y()}, kBallRadius, {.isStatic = true}))
+            .command_result()
+            .ok());
+  ViewerHarness viewer(server.port(), [](viewer::ViewerOptions& options) {
+    options.connect.room = "region";
+    options.areaMargin.reset();  // --whole-room: the viewer hears of the ball made off the view
+  });
+  ASSERT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 3); }));
+  viewer.runFrames(3);
+  const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
+  const viewer::PixelRect scene = viewer.app().layout().scene;
+  const Vec2d late(84000, 1000);
+  ASSERT_TRUE(
+      maker.request(client::spawnCircle({late.x(), late.y()}, kBallRadius, {.isStatic = true}))
+          .command_result()
+          .ok());
+  ASSERT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 4); }));
+  const auto lateAt = [&] { return viewer.pixel(mirror.toLocal(late)); };
+  EXPECT_FALSE(scene.contains(lateAt().x, lateAt().y)) << "the ball made later starts off the view";
+
+  viewer.tap(SDLK_f);
+  viewer.runFrames(2);
+  // The four centres, grown by the margin (origin (90 000, 10 000)).
+  const AABB frame = viewer.app().view().frame();
+  const Real margin = viewer::kBodiesAreaMargin;
+  EXPECT_NEAR(frame.lower.x(), -6987.5 - margin, 1e-2);
+  EXPECT_NEAR(frame.lower.y(), -9990 - margin, 1e-2);
+  EXPECT_NEAR(frame.upper.x(), -6000 + margin, 1e-2);
+  EXPECT_NEAR(frame.upper.y(), -9000 + margin, 1e-2);
+  for (const Vec2d& place : {balls[0], balls[1], balls[2], late}) {
+    const auto at = viewer.pixel(mirror.toLocal(place));
+    EXPECT_TRUE(scene.contains(at.x, at.y))
+        << "(" << place.x() << ", " << place.y() << ") off the view";
+  }
+}
+
+TEST(FarRoom, AfterAZoomFFramesTheBodiesLeftInTheArea_AndTheAreaFollowsTheNewView) {
+  net_test::ServerProcess server({"--paused"});
+  client::Client maker(roomMaker(server.port(), "region", kRegionBounds));
+  ASSERT_TRUE(maker.request(client::clearWorld()).command_result().ok());
+  // `near` is 11.5 m from `zoomed`: outside a view 4 m wide plus the 5 m
+  // margin (and the half margin the area lags a shrinking view by), inside
+  // the preset scene's size around `zoomed`.
+  const Vec2d zoomed(83012.5, 10), near(83024, 10), far(83088, 90);
+  for (const Vec2d& place : {zoomed, near, far})
+    ASSERT_TRUE(maker.request(client::spawnCircle({place.x(), place.y()}, 0.5, {.isStatic = true}))
+                    .command_result()
+                    .ok());
+  ViewerHarness viewer(server.port(), 1280, 720, {}, "region");
+  ASSERT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 3); }));
+  viewer.runFrames(3);
+  const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
+  const Vec2 zoomedLocal = mirror.toLocal(zoomed);
+  const auto pointer = viewer.pixel(zoomedLocal);
+  viewer.mouseMove(pointer.x, pointer.y);
+  viewer.runFrames(1);
+  for (int notch = 0; notch < 30; ++notch) {
+    viewer.wheel(1);
+    viewer.runFrames(1);
+  }
+  const AABB shown = viewer::viewArea(viewer.app().view(), 0);
+  ASSERT_LT(shown.upper.x() - shown.lower.x(), 4.f)
+      << "the view is not zoomed in enough for the test";
+  ASSERT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 1); }))
+      << "the area did not shrink to the zoomed view; the viewer knows "
+      << viewer.app().world().bodies().size();
+
+  viewer.tap(SDLK_f);
+  viewer.runFrames(2);
+  // The one body known, grown to the preset scene's size around it.
+  const AABB frame = viewer.app().view().frame();
+  const Vec2 centre = (frame.lower + frame.upper) / 2;
+  EXPECT_NEAR(centre.x(), zoomedLocal.x(), 1e-2);
+  EXPECT_NEAR(centre.y(), zoomedLocal.y(), 1e-2);
+  EXPECT_NEAR(frame.upper.x() - frame.lower.x(), kSceneSize.x(), 1e-2);
+  EXPECT_NEAR(frame.upper.y() - frame.lower.y(), kSceneSize.y(), 1e-2);
+  // The area sent follows the new view: the near ball comes back, the far one stays out.
+  EXPECT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 2); }))
+      << "the viewer knows " << viewer.app().world().bodies().size() << " bodies after F";
+  const auto nearAt = viewer.pixel(mirror.toLocal(near));
+  EXPECT_TRUE(viewer.app().layout().scene.contains(nearAt.x, nearAt.y));
 }
 
 TEST(FarRoom, TheInspectorShowsAndTakesPositionsFromZero_InDouble) {
