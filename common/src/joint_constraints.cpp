@@ -18,6 +18,9 @@ constexpr Real kJointDampingRatio = 2;
 // Joint rows per range of a colour run side by side: a row costs tens of
 // nanoseconds, a hand-off to a thread about a microsecond.
 constexpr std::int32_t kJointRowsPerRange = 32;
+// Joints per range when making their rows side by side (a row reads its
+// joint, its bodies and their contact lists: a few hundred nanoseconds).
+constexpr std::int32_t kJointsPerMakeRange = 64;
 
 struct Side {
   std::int32_t state = 0;
@@ -38,6 +41,14 @@ Side sideOf(const WorldData& world, std::int32_t slot) {
   return side;
 }
 
+// A mouse joint pulls towards a world point, whatever B is.
+bool pullsToWorldPoint(const Joint& joint) { return std::holds_alternative<MouseJointSettings>(joint.settings); }
+
+// B's side of the joint's row.
+Side sideBOf(const WorldData& world, const Joint& joint) {
+  return pullsToWorldPoint(joint) ? Side{} : sideOf(world, joint.edges.bodyB);
+}
+
 // An awake body with a touching contact. A static or sleeping one counts
 // for nothing (the ground's list holds every contact on it).
 bool touchesAnything(const WorldData& world, std::int32_t slot) {
@@ -50,10 +61,9 @@ bool hasAwakeBody(const WorldData& world, const Joint& joint) {
 }
 
 JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index) {
-  Side a = sideOf(world, joint.edges.bodyA);
-  // A mouse joint pulls towards a world point, whatever B is.
-  const bool mouse = std::holds_alternative<MouseJointSettings>(joint.settings);
-  Side b = mouse ? Side{} : sideOf(world, joint.edges.bodyB);
+  const Side a = sideOf(world, joint.edges.bodyA);
+  const bool mouse = pullsToWorldPoint(joint);
+  const Side b = sideBOf(world, joint);
   JointRow row;
   row.joint = &joint;
   row.index = index;
@@ -101,21 +111,28 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
     tree_.clear();
     return false;
   }
-  gathered_.clear();
+  // The colours first, one by one (a colour depends on the joints before
+  // it), from the states alone; then the rows, side by side.
+  jointOf_.clear();
   colorOf_.clear();
   for (std::size_t index = 0; index < world.joints.size(); ++index) {
     const Joint& joint = world.joints[index];
     if (!hasAwakeBody(world, joint)) continue;
-    gathered_.push_back(makeRow(world, joint, static_cast<std::int32_t>(index)));
-    colorOf_.push_back(coloring.take(gathered_.back().stateA, gathered_.back().stateB));
+    jointOf_.push_back(static_cast<std::int32_t>(index));
+    colorOf_.push_back(coloring.take(sideOf(world, joint.edges.bodyA).state, sideBOf(world, joint).state));
   }
   // Solved in colour order, so a colour's joints could run side by side.
-  // Each gathered row is written to its place there, read in order: rows
-  // read in colour order instead jump across the list, a miss a row.
+  // Each row is made in the joints' order and written to its place there:
+  // joints read in colour order instead jump across the list, a miss a row.
   colorStarts_ = sortByColor(colorOf_, order_);
   placesInOrder(order_, rankOf_);
-  rows_.resize(gathered_.size());
-  for (std::size_t i = 0; i < gathered_.size(); ++i) rows_[std::size_t(rankOf_[i])] = gathered_[i];
+  rows_.resize(jointOf_.size());
+  world.tasks.forRanges(std::int32_t(jointOf_.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t i = begin; i < end; ++i) {
+      const std::int32_t index = jointOf_[std::size_t(i)];
+      rows_[std::size_t(rankOf_[std::size_t(i)])] = makeRow(world, world.joints[std::size_t(index)], index);
+    }
+  });
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
   tree_.order(rows_, world.solverStates.size(), pass_.rigid);

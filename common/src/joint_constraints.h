@@ -30,10 +30,11 @@ class JointConstraints final : public ConstraintKind {
   void forEachRowByColor(const SubStep& sub, Visit&& visit);
 
   std::vector<JointRow> rows_;
-  std::vector<JointRow> gathered_;
+  /// The joints of this step's rows, in the joints' order.
+  std::vector<std::int32_t> jointOf_;
   std::vector<std::int32_t> colorOf_;
   std::vector<std::int32_t> order_;
-  /// Per gathered row, its place in colour order.
+  /// Per entry of jointOf_, its row's place in colour order.
   std::vector<std::int32_t> rankOf_;
   /// Colour c's rows are [colorStarts_[c], colorStarts_[c + 1]), overflow last.
   ColorStarts colorStarts_{};
