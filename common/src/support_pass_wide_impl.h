@@ -57,7 +57,22 @@ void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c
 // one side (an arch's foot), not one standing free.
 constexpr Real kSidewaysShare = Real(0.5);
 
-Real slipFrictionOf(const ContactConstraint& c) {
+// Whether the upper body stands on a base narrower than its centre is high
+// (a card on its edge), the only kind whose lift turns it enough to slip:
+// a box's base is as wide as it is tall, and holding its slip there only
+// unsettled stacks and pyramids (a vertical stack 2.5 -> 3.4 mm).
+bool standsNarrow(const ContactConstraint& c, bool upperIsB) {
+  const Vec2 normal = upperIsB ? c.normal : Vec2(-c.normal);
+  const Vec2 tangent(normal.y(), -normal.x());
+  const Vec2& first = upperIsB ? c.points[0].anchorB : c.points[0].anchorA;
+  const Vec2& last = upperIsB ? c.points[c.pointCount - 1].anchorB : c.points[c.pointCount - 1].anchorA;
+  const Real base = std::abs((first - last).dot(tangent));
+  const Real centreHeight = -first.dot(normal);
+  return base < centreHeight;
+}
+
+Real slipFrictionOf(const ContactConstraint& c, bool upperIsB) {
+  if (c.pointCount == 0 || !standsNarrow(c, upperIsB)) return 0;
   Real tangent = 0;
   Real normal = 0;
   for (int j = 0; j < c.pointCount; ++j) {
@@ -81,7 +96,7 @@ void packSupportLane(WideSupportRow<F>& w, int lane, const ContactConstraint& c,
   setLane(w.normalY, lane, normal.y());
   setLane(w.invMass, lane, upperIsB ? c.invMassB : c.invMassA);
   setLane(w.invInertia, lane, upperIsB ? c.invInertiaB : c.invInertiaA);
-  setLane(w.slipFriction, lane, slipFrictionOf(c));
+  setLane(w.slipFriction, lane, slipFrictionOf(c, upperIsB));
   for (int j = 0; j < 2; ++j) {
     const ConstraintPoint& cp = c.points[j];
     const Vec2& lower = upperIsB ? cp.anchorA : cp.anchorB;
