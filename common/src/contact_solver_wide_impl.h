@@ -203,6 +203,23 @@ ContactSolverContext overflowContext(const ContactSolverContext& context, WideCo
 // Bundles per range when filling them side by side.
 constexpr std::int32_t kBundlesPerFillRange = 16;
 
+// Bundles ahead of the one being filled or stored whose contacts are
+// fetched into the cache meanwhile: a colour's contacts lie scattered in
+// memory, and asking for the next bundles' lines early overlaps their
+// misses with the work on this one.
+constexpr std::int32_t kPrefetchBundles = 6;
+
+// visit(b) for each bundle b of [begin, end), fetch(b) having been asked
+// kPrefetchBundles bundles before.
+template <class Fetch, class Visit>
+void visitFetchingAhead(std::int32_t begin, std::int32_t end, Fetch&& fetch, Visit&& visit) {
+  for (std::int32_t b = begin; b < std::min(begin + kPrefetchBundles, end); ++b) fetch(b);
+  for (std::int32_t b = begin; b < end; ++b) {
+    if (b + kPrefetchBundles < end) fetch(b + kPrefetchBundles);
+    visit(b);
+  }
+}
+
 // Bundles per range of a colour run side by side: a bundle's pass costs
 // tens of nanoseconds, a hand-off to a thread about a microsecond.
 constexpr std::int32_t kBundlesPerRange = 64;
@@ -398,22 +415,6 @@ void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
     if (set.islandPushes[std::size_t(islandOf(set, c.stateA, c.stateB))] == 0) continue;
     set.pushOverflow.push_back(static_cast<std::int32_t>(k));
     ++set.pushedContacts;
-  }
-}
-
-// Bundles ahead of the one being filled whose contacts are fetched into the
-// cache meanwhile: a colour's contacts lie scattered in memory, and asking
-// for the next bundles' lines early overlaps their misses with the filling.
-constexpr std::int32_t kPrefetchBundles = 6;
-
-// visit(b) for each bundle b of [begin, end), fetch(b) having been asked
-// kPrefetchBundles bundles before.
-template <class Fetch, class Visit>
-void visitFetchingAhead(std::int32_t begin, std::int32_t end, Fetch&& fetch, Visit&& visit) {
-  for (std::int32_t b = begin; b < std::min(begin + kPrefetchBundles, end); ++b) fetch(b);
-  for (std::int32_t b = begin; b < end; ++b) {
-    if (b + kPrefetchBundles < end) fetch(b + kPrefetchBundles);
-    visit(b);
   }
 }
 

@@ -351,12 +351,22 @@ void storeSupportBundle(const WideSupportRow<F>& row, WorldData& world) {
   }
 }
 
+// Starts loading, to be written, the points row stores into.
+template <class F>
+void prefetchSupportTargets(const WideSupportRow<F>& row, const WorldData& world) {
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    if (row.contact[lane] >= 0) __builtin_prefetch(&world.contacts[row.contact[lane]].manifold.points, 1);
+  }
+}
+
 template <class F>
 void storeSupportWide(WideContactSet& set, WorldData& world) {
   const std::vector<WideSupportRow<F>>& rows = supportBundlesOf<F>(set);
   world.tasks.forRanges(static_cast<std::int32_t>(rows.size()), kBundlesPerFillRange,
                         [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t b = begin; b < end; ++b) storeSupportBundle(rows[std::size_t(b)], world);
+                          visitFetchingAhead(
+                              begin, end, [&](std::int32_t b) { prefetchSupportTargets(rows[std::size_t(b)], world); },
+                              [&](std::int32_t b) { storeSupportBundle(rows[std::size_t(b)], world); });
                         });
 }
 
