@@ -115,8 +115,12 @@ class Simulation {
   FieldResult addField(const FieldDef& def);
   /// False for an unknown id.
   bool removeField(FieldId id);
-  /// Replaces the world with preset `id`; false (world untouched) when out of range.
-  bool loadPreset(int id, Material selected);
+  /// Replaces the world with preset `id`, its scene (kSceneSize from the
+  /// origin) where it was drawn when the room's bounds hold it there, else
+  /// centred on the bounds (docs/networked-play.md, "Large rooms").
+  /// Refused, with the reason and the world untouched: an id out of range,
+  /// bounds smaller than the scene.
+  InputResult loadPreset(int id, Material selected);
   /// Removes every body.
   void clear();
   /// Replaces the world with a serialised Scene (docs/scenes.md), moved to
@@ -159,6 +163,9 @@ class Simulation {
   std::uint64_t bodiesLeftWorld() const { return bodiesLeftWorld_; }
 
  private:
+  /// Builds preset `id` with its scene centred on the room's bounds, in a
+  /// world of its own that replaces this one when the preset is made.
+  InputResult loadPresetCentred(int id, Material selected);
   /// Creates a body by `make` unless spawnRefusal() says why not (a
   /// refused creation changes nothing).
   template <class Make>
@@ -174,6 +181,9 @@ class Simulation {
 
   double tickHz_;
   FieldLimits fieldLimits_;
+  /// The room's bounds, relative to `roomOrigin_` (where the world starts).
+  AABB roomBounds_;
+  Vec2d roomOrigin_;
   World world_;
   /// This world's bodies in the server's total (after every change).
   ServerBodies::Share serverShare_;
