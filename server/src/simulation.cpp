@@ -201,7 +201,8 @@ bool Simulation::removeField(FieldId id) { return world_.removeField(id); }
 
 InputResult Simulation::loadPreset(int id, Material selected) {
   if (id < 0 || id >= kPresetCount) {
-    return {"load_preset: preset " + std::to_string(id) + " does not exist (0-" + std::to_string(kPresetCount - 1) + ")"};
+    return {"load_preset: preset " + std::to_string(id) + " does not exist (0-" +
+            std::to_string(kPresetCount - 1) + ")"};
   }
   // Where the scene was drawn, when the room holds it there (every room
   // around (0, 0) large enough): as presets always loaded.

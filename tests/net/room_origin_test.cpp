@@ -218,6 +218,8 @@ constexpr client::Box kLevelBounds{{83000, 0}, {83100, 100}};
 /// Where a preset's scene origin lands in it: the scene's centre (12.5,
 /// 9.375) on the bounds' centre (83 050, 50).
 const Vec2d kLevelSceneOrigin(83037.5, 40.625);
+/// Two floats 3 km out lie 0.24 mm apart: a mirror position there is within it.
+constexpr double kMirrorResolution = 1e-3;
 
 client::ConnectOptions roomWithBounds(std::uint16_t port, const std::string& name, const client::Box& bounds) {
   auto options = localClient(port, "maker");
@@ -251,9 +253,10 @@ LoadedPreset loadedPreset(Client& client, int preset, std::uint32_t steps) {
     }
   }
   LoadedPreset seen;
-  for (const auto& [id, body] : client.mirror().bodies()) seen.bodies[id] = client.mirror().toGlobal(body.state.position);
-  if (client.mirror().preset()) {
-    for (const Marker& marker : client.mirror().preset()->markers) seen.markers.push_back(client.mirror().toGlobal(marker.center));
+  const client::WorldMirror& mirror = client.mirror();
+  for (const auto& [id, body] : mirror.bodies()) seen.bodies[id] = mirror.toGlobal(body.state.position);
+  if (mirror.preset()) {
+    for (const Marker& marker : mirror.preset()->markers) seen.markers.push_back(mirror.toGlobal(marker.center));
   }
   return seen;
 }
@@ -279,17 +282,19 @@ void expectMovedWhole(int preset, std::uint32_t steps) {
     ASSERT_NE(found, inLevel.bodies.end()) << "body " << id;
     EXPECT_TRUE(inside(kLevelBounds, found->second))
         << "body " << id << " at (" << found->second.x() << ", " << found->second.y() << ")";
-    // The level computes around the scene's own origin: the same floats.
-    EXPECT_LT((found->second - kLevelSceneOrigin - place).norm(), 1e-4) << "body " << id;
+    // The level computes around the scene's own origin, the same floats;
+    // the mirror holds them 3 km from the room's, a quarter millimetre apart.
+    EXPECT_LT((found->second - kLevelSceneOrigin - place).norm(), kMirrorResolution) << "body " << id;
   }
   ASSERT_EQ(inLevel.markers.size(), atOrigin.markers.size());
   for (std::size_t i = 0; i < atOrigin.markers.size(); ++i) {
-    EXPECT_LT((inLevel.markers[i] - kLevelSceneOrigin - atOrigin.markers[i]).norm(), 1e-4) << "marker " << i;
+    EXPECT_LT((inLevel.markers[i] - kLevelSceneOrigin - atOrigin.markers[i]).norm(), kMirrorResolution)
+        << "marker " << i;
   }
 }
 
 TEST(RoomOrigin, APresetInALevelFarOutIsCentredOnItsBounds_ItsMarkersWithIt) {
-  expectMovedWhole(3, 0);  // the polygon tutorial and its three markers
+  expectMovedWhole(3, 1);  // the polygon tutorial and its three markers
 }
 
 TEST(RoomOrigin, TheElevatorsScriptDrivesItsPlatformInALevelFarOut_AsAtTheOrigin) {
