@@ -249,7 +249,7 @@ InputResult Simulation::loadScene(std::string_view data) {
   World candidate(world_.settings());
   InputResult loaded = wire::loadScene(candidate, data);
   if (!loaded) return loaded;
-  // Saved with its own origin: moved to the room's, where its bounds are.
+  // Saved with its own origin: moved to the world's, where its bounds are.
   if (InputResult moved = candidate.shiftOrigin(world_.origin()); !moved) return {"scene refused: " + moved.error};
   std::string refusal = worldRefusal(candidate, fieldLimits_);
   if (refusal.empty()) refusal = serverShare_.refusal(candidate.bodyCount() - world_.bodyCount());

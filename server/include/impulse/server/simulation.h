@@ -45,7 +45,9 @@ struct SimulationSettings {
   /// relative to the origin).
   AABB bounds = WorldSettings{}.bounds;
   /// The world's origin (World::shiftOrigin): where its float positions are
-  /// precise. Presets load around it; scenes are moved to it.
+  /// precise. Presets load around it when the bounds hold their scene
+  /// there (else centred on the bounds: Simulation::loadPreset); scenes are
+  /// moved to the world's.
   Vec2d origin = Vec2d::Zero();
   /// Worker threads for the world's step (the room's share of the stepping pool).
   TaskSettings tasks{};
