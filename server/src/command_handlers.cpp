@@ -244,13 +244,8 @@ void loadPreset(CommandContext& context, const v1::LoadPreset& command) {
     return context.fail("load_preset.material " + std::to_string(command.material()) +
                         " is not a material " + wire::materialRange());
   }
-  if (command.preset() < 0 || command.preset() >= kPresetCount) {
-    return context.fail("load_preset: preset " + std::to_string(command.preset()) +
-                        " does not exist (0-" + std::to_string(kPresetCount - 1) + ")");
-  }
-  if (!context.simulation.loadPreset(command.preset(), *material)) {
-    return context.fail("load_preset: preset " + std::to_string(command.preset()) +
-                        " failed to load");
+  if (InputResult loaded = context.simulation.loadPreset(command.preset(), *material); !loaded) {
+    return context.fail(loaded.error);
   }
   context.succeed();
 }

@@ -21,11 +21,27 @@ WorldSettings worldSettings(const SimulationSettings& settings) {
   return world;
 }
 
+/// The preset scene, relative to the origin the presets are built around.
+const AABB kPresetScene{Vec2::Zero(), kSceneSize};
+
+Vec2d centreOf(const AABB& box) { return (box.lower.cast<double>() + box.upper.cast<double>()) / 2; }
+
+std::string presetTooLarge(const AABB& bounds) {
+  const Vec2 size = bounds.upper - bounds.lower;
+  char message[160];
+  std::snprintf(message, sizeof message,
+                "load_preset: the preset scene is %g x %g m: it does not fit in the room's bounds (%g x %g m)",
+                double(kSceneSize.x()), double(kSceneSize.y()), double(size.x()), double(size.y()));
+  return message;
+}
+
 }  // namespace
 
 Simulation::Simulation(const SimulationSettings& settings)
     : tickHz_(settings.tickHz),
       fieldLimits_(settings.fieldLimits),
+      roomBounds_(settings.bounds),
+      roomOrigin_(settings.origin),
       world_(worldSettings(settings)),
       serverShare_(settings.serverBodies),
       paused_(settings.paused),
@@ -183,12 +199,37 @@ FieldResult Simulation::addField(const FieldDef& def) {
 
 bool Simulation::removeField(FieldId id) { return world_.removeField(id); }
 
-bool Simulation::loadPreset(int id, Material selected) {
-  const auto info = impulse::loadPreset(world_, id, selected);
-  if (!info) return false;
-  preset_ = *info;
+InputResult Simulation::loadPreset(int id, Material selected) {
+  if (id < 0 || id >= kPresetCount) {
+    return {"load_preset: preset " + std::to_string(id) + " does not exist (0-" +
+            std::to_string(kPresetCount - 1) + ")"};
+  }
+  // Where the scene was drawn, when the room holds it there (every room
+  // around (0, 0) large enough): as presets always loaded.
+  if (!roomBounds_.contains(kPresetScene)) return loadPresetCentred(id, selected);
+  preset_ = *impulse::loadPreset(world_, id, selected);
   startWorldGeneration();
-  return true;
+  return {};
+}
+
+InputResult Simulation::loadPresetCentred(int id, Material selected) {
+  const Vec2 roomSize = roomBounds_.upper - roomBounds_.lower;
+  if (roomSize.x() < kSceneSize.x() || roomSize.y() < kSceneSize.y()) return {presetTooLarge(roomBounds_)};
+  // The world's origin goes where the scene's own origin must lie for its
+  // centre to be the bounds' centre, and stays there: the preset's script
+  // and markers are written around that origin. Clients see no difference
+  // (positions leave the room from (0, 0)); floats are finer there still.
+  const Vec2d origin = roomOrigin_ + centreOf(roomBounds_) - centreOf(kPresetScene);
+  const Vec2d roomOffset = roomOrigin_ - origin;
+  WorldSettings settings = world_.settings();
+  settings.bounds = {(roomBounds_.lower.cast<double>() + roomOffset).cast<Real>(),
+                     (roomBounds_.upper.cast<double>() + roomOffset).cast<Real>()};
+  World candidate(settings);
+  if (InputResult moved = candidate.shiftOrigin(origin); !moved) return {"load_preset: " + moved.error};
+  preset_ = *impulse::loadPreset(candidate, id, selected);
+  world_ = std::move(candidate);
+  startWorldGeneration();
+  return {};
 }
 
 void Simulation::clear() {
@@ -208,7 +249,7 @@ InputResult Simulation::loadScene(std::string_view data) {
   World candidate(world_.settings());
   InputResult loaded = wire::loadScene(candidate, data);
   if (!loaded) return loaded;
-  // Saved with its own origin: moved to the room's, where its bounds are.
+  // Saved with its own origin: moved to the world's, where its bounds are.
   if (InputResult moved = candidate.shiftOrigin(world_.origin()); !moved) return {"scene refused: " + moved.error};
   std::string refusal = worldRefusal(candidate, fieldLimits_);
   if (refusal.empty()) refusal = serverShare_.refusal(candidate.bodyCount() - world_.bodyCount());

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "net_test_support.h"
@@ -209,6 +210,107 @@ TEST(RoomOrigin, RefusalsQuotePositionsAndBoundsFromZero_AsTheClientGaveThem) {
   const std::string dragged = errorOf(far.request(client::setJointTarget(hand, wayOut)));
   EXPECT_TRUE(mentions(dragged, "target " + quoted(wayOut.x, wayOut.y) + " is outside " + grown))
       << dragged;
+}
+
+/// A room as large as a level, 3 km from its origin (80 000, 0): its bounds
+/// do not hold the preset scene where the presets draw it.
+constexpr client::Box kLevelBounds{{83000, 0}, {83100, 100}};
+/// Where a preset's scene origin lands in it: the scene's centre (12.5,
+/// 9.375) on the bounds' centre (83 050, 50).
+const Vec2d kLevelSceneOrigin(83037.5, 40.625);
+/// Two floats 3 km out lie 0.24 mm apart: a mirror position there is within it.
+constexpr double kMirrorResolution = 1e-3;
+
+client::ConnectOptions roomWithBounds(std::uint16_t port, const std::string& name, const client::Box& bounds) {
+  auto options = localClient(port, "maker");
+  options.room = name;
+  options.roomBounds = bounds;
+  return options;
+}
+
+/// A preset's bodies (positions from (0, 0) by id) and markers' centres.
+struct LoadedPreset {
+  std::map<std::uint32_t, Vec2d> bodies;
+  std::vector<Vec2d> markers;
+};
+
+/// Loads `preset` into the client's paused room, steps it `steps` ticks and
+/// returns it as the client's mirror then holds it.
+LoadedPreset loadedPreset(Client& client, int preset, std::uint32_t steps) {
+  EXPECT_TRUE(result(client.request(client::setPaused(true))).ok());
+  const v1::CommandResult loaded = result(client.request(client::loadPreset(preset)));
+  EXPECT_TRUE(loaded.ok()) << loaded.error();
+  const v1::CommandResult stepped = result(client.request(client::step(steps)));
+  EXPECT_TRUE(stepped.ok()) << stepped.error();
+  const auto holdsIt = [&] {
+    const auto& shown = client.mirror().preset();
+    return client.mirror().tick() >= stepped.tick() && shown && shown->id == preset;
+  };
+  while (!holdsIt()) {
+    if (!client.awaitSnapshot(milliseconds(3000))) {
+      ADD_FAILURE() << "no snapshot of preset " << preset << " after " << steps << " ticks";
+      break;
+    }
+  }
+  LoadedPreset seen;
+  const client::WorldMirror& mirror = client.mirror();
+  for (const auto& [id, body] : mirror.bodies()) seen.bodies[id] = mirror.toGlobal(body.state.position);
+  if (mirror.preset()) {
+    for (const Marker& marker : mirror.preset()->markers) seen.markers.push_back(mirror.toGlobal(marker.center));
+  }
+  return seen;
+}
+
+bool inside(const client::Box& bounds, const Vec2d& point) {
+  return point.x() >= bounds.min.x && point.x() <= bounds.max.x && point.y() >= bounds.min.y &&
+         point.y() <= bounds.max.y;
+}
+
+/// Preset `preset` loaded in a room around (0, 0) and in the level room,
+/// stepped `steps` ticks: the level's is the same scene, moved whole.
+void expectMovedWhole(int preset, std::uint32_t steps) {
+  SCOPED_TRACE("preset " + std::to_string(preset));
+  ServerProcess server;
+  Client near(roomAround(server.port(), 0));
+  Client level(roomWithBounds(server.port(), "level", kLevelBounds));
+  const LoadedPreset atOrigin = loadedPreset(near, preset, steps);
+  const LoadedPreset inLevel = loadedPreset(level, preset, steps);
+  ASSERT_FALSE(atOrigin.bodies.empty());
+  ASSERT_EQ(inLevel.bodies.size(), atOrigin.bodies.size()) << "every body of the scene is made";
+  for (const auto& [id, place] : atOrigin.bodies) {
+    const auto found = inLevel.bodies.find(id);
+    ASSERT_NE(found, inLevel.bodies.end()) << "body " << id;
+    EXPECT_TRUE(inside(kLevelBounds, found->second))
+        << "body " << id << " at (" << found->second.x() << ", " << found->second.y() << ")";
+    // The level computes around the scene's own origin, the same floats;
+    // the mirror holds them 3 km from the room's, a quarter millimetre apart.
+    EXPECT_LT((found->second - kLevelSceneOrigin - place).norm(), kMirrorResolution) << "body " << id;
+  }
+  ASSERT_EQ(inLevel.markers.size(), atOrigin.markers.size());
+  for (std::size_t i = 0; i < atOrigin.markers.size(); ++i) {
+    EXPECT_LT((inLevel.markers[i] - kLevelSceneOrigin - atOrigin.markers[i]).norm(), kMirrorResolution)
+        << "marker " << i;
+  }
+}
+
+TEST(RoomOrigin, APresetInALevelFarOutIsCentredOnItsBounds_ItsMarkersWithIt) {
+  expectMovedWhole(3, 1);  // the polygon tutorial and its three markers
+}
+
+TEST(RoomOrigin, TheElevatorsScriptDrivesItsPlatformInALevelFarOut_AsAtTheOrigin) {
+  expectMovedWhole(19, 120);  // 2 s: the platform has risen
+}
+
+TEST(RoomOrigin, APresetLargerThanTheRoomIsRefused_NamingBothSizes_AndTheWorldIsKept) {
+  ServerProcess server;
+  const client::Box narrow{{83000, 0}, {83020, 100}};
+  Client maker(roomWithBounds(server.port(), "narrow", narrow));
+  const v1::CommandResult made = result(maker.request(client::spawnCircle({83010, 50}, 0.5)));
+  ASSERT_TRUE(made.ok()) << made.error();
+  const std::string refused = errorOf(maker.request(client::loadPreset(1)));
+  EXPECT_TRUE(mentions(refused, "preset scene is 25 x 18.75 m: it does not fit in the room's bounds (20 x 100 m)"))
+      << refused;
+  EXPECT_TRUE(maker.request(client::queryBody(made.body_id())).has_body_info()) << "the world is as it was";
 }
 
 }  // namespace

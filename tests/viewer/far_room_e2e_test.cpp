@@ -3,7 +3,8 @@
 // holds far out is drawn where the view puts that absolute point, and a
 // circle drawn under the cursor lands at the absolute point under it. A
 // room that does not hold the preset scene opens on its bounds, or on its
-// bodies when the bounds are too large to show.
+// bodies when the bounds are too large to show; a preset loaded there lands
+// centred on its bounds, in view.
 #include <gtest/gtest.h>
 
 #include "palette.h"
@@ -288,6 +289,35 @@ TEST(FarRoom, TheInspectorShowsAndTakesPositionsFromZero_InDouble) {
       << "the ball is at x = " << queried().x();
   EXPECT_NEAR(queried().y(), 10.25, 1e-3);
   ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().panelState().poseEdit.values[0] == 83020.125; }));
+}
+
+TEST(FarRoom, APresetLoadedInALevel83KmOutLandsInItsBoundsAndOnScreen) {
+  net_test::ServerProcess server({"--paused"});
+  const client::Box bounds{{83000, 0}, {83100, 100}};
+  client::Client maker(roomMaker(server.port(), "level", bounds));
+  ViewerHarness viewer(server.port(), 1280, 720, {}, "level");
+  ASSERT_TRUE(viewer.runUntil([&] { return viewer.app().connection().connected(); }));
+  viewer.tap(SDLK_3);  // the polygon tutorial
+  const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
+  ASSERT_TRUE(viewer.runUntil([&] {
+    return mirror.preset() && mirror.preset()->id == 3 && !viewer.app().world().bodies().empty();
+  }));
+  viewer.runFrames(3);
+  const viewer::PixelRect scene = viewer.app().layout().scene;
+  for (const auto& [id, body] : mirror.bodies()) {
+    const Vec2d place = mirror.toGlobal(body.state.position);
+    EXPECT_TRUE(place.x() >= bounds.min.x && place.x() <= bounds.max.x && place.y() >= bounds.min.y &&
+                place.y() <= bounds.max.y)
+        << "body " << id << " at (" << place.x() << ", " << place.y() << ")";
+    const auto at = viewer.pixel(body.state.position);
+    EXPECT_TRUE(scene.contains(at.x, at.y)) << "body " << id << " is drawn at pixel (" << at.x << ", " << at.y
+                                            << "), off the scene";
+  }
+  for (const Marker& marker : mirror.preset()->markers) {
+    const auto at = viewer.pixel(marker.center);
+    EXPECT_TRUE(scene.contains(at.x, at.y)) << "a marker is drawn at pixel (" << at.x << ", " << at.y << ")";
+  }
+  EXPECT_NE(viewer.capture(screenshotPath("far_room_preset.bmp")), nullptr) << SDL_GetError();
 }
 
 }  // namespace

@@ -45,7 +45,9 @@ struct SimulationSettings {
   /// relative to the origin).
   AABB bounds = WorldSettings{}.bounds;
   /// The world's origin (World::shiftOrigin): where its float positions are
-  /// precise. Presets load around it; scenes are moved to it.
+  /// precise. Presets load around it when the bounds hold their scene
+  /// there (else centred on the bounds: Simulation::loadPreset); scenes are
+  /// moved to the world's.
   Vec2d origin = Vec2d::Zero();
   /// Worker threads for the world's step (the room's share of the stepping pool).
   TaskSettings tasks{};
@@ -115,8 +117,12 @@ class Simulation {
   FieldResult addField(const FieldDef& def);
   /// False for an unknown id.
   bool removeField(FieldId id);
-  /// Replaces the world with preset `id`; false (world untouched) when out of range.
-  bool loadPreset(int id, Material selected);
+  /// Replaces the world with preset `id`, its scene (kSceneSize from the
+  /// origin) where it was drawn when the room's bounds hold it there, else
+  /// centred on the bounds (docs/networked-play.md, "Large rooms").
+  /// Refused, with the reason and the world untouched: an id out of range,
+  /// bounds smaller than the scene.
+  InputResult loadPreset(int id, Material selected);
   /// Removes every body.
   void clear();
   /// Replaces the world with a serialised Scene (docs/scenes.md), moved to
@@ -159,6 +165,9 @@ class Simulation {
   std::uint64_t bodiesLeftWorld() const { return bodiesLeftWorld_; }
 
  private:
+  /// Builds preset `id` with its scene centred on the room's bounds, in a
+  /// world of its own that replaces this one when the preset is made.
+  InputResult loadPresetCentred(int id, Material selected);
   /// Creates a body by `make` unless spawnRefusal() says why not (a
   /// refused creation changes nothing).
   template <class Make>
@@ -174,6 +183,9 @@ class Simulation {
 
   double tickHz_;
   FieldLimits fieldLimits_;
+  /// The room's bounds, relative to `roomOrigin_` (where the world starts).
+  AABB roomBounds_;
+  Vec2d roomOrigin_;
   World world_;
   /// This world's bodies in the server's total (after every change).
   ServerBodies::Share serverShare_;
