@@ -49,6 +49,8 @@ Simulation::Simulation(const SimulationSettings& settings)
   world_.recordChanges(true);
   // An empty world takes any origin the room's bounds allow.
   world_.shiftOrigin(settings.origin);
+  // A room smaller than the preset scene starts empty (loadPreset refuses
+  // it and keeps the world).
   loadPreset(settings.preset, Material::Solid);
 }
 
