@@ -143,6 +143,17 @@ std::optional<BodyHit> App::bodyAt(const Vec2& point) const {
 void App::act(ControlKey key) {
   controls_.keyPressed(key, context(), now());
   if (key.control == Control::FitView) fitFrame();
+  if (key.control == Control::LoadPreset) framePresetLanding();
+}
+
+// A room opened on its bodies keeps that frame, and its area of interest
+// may hold none of where the preset lands: the view moves there (grown as
+// a bodies' frame is, so nothing sits on its edge), and the area follows.
+void App::framePresetLanding() {
+  const int link = currentLink();
+  if (link == 0 || framedConnection_ != link) return;
+  const AABB bounds = roomBounds();
+  if (opensOnBodies(bounds)) controls_.setFrame(presetLanding(bounds).expanded(kBodiesAreaMargin));
 }
 
 void App::actOnScene(SceneKey key) {

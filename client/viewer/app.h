@@ -103,6 +103,7 @@ class App {
   /// connection, and on F, where a room that opens on its bodies is framed
   /// on the bodies the mirror holds now (the area sent follows the view).
   void fitFrame();
+  void framePresetLanding();
   /// Sends --budget on every new connection, and --area-margin's area on
   /// every new connection once the room is framed and whenever the view
   /// moves past half the margin.

@@ -7,6 +7,9 @@
 // centred on its bounds, in view.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "palette.h"
 #include "scene_frame.h"
 #include "server_process.h"
@@ -318,6 +321,37 @@ TEST(FarRoom, APresetLoadedInALevel83KmOutLandsInItsBoundsAndOnScreen) {
     EXPECT_TRUE(scene.contains(at.x, at.y)) << "a marker is drawn at pixel (" << at.x << ", " << at.y << ")";
   }
   EXPECT_NE(viewer.capture(screenshotPath("far_room_preset.bmp")), nullptr) << SDL_GetError();
+}
+
+TEST(FarRoom, APresetLoadedInARoomTooLargeToShowIsFramedWhereItLands) {
+  net_test::ServerProcess server({"--paused"});
+  client::Client maker(roomMaker(server.port(), "region", kRegionBounds));
+  ASSERT_TRUE(maker.request(client::clearWorld()).command_result().ok());
+  // The room opens on a ball in its corner, 5 km from where a preset lands.
+  ASSERT_TRUE(maker.request(client::spawnCircle({83012.5, 10}, kBallRadius, {.isStatic = true}))
+                  .command_result()
+                  .ok());
+  ViewerHarness viewer(server.port(), 1280, 720, {}, "region");
+  ASSERT_TRUE(viewer.runUntil([&] { return knowsBodies(viewer, 1); }));
+  viewer.tap(SDLK_3);  // the polygon tutorial
+  const client::WorldMirror& mirror = viewer.app().connection().client()->mirror();
+  // Centred on the bounds' centre (88 000, 5 000), the scene 25 x 18.75 m.
+  const auto landed = [&](const client::MirrorBody& body) {
+    const Vec2d place = mirror.toGlobal(body.state.position);
+    return std::abs(place.x() - 88000) <= 12.5 && std::abs(place.y() - 5000) <= 9.375;
+  };
+  // Only the area of interest's bodies arrive: the view must have gone there.
+  ASSERT_TRUE(viewer.runUntil([&] {
+    return mirror.preset() && mirror.preset()->id == 3 && !mirror.bodies().empty() &&
+           std::all_of(mirror.bodies().begin(), mirror.bodies().end(), [&](const auto& b) { return landed(b.second); });
+  })) << "the viewer holds " << mirror.bodies().size() << " bodies";
+  viewer.runFrames(3);
+  const viewer::PixelRect scene = viewer.app().layout().scene;
+  for (const auto& [id, body] : mirror.bodies()) {
+    const auto at = viewer.pixel(body.state.position);
+    EXPECT_TRUE(scene.contains(at.x, at.y)) << "body " << id << " is drawn at pixel (" << at.x << ", " << at.y
+                                            << "), off the scene";
+  }
 }
 
 }  // namespace
