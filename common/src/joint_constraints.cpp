@@ -92,10 +92,10 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
 
 // A mouse joint whose anchor is further than this from its target is still
 // pulling, though a wall may hold the body still: the body must not sleep.
+// (isAwayFromTarget takes a mouse joint's row.)
 constexpr Real kMouseAtTarget = Real(0.01);
 
 bool isAwayFromTarget(const JointRow& row) {
-  if (!std::holds_alternative<MouseJointSettings>(row.joint->settings)) return false;
   // At the step's start, as the rows measure it (B, the world, centred at the origin).
   const Vec2 gap = row.deltaCenter + row.anchorB - row.anchorA;
   return gap.squaredNorm() > kMouseAtTarget * kMouseAtTarget;
@@ -106,6 +106,7 @@ bool isAwayFromTarget(const JointRow& row) {
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
   colorStarts_ = {};
+  pullingRows_.clear();
   if (world.liveJoints == 0) {
     rows_.clear();
     tree_.clear();
@@ -118,6 +119,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   for (std::size_t index = 0; index < world.joints.size(); ++index) {
     const Joint& joint = world.joints[index];
     if (!hasAwakeBody(world, joint)) continue;
+    if (pullsToWorldPoint(joint)) pullingRows_.push_back(static_cast<std::int32_t>(jointOf_.size()));
     jointOf_.push_back(static_cast<std::int32_t>(index));
     colorOf_.push_back(coloring.take(sideOf(world, joint.edges.bodyA).state, sideBOf(world, joint).state));
   }
@@ -126,6 +128,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   // joints read in colour order instead jump across the list, a miss a row.
   colorStarts_ = sortByColor(colorOf_, order_);
   placesInOrder(order_, rankOf_);
+  for (std::int32_t& row : pullingRows_) row = rankOf_[std::size_t(row)];
   rows_.resize(jointOf_.size());
   world.tasks.forRanges(std::int32_t(jointOf_.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t i = begin; i < end; ++i) {
@@ -186,11 +189,19 @@ void JointConstraints::countPasses(SolverPasses& passes) const {
 }
 
 void JointConstraints::store(WorldData& world) {
-  for (const JointRow& row : rows_) {
-    Joint& joint = world.joints[row.index];
-    joint.impulses = row.impulses;
-    jointReaction(row, pass_.invH, joint.reactionForce, joint.reactionTorque);
-    if (isAwayFromTarget(row)) world.bodies[joint.edges.bodyA].sleepTime = 0;
+  // Each row writes its own joint: side by side.
+  world.tasks.forRanges(std::int32_t(rows_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t r = begin; r < end; ++r) {
+      const JointRow& row = rows_[std::size_t(r)];
+      Joint& joint = world.joints[row.index];
+      joint.impulses = row.impulses;
+      jointReaction(row, pass_.invH, joint.reactionForce, joint.reactionTorque);
+    }
+  });
+  // Two mouse joints may hold one body: its wake is written one by one.
+  for (std::int32_t r : pullingRows_) {
+    const JointRow& row = rows_[std::size_t(r)];
+    if (isAwayFromTarget(row)) world.bodies[row.joint->edges.bodyA].sleepTime = 0;
   }
 }
 

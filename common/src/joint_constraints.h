@@ -32,6 +32,8 @@ class JointConstraints final : public ConstraintKind {
   std::vector<JointRow> rows_;
   /// The joints of this step's rows, in the joints' order.
   std::vector<std::int32_t> jointOf_;
+  /// The rows (in colour order) of mouse joints, which keep their body awake.
+  std::vector<std::int32_t> pullingRows_;
   std::vector<std::int32_t> colorOf_;
   std::vector<std::int32_t> order_;
   /// Per entry of jointOf_, its row's place in colour order.
