@@ -36,10 +36,4 @@ AABB openingFrame(const AABB& roomBounds, std::span<const Vec2> bodies) {
   return atLeastPresetScene(areaOf(bodies).expanded(kBodiesAreaMargin));
 }
 
-AABB presetLanding(const AABB& roomBounds) {
-  if (roomBounds.contains(kPresetScene)) return kPresetScene;
-  const Vec2 shift = (roomBounds.lower + roomBounds.upper) / 2 - (kPresetScene.lower + kPresetScene.upper) / 2;
-  return {kPresetScene.lower + shift, kPresetScene.upper + shift};
-}
-
 }  // namespace impulse::viewer

@@ -27,9 +27,4 @@ bool opensOnBodies(const AABB& roomBounds);
 ///   bounds' centre.
 AABB openingFrame(const AABB& roomBounds, std::span<const Vec2> bodies);
 
-/// Where a preset loaded into the room lands, as the server places it
-/// (Simulation::loadPreset): the preset scene where it was drawn when the
-/// bounds hold it, else that scene centred on the bounds.
-AABB presetLanding(const AABB& roomBounds);
-
 }  // namespace impulse::viewer

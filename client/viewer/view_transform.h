@@ -9,10 +9,6 @@
 
 namespace impulse::viewer {
 
-/// The 25 m x 18.75 m rectangle every preset is built in, around the room's
-/// origin (the mirror's frame).
-inline const AABB kPresetScene{Vec2::Zero(), kSceneSize};
-
 struct PixelPoint {
   float x = 0;
   float y = 0;

@@ -21,11 +21,6 @@ WorldSettings worldSettings(const SimulationSettings& settings) {
   return world;
 }
 
-/// The preset scene, relative to the origin the presets are built around.
-const AABB kPresetScene{Vec2::Zero(), kSceneSize};
-
-Vec2d centreOf(const AABB& box) { return (box.lower.cast<double>() + box.upper.cast<double>()) / 2; }
-
 std::string presetTooLarge(const AABB& bounds) {
   const Vec2 size = bounds.upper - bounds.lower;
   char message[160];
@@ -221,7 +216,7 @@ InputResult Simulation::loadPresetCentred(int id, Material selected) {
   // centre to be the bounds' centre, and stays there: the preset's script
   // and markers are written around that origin. Clients see no difference
   // (positions leave the room from (0, 0)); floats are finer there still.
-  const Vec2d origin = roomOrigin_ + centreOf(roomBounds_) - centreOf(kPresetScene);
+  const Vec2d origin = roomOrigin_ + (presetLanding(roomBounds_).lower - kPresetScene.lower).cast<double>();
   const Vec2d roomOffset = roomOrigin_ - origin;
   WorldSettings settings = world_.settings();
   settings.bounds = {(roomBounds_.lower.cast<double>() + roomOffset).cast<Real>(),

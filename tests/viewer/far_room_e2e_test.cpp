@@ -113,7 +113,7 @@ AABB framedWithBallsOnScreen(const std::string& name, const client::Box& bounds,
   ViewerHarness viewer(server.port(), 1280, 720, {}, name);
   const auto allSeen = [&] {
     return viewer.app().world().bodies().size() == places.size() &&
-           viewer.app().view().frame().lower != viewer::kPresetScene.lower;
+           viewer.app().view().frame().lower != kPresetScene.lower;
   };
   if (!viewer.runUntil(allSeen)) {
     const AABB frame = viewer.app().view().frame();

@@ -520,6 +520,12 @@ PresetInfo fansPreset(World& world) {
 
 }  // namespace
 
+AABB presetLanding(const AABB& roomBounds) {
+  if (roomBounds.contains(kPresetScene)) return kPresetScene;
+  const Vec2 shift = (roomBounds.lower + roomBounds.upper) / 2 - (kPresetScene.lower + kPresetScene.upper) / 2;
+  return {kPresetScene.lower + shift, kPresetScene.upper + shift};
+}
+
 std::optional<PresetInfo> loadPreset(World& world, int id, Material selected) {
   if (id < 0 || id >= kPresetCount) return std::nullopt;
   world.clear();

@@ -39,6 +39,13 @@ struct PresetInfo {
 inline constexpr int kPresetCount = 22;
 /// Width and height of the scene in metres (the seed's 800x600 px at 32 px/m).
 inline const Vec2 kSceneSize = Vec2(25, Real(18.75));
+/// The rectangle every preset is drawn in, around the world's origin.
+inline const AABB kPresetScene{Vec2::Zero(), kSceneSize};
+
+/// Where a preset loaded into a room with these bounds lies (the server's
+/// rule, and the viewer's frame for it): the preset scene where it was
+/// drawn when the bounds hold it, else that scene centred on the bounds.
+AABB presetLanding(const AABB& roomBounds);
 
 /// Clears the world, resets gravity and builds preset `id` (0..21).
 /// `selected` is the viewer's current material (preset 9 uses it).
