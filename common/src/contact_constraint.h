@@ -156,13 +156,15 @@ struct WideContactSet {
   std::vector<std::int32_t> pushOverflow;
   /// How many contacts that is.
   int pushedContacts = 0;
-  /// Per solver state: its island (union-find; the static dummy 0 joins
+  /// Per solver state: its island's root (the static dummy 0 joins
   /// nothing), and by island root whether it is pushed.
   std::vector<std::int32_t> island;
   std::vector<std::uint8_t> islandPushes;
-  // Scratch for sorting by colour, kept to avoid allocation per step.
+  /// Each ref's colour, the refs sorted by colour, and where each colour
+  /// starts in that order (colourContacts).
   std::vector<std::int32_t> colorOf;
   std::vector<std::int32_t> order;
+  ColorStarts colorStart{};
   /// Per entry of WorldData::touchingUnsorted, its ConstraintRef.
   std::vector<std::int32_t> refOfUnsorted;
   /// The contact bundles' entries of `order`, and the support bundles'

@@ -358,27 +358,9 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
 
 // ---- the push pass's islands -------------------------------------------------
 
-std::int32_t findIsland(std::vector<std::int32_t>& island, std::int32_t state) {
-  while (island[std::size_t(state)] != state) {
-    island[std::size_t(state)] = island[std::size_t(island[std::size_t(state)])];
-    state = island[std::size_t(state)];
-  }
-  return state;
-}
-
 // A contact's island: its bodies' (the static dummy belongs to none).
-std::int32_t islandOf(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
-  return findIsland(set.island, stateA != 0 ? stateA : stateB);
-}
-
-void joinIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set) {
-  set.island.resize(stateCount);
-  for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = static_cast<std::int32_t>(s);
-  set.islandPushes.assign(stateCount, 0);
-  for (const ConstraintRef& ref : refs) {
-    if (ref.stateA == 0 || ref.stateB == 0) continue;
-    set.island[std::size_t(findIsland(set.island, ref.stateA))] = findIsland(set.island, ref.stateB);
-  }
+std::int32_t islandOf(const WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
+  return set.island[std::size_t(stateA != 0 ? stateA : stateB)];
 }
 
 void markPushed(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
@@ -454,11 +436,8 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
 
 template <class F>
 bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
-                       const ContactSoftness& softness, const SupportPass& support, GraphColoring& coloring,
-                       WideContactSet& set) {
-  set.colorOf.resize(refs.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) set.colorOf[i] = coloring.take(refs[i].stateA, refs[i].stateB);
-  const ColorStarts start = sortByColor(set.colorOf, set.order);
+                       const ContactSoftness& softness, const SupportPass& support, WideContactSet& set) {
+  const ColorStarts& start = set.colorStart;
   placeSupportRows<F>(support, refs.size(), set);
   set.contactSlices.cut(std::span(start).first(GraphColoring::kOverflow + 1), F::kLanes, set.colorBundleStart);
   const std::int32_t bundleCount = set.contactSlices.count();
@@ -472,7 +451,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
         [&](std::int32_t b) { set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b); });
   });
 
-  joinIslands(refs, world.solverStates.size(), set);
+  set.islandPushes.assign(world.solverStates.size(), 0);
   bool anyIntrusion = false;
   for (std::int32_t b = 0; b < bundleCount; ++b) {
     const std::uint8_t intruding = set.bundleIntrusion[std::size_t(b)];

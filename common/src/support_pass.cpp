@@ -138,26 +138,27 @@ void SupportPass::estimateSinks(std::span<const ConstraintRef> refs) {
   const std::size_t stateCount = level_.size();
   carried_.assign(stateCount, 0);
   supports_.assign(stateCount, 0);
-  for (const SupportRow& row : candidates_) {
+  for (std::size_t r = 0; r < candidates_.size(); ++r) {
+    const SupportRow& row = candidates_[r];
+    const CandidateLink& link = candidateLinks_[r];
     const ConstraintRef& ref = refs[std::size_t(row.ref)];
-    carried_[std::size_t(upperOf(row, refs))] = massOf(upperInvMass(row, ref));
-    carried_[std::size_t(lowerOf(row, refs))] = massOf(lowerInvMass(row, ref));
-    ++supports_[std::size_t(upperOf(row, refs))];
+    carried_[std::size_t(link.upper)] = massOf(upperInvMass(row, ref));
+    carried_[std::size_t(link.lower)] = massOf(lowerInvMass(row, ref));
+    ++supports_[std::size_t(link.upper)];
   }
-  for (auto row = candidates_.rbegin(); row != candidates_.rend(); ++row) {
-    const std::int32_t upper = upperOf(*row, refs);
-    carried_[std::size_t(lowerOf(*row, refs))] += carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
+  for (auto link = candidateLinks_.rbegin(); link != candidateLinks_.rend(); ++link) {
+    carried_[std::size_t(link->lower)] += carried_[std::size_t(link->upper)] / Real(supports_[std::size_t(link->upper)]);
   }
   sink_.assign(stateCount, 0);
-  for (const SupportRow& row : candidates_) {
+  for (std::size_t r = 0; r < candidates_.size(); ++r) {
+    const SupportRow& row = candidates_[r];
+    const CandidateLink& link = candidateLinks_[r];
     const ConstraintRef& ref = refs[std::size_t(row.ref)];
-    const std::int32_t upper = upperOf(row, refs);
-    const std::int32_t lower = lowerOf(row, refs);
-    const Real atRest = weightPerMass_ * carried_[std::size_t(upper)] / Real(supports_[std::size_t(upper)]);
+    const Real atRest = weightPerMass_ * carried_[std::size_t(link.upper)] / Real(supports_[std::size_t(link.upper)]);
     const Real load = std::max(atRest, ref.lastLoad);
-    const Real compliance = lower == 0 ? compliance_.statics : compliance_.dynamic;
+    const Real compliance = link.lower == 0 ? compliance_.statics : compliance_.dynamic;
     const Real soft = compliance * load * (lowerInvMass(row, ref) + upperInvMass(row, ref));
-    sink_[std::size_t(upper)] = std::max(sink_[std::size_t(upper)], sink_[std::size_t(lower)] + soft);
+    sink_[std::size_t(link.upper)] = std::max(sink_[std::size_t(link.upper)], sink_[std::size_t(link.lower)] + soft);
   }
 }
 
@@ -166,25 +167,16 @@ void SupportPass::estimateSinks(std::span<const ConstraintRef> refs) {
 // Rows between bodies are kept with their stack, the bodies the candidate
 // rows join above the ground. Dropping rows leaves each group's rows
 // lifting distinct bodies; groups left empty are dropped.
-bool SupportPass::keeps(const SupportRow& row, std::span<const ConstraintRef> refs) {
-  return lowerOf(row, refs) == 0 || stackSink_[std::size_t(findStack(stack_, upperOf(row, refs)))] >= kSupportedSink;
-}
-
-void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
-  const std::size_t stateCount = level_.size();
-  stack_.resize(stateCount);
-  for (std::size_t s = 0; s < stateCount; ++s) stack_[s] = std::int32_t(s);
-  for (const SupportRow& row : candidates_) {
-    const std::int32_t lower = lowerOf(row, refs);
-    if (lower == 0) continue;
-    stack_[std::size_t(findStack(stack_, upperOf(row, refs)))] = findStack(stack_, lower);
+void SupportPass::keepStacksThatSink() {
+  stackSink_.assign(level_.size(), 0);
+  for (const CandidateLink& link : candidateLinks_) {
+    Real& deepest = stackSink_[std::size_t(link.stack)];
+    deepest = std::max(deepest, sink_[std::size_t(link.upper)]);
   }
-  stackSink_.assign(stateCount, 0);
-  for (const SupportRow& row : candidates_) {
-    const std::int32_t upper = upperOf(row, refs);
-    Real& deepest = stackSink_[std::size_t(findStack(stack_, upper))];
-    deepest = std::max(deepest, sink_[std::size_t(upper)]);
-  }
+  auto keeps = [&](std::int32_t r) {
+    const CandidateLink& link = candidateLinks_[std::size_t(r)];
+    return link.lower == 0 || stackSink_[std::size_t(link.stack)] >= kSupportedSink;
+  };
   rows_.clear();
   leaningRows_ = 0;
   groupStart_.assign(1, 0);
@@ -192,8 +184,8 @@ void SupportPass::keepStacksThatSink(std::span<const ConstraintRef> refs) {
   for (std::size_t storey = 0; storey + 1 < candidateStoreyStart_.size(); ++storey) {
     for (std::int32_t group = candidateStoreyStart_[storey]; group < candidateStoreyStart_[storey + 1]; ++group) {
       for (std::int32_t r = candidateGroupStart_[std::size_t(group)]; r < candidateGroupStart_[std::size_t(group) + 1]; ++r) {
+        if (!keeps(r)) continue;
         const SupportRow& row = candidates_[std::size_t(r)];
-        if (!keeps(row, refs)) continue;
         rows_.push_back(row);
         leaningRows_ += row.leans ? 1 : 0;
       }
@@ -220,7 +212,7 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
     remember(world, refs);
   }
   estimateSinks(refs);
-  keepStacksThatSink(refs);
+  keepStacksThatSink();
   for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
 }
 
@@ -266,6 +258,25 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   for (std::size_t storey = 0; storey + 1 < storeyStart_.size(); ++storey) {
     groupStorey(refs, storey);
   }
+  linkCandidates(refs, stateCount);
+}
+
+// Each candidate's bodies and stack (the bodies the candidate rows join
+// above the ground, by union-find): they change only with the graph, so a
+// resting stack's steps read them instead of walking the refs and the
+// union-find again.
+void SupportPass::linkCandidates(std::span<const ConstraintRef> refs, std::size_t stateCount) {
+  candidateLinks_.resize(candidates_.size());
+  stack_.resize(stateCount);
+  for (std::size_t s = 0; s < stateCount; ++s) stack_[s] = std::int32_t(s);
+  for (std::size_t r = 0; r < candidates_.size(); ++r) {
+    CandidateLink& link = candidateLinks_[r];
+    link.upper = upperOf(candidates_[r], refs);
+    link.lower = lowerOf(candidates_[r], refs);
+    if (link.lower == 0) continue;
+    stack_[std::size_t(findStack(stack_, link.upper))] = findStack(stack_, link.lower);
+  }
+  for (CandidateLink& link : candidateLinks_) link.stack = findStack(stack_, link.upper);
 }
 
 // A body's k-th row in the storey goes to group k; the groups are then laid

@@ -116,9 +116,9 @@ class SupportPass {
   void findCandidates(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
   void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
+  void linkCandidates(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void estimateSinks(std::span<const ConstraintRef> refs);
-  void keepStacksThatSink(std::span<const ConstraintRef> refs);
-  bool keeps(const SupportRow& row, std::span<const ConstraintRef> refs);
+  void keepStacksThatSink();
   std::int32_t upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
   std::int32_t lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
 
@@ -145,13 +145,22 @@ class SupportPass {
   std::vector<std::int32_t> candidateGroupStart_;
   std::vector<std::int32_t> candidateStoreyStart_;
   std::vector<std::int32_t> rowGroup_;
+  /// Per candidate (as candidates_): its upper and lower body's states and
+  /// its stack (the root of the upper body's, union-find over stack_).
+  struct CandidateLink {
+    std::int32_t upper = 0;
+    std::int32_t lower = 0;
+    std::int32_t stack = 0;
+  };
+  std::vector<CandidateLink> candidateLinks_;
   /// Per state: rows seen so far in the storey being grouped, and which.
   std::vector<std::int32_t> upperRows_;
   std::vector<std::int32_t> upperStorey_;
   std::vector<std::int32_t> storeyStart_;
   /// Per state: the mass it carries (its own and its share of what stands
   /// on it), the rows it stands on, its estimated sink, and its stack
-  /// (union-find) with, at the stack's root, the stack's deepest sink.
+  /// (union-find, settled when the candidates are found) with, at the
+  /// stack's root, the stack's deepest sink.
   std::vector<Real> carried_;
   std::vector<std::int32_t> supports_;
   std::vector<Real> sink_;

@@ -27,6 +27,15 @@ class TaskRunner {
   void configure(const TaskSettings& settings);
   int workerCount() const { return settings_.workerCount; }
 
+  /// Calls first() and second(), at once when there is a thread for each.
+  /// Neither may run a parallel phase of its own.
+  template <class First, class Second>
+  void bothAtOnce(First&& first, Second&& second) const {
+    forRanges(2, 1, [&](std::int32_t begin, std::int32_t end) {
+      for (std::int32_t job = begin; job < end; ++job) job == 0 ? first() : second();
+    });
+  }
+
   /// Calls body(begin, end) over ranges covering [0, count), each of at
   /// least minRange items, possibly on several threads at once.
   template <class Body>
