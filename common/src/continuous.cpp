@@ -200,6 +200,28 @@ void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bo
 // Fast bodies per range of the side-by-side sweep: a sweep costs several
 // microseconds.
 constexpr std::int32_t kFastBodiesPerRange = 8;
+// Awake bodies per range of the side-by-side search for fast ones: a test
+// costs tens of nanoseconds.
+constexpr std::int32_t kBodiesPerTestRange = 1024;
+
+// The awake dynamic bodies that moved fast this step, in awake order: tested
+// side by side (a turn's angle each), gathered in order.
+void findFastBodies(WorldData& world, std::vector<std::int32_t>& bodies) {
+  const std::vector<std::int32_t>& awake = world.awakeBodies;
+  std::vector<std::uint8_t>& fast = world.awakeBodyFast;
+  fast.resize(awake.size());
+  world.tasks.forRanges(static_cast<std::int32_t>(awake.size()), kBodiesPerTestRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t i = begin; i < end; ++i) {
+                            // Kinematic bodies go where their velocity takes them, walls or not.
+                            const Body& body = world.bodies[awake[std::size_t(i)]];
+                            fast[std::size_t(i)] = body.isDynamic() && isFast(body) ? 1 : 0;
+                          }
+                        });
+  for (std::size_t i = 0; i < awake.size(); ++i) {
+    if (fast[i] != 0) bodies.push_back(awake[i]);
+  }
+}
 
 }  // namespace
 
@@ -209,11 +231,7 @@ void solveContinuous(WorldData& world, Real dt) {
   std::vector<std::int32_t>& bodies = world.fastBodies;
   bodies.clear();
   bodies.reserve(world.awakeBodies.size());  // the first fast body allocates nothing mid-game
-  for (std::int32_t slot : world.awakeBodies) {
-    // Kinematic bodies go where their velocity takes them, walls or not.
-    const Body& body = world.bodies[slot];
-    if (body.isDynamic() && isFast(body)) bodies.push_back(slot);
-  }
+  findFastBodies(world, bodies);
   const std::size_t fastCount = bodies.size();
   if (world.shapeGeometries.liveCount<ChainSegment>() > 0) addSlowBodiesOnChains(world, bodies);
   std::vector<std::uint8_t>& moved = world.fastBodyMoved;

@@ -144,6 +144,10 @@ struct WorldData {
   /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;
   std::vector<std::uint8_t> fastBodyMoved;
+  /// Per awake body: whether it moved fast this step (continuous.cpp).
+  std::vector<std::uint8_t> awakeBodyFast;
+  /// Per moved body: what the step guard found of it (step_guard.cpp).
+  std::vector<std::uint8_t> guardFindings;
   /// Per awake body: slow long enough that its island may sleep.
   std::vector<std::uint8_t> sleepCandidates;
   /// The touching contacts with an awake body, in solver order: the narrow
