@@ -275,6 +275,58 @@ void updateManifolds(WorldData& world, Real dt) {
                         });
 }
 
+// Chunks of collideList per worker for the touching list's side-by-side
+// compaction.
+constexpr std::int32_t kCollideChunksPerWorker = 4;
+
+// Chunk c of n covers [c * size / n, (c + 1) * size / n) of collideList.
+std::size_t chunkStart(std::size_t size, std::int32_t chunk, std::int32_t chunks) {
+  return size * std::size_t(chunk) / std::size_t(chunks);
+}
+
+bool isEventful(std::uint8_t outcome) { return (outcome & (kApart | kTouchChanged | kHits | kWakes)) != 0; }
+
+// The touching contacts (with their keys) in the visiting order, and the
+// count of recomputed manifolds: each chunk counts, then writes its part at
+// its offset, side by side.
+void listTouching(WorldData& world) {
+  const std::size_t size = world.collideList.size();
+  const std::int32_t chunks = kCollideChunksPerWorker * world.tasks.workerCount();
+  std::vector<CollideTally>& tallies = world.collideTallies;
+  tallies.assign(std::size_t(chunks), {});
+  world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t chunk = begin; chunk < end; ++chunk) {
+      CollideTally& tally = tallies[std::size_t(chunk)];
+      for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
+        const std::uint8_t outcome = world.collideOutcomes[i];
+        tally.touching += (outcome & kTouching) != 0 ? 1 : 0;
+        tally.recomputed += (outcome & kRecomputed) != 0 ? 1 : 0;
+        tally.eventful += isEventful(outcome) ? 1 : 0;
+      }
+    }
+  });
+  std::int32_t touching = 0;
+  world.profile.manifoldUpdates = 0;
+  for (CollideTally& tally : tallies) {
+    tally.firstTouching = touching;
+    touching += tally.touching;
+    world.profile.manifoldUpdates += tally.recomputed;
+  }
+  world.touchingContacts.resize(std::size_t(touching));
+  world.touchingKeys.resize(std::size_t(touching));
+  world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t chunk = begin; chunk < end; ++chunk) {
+      auto at = std::size_t(tallies[std::size_t(chunk)].firstTouching);
+      for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
+        if ((world.collideOutcomes[i] & kTouching) == 0) continue;
+        world.touchingContacts[at] = world.collideList[i];
+        world.touchingKeys[at] = world.collideKeys[i];
+        ++at;
+      }
+    }
+  });
+}
+
 // The solver colours the touching contacts in list order, and in a stack
 // the order shows: taken body by body from the lowest slot (scenes are
 // mostly built from the ground up), a 100-row pyramid's top drifts 1 mm in
@@ -363,32 +415,37 @@ void applyCollideEvents(WorldData& world, Contact& contact, std::uint8_t outcome
   }
 }
 
+// What changes lists and other bodies (contacts that went apart, touch and
+// hit events, wakes) runs in the visiting order, over the chunks that have
+// any.
+void applyCollideOutcomes(WorldData& world, Real dt) {
+  const std::size_t size = world.collideList.size();
+  const auto chunks = std::int32_t(world.collideTallies.size());
+  for (std::int32_t chunk = 0; chunk < chunks; ++chunk) {
+    if (world.collideTallies[std::size_t(chunk)].eventful == 0) continue;
+    for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
+      const std::uint8_t outcome = world.collideOutcomes[i];
+      if (!isEventful(outcome)) continue;
+      const std::int32_t index = world.collideList[i];
+      if ((outcome & kApart) != 0) {
+        destroyContact(world, index);
+      } else {
+        applyCollideEvents(world, world.contacts[index], outcome, dt);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void collideContacts(WorldData& world, Real dt) {
-  world.profile.manifoldUpdates = 0;
-  world.touchingContacts.clear();
   const std::size_t awakeCount = world.awakeBodies.size();
   // A copy: contacts that a wake below activates wait for the next step's
   // manifold update (their bodies were resting as they are now).
   world.contactsToCollide.assign(world.activeContacts);
   updateManifolds(world, dt);
-  // What changes lists and other bodies runs in the visiting order.
-  world.touchingKeys.clear();
-  for (std::size_t i = 0; i < world.collideList.size(); ++i) {
-    const std::int32_t index = world.collideList[i];
-    const std::uint8_t outcome = world.collideOutcomes[i];
-    if (outcome & kApart) {
-      destroyContact(world, index);
-      continue;
-    }
-    if (outcome & kRecomputed) ++world.profile.manifoldUpdates;
-    if (outcome & (kTouchChanged | kHits | kWakes)) applyCollideEvents(world, world.contacts[index], outcome, dt);
-    if (outcome & kTouching) {
-      world.touchingContacts.push_back(index);
-      world.touchingKeys.push_back(world.collideKeys[i]);
-    }
-  }
+  listTouching(world);
+  applyCollideOutcomes(world, dt);
   // Woken bodies' touching contacts are solved this step all the same.
   const bool woke = world.awakeBodies.size() != awakeCount;
   if (woke) {

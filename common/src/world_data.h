@@ -71,6 +71,15 @@ struct BodyReach {
   bool escapes = false;
 };
 
+/// What a chunk of the narrow phase's contacts found (contact.cpp).
+struct CollideTally {
+  std::int32_t touching = 0;
+  std::int32_t recomputed = 0;
+  std::int32_t eventful = 0;
+  /// Where its touching contacts start in the touching list.
+  std::int32_t firstTouching = 0;
+};
+
 struct WorldData {
   WorldSettings settings;
   /// World::origin: every float position here is relative to it.
@@ -137,6 +146,9 @@ struct WorldData {
   /// Per touching entry of collideList, its key in the touching list
   /// (the lowest slot of its awake bodies).
   std::vector<std::int32_t> collideKeys;
+  /// Per chunk of collideList (contact.cpp, listTouching): how many of its
+  /// contacts touch, were recomputed, or ask the serial pass for more.
+  std::vector<CollideTally> collideTallies;
   /// Per awake body after the solve: how its boxes stretch, and whether one
   /// left its fat box (world.cpp, solveAndMoveProxies).
   std::vector<BodyReach> awakeReach;
