@@ -173,6 +173,10 @@ struct WideContactSet {
   BundleSlices contactSlices;
   BundleSlices supportSlices;
   std::vector<std::uint8_t> bundleIntrusion;
+  /// Per contact bundle, whether a lane may bounce (mayBounce); the
+  /// restitution pass's bundles, in bundle order.
+  std::vector<std::uint8_t> bundleMayBounce;
+  std::vector<std::int32_t> bounceBundles;
 };
 
 /// What the contact passes of one sub-step read besides the constraints.

@@ -414,6 +414,21 @@ void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
   }
 }
 
+// Whether a point of the bundle approached fast enough to bounce when
+// prepared, on a contact that bounces at all: the restitution pass's first
+// two conditions, which the solve does not change (its third, that the
+// point pushed, it does).
+template <class F>
+F bouncingAtPrepare(const WideConstraint<F>& c, const WidePoint<F>& p, F threshold) {
+  return simd::both(simd::less(p.relativeVelocity, threshold), simd::notEqual(c.restitution, simd::broadcast<F>(0)));
+}
+
+template <class F>
+bool mayBounce(const WideConstraint<F>& c, Real restitutionThreshold) {
+  const F threshold = simd::broadcast<F>(-restitutionThreshold);
+  return simd::any(bouncingAtPrepare(c, c.points[0], threshold)) || simd::any(bouncingAtPrepare(c, c.points[1], threshold));
+}
+
 // Prepares bundle b from its lanes' contacts; returns its lanes with a
 // point deeper than its load explains. Reads only its own lanes' contacts
 // and writes only its own bundle, so bundles fill side by side.
@@ -433,6 +448,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   }
   const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
   packSupportLanes(set, c, entries);
+  set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
   return intruding;
 }
 
@@ -447,12 +463,17 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   auto& bundles = bundlesOf<F>(set);
   bundles.resize(std::size_t(bundleCount));
   set.bundleIntrusion.resize(std::size_t(bundleCount));
+  set.bundleMayBounce.resize(std::size_t(bundleCount));
   world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
     visitFetchingAhead(
         begin, end, [&](std::int32_t b) { prefetchBundleContacts(world, refs, set, b); },
         [&](std::int32_t b) { set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b); });
   });
 
+  set.bounceBundles.clear();
+  for (std::int32_t b = 0; b < bundleCount; ++b) {
+    if (set.bundleMayBounce[std::size_t(b)] != 0) set.bounceBundles.push_back(b);
+  }
   set.islandPushes.assign(world.solverStates.size(), 0);
   bool anyIntrusion = false;
   for (std::int32_t b = 0; b < bundleCount; ++b) {
@@ -496,18 +517,13 @@ void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& s
   }
 }
 
-// visit(k) for each entry k of the push pass's bundle list, colour by
-// colour, one colour's side by side. The list is in bundle order, so each
-// colour's entries are one run of it.
-//
-// The colours run backwards on the sub-steps that reverse the point order.
-// The push starts from rest every sub-step and sweeps once, so the contacts
-// solved last have the last word: in one fixed order a body is pushed into
-// the contacts solved before, the same way every sub-step, and in a packed
-// crowd pairs of circles were squeezed almost through each other.
+// visit(k) for each entry k of a list of bundles in bundle order (the push
+// pass's, the restitution pass's), colour by colour, one colour's side by
+// side; backwards through the colours when `backwards`. In bundle order,
+// each colour's entries are one run of the list.
 template <class Visit>
-void forEachPushBundleByColor(const ContactSolverContext& context, const WideContactSet& set, Visit&& visit) {
-  const std::vector<std::int32_t>& list = set.pushBundles;
+void forEachListedBundleByColor(const ContactSolverContext& context, const WideContactSet& set,
+                                const std::vector<std::int32_t>& list, bool backwards, Visit&& visit) {
   std::array<std::size_t, GraphColoring::kOverflow + 1> colorStart{};
   for (std::size_t color = 0; color < GraphColoring::kOverflow; ++color) {
     const auto from = list.begin() + std::ptrdiff_t(colorStart[color]);
@@ -515,7 +531,7 @@ void forEachPushBundleByColor(const ContactSolverContext& context, const WideCon
     colorStart[color + 1] = std::size_t(to - list.begin());
   }
   for (std::size_t k = 0; k < GraphColoring::kOverflow; ++k) {
-    const std::size_t color = context.reversePointOrder ? GraphColoring::kOverflow - 1 - k : k;
+    const std::size_t color = backwards ? GraphColoring::kOverflow - 1 - k : k;
     const std::size_t first = colorStart[color];
     context.tasks->forRanges(std::int32_t(colorStart[color + 1] - first), kBundlesPerRange,
                              [&](std::int32_t begin, std::int32_t end) {
@@ -570,7 +586,13 @@ template <class F>
 void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   const F maxPush = simd::broadcast<F>(-context.maxPushSpeed);
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
-  forEachPushBundleByColor(context, set, [&](std::size_t k) {
+  // The colours run backwards on the sub-steps that reverse the point
+  // order. The push starts from rest every sub-step and sweeps once, so the
+  // contacts solved last have the last word: in one fixed order a body is
+  // pushed into the contacts solved before, the same way every sub-step,
+  // and in a packed crowd pairs of circles were squeezed almost through
+  // each other.
+  forEachListedBundleByColor(context, set, set.pushBundles, context.reversePointOrder, [&](std::size_t k) {
     WideConstraint<F>& c = bundles[std::size_t(set.pushBundles[k])];
     const F pushes = laneMask<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
@@ -598,11 +620,12 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   // Same rule as the scalar pass: only points that approached fast and
   // pushed, on contacts that bounce at all.
   auto bouncing = [&](const WideConstraint<F>& c, const WidePoint<F>& p) {
-    return simd::both(simd::less(p.relativeVelocity, threshold),
-                      simd::both(simd::notEqual(p.totalNormalImpulse, simd::broadcast<F>(0)),
-                                 simd::notEqual(c.restitution, simd::broadcast<F>(0))));
+    return simd::both(bouncingAtPrepare(c, p, threshold), simd::notEqual(p.totalNormalImpulse, simd::broadcast<F>(0)));
   };
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
+  // Only the bundles that may bounce (mayBounce, when prepared).
+  std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  forEachListedBundleByColor(context, set, set.bounceBundles, false, [&](std::size_t k) {
+    WideConstraint<F>& c = bundles[std::size_t(set.bounceBundles[k])];
     // Resting contacts never bounce: skip their bodies entirely.
     if (!simd::any(bouncing(c, c.points[0])) && !simd::any(bouncing(c, c.points[1]))) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
