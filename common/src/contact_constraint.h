@@ -154,6 +154,9 @@ struct WideContactSet {
   std::vector<std::int32_t> pushBundles;
   std::vector<std::uint8_t> pushLanes;
   std::vector<std::int32_t> pushOverflow;
+  /// Per contact bundle, its lanes the push pass runs on (scratch for the
+  /// lists above).
+  std::vector<std::uint8_t> bundlePushLanes;
   /// How many contacts that is.
   int pushedContacts = 0;
   /// Per solver state: its island's root (the static dummy 0 joins

@@ -372,21 +372,29 @@ void markPushed(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
 // back out of that one in the same sub-step, and any width pushes the same
 // contacts.
 template <class F>
-void selectPushedContacts(WideContactSet& set, bool anyIntrusion) {
+void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool anyIntrusion) {
   set.pushBundles.clear();
   set.pushLanes.clear();
   set.pushOverflow.clear();
   set.pushedContacts = 0;
   if (!anyIntrusion) return;
+  // Each bundle's pushed lanes side by side, then listed in bundle order.
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
-  for (std::size_t b = 0; b < bundles.size(); ++b) {
-    const WideConstraint<F>& c = bundles[b];
-    std::uint8_t lanes = 0;
-    for (int l = 0; l < F::kLanes; ++l) {
-      if (c.source[l] >= 0 && set.islandPushes[std::size_t(islandOf(set, c.stateA[l], c.stateB[l]))] != 0) {
-        lanes = std::uint8_t(lanes | (1u << l));
+  set.bundlePushLanes.resize(bundles.size());
+  tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end; ++b) {
+      const WideConstraint<F>& c = bundles[std::size_t(b)];
+      std::uint8_t lanes = 0;
+      for (int l = 0; l < F::kLanes; ++l) {
+        if (c.source[l] >= 0 && set.islandPushes[std::size_t(islandOf(set, c.stateA[l], c.stateB[l]))] != 0) {
+          lanes = std::uint8_t(lanes | (1u << l));
+        }
       }
+      set.bundlePushLanes[std::size_t(b)] = lanes;
     }
+  });
+  for (std::size_t b = 0; b < bundles.size(); ++b) {
+    const std::uint8_t lanes = set.bundlePushLanes[b];
     if (lanes == 0) continue;
     set.pushBundles.push_back(static_cast<std::int32_t>(b));
     set.pushLanes.push_back(lanes);
@@ -499,7 +507,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
     anyIntrusion = true;
   }
   finishSupportBundles<F>(world.tasks, set);
-  selectPushedContacts<F>(set, anyIntrusion);
+  selectPushedContacts<F>(world.tasks, set, anyIntrusion);
   return anyIntrusion;
 }
 
