@@ -221,6 +221,16 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   candidates_.clear();
   candidateGroupStart_.assign(1, 0);
   candidateStoreyStart_.assign(1, 0);
+  candidateLinks_.clear();
+  // Levels count up from the static world: with no level contact on it (a
+  // pile in a kinematic drum), no body has one and nothing is a candidate.
+  const bool standsOnStatic = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) {
+    return ref.facing != 0 && (ref.stateA == 0 || ref.stateB == 0);
+  });
+  if (!standsOnStatic) {
+    level_.assign(stateCount, kUnreached);
+    return;
+  }
   levelBodies(refs, stateCount);
 
   unsorted_.clear();
