@@ -42,8 +42,9 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
           a.invMass, a.invInertia, b.invMass, b.invInertia, lastLoad(contact.manifold)};
 }
 
-// Contacts ahead of the one read whose lines (manifold, bodies) are fetched
-// meanwhile: the list runs through memory in order, but with gaps.
+// Contacts ahead of the one read whose lines (the manifold's two, and the
+// one naming its bodies) are fetched meanwhile: the list runs through memory
+// in order, but with gaps.
 constexpr std::int32_t kRefPrefetchDistance = 4;
 
 // Refs per range when collecting them side by side.
