@@ -52,17 +52,26 @@ bool pairLess(const ProxyPair& a, const ProxyPair& b) {
 }
 
 // Appends a pair of `userValue` with every leaf of `tree` overlapping `box`,
-// except the leaves `skip` names and known pairs.
+// except the leaves `skip` names.
 template <class Skip>
 void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, Skip&& skip,
-                  const BroadPhase::KnownPair& known, std::vector<ProxyPair>& pairs) {
+                  std::vector<ProxyPair>& pairs) {
   tree.query(box, [&](std::int32_t node) {
     if (skip(node)) return true;
     const std::int32_t other = tree.userValue(node);
-    const ProxyPair pair{std::min(userValue, other), std::max(userValue, other)};
-    if (!known || !known(pair.first, pair.second)) pairs.push_back(pair);
+    pairs.push_back({std::min(userValue, other), std::max(userValue, other)});
     return true;
   });
+}
+
+// Drops the pairs from `begin` on that `known` accepts. Asked in one run
+// after the tree walk rather than during it, the lookups (mostly a cache
+// miss each into the caller's set of contacts) do not wait on one another.
+void dropKnownPairs(std::vector<ProxyPair>& pairs, std::size_t begin, const BroadPhase::KnownPair& known) {
+  if (!known) return;
+  const auto kept = std::remove_if(pairs.begin() + std::ptrdiff_t(begin), pairs.end(),
+                                   [&](const ProxyPair& pair) { return known(pair.first, pair.second); });
+  pairs.erase(kept, pairs.end());
 }
 
 }  // namespace
@@ -217,19 +226,21 @@ void BroadPhase::queryPairs(std::int32_t proxyKey, const KnownPair& known, std::
   const AABB& box = own.box(node);
   const std::int32_t userValue = own.userValue(node);
   const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
+  const std::size_t begin = pairs.size();
   if (kind == ProxyKind::Movable) {
     // A queued static partner finds this pair itself, and so does a queued
     // movable one of a lower node.
     collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue,
-                 [&](std::int32_t other) { return isQueued(ProxyKind::Static, other); }, known, pairs);
+                 [&](std::int32_t other) { return isQueued(ProxyKind::Static, other); }, pairs);
     collectPairs(movable, box, userValue,
                  [&](std::int32_t other) { return other == node || (other < node && isQueued(ProxyKind::Movable, other)); },
-                 known, pairs);
+                 pairs);
   } else {
     // A queued static proxy (touched or teleported) only looks for movable
     // partners: static-static pairs never collide.
-    collectPairs(movable, box, userValue, [](std::int32_t) { return false; }, known, pairs);
+    collectPairs(movable, box, userValue, [](std::int32_t) { return false; }, pairs);
   }
+  dropKnownPairs(pairs, begin, known);
 }
 
 }  // namespace impulse
