@@ -45,6 +45,23 @@ constexpr int kBinCount = 16;
 // boxes, the rest of the subtree is then log2(n) deep.
 constexpr int kSurfaceAreaDepth = 40;
 
+// A box that any box joins into that box: lower bound +max, upper -max.
+constexpr Real kHuge = std::numeric_limits<Real>::max();
+const AABB kInverted{Vec2(kHuge, kHuge), Vec2(-kHuge, -kHuge)};
+
+// 0 for x, 1 for y: the axis along which a box is wider.
+int widerAxis(const AABB& box) {
+  return box.upper.x() - box.lower.x() >= box.upper.y() - box.lower.y() ? 0 : 1;
+}
+
+// The box of the items' centres.
+template <class Items>
+AABB centerSpread(const Items& items) {
+  AABB spread = kInverted;
+  for (const auto& item : items) spread = spread.unite(AABB{item.center, item.center});
+  return spread;
+}
+
 // What descending into one child of the node being examined could cost.
 struct ChildCost {
   Real direct = 0;  // perimeter of the child united with the new leaf
@@ -91,12 +108,12 @@ void DynamicTree::enlargeProxy(std::int32_t node, const AABB& box) {
 int DynamicTree::rebuild() {
   if (root_ == kNull || !nodes_[root_].enlarged) return 0;
   collectBuildItems(false);
-  root_ = buildSubtree(buildItems_, 0);
+  root_ = buildSubtree(buildItems_, centerSpread(buildItems_), 0);
   nodes_[root_].parent = kNull;
   if (nodes_[root_].height > kMaxHeight) {
     // Kept subtrees stacked too deep over many rebuilds: start afresh.
     collectBuildItems(true);
-    root_ = buildSubtree(buildItems_, 0);
+    root_ = buildSubtree(buildItems_, centerSpread(buildItems_), 0);
     nodes_[root_].parent = kNull;
   }
   return static_cast<int>(buildItems_.size());
@@ -124,66 +141,68 @@ void DynamicTree::collectBuildItems(bool wholeTree) {
   }
 }
 
-std::int32_t DynamicTree::buildSubtree(std::span<BuildItem> items, int depth) {
+std::int32_t DynamicTree::buildSubtree(std::span<BuildItem> items, const AABB& spread, int depth) {
   if (items.size() == 1) return items.front().node;
-  std::size_t split = depth < kSurfaceAreaDepth ? splitBySurfaceArea(items) : 0;
+  AABB spreads[2];
+  std::size_t split = depth < kSurfaceAreaDepth ? splitBySurfaceArea(items, spread, spreads) : 0;
   if (split == 0) {
     // The median along the wider spread of centres (ties by node, so the
     // split is the same on every run).
     split = items.size() / 2;
-    AABB spread{items.front().center, items.front().center};
-    for (const BuildItem& item : items) spread = spread.unite(AABB{item.center, item.center});
-    const int axis = spread.upper.x() - spread.lower.x() >= spread.upper.y() - spread.lower.y() ? 0 : 1;
+    const int axis = widerAxis(spread);
     std::nth_element(items.begin(), items.begin() + std::ptrdiff_t(split), items.end(),
                      [axis](const BuildItem& a, const BuildItem& b) {
                        return a.center[axis] != b.center[axis] ? a.center[axis] < b.center[axis] : a.node < b.node;
                      });
+    spreads[0] = centerSpread(items.first(split));
+    spreads[1] = centerSpread(items.subspan(split));
   }
-  const std::int32_t child1 = buildSubtree(items.first(split), depth + 1);
-  const std::int32_t child2 = buildSubtree(items.subspan(split), depth + 1);
+  const std::int32_t child1 = buildSubtree(items.first(split), spreads[0], depth + 1);
+  const std::int32_t child2 = buildSubtree(items.subspan(split), spreads[1], depth + 1);
   return joinUnderNewNode(child1, child2);
 }
 
 // Sorts the items into bins along the wider spread of their centres and
 // partitions them at the boundary that minimises the children's perimeters
-// weighted by their item counts. Returns the size of the first part, or 0
-// when no boundary separates them (all centres in one bin).
-std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) {
-  AABB spread{items.front().center, items.front().center};
-  for (const BuildItem& item : items) spread = spread.unite(AABB{item.center, item.center});
-  const int axis = spread.upper.x() - spread.lower.x() >= spread.upper.y() - spread.lower.y() ? 0 : 1;
+// weighted by their item counts. Returns the size of the first part, with
+// the spread of each part's centres, or 0 when no boundary separates them
+// (all centres in one bin).
+std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items, const AABB& spread, AABB (&spreads)[2]) {
+  const int axis = widerAxis(spread);
   const Real width = spread.upper[axis] - spread.lower[axis];
   if (!(width > 0)) return 0;
   const Real scale = Real(kBinCount) / width;
-  auto binOf = [&](const BuildItem& item) {
-    return std::min(kBinCount - 1, static_cast<int>((item.center[axis] - spread.lower[axis]) * scale));
-  };
+  const Real start = spread.lower[axis];
+  // Empty bins start inverted, so that each item's box and centre join
+  // them without a test; the sweeps below pass over empty bins.
   struct Bin {
-    AABB box;
+    AABB box = kInverted;
+    AABB centers = kInverted;
     std::size_t count = 0;
   };
   Bin bins[kBinCount];
   for (BuildItem& item : items) {
-    item.bin = binOf(item);
+    item.bin = std::min(kBinCount - 1, static_cast<int>((item.center[axis] - start) * scale));
     Bin& bin = bins[item.bin];
-    bin.box = bin.count == 0 ? item.box : bin.box.unite(item.box);
+    bin.box = bin.box.unite(item.box);
+    bin.centers = bin.centers.unite(AABB{item.center, item.center});
     ++bin.count;
   }
   // The cost of the part above each boundary, swept from the top down.
   Real aboveCost[kBinCount] = {};
-  AABB above{};
+  AABB above = kInverted;
   std::size_t aboveCount = 0;
   for (int b = kBinCount - 1; b > 0; --b) {
-    if (bins[b].count > 0) above = aboveCount == 0 ? bins[b].box : above.unite(bins[b].box);
+    above = above.unite(bins[b].box);
     aboveCount += bins[b].count;
     aboveCost[b] = aboveCount == 0 ? 0 : Real(aboveCount) * above.perimeter();
   }
   int bestBoundary = 0;
   Real bestCost = std::numeric_limits<Real>::max();
-  AABB below{};
+  AABB below = kInverted;
   std::size_t belowCount = 0;
   for (int b = 1; b < kBinCount; ++b) {
-    if (bins[b - 1].count > 0) below = belowCount == 0 ? bins[b - 1].box : below.unite(bins[b - 1].box);
+    below = below.unite(bins[b - 1].box);
     belowCount += bins[b - 1].count;
     if (belowCount == 0 || belowCount == items.size()) continue;
     const Real cost = Real(belowCount) * below.perimeter() + aboveCost[b];
@@ -193,6 +212,11 @@ std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) {
     }
   }
   if (bestBoundary == 0) return 0;
+  spreads[0] = spreads[1] = kInverted;
+  for (int b = 0; b < kBinCount; ++b) {
+    AABB& side = spreads[b < bestBoundary ? 0 : 1];
+    side = side.unite(bins[b].centers);
+  }
   const auto middle = std::partition(items.begin(), items.end(),
                                      [&](const BuildItem& item) { return item.bin < bestBoundary; });
   return static_cast<std::size_t>(middle - items.begin());

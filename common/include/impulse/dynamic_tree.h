@@ -132,8 +132,10 @@ class DynamicTree {
   };
   void reserveBuildItems();
   void collectBuildItems(bool wholeTree);
-  std::int32_t buildSubtree(std::span<BuildItem> items, int depth);
-  static std::size_t splitBySurfaceArea(std::span<BuildItem> items);
+  // `spread` is the box of the items' centres, which each split passes on
+  // to its parts rather than have them read their items again.
+  std::int32_t buildSubtree(std::span<BuildItem> items, const AABB& spread, int depth);
+  static std::size_t splitBySurfaceArea(std::span<BuildItem> items, const AABB& spread, AABB (&spreads)[2]);
   std::int32_t joinUnderNewNode(std::int32_t child1, std::int32_t child2);
 
   std::vector<Node> nodes_;
