@@ -51,16 +51,47 @@ bool pairLess(const ProxyPair& a, const ProxyPair& b) {
   return a.first != b.first ? a.first < b.first : a.second < b.second;
 }
 
-// Appends a pair of `userValue` with every leaf of `tree` overlapping `box`,
-// except the leaves `skip` names and known pairs.
+// Candidate pairs of one query, held back so that the caller is asked
+// which are known in runs after the tree walk rather than during it: the
+// lookups (mostly a cache miss each into the caller's set of contacts) then
+// do not wait on one another. A fixed array, so that known pairs never
+// grow (or allocate) the output list.
+class PairBatch {
+ public:
+  PairBatch(const BroadPhase::KnownPair& known, std::vector<ProxyPair>& pairs) : known_(known), pairs_(pairs) {}
+  ~PairBatch() { flush(); }
+  PairBatch(const PairBatch&) = delete;
+  PairBatch& operator=(const PairBatch&) = delete;
+
+  void add(const ProxyPair& pair) {
+    held_[count_++] = pair;
+    if (count_ == kCapacity) flush();
+  }
+
+ private:
+  static constexpr int kCapacity = 32;
+
+  void flush() {
+    for (int i = 0; i < count_; ++i) {
+      if (!known_ || !known_(held_[i].first, held_[i].second)) pairs_.push_back(held_[i]);
+    }
+    count_ = 0;
+  }
+
+  const BroadPhase::KnownPair& known_;
+  std::vector<ProxyPair>& pairs_;
+  ProxyPair held_[kCapacity];
+  int count_ = 0;
+};
+
+// Adds a pair of `userValue` with every leaf of `tree` overlapping `box`,
+// except the leaves `skip` names.
 template <class Skip>
-void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, Skip&& skip,
-                  const BroadPhase::KnownPair& known, std::vector<ProxyPair>& pairs) {
+void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, Skip&& skip, PairBatch& batch) {
   tree.query(box, [&](std::int32_t node) {
     if (skip(node)) return true;
     const std::int32_t other = tree.userValue(node);
-    const ProxyPair pair{std::min(userValue, other), std::max(userValue, other)};
-    if (!known || !known(pair.first, pair.second)) pairs.push_back(pair);
+    batch.add({std::min(userValue, other), std::max(userValue, other)});
     return true;
   });
 }
@@ -217,18 +248,19 @@ void BroadPhase::queryPairs(std::int32_t proxyKey, const KnownPair& known, std::
   const AABB& box = own.box(node);
   const std::int32_t userValue = own.userValue(node);
   const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
+  PairBatch batch(known, pairs);
   if (kind == ProxyKind::Movable) {
     // A queued static partner finds this pair itself, and so does a queued
     // movable one of a lower node.
     collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue,
-                 [&](std::int32_t other) { return isQueued(ProxyKind::Static, other); }, known, pairs);
+                 [&](std::int32_t other) { return isQueued(ProxyKind::Static, other); }, batch);
     collectPairs(movable, box, userValue,
                  [&](std::int32_t other) { return other == node || (other < node && isQueued(ProxyKind::Movable, other)); },
-                 known, pairs);
+                 batch);
   } else {
     // A queued static proxy (touched or teleported) only looks for movable
     // partners: static-static pairs never collide.
-    collectPairs(movable, box, userValue, [](std::int32_t) { return false; }, known, pairs);
+    collectPairs(movable, box, userValue, [](std::int32_t) { return false; }, batch);
   }
 }
 

