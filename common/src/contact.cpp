@@ -7,6 +7,7 @@
 
 #include "contact_events.h"
 #include "counting_sort.h"
+#include "prefetch.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -264,13 +265,6 @@ std::uint8_t collideOutcome(const WorldData& world, Contact& contact, Real dt, s
 // meanwhile: the list runs through memory in slot order, but with gaps.
 constexpr std::int32_t kContactPrefetchDistance = 4;
 
-// Starts loading a contact's lines. Inlined: GCC takes a function that only
-// prefetches for pure and drops its calls.
-[[gnu::always_inline]] inline void prefetchContact(const Contact& contact) {
-  const char* start = reinterpret_cast<const char*>(&contact);
-  for (std::size_t line = 0; line < sizeof(Contact); line += 64) __builtin_prefetch(start + line);
-}
-
 void updateManifolds(WorldData& world, Real dt) {
   world.collideList.clear();
   world.contactsToCollide.forEachDescending([&](std::int32_t index) { world.collideList.push_back(index); });
@@ -281,7 +275,7 @@ void updateManifolds(WorldData& world, Real dt) {
                           for (std::int32_t i = begin; i < end; ++i) {
                             const auto k = std::size_t(i);
                             if (i + kContactPrefetchDistance < end) {
-                              prefetchContact(world.contacts[world.collideList[k + kContactPrefetchDistance]]);
+                              fetchLines(&world.contacts[world.collideList[k + kContactPrefetchDistance]], sizeof(Contact));
                             }
                             world.collideOutcomes[k] = collideOutcome(world, world.contacts[world.collideList[k]], dt,
                                                                       world.collideKeys[k]);
@@ -293,7 +287,7 @@ void updateManifolds(WorldData& world, Real dt) {
 // compaction.
 constexpr std::int32_t kCollideChunksPerWorker = 4;
 
-// Chunk c of n covers [c * size / n, (c + 1) * size / n) of collideList.
+// Chunk c of n covers [c * size / n, (c + 1) * size / n) of a list of `size`.
 std::size_t chunkStart(std::size_t size, std::int32_t chunk, std::int32_t chunks) {
   return size * std::size_t(chunk) / std::size_t(chunks);
 }
@@ -395,8 +389,8 @@ void searchNewPairs(WorldData& world) {
     for (std::int32_t chunk = begin; chunk < end; ++chunk) {
       std::vector<ProxyPair>& found = world.pairChunks[std::size_t(chunk)];
       found.clear();
-      const std::size_t first = queued.size() * std::size_t(chunk) / std::size_t(chunks);
-      const std::size_t last = queued.size() * std::size_t(chunk + 1) / std::size_t(chunks);
+      const std::size_t first = chunkStart(queued.size(), chunk, chunks);
+      const std::size_t last = chunkStart(queued.size(), chunk + 1, chunks);
       for (std::int32_t proxyKey : queued.subspan(first, last - first)) world.broadPhase.queryPairs(proxyKey, known, found);
     }
   });

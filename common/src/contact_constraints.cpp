@@ -5,6 +5,7 @@
 
 #include "contact_solver_wide.h"
 #include "counting_sort.h"
+#include "prefetch.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -63,9 +64,8 @@ void collectTouching(const WorldData& world, std::vector<ConstraintRef>& refs,
     for (std::int32_t j = begin; j < end; ++j) {
       if (j + kRefPrefetchDistance < end) {
         const Contact& ahead = world.contacts[world.touchingUnsorted[std::size_t(j + kRefPrefetchDistance)]];
-        __builtin_prefetch(&ahead.manifold);
-        __builtin_prefetch(reinterpret_cast<const char*>(&ahead.manifold) + 64);
-        __builtin_prefetch(&ahead.edges);
+        fetchLines(&ahead.manifold, sizeof(Manifold));
+        fetchLines(&ahead.edges);
       }
       refs[std::size_t(refOfUnsorted[std::size_t(j)])] = refOf(world, world.touchingUnsorted[std::size_t(j)], up);
     }

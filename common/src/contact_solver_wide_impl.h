@@ -13,6 +13,7 @@
 
 #include "contact_solver_wide.h"
 #include "counting_sort.h"
+#include "prefetch.h"
 
 namespace impulse {
 namespace {
@@ -408,17 +409,13 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
   }
 }
 
-// Starts loading the solver parts of bundle b's contacts (the first two
-// lines of each: ContactSolverPart). Inlined: GCC takes a function that only
-// reads memory and prefetches for pure, and drops the call (its result is
-// unused), prefetches and all.
-[[gnu::always_inline]] inline void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs,
-                                                          const WideContactSet& set, std::int32_t b) {
+// Starts loading the solver parts of bundle b's contacts (ContactSolverPart).
+void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs, const WideContactSet& set,
+                            std::int32_t b) {
   const std::int32_t first = set.contactSlices.first[std::size_t(b)];
   for (std::int32_t k = first; k < first + set.contactSlices.lanes[std::size_t(b)]; ++k) {
-    const char* part = reinterpret_cast<const char*>(&world.contacts[refs[std::size_t(set.order[std::size_t(k)])].contact]);
-    __builtin_prefetch(part);
-    __builtin_prefetch(part + 64);
+    const ContactSolverPart& part = world.contacts[refs[std::size_t(set.order[std::size_t(k)])].contact];
+    fetchLines(&part, sizeof(ContactSolverPart));
   }
 }
 
@@ -677,15 +674,12 @@ void storeBundleImpulses(const WideConstraint<F>& w, WorldData& world) {
   }
 }
 
-// Starts loading, to be written, the manifolds bundle w stores into (inlined,
-// as prefetchBundleContacts).
+// Starts loading the manifolds bundle w stores into.
 template <class F>
-[[gnu::always_inline]] inline void prefetchStoreTargets(const WideConstraint<F>& w, const WorldData& world) {
+void prefetchStoreTargets(const WideConstraint<F>& w, const WorldData& world) {
   for (int lane = 0; lane < F::kLanes; ++lane) {
     if (w.source[lane] < 0) continue;
-    const char* manifold = reinterpret_cast<const char*>(&world.contacts[w.source[lane]].manifold);
-    __builtin_prefetch(manifold, 1);
-    __builtin_prefetch(manifold + 64, 1);
+    fetchLines(&world.contacts[w.source[lane]].manifold, sizeof(Manifold));
   }
 }
 

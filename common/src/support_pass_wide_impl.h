@@ -14,6 +14,7 @@
 #include <span>
 
 #include "contact_solver_wide.h"
+#include "prefetch.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -351,11 +352,11 @@ void storeSupportBundle(const WideSupportRow<F>& row, WorldData& world) {
   }
 }
 
-// Starts loading, to be written, the points row stores into.
+// Starts loading the points row stores into.
 template <class F>
 void prefetchSupportTargets(const WideSupportRow<F>& row, const WorldData& world) {
   for (int lane = 0; lane < F::kLanes; ++lane) {
-    if (row.contact[lane] >= 0) __builtin_prefetch(&world.contacts[row.contact[lane]].manifold.points, 1);
+    if (row.contact[lane] >= 0) fetchLines(&world.contacts[row.contact[lane]].manifold.points);
   }
 }
 
