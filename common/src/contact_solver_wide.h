@@ -9,6 +9,7 @@
 
 #include "contact_solver.h"
 #include "graph_coloring.h"
+#include "joint_pins.h"
 #include "support_pass.h"
 
 namespace impulse {
@@ -39,6 +40,11 @@ struct WideContactKernels {
   /// Writes the impulses back into the manifolds for next step's warm start
   /// (the support pass's last, for next step's friction limit).
   void (*store)(const WideContactSet& set, WorldData& world);
+  /// The plain pins' warm start and one pass, biased or relaxing as
+  /// `softness` says, on `blocks` (joint_pins.h); kept in this table to share
+  /// its bodies' gather and scatter and its choice of width.
+  void (*warmStartPins)(std::span<SolverState> states, std::span<PinBlock> blocks);
+  void (*solvePins)(std::span<SolverState> states, std::span<PinBlock> blocks, const Softness& softness);
 };
 
 /// The bundle list of width F in a set (defined by the file of that width).

@@ -699,11 +699,20 @@ void storeWideImpulses(const WideContactSet& set, WorldData& world) {
   storeSupportWide<F>(const_cast<WideContactSet&>(set), world);
 }
 
+}  // namespace
+}  // namespace impulse
+
+#include "joint_pins_wide_impl.h"
+
+namespace impulse {
+namespace {
+
 /// This width's passes as a table (contact_solver_wide.h).
 template <class F>
 WideContactKernels makeWideContactKernels() {
   return {F::kLanes,      &buildWideContacts<F>, &warmStartWide<F>,    &solveWide<F>,
-          &pushWide<F>,    &solveSupportWide<F>,  &restitutionWide<F>, &storeWideImpulses<F>};
+          &pushWide<F>,    &solveSupportWide<F>,  &restitutionWide<F>, &storeWideImpulses<F>,
+          &warmStartPins<F>, &solvePins<F>};
 }
 
 }  // namespace

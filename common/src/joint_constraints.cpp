@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "contact_solver_wide.h"
 #include "counting_sort.h"
 #include "world_data.h"
 
@@ -107,6 +108,10 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
   colorStarts_ = {};
   pullingRows_.clear();
+  pinBlocks_.clear();
+  rowsBesidePins_.clear();
+  pinBlockStarts_ = {};
+  besideStarts_ = {};
   if (world.liveJoints == 0) {
     rows_.clear();
     tree_.clear();
@@ -139,39 +144,81 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
   tree_.order(rows_, world.solverStates.size(), pass_.rigid);
+  kernels_ = &wideContactKernels(world.settings.simdWidth);
+  gatherPins();
   return false;
 }
 
-// visit(row, stateA, stateB) colour by colour, one colour's rows side by
-// side, then the rows that found no colour one by one. Rows on a static or
-// sleeping body write a copy of the dummy state 0, never the state itself,
-// which two threads would otherwise write together (it stays zero: such a
-// body has no inverse mass).
-template <class Visit>
-void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit) {
-  auto visitRange = [&](std::int32_t begin, std::int32_t end) {
-    SolverState sink = sub.states[0];
-    for (std::int32_t r = begin; r < end; ++r) {
-      JointRow& row = rows_[std::size_t(r)];
-      visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
+// Each colour's plain pins that the tree pass leaves to the soft passes go
+// into blocks; the colour's other rows are listed beside them. A colour's
+// rows share no awake body, so solving its pins first changes nothing.
+void JointConstraints::gatherPins() {
+  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+    int lane = PinBlock::kLanes;
+    for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
+      const JointRow& row = rows_[std::size_t(r)];
+      if (!row.plainPin || row.inTree) {
+        rowsBesidePins_.push_back(r);
+        continue;
+      }
+      if (lane == PinBlock::kLanes) {
+        pinBlocks_.emplace_back();
+        lane = 0;
+      }
+      placePin(pinBlocks_.back(), lane, row, r);
+      ++lane;
     }
+    pinBlockStarts_[std::size_t(color) + 1] = std::int32_t(pinBlocks_.size());
+    besideStarts_[std::size_t(color) + 1] = std::int32_t(rowsBesidePins_.size());
+  }
+}
+
+// Colour by colour: visitPins(blocks) on the colour's pin blocks and
+// visit(row, stateA, stateB) on its other rows, all side by side; then the
+// rows that found no colour one by one. Rows on a static or sleeping body
+// write a copy of the dummy state 0, never the state itself, which two
+// threads would otherwise write together (it stays zero: such a body has no
+// inverse mass); the pin kernels' scatter does the same.
+template <class Visit, class VisitPins>
+void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins) {
+  auto visitRow = [&](std::int32_t r, SolverState& sink) {
+    JointRow& row = rows_[std::size_t(r)];
+    visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
   };
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
-    const std::int32_t first = colorStarts_[std::size_t(color)];
-    sub.tasks->forRanges(colorStarts_[std::size_t(color) + 1] - first, kJointRowsPerRange,
-                         [&](std::int32_t begin, std::int32_t end) { visitRange(first + begin, first + end); });
+    const std::int32_t firstBlock = pinBlockStarts_[std::size_t(color)];
+    const std::int32_t blocks = pinBlockStarts_[std::size_t(color) + 1] - firstBlock;
+    const std::int32_t firstBeside = besideStarts_[std::size_t(color)];
+    const std::int32_t beside = besideStarts_[std::size_t(color) + 1] - firstBeside;
+    // Items [0, blocks) are pin blocks, the rest the rows beside them.
+    sub.tasks->forRanges(blocks + beside, kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+      const std::int32_t blockEnd = std::min(end, blocks);
+      if (begin < blockEnd) visitPins(std::span(pinBlocks_).subspan(std::size_t(firstBlock + begin), std::size_t(blockEnd - begin)));
+      SolverState sink = sub.states[0];
+      for (std::int32_t item = std::max(begin, blocks); item < end; ++item) {
+        visitRow(rowsBesidePins_[std::size_t(firstBeside + item - blocks)], sink);
+      }
+    });
   }
-  visitRange(colorStarts_[GraphColoring::kOverflow], colorStarts_[GraphColoring::kOverflow + 1]);
+  SolverState sink = sub.states[0];
+  for (std::int32_t r = colorStarts_[GraphColoring::kOverflow]; r < colorStarts_[GraphColoring::kOverflow + 1]; ++r) {
+    visitRow(r, sink);
+  }
 }
 
 void JointConstraints::warmStart(const SubStep& sub) {
-  forEachRowByColor(sub, [](JointRow& row, SolverState& a, SolverState& b) { warmStartJoint(row, a, b); });
+  forEachRowByColor(
+      sub, [](JointRow& row, SolverState& a, SolverState& b) { warmStartJoint(row, a, b); },
+      [&](std::span<PinBlock> blocks) { kernels_->warmStartPins(sub.states, blocks); });
 }
 
 void JointConstraints::run(const SubStep& sub, bool useBias) {
   JointPass pass = pass_;
   pass.useBias = useBias;
-  forEachRowByColor(sub, [&](JointRow& row, SolverState& a, SolverState& b) { solveJoint(row, a, b, pass); });
+  const Softness pinSoftness = rowSoftness(pass);
+  forEachRowByColor(
+      sub, [&](JointRow& row, SolverState& a, SolverState& b) { solveJoint(row, a, b, pass); },
+      [&](std::span<PinBlock> blocks) { kernels_->solvePins(sub.states, blocks, pinSoftness); });
 }
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
@@ -189,6 +236,11 @@ void JointConstraints::countPasses(SolverPasses& passes) const {
 }
 
 void JointConstraints::store(WorldData& world) {
+  for (const PinBlock& block : pinBlocks_) {
+    for (int lane = 0; lane < PinBlock::kLanes && block.row[lane] >= 0; ++lane) {
+      rows_[std::size_t(block.row[lane])].impulses.point = Vec2(block.impulseX[lane], block.impulseY[lane]);
+    }
+  }
   // Each row writes its own joint: side by side.
   world.tasks.forRanges(std::int32_t(rows_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t r = begin; r < end; ++r) {

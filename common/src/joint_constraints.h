@@ -8,10 +8,13 @@
 #include <vector>
 
 #include "constraint_kind.h"
+#include "joint_pins.h"
 #include "joint_row.h"
 #include "joint_tree_pass.h"
 
 namespace impulse {
+
+struct WideContactKernels;
 
 class JointConstraints final : public ConstraintKind {
  public:
@@ -26,8 +29,9 @@ class JointConstraints final : public ConstraintKind {
 
  private:
   void run(const SubStep& sub, bool useBias);
-  template <class Visit>
-  void forEachRowByColor(const SubStep& sub, Visit&& visit);
+  template <class Visit, class VisitPins>
+  void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins);
+  void gatherPins();
 
   std::vector<JointRow> rows_;
   /// The joints of this step's rows, in the joints' order.
@@ -40,6 +44,14 @@ class JointConstraints final : public ConstraintKind {
   std::vector<std::int32_t> rankOf_;
   /// Colour c's rows are [colorStarts_[c], colorStarts_[c + 1]), overflow last.
   ColorStarts colorStarts_{};
+  /// Colour c's plain pins outside the tree pass, eight to a block, are
+  /// pinBlocks_[pinBlockStarts_[c], pinBlockStarts_[c + 1]); its other rows
+  /// are rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]).
+  std::vector<PinBlock> pinBlocks_;
+  ColorStarts pinBlockStarts_{};
+  std::vector<std::int32_t> rowsBesidePins_;
+  ColorStarts besideStarts_{};
+  const WideContactKernels* kernels_ = nullptr;
   JointPass pass_;
   JointTreePass tree_;
 };

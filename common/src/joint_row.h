@@ -76,6 +76,10 @@ struct RigidRow {
 };
 using RigidRows = std::array<RigidRow, 3>;
 
+/// A rigid row's softness in `pass`: the soft step's, with position
+/// feedback, in the biased pass; hard (velocity only) in the relax pass.
+Softness rowSoftness(const JointPass& pass);
+
 /// The rows of one kind (joint_rows.cpp).
 void warmStartJoint(JointRow& row, SolverState& a, SolverState& b);
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass);

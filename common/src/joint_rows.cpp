@@ -97,12 +97,6 @@ Vec2 solve22(const Mat2& k, const Vec2& v) {
   return Vec2(inv * (k(1, 1) * v.x() - k(0, 1) * v.y()), inv * (k(0, 0) * v.y() - k(1, 0) * v.x()));
 }
 
-// The soft step's terms: soft with position feedback in the biased pass,
-// hard (velocity only) in the relax pass.
-Softness rowSoftness(const JointPass& pass) {
-  return pass.useBias ? pass.rigid : Softness{0, 1, 0};
-}
-
 void rigidRow(const JointRow& row, const Jacobian& j, Real c, Real& accumulated,
               const JointPass& pass, SolverState& a, SolverState& b) {
   if (row.inTree && pass.useBias) return;
@@ -410,6 +404,8 @@ void addRigid(RigidRowsOut& out, RigidContext& x, const WheelJointSettings& s) {
 }
 
 }  // namespace
+
+Softness rowSoftness(const JointPass& pass) { return pass.useBias ? pass.rigid : Softness{0, 1, 0}; }
 
 Real jointAngle(const Joint& joint, const Rot& qA, const Rot& qB) {
   constexpr Real pi = std::numbers::pi_v<Real>;

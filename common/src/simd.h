@@ -42,9 +42,16 @@ inline F4 select(F4 mask, F4 a, F4 b) {
 }
 /// True when any lane of a mask is set.
 inline bool any(F4 mask) { return _mm_movemask_ps(mask.v) != 0; }
-inline F4 load(const float* p) { return {_mm_loadu_ps(p)}; }
 inline void store(float* p, F4 a) { _mm_storeu_ps(p, a.v); }
 inline F4 set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
+
+/// F's lanes from p[0], p[1], ... (width-generic code).
+template <class F>
+F load(const float* p);
+template <>
+inline F4 load<F4>(const float* p) {
+  return {_mm_loadu_ps(p)};
+}
 
 /// x in every lane of F (width-generic code).
 template <class F>

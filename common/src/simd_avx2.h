@@ -23,6 +23,10 @@ template <>
 inline F8 broadcast<F8>(float x) {
   return {_mm256_set1_ps(x)};
 }
+template <>
+inline F8 load<F8>(const float* p) {
+  return {_mm256_loadu_ps(p)};
+}
 inline F8 operator+(F8 a, F8 b) { return {_mm256_add_ps(a.v, b.v)}; }
 inline F8 operator-(F8 a, F8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline F8 operator*(F8 a, F8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
