@@ -61,6 +61,11 @@ bool hasAwakeBody(const WorldData& world, const Joint& joint) {
   return joint.alive && (awake(joint.edges.bodyA) || awake(joint.edges.bodyB));
 }
 
+// A revolute joint with no limit, motor or spring (JointRow::plainPin).
+bool isPlainPin(const Joint& joint) {
+  return std::holds_alternative<RevoluteJointSettings>(joint.settings) && !hasSoftRows(joint.settings);
+}
+
 JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index) {
   const Side a = sideOf(world, joint.edges.bodyA);
   const bool mouse = pullsToWorldPoint(joint);
@@ -78,7 +83,7 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   row.anchorB = mouse ? joint.target : b.q.apply(joint.localAnchorB);
   row.deltaCenter = b.center - a.center;
   row.softRows = hasSoftRows(joint.settings);
-  row.plainPin = std::holds_alternative<RevoluteJointSettings>(joint.settings) && !row.softRows;
+  row.plainPin = isPlainPin(joint);
   row.touches = touchesAnything(world, joint.edges.bodyA) || (!mouse && touchesAnything(world, joint.edges.bodyB));
   // The angle's atan2 is a frame's costliest part, and a pin never reads it.
   row.deltaAngle = row.plainPin ? Real(0) : jointAngle(joint, a.q, b.q);
@@ -121,12 +126,14 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   // it), from the states alone; then the rows, side by side.
   jointOf_.clear();
   colorOf_.clear();
+  isPin_.clear();
   for (std::size_t index = 0; index < world.joints.size(); ++index) {
     const Joint& joint = world.joints[index];
     if (!hasAwakeBody(world, joint)) continue;
     if (pullsToWorldPoint(joint)) pullingRows_.push_back(static_cast<std::int32_t>(jointOf_.size()));
     jointOf_.push_back(static_cast<std::int32_t>(index));
     colorOf_.push_back(coloring.take(sideOf(world, joint.edges.bodyA).state, sideBOf(world, joint).state));
+    isPin_.push_back(isPlainPin(joint) ? 1 : 0);
   }
   // Solved in colour order, so a colour's joints could run side by side.
   // Each row is made in the joints' order and written to its place there:
@@ -144,33 +151,52 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
   tree_.order(rows_, world.solverStates.size(), pass_.rigid);
+  placePins();
+  fillPins(world.tasks);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
-  gatherPins();
   return false;
 }
 
-// Each colour's plain pins that the tree pass leaves to the soft passes go
-// into blocks; the colour's other rows are listed beside them. A colour's
-// rows share no awake body, so solving its pins first changes nothing.
-void JointConstraints::gatherPins() {
+// Each colour's plain pins get a place in blocks of their own (block times
+// eight plus lane, by rank); the colour's other rows are listed beside them.
+// A colour's rows share no awake body, so solving its pins first changes
+// nothing. Pins the tree pass solves exactly stay rows: the tree pass
+// reads and writes their impulses during the step.
+void JointConstraints::placePins() {
+  const bool anyInTree = tree_.jointCount() > 0;
+  pinPlaceOf_.assign(order_.size(), -1);
+  std::int32_t blocks = 0;
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
-    int lane = PinBlock::kLanes;
+    std::int32_t pins = 0;
     for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
-      const JointRow& row = rows_[std::size_t(r)];
-      if (!row.plainPin || row.inTree) {
+      const bool pin = isPin_[std::size_t(order_[std::size_t(r)])] != 0 && !(anyInTree && rows_[std::size_t(r)].inTree);
+      if (!pin) {
         rowsBesidePins_.push_back(r);
         continue;
       }
-      if (lane == PinBlock::kLanes) {
-        pinBlocks_.emplace_back();
-        lane = 0;
-      }
-      placePin(pinBlocks_.back(), lane, row, r);
-      ++lane;
+      pinPlaceOf_[std::size_t(r)] = blocks * PinBlock::kLanes + pins++;
     }
-    pinBlockStarts_[std::size_t(color) + 1] = std::int32_t(pinBlocks_.size());
+    blocks += (pins + PinBlock::kLanes - 1) / PinBlock::kLanes;
+    pinBlockStarts_[std::size_t(color) + 1] = blocks;
     besideStarts_[std::size_t(color) + 1] = std::int32_t(rowsBesidePins_.size());
   }
+  pinBlocks_.resize(std::size_t(blocks));
+}
+
+// Copies each pin into its lane, side by side; the lanes left empty at a
+// colour's end are reset.
+void JointConstraints::fillPins(const TaskRunner& tasks) {
+  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+    const std::int32_t end = pinBlockStarts_[std::size_t(color) + 1];
+    if (end > pinBlockStarts_[std::size_t(color)]) pinBlocks_[std::size_t(end - 1)] = PinBlock{};
+  }
+  tasks.forRanges(std::int32_t(rows_.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t r = begin; r < end; ++r) {
+      const std::int32_t place = pinPlaceOf_[std::size_t(r)];
+      if (place < 0) continue;
+      placePin(pinBlocks_[std::size_t(place / PinBlock::kLanes)], place % PinBlock::kLanes, rows_[std::size_t(r)], r);
+    }
+  });
 }
 
 // Colour by colour: visitPins(blocks) on the colour's pin blocks and
@@ -236,11 +262,15 @@ void JointConstraints::countPasses(SolverPasses& passes) const {
 }
 
 void JointConstraints::store(WorldData& world) {
-  for (const PinBlock& block : pinBlocks_) {
-    for (int lane = 0; lane < PinBlock::kLanes && block.row[lane] >= 0; ++lane) {
-      rows_[std::size_t(block.row[lane])].impulses.point = Vec2(block.impulseX[lane], block.impulseY[lane]);
+  // Each block's lanes write their own rows: side by side.
+  world.tasks.forRanges(std::int32_t(pinBlocks_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t k = begin; k < end; ++k) {
+      const PinBlock& block = pinBlocks_[std::size_t(k)];
+      for (int lane = 0; lane < PinBlock::kLanes && block.row[lane] >= 0; ++lane) {
+        rows_[std::size_t(block.row[lane])].impulses.point = Vec2(block.impulseX[lane], block.impulseY[lane]);
+      }
     }
-  }
+  });
   // Each row writes its own joint: side by side.
   world.tasks.forRanges(std::int32_t(rows_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t r = begin; r < end; ++r) {

@@ -15,6 +15,7 @@
 namespace impulse {
 
 struct WideContactKernels;
+class TaskRunner;
 
 class JointConstraints final : public ConstraintKind {
  public:
@@ -31,7 +32,8 @@ class JointConstraints final : public ConstraintKind {
   void run(const SubStep& sub, bool useBias);
   template <class Visit, class VisitPins>
   void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins);
-  void gatherPins();
+  void placePins();
+  void fillPins(const TaskRunner& tasks);
 
   std::vector<JointRow> rows_;
   /// The joints of this step's rows, in the joints' order.
@@ -48,6 +50,10 @@ class JointConstraints final : public ConstraintKind {
   /// pinBlocks_[pinBlockStarts_[c], pinBlockStarts_[c + 1]); its other rows
   /// are rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]).
   std::vector<PinBlock> pinBlocks_;
+  /// Per entry of jointOf_, whether it is a plain pin; per row (by rank),
+  /// its pin's block * 8 + lane, or -1.
+  std::vector<std::uint8_t> isPin_;
+  std::vector<std::int32_t> pinPlaceOf_;
   ColorStarts pinBlockStarts_{};
   std::vector<std::int32_t> rowsBesidePins_;
   ColorStarts besideStarts_{};
