@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "world_data.h"
 
@@ -46,10 +47,28 @@ Sweep sweepOf(const Body& body) {
   return {body.center0, body.transform.p, a0, a0 + turned};
 }
 
+// The body's sweep, worked out (an atan2 for each angle) only once a static
+// shape lies along its path: most fast bodies of a crowd in a drum meet none.
+class LazySweep {
+ public:
+  explicit LazySweep(const Body& body) : body_(body) {}
+  const Sweep& get() {
+    if (!sweep_) sweep_ = sweepOf(body_);
+    return *sweep_;
+  }
+
+ private:
+  const Body& body_;
+  std::optional<Sweep> sweep_;
+};
+
 bool isFast(const Body& body) {
-  Real travel = (body.transform.p - body.center0).norm() +
-                std::abs(relativeRotation(body.rotation0, body.transform.q).angle()) * body.extent;
-  return travel > kFastFraction * body.innerRadius;
+  const Real threshold = kFastFraction * body.innerRadius;
+  const Real moved = (body.transform.p - body.center0).norm();
+  // Moving that far is fast whatever the turn adds: its atan2 is spared.
+  if (moved > threshold) return true;
+  const Real travel = moved + std::abs(relativeRotation(body.rotation0, body.transform.q).angle()) * body.extent;
+  return travel > threshold;
 }
 
 // First time in (0, 1] at which the moving shape comes within the target
@@ -85,16 +104,16 @@ Real timeOfImpactWithCore(ShapeRef moving, const Sweep& sweep, Real extent, Real
 
 // The first time in (0, 1] at which one of the body's shapes comes within
 // the target separation of a static shape.
-Real firstStaticHit(const WorldData& world, const Body& body, const Sweep& sweep, std::int32_t shape) {
+Real firstStaticHit(const WorldData& world, const Body& body, LazySweep& sweep, std::int32_t shape) {
   const ShapeSlot& moving = world.shapes[shape];
-  AABB start = computeAABB(moving.ref(), {sweep.c0, body.rotation0});
+  AABB start = computeAABB(moving.ref(), {body.center0, body.rotation0});
   AABB swept = start.unite(computeAABB(moving.ref(), body.transform));
   Real firstHit = 1;
   world.broadPhase.queryStatic(swept, [&](std::int32_t other) {
     const ShapeSlot& candidate = world.shapes[other];
     const Body& owner = world.bodies[candidate.body];
     if (shapesCanCollide(moving.type(), candidate.type())) {
-      firstHit = std::min(firstHit, timeOfImpactWithCore(moving.ref(), sweep, body.extent, body.innerRadius,
+      firstHit = std::min(firstHit, timeOfImpactWithCore(moving.ref(), sweep.get(), body.extent, body.innerRadius,
                                                          candidate.ref(), owner.transform));
     }
     return true;
@@ -160,10 +179,10 @@ bool keepCentreInFrontOfChains(const WorldData& world, Body& body) {
 // sweep side by side. Returns whether the body's pose changed.
 bool sweepAgainstStatics(WorldData& world, std::int32_t slot) {
   Body& body = world.bodies[slot];
-  const Sweep sweep = sweepOf(body);
+  LazySweep sweep(body);
   Real firstHit = 1;
   world.forEachShape(slot, [&](std::int32_t s) { firstHit = std::min(firstHit, firstStaticHit(world, body, sweep, s)); });
-  if (firstHit < 1) body.transform = sweep.at(firstHit);
+  if (firstHit < 1) body.transform = sweep.get().at(firstHit);
   const bool heldInFront = keepCentreInFrontOfChains(world, body);
   return firstHit < 1 || heldInFront;
 }
