@@ -27,6 +27,9 @@ constexpr int kMaxAdvanceIterations = 30;
 // Stop the sweep this far from the surface (inside speculative range).
 constexpr Real kTargetSeparation = kLinearSlop;
 constexpr Real kSeparationTolerance = Real(0.25) * kLinearSlop;
+// The core circle swept for a body that starts a step touching: this
+// fraction of its inner radius (Box2D v3's).
+constexpr Real kCoreFraction = Real(0.25);
 // Passes over the chain segments near a centre's path (keepCentreInFrontOfChains).
 constexpr int kMaxChainPasses = 4;
 
@@ -97,9 +100,45 @@ Real timeOfImpactWithCore(ShapeRef moving, const Sweep& sweep, Real extent, Real
                           ShapeRef fixed, const Transform& fixedTransform) {
   Real t = timeOfImpact(moving, sweep, extent, fixed, fixedTransform);
   if (t > 0) return t;
-  const Circle core{Vec2::Zero(), Real(0.25) * innerRadius};
+  const Circle core{Vec2::Zero(), kCoreFraction * innerRadius};
   Real coreT = timeOfImpact({ShapeType::Circle, &core}, sweep, 0, fixed, fixedTransform);
   return coreT > 0 ? coreT : Real(1);
+}
+
+// A chain segment's line in the world: its first point, its unit tangent,
+// its length and its front (the side it collides on). None for a segment
+// too short to have a direction.
+struct SegmentLine {
+  Vec2 p1;
+  Vec2 tangent;
+  Real length;
+  Vec2 front;
+
+  Real inFront(const Vec2& point) const { return front.dot(point - p1); }
+};
+
+std::optional<SegmentLine> lineOf(const Transform& chainTransform, const ChainSegment& chain) {
+  const Vec2 p1 = chainTransform.apply(chain.segment.point1);
+  const Vec2 edge = chainTransform.apply(chain.segment.point2) - p1;
+  const Real length = edge.norm();
+  if (length <= kLinearSlop) return std::nullopt;
+  const Vec2 tangent = edge / length;
+  return SegmentLine{p1, tangent, length, rightPerp(tangent)};
+}
+
+// Whether the body's centre path cannot take it through a chain segment,
+// so no time of impact is needed (Box2D v3's early out): it started behind
+// the one-sided segment, or it closed on the segment's line by less than its
+// core's radius and ends more than that in front (sliding along a wall).
+// Stopping such a body at its first graze would only make it pause on the
+// wall; keepCentreInFrontOfChains still keeps its centre in front.
+bool passesChainSegment(const Body& body, const Transform& chainTransform, const ChainSegment& chain) {
+  const std::optional<SegmentLine> line = lineOf(chainTransform, chain);
+  if (!line) return false;
+  const Real before = line->inFront(body.center0);
+  const Real after = line->inFront(body.transform.p);
+  const Real core = kCoreFraction * body.innerRadius;
+  return before < 0 || (before - after < core && after > core);
 }
 
 // The first time in (0, 1] at which one of the body's shapes comes within
@@ -112,7 +151,9 @@ Real firstStaticHit(const WorldData& world, const Body& body, LazySweep& sweep, 
   world.broadPhase.queryStatic(swept, [&](std::int32_t other) {
     const ShapeSlot& candidate = world.shapes[other];
     const Body& owner = world.bodies[candidate.body];
-    if (shapesCanCollide(moving.type(), candidate.type())) {
+    const bool passes = candidate.type() == ShapeType::ChainSegment &&
+                        passesChainSegment(body, owner.transform, geometryAs<ChainSegment>(candidate.ref()));
+    if (!passes && shapesCanCollide(moving.type(), candidate.type())) {
       firstHit = std::min(firstHit, timeOfImpactWithCore(moving.ref(), sweep.get(), body.extent, body.innerRadius,
                                                          candidate.ref(), owner.transform));
     }
@@ -130,20 +171,15 @@ Real firstStaticHit(const WorldData& world, const Body& body, LazySweep& sweep, 
 // along the segment's normal. The motion along the wall is kept, so a body
 // sliding past does not pause. Returns whether the centre moved.
 bool keepCentreInFront(const Transform& chainTransform, const ChainSegment& chain, const Vec2& start, Vec2& end) {
-  const Vec2 p1 = chainTransform.apply(chain.segment.point1);
-  const Vec2 p2 = chainTransform.apply(chain.segment.point2);
-  const Vec2 edge = p2 - p1;
-  const Real length = edge.norm();
-  if (length <= kLinearSlop) return false;
-  const Vec2 tangent = edge / length;
-  const Vec2 normal = rightPerp(tangent);  // the front
-  const Real before = normal.dot(start - p1);
-  const Real after = normal.dot(end - p1);
+  const std::optional<SegmentLine> line = lineOf(chainTransform, chain);
+  if (!line) return false;
+  const Real before = line->inFront(start);
+  const Real after = line->inFront(end);
   if (before < 0 || after >= 0) return false;
   const Vec2 crossing = start + (before / (before - after)) * (end - start);
-  const Real along = tangent.dot(crossing - p1);
-  if (along < 0 || along > length) return false;
-  end += (kLinearSlop - after) * normal;
+  const Real along = line->tangent.dot(crossing - line->p1);
+  if (along < 0 || along > line->length) return false;
+  end += (kLinearSlop - after) * line->front;
   return true;
 }
 
