@@ -3,6 +3,7 @@
 // free list and are threaded through both bodies' edge lists.
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
 #include "contact_events.h"
@@ -128,10 +129,11 @@ Real closingReach(const Body& a, const Body& b, Real dt) {
 // was computed with; once the pair may close by more than the approach
 // tolerance in a step, it is computed afresh with its reach. (Only then is
 // the reach worked out: a resting pile's carried manifolds have points.)
-bool manifoldIsCurrent(const Contact& contact, const Body& a, const Body& b, Real dt) {
+template <class Reach>
+bool manifoldIsCurrent(const Contact& contact, const Body& a, const Body& b, Reach&& reach) {
   const ManifoldFrame& frame = contact.frame;
   if (!frame.computed) return false;
-  if (contact.manifold.pointCount == 0 && closingReach(a, b, dt) > kApproachTolerance) return false;
+  if (contact.manifold.pointCount == 0 && reach() > kApproachTolerance) return false;
   Transform now = relativePose(a, b);
   Vec2 shift = now.p - frame.relative.p;
   Real approach = shift.dot(frame.localNormal);
@@ -222,13 +224,19 @@ std::uint8_t updateManifold(const WorldData& world, Contact& contact, Real dt) {
   const Body& a = world.bodies[contact.edges.bodyA];
   const Body& b = world.bodies[contact.edges.bodyB];
   const bool carried = carriesManifold(contact);
-  if (carried && manifoldIsCurrent(contact, a, b, dt)) {
+  // The closing reach, worked out at most once, and only where it is read.
+  std::optional<Real> knownReach;
+  auto reach = [&] {
+    if (!knownReach) knownReach = closingReach(a, b, dt);
+    return *knownReach;
+  };
+  if (carried && manifoldIsCurrent(contact, a, b, reach)) {
     refreshManifold(contact, a, b);
     return wakeOutcome(contact, a, b);
   }
   Manifold next = contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
                                   world.shapes[contact.shapeB].ref().geometry, b.transform,
-                                  kSpeculativeDistance + closingReach(a, b, dt));
+                                  kSpeculativeDistance + reach());
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
   const bool wasTouching = contact.touching;
