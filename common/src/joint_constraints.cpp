@@ -122,18 +122,18 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
     tree_.clear();
     return false;
   }
-  // The colours first, one by one (a colour depends on the joints before
-  // it), from the states alone; then the rows, side by side.
+  // What the colouring needs of each joint, side by side; then the colours
+  // one by one (a colour depends on the joints before it), from those
+  // alone; then the rows, side by side.
+  findJointSides(world);
   jointOf_.clear();
   colorOf_.clear();
-  isPin_.clear();
-  for (std::size_t index = 0; index < world.joints.size(); ++index) {
-    const Joint& joint = world.joints[index];
-    if (!hasAwakeBody(world, joint)) continue;
-    if (pullsToWorldPoint(joint)) pullingRows_.push_back(static_cast<std::int32_t>(jointOf_.size()));
+  for (std::size_t index = 0; index < jointSides_.size(); ++index) {
+    const JointSides& sides = jointSides_[index];
+    if (!sides.solved) continue;
+    if (sides.pulls) pullingRows_.push_back(static_cast<std::int32_t>(jointOf_.size()));
     jointOf_.push_back(static_cast<std::int32_t>(index));
-    colorOf_.push_back(coloring.take(sideOf(world, joint.edges.bodyA).state, sideBOf(world, joint).state));
-    isPin_.push_back(isPlainPin(joint) ? 1 : 0);
+    colorOf_.push_back(coloring.take(sides.stateA, sides.stateB));
   }
   // Solved in colour order, so a colour's joints could run side by side.
   // Each row is made in the joints' order and written to its place there:
@@ -157,6 +157,22 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   return false;
 }
 
+void JointConstraints::findJointSides(const WorldData& world) {
+  jointSides_.resize(world.joints.size());
+  world.tasks.forRanges(std::int32_t(world.joints.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t index = begin; index < end; ++index) {
+      const Joint& joint = world.joints[std::size_t(index)];
+      JointSides& sides = jointSides_[std::size_t(index)];
+      sides.solved = hasAwakeBody(world, joint);
+      if (!sides.solved) continue;
+      sides.stateA = sideOf(world, joint.edges.bodyA).state;
+      sides.stateB = sideBOf(world, joint).state;
+      sides.pulls = pullsToWorldPoint(joint);
+      sides.pin = isPlainPin(joint);
+    }
+  });
+}
+
 // Each colour's plain pins get a place in blocks of their own (block times
 // eight plus lane, by rank); the colour's other rows are listed beside them.
 // A colour's rows share no awake body, so solving its pins first changes
@@ -169,7 +185,8 @@ void JointConstraints::placePins() {
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
     std::int32_t pins = 0;
     for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
-      const bool pin = isPin_[std::size_t(order_[std::size_t(r)])] != 0 && !(anyInTree && rows_[std::size_t(r)].inTree);
+      const std::int32_t joint = jointOf_[std::size_t(order_[std::size_t(r)])];
+      const bool pin = jointSides_[std::size_t(joint)].pin && !(anyInTree && rows_[std::size_t(r)].inTree);
       if (!pin) {
         rowsBesidePins_.push_back(r);
         continue;

@@ -32,10 +32,21 @@ class JointConstraints final : public ConstraintKind {
   void run(const SubStep& sub, bool useBias);
   template <class Visit, class VisitPins>
   void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins);
+  void findJointSides(const WorldData& world);
   void placePins();
   void fillPins(const TaskRunner& tasks);
 
   std::vector<JointRow> rows_;
+  /// Per joint slot, what the colouring reads: whether it is solved this
+  /// step (an awake body), its sides' solver states, and its kind's flags.
+  struct JointSides {
+    std::int32_t stateA = 0;
+    std::int32_t stateB = 0;
+    bool solved = false;
+    bool pulls = false;  ///< a mouse joint (pullingRows_)
+    bool pin = false;    ///< JointRow::plainPin
+  };
+  std::vector<JointSides> jointSides_;
   /// The joints of this step's rows, in the joints' order.
   std::vector<std::int32_t> jointOf_;
   /// The rows (in colour order) of mouse joints, which keep their body awake.
@@ -50,9 +61,7 @@ class JointConstraints final : public ConstraintKind {
   /// pinBlocks_[pinBlockStarts_[c], pinBlockStarts_[c + 1]); its other rows
   /// are rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]).
   std::vector<PinBlock> pinBlocks_;
-  /// Per entry of jointOf_, whether it is a plain pin; per row (by rank),
-  /// its pin's block * 8 + lane, or -1.
-  std::vector<std::uint8_t> isPin_;
+  /// Per row (by rank), its pin's block * 8 + lane, or -1.
   std::vector<std::int32_t> pinPlaceOf_;
   ColorStarts pinBlockStarts_{};
   std::vector<std::int32_t> rowsBesidePins_;
