@@ -150,7 +150,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   });
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
-  tree_.order(rows_, world.solverStates.size(), pass_.rigid);
+  tree_.order(rows_, world.solverStates.size(), pass_.rigid, world.tasks);
   placePins();
   fillPins(world.tasks);
   kernels_ = &wideContactKernels(world.settings.simdWidth);

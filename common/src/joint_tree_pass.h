@@ -34,6 +34,7 @@
 #include <Eigen/Core>
 
 #include "joint_row.h"
+#include "task_runner.h"
 
 namespace impulse {
 
@@ -49,7 +50,7 @@ class JointTreePass {
   /// groups are kept while every row joins the same states with the same
   /// masses. Then marks `inTree` the rows of the groups it solves this
   /// step (needsExactPass; `rigid` is the soft rigid rows' softness).
-  void order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid);
+  void order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid, const TaskRunner& tasks);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() {
     nodes_.clear();
@@ -106,7 +107,7 @@ class JointTreePass {
   };
 
   static RowShape shapeOf(const JointRow& row);
-  bool sameRowsAsOrdered(std::span<const JointRow> rows) const;
+  bool sameRowsAsOrdered(std::span<const JointRow> rows, const TaskRunner& tasks) const;
   void orderAnew(std::span<const JointRow> rows, std::size_t stateCount);
   void buildGroups(std::span<const JointRow> rows, std::size_t stateCount);
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
