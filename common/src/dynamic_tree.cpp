@@ -40,21 +40,46 @@ Real shiftedUp(Real value, double offset) {
 // boxes, the rest of the subtree is then log2(n) deep.
 constexpr int kMiddleSplitDepth = 40;
 
-// A box that any box joins into that box: lower bound +max, upper -max.
+// Levels of the rebuild split before the parts are left to jobs (up to
+// 2^levels of them), and the fewest subtrees a job is given: fewer take
+// less time than handing them to another thread.
+constexpr int kSplitsBeforeJobs = 2;
+constexpr std::size_t kItemsPerJob = 256;
+
+// The bounds of a spread of no points: any point's coordinates replace them.
 constexpr Real kHuge = std::numeric_limits<Real>::max();
-const AABB kInverted{Vec2(kHuge, kHuge), Vec2(-kHuge, -kHuge)};
 
 // 0 for x, 1 for y: the axis along which a box is wider.
 int widerAxis(const AABB& box) {
   return box.upper.x() - box.lower.x() >= box.upper.y() - box.lower.y() ? 0 : 1;
 }
 
+// The box of points added one by one, in four scalars: through Eigen's
+// 2-vectors GCC moved each point through the stack, and the rebuild's
+// splits spent a third of their time on it.
+class SpreadBuilder {
+ public:
+  void add(const Vec2& point) {
+    lowerX_ = std::min(lowerX_, point.x());
+    lowerY_ = std::min(lowerY_, point.y());
+    upperX_ = std::max(upperX_, point.x());
+    upperY_ = std::max(upperY_, point.y());
+  }
+  AABB box() const { return {Vec2(lowerX_, lowerY_), Vec2(upperX_, upperY_)}; }
+
+ private:
+  Real lowerX_ = kHuge;
+  Real lowerY_ = kHuge;
+  Real upperX_ = -kHuge;
+  Real upperY_ = -kHuge;
+};
+
 // The box of the items' centres.
 template <class Items>
 AABB centerSpread(const Items& items) {
-  AABB spread = kInverted;
-  for (const auto& item : items) spread = spread.unite(AABB{item.center, item.center});
-  return spread;
+  SpreadBuilder spread;
+  for (const auto& item : items) spread.add(item.center);
+  return spread.box();
 }
 
 // What descending into one child of the node being examined could cost.
@@ -69,7 +94,7 @@ struct ChildCost {
 std::int32_t DynamicTree::createProxy(const AABB& box, std::int32_t userValue) {
   std::int32_t leaf = allocateNode();
   nodes_[leaf].box = box;
-  nodes_[leaf].userValue = userValue;
+  nodes_[leaf].child2 = userValue;
   insertLeaf(leaf);
   ++leafCount_;
   return leaf;
@@ -89,26 +114,54 @@ void DynamicTree::moveProxy(std::int32_t node, const AABB& box) {
 
 void DynamicTree::enlargeProxy(std::int32_t node, const AABB& box) {
   nodes_[node].box = box;
-  // Ancestors grow until one already holds the box; marking goes on up to
-  // the first node marked before, whose ancestors are all marked.
-  for (std::int32_t index = nodes_[node].parent; index != kNull; index = nodes_[index].parent) {
-    Node& ancestor = nodes_[index];
-    const bool grows = !ancestor.box.contains(box);
-    if (grows) ancestor.box = ancestor.box.unite(box);
-    if (ancestor.enlarged && !grows) return;
-    ancestor.enlarged = true;
+  // Marking stops at the first node marked before, whose ancestors are all
+  // marked. Their boxes are left as they are: the rebuild frees every
+  // marked node and computes the boxes of the nodes it makes.
+  for (std::int32_t index = nodes_[node].parent; index != kNull && !nodes_[index].enlarged;
+       index = nodes_[index].parent) {
+    nodes_[index].enlarged = true;
   }
 }
 
-int DynamicTree::rebuild() {
-  if (root_ == kNull || !nodes_[root_].enlarged) return 0;
+// The build of every subtree collectBuildItems found.
+DynamicTree::BuildJob DynamicTree::wholeBuild() {
+  return {buildItems_, centerSpread(buildItems_), 0, buildSlots_};
+}
+
+bool DynamicTree::planRebuild() {
+  if (root_ == kNull || !nodes_[root_].enlarged) return false;
   collectBuildItems(false);
-  root_ = buildSubtree(buildItems_, centerSpread(buildItems_), 0);
+  buildJobs_.clear();
+  topJoins_.clear();
+  root_ = planSubtree(wholeBuild(), kSplitsBeforeJobs);
+  return true;
+}
+
+// The top of the build: splits as the build would, down to parts it leaves
+// to jobs, and notes the joins above them for finishRebuild. Returns the
+// subtree's root (known before it is built: the last of its slots).
+std::int32_t DynamicTree::planSubtree(const BuildJob& job, int splitsLeft) {
+  if (splitsLeft == 0 || job.items.size() < kItemsPerJob) {
+    buildJobs_.push_back(job);
+    return job.items.size() == 1 ? job.items.front().node : job.slots.back();
+  }
+  const auto [first, second] = split(job);
+  const std::int32_t child1 = planSubtree(first, splitsLeft - 1);
+  const std::int32_t child2 = planSubtree(second, splitsLeft - 1);
+  topJoins_.push_back({job.slots.back(), child1, child2});
+  return job.slots.back();
+}
+
+void DynamicTree::runBuildJob(int index) { buildSubtree(buildJobs_[std::size_t(index)]); }
+
+int DynamicTree::finishRebuild() {
+  // Children before parents: planSubtree noted each join after its parts'.
+  for (const TopJoin& join : topJoins_) joinUnderNode(join.node, join.child1, join.child2);
   nodes_[root_].parent = kNull;
   if (nodes_[root_].height > kMaxHeight) {
     // Kept subtrees stacked too deep over many rebuilds: start afresh.
     collectBuildItems(true);
-    root_ = buildSubtree(buildItems_, centerSpread(buildItems_), 0);
+    root_ = buildSubtree(wholeBuild());
     nodes_[root_].parent = kNull;
   }
   return static_cast<int>(buildItems_.size());
@@ -116,15 +169,19 @@ int DynamicTree::rebuild() {
 
 // The subtrees the rebuild joins: every leaf and every unmarked inner node
 // under marked ones (all leaves for the whole tree); the marked nodes above
-// them are freed for the build to reuse.
+// them are the slots the build fills, as many as it needs (one fewer than
+// the subtrees). They go in the reverse of the order the walk meets them:
+// the order a build taking nodes one by one from the free list got them
+// in, so that every node keeps the number it had then.
 void DynamicTree::collectBuildItems(bool wholeTree) {
   buildItems_.clear();
+  buildSlots_.clear();
   std::int32_t stack[kStackSize];
   int count = 0;
   stack[count++] = root_;
   while (count > 0) {
     const std::int32_t index = stack[--count];
-    Node& node = nodes_[index];
+    TreeNode& node = nodes_[index];
     if (node.isLeaf() || !(node.enlarged || wholeTree)) {
       node.parent = kNull;
       buildItems_.push_back({center(node.box), index});
@@ -132,29 +189,31 @@ void DynamicTree::collectBuildItems(bool wholeTree) {
     }
     stack[count++] = node.child1;
     stack[count++] = node.child2;
-    freeNode(index);
+    buildSlots_.push_back(index);
   }
+  std::reverse(buildSlots_.begin(), buildSlots_.end());
 }
 
-std::int32_t DynamicTree::buildSubtree(std::span<BuildItem> items, const AABB& spread, int depth) {
-  if (items.size() == 1) return items.front().node;
+std::int32_t DynamicTree::buildSubtree(const BuildJob& job) {
+  if (job.items.size() == 1) return job.items.front().node;
+  const auto [first, second] = split(job);
+  const std::int32_t child1 = buildSubtree(first);
+  const std::int32_t child2 = buildSubtree(second);
+  joinUnderNode(job.slots.back(), child1, child2);
+  return job.slots.back();
+}
+
+std::pair<DynamicTree::BuildJob, DynamicTree::BuildJob> DynamicTree::split(const BuildJob& job) {
   AABB spreads[2];
-  std::size_t split = depth < kMiddleSplitDepth ? splitAtMiddle(items, spread, spreads) : 0;
-  if (split == 0) {
-    // The median along the wider spread of centres (ties by node, so the
-    // split is the same on every run).
-    split = items.size() / 2;
-    const int axis = widerAxis(spread);
-    std::nth_element(items.begin(), items.begin() + std::ptrdiff_t(split), items.end(),
-                     [axis](const BuildItem& a, const BuildItem& b) {
-                       return a.center[axis] != b.center[axis] ? a.center[axis] < b.center[axis] : a.node < b.node;
-                     });
-    spreads[0] = centerSpread(items.first(split));
-    spreads[1] = centerSpread(items.subspan(split));
+  std::size_t middle = job.depth < kMiddleSplitDepth ? splitAtMiddle(job.items, job.spread, spreads) : 0;
+  if (middle == 0) {
+    middle = splitAtMedian(job.items, job.spread);
+    spreads[0] = centerSpread(job.items.first(middle));
+    spreads[1] = centerSpread(job.items.subspan(middle));
   }
-  const std::int32_t child1 = buildSubtree(items.first(split), spreads[0], depth + 1);
-  const std::int32_t child2 = buildSubtree(items.subspan(split), spreads[1], depth + 1);
-  return joinUnderNewNode(child1, child2);
+  const std::size_t rest = job.items.size() - middle;
+  return {{job.items.first(middle), spreads[0], job.depth + 1, job.slots.first(middle - 1)},
+          {job.items.subspan(middle), spreads[1], job.depth + 1, job.slots.subspan(middle - 1, rest - 1)}};
 }
 
 // Box2D v3's split: the items whose centres lie below the middle of their
@@ -168,44 +227,81 @@ std::size_t DynamicTree::splitAtMiddle(std::span<BuildItem> items, const AABB& s
   const int axis = widerAxis(spread);
   const Real pivot = Real(0.5) * (spread.lower[axis] + spread.upper[axis]);
   if (!(spread.lower[axis] < pivot)) return 0;
-  spreads[0] = spreads[1] = kInverted;
+  SpreadBuilder below;
+  SpreadBuilder above;
   // Hoare's scheme from both ends: each item is read once, and only items
   // on the wrong side move.
   std::size_t low = 0;
   std::size_t high = items.size();
   while (true) {
     while (low < high && items[low].center[axis] < pivot) {
-      spreads[0] = spreads[0].unite(AABB{items[low].center, items[low].center});
+      below.add(items[low].center);
       ++low;
     }
     while (low < high && !(items[high - 1].center[axis] < pivot)) {
-      spreads[1] = spreads[1].unite(AABB{items[high - 1].center, items[high - 1].center});
+      above.add(items[high - 1].center);
       --high;
     }
     if (low == high) break;
     std::swap(items[low], items[high - 1]);
   }
+  spreads[0] = below.box();
+  spreads[1] = above.box();
   return low;
 }
 
-std::int32_t DynamicTree::joinUnderNewNode(std::int32_t child1, std::int32_t child2) {
-  const std::int32_t parent = allocateNode();
+// The median along the wider spread of centres, in place (ties by node, so
+// the split is the same on every run).
+std::size_t DynamicTree::splitAtMedian(std::span<BuildItem> items, const AABB& spread) {
+  const std::size_t median = items.size() / 2;
+  const int axis = widerAxis(spread);
+  std::nth_element(items.begin(), items.begin() + std::ptrdiff_t(median), items.end(),
+                   [axis](const BuildItem& a, const BuildItem& b) {
+                     return a.center[axis] != b.center[axis] ? a.center[axis] < b.center[axis] : a.node < b.node;
+                   });
+  return median;
+}
+
+void DynamicTree::joinUnderNode(std::int32_t parent, std::int32_t child1, std::int32_t child2) {
+  nodes_[parent] = TreeNode{};
   nodes_[parent].child1 = child1;
   nodes_[parent].child2 = child2;
   nodes_[child1].parent = parent;
   nodes_[child2].parent = parent;
   refit(parent);
-  return parent;
+}
+
+DynamicTree::TreeNode DynamicTree::packed(const Node& node) {
+  const bool leaf = node.isLeaf() && node.height == 0;
+  return {node.box, node.parent, node.child1, leaf ? node.userValue : node.child2, node.height, false};
+}
+
+DynamicTree::Node DynamicTree::unpacked(const TreeNode& node) {
+  const bool leaf = node.isLeaf() && node.height == 0;
+  return {node.box, node.parent, node.child1, leaf ? kNull : node.child2, leaf ? node.child2 : -1, node.height};
+}
+
+DynamicTree::State DynamicTree::state() const {
+  State saved{{}, root_, freeList_, leafCount_};
+  saved.nodes.reserve(nodes_.size());
+  for (const TreeNode& node : nodes_) saved.nodes.push_back(unpacked(node));
+  return saved;
 }
 
 bool DynamicTree::restore(const State& state) {
   DynamicTree candidate;
-  candidate.nodes_ = state.nodes;
+  candidate.nodes_.reserve(state.nodes.size());
+  for (const Node& node : state.nodes) {
+    // A node without a first child has no second (a packed leaf keeps its
+    // user value there).
+    if (node.isLeaf() && node.child2 != kNull) return false;
+    candidate.nodes_.push_back(packed(node));
+  }
   candidate.root_ = state.root;
   candidate.freeList_ = state.freeList;
   candidate.leafCount_ = state.leafCount;
   if (!candidate.isValid()) return false;
-  for (const Node& node : candidate.nodes_) {
+  for (const TreeNode& node : candidate.nodes_) {
     if (node.height == 0 && !(isFinite(node.box.lower) && isFinite(node.box.upper))) return false;
   }
   *this = std::move(candidate);
@@ -216,11 +312,15 @@ bool DynamicTree::restore(const State& state) {
 // A rebuild joins at most every node; its scratch grows with the node
 // array, so a rebuild never allocates in a step.
 void DynamicTree::reserveBuildItems() {
-  if (buildItems_.capacity() < nodes_.capacity()) buildItems_.reserve(nodes_.capacity());
+  if (buildItems_.capacity() >= nodes_.capacity()) return;
+  buildItems_.reserve(nodes_.capacity());
+  buildSlots_.reserve(nodes_.capacity());
+  buildJobs_.reserve(std::size_t(1) << kSplitsBeforeJobs);
+  topJoins_.reserve(std::size_t(1) << kSplitsBeforeJobs);
 }
 
 void DynamicTree::shift(const Vec2d& offset) {
-  for (Node& node : nodes_) {
+  for (TreeNode& node : nodes_) {
     node.box.lower = Vec2(shiftedDown(node.box.lower.x(), offset.x()),
                           shiftedDown(node.box.lower.y(), offset.y()));
     node.box.upper = Vec2(shiftedUp(node.box.upper.x(), offset.x()),
@@ -249,7 +349,7 @@ bool DynamicTree::isValid() const {
     // More nodes than exist means a cycle or a node linked twice.
     if (++reached > static_cast<std::int64_t>(nodes_.size())) return false;
     if (!isValidNode(index)) return false;
-    const Node& node = nodes_[index];
+    const TreeNode& node = nodes_[index];
     if (node.isLeaf()) {
       ++leaves;
     } else {
@@ -269,12 +369,12 @@ std::int32_t DynamicTree::allocateNode() {
   }
   std::int32_t index = freeList_;
   freeList_ = nodes_[index].parent;
-  nodes_[index] = Node{};
+  nodes_[index] = TreeNode{};
   return index;
 }
 
 void DynamicTree::freeNode(std::int32_t node) {
-  nodes_[node] = Node{};
+  nodes_[node] = TreeNode{};
   nodes_[node].parent = freeList_;
   nodes_[node].height = -1;
   freeList_ = node;
@@ -291,7 +391,7 @@ void DynamicTree::insertLeaf(std::int32_t leaf) {
   const std::int32_t oldParent = nodes_[sibling].parent;
   // allocateNode may grow nodes_, so no Node reference is held across it.
   const std::int32_t newParent = allocateNode();
-  Node& parent = nodes_[newParent];
+  TreeNode& parent = nodes_[newParent];
   parent.parent = oldParent;
   parent.child1 = sibling;
   parent.child2 = leaf;
@@ -348,7 +448,7 @@ std::int32_t DynamicTree::findBestSibling(const AABB& leafBox) const {
   Real bestCost = direct;
 
   while (!nodes_[index].isLeaf()) {
-    const Node& node = nodes_[index];
+    const TreeNode& node = nodes_[index];
     if (direct + inherited < bestCost) {
       best = index;
       bestCost = direct + inherited;
@@ -400,9 +500,9 @@ void DynamicTree::replaceChild(std::int32_t parent, std::int32_t oldChild, std::
 }
 
 void DynamicTree::refit(std::int32_t node) {
-  Node& n = nodes_[node];
-  const Node& a = nodes_[n.child1];
-  const Node& b = nodes_[n.child2];
+  TreeNode& n = nodes_[node];
+  const TreeNode& a = nodes_[n.child1];
+  const TreeNode& b = nodes_[n.child2];
   n.box = a.box.unite(b.box);
   n.height = static_cast<std::int16_t>(1 + std::max(a.height, b.height));
 }
@@ -416,7 +516,7 @@ void DynamicTree::refitAncestors(std::int32_t node, bool trySwaps) {
     node = balance(node, trySwaps);
     // A subtree that keeps its box and height changes nothing above it (a leaf
     // moving inside a crowd stops here, long before the root).
-    const Node& top = nodes_[node];
+    const TreeNode& top = nodes_[node];
     if (top.height == oldHeight && top.box.lower == oldBox.lower && top.box.upper == oldBox.upper) {
       return;
     }
@@ -428,7 +528,7 @@ void DynamicTree::refitAncestors(std::int32_t node, bool trySwaps) {
 // height bound there (its subtrees must already satisfy it) or, when it holds
 // and `trySwaps` is set, after trying a swap that shrinks the node's children.
 std::int32_t DynamicTree::balance(std::int32_t node, bool trySwaps) {
-  const Node& n = nodes_[node];
+  const TreeNode& n = nodes_[node];
   const int difference = nodes_[n.child2].height - nodes_[n.child1].height;
   if (difference > kMaxHeightDifference) return rotateUp(node, n.child2, trySwaps);
   if (difference < -kMaxHeightDifference) return rotateUp(node, n.child1, trySwaps);
@@ -446,11 +546,11 @@ std::int32_t DynamicTree::balance(std::int32_t node, bool trySwaps) {
 // balance, so the pushed-down A is balanced again in turn: this is the join of
 // two AVL trees and costs one rotation per level of difference.
 std::int32_t DynamicTree::rotateUp(std::int32_t node, std::int32_t child, bool trySwaps) {
-  const Node& a = nodes_[node];
-  const Node& c = nodes_[child];
+  const TreeNode& a = nodes_[node];
+  const TreeNode& c = nodes_[child];
   const std::int32_t other = a.child1 == child ? a.child2 : a.child1;
-  const Node& f = nodes_[c.child1];
-  const Node& g = nodes_[c.child2];
+  const TreeNode& f = nodes_[c.child1];
+  const TreeNode& g = nodes_[c.child2];
   // With equal heights, the grandchild that packs tighter with B goes down.
   const bool keepFirst = f.height != g.height ? f.height > g.height
                                               : nodes_[other].box.unite(g.box).perimeter() <
@@ -477,14 +577,14 @@ std::int32_t DynamicTree::rotateUp(std::int32_t node, std::int32_t child, bool t
 // reaches A then tests a smaller box. Only swaps that keep the height bound
 // and A's own height are taken, so the ancestors' balance is untouched.
 void DynamicTree::swapForArea(std::int32_t node) {
-  const Node& a = nodes_[node];
+  const TreeNode& a = nodes_[node];
   // From the children: on the way up, a's own height is not refitted yet.
   const int height = 1 + std::max(nodes_[a.child1].height, nodes_[a.child2].height);
   std::int32_t bestDown = kNull;
   std::int32_t bestUp = kNull;
   Real bestDelta = 0;
   auto consider = [&](std::int32_t down, std::int32_t inner) {
-    const Node& c = nodes_[inner];
+    const TreeNode& c = nodes_[inner];
     if (c.isLeaf()) return;
     for (const auto& [up, stay] : {std::pair{c.child1, c.child2}, std::pair{c.child2, c.child1}}) {
       const int downHeight = nodes_[down].height;
@@ -516,14 +616,14 @@ void DynamicTree::swapForArea(std::int32_t node) {
 }
 
 bool DynamicTree::isValidNode(std::int32_t index) const {
-  const Node& node = nodes_[index];
-  if (node.isLeaf()) return node.child2 == kNull && node.height == 0;
+  const TreeNode& node = nodes_[index];
+  if (node.isLeaf()) return node.height == 0;
   const auto size = static_cast<std::int32_t>(nodes_.size());
   if (node.child1 < 0 || node.child1 >= size || node.child2 < 0 || node.child2 >= size) {
     return false;
   }
-  const Node& a = nodes_[node.child1];
-  const Node& b = nodes_[node.child2];
+  const TreeNode& a = nodes_[node.child1];
+  const TreeNode& b = nodes_[node.child2];
   const AABB enclosing = a.box.unite(b.box);
   return a.parent == index && b.parent == index && a.height >= 0 && b.height >= 0 &&
          node.height == 1 + std::max(a.height, b.height) &&

@@ -146,7 +146,11 @@ void solveAndMoveProxies(WorldData& world, Real dt) {
       world.broadPhase.enlargeProxy(world.shapes[s].proxyKey, shapeAABB(world, s), reach.motion);
     });
   }
-  world.broadPhase.rebuildEnlarged();
+  world.broadPhase.rebuildEnlarged([&](int jobCount, auto&& job) {
+    world.tasks.forRanges(jobCount, 1, [&](std::int32_t begin, std::int32_t end) {
+      for (std::int32_t index = begin; index < end; ++index) job(index);
+    });
+  });
 }
 
 /// One stage of the step: what it runs and where its time is recorded.

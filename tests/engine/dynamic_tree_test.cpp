@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace impulse {
@@ -315,6 +316,61 @@ TEST(DynamicTree, RebuiltTreesOfIdenticalHistoriesAreIdentical) {
     EXPECT_EQ(first.nodes[i].child1, second.nodes[i].child1) << i;
     EXPECT_EQ(first.nodes[i].box.lower, second.nodes[i].box.lower) << i;
   }
+}
+
+void expectSameNodes(const DynamicTree::State& a, const DynamicTree::State& b) {
+  ASSERT_EQ(a.root, b.root);
+  ASSERT_EQ(a.freeList, b.freeList);
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    EXPECT_EQ(a.nodes[i].parent, b.nodes[i].parent) << i;
+    EXPECT_EQ(a.nodes[i].child1, b.nodes[i].child1) << i;
+    EXPECT_EQ(a.nodes[i].child2, b.nodes[i].child2) << i;
+    EXPECT_EQ(a.nodes[i].userValue, b.nodes[i].userValue) << i;
+    EXPECT_EQ(a.nodes[i].height, b.nodes[i].height) << i;
+    EXPECT_EQ(a.nodes[i].box.lower, b.nodes[i].box.lower) << i;
+    EXPECT_EQ(a.nodes[i].box.upper, b.nodes[i].box.upper) << i;
+  }
+}
+
+// A rebuild whose jobs run on threads of their own, all at once, or one
+// after another from the last: the tree of a rebuild on one thread, node
+// for node (so queries meet leaves in the same order, and later proxies get
+// the same nodes).
+TEST(DynamicTree, RebuildInJobs_OnThreadsOrBackwards_GivesTheTreeOfOneThread) {
+  auto onThreads = [](int jobCount, auto&& job) {
+    std::vector<std::thread> threads;
+    for (int index = 0; index < jobCount; ++index) threads.emplace_back([&job, index] { job(index); });
+    for (std::thread& thread : threads) thread.join();
+  };
+  auto backwards = [](int jobCount, auto&& job) {
+    for (int index = jobCount - 1; index >= 0; --index) job(index);
+  };
+  DynamicTree oneThread, threaded, reversed;
+  std::vector<Leaf> leaves[3];
+  BoxSource sources[3] = {BoxSource(31), BoxSource(31), BoxSource(31)};
+  DynamicTree* trees[3] = {&oneThread, &threaded, &reversed};
+  for (int t = 0; t < 3; ++t) leaves[t] = addRandomLeaves(*trees[t], sources[t], 3000);
+  int mostJobs = 0;
+  for (int round = 0; round < 5; ++round) {
+    for (int t = 0; t < 3; ++t) {
+      for (Leaf& leaf : leaves[t]) {
+        leaf.box = sources[t].moved(leaf.box);
+        trees[t]->enlargeProxy(leaf.node, leaf.box);
+      }
+    }
+    oneThread.rebuild();
+    threaded.rebuild([&](int jobCount, auto&& job) {
+      mostJobs = std::max(mostJobs, jobCount);
+      onThreads(jobCount, job);
+    });
+    reversed.rebuild(backwards);
+    ASSERT_TRUE(threaded.isValid()) << "round " << round;
+    expectSameNodes(oneThread.state(), threaded.state());
+    expectSameNodes(oneThread.state(), reversed.state());
+  }
+  EXPECT_GT(mostJobs, 1);
+  expectQueriesMatchBruteForce(threaded, leaves[1], sources[1]);
 }
 
 TEST(DynamicTree, RemovingEveryLeafLeavesAnEmptyValidTree) {

@@ -66,6 +66,12 @@ class BroadPhase {
   bool holds(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) const;
   /// Rebuilds the parts of the trees that enlargeProxy grew.
   void rebuildEnlarged();
+  /// rebuildEnlarged with the rebuild split into jobs that runJobs may run
+  /// on several threads (DynamicTree::rebuild); the trees come out the same.
+  template <class RunJobs>
+  void rebuildEnlarged(RunJobs&& runJobs) {
+    trees_[static_cast<int>(ProxyKind::Movable)].rebuild(runJobs);
+  }
 
   /// Queues a proxy for pair search without moving it (e.g. a body woke up). A
   /// queued static proxy looks for movable partners only.

@@ -24,18 +24,33 @@ class DynamicTree {
   void destroyProxy(std::int32_t node);
   /// Removes and re-inserts the leaf with a new box.
   void moveProxy(std::int32_t node, const AABB& box);
-  /// Gives the leaf a new box without restructuring: its ancestors grow to
-  /// hold it and are marked for rebuild(). For many moving leaves, a walk up
-  /// from each and one rebuild cost less than re-inserting each, and leave a
-  /// better tree for the queries that follow.
+  /// Gives the leaf a new box without restructuring: its ancestors are
+  /// marked for rebuild(), which must follow before any query (their boxes
+  /// may not hold the leaf until then). For many moving leaves, a short walk
+  /// up from each and one rebuild cost less than re-inserting each, and
+  /// leave a better tree for the queries that follow.
   void enlargeProxy(std::int32_t node, const AABB& box);
   /// Rebuilds the marked part of the tree, top down, keeping every unmarked
   /// subtree as it is. Leaves keep their node indices. Returns how many
   /// subtrees it joined (0 when nothing was marked).
-  int rebuild();
+  int rebuild() {
+    return rebuild([](int jobCount, auto&& job) {
+      for (int index = 0; index < jobCount; ++index) job(index);
+    });
+  }
+  /// rebuild() with the subtrees below its top splits built as separate
+  /// jobs: runJobs(jobCount, job) must call job(index) once for each index
+  /// in [0, jobCount), on any threads in any order. The tree comes out the
+  /// same, node for node, however the jobs run.
+  template <class RunJobs>
+  int rebuild(RunJobs&& runJobs) {
+    if (!planRebuild()) return 0;
+    runJobs(static_cast<int>(buildJobs_.size()), [this](int index) { runBuildJob(index); });
+    return finishRebuild();
+  }
 
   const AABB& box(std::int32_t node) const { return nodes_[node].box; }
-  std::int32_t userValue(std::int32_t node) const { return nodes_[node].userValue; }
+  std::int32_t userValue(std::int32_t node) const { return nodes_[node].child2; }
   /// Whether `node` is in range and a leaf in use.
   /// Nodes are numbered below this.
   std::int32_t nodeCapacity() const { return static_cast<std::int32_t>(nodes_.size()); }
@@ -68,8 +83,8 @@ class DynamicTree {
   template <typename Clip>
   void rayCast(const Ray& ray, Clip&& clip) const;
 
-  /// A leaf or an inner node as the tree keeps it (height: leaf 0, free -1;
-  /// parent is the free-list link of a free node).
+  /// A leaf, an inner node or a free node, as a saved tree holds it
+  /// (height: leaf 0, free -1; parent is the free-list link of a free node).
   struct Node {
     AABB box;
     std::int32_t parent = kNull;
@@ -77,9 +92,6 @@ class DynamicTree {
     std::int32_t child2 = kNull;
     std::int32_t userValue = -1;
     std::int16_t height = 0;
-    /// An inner node grown by enlargeProxy since the last rebuild (so are
-    /// all its ancestors).
-    bool enlarged = false;
     bool isLeaf() const { return child1 == kNull; }
   };
   /// The whole tree, node by node: its shape decides which nodes later
@@ -91,7 +103,7 @@ class DynamicTree {
     std::int32_t freeList = kNull;
     int leafCount = 0;
   };
-  State state() const { return {nodes_, root_, freeList_, leafCount_}; }
+  State state() const;
   /// Replaces the tree with a saved one; false (tree unchanged) when it is
   /// not a valid tree (isValid) or a leaf's box is not finite.
   bool restore(const State& state);
@@ -107,6 +119,25 @@ class DynamicTree {
   bool isValid() const;
 
  private:
+  // A node as the tree keeps it: 32 bytes on a 32-byte boundary, so that
+  // testing a node's box reads one cache line (at 36 bytes, 44% of the
+  // nodes straddled two). A leaf has no children and keeps its user value
+  // in child2.
+  struct alignas(32) TreeNode {
+    AABB box;
+    std::int32_t parent = kNull;
+    std::int32_t child1 = kNull;
+    std::int32_t child2 = kNull;
+    std::int16_t height = 0;
+    // An inner node above a leaf enlargeProxy gave a new box since the last
+    // rebuild (so are all its ancestors).
+    bool enlarged = false;
+    bool isLeaf() const { return child1 == kNull; }
+  };
+  static_assert(sizeof(TreeNode) == 32);
+  static TreeNode packed(const Node& node);
+  static Node unpacked(const TreeNode& node);
+
   std::int32_t allocateNode();
   void freeNode(std::int32_t node);
   void insertLeaf(std::int32_t leaf);
@@ -130,18 +161,46 @@ class DynamicTree {
   };
   void reserveBuildItems();
   void collectBuildItems(bool wholeTree);
-  // `spread` is the box of the items' centres, which each split passes on
-  // to its parts rather than have them read their items again.
-  std::int32_t buildSubtree(std::span<BuildItem> items, const AABB& spread, int depth);
+  // A subtree of items.size() items is built into items.size() - 1 nodes,
+  // `slots`, taken in the order the node joining its two parts comes after
+  // both parts' nodes, so its root is the last slot. `spread` is the box
+  // of the items' centres, which each split passes on to its parts rather
+  // than have them read their items again.
+  struct BuildJob {
+    std::span<BuildItem> items;
+    AABB spread;
+    int depth;
+    std::span<const std::int32_t> slots;
+  };
+  // A node over two subtrees of the top, joined once both are built.
+  struct TopJoin {
+    std::int32_t node;
+    std::int32_t child1;
+    std::int32_t child2;
+  };
+  BuildJob wholeBuild();
+  bool planRebuild();
+  std::int32_t planSubtree(const BuildJob& job, int splitsLeft);
+  void runBuildJob(int index);
+  int finishRebuild();
+  std::int32_t buildSubtree(const BuildJob& job);
+  // The two parts of a build's split.
+  static std::pair<BuildJob, BuildJob> split(const BuildJob& job);
   static std::size_t splitAtMiddle(std::span<BuildItem> items, const AABB& spread, AABB (&spreads)[2]);
-  std::int32_t joinUnderNewNode(std::int32_t child1, std::int32_t child2);
+  static std::size_t splitAtMedian(std::span<BuildItem> items, const AABB& spread);
+  void joinUnderNode(std::int32_t parent, std::int32_t child1, std::int32_t child2);
 
-  std::vector<Node> nodes_;
+  std::vector<TreeNode> nodes_;
   std::int32_t root_ = kNull;
   std::int32_t freeList_ = kNull;
   int leafCount_ = 0;
-  // The rebuild's scratch, kept so that a step allocates nothing.
+  // The rebuild's scratch, kept so that a step allocates nothing: the
+  // subtrees it joins, the marked nodes above them it reuses (in the order
+  // it fills them), its jobs and the joins above the jobs.
   std::vector<BuildItem> buildItems_;
+  std::vector<std::int32_t> buildSlots_;
+  std::vector<BuildJob> buildJobs_;
+  std::vector<TopJoin> topJoins_;
   // A node waiting in a ray cast, with where the ray enters its box.
   // Trivial, so a stack of them costs nothing to declare.
   struct RayEntry {
@@ -168,7 +227,7 @@ void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
   stack[count++] = root_;
   while (count > 0) {
     const std::int32_t index = stack[--count];
-    const Node& node = nodes_[index];
+    const TreeNode& node = nodes_[index];
     if (node.isLeaf()) {
       if (!visit(index)) return;
       continue;
@@ -227,7 +286,7 @@ void DynamicTree::rayCast(const Ray& ray, Clip&& clip) const {
     const RayEntry entry = stack[--count];
     // The ray may have been clipped since the node was pushed.
     if (entry.enter > maxFraction) continue;
-    const Node& node = nodes_[entry.node];
+    const TreeNode& node = nodes_[entry.node];
     if (node.isLeaf()) {
       maxFraction = clip(entry.node, maxFraction);
       if (maxFraction < 0) return;
