@@ -1,5 +1,7 @@
 #include "impulse/broad_phase.h"
 
+#include <cassert>
+
 #include <algorithm>
 
 #include "impulse/constants.h"
@@ -128,6 +130,19 @@ bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB, const
 
 bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
   return moveOutOfFatBox(proxyKey, tightAABB, motion, true);
+}
+
+bool BroadPhase::growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
+  assert(kindOf(proxyKey) == ProxyKind::Movable);
+  if (holds(proxyKey, tightAABB, motion)) return false;
+  trees_[treeIndex(ProxyKind::Movable)].setLeafBox(nodeOf(proxyKey), fatten(tightAABB, ProxyKind::Movable, motion));
+  recordUserBox(proxyKey);
+  return true;
+}
+
+void BroadPhase::queueGrown(std::int32_t proxyKey) {
+  trees_[treeIndex(ProxyKind::Movable)].markForRebuild(nodeOf(proxyKey));
+  moveBuffer_.push_back(proxyKey);
 }
 
 bool BroadPhase::holds(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) const {

@@ -113,7 +113,11 @@ void DynamicTree::moveProxy(std::int32_t node, const AABB& box) {
 }
 
 void DynamicTree::enlargeProxy(std::int32_t node, const AABB& box) {
-  nodes_[node].box = box;
+  setLeafBox(node, box);
+  markForRebuild(node);
+}
+
+void DynamicTree::markForRebuild(std::int32_t node) {
   // Marking stops at the first node marked before, whose ancestors are all
   // marked. Their boxes are left as they are: the rebuild frees every
   // marked node and computes the boxes of the nodes it makes.

@@ -111,10 +111,13 @@ ProxyMotion expectedMotion(const Body& body, Real dt, bool touches) {
 constexpr std::int32_t kBodiesPerReachRange = 256;
 
 // Per awake body (in awakeBodies' order), the motion its boxes are stretched
-// along and whether a shape's box no longer holds where it is heading. Side
-// by side: only reads the bodies, the solver and the broad phase.
-void findEscapingBodies(WorldData& world, Real dt) {
+// along and whether a shape's box no longer held where it is heading; such
+// a shape's box grows in place (shapeGrown). Side by side: reads the bodies
+// and the solver, and writes only each shape's own leaf. (A static body is
+// never awake; were one, its box would only be found outgrown here.)
+void growEscapingBoxes(WorldData& world, Real dt) {
   world.awakeReach.resize(world.awakeBodies.size());
+  world.shapeGrown.resize(world.shapes.size());
   world.tasks.forRanges(std::int32_t(world.awakeBodies.size()), kBodiesPerReachRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           for (std::int32_t i = begin; i < end; ++i) {
@@ -126,8 +129,12 @@ void findEscapingBodies(WorldData& world, Real dt) {
                             reach.motion = expectedMotion(body, dt, world.contactConstraints.touches(body.solverIndex));
                             reach.escapes = false;
                             world.forEachShape(slot, [&](std::int32_t s) {
-                              reach.escapes = reach.escapes ||
-                                              !world.broadPhase.holds(world.shapes[s].proxyKey, shapeAABB(world, s), reach.motion);
+                              const std::int32_t key = world.shapes[s].proxyKey;
+                              const AABB tight = shapeAABB(world, s);
+                              const bool grown = body.isStatic ? !world.broadPhase.holds(key, tight, reach.motion)
+                                                               : world.broadPhase.growLeaf(key, tight, reach.motion);
+                              world.shapeGrown[std::size_t(s)] = grown ? 1 : 0;
+                              reach.escapes = reach.escapes || grown;
                             });
                           }
                         });
@@ -138,12 +145,20 @@ void findEscapingBodies(WorldData& world, Real dt) {
 // is rebuilt around them at once.
 void solveAndMoveProxies(WorldData& world, Real dt) {
   solve(world, dt);
-  findEscapingBodies(world, dt);
+  growEscapingBoxes(world, dt);
+  // Queued one by one, in awake order: the pair search's order.
   for (std::size_t i = 0; i < world.awakeBodies.size(); ++i) {
     const BodyReach& reach = world.awakeReach[i];
     if (!reach.escapes) continue;
-    world.forEachShape(world.awakeBodies[i], [&](std::int32_t s) {
-      world.broadPhase.enlargeProxy(world.shapes[s].proxyKey, shapeAABB(world, s), reach.motion);
+    const std::int32_t slot = world.awakeBodies[i];
+    world.forEachShape(slot, [&](std::int32_t s) {
+      if (world.shapeGrown[std::size_t(s)] == 0) return;
+      const std::int32_t key = world.shapes[s].proxyKey;
+      if (world.bodies[slot].isStatic) {
+        world.broadPhase.enlargeProxy(key, shapeAABB(world, s), reach.motion);
+      } else {
+        world.broadPhase.queueGrown(key);
+      }
     });
   }
   world.broadPhase.rebuildEnlarged([&](int jobCount, auto&& job) {

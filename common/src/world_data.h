@@ -152,6 +152,7 @@ struct WorldData {
   /// Per awake body after the solve: how its boxes stretch, and whether one
   /// left its fat box (world.cpp, solveAndMoveProxies).
   std::vector<BodyReach> awakeReach;
+  std::vector<std::uint8_t> shapeGrown;  ///< per shape slot, this step (growEscapingBoxes)
   /// The bodies continuous collision looks at (the fast ones, then the slow
   /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;

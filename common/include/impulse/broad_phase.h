@@ -60,6 +60,14 @@ class BroadPhase {
   /// movable proxy that left its fat AABB is enlarged in place, and
   /// rebuildEnlarged() must follow before any other change or query.
   bool enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion = {});
+  /// enlargeProxy of a movable proxy in two halves, for many proxies at
+  /// once. growLeaf, side by side for distinct proxies (it writes only the
+  /// proxy's own leaf and box record), returns whether the proxy left its
+  /// fat box and grew; for each that did, queueGrown, one proxy at a time in
+  /// the order they are to be searched, marks its ancestors for the rebuild
+  /// and queues it.
+  bool growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion);
+  void queueGrown(std::int32_t proxyKey);
   /// Whether the proxy's fat AABB still holds its tight box with the motion
   /// it is about to make (then updateProxy and enlargeProxy leave it). Safe
   /// from several threads at once while nothing moves a proxy.

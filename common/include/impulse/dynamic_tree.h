@@ -30,6 +30,11 @@ class DynamicTree {
   /// up from each and one rebuild cost less than re-inserting each, and
   /// leave a better tree for the queries that follow.
   void enlargeProxy(std::int32_t node, const AABB& box);
+  /// enlargeProxy in two halves, for many leaves at once: setLeafBox writes
+  /// only the leaf (distinct leaves side by side), markForRebuild its
+  /// ancestors (one leaf at a time).
+  void setLeafBox(std::int32_t node, const AABB& box) { nodes_[node].box = box; }
+  void markForRebuild(std::int32_t node);
   /// Rebuilds the marked part of the tree, top down, keeping every unmarked
   /// subtree as it is. Leaves keep their node indices. Returns how many
   /// subtrees it joined (0 when nothing was marked).
