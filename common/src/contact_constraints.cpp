@@ -115,7 +115,7 @@ void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCo
 ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
   Real hertz = std::min(settings.contactHertz, Real(0.25) / h);
   return {makeSoftness(hertz, settings.contactDampingRatio, h),
-          makeSoftness(2 * hertz, settings.contactDampingRatio, h)};
+          makeSoftness(2 * hertz, settings.contactDampingRatio, h), settings.gravity.norm() * h};
 }
 
 }  // namespace

@@ -58,7 +58,7 @@ void solveNormalRows(ContactConstraint& c, SolverState& a, SolverState& b, const
     if (separation > 0) {
       bias = separation * context.inverseSubStep;  // speculative: close the gap exactly
     } else if (useBias) {
-      bias = std::max(c.softness.biasRate * separation, -cp.pushCap);
+      bias = std::max(c.softness.biasRate * separation, -cp.pushCap) - cp.holdSpeed;
       massScale = c.softness.massScale;
       impulseScale = c.softness.impulseScale;
     }
@@ -99,6 +99,16 @@ void solveRollingRow(ContactConstraint& c, SolverState& a, SolverState& b, Real 
 }
 
 bool intrudes(Real separation, Real loadOverlap) { return separation + loadOverlap < -kIntrusionSlop; }
+
+// A wedge's contact (kHoldShare): off level, between two moving bodies, not
+// intruding, and loaded with more than kHoldLoadWeights of the lighter
+// body's weight.
+bool holdsAsWedge(const ConstraintRef& ref, const ContactConstraint& c, Real load, bool intruding,
+                  Real weightPerMass) {
+  const Real lighterInvMass = std::max(c.invMassA, c.invMassB);
+  return weightPerMass > 0 && ref.facing == 0 && c.stateA != 0 && c.stateB != 0 && !intruding &&
+         load * lighterInvMass > kHoldLoadWeights * weightPerMass;
+}
 
 }  // namespace
 
@@ -150,10 +160,16 @@ void prepareContact(const WorldData& world, const ConstraintRef& ref, const Cont
     cp.relativeVelocity = relative.dot(c.normal);
     // The load includes what the support pass carried, or a held-up body's
     // resting overlap would read as an intrusion to push out.
-    cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, mp.normalImpulse + cp.supportImpulse);
-    const bool heldToLoad = c.stateA != 0 && c.stateB != 0 && intrudes(mp.separation, cp.loadOverlap);
+    const Real load = mp.normalImpulse + cp.supportImpulse;
+    cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, load);
+    const bool intruding = intrudes(mp.separation, cp.loadOverlap);
+    const bool heldToLoad = c.stateA != 0 && c.stateB != 0 && intruding;
     cp.pushCap = pushCapForLoad(c.softness.biasRate, cp.loadOverlap, heldToLoad,
                                 world.settings.maxContactPushSpeed);
+    cp.holdSpeed = holdsAsWedge(ref, c, load, intruding, softness.weightPerMass)
+                       ? std::min(kHoldShare * c.softness.biasRate * cp.loadOverlap,
+                                  kHoldSpeedSubSteps * softness.weightPerMass)
+                       : Real(0);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.
     cp.friction = std::abs(relative.dot(tangent)) < stickSpeed ? contact.staticFriction

@@ -140,7 +140,7 @@ Bias<F> contactBias(const WideConstraint<F>& c, const WidePoint<F>& p, F separat
   F speculative = simd::greater(separation, simd::broadcast<F>(0));
   F closeGap = separation * simd::broadcast<F>(context.inverseSubStep);
   if (!useBias) return {simd::select(speculative, closeGap, simd::broadcast<F>(0)), simd::broadcast<F>(1), simd::broadcast<F>(0)};
-  F push = simd::max(c.biasRate * separation, -p.pushCap);
+  F push = simd::max(c.biasRate * separation, -p.pushCap) - p.holdSpeed;
   return {simd::select(speculative, closeGap, push),
           simd::select(speculative, simd::broadcast<F>(1), c.massScale),
           simd::select(speculative, simd::broadcast<F>(0), c.impulseScale)};
@@ -244,6 +244,7 @@ struct BundleInputs {
   F separation[2];  ///< the manifold's
   F staticFriction, dynamicFriction;
   F bothMove;  ///< all-ones where neither body is the static dummy
+  F offLevel;  ///< all-ones where the contact is not level (ConstraintRef::facing 0)
 };
 
 // Zeroes one lane of every field of a point.
@@ -279,6 +280,7 @@ void gatherLane(const ConstraintRef& ref, const ContactSolverPart& contact, cons
   setLane(in.staticFriction, lane, contact.staticFriction);
   setLane(in.dynamicFriction, lane, contact.dynamicFriction);
   setLaneFlag(in.bothMove, lane, ref.stateA != 0 && ref.stateB != 0);
+  setLaneFlag(in.offLevel, lane, ref.facing == 0);
   for (WidePoint<F>& p : w.points) setLane(p.totalNormalImpulse, lane, 0.0f);
   // A point the manifold does not have is all zero: it never acts.
   for (int j = manifold.pointCount; j < 2; ++j) clearLane(w.points[j], lane);
@@ -316,8 +318,8 @@ F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
 // velocities (the scalar prepareContact's rules, lane by lane); returns the
 // lanes with a point deeper than its load explains (hasIntrusion).
 template <class F>
-F finishBundle(std::span<const SolverState> states, const WorldSettings& settings, const BundleInputs<F>& in,
-               WideConstraint<F>& c) {
+F finishBundle(std::span<const SolverState> states, const WorldSettings& settings, const ContactSoftness& softness,
+               const BundleInputs<F>& in, WideConstraint<F>& c) {
   const F zero = simd::broadcast<F>(0);
   const WideBody<F> a = gather<F>(states, c.stateA);
   const WideBody<F> b = gather<F>(states, c.stateB);
@@ -340,8 +342,8 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     // The load includes what the support pass carried, or a held-up body's
     // resting overlap would read as an intrusion to push out.
     const F stiffness = p.normalMass * c.massScale * c.biasRate;
-    p.loadOverlap = simd::select(simd::greater(stiffness, zero),
-                                 c.impulseScale * (p.normalImpulse + p.supportImpulse) / stiffness, zero);
+    const F load = p.normalImpulse + p.supportImpulse;
+    p.loadOverlap = simd::select(simd::greater(stiffness, zero), c.impulseScale * load / stiffness, zero);
     // pushCapForLoad, lane by lane.
     const F deep = simd::less(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
     const F loadCap = simd::min(c.biasRate * p.loadOverlap, maxPush);
@@ -353,6 +355,16 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
     p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
     intrusion = simd::either(intrusion, simd::both(present, deep));
+    // holdsAsWedge, lane by lane (kHoldShare).
+    const F heavyLoad = simd::greater(load * simd::max(c.invMassA, c.invMassB),
+                                      simd::broadcast<F>(kHoldLoadWeights * softness.weightPerMass));
+    const F wedge = simd::both(simd::both(present, in.bothMove), simd::both(in.offLevel, heavyLoad));
+    const F holds = softness.weightPerMass > 0 ? simd::both(wedge, simd::atLeast(in.separation[j] + p.loadOverlap,
+                                                                                 simd::broadcast<F>(-kIntrusionSlop)))
+                                               : zero;
+    const F fastestHold = simd::broadcast<F>(kHoldSpeedSubSteps * softness.weightPerMass);
+    p.holdSpeed =
+        simd::select(holds, simd::min(simd::broadcast<F>(kHoldShare) * c.biasRate * p.loadOverlap, fastestHold), zero);
   }
   return intrusion;
 }
@@ -451,7 +463,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
     const ConstraintRef& ref = refs[std::size_t(entries[lane])];
     gatherLane(ref, world.contacts[ref.contact], softness, c, inputs, static_cast<int>(lane));
   }
-  const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
+  const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, softness, inputs, c));
   packSupportLanes(set, c, entries);
   set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
   return intruding;
