@@ -25,6 +25,9 @@ struct ConstraintRef {
   std::int32_t stateB = 0;
   /// Holds its upper body up in the support pass (support_pass.h).
   bool holdsUp = false;
+  /// Either body has joints: its loads are not weights it carries, so the
+  /// contact never holds as a wedge's (kHoldShare, contact_solver.h).
+  bool jointed = false;
   /// Whether the contact is level enough to stand on, and which way up
   /// (support_pass.h, facingOf): +1 with B above, -1 with A above, 0 not
   /// level; twice that when flat.

@@ -100,14 +100,17 @@ void solveRollingRow(ContactConstraint& c, SolverState& a, SolverState& b, Real 
 
 bool intrudes(Real separation, Real loadOverlap) { return separation + loadOverlap < -kIntrusionSlop; }
 
-// A wedge's contact (kHoldShare): off level, between two moving bodies, not
-// intruding, and loaded with more than kHoldLoadWeights of the lighter
-// body's weight.
-bool holdsAsWedge(const ConstraintRef& ref, const ContactConstraint& c, Real load, bool intruding,
-                  Real weightPerMass) {
-  const Real lighterInvMass = std::max(c.invMassA, c.invMassB);
-  return weightPerMass > 0 && ref.facing == 0 && c.stateA != 0 && c.stateB != 0 && !intruding &&
-         load * lighterInvMass > kHoldLoadWeights * weightPerMass;
+// The push that holds a share of a point's load with no overlap: its share
+// of kHoldShare, by the load in weights of the lighter body, on a contact
+// off level between two moving bodies without joints, not intruding
+// (kHoldShare, contact_solver.h).
+Real holdSpeedFor(const ConstraintRef& ref, const ContactConstraint& c, const ConstraintPoint& cp, Real load,
+                  bool intruding, Real weightPerMass) {
+  if (weightPerMass == 0 || ref.facing != 0 || ref.jointed || c.stateA == 0 || c.stateB == 0 || intruding) return 0;
+  const Real weights = load * std::max(c.invMassA, c.invMassB) / weightPerMass;
+  const Real share = kHoldShare * std::clamp((weights - kHoldFromWeights) / (kHoldFullWeights - kHoldFromWeights),
+                                             Real(0), Real(1));
+  return std::min(share * c.softness.biasRate * cp.loadOverlap, kHoldSpeedSubSteps * weightPerMass);
 }
 
 }  // namespace
@@ -166,10 +169,7 @@ void prepareContact(const WorldData& world, const ConstraintRef& ref, const Cont
     const bool heldToLoad = c.stateA != 0 && c.stateB != 0 && intruding;
     cp.pushCap = pushCapForLoad(c.softness.biasRate, cp.loadOverlap, heldToLoad,
                                 world.settings.maxContactPushSpeed);
-    cp.holdSpeed = holdsAsWedge(ref, c, load, intruding, softness.weightPerMass)
-                       ? std::min(kHoldShare * c.softness.biasRate * cp.loadOverlap,
-                                  kHoldSpeedSubSteps * softness.weightPerMass)
-                       : Real(0);
+    cp.holdSpeed = holdSpeedFor(ref, c, cp, load, intruding, softness.weightPerMass);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.
     cp.friction = std::abs(relative.dot(tangent)) < stickSpeed ? contact.staticFriction

@@ -244,7 +244,9 @@ struct BundleInputs {
   F separation[2];  ///< the manifold's
   F staticFriction, dynamicFriction;
   F bothMove;  ///< all-ones where neither body is the static dummy
-  F offLevel;  ///< all-ones where the contact is not level (ConstraintRef::facing 0)
+  /// All-ones where the contact may hold as a wedge's: off level
+  /// (ConstraintRef::facing 0), between two moving bodies without joints.
+  F mayHold;
 };
 
 // Zeroes one lane of every field of a point.
@@ -280,7 +282,7 @@ void gatherLane(const ConstraintRef& ref, const ContactSolverPart& contact, cons
   setLane(in.staticFriction, lane, contact.staticFriction);
   setLane(in.dynamicFriction, lane, contact.dynamicFriction);
   setLaneFlag(in.bothMove, lane, ref.stateA != 0 && ref.stateB != 0);
-  setLaneFlag(in.offLevel, lane, ref.facing == 0);
+  setLaneFlag(in.mayHold, lane, ref.stateA != 0 && ref.stateB != 0 && ref.facing == 0 && !ref.jointed);
   for (WidePoint<F>& p : w.points) setLane(p.totalNormalImpulse, lane, 0.0f);
   // A point the manifold does not have is all zero: it never acts.
   for (int j = manifold.pointCount; j < 2; ++j) clearLane(w.points[j], lane);
@@ -312,6 +314,19 @@ F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
   const F ra = p.anchorAX * dy - p.anchorAY * dx;
   const F rb = p.anchorBX * dy - p.anchorBY * dx;
   return inverseOrZero(c.invMassA + c.invMassB + c.invInertiaA * ra * ra + c.invInertiaB * rb * rb);
+}
+
+// holdSpeedFor, lane by lane, on the lanes of `mayHold` (kHoldShare).
+template <class F>
+F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHold, Real weightPerMass) {
+  const F zero = simd::broadcast<F>(0);
+  if (weightPerMass == 0) return zero;
+  const F weights = load * simd::max(c.invMassA, c.invMassB) / simd::broadcast<F>(weightPerMass);
+  const F rise = (weights - simd::broadcast<F>(kHoldFromWeights)) /
+                 simd::broadcast<F>(kHoldFullWeights - kHoldFromWeights);
+  const F share = simd::broadcast<F>(kHoldShare) * simd::clamp(rise, zero, simd::broadcast<F>(1));
+  const F fastest = simd::broadcast<F>(kHoldSpeedSubSteps * weightPerMass);
+  return simd::select(mayHold, simd::min(share * c.biasRate * p.loadOverlap, fastest), zero);
 }
 
 // Everything a bundle derives from its gathered numbers and the bodies'
@@ -355,16 +370,9 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
     p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
     intrusion = simd::either(intrusion, simd::both(present, deep));
-    // holdsAsWedge, lane by lane (kHoldShare).
-    const F heavyLoad = simd::greater(load * simd::max(c.invMassA, c.invMassB),
-                                      simd::broadcast<F>(kHoldLoadWeights * softness.weightPerMass));
-    const F wedge = simd::both(simd::both(present, in.bothMove), simd::both(in.offLevel, heavyLoad));
-    const F holds = softness.weightPerMass > 0 ? simd::both(wedge, simd::atLeast(in.separation[j] + p.loadOverlap,
-                                                                                 simd::broadcast<F>(-kIntrusionSlop)))
-                                               : zero;
-    const F fastestHold = simd::broadcast<F>(kHoldSpeedSubSteps * softness.weightPerMass);
-    p.holdSpeed =
-        simd::select(holds, simd::min(simd::broadcast<F>(kHoldShare) * c.biasRate * p.loadOverlap, fastestHold), zero);
+    const F notIntruding = simd::atLeast(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
+    p.holdSpeed = holdSpeedOf(c, p, load, simd::both(simd::both(present, in.mayHold), notIntruding),
+                              softness.weightPerMass);
   }
   return intrusion;
 }
