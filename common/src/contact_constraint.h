@@ -207,7 +207,7 @@ struct ContactSolverContext {
 /// The step's contact softness: between dynamic bodies, and against static
 /// ones (stiffer, so stacks are not pushed into the ground); and a unit
 /// mass's weight per sub-step (g h; 0 without gravity), against which a
-/// contact's load is measured (kHoldLoadWeights, contact_solver.h).
+/// contact's load is measured (kHoldFromWeights, contact_solver.h).
 struct ContactSoftness {
   Softness dynamic;
   Softness statics;
