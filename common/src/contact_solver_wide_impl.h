@@ -320,7 +320,7 @@ F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
 template <class F>
 F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHold, Real weightPerMass) {
   const F zero = simd::broadcast<F>(0);
-  if (weightPerMass == 0) return zero;
+  if (weightPerMass == 0 || !simd::any(mayHold)) return zero;
   const F weights = load * simd::max(c.invMassA, c.invMassB) / simd::broadcast<F>(weightPerMass);
   const F rise = (weights - simd::broadcast<F>(kHoldFromWeights)) /
                  simd::broadcast<F>(kHoldFullWeights - kHoldFromWeights);
