@@ -82,7 +82,7 @@ TEST(Solver2D, Arch_SettlesUnderSixCentimetres_ThenHoldsWithinOneCentimetre) {
 // with gaps (2.3 mm under each flat card and under each leaning pair above
 // the first storey, 4.1 mm between the tops of a pair, which lowers them
 // about 1 mm as it closes) that put the top cards' resting place about 2 cm
-// below their start, whatever the engine. The house stands: no
+// below their start for shapes without a skin. The house stands: no
 // card gets more than 3.9 cm from its start, none moves 2 mm after the first
 // second, and all rest at the end (0.03 mm/s). Held to under 5 cm, under
 // 1 cm after the first second, and at rest.
