@@ -107,24 +107,37 @@ std::vector<RestTarget> restingAll(const SceneDescription& scene, Drop drop) {
 }
 
 /// A scene that must not move: the farthest any body got from its start at
-/// any step, and the fastest body at the end.
+/// any step; the farthest any body got, after the first second, from where
+/// it was then (the card house is built with gaps between its cards that
+/// put its top cards' resting place about 2 cm below their start: only once
+/// they have closed is a card's move a slip); and the fastest body at the
+/// end.
 class SlipWatch final : public Measure {
  public:
   explicit SlipWatch(const SceneDescription& scene)
       : scene_(scene), moving_(dynamicBodies(scene)) {}
-  void observe(const EngineAdapter& engine, int) override {
-    for (int i : moving_)
-      slip_ = std::max(slip_,
-                       distance(engine.pose(i).position, scene_.bodies[std::size_t(i)].position));
+  void observe(const EngineAdapter& engine, int step) override {
+    const bool settled = (step + 1) * kDt >= kSettleTime - 1e-9;
+    if (settled && settledAt_.empty()) {
+      for (int i : moving_) settledAt_.push_back(engine.pose(i).position);
+    }
+    for (std::size_t k = 0; k < moving_.size(); ++k) {
+      const Vec2d at = engine.pose(moving_[k]).position;
+      slip_ = std::max(slip_, distance(at, scene_.bodies[std::size_t(moving_[k])].position));
+      if (settled) settledSlip_ = std::max(settledSlip_, distance(at, settledAt_[k]));
+    }
   }
   std::vector<Metric> results(const EngineAdapter& engine) override {
-    return {{"max slip m", slip_}, {"end speed m/s", fastest(engine, moving_)}};
+    return {{"max slip m", slip_}, {"settled slip m", settledSlip_}, {"end speed m/s", fastest(engine, moving_)}};
   }
 
  private:
+  static constexpr double kSettleTime = 1;  ///< s
   const SceneDescription& scene_;
   std::vector<int> moving_;
+  std::vector<Vec2d> settledAt_;
   double slip_ = 0;
+  double settledSlip_ = 0;
 };
 
 /// Joints that must hold: the worst pin gap at any step and at the end, how

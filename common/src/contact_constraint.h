@@ -25,6 +25,9 @@ struct ConstraintRef {
   std::int32_t stateB = 0;
   /// Holds its upper body up in the support pass (support_pass.h).
   bool holdsUp = false;
+  /// Either body has joints: its loads are not weights it carries, so the
+  /// contact never holds as a wedge's (kHoldShare, contact_solver.h).
+  bool jointed = false;
   /// Whether the contact is level enough to stand on, and which way up
   /// (support_pass.h, facingOf): +1 with B above, -1 with A above, 0 not
   /// level; twice that when flat.
@@ -58,6 +61,10 @@ struct ConstraintPoint {
   Real loadOverlap = 0;
   /// Fastest the soft contact may push (m/s): enough to carry that load.
   Real pushCap = 0;
+  /// Push (m/s) added while overlapping, so that the soft contact holds
+  /// most of that load with no overlap (kHoldShare, contact_solver.h); 0 on
+  /// most contacts.
+  Real holdSpeed = 0;
 };
 
 struct ContactConstraint {
@@ -87,7 +94,7 @@ struct WidePoint {
   F normalImpulse, tangentImpulse, totalNormalImpulse, supportImpulse;
   F normalMass, tangentMass;
   F relativeVelocity, friction;
-  F loadOverlap, pushCap;
+  F loadOverlap, pushCap, holdSpeed;
 };
 
 template <class F>
@@ -198,10 +205,13 @@ struct ContactSolverContext {
 };
 
 /// The step's contact softness: between dynamic bodies, and against static
-/// ones (stiffer, so stacks are not pushed into the ground).
+/// ones (stiffer, so stacks are not pushed into the ground); and a unit
+/// mass's weight per sub-step (g h; 0 without gravity), against which a
+/// contact's load is measured (kHoldFromWeights, contact_solver.h).
 struct ContactSoftness {
   Softness dynamic;
   Softness statics;
+  Real weightPerMass = 0;
 };
 
 }  // namespace impulse

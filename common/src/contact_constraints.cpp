@@ -37,9 +37,12 @@ Real lastLoad(const Manifold& manifold) {
 // together while its lines are in.
 ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) {
   const Contact& contact = world.contacts[index];
-  const RefSide a = sideOf(world.bodies[contact.edges.bodyA]);
-  const RefSide b = sideOf(world.bodies[contact.edges.bodyB]);
-  return {index,     a.state,      b.state,   false,        facingOf(contact.manifold.normal, up),
+  const Body& bodyA = world.bodies[contact.edges.bodyA];
+  const Body& bodyB = world.bodies[contact.edges.bodyB];
+  const RefSide a = sideOf(bodyA);
+  const RefSide b = sideOf(bodyB);
+  const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
+  return {index,     a.state,      b.state,   false,        jointed, facingOf(contact.manifold.normal, up),
           a.invMass, a.invInertia, b.invMass, b.invInertia, lastLoad(contact.manifold)};
 }
 
@@ -115,7 +118,7 @@ void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCo
 ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
   Real hertz = std::min(settings.contactHertz, Real(0.25) / h);
   return {makeSoftness(hertz, settings.contactDampingRatio, h),
-          makeSoftness(2 * hertz, settings.contactDampingRatio, h)};
+          makeSoftness(2 * hertz, settings.contactDampingRatio, h), settings.gravity.norm() * h};
 }
 
 }  // namespace

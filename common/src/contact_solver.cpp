@@ -58,7 +58,7 @@ void solveNormalRows(ContactConstraint& c, SolverState& a, SolverState& b, const
     if (separation > 0) {
       bias = separation * context.inverseSubStep;  // speculative: close the gap exactly
     } else if (useBias) {
-      bias = std::max(c.softness.biasRate * separation, -cp.pushCap);
+      bias = std::max(c.softness.biasRate * separation, -cp.pushCap) - cp.holdSpeed;
       massScale = c.softness.massScale;
       impulseScale = c.softness.impulseScale;
     }
@@ -99,6 +99,19 @@ void solveRollingRow(ContactConstraint& c, SolverState& a, SolverState& b, Real 
 }
 
 bool intrudes(Real separation, Real loadOverlap) { return separation + loadOverlap < -kIntrusionSlop; }
+
+// The push that holds a share of a point's load with no overlap: its share
+// of kHoldShare, by the load in weights of the lighter body, on a contact
+// off level between two moving bodies without joints, not intruding
+// (kHoldShare, contact_solver.h).
+Real holdSpeedFor(const ConstraintRef& ref, const ContactConstraint& c, const ConstraintPoint& cp, Real load,
+                  bool intruding, Real weightPerMass) {
+  if (weightPerMass == 0 || ref.facing != 0 || ref.jointed || c.stateA == 0 || c.stateB == 0 || intruding) return 0;
+  const Real weights = load * std::max(c.invMassA, c.invMassB) / weightPerMass;
+  const Real share = kHoldShare * std::clamp((weights - kHoldFromWeights) / (kHoldFullWeights - kHoldFromWeights),
+                                             Real(0), Real(1));
+  return std::min(share * c.softness.biasRate * cp.loadOverlap, kHoldSpeedSubSteps * weightPerMass);
+}
 
 }  // namespace
 
@@ -150,10 +163,13 @@ void prepareContact(const WorldData& world, const ConstraintRef& ref, const Cont
     cp.relativeVelocity = relative.dot(c.normal);
     // The load includes what the support pass carried, or a held-up body's
     // resting overlap would read as an intrusion to push out.
-    cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, mp.normalImpulse + cp.supportImpulse);
-    const bool heldToLoad = c.stateA != 0 && c.stateB != 0 && intrudes(mp.separation, cp.loadOverlap);
+    const Real load = mp.normalImpulse + cp.supportImpulse;
+    cp.loadOverlap = overlapForLoad(c.softness, cp.normalMass, load);
+    const bool intruding = intrudes(mp.separation, cp.loadOverlap);
+    const bool heldToLoad = c.stateA != 0 && c.stateB != 0 && intruding;
     cp.pushCap = pushCapForLoad(c.softness.biasRate, cp.loadOverlap, heldToLoad,
                                 world.settings.maxContactPushSpeed);
+    cp.holdSpeed = holdSpeedFor(ref, c, cp, load, intruding, softness.weightPerMass);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.
     cp.friction = std::abs(relative.dot(tangent)) < stickSpeed ? contact.staticFriction

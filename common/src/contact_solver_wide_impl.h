@@ -140,7 +140,7 @@ Bias<F> contactBias(const WideConstraint<F>& c, const WidePoint<F>& p, F separat
   F speculative = simd::greater(separation, simd::broadcast<F>(0));
   F closeGap = separation * simd::broadcast<F>(context.inverseSubStep);
   if (!useBias) return {simd::select(speculative, closeGap, simd::broadcast<F>(0)), simd::broadcast<F>(1), simd::broadcast<F>(0)};
-  F push = simd::max(c.biasRate * separation, -p.pushCap);
+  F push = simd::max(c.biasRate * separation, -p.pushCap) - p.holdSpeed;
   return {simd::select(speculative, closeGap, push),
           simd::select(speculative, simd::broadcast<F>(1), c.massScale),
           simd::select(speculative, simd::broadcast<F>(0), c.impulseScale)};
@@ -244,6 +244,9 @@ struct BundleInputs {
   F separation[2];  ///< the manifold's
   F staticFriction, dynamicFriction;
   F bothMove;  ///< all-ones where neither body is the static dummy
+  /// All-ones where the contact may hold as a wedge's: off level
+  /// (ConstraintRef::facing 0), between two moving bodies without joints.
+  F mayHold;
 };
 
 // Zeroes one lane of every field of a point.
@@ -279,6 +282,7 @@ void gatherLane(const ConstraintRef& ref, const ContactSolverPart& contact, cons
   setLane(in.staticFriction, lane, contact.staticFriction);
   setLane(in.dynamicFriction, lane, contact.dynamicFriction);
   setLaneFlag(in.bothMove, lane, ref.stateA != 0 && ref.stateB != 0);
+  setLaneFlag(in.mayHold, lane, ref.stateA != 0 && ref.stateB != 0 && ref.facing == 0 && !ref.jointed);
   for (WidePoint<F>& p : w.points) setLane(p.totalNormalImpulse, lane, 0.0f);
   // A point the manifold does not have is all zero: it never acts.
   for (int j = manifold.pointCount; j < 2; ++j) clearLane(w.points[j], lane);
@@ -312,12 +316,25 @@ F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
   return inverseOrZero(c.invMassA + c.invMassB + c.invInertiaA * ra * ra + c.invInertiaB * rb * rb);
 }
 
+// holdSpeedFor, lane by lane, on the lanes of `mayHold` (kHoldShare).
+template <class F>
+F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHold, Real weightPerMass) {
+  const F zero = simd::broadcast<F>(0);
+  if (weightPerMass == 0 || !simd::any(mayHold)) return zero;
+  const F weights = load * simd::max(c.invMassA, c.invMassB) / simd::broadcast<F>(weightPerMass);
+  const F rise = (weights - simd::broadcast<F>(kHoldFromWeights)) /
+                 simd::broadcast<F>(kHoldFullWeights - kHoldFromWeights);
+  const F share = simd::broadcast<F>(kHoldShare) * simd::clamp(rise, zero, simd::broadcast<F>(1));
+  const F fastest = simd::broadcast<F>(kHoldSpeedSubSteps * weightPerMass);
+  return simd::select(mayHold, simd::min(share * c.biasRate * p.loadOverlap, fastest), zero);
+}
+
 // Everything a bundle derives from its gathered numbers and the bodies'
 // velocities (the scalar prepareContact's rules, lane by lane); returns the
 // lanes with a point deeper than its load explains (hasIntrusion).
 template <class F>
-F finishBundle(std::span<const SolverState> states, const WorldSettings& settings, const BundleInputs<F>& in,
-               WideConstraint<F>& c) {
+F finishBundle(std::span<const SolverState> states, const WorldSettings& settings, const ContactSoftness& softness,
+               const BundleInputs<F>& in, WideConstraint<F>& c) {
   const F zero = simd::broadcast<F>(0);
   const WideBody<F> a = gather<F>(states, c.stateA);
   const WideBody<F> b = gather<F>(states, c.stateB);
@@ -340,8 +357,8 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     // The load includes what the support pass carried, or a held-up body's
     // resting overlap would read as an intrusion to push out.
     const F stiffness = p.normalMass * c.massScale * c.biasRate;
-    p.loadOverlap = simd::select(simd::greater(stiffness, zero),
-                                 c.impulseScale * (p.normalImpulse + p.supportImpulse) / stiffness, zero);
+    const F load = p.normalImpulse + p.supportImpulse;
+    p.loadOverlap = simd::select(simd::greater(stiffness, zero), c.impulseScale * load / stiffness, zero);
     // pushCapForLoad, lane by lane.
     const F deep = simd::less(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
     const F loadCap = simd::min(c.biasRate * p.loadOverlap, maxPush);
@@ -353,6 +370,9 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
     p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
     intrusion = simd::either(intrusion, simd::both(present, deep));
+    const F notIntruding = simd::atLeast(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
+    p.holdSpeed = holdSpeedOf(c, p, load, simd::both(simd::both(present, in.mayHold), notIntruding),
+                              softness.weightPerMass);
   }
   return intrusion;
 }
@@ -451,7 +471,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
     const ConstraintRef& ref = refs[std::size_t(entries[lane])];
     gatherLane(ref, world.contacts[ref.contact], softness, c, inputs, static_cast<int>(lane));
   }
-  const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, inputs, c));
+  const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, softness, inputs, c));
   packSupportLanes(set, c, entries);
   set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
   return intruding;
