@@ -117,14 +117,29 @@ F normalVelocity(const WideBody<F>& a, const WideBody<F>& b, const C& c, const P
   return dv.vx * c.normalX + dv.vy * c.normalY;
 }
 
+/// The inverse masses and inertias of a lane's two bodies.
+template <class F>
+struct WidePair {
+  F invMassA, invInertiaA, invMassB, invInertiaB;
+};
+
+/// An impulse (px, py) on B at the arm (armBX, armBY) from its centre, and
+/// its opposite on A at (armAX, armAY): a contact point's or a pin's.
+template <class F>
+void applyPointImpulse(WideBody<F>& a, WideBody<F>& b, const WidePair<F>& m, F armAX, F armAY, F armBX, F armBY, F px,
+                       F py) {
+  a.vx -= m.invMassA * px;
+  a.vy -= m.invMassA * py;
+  a.w -= m.invInertiaA * (armAX * py - armAY * px);
+  b.vx += m.invMassB * px;
+  b.vy += m.invMassB * py;
+  b.w += m.invInertiaB * (armBX * py - armBY * px);
+}
+
 template <class F>
 void applyWide(WideBody<F>& a, WideBody<F>& b, const WideConstraint<F>& c, const WidePoint<F>& p, F px, F py) {
-  a.vx -= c.invMassA * px;
-  a.vy -= c.invMassA * py;
-  a.w -= c.invInertiaA * (p.anchorAX * py - p.anchorAY * px);
-  b.vx += c.invMassB * px;
-  b.vy += c.invMassB * py;
-  b.w += c.invInertiaB * (p.anchorBX * py - p.anchorBY * px);
+  applyPointImpulse(a, b, {c.invMassA, c.invInertiaA, c.invMassB, c.invInertiaB}, p.anchorAX, p.anchorAY, p.anchorBX,
+                    p.anchorBY, px, py);
 }
 
 template <class F>

@@ -65,12 +65,7 @@ PinFrame<F> pinFrame(const PinLanes<F>& p, const WideBody<F>& a, const WideBody<
 /// applyPoint.
 template <class F>
 void applyPinImpulse(const PinLanes<F>& p, const PinFrame<F>& f, F ix, F iy, WideBody<F>& a, WideBody<F>& b) {
-  a.vx -= p.invMassA * ix;
-  a.vy -= p.invMassA * iy;
-  a.w -= p.invInertiaA * (f.rAx * iy - f.rAy * ix);
-  b.vx += p.invMassB * ix;
-  b.vy += p.invMassB * iy;
-  b.w += p.invInertiaB * (f.rBx * iy - f.rBy * ix);
+  applyPointImpulse(a, b, {p.invMassA, p.invInertiaA, p.invMassB, p.invInertiaB}, f.rAx, f.rAy, f.rBx, f.rBy, ix, iy);
 }
 
 /// The impulse solving pointInverseMass(row, f) * impulse = v (solve22):
