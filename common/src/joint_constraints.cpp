@@ -224,6 +224,8 @@ void JointConstraints::fillPins(const TaskRunner& tasks) {
 // inverse mass); the pin kernels' scatter does the same.
 template <class Visit, class VisitPins>
 void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins) {
+  // A world without awake joints skips the walk through the colours.
+  if (rows_.empty()) return;
   auto visitRow = [&](std::int32_t r, SolverState& sink) {
     JointRow& row = rows_[std::size_t(r)];
     visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
