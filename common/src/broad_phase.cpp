@@ -125,11 +125,20 @@ void BroadPhase::destroyProxy(std::int32_t proxyKey) {
 }
 
 bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
-  return moveOutOfFatBox(proxyKey, tightAABB, motion, false);
+  if (holds(proxyKey, tightAABB, motion)) return false;
+  const ProxyKind kind = kindOf(proxyKey);
+  trees_[treeIndex(kind)].moveProxy(nodeOf(proxyKey), fatten(tightAABB, kind, motion));
+  recordUserBox(proxyKey);
+  moveBuffer_.push_back(proxyKey);
+  return true;
 }
 
 bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
-  return moveOutOfFatBox(proxyKey, tightAABB, motion, true);
+  // Only the movable tree is rebuilt; a static proxy (teleported) re-inserts.
+  if (kindOf(proxyKey) != ProxyKind::Movable) return updateProxy(proxyKey, tightAABB, motion);
+  if (!growLeaf(proxyKey, tightAABB, motion)) return false;
+  queueGrown(proxyKey);
+  return true;
 }
 
 bool BroadPhase::growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
@@ -147,23 +156,6 @@ void BroadPhase::queueGrown(std::int32_t proxyKey) {
 
 bool BroadPhase::holds(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) const {
   return trees_[treeIndex(kindOf(proxyKey))].box(nodeOf(proxyKey)).contains(expectedReach(tightAABB, motion));
-}
-
-bool BroadPhase::moveOutOfFatBox(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion,
-                                 bool inBulk) {
-  if (holds(proxyKey, tightAABB, motion)) return false;
-  const ProxyKind kind = kindOf(proxyKey);
-  DynamicTree& tree = trees_[treeIndex(kind)];
-  const std::int32_t node = nodeOf(proxyKey);
-  // Only the movable tree is rebuilt; a static proxy (teleported) re-inserts.
-  if (inBulk && kind == ProxyKind::Movable) {
-    tree.enlargeProxy(node, fatten(tightAABB, kind, motion));
-  } else {
-    tree.moveProxy(node, fatten(tightAABB, kind, motion));
-  }
-  recordUserBox(proxyKey);
-  moveBuffer_.push_back(proxyKey);
-  return true;
 }
 
 void BroadPhase::rebuildEnlarged() { trees_[treeIndex(ProxyKind::Movable)].rebuild(); }

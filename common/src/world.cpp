@@ -113,8 +113,8 @@ constexpr std::int32_t kBodiesPerReachRange = 256;
 // Per awake body (in awakeBodies' order), the motion its boxes are stretched
 // along and whether a shape's box no longer held where it is heading; such
 // a shape's box grows in place (shapeGrown). Side by side: reads the bodies
-// and the solver, and writes only each shape's own leaf. (A static body is
-// never awake; were one, its box would only be found outgrown here.)
+// and the solver, and writes only each shape's own leaf (an awake body is
+// never static: its proxies are movable).
 void growEscapingBoxes(WorldData& world, Real dt) {
   world.awakeReach.resize(world.awakeBodies.size());
   world.shapeGrown.resize(world.shapes.size());
@@ -129,10 +129,8 @@ void growEscapingBoxes(WorldData& world, Real dt) {
                             reach.motion = expectedMotion(body, dt, world.contactConstraints.touches(body.solverIndex));
                             reach.escapes = false;
                             world.forEachShape(slot, [&](std::int32_t s) {
-                              const std::int32_t key = world.shapes[s].proxyKey;
-                              const AABB tight = shapeAABB(world, s);
-                              const bool grown = body.isStatic ? !world.broadPhase.holds(key, tight, reach.motion)
-                                                               : world.broadPhase.growLeaf(key, tight, reach.motion);
+                              const bool grown =
+                                  world.broadPhase.growLeaf(world.shapes[s].proxyKey, shapeAABB(world, s), reach.motion);
                               world.shapeGrown[std::size_t(s)] = grown ? 1 : 0;
                               reach.escapes = reach.escapes || grown;
                             });
@@ -150,15 +148,8 @@ void solveAndMoveProxies(WorldData& world, Real dt) {
   for (std::size_t i = 0; i < world.awakeBodies.size(); ++i) {
     const BodyReach& reach = world.awakeReach[i];
     if (!reach.escapes) continue;
-    const std::int32_t slot = world.awakeBodies[i];
-    world.forEachShape(slot, [&](std::int32_t s) {
-      if (world.shapeGrown[std::size_t(s)] == 0) return;
-      const std::int32_t key = world.shapes[s].proxyKey;
-      if (world.bodies[slot].isStatic) {
-        world.broadPhase.enlargeProxy(key, shapeAABB(world, s), reach.motion);
-      } else {
-        world.broadPhase.queueGrown(key);
-      }
+    world.forEachShape(world.awakeBodies[i], [&](std::int32_t s) {
+      if (world.shapeGrown[std::size_t(s)] != 0) world.broadPhase.queueGrown(world.shapes[s].proxyKey);
     });
   }
   world.broadPhase.rebuildEnlarged([&](int jobCount, auto&& job) {

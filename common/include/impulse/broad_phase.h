@@ -173,7 +173,6 @@ class BroadPhase {
 
   /// Gives a proxy that left its fat AABB a new one (enlarged in place when
   /// in bulk, else re-inserted) and queues it; false when it stayed inside.
-  bool moveOutOfFatBox(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion, bool inBulk);
   /// Copies the proxy's fat AABB to userBoxes_.
   void recordUserBox(std::int32_t proxyKey);
   void recordAllUserBoxes();
