@@ -106,7 +106,7 @@ bool intrudes(Real separation, Real loadOverlap) { return separation + loadOverl
 // (kHoldShare, contact_solver.h).
 Real holdSpeedFor(const ConstraintRef& ref, const ContactConstraint& c, const ConstraintPoint& cp, Real load,
                   bool intruding, Real weightPerMass) {
-  if (weightPerMass == 0 || ref.facing != 0 || ref.jointed || c.stateA == 0 || c.stateB == 0 || intruding) return 0;
+  if (weightPerMass == 0 || !mayHoldAsWedge(ref) || intruding) return 0;
   const Real weights = load * std::max(c.invMassA, c.invMassB) / weightPerMass;
   const Real share = kHoldShare * std::clamp((weights - kHoldFromWeights) / (kHoldFullWeights - kHoldFromWeights),
                                              Real(0), Real(1));

@@ -297,7 +297,7 @@ void gatherLane(const ConstraintRef& ref, const ContactSolverPart& contact, cons
   setLane(in.staticFriction, lane, contact.staticFriction);
   setLane(in.dynamicFriction, lane, contact.dynamicFriction);
   setLaneFlag(in.bothMove, lane, ref.stateA != 0 && ref.stateB != 0);
-  setLaneFlag(in.mayHold, lane, ref.stateA != 0 && ref.stateB != 0 && ref.facing == 0 && !ref.jointed);
+  setLaneFlag(in.mayHold, lane, mayHoldAsWedge(ref));
   for (WidePoint<F>& p : w.points) setLane(p.totalNormalImpulse, lane, 0.0f);
   // A point the manifold does not have is all zero: it never acts.
   for (int j = manifold.pointCount; j < 2; ++j) clearLane(w.points[j], lane);
@@ -385,8 +385,7 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
     p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
     intrusion = simd::either(intrusion, simd::both(present, deep));
-    const F notIntruding = simd::atLeast(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
-    p.holdSpeed = holdSpeedOf(c, p, load, simd::both(simd::both(present, in.mayHold), notIntruding),
+    p.holdSpeed = holdSpeedOf(c, p, load, simd::select(deep, zero, simd::both(present, in.mayHold)),
                               softness.weightPerMass);
   }
   return intrusion;
