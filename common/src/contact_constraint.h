@@ -161,6 +161,8 @@ struct WideContactSet {
   std::vector<std::int32_t> pushBundles;
   std::vector<std::uint8_t> pushLanes;
   std::vector<std::int32_t> pushOverflow;
+  /// Per overflow constraint, 1 where it intrudes (as bundleIntrusion).
+  std::vector<std::uint8_t> overflowIntrudes;
   /// Per contact bundle, its lanes the push pass runs on (scratch for the
   /// lists above).
   std::vector<std::uint8_t> bundlePushLanes;

@@ -94,27 +94,6 @@ void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring
   set.colorStart = sortByColor(set.colorOf, set.order);
 }
 
-std::int32_t findIsland(std::vector<std::int32_t>& island, std::int32_t state) {
-  while (island[std::size_t(state)] != state) {
-    island[std::size_t(state)] = island[std::size_t(island[std::size_t(state)])];
-    state = island[std::size_t(state)];
-  }
-  return state;
-}
-
-// The islands of the solver states the refs link (union-find, then each
-// state given its root), for the push pass's choice of contacts. The static
-// dummy joins nothing.
-void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set) {
-  set.island.resize(stateCount);
-  for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = static_cast<std::int32_t>(s);
-  for (const ConstraintRef& ref : refs) {
-    if (ref.stateA == 0 || ref.stateB == 0) continue;
-    set.island[std::size_t(findIsland(set.island, ref.stateA))] = findIsland(set.island, ref.stateB);
-  }
-  for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = findIsland(set.island, std::int32_t(s));
-}
-
 ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
   Real hertz = std::min(settings.contactHertz, Real(0.25) / h);
   return {makeSoftness(hertz, settings.contactDampingRatio, h),
@@ -129,13 +108,12 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
   const ContactSoftness softness = contactSoftness(world.settings, step.h);
   const std::size_t stateCount = world.solverStates.size();
-  // The support pass's plan writes only the refs' holdsUp; the colours,
-  // islands and touch marks read only their states: the two go side by side.
+  // The support pass's plan writes only the refs' holdsUp; the colours and
+  // touch marks read only their states: the two go side by side.
   world.tasks.bothAtOnce([&] { support_.order(world, refs_, stateCount, softness, step.h); },
                          [&] {
                            markTouchingStates(refs_, stateCount, touching_);
                            colourContacts(refs_, coloring, wide_);
-                           joinContactIslands(refs_, stateCount, wide_);
                          });
   return kernels_->build(world, refs_, softness, support_, wide_);
 }

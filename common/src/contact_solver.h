@@ -75,6 +75,11 @@ inline constexpr Real kHoldSpeedSubSteps = Real(2);
 /// recovery needs it.
 Real pushCapForLoad(Real biasRate, Real loadOverlap, bool heldToLoad, Real maxPushSpeed);
 
+/// The islands of the solver states the touching contacts `refs` link
+/// (WideContactSet::island: union-find, then each state given its root), for
+/// the push pass's choice of contacts. The static dummy joins nothing.
+void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set);
+
 /// True when a point of the prepared constraint overlaps deeper than its
 /// load explains by more than kIntrusionSlop.
 bool hasIntrusion(const ContactConstraint& constraint, const Manifold& manifold);

@@ -18,13 +18,13 @@ namespace impulse {
 /// lanes of one colour share no body, and each lane's arithmetic is the same.
 struct WideContactKernels {
   int lanes;
-  /// Prepares each of the touching contacts `refs`, coloured and joined
-  /// into islands (WideContactSet::colorStart, island), straight into its
-  /// bundle lane (or the overflow list), and each of the support pass's
-  /// rows into its support lane from its prepared contact (support_pass.h).
-  /// Returns whether any contact overlaps deeper than its load explains
-  /// (the push pass is needed), and chooses the push pass's contacts: those
-  /// of the islands where one does.
+  /// Prepares each of the touching contacts `refs`, coloured
+  /// (WideContactSet::colorStart), straight into its bundle lane (or the
+  /// overflow list), and each of the support pass's rows into its support
+  /// lane from its prepared contact (support_pass.h). Returns whether any
+  /// contact overlaps deeper than its load explains (the push pass is
+  /// needed), and then joins the contacts' islands and chooses the push
+  /// pass's contacts: those of the islands where one does.
   bool (*build)(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
                 const SupportPass& support, WideContactSet& set);
   void (*warmStart)(const ContactSolverContext& context, WideContactSet& set);

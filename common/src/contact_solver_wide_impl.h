@@ -443,6 +443,31 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
   }
 }
 
+// Marks the islands with a contact that intrudes (WideContactSet::
+// islandPushes); returns whether there is one. The islands are joined only
+// then: a resting stack, which has none, skips the union-find.
+template <class F>
+bool markIntrudingIslands(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set) {
+  const auto intrudes = [](std::uint8_t lanes) { return lanes != 0; };
+  if (std::none_of(set.bundleIntrusion.begin(), set.bundleIntrusion.end(), intrudes) &&
+      std::none_of(set.overflowIntrudes.begin(), set.overflowIntrudes.end(), intrudes)) {
+    return false;
+  }
+  joinContactIslands(refs, world.solverStates.size(), set);
+  set.islandPushes.assign(world.solverStates.size(), 0);
+  const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  for (std::size_t b = 0; b < bundles.size(); ++b) {
+    const std::uint8_t intruding = set.bundleIntrusion[b];
+    for (int l = 0; l < F::kLanes; ++l) {
+      if ((intruding >> l & 1u) != 0) markPushed(set, bundles[b].stateA[l], bundles[b].stateB[l]);
+    }
+  }
+  for (std::size_t k = 0; k < set.overflow.size(); ++k) {
+    if (set.overflowIntrudes[k] != 0) markPushed(set, set.overflow[k].stateA, set.overflow[k].stateB);
+  }
+  return true;
+}
+
 // Starts loading the solver parts of bundle b's contacts (ContactSolverPart).
 void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs, const WideContactSet& set,
                             std::int32_t b) {
@@ -513,18 +538,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   for (std::int32_t b = 0; b < bundleCount; ++b) {
     if (set.bundleMayBounce[std::size_t(b)] != 0) set.bounceBundles.push_back(b);
   }
-  set.islandPushes.assign(world.solverStates.size(), 0);
-  bool anyIntrusion = false;
-  for (std::int32_t b = 0; b < bundleCount; ++b) {
-    const std::uint8_t intruding = set.bundleIntrusion[std::size_t(b)];
-    if (intruding == 0) continue;
-    const WideConstraint<F>& c = bundles[std::size_t(b)];
-    for (int l = 0; l < F::kLanes; ++l) {
-      if ((intruding >> l & 1u) != 0) markPushed(set, c.stateA[l], c.stateB[l]);
-    }
-    anyIntrusion = true;
-  }
   set.overflow.clear();
+  set.overflowIntrudes.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     ContactConstraint& constraint = set.overflow.emplace_back();
@@ -533,10 +548,9 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
     if (place.bundle >= 0) {
       packSupportLane(supportBundlesOf<F>(set)[std::size_t(place.bundle)], place.lane, constraint, place.upperIsB);
     }
-    if (!hasIntrusion(constraint, world.contacts[ref.contact].manifold)) continue;
-    markPushed(set, constraint.stateA, constraint.stateB);
-    anyIntrusion = true;
+    set.overflowIntrudes.push_back(hasIntrusion(constraint, world.contacts[ref.contact].manifold) ? 1 : 0);
   }
+  const bool anyIntrusion = markIntrudingIslands<F>(world, refs, set);
   finishSupportBundles<F>(world.tasks, set);
   selectPushedContacts<F>(world.tasks, set, anyIntrusion);
   return anyIntrusion;
