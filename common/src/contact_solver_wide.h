@@ -2,8 +2,8 @@
 // The contact solver four (SSE2) or eight (AVX2) constraints at a time.
 // Constraints are coloured so that no two of one colour share a dynamic body;
 // each colour is cut into bundles of four or eight, whose lanes can then be
-// solved together without one lane overwriting another's body. Constraints that find no free colour stay in
-// an overflow list solved one by one (contact_solver.h).
+// solved together without one lane overwriting another's body. Constraints that find no free colour
+// stay in an overflow list solved one by one (contact_solver.h).
 
 #include <span>
 
@@ -44,7 +44,14 @@ struct WideContactKernels {
   /// `softness` says, on `blocks` (joint_pins.h); kept in this table to share
   /// its bodies' gather and scatter and its choice of width.
   void (*warmStartPins)(std::span<SolverState> states, std::span<PinBlock> blocks);
-  void (*solvePins)(std::span<SolverState> states, std::span<PinBlock> blocks, const Softness& softness);
+  void (*solvePins)(std::span<SolverState> states, std::span<PinBlock> blocks,
+                    const Softness& softness);
+  /// The same for revolute joints with a limit, motor or spring (joint_pins.h),
+  /// whose impulses stay in `rows`; a pass of `pass`.
+  void (*warmStartRevolutes)(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
+                             std::span<JointRow> rows);
+  void (*solveRevolutes)(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
+                         std::span<JointRow> rows, const JointPass& pass);
 };
 
 /// The bundle list of width F in a set (defined by the file of that width).

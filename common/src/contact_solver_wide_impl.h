@@ -760,7 +760,7 @@ template <class F>
 WideContactKernels makeWideContactKernels() {
   return {F::kLanes,      &buildWideContacts<F>, &warmStartWide<F>,    &solveWide<F>,
           &pushWide<F>,    &solveSupportWide<F>,  &restitutionWide<F>, &storeWideImpulses<F>,
-          &warmStartPins<F>, &solvePins<F>};
+          &warmStartPins<F>, &solvePins<F>,      &warmStartRevolutes<F>, &solveRevolutes<F>};
 }
 
 }  // namespace

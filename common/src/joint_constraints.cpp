@@ -114,8 +114,10 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   colorStarts_ = {};
   pullingRows_.clear();
   pinBlocks_.clear();
+  revoluteBlocks_.clear();
   rowsBesidePins_.clear();
   pinBlockStarts_ = {};
+  revoluteBlockStarts_ = {};
   besideStarts_ = {};
   if (world.liveJoints == 0) {
     rows_.clear();
@@ -173,57 +175,82 @@ void JointConstraints::findJointSides(const WorldData& world) {
   });
 }
 
-// Each colour's plain pins get a place in blocks of their own (block times
-// eight plus lane, by rank); the colour's other rows are listed beside them.
-// A colour's rows share no awake body, so solving its pins first changes
-// nothing. Pins the tree pass solves exactly stay rows: the tree pass
-// reads and writes their impulses during the step.
+// Each colour's plain pins, and its revolute joints with turning rows, get
+// a place in blocks of their own kind (block times eight plus lane, by
+// rank); the colour's other rows are listed beside them. A colour's rows
+// share no awake body, so solving its blocks first changes nothing. Pins
+// the tree pass solves exactly stay rows: the tree pass reads and writes
+// their impulses during the step, which a pin block holds (a revolute block
+// leaves them in the rows).
 void JointConstraints::placePins() {
   const bool anyInTree = tree_.jointCount() > 0;
-  pinPlaceOf_.assign(order_.size(), -1);
-  std::int32_t blocks = 0;
+  placeOf_.assign(order_.size(), {});
+  std::int32_t pinBlocks = 0;
+  std::int32_t revoluteBlocks = 0;
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
     std::int32_t pins = 0;
-    for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
+    std::int32_t revolutes = 0;
+    for (std::int32_t r = colorStarts_[std::size_t(color)];
+         r < colorStarts_[std::size_t(color) + 1]; ++r) {
+      const JointRow& row = rows_[std::size_t(r)];
       const std::int32_t joint = jointOf_[std::size_t(order_[std::size_t(r)])];
-      const bool pin = jointSides_[std::size_t(joint)].pin && !(anyInTree && rows_[std::size_t(r)].inTree);
-      if (!pin) {
+      if (jointSides_[std::size_t(joint)].pin && !(anyInTree && row.inTree)) {
+        placeOf_[std::size_t(r)] = {BlockKind::Pin, pinBlocks * PinGeometry::kLanes + pins++};
+      } else if (isTurningRevolute(row)) {
+        placeOf_[std::size_t(r)] = {BlockKind::Revolute,
+                                    revoluteBlocks * PinGeometry::kLanes + revolutes++};
+      } else {
         rowsBesidePins_.push_back(r);
-        continue;
       }
-      pinPlaceOf_[std::size_t(r)] = blocks * PinBlock::kLanes + pins++;
     }
-    blocks += (pins + PinBlock::kLanes - 1) / PinBlock::kLanes;
-    pinBlockStarts_[std::size_t(color) + 1] = blocks;
+    pinBlocks += (pins + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
+    revoluteBlocks += (revolutes + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
+    pinBlockStarts_[std::size_t(color) + 1] = pinBlocks;
+    revoluteBlockStarts_[std::size_t(color) + 1] = revoluteBlocks;
     besideStarts_[std::size_t(color) + 1] = std::int32_t(rowsBesidePins_.size());
   }
-  pinBlocks_.resize(std::size_t(blocks));
+  pinBlocks_.resize(std::size_t(pinBlocks));
+  revoluteBlocks_.resize(std::size_t(revoluteBlocks));
 }
 
-// Copies each pin into its lane, side by side; the lanes left empty at a
-// colour's end are reset.
-void JointConstraints::fillPins(const TaskRunner& tasks) {
+// The last block of each colour that has any, reset: the lanes a colour's
+// last joints leave empty.
+template <class Block>
+void resetColoursLastBlocks(std::vector<Block>& blocks, const ColorStarts& starts) {
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
-    const std::int32_t end = pinBlockStarts_[std::size_t(color) + 1];
-    if (end > pinBlockStarts_[std::size_t(color)]) pinBlocks_[std::size_t(end - 1)] = PinBlock{};
+    const std::int32_t end = starts[std::size_t(color) + 1];
+    if (end > starts[std::size_t(color)]) blocks[std::size_t(end - 1)] = Block{};
   }
-  tasks.forRanges(std::int32_t(rows_.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t r = begin; r < end; ++r) {
-      const std::int32_t place = pinPlaceOf_[std::size_t(r)];
-      if (place < 0) continue;
-      placePin(pinBlocks_[std::size_t(place / PinBlock::kLanes)], place % PinBlock::kLanes, rows_[std::size_t(r)], r);
-    }
-  });
 }
 
-// Colour by colour: visitPins(blocks) on the colour's pin blocks and
-// visit(row, stateA, stateB) on its other rows, all side by side; then the
-// rows that found no colour one by one. Rows on a static or sleeping body
+// Copies each blocked joint into its lane, side by side.
+void JointConstraints::fillPins(const TaskRunner& tasks) {
+  resetColoursLastBlocks(pinBlocks_, pinBlockStarts_);
+  resetColoursLastBlocks(revoluteBlocks_, revoluteBlockStarts_);
+  tasks.forRanges(
+      std::int32_t(rows_.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
+        for (std::int32_t r = begin; r < end; ++r) {
+          const BlockPlace place = placeOf_[std::size_t(r)];
+          const auto block = std::size_t(place.lane / PinGeometry::kLanes);
+          const int lane = place.lane % PinGeometry::kLanes;
+          if (place.kind == BlockKind::Pin)
+            placePin(pinBlocks_[block], lane, rows_[std::size_t(r)], r);
+          if (place.kind == BlockKind::Revolute)
+            placeRevolute(revoluteBlocks_[block], lane, rows_[std::size_t(r)], r, pass_.h);
+        }
+      });
+}
+
+// Colour by colour: visitPins(blocks) on the colour's pin blocks,
+// visitRevolutes(blocks) on its revolute blocks and visit(row, stateA,
+// stateB) on its other rows, all side by side; then the rows that found no
+// colour one by one. Rows on a static or sleeping body
 // write a copy of the dummy state 0, never the state itself, which two
 // threads would otherwise write together (it stays zero: such a body has no
 // inverse mass); the pin kernels' scatter does the same.
-template <class Visit, class VisitPins>
-void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins) {
+template <class Visit, class VisitPins, class VisitRevolutes>
+void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins,
+                                         VisitRevolutes&& visitRevolutes) {
   // A world without awake joints skips the walk through the colours.
   if (rows_.empty()) return;
   auto visitRow = [&](std::int32_t r, SolverState& sink) {
@@ -231,19 +258,33 @@ void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, Visi
     visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
   };
   for (int color = 0; color < GraphColoring::kOverflow; ++color) {
-    const std::int32_t firstBlock = pinBlockStarts_[std::size_t(color)];
-    const std::int32_t blocks = pinBlockStarts_[std::size_t(color) + 1] - firstBlock;
+    const std::int32_t firstPins = pinBlockStarts_[std::size_t(color)];
+    const std::int32_t pins = pinBlockStarts_[std::size_t(color) + 1] - firstPins;
+    const std::int32_t firstRevolutes = revoluteBlockStarts_[std::size_t(color)];
+    const std::int32_t blocks =
+        pins + revoluteBlockStarts_[std::size_t(color) + 1] - firstRevolutes;
     const std::int32_t firstBeside = besideStarts_[std::size_t(color)];
     const std::int32_t beside = besideStarts_[std::size_t(color) + 1] - firstBeside;
-    // Items [0, blocks) are pin blocks, the rest the rows beside them.
-    sub.tasks->forRanges(blocks + beside, kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
-      const std::int32_t blockEnd = std::min(end, blocks);
-      if (begin < blockEnd) visitPins(std::span(pinBlocks_).subspan(std::size_t(firstBlock + begin), std::size_t(blockEnd - begin)));
-      SolverState sink = sub.states[0];
-      for (std::int32_t item = std::max(begin, blocks); item < end; ++item) {
-        visitRow(rowsBesidePins_[std::size_t(firstBeside + item - blocks)], sink);
-      }
-    });
+    // Items [0, pins) are pin blocks, [pins, blocks) revolute blocks, the
+    // rest the rows beside them.
+    sub.tasks->forRanges(
+        blocks + beside, kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+          const std::int32_t pinEnd = std::min(end, pins);
+          if (begin < pinEnd)
+            visitPins(std::span(pinBlocks_)
+                          .subspan(std::size_t(firstPins + begin), std::size_t(pinEnd - begin)));
+          const std::int32_t revoluteBegin = std::max(begin, pins);
+          const std::int32_t revoluteEnd = std::min(end, blocks);
+          if (revoluteBegin < revoluteEnd) {
+            visitRevolutes(std::span(revoluteBlocks_)
+                               .subspan(std::size_t(firstRevolutes + revoluteBegin - pins),
+                                        std::size_t(revoluteEnd - revoluteBegin)));
+          }
+          SolverState sink = sub.states[0];
+          for (std::int32_t item = std::max(begin, blocks); item < end; ++item) {
+            visitRow(rowsBesidePins_[std::size_t(firstBeside + item - blocks)], sink);
+          }
+        });
   }
   SolverState sink = sub.states[0];
   for (std::int32_t r = colorStarts_[GraphColoring::kOverflow]; r < colorStarts_[GraphColoring::kOverflow + 1]; ++r) {
@@ -254,7 +295,10 @@ void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, Visi
 void JointConstraints::warmStart(const SubStep& sub) {
   forEachRowByColor(
       sub, [](JointRow& row, SolverState& a, SolverState& b) { warmStartJoint(row, a, b); },
-      [&](std::span<PinBlock> blocks) { kernels_->warmStartPins(sub.states, blocks); });
+      [&](std::span<PinBlock> blocks) { kernels_->warmStartPins(sub.states, blocks); },
+      [&](std::span<RevoluteBlock> blocks) {
+        kernels_->warmStartRevolutes(sub.states, blocks, rows_);
+      });
 }
 
 void JointConstraints::run(const SubStep& sub, bool useBias) {
@@ -263,7 +307,10 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
   const Softness pinSoftness = rowSoftness(pass);
   forEachRowByColor(
       sub, [&](JointRow& row, SolverState& a, SolverState& b) { solveJoint(row, a, b, pass); },
-      [&](std::span<PinBlock> blocks) { kernels_->solvePins(sub.states, blocks, pinSoftness); });
+      [&](std::span<PinBlock> blocks) { kernels_->solvePins(sub.states, blocks, pinSoftness); },
+      [&](std::span<RevoluteBlock> blocks) {
+        kernels_->solveRevolutes(sub.states, blocks, rows_, pass);
+      });
 }
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
@@ -282,23 +329,32 @@ void JointConstraints::countPasses(SolverPasses& passes) const {
 
 void JointConstraints::store(WorldData& world) {
   // Each block's lanes write their own rows: side by side.
-  world.tasks.forRanges(std::int32_t(pinBlocks_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t k = begin; k < end; ++k) {
-      const PinBlock& block = pinBlocks_[std::size_t(k)];
-      for (int lane = 0; lane < PinBlock::kLanes && block.row[lane] >= 0; ++lane) {
-        rows_[std::size_t(block.row[lane])].impulses.point = Vec2(block.impulseX[lane], block.impulseY[lane]);
-      }
-    }
-  });
+  world.tasks.forRanges(std::int32_t(pinBlocks_.size()), kJointRowsPerRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t k = begin; k < end; ++k) {
+                            const PinBlock& block = pinBlocks_[std::size_t(k)];
+                            for (int lane = 0; lane < PinBlock::kLanes && block.pin.row[lane] >= 0;
+                                 ++lane) {
+                              rows_[std::size_t(block.pin.row[lane])].impulses.point =
+                                  Vec2(block.impulseX[lane], block.impulseY[lane]);
+                            }
+                          }
+                        });
+  world.tasks.forRanges(std::int32_t(revoluteBlocks_.size()), kJointRowsPerRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (std::int32_t k = begin; k < end; ++k)
+                            storeRevoluteImpulses(revoluteBlocks_[std::size_t(k)], rows_);
+                        });
   // Each row writes its own joint: side by side.
-  world.tasks.forRanges(std::int32_t(rows_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t r = begin; r < end; ++r) {
-      const JointRow& row = rows_[std::size_t(r)];
-      Joint& joint = world.joints[row.index];
-      joint.impulses = row.impulses;
-      jointReaction(row, pass_.invH, joint.reactionForce, joint.reactionTorque);
-    }
-  });
+  world.tasks.forRanges(
+      std::int32_t(rows_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+        for (std::int32_t r = begin; r < end; ++r) {
+          const JointRow& row = rows_[std::size_t(r)];
+          Joint& joint = world.joints[row.index];
+          joint.impulses = row.impulses;
+          jointReaction(row, pass_.invH, joint.reactionForce, joint.reactionTorque);
+        }
+      });
   // Two mouse joints may hold one body: its wake is written one by one.
   for (std::int32_t r : pullingRows_) {
     const JointRow& row = rows_[std::size_t(r)];

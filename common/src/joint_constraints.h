@@ -30,8 +30,8 @@ class JointConstraints final : public ConstraintKind {
 
  private:
   void run(const SubStep& sub, bool useBias);
-  template <class Visit, class VisitPins>
-  void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins);
+  template <class Visit, class VisitPins, class VisitRevolutes>
+  void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins, VisitRevolutes&& visitRevolutes);
   void findJointSides(const WorldData& world);
   void placePins();
   void fillPins(const TaskRunner& tasks);
@@ -58,12 +58,20 @@ class JointConstraints final : public ConstraintKind {
   /// Colour c's rows are [colorStarts_[c], colorStarts_[c + 1]), overflow last.
   ColorStarts colorStarts_{};
   /// Colour c's plain pins outside the tree pass, eight to a block, are
-  /// pinBlocks_[pinBlockStarts_[c], pinBlockStarts_[c + 1]); its other rows
+  /// pinBlocks_[pinBlockStarts_[c], pinBlockStarts_[c + 1]), its revolute
+  /// joints with turning rows likewise in revoluteBlocks_; its other rows
   /// are rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]).
   std::vector<PinBlock> pinBlocks_;
-  /// Per row (by rank), its pin's block * 8 + lane, or -1.
-  std::vector<std::int32_t> pinPlaceOf_;
+  std::vector<RevoluteBlock> revoluteBlocks_;
+  /// Per row (by rank), the kind of block it is in and its block * 8 + lane.
+  enum class BlockKind : std::uint8_t { None, Pin, Revolute };
+  struct BlockPlace {
+    BlockKind kind = BlockKind::None;
+    std::int32_t lane = 0;
+  };
+  std::vector<BlockPlace> placeOf_;
   ColorStarts pinBlockStarts_{};
+  ColorStarts revoluteBlockStarts_{};
   std::vector<std::int32_t> rowsBesidePins_;
   ColorStarts besideStarts_{};
   const WideContactKernels* kernels_ = nullptr;

@@ -1,25 +1,27 @@
 #pragma once
 // Plain pins (JointRow::plainPin: a revolute joint and nothing else, the
-// joint of chains, ragdolls and grids) eight at a time. A block holds eight
-// pins of one colour column by column, so the wide kernels
-// (joint_pins_wide_impl.h) load each field of four or eight pins at once
-// and gather their bodies the way the contact bundles do. Each lane does
-// the scalar rows' arithmetic (joint_rows.cpp) in the same order: a pin
-// gives the same bits solved here or one by one.
+// joint of chains and grids) and revolute joints with a limit, motor or
+// spring (ragdolls) eight at a time. A block holds eight joints of one
+// colour column by column, so the wide kernels (joint_pins_wide_impl.h)
+// load each field of four or eight joints at once and gather their bodies
+// the way the contact bundles do. Each lane does the scalar rows'
+// arithmetic (joint_rows.cpp) in the same order: a joint gives the same
+// bits solved here or one by one.
 
 #include <cstdint>
+#include <span>
 
 #include "joint_row.h"
 
 namespace impulse {
 
-struct alignas(32) PinBlock {
+/// Where a block's joints are: eight lanes, column by column.
+struct alignas(32) PinGeometry {
   static constexpr int kLanes = 8;
-  /// Lanes past the colour's last pin: the static dummy state, no mass.
+  /// Lanes past the colour's last joint: the static dummy state, no mass.
   std::int32_t stateA[kLanes] = {};
   std::int32_t stateB[kLanes] = {};
-  /// The lane's JointRow, where its impulse goes back after the step; -1
-  /// for an empty lane.
+  /// The lane's JointRow; -1 for an empty lane.
   std::int32_t row[kLanes] = {-1, -1, -1, -1, -1, -1, -1, -1};
   Real invMassA[kLanes] = {};
   Real invInertiaA[kLanes] = {};
@@ -31,27 +33,85 @@ struct alignas(32) PinBlock {
   Real anchorBY[kLanes] = {};
   Real centerX[kLanes] = {};  ///< B's centre minus A's at step start
   Real centerY[kLanes] = {};
-  Real impulseX[kLanes] = {};  ///< accumulated over the step, warm started
+};
+
+struct alignas(32) PinBlock {
+  static constexpr int kLanes = PinGeometry::kLanes;
+  PinGeometry pin;
+  /// Accumulated over the step, warm started; back into the rows at its end.
+  Real impulseX[kLanes] = {};
   Real impulseY[kLanes] = {};
 };
 
+/// Puts `row` (rows' entry rowIndex) in the geometry's `lane`.
+inline void placeGeometry(PinGeometry& pin, int lane, const JointRow& row, std::int32_t rowIndex) {
+  pin.stateA[lane] = row.stateA;
+  pin.stateB[lane] = row.stateB;
+  pin.row[lane] = rowIndex;
+  pin.invMassA[lane] = row.invMassA;
+  pin.invInertiaA[lane] = row.invInertiaA;
+  pin.invMassB[lane] = row.invMassB;
+  pin.invInertiaB[lane] = row.invInertiaB;
+  pin.anchorAX[lane] = row.anchorA.x();
+  pin.anchorAY[lane] = row.anchorA.y();
+  pin.anchorBX[lane] = row.anchorB.x();
+  pin.anchorBY[lane] = row.anchorB.y();
+  pin.centerX[lane] = row.deltaCenter.x();
+  pin.centerY[lane] = row.deltaCenter.y();
+}
+
 /// Puts `row` (rows' entry rowIndex, a plain pin) in the block's `lane`.
 inline void placePin(PinBlock& block, int lane, const JointRow& row, std::int32_t rowIndex) {
-  block.stateA[lane] = row.stateA;
-  block.stateB[lane] = row.stateB;
-  block.row[lane] = rowIndex;
-  block.invMassA[lane] = row.invMassA;
-  block.invInertiaA[lane] = row.invInertiaA;
-  block.invMassB[lane] = row.invMassB;
-  block.invInertiaB[lane] = row.invInertiaB;
-  block.anchorAX[lane] = row.anchorA.x();
-  block.anchorAY[lane] = row.anchorA.y();
-  block.anchorBX[lane] = row.anchorB.x();
-  block.anchorBY[lane] = row.anchorB.y();
-  block.centerX[lane] = row.deltaCenter.x();
-  block.centerY[lane] = row.deltaCenter.y();
+  placeGeometry(block.pin, lane, row, rowIndex);
   block.impulseX[lane] = row.impulses.point.x();
   block.impulseY[lane] = row.impulses.point.y();
 }
+
+/// Revolute joints with a limit, a motor or a spring (every ragdoll joint),
+/// eight at a time: the pin as in PinBlock, then each lane's turning rows
+/// (joint_rows.cpp's solveKind for a revolute joint, row for row). What a
+/// row's arithmetic takes from the joint's settings and masses alone is
+/// worked out once a step, by the scalar rows' own functions (placeRevolute).
+/// The pin's impulse stays in the JointRow: the tree pass
+/// (joint_tree_pass.h) reads and writes it during the step.
+struct alignas(32) RevoluteBlock {
+  static constexpr int kLanes = PinGeometry::kLanes;
+  PinGeometry pin;
+  Real startAngle[kLanes] = {};     ///< JointRow::deltaAngle
+  Real turnMass[kLanes] = {};       ///< effective mass of the turn row
+  Real reverseMass[kLanes] = {};    ///< and of its negation (the upper limit)
+  Real springStep[kLanes] = {};     ///< h * stiffness
+  Real springWeight[kLanes] = {};   ///< springVelocityWeight
+  Real springDivisor[kLanes] = {};  ///< turnMass + springWeight
+  Real motorSpeed[kLanes] = {};
+  Real maxMotorImpulse[kLanes] = {};
+  Real lowerAngle[kLanes] = {};
+  Real upperAngle[kLanes] = {};
+  /// The turning rows' impulses over the step (warm started; back into the
+  /// rows at its end). The pin's stays in its JointRow.
+  Real angularImpulse[kLanes] = {};
+  Real axialImpulse[kLanes] = {};
+  Real springImpulse[kLanes] = {};
+  Real motorImpulse[kLanes] = {};
+  Real lowerImpulse[kLanes] = {};
+  Real upperImpulse[kLanes] = {};
+  /// A bit per lane (lane i: bit i): which rows it has, and whether the tree
+  /// pass holds its pin in the biased pass.
+  std::uint8_t springs = 0;
+  std::uint8_t motors = 0;
+  std::uint8_t limits = 0;
+  std::uint8_t needsAngle = 0;
+  std::uint8_t inTree = 0;
+};
+
+/// Whether a row goes in a RevoluteBlock: a revolute joint that is not a
+/// plain pin.
+bool isTurningRevolute(const JointRow& row);
+/// Puts `row` (rows' entry rowIndex, isTurningRevolute) in the block's
+/// `lane`, for sub-steps of `h` (joint_rows.cpp).
+void placeRevolute(RevoluteBlock& block, int lane, const JointRow& row, std::int32_t rowIndex,
+                   Real h);
+/// The block's turning rows' impulses back into `rows` (the pins' are there).
+void storeRevoluteImpulses(const RevoluteBlock& block, std::span<JointRow> rows);
 
 }  // namespace impulse

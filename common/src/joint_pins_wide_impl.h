@@ -24,18 +24,18 @@ struct PinLanes {
 };
 
 template <class F>
-PinLanes<F> loadPinLanes(const PinBlock& block, int first) {
+PinLanes<F> loadPinLanes(const PinGeometry& pin, int first) {
   return {first,
-          simd::load<F>(block.invMassA + first),
-          simd::load<F>(block.invInertiaA + first),
-          simd::load<F>(block.invMassB + first),
-          simd::load<F>(block.invInertiaB + first),
-          simd::load<F>(block.anchorAX + first),
-          simd::load<F>(block.anchorAY + first),
-          simd::load<F>(block.anchorBX + first),
-          simd::load<F>(block.anchorBY + first),
-          simd::load<F>(block.centerX + first),
-          simd::load<F>(block.centerY + first)};
+          simd::load<F>(pin.invMassA + first),
+          simd::load<F>(pin.invInertiaA + first),
+          simd::load<F>(pin.invMassB + first),
+          simd::load<F>(pin.invInertiaB + first),
+          simd::load<F>(pin.anchorAX + first),
+          simd::load<F>(pin.anchorAY + first),
+          simd::load<F>(pin.anchorBX + first),
+          simd::load<F>(pin.anchorBY + first),
+          simd::load<F>(pin.centerX + first),
+          simd::load<F>(pin.centerY + first)};
 }
 
 template <class F>
@@ -83,16 +83,19 @@ void solvePinMatrix(const PinLanes<F>& p, const PinFrame<F>& f, F vx, F vy, F& s
   sy = simd::select(regular, inv * (k00 * vy - k01 * vx), simd::broadcast<F>(0));
 }
 
-template <class F, class Run>
-void forEachPinRun(std::span<SolverState> states, std::span<PinBlock> blocks, Run&& run) {
-  for (PinBlock& block : blocks) {
-    for (int first = 0; first < PinBlock::kLanes; first += F::kLanes) {
-      const PinLanes<F> p = loadPinLanes<F>(block, first);
-      WideBody<F> a = gather<F>(states, block.stateA + first);
-      WideBody<F> b = gather<F>(states, block.stateB + first);
+// run(block, lanes, frame, a, b) on each run of F's lanes of each block
+// (PinBlock or RevoluteBlock), its bodies gathered before and scattered after.
+template <class F, class Block, class Run>
+void forEachPinRun(std::span<SolverState> states, std::span<Block> blocks, Run&& run) {
+  for (Block& block : blocks) {
+    const PinGeometry& pin = block.pin;
+    for (int first = 0; first < PinGeometry::kLanes; first += F::kLanes) {
+      const PinLanes<F> p = loadPinLanes<F>(pin, first);
+      WideBody<F> a = gather<F>(states, pin.stateA + first);
+      WideBody<F> b = gather<F>(states, pin.stateB + first);
       run(block, p, pinFrame(p, a, b), a, b);
-      scatter<F>(states, block.stateA + first, a);
-      scatter<F>(states, block.stateB + first, b);
+      scatter<F>(states, pin.stateA + first, a);
+      scatter<F>(states, pin.stateB + first, b);
     }
   }
 }
@@ -106,26 +109,264 @@ void warmStartPins(std::span<SolverState> states, std::span<PinBlock> blocks) {
                    });
 }
 
-/// pointRow for a rigid point of softness `soft` (unbounded).
+/// The point row's step: rigidPoint's pointRow (unbounded) at `soft`, from
+/// the accumulated impulse (ax, ay); returns the next one.
 template <class F>
-void solvePins(std::span<SolverState> states, std::span<PinBlock> blocks, const Softness& soft) {
+struct PinStep {
+  F nextX, nextY;
+};
+
+template <class F>
+PinStep<F> stepPin(const PinLanes<F>& p, const PinFrame<F>& f, const WideBody<F>& a,
+                   const WideBody<F>& b, const Softness& soft, F ax, F ay) {
   const F biasRate = simd::broadcast<F>(soft.biasRate);
   const F negativeMassScale = simd::broadcast<F>(-soft.massScale);
   const F impulseScale = simd::broadcast<F>(soft.impulseScale);
-  forEachPinRun<F>(states, blocks, [&](PinBlock& block, const PinLanes<F>& p, const PinFrame<F>& f, WideBody<F>& a,
-                                       WideBody<F>& b) {
-    const F vx = (((b.vx + negated(b.w) * f.rBy) - a.vx) - negated(a.w) * f.rAy) + biasRate * f.dx;
-    const F vy = (((b.vy + b.w * f.rBx) - a.vy) - a.w * f.rAx) + biasRate * f.dy;
-    F sx, sy;
-    solvePinMatrix(p, f, vx, vy, sx, sy);
-    const F accumulatedX = simd::load<F>(block.impulseX + p.first);
-    const F accumulatedY = simd::load<F>(block.impulseY + p.first);
-    const F nextX = accumulatedX + (negativeMassScale * sx - impulseScale * accumulatedX);
-    const F nextY = accumulatedY + (negativeMassScale * sy - impulseScale * accumulatedY);
-    applyPinImpulse(p, f, nextX - accumulatedX, nextY - accumulatedY, a, b);
-    simd::store(block.impulseX + p.first, nextX);
-    simd::store(block.impulseY + p.first, nextY);
-  });
+  const F vx = (((b.vx + negated(b.w) * f.rBy) - a.vx) - negated(a.w) * f.rAy) + biasRate * f.dx;
+  const F vy = (((b.vy + b.w * f.rBx) - a.vy) - a.w * f.rAx) + biasRate * f.dy;
+  F sx, sy;
+  solvePinMatrix(p, f, vx, vy, sx, sy);
+  return {ax + (negativeMassScale * sx - impulseScale * ax),
+          ay + (negativeMassScale * sy - impulseScale * ay)};
+}
+
+/// pointRow for a rigid point of softness `soft` (unbounded).
+template <class F>
+void solvePins(std::span<SolverState> states, std::span<PinBlock> blocks, const Softness& soft) {
+  forEachPinRun<F>(states, blocks,
+                   [&](PinBlock& block, const PinLanes<F>& p, const PinFrame<F>& f, WideBody<F>& a,
+                       WideBody<F>& b) {
+                     const F accumulatedX = simd::load<F>(block.impulseX + p.first);
+                     const F accumulatedY = simd::load<F>(block.impulseY + p.first);
+                     const PinStep<F> next = stepPin(p, f, a, b, soft, accumulatedX, accumulatedY);
+                     applyPinImpulse(p, f, next.nextX - accumulatedX, next.nextY - accumulatedY, a,
+                                     b);
+                     simd::store(block.impulseX + p.first, next.nextX);
+                     simd::store(block.impulseY + p.first, next.nextY);
+                   });
+}
+
+// ---- revolute joints with turning rows (RevoluteBlock) ----------------------
+
+/// Lanes [first, first + F::kLanes) of a block's bits as a mask.
+template <class F>
+F lanesOf(std::uint8_t bits, int first) {
+  return laneMask<F>(std::uint8_t(bits >> first));
+}
+
+/// The turn row's Jacobian (angularJacobian or its negation): a zero
+/// linear part (negated: minus zero, whose sign the scalar arithmetic
+/// carries) and +-1 on both angular velocities.
+template <class F>
+struct TurnJacobian {
+  F linear;
+  F angular;
+};
+
+template <class F>
+TurnJacobian<F> turnJacobian(bool reversed) {
+  return {simd::broadcast<F>(reversed ? -0.0f : 0.0f), simd::broadcast<F>(reversed ? -1.0f : 1.0f)};
+}
+
+/// velocity(j, a, b).
+template <class F>
+[[gnu::always_inline]] inline F turnVelocity(const TurnJacobian<F>& j, const WideBody<F>& a,
+                                             const WideBody<F>& b) {
+  const F linear = j.linear * (b.vx - a.vx) + j.linear * (b.vy - a.vy);
+  return (linear + j.angular * b.w) - j.angular * a.w;
+}
+
+/// apply(row, j, impulse) on the lanes of `on`; like the scalar, a zero
+/// impulse changes nothing (not even a zero's sign).
+template <class F>
+[[gnu::always_inline]] inline void applyTurn(const PinLanes<F>& p, const TurnJacobian<F>& j,
+                                             F impulse, F on, WideBody<F>& a, WideBody<F>& b) {
+  const F acts = simd::both(on, simd::notEqual(impulse, simd::broadcast<F>(0)));
+  const F linearA = p.invMassA * impulse;
+  const F linearB = p.invMassB * impulse;
+  a.vx = simd::select(acts, a.vx - linearA * j.linear, a.vx);
+  a.vy = simd::select(acts, a.vy - linearA * j.linear, a.vy);
+  a.w = simd::select(acts, a.w - (p.invInertiaA * impulse) * j.angular, a.w);
+  b.vx = simd::select(acts, b.vx + linearB * j.linear, b.vx);
+  b.vy = simd::select(acts, b.vy + linearB * j.linear, b.vy);
+  b.w = simd::select(acts, b.w + (p.invInertiaB * impulse) * j.angular, b.w);
+}
+
+/// A lane's impulses: the pin's gathered from its JointRow (the tree pass
+/// works on it there during the step) and scattered back, the others the
+/// block's columns.
+template <class F>
+struct TurnImpulses {
+  F pointX, pointY, angular, axial, spring, motor, lower, upper;
+};
+
+template <class F>
+TurnImpulses<F> loadImpulses(const RevoluteBlock& block, int first,
+                             std::span<const JointRow> rows) {
+  float x[F::kLanes] = {};
+  float y[F::kLanes] = {};
+  for (int l = 0; l < F::kLanes; ++l) {
+    const std::int32_t r = block.pin.row[first + l];
+    if (r < 0) continue;
+    const Vec2& point = rows[std::size_t(r)].impulses.point;
+    x[l] = point.x();
+    y[l] = point.y();
+  }
+  return {simd::load<F>(x),
+          simd::load<F>(y),
+          simd::load<F>(block.angularImpulse + first),
+          simd::load<F>(block.axialImpulse + first),
+          simd::load<F>(block.springImpulse + first),
+          simd::load<F>(block.motorImpulse + first),
+          simd::load<F>(block.lowerImpulse + first),
+          simd::load<F>(block.upperImpulse + first)};
+}
+
+/// Writes back what the solve changes: the pin's, spring's, motor's and
+/// limits' impulses.
+template <class F>
+void storeImpulses(RevoluteBlock& block, int first, const TurnImpulses<F>& impulses,
+                   std::span<JointRow> rows) {
+  float x[F::kLanes];
+  float y[F::kLanes];
+  simd::store(x, impulses.pointX);
+  simd::store(y, impulses.pointY);
+  for (int l = 0; l < F::kLanes; ++l) {
+    const std::int32_t r = block.pin.row[first + l];
+    if (r >= 0) rows[std::size_t(r)].impulses.point = Vec2(x[l], y[l]);
+  }
+  simd::store(block.springImpulse + first, impulses.spring);
+  simd::store(block.motorImpulse + first, impulses.motor);
+  simd::store(block.lowerImpulse + first, impulses.lower);
+  simd::store(block.upperImpulse + first, impulses.upper);
+}
+
+/// Frame::angle() on the lanes of `bits`, zero on the others; atan2 lane by
+/// lane, the scalar call itself.
+template <class F>
+F jointAngles(const RevoluteBlock& block, int first, const WideBody<F>& a, const WideBody<F>& b) {
+  float c[F::kLanes];
+  float s[F::kLanes];
+  simd::store(c, a.dqc * b.dqc + a.dqs * b.dqs);
+  simd::store(s, a.dqc * b.dqs - a.dqs * b.dqc);
+  float angle[F::kLanes] = {};
+  for (int l = 0; l < F::kLanes; ++l) {
+    if ((block.needsAngle >> (first + l) & 1u) != 0)
+      angle[l] = block.startAngle[first + l] + Rot{c[l], s[l]}.angle();
+  }
+  return simd::load<F>(angle);
+}
+
+template <class F>
+void warmStartRevolutes(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
+                        std::span<JointRow> rows) {
+  const TurnJacobian<F> turn = turnJacobian<F>(false);
+  const F all = laneMask<F>(0xff);
+  forEachPinRun<F>(states, blocks,
+                   [&](RevoluteBlock& block, const PinLanes<F>& p, const PinFrame<F>& f,
+                       WideBody<F>& a, WideBody<F>& b) {
+                     const TurnImpulses<F> i = loadImpulses<F>(block, p.first, rows);
+                     applyPinImpulse(p, f, i.pointX, i.pointY, a, b);
+                     applyTurn(p, turn, i.angular, all, a, b);
+                     applyTurn(p, turn, (i.axial + i.lower) - i.upper, all, a, b);
+                     applyTurn(p, turn, i.motor, all, a, b);
+                   });
+}
+
+/// springRow on the turn row, at the block's spring constants.
+template <class F>
+[[gnu::always_inline]] inline void turnSpring(const RevoluteBlock& block, const PinLanes<F>& p,
+                                              F angle, F on, TurnImpulses<F>& i, WideBody<F>& a,
+                                              WideBody<F>& b) {
+  const TurnJacobian<F> turn = turnJacobian<F>(false);
+  const int first = p.first;
+  const F mass = simd::load<F>(block.turnMass + first);
+  const F drive = simd::load<F>(block.springStep + first) * angle +
+                  simd::load<F>(block.springWeight + first) * turnVelocity(turn, a, b);
+  const F impulse = (negated(drive) * mass) / simd::load<F>(block.springDivisor + first);
+  i.spring = simd::select(on, impulse, i.spring);
+  applyTurn(p, turn, impulse, on, a, b);
+}
+
+/// motorRow on the turn row; std::clamp's comparisons, in its order.
+template <class F>
+[[gnu::always_inline]] inline void turnMotor(const RevoluteBlock& block, const PinLanes<F>& p, F on,
+                                             TurnImpulses<F>& i, WideBody<F>& a, WideBody<F>& b) {
+  const TurnJacobian<F> turn = turnJacobian<F>(false);
+  const int first = p.first;
+  const F maxImpulse = simd::load<F>(block.maxMotorImpulse + first);
+  const F impulse = negated(simd::load<F>(block.turnMass + first)) *
+                    (turnVelocity(turn, a, b) - simd::load<F>(block.motorSpeed + first));
+  const F sum = i.motor + impulse;
+  const F floor = negated(maxImpulse);
+  const F raised = simd::select(simd::less(sum, floor), floor, sum);
+  const F next = simd::select(simd::less(maxImpulse, raised), maxImpulse, raised);
+  applyTurn(p, turn, next - i.motor, on, a, b);
+  i.motor = simd::select(on, next, i.motor);
+}
+
+/// limitRow on the turn row (`reversed`: its negation) keeping c >= 0.
+template <class F>
+[[gnu::always_inline]] inline void turnLimit(const PinLanes<F>& p, bool reversed, F mass, F c,
+                                             const JointPass& pass, F on, F& accumulated,
+                                             WideBody<F>& a, WideBody<F>& b) {
+  const TurnJacobian<F> turn = turnJacobian<F>(reversed);
+  const Softness soft = rowSoftness(pass);
+  const F zero = simd::broadcast<F>(0);
+  const F open = simd::greater(c, zero);
+  const F bias =
+      simd::select(open, c * simd::broadcast<F>(pass.invH), simd::broadcast<F>(soft.biasRate) * c);
+  const F massScale = simd::select(open, simd::broadcast<F>(1), simd::broadcast<F>(soft.massScale));
+  const F impulseScale = simd::select(open, zero, simd::broadcast<F>(soft.impulseScale));
+  const F impulse = ((negated(mass) * massScale) * (turnVelocity(turn, a, b) + bias)) -
+                    impulseScale * accumulated;
+  const F sum = accumulated + impulse;
+  const F next = simd::select(simd::less(sum, zero), zero, sum);
+  applyTurn(p, turn, next - accumulated, on, a, b);
+  accumulated = simd::select(on, next, accumulated);
+}
+
+/// The velocities of `from` on the lanes of `on`.
+template <class F>
+void keepLanes(F on, const WideBody<F>& from, WideBody<F>& body) {
+  body.vx = simd::select(on, from.vx, body.vx);
+  body.vy = simd::select(on, from.vy, body.vy);
+  body.w = simd::select(on, from.w, body.w);
+}
+
+/// solveKind for a revolute joint, row for row: spring (biased pass only),
+/// motor, lower and upper limit, then the pin (left to the tree pass in the
+/// biased pass where it holds it).
+template <class F>
+void solveRevolutes(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
+                    std::span<JointRow> rows, const JointPass& pass) {
+  const Softness soft = rowSoftness(pass);
+  forEachPinRun<F>(
+      states, blocks,
+      [&](RevoluteBlock& block, const PinLanes<F>& p, const PinFrame<F>& f, WideBody<F>& a,
+          WideBody<F>& b) {
+        const int first = p.first;
+        TurnImpulses<F> i = loadImpulses<F>(block, first, rows);
+        const F angle = jointAngles(block, first, a, b);
+        if (pass.useBias) turnSpring(block, p, angle, lanesOf<F>(block.springs, first), i, a, b);
+        turnMotor(block, p, lanesOf<F>(block.motors, first), i, a, b);
+        const F limits = lanesOf<F>(block.limits, first);
+        turnLimit(p, false, simd::load<F>(block.turnMass + first),
+                  angle - simd::load<F>(block.lowerAngle + first), pass, limits, i.lower, a, b);
+        turnLimit(p, true, simd::load<F>(block.reverseMass + first),
+                  simd::load<F>(block.upperAngle + first) - angle, pass, limits, i.upper, a, b);
+        const F pins =
+            pass.useBias ? lanesOf<F>(std::uint8_t(~block.inTree), first) : laneMask<F>(0xff);
+        const PinStep<F> next = stepPin(p, f, a, b, soft, i.pointX, i.pointY);
+        WideBody<F> pinned = a;
+        WideBody<F> pinnedB = b;
+        applyPinImpulse(p, f, next.nextX - i.pointX, next.nextY - i.pointY, pinned, pinnedB);
+        keepLanes(pins, pinned, a);
+        keepLanes(pins, pinnedB, b);
+        i.pointX = simd::select(pins, next.nextX, i.pointX);
+        i.pointY = simd::select(pins, next.nextY, i.pointY);
+        storeImpulses<F>(block, first, i, rows);
+      });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <type_traits>
 
+#include "joint_pins.h"
 #include "joint_row.h"
 
 namespace impulse {
@@ -440,6 +441,55 @@ void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& 
   }
   Context x{row, a, b, pass, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { solveKind(x, settings); }, row.joint->settings);
+}
+
+bool isTurningRevolute(const JointRow& row) {
+  return !row.plainPin && std::holds_alternative<RevoluteJointSettings>(row.joint->settings);
+}
+
+void placeRevolute(RevoluteBlock& block, int lane, const JointRow& row, std::int32_t rowIndex,
+                   Real h) {
+  const auto& s = std::get<RevoluteJointSettings>(row.joint->settings);
+  const auto bit = std::uint8_t(1u << lane);
+  const auto mark = [bit](std::uint8_t& bits, bool on) {
+    bits = std::uint8_t(on ? bits | bit : bits & ~bit);
+  };
+  placeGeometry(block.pin, lane, row, rowIndex);
+  block.startAngle[lane] = row.deltaAngle;
+  const Real mass = effectiveMass(row, angularJacobian());
+  block.turnMass[lane] = mass;
+  block.reverseMass[lane] = effectiveMass(row, -angularJacobian());
+  block.springStep[lane] = h * s.stiffness;
+  const Real weight = mass > 0 ? springVelocityWeight(s.stiffness, s.damping, mass, h) : Real(0);
+  block.springWeight[lane] = weight;
+  block.springDivisor[lane] = mass + weight;
+  block.motorSpeed[lane] = s.motorSpeed;
+  block.maxMotorImpulse[lane] = h * s.maxMotorTorque;
+  block.lowerAngle[lane] = s.lowerAngle;
+  block.upperAngle[lane] = s.upperAngle;
+  const JointImpulses& impulses = row.impulses;
+  block.angularImpulse[lane] = impulses.angular;
+  block.axialImpulse[lane] = impulses.axial;
+  block.springImpulse[lane] = impulses.spring;
+  block.motorImpulse[lane] = impulses.motor;
+  block.lowerImpulse[lane] = impulses.lower;
+  block.upperImpulse[lane] = impulses.upper;
+  // springRow skips a spring without mass.
+  mark(block.springs, s.stiffness > 0 && mass != 0);
+  mark(block.motors, s.enableMotor);
+  mark(block.limits, s.enableLimit);
+  mark(block.needsAngle, s.stiffness > 0 || s.enableLimit);
+  mark(block.inTree, row.inTree);
+}
+
+void storeRevoluteImpulses(const RevoluteBlock& block, std::span<JointRow> rows) {
+  for (int lane = 0; lane < RevoluteBlock::kLanes && block.pin.row[lane] >= 0; ++lane) {
+    JointImpulses& impulses = rows[std::size_t(block.pin.row[lane])].impulses;
+    impulses.spring = block.springImpulse[lane];
+    impulses.motor = block.motorImpulse[lane];
+    impulses.lower = block.lowerImpulse[lane];
+    impulses.upper = block.upperImpulse[lane];
+  }
 }
 
 bool hasSoftRows(const JointSettings& settings) {

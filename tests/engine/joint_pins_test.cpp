@@ -1,16 +1,20 @@
-// Plain pins solved eight at a time (joint_pins.h) give the bits the scalar
-// rows give (joint_rows.cpp), at every lane width the CPU runs: the wide
-// kernels are an evaluation order, not an approximation.
+// Plain pins, and revolute joints with limits, motors and springs, solved
+// eight at a time (joint_pins.h) give the bits the scalar rows give
+// (joint_rows.cpp), at every lane width the CPU runs: the wide kernels are
+// an evaluation order, not an approximation.
 
 #include "joint_pins.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
 
 #include "contact_solver_wide.h"
+#include "joint_data.h"
 
 namespace impulse {
 namespace {
@@ -77,7 +81,9 @@ void forEachRow(PinScene& scene, Visit&& visit) {
 
 void expectSameBits(const PinScene& scalar, const std::vector<SolverState>& wideStates,
                     const std::vector<PinBlock>& blocks, const char* stage) {
-  ASSERT_EQ(std::memcmp(scalar.states.data(), wideStates.data(), wideStates.size() * sizeof(SolverState)), 0)
+  ASSERT_EQ(
+      std::memcmp(scalar.states.data(), wideStates.data(), wideStates.size() * sizeof(SolverState)),
+      0)
       << "states differ after " << stage;
   for (std::size_t r = 0; r < scalar.rows.size(); ++r) {
     const PinBlock& block = blocks[r / PinBlock::kLanes];
@@ -114,6 +120,122 @@ void checkKernels(const WideContactKernels& kernels) {
 TEST(JointPins, FourLanes_GiveTheScalarRowsBits) { checkKernels(sse2WideContactKernels()); }
 
 TEST(JointPins, WidestLanes_GiveTheScalarRowsBits) { checkKernels(wideContactKernels(SimdWidth::Best)); }
+
+// Revolute joints with every mix of limit, motor and spring: row i's
+// settings are bits of i (a spring, a motor, a limit), the limits tight
+// enough that some are reached and some not, the motors weak enough that
+// some saturate; every fourth row's pin belongs to the tree pass (which the
+// biased pass leaves alone). Joint angles from the states' turns and the
+// joints' start angles.
+struct RevoluteScene {
+  PinScene pins;
+  std::vector<Joint> joints;
+};
+
+RevoluteScene makeRevoluteScene(int jointCount, unsigned seed) {
+  RevoluteScene scene{makeScene(jointCount, seed), std::vector<Joint>(std::size_t(jointCount))};
+  std::mt19937 random(seed + 1);
+  std::uniform_real_distribution<Real> any(-1, 1);
+  for (int i = 0; i < jointCount; ++i) {
+    RevoluteJointSettings settings;
+    settings.stiffness = (i & 1) != 0 ? Real(40) * (1 + any(random)) : 0;
+    settings.damping = (i & 1) != 0 ? Real(0.5) : 0;
+    settings.enableMotor = (i & 2) != 0;
+    settings.motorSpeed = any(random);
+    settings.maxMotorTorque = Real(20) * (1 + any(random));
+    settings.enableLimit = (i & 4) != 0 || i % 7 == 0;
+    settings.lowerAngle = Real(-0.05) + Real(0.05) * any(random);
+    settings.upperAngle = Real(0.05) + Real(0.05) * any(random);
+    Joint& joint = scene.joints[std::size_t(i)];
+    joint.settings = settings;
+    JointRow& row = scene.pins.rows[std::size_t(i)];
+    row.joint = &joint;
+    row.plainPin = false;
+    row.softRows = true;
+    row.inTree = i % 4 == 1;
+    row.deltaAngle = Real(0.08) * any(random);
+    row.impulses.motor = Real(0.1) * any(random);
+    row.impulses.lower = std::max(any(random), Real(0));
+    row.impulses.upper = std::max(any(random), Real(0));
+  }
+  return scene;
+}
+
+std::vector<RevoluteBlock> revoluteBlocksOf(const std::vector<JointRow>& rows) {
+  std::vector<RevoluteBlock> blocks((rows.size() + RevoluteBlock::kLanes - 1) /
+                                    RevoluteBlock::kLanes);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    placeRevolute(blocks[r / RevoluteBlock::kLanes], int(r % RevoluteBlock::kLanes), rows[r],
+                  std::int32_t(r), kH);
+  }
+  return blocks;
+}
+
+void expectSameRevoluteBits(const PinScene& scalar, const std::vector<SolverState>& wideStates,
+                            std::vector<JointRow>& wideRows,
+                            const std::vector<RevoluteBlock>& blocks, const char* stage) {
+  ASSERT_EQ(
+      std::memcmp(scalar.states.data(), wideStates.data(), wideStates.size() * sizeof(SolverState)),
+      0)
+      << "states differ after " << stage;
+  for (const RevoluteBlock& block : blocks) storeRevoluteImpulses(block, wideRows);
+  for (std::size_t r = 0; r < scalar.rows.size(); ++r) {
+    ASSERT_EQ(std::memcmp(&wideRows[r].impulses, &scalar.rows[r].impulses, sizeof(JointImpulses)),
+              0)
+        << "joint " << r << "'s impulses differ after " << stage;
+  }
+}
+
+void checkRevoluteKernels(const WideContactKernels& kernels) {
+  // 45 joints: five full blocks and one with three empty lanes.
+  RevoluteScene scalar = makeRevoluteScene(45, 5);
+  std::vector<SolverState> wideStates = scalar.pins.states;
+  std::vector<JointRow> wideRows = scalar.pins.rows;
+  std::vector<RevoluteBlock> blocks = revoluteBlocksOf(wideRows);
+  JointPass pass{kH, 1 / kH, makeSoftness(Real(0.25) / kH, 2, kH), true};
+
+  forEachRow(scalar.pins,
+             [](JointRow& row, SolverState& a, SolverState& b) { warmStartJoint(row, a, b); });
+  kernels.warmStartRevolutes(wideStates, blocks, wideRows);
+  expectSameRevoluteBits(scalar.pins, wideStates, wideRows, blocks, "the warm start");
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    for (bool useBias : {true, false}) {
+      pass.useBias = useBias;
+      forEachRow(scalar.pins, [&](JointRow& row, SolverState& a, SolverState& b) {
+        solveJoint(row, a, b, pass);
+      });
+      kernels.solveRevolutes(wideStates, blocks, wideRows, pass);
+      expectSameRevoluteBits(scalar.pins, wideStates, wideRows, blocks,
+                             useBias ? "a biased pass" : "a relax pass");
+    }
+  }
+  // Every kind of row acted: the check compares something.
+  const auto acted = [&](auto impulseOf) {
+    return std::any_of(scalar.pins.rows.begin(), scalar.pins.rows.end(),
+                       [&](const JointRow& row) { return impulseOf(row.impulses) != 0; });
+  };
+  EXPECT_TRUE(acted([](const JointImpulses& i) { return i.spring; }));
+  EXPECT_TRUE(acted([](const JointImpulses& i) { return i.motor; }));
+  EXPECT_TRUE(acted([](const JointImpulses& i) { return i.lower; }));
+  EXPECT_TRUE(acted([](const JointImpulses& i) { return i.upper; }));
+  EXPECT_TRUE(
+      std::any_of(scalar.pins.rows.begin(), scalar.pins.rows.end(),
+                  [](const JointRow& row) {
+                    const Real maxImpulse =
+                        kH * std::get<RevoluteJointSettings>(row.joint->settings).maxMotorTorque;
+                    return std::get<RevoluteJointSettings>(row.joint->settings).enableMotor &&
+                           std::abs(row.impulses.motor) == maxImpulse;
+                  }))
+      << "no motor saturated";
+}
+
+TEST(JointPins, RevolutesOnFourLanes_GiveTheScalarRowsBits) {
+  checkRevoluteKernels(sse2WideContactKernels());
+}
+
+TEST(JointPins, RevolutesOnWidestLanes_GiveTheScalarRowsBits) {
+  checkRevoluteKernels(wideContactKernels(SimdWidth::Best));
+}
 
 }  // namespace
 }  // namespace impulse
