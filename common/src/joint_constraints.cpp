@@ -17,8 +17,10 @@ namespace {
 constexpr Real kJointDampingRatio = 2;
 
 // Joint rows per range of a colour run side by side: a row costs tens of
-// nanoseconds, a hand-off to a thread about a microsecond.
+// nanoseconds, a hand-off to a thread about a microsecond; a block of eight
+// (a ragdoll's joints) a few hundred nanoseconds.
 constexpr std::int32_t kJointRowsPerRange = 32;
+constexpr std::int32_t kJointBlocksPerRange = 4;
 // Joints per range when making their rows side by side (a row reads its
 // joint, its bodies and their contact lists: a few hundred nanoseconds).
 constexpr std::int32_t kJointsPerMakeRange = 64;
@@ -267,8 +269,9 @@ void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, Visi
     const std::int32_t beside = besideStarts_[std::size_t(color) + 1] - firstBeside;
     // Items [0, pins) are pin blocks, [pins, blocks) revolute blocks, the
     // rest the rows beside them.
+    const std::int32_t perRange = blocks > 0 ? kJointBlocksPerRange : kJointRowsPerRange;
     sub.tasks->forRanges(
-        blocks + beside, kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+        blocks + beside, perRange, [&](std::int32_t begin, std::int32_t end) {
           const std::int32_t pinEnd = std::min(end, pins);
           if (begin < pinEnd)
             visitPins(std::span(pinBlocks_)
@@ -315,10 +318,10 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
 void JointConstraints::solveExact(const SubStep& sub) {
-  tree_.solve(rows_, sub.states, pass_.h);
+  tree_.solve(rows_, sub.states, pass_.h, *sub.tasks);
 }
 void JointConstraints::pushExact(const SubStep& sub) {
-  tree_.push(rows_, sub.states);
+  tree_.push(rows_, sub.states, *sub.tasks);
 }
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 

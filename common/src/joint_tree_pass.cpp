@@ -81,13 +81,13 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
   if (!sameRowsAsOrdered(rows, tasks)) orderAnew(rows, stateCount);
   const Real compliance = rigid.impulseScale / (rigid.massScale * rigid.biasRate);
   jointCount_ = 0;
-  groupSolved_.assign(groupEnds_.size(), 0);
+  solvedGroups_.clear();
   std::size_t begin = 0;
   for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
     const std::span<const Node> group(nodes_.data() + begin, std::size_t(groupEnds_[g]) - begin);
     begin = std::size_t(groupEnds_[g]);
     if (!needsExactPass(group, rows, compliance)) continue;
-    groupSolved_[g] = 1;
+    solvedGroups_.push_back(std::int32_t(g));
     for (const Node& node : group) {
       if (!node.isJoint) continue;
       rows[node.row].inTree = true;
@@ -256,20 +256,26 @@ Eigen::Vector3d JointTreePass::bodyMass(std::span<const JointRow> rows, const Vi
   return {1.0 / invMass, 1.0 / invMass, invInertia > 0 ? 1.0 / invInertia : 1e30};
 }
 
+// Solved groups per range when they run side by side: a ragdoll's group
+// takes a microsecond or two a pass, a hand-off to a thread about one.
+constexpr std::int32_t kGroupsPerRange = 4;
+
 template <class Pass>
-void JointTreePass::forEachSolvedGroup(Pass&& pass) {
-  std::size_t begin = 0;
-  for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
-    const auto end = static_cast<std::size_t>(groupEnds_[g]);
-    if (groupSolved_[g] != 0) pass(std::span<Node>(nodes_).subspan(begin, end - begin));
-    begin = end;
-  }
+void JointTreePass::forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass) {
+  tasks.forRanges(std::int32_t(solvedGroups_.size()), kGroupsPerRange, [&](std::int32_t first, std::int32_t last) {
+    for (std::int32_t k = first; k < last; ++k) {
+      const auto g = std::size_t(solvedGroups_[std::size_t(k)]);
+      const auto begin = std::size_t(g == 0 ? 0 : groupEnds_[g - 1]);
+      pass(std::span<Node>(nodes_).subspan(begin, std::size_t(groupEnds_[g]) - begin));
+    }
+  });
 }
 
 // Group by group, so that a group's nodes stay in cache through the passes.
-void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h) {
+void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h,
+                          const TaskRunner& tasks) {
   const double errorRate = kErrorShare / h;
-  forEachSolvedGroup([&](std::span<Node> group) {
+  forEachSolvedGroup(tasks, [&](std::span<Node> group) {
     assemble(group, rows, states, errorRate);
     factor(group);
     substitute(group);
@@ -277,8 +283,9 @@ void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> state
   });
 }
 
-void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> states) {
-  forEachSolvedGroup([&](std::span<Node> group) {
+void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> states,
+                         const TaskRunner& tasks) {
+  forEachSolvedGroup(tasks, [&](std::span<Node> group) {
     if (!assembleSpeeds(group, rows, states)) return;  // nothing pushed it: no change
     substitute(group);
     applyVelocities(group, states, false);

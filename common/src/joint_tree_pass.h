@@ -55,7 +55,7 @@ class JointTreePass {
   void clear() {
     nodes_.clear();
     groupEnds_.clear();
-    groupSolved_.clear();
+    solvedGroups_.clear();
     orderedFrom_.clear();
     jointCount_ = 0;
   }
@@ -64,12 +64,13 @@ class JointTreePass {
   /// The pass on the states' real velocities: per group, builds and factors
   /// the system at the sub-step's geometry, solves it with position
   /// correction and applies the impulses, which join the joints' warm start.
-  void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h);
+  /// Groups share no body, so they run side by side on `tasks`.
+  void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h, const TaskRunner& tasks);
   /// The pass on the split impulse's pseudo velocities, which only the rows'
   /// speeds are taken out of. The bodies have not moved since this
   /// sub-step's `solve`, so its factors are reused: only the right-hand
   /// side is new.
-  void push(std::span<const JointRow> rows, std::span<SolverState> states);
+  void push(std::span<const JointRow> rows, std::span<SolverState> states, const TaskRunner& tasks);
 
  private:
   /// A body or a joint of a group. Joints have up to three rigid rows;
@@ -117,9 +118,9 @@ class JointTreePass {
   /// rows alone would let its joints give way by kExactTreeStretch or more.
   static bool needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance);
   /// Runs pass(group) for each solved group's nodes, a span of nodes_
-  /// (whose parent and side indices stay positions in nodes_).
+  /// (whose parent and side indices stay positions in nodes_), side by side.
   template <class Pass>
-  void forEachSolvedGroup(Pass&& pass);
+  void forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass);
   void assemble(std::span<Node> group, std::span<JointRow> rows, std::span<const SolverState> states,
                 double errorRate);
   void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
@@ -141,7 +142,7 @@ class JointTreePass {
   std::vector<Visit> walk_;
   std::vector<Node> nodes_;  ///< every group, each leaves first, root last
   std::vector<std::int32_t> groupEnds_;  ///< where each group's nodes end in nodes_
-  std::vector<std::uint8_t> groupSolved_;  ///< by group: needs the pass this step
+  std::vector<std::int32_t> solvedGroups_;  ///< the groups that need the pass this step
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
   int jointCount_ = 0;
 };
