@@ -224,13 +224,14 @@ void JointConstraints::fillPins(const TaskRunner& tasks) {
 // inverse mass); the pin kernels' scatter does the same.
 template <class Visit, class VisitPins>
 void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins) {
-  // A world without awake joints skips the walk through the colours.
-  if (rows_.empty()) return;
   auto visitRow = [&](std::int32_t r, SolverState& sink) {
     JointRow& row = rows_[std::size_t(r)];
     visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
   };
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+  // Colours start in order: from the first that starts at the last coloured
+  // row's end on, every colour is empty.
+  const std::int32_t colouredEnd = colorStarts_[GraphColoring::kOverflow];
+  for (int color = 0; color < GraphColoring::kOverflow && colorStarts_[std::size_t(color)] < colouredEnd; ++color) {
     const std::int32_t firstBlock = pinBlockStarts_[std::size_t(color)];
     const std::int32_t blocks = pinBlockStarts_[std::size_t(color) + 1] - firstBlock;
     const std::int32_t firstBeside = besideStarts_[std::size_t(color)];
