@@ -159,21 +159,30 @@ void solveAndMoveProxies(WorldData& world, Real dt) {
   });
 }
 
-/// One stage of the step: what it runs and where its time is recorded.
+// A world without fields, and without bodies a removed field left taking
+// loads per sub-step: the field stage would do nothing.
+bool fieldsIdle(const WorldData& world) { return world.fields.empty() && world.subSteppedFieldBodies.empty(); }
+
+bool sensorsIdle(const WorldData& world) { return world.sensors.empty(); }
+
+/// One stage of the step: what it runs, where its time is recorded and,
+/// for a stage most worlds have nothing for, when it would do nothing (the
+/// step then neither runs it nor reads the clock for it: its time is 0).
 struct StepStage {
   void (*run)(WorldData& world, Real dt);
   double StepProfile::*time;
+  bool (*idle)(const WorldData& world) = nullptr;
 };
 
 // The step, in order.
 constexpr StepStage kStepStages[] = {
-    {updatePairs, &StepProfile::pairs},          // broad phase: new pairs become contacts
-    {collideContacts, &StepProfile::collide},    // narrow phase: manifolds
-    {applyFields, &StepProfile::fields},         // force fields
-    {solveAndMoveProxies, &StepProfile::solve},  // constraints and integration
-    {solveContinuous, &StepProfile::continuous}, // fast bodies against thin statics
-    {updateSleep, &StepProfile::sleep},          // islands and sleeping
-    {updateSensors, &StepProfile::sensors},      // sensor overlaps
+    {updatePairs, &StepProfile::pairs},                   // broad phase: new pairs become contacts
+    {collideContacts, &StepProfile::collide},             // narrow phase: manifolds
+    {applyFields, &StepProfile::fields, fieldsIdle},      // force fields
+    {solveAndMoveProxies, &StepProfile::solve},           // constraints and integration
+    {solveContinuous, &StepProfile::continuous},          // fast bodies against thin statics
+    {updateSleep, &StepProfile::sleep},                   // islands and sleeping
+    {updateSensors, &StepProfile::sensors, sensorsIdle},  // sensor overlaps
 };
 
 template <typename T>
@@ -556,6 +565,10 @@ void World::step(Real dt) {
   // One clock reading per stage: its end is the next stage's start.
   Clock::time_point stageStart = start;
   for (const StepStage& stage : kStepStages) {
+    if (stage.idle != nullptr && stage.idle(w)) {
+      w.profile.*stage.time = 0;
+      continue;
+    }
     stage.run(w, dt);
     const Clock::time_point stageEnd = Clock::now();
     w.profile.*stage.time = millisecondsBetween(stageStart, stageEnd);
