@@ -107,6 +107,16 @@ bool isAwayFromTarget(const JointRow& row) {
   return gap.squaredNorm() > kMouseAtTarget * kMouseAtTarget;
 }
 
+// How many colours the walks through them visit: up to the last that holds
+// a row. Colours start in order, so from the first that starts where the
+// coloured rows end, every colour is empty; their pin blocks and rows beside
+// the pins are left unwritten.
+int coloursTaken(const ColorStarts& starts) {
+  int colours = 0;
+  while (colours < GraphColoring::kOverflow && starts[std::size_t(colours)] < starts[GraphColoring::kOverflow]) ++colours;
+  return colours;
+}
+
 }  // namespace
 
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
@@ -182,7 +192,8 @@ void JointConstraints::placePins() {
   const bool anyInTree = tree_.jointCount() > 0;
   pinPlaceOf_.assign(order_.size(), -1);
   std::int32_t blocks = 0;
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+  const int colours = coloursTaken(colorStarts_);
+  for (int color = 0; color < colours; ++color) {
     std::int32_t pins = 0;
     for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
       const std::int32_t joint = jointOf_[std::size_t(order_[std::size_t(r)])];
@@ -203,7 +214,8 @@ void JointConstraints::placePins() {
 // Copies each pin into its lane, side by side; the lanes left empty at a
 // colour's end are reset.
 void JointConstraints::fillPins(const TaskRunner& tasks) {
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+  const int colours = coloursTaken(colorStarts_);
+  for (int color = 0; color < colours; ++color) {
     const std::int32_t end = pinBlockStarts_[std::size_t(color) + 1];
     if (end > pinBlockStarts_[std::size_t(color)]) pinBlocks_[std::size_t(end - 1)] = PinBlock{};
   }
@@ -228,10 +240,8 @@ void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, Visi
     JointRow& row = rows_[std::size_t(r)];
     visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
   };
-  // Colours start in order: from the first that starts at the last coloured
-  // row's end on, every colour is empty.
-  const std::int32_t colouredEnd = colorStarts_[GraphColoring::kOverflow];
-  for (int color = 0; color < GraphColoring::kOverflow && colorStarts_[std::size_t(color)] < colouredEnd; ++color) {
+  const int colours = coloursTaken(colorStarts_);
+  for (int color = 0; color < colours; ++color) {
     const std::int32_t firstBlock = pinBlockStarts_[std::size_t(color)];
     const std::int32_t blocks = pinBlockStarts_[std::size_t(color) + 1] - firstBlock;
     const std::int32_t firstBeside = besideStarts_[std::size_t(color)];
