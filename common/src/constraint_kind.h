@@ -39,6 +39,10 @@ class ConstraintKind {
   /// every kind shares) and prepares them. Returns whether any of them needs
   /// the push pass this step.
   virtual bool prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) = 0;
+  /// After prepare: whether this step has none of this kind's constraints.
+  /// The solver then skips the kind's passes, which would only walk its
+  /// empty colours.
+  virtual bool empty() const = 0;
   /// Applies last step's impulses to the velocities.
   virtual void warmStart(const SubStep& sub) = 0;
   /// One pass that removes velocity error and softly corrects position error.

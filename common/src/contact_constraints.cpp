@@ -104,13 +104,22 @@ ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
 
 bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
   collectTouching(world, refs_, wide_.refOfUnsorted);
-  kernels_ = &wideContactKernels(world.settings.simdWidth);
-  context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
   const ContactSoftness softness = contactSoftness(world.settings, step.h);
   const std::size_t stateCount = world.solverStates.size();
+  if (refs_.empty()) {
+    // Nothing to colour or bundle: the solver skips this kind's passes
+    // (empty()). The support pass still learns that no stack stands.
+    support_.order(world, refs_, stateCount, softness, step.h);
+    touching_.assign(stateCount, 0);
+    return false;
+  }
+  kernels_ = &wideContactKernels(world.settings.simdWidth);
+  context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
   // The support pass's plan writes only the refs' holdsUp; the colours and
-  // touch marks read only their states: the two go side by side.
-  world.tasks.bothAtOnce([&] { support_.order(world, refs_, stateCount, softness, step.h); },
+  // touch marks read only their states: the two go side by side, given a
+  // range of refs.
+  world.tasks.bothAtOnce(std::int32_t(refs_.size()), kRefsPerRange,
+                         [&] { support_.order(world, refs_, stateCount, softness, step.h); },
                          [&] {
                            markTouchingStates(refs_, stateCount, touching_);
                            colourContacts(refs_, coloring, wide_);
@@ -138,7 +147,12 @@ void ContactConstraints::solve(const SubStep& sub) {
 }
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }
 void ContactConstraints::push(const SubStep& sub) { kernels_->push(contextFor(sub), wide_); }
-void ContactConstraints::restitution(const SubStep& sub) { kernels_->restitution(contextFor(sub), wide_); }
+void ContactConstraints::restitution(const SubStep& sub) {
+  // Most steps nothing approached fast enough to bounce: no walk through the
+  // colours for it.
+  if (wide_.bounceBundles.empty() && wide_.overflow.empty()) return;
+  kernels_->restitution(contextFor(sub), wide_);
+}
 void ContactConstraints::store(WorldData& world) { kernels_->store(wide_, world); }
 
 void ContactConstraints::countPasses(SolverPasses& passes) const {

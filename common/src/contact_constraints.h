@@ -16,6 +16,7 @@ struct WideContactKernels;
 class ContactConstraints final : public ConstraintKind {
  public:
   bool prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) override;
+  bool empty() const override { return refs_.empty(); }
   void warmStart(const SubStep& sub) override;
   void solve(const SubStep& sub) override;
   void relax(const SubStep& sub) override;

@@ -109,6 +109,16 @@ bool isAwayFromTarget(const JointRow& row) {
   return gap.squaredNorm() > kMouseAtTarget * kMouseAtTarget;
 }
 
+// How many colours the walks through them visit: up to the last that holds
+// a row. Colours start in order, so from the first that starts where the
+// coloured rows end, every colour is empty; their pin blocks and rows beside
+// the pins are left unwritten.
+int coloursTaken(const ColorStarts& starts) {
+  int colours = 0;
+  while (colours < GraphColoring::kOverflow && starts[std::size_t(colours)] < starts[GraphColoring::kOverflow]) ++colours;
+  return colours;
+}
+
 }  // namespace
 
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
@@ -189,7 +199,8 @@ void JointConstraints::placePins() {
   placeOf_.assign(order_.size(), {});
   std::int32_t pinBlocks = 0;
   std::int32_t revoluteBlocks = 0;
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+  const int colours = coloursTaken(colorStarts_);
+  for (int color = 0; color < colours; ++color) {
     std::int32_t pins = 0;
     std::int32_t revolutes = 0;
     for (std::int32_t r = colorStarts_[std::size_t(color)];
@@ -218,8 +229,8 @@ void JointConstraints::placePins() {
 // The last block of each colour that has any, reset: the lanes a colour's
 // last joints leave empty.
 template <class Block>
-void resetColoursLastBlocks(std::vector<Block>& blocks, const ColorStarts& starts) {
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+void resetColoursLastBlocks(std::vector<Block>& blocks, const ColorStarts& starts, int colours) {
+  for (int color = 0; color < colours; ++color) {
     const std::int32_t end = starts[std::size_t(color) + 1];
     if (end > starts[std::size_t(color)]) blocks[std::size_t(end - 1)] = Block{};
   }
@@ -227,8 +238,9 @@ void resetColoursLastBlocks(std::vector<Block>& blocks, const ColorStarts& start
 
 // Copies each blocked joint into its lane, side by side.
 void JointConstraints::fillPins(const TaskRunner& tasks) {
-  resetColoursLastBlocks(pinBlocks_, pinBlockStarts_);
-  resetColoursLastBlocks(revoluteBlocks_, revoluteBlockStarts_);
+  const int colours = coloursTaken(colorStarts_);
+  resetColoursLastBlocks(pinBlocks_, pinBlockStarts_, colours);
+  resetColoursLastBlocks(revoluteBlocks_, revoluteBlockStarts_, colours);
   tasks.forRanges(
       std::int32_t(rows_.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
         for (std::int32_t r = begin; r < end; ++r) {
@@ -253,13 +265,12 @@ void JointConstraints::fillPins(const TaskRunner& tasks) {
 template <class Visit, class VisitPins, class VisitRevolutes>
 void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins,
                                          VisitRevolutes&& visitRevolutes) {
-  // A world without awake joints skips the walk through the colours.
-  if (rows_.empty()) return;
   auto visitRow = [&](std::int32_t r, SolverState& sink) {
     JointRow& row = rows_[std::size_t(r)];
     visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
   };
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+  const int colours = coloursTaken(colorStarts_);
+  for (int color = 0; color < colours; ++color) {
     const std::int32_t firstPins = pinBlockStarts_[std::size_t(color)];
     const std::int32_t pins = pinBlockStarts_[std::size_t(color) + 1] - firstPins;
     const std::int32_t firstRevolutes = revoluteBlockStarts_[std::size_t(color)];

@@ -20,6 +20,7 @@ class TaskRunner;
 class JointConstraints final : public ConstraintKind {
  public:
   bool prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) override;
+  bool empty() const override { return rows_.empty(); }
   void warmStart(const SubStep& sub) override;
   void solve(const SubStep& sub) override;
   void solveExact(const SubStep& sub) override;

@@ -81,6 +81,13 @@ std::array<ConstraintKind*, 2> constraintKinds(WorldData& world) {
   return {&world.jointConstraints, &world.contactConstraints};
 }
 
+// The prepared kinds that have constraints this step, in their order (kept
+// at the front of `kinds`): a lone falling body runs no contact pass.
+std::span<ConstraintKind* const> kindsWithConstraints(std::array<ConstraintKind*, 2>& kinds) {
+  const auto end = std::remove_if(kinds.begin(), kinds.end(), [](const ConstraintKind* kind) { return kind->empty(); });
+  return {kinds.begin(), end};
+}
+
 void integrateVelocities(WorldData& world, Real h) {
   const Real maxAngularSpeed = kMaxRotationPerSubStep / h;
   forEachState(world, world.solverStates.size(), [&](std::size_t k) {
@@ -178,10 +185,11 @@ void solve(WorldData& world, Real dt) {
   const Real h = step.h;
   loadStates(world, h);
 
-  const auto kinds = constraintKinds(world);
+  auto allKinds = constraintKinds(world);
   world.coloring.reset(world.solverStates.size());
   bool needsPush = false;
-  for (ConstraintKind* kind : kinds) needsPush = kind->prepare(world, step, world.coloring) || needsPush;
+  for (ConstraintKind* kind : allKinds) needsPush = kind->prepare(world, step, world.coloring) || needsPush;
+  const std::span<ConstraintKind* const> kinds = kindsWithConstraints(allKinds);
   for (const ConstraintKind* kind : kinds) kind->countPasses(world.profile.passes);
   for (int i = 0; i < step.subSteps; ++i) {
     const SubStep sub{world.solverStates, i, &world.tasks};

@@ -27,10 +27,16 @@ class TaskRunner {
   void configure(const TaskSettings& settings);
   int workerCount() const { return settings_.workerCount; }
 
-  /// Calls first() and second(), at once when there is a thread for each.
-  /// Neither may run a parallel phase of its own.
+  /// Calls first() and second(), at once when there is a thread for each
+  /// and the `items` each works through are at least `minItems` (fewer cost
+  /// less than waking a thread). Neither may run a parallel phase of its own.
   template <class First, class Second>
-  void bothAtOnce(First&& first, Second&& second) const {
+  void bothAtOnce(std::int32_t items, std::int32_t minItems, First&& first, Second&& second) const {
+    if (items < minItems) {
+      first();
+      second();
+      return;
+    }
     forRanges(2, 1, [&](std::int32_t begin, std::int32_t end) {
       for (std::int32_t job = begin; job < end; ++job) job == 0 ? first() : second();
     });

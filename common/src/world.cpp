@@ -20,8 +20,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+double millisecondsBetween(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double, std::milli>(to - from).count();
 }
 
 std::string validateDef(const WorldData& world, const BodyDef& def) {
@@ -159,21 +159,30 @@ void solveAndMoveProxies(WorldData& world, Real dt) {
   });
 }
 
-/// One stage of the step: what it runs and where its time is recorded.
+// A world without fields, and without bodies a removed field left taking
+// loads per sub-step: the field stage would do nothing.
+bool fieldsIdle(const WorldData& world) { return world.fields.empty() && world.subSteppedFieldBodies.empty(); }
+
+bool sensorsIdle(const WorldData& world) { return world.sensors.empty(); }
+
+/// One stage of the step: what it runs, where its time is recorded and,
+/// for a stage most worlds have nothing for, when it would do nothing (the
+/// step then neither runs it nor reads the clock for it: its time is 0).
 struct StepStage {
   void (*run)(WorldData& world, Real dt);
   double StepProfile::*time;
+  bool (*idle)(const WorldData& world) = nullptr;
 };
 
 // The step, in order.
 constexpr StepStage kStepStages[] = {
-    {updatePairs, &StepProfile::pairs},          // broad phase: new pairs become contacts
-    {collideContacts, &StepProfile::collide},    // narrow phase: manifolds
-    {applyFields, &StepProfile::fields},         // force fields
-    {solveAndMoveProxies, &StepProfile::solve},  // constraints and integration
-    {solveContinuous, &StepProfile::continuous}, // fast bodies against thin statics
-    {updateSleep, &StepProfile::sleep},          // islands and sleeping
-    {updateSensors, &StepProfile::sensors},      // sensor overlaps
+    {updatePairs, &StepProfile::pairs},                   // broad phase: new pairs become contacts
+    {collideContacts, &StepProfile::collide},             // narrow phase: manifolds
+    {applyFields, &StepProfile::fields, fieldsIdle},      // force fields
+    {solveAndMoveProxies, &StepProfile::solve},           // constraints and integration
+    {solveContinuous, &StepProfile::continuous},          // fast bodies against thin statics
+    {updateSleep, &StepProfile::sleep},                   // islands and sleeping
+    {updateSensors, &StepProfile::sensors, sensorsIdle},  // sensor overlaps
 };
 
 template <typename T>
@@ -551,12 +560,19 @@ InputResult World::setTargetTransform(BodyId id, const Vec2& position, Real angl
 void World::step(Real dt) {
   WorldData& w = *impl_;
   if (!(dt > 0) || !isFinite(dt)) return;
-  Clock::time_point start = Clock::now();
+  const Clock::time_point start = Clock::now();
   w.tasks.configure(w.settings.tasks);
+  // One clock reading per stage: its end is the next stage's start.
+  Clock::time_point stageStart = start;
   for (const StepStage& stage : kStepStages) {
-    Clock::time_point stageStart = Clock::now();
+    if (stage.idle != nullptr && stage.idle(w)) {
+      w.profile.*stage.time = 0;
+      continue;
+    }
     stage.run(w, dt);
-    w.profile.*stage.time = millisecondsSince(stageStart);
+    const Clock::time_point stageEnd = Clock::now();
+    w.profile.*stage.time = millisecondsBetween(stageStart, stageEnd);
+    stageStart = stageEnd;
   }
   guardStep(w, guard_);
   for (BodyId id : guard_.escaped) {
@@ -566,7 +582,7 @@ void World::step(Real dt) {
   w.changes.stepped(w.movedBodies);
   publishEvents(w);
 
-  w.profile.total = millisecondsSince(start);
+  w.profile.total = millisecondsBetween(start, Clock::now());
   ++w.stepCount;
   w.time += dt;
 }
