@@ -121,17 +121,19 @@ int coloursTaken(const ColorStarts& starts) {
 
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
+  if (world.liveJoints == 0) {
+    // No rows: the solver skips every pass (empty()), which leaves the rest
+    // unread.
+    rows_.clear();
+    tree_.clear();
+    return false;
+  }
   colorStarts_ = {};
   pullingRows_.clear();
   pinBlocks_.clear();
   rowsBesidePins_.clear();
   pinBlockStarts_ = {};
   besideStarts_ = {};
-  if (world.liveJoints == 0) {
-    rows_.clear();
-    tree_.clear();
-    return false;
-  }
   // What the colouring needs of each joint, side by side; then the colours
   // one by one (a colour depends on the joints before it), from those
   // alone; then the rows, side by side.
