@@ -112,8 +112,9 @@ bool isAwayFromTarget(const JointRow& row) {
 // coloured rows end, every colour is empty; their pin blocks and rows beside
 // the pins are left unwritten.
 int coloursTaken(const ColorStarts& starts) {
+  const std::int32_t colouredEnd = starts[GraphColoring::kOverflow];
   int colours = 0;
-  while (colours < GraphColoring::kOverflow && starts[std::size_t(colours)] < starts[GraphColoring::kOverflow]) ++colours;
+  while (colours < GraphColoring::kOverflow && starts[std::size_t(colours)] < colouredEnd) ++colours;
   return colours;
 }
 
