@@ -561,7 +561,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
 template <class F, class Visit>
 void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& set, Visit&& visit) {
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
-  for (int color = 0; color < GraphColoring::kOverflow; ++color) {
+  const int colours = coloursTaken(set.colorBundleStart);
+  for (int color = 0; color < colours; ++color) {
     const std::int32_t first = set.colorBundleStart[std::size_t(color)];
     const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
     context.tasks->forRanges(count, kBundlesPerRange, [&](std::int32_t begin, std::int32_t end) {
@@ -578,13 +579,14 @@ template <class Visit>
 void forEachListedBundleByColor(const ContactSolverContext& context, const WideContactSet& set,
                                 const std::vector<std::int32_t>& list, bool backwards, Visit&& visit) {
   std::array<std::size_t, GraphColoring::kOverflow + 1> colorStart{};
-  for (std::size_t color = 0; color < GraphColoring::kOverflow; ++color) {
+  const std::size_t colours = std::size_t(coloursTaken(set.colorBundleStart));
+  for (std::size_t color = 0; color < colours; ++color) {
     const auto from = list.begin() + std::ptrdiff_t(colorStart[color]);
     const auto to = std::lower_bound(from, list.end(), set.colorBundleStart[color + 1]);
     colorStart[color + 1] = std::size_t(to - list.begin());
   }
-  for (std::size_t k = 0; k < GraphColoring::kOverflow; ++k) {
-    const std::size_t color = backwards ? GraphColoring::kOverflow - 1 - k : k;
+  for (std::size_t k = 0; k < colours; ++k) {
+    const std::size_t color = backwards ? colours - 1 - k : k;
     const std::size_t first = colorStart[color];
     context.tasks->forRanges(std::int32_t(colorStart[color + 1] - first), kBundlesPerRange,
                              [&](std::int32_t begin, std::int32_t end) {

@@ -37,4 +37,16 @@ using ColorStarts = std::array<std::int32_t, GraphColoring::kColorCount + 2>;
 /// order stays deterministic: `order` receives the positions of colorOf.
 ColorStarts sortByColor(std::span<const std::int32_t> colorOf, std::vector<std::int32_t>& order);
 
+/// How many colours a walk through them visits: up to the last that holds
+/// anything. `starts[c]` is where colour c starts and starts[kOverflow] where
+/// the coloured items end (a ColorStarts, or the same cut into bundles).
+/// Colours start in order, so from the first that starts at that end, every
+/// colour is empty.
+inline int coloursTaken(std::span<const std::int32_t> starts) {
+  const std::int32_t colouredEnd = starts[GraphColoring::kOverflow];
+  int colours = 0;
+  while (colours < GraphColoring::kOverflow && starts[std::size_t(colours)] < colouredEnd) ++colours;
+  return colours;
+}
+
 }  // namespace impulse

@@ -109,20 +109,17 @@ bool isAwayFromTarget(const JointRow& row) {
   return gap.squaredNorm() > kMouseAtTarget * kMouseAtTarget;
 }
 
-// How many colours the walks through them visit: up to the last that holds
-// a row. Colours start in order, so from the first that starts where the
-// coloured rows end, every colour is empty; their pin blocks and rows beside
-// the pins are left unwritten.
-int coloursTaken(const ColorStarts& starts) {
-  int colours = 0;
-  while (colours < GraphColoring::kOverflow && starts[std::size_t(colours)] < starts[GraphColoring::kOverflow]) ++colours;
-  return colours;
-}
-
 }  // namespace
 
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
+  if (world.liveJoints == 0) {
+    // No rows: the solver skips every pass (empty()), which leaves the rest
+    // unread.
+    rows_.clear();
+    tree_.clear();
+    return false;
+  }
   colorStarts_ = {};
   pullingRows_.clear();
   pinBlocks_.clear();
@@ -131,11 +128,6 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   pinBlockStarts_ = {};
   revoluteBlockStarts_ = {};
   besideStarts_ = {};
-  if (world.liveJoints == 0) {
-    rows_.clear();
-    tree_.clear();
-    return false;
-  }
   // What the colouring needs of each joint, side by side; then the colours
   // one by one (a colour depends on the joints before it), from those
   // alone; then the rows, side by side.

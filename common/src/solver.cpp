@@ -84,8 +84,8 @@ std::array<ConstraintKind*, 2> constraintKinds(WorldData& world) {
 // The prepared kinds that have constraints this step, in their order (kept
 // at the front of `kinds`): a lone falling body runs no contact pass.
 std::span<ConstraintKind* const> kindsWithConstraints(std::array<ConstraintKind*, 2>& kinds) {
-  const auto end = std::remove_if(kinds.begin(), kinds.end(), [](const ConstraintKind* kind) { return kind->empty(); });
-  return {kinds.begin(), end};
+  const auto none = [](const ConstraintKind* kind) { return kind->empty(); };
+  return {kinds.begin(), std::remove_if(kinds.begin(), kinds.end(), none)};
 }
 
 void integrateVelocities(WorldData& world, Real h) {

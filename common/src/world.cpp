@@ -161,7 +161,9 @@ void solveAndMoveProxies(WorldData& world, Real dt) {
 
 // A world without fields, and without bodies a removed field left taking
 // loads per sub-step: the field stage would do nothing.
-bool fieldsIdle(const WorldData& world) { return world.fields.empty() && world.subSteppedFieldBodies.empty(); }
+bool fieldsIdle(const WorldData& world) {
+  return world.fields.empty() && world.subSteppedFieldBodies.empty();
+}
 
 bool sensorsIdle(const WorldData& world) { return world.sensors.empty(); }
 
