@@ -95,13 +95,15 @@ struct alignas(32) RevoluteBlock {
   Real motorImpulse[kLanes] = {};
   Real lowerImpulse[kLanes] = {};
   Real upperImpulse[kLanes] = {};
-  /// A bit per lane (lane i: bit i): which rows it has, and whether the tree
-  /// pass holds its pin in the biased pass.
-  std::uint8_t springs = 0;
-  std::uint8_t motors = 0;
-  std::uint8_t limits = 0;
-  std::uint8_t needsAngle = 0;
-  std::uint8_t inTree = 0;
+  /// Per lane, which rows it has, and whether the biased pass solves its pin
+  /// (the tree pass holds the pins of its groups there): masks, all bits
+  /// set where so. Lane by lane, not bits of one byte: the lanes of a block
+  /// are filled side by side.
+  Real springOn[kLanes] = {};
+  Real motorOn[kLanes] = {};
+  Real limitOn[kLanes] = {};
+  Real biasedPinOn[kLanes] = {};
+  bool needsAngle[kLanes] = {};
 };
 
 /// Whether a row goes in a RevoluteBlock: a revolute joint that is not a

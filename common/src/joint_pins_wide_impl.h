@@ -148,12 +148,6 @@ void solvePins(std::span<SolverState> states, std::span<PinBlock> blocks, const 
 
 // ---- revolute joints with turning rows (RevoluteBlock) ----------------------
 
-/// Lanes [first, first + F::kLanes) of a block's bits as a mask.
-template <class F>
-F lanesOf(std::uint8_t bits, int first) {
-  return laneMask<F>(std::uint8_t(bits >> first));
-}
-
 /// The turn row's Jacobian (angularJacobian or its negation): a zero
 /// linear part (negated: minus zero, whose sign the scalar arithmetic
 /// carries) and +-1 on both angular velocities.
@@ -251,7 +245,7 @@ F jointAngles(const RevoluteBlock& block, int first, const WideBody<F>& a, const
   simd::store(s, a.dqc * b.dqs - a.dqs * b.dqc);
   float angle[F::kLanes] = {};
   for (int l = 0; l < F::kLanes; ++l) {
-    if ((block.needsAngle >> (first + l) & 1u) != 0)
+    if (block.needsAngle[first + l])
       angle[l] = block.startAngle[first + l] + Rot{c[l], s[l]}.angle();
   }
   return simd::load<F>(angle);
@@ -348,15 +342,14 @@ void solveRevolutes(std::span<SolverState> states, std::span<RevoluteBlock> bloc
         const int first = p.first;
         TurnImpulses<F> i = loadImpulses<F>(block, first, rows);
         const F angle = jointAngles(block, first, a, b);
-        if (pass.useBias) turnSpring(block, p, angle, lanesOf<F>(block.springs, first), i, a, b);
-        turnMotor(block, p, lanesOf<F>(block.motors, first), i, a, b);
-        const F limits = lanesOf<F>(block.limits, first);
+        if (pass.useBias) turnSpring(block, p, angle, simd::load<F>(block.springOn + first), i, a, b);
+        turnMotor(block, p, simd::load<F>(block.motorOn + first), i, a, b);
+        const F limits = simd::load<F>(block.limitOn + first);
         turnLimit(p, false, simd::load<F>(block.turnMass + first),
                   angle - simd::load<F>(block.lowerAngle + first), pass, limits, i.lower, a, b);
         turnLimit(p, true, simd::load<F>(block.reverseMass + first),
                   simd::load<F>(block.upperAngle + first) - angle, pass, limits, i.upper, a, b);
-        const F pins =
-            pass.useBias ? lanesOf<F>(std::uint8_t(~block.inTree), first) : laneMask<F>(0xff);
+        const F pins = pass.useBias ? simd::load<F>(block.biasedPinOn + first) : laneMask<F>(0xff);
         const PinStep<F> next = stepPin(p, f, a, b, soft, i.pointX, i.pointY);
         WideBody<F> pinned = a;
         WideBody<F> pinnedB = b;

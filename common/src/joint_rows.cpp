@@ -4,6 +4,7 @@
 // reached); springs have the user's exact stiffness and damping.
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -450,10 +451,7 @@ bool isTurningRevolute(const JointRow& row) {
 void placeRevolute(RevoluteBlock& block, int lane, const JointRow& row, std::int32_t rowIndex,
                    Real h) {
   const auto& s = std::get<RevoluteJointSettings>(row.joint->settings);
-  const auto bit = std::uint8_t(1u << lane);
-  const auto mark = [bit](std::uint8_t& bits, bool on) {
-    bits = std::uint8_t(on ? bits | bit : bits & ~bit);
-  };
+  const auto mask = [](bool on) { return on ? std::bit_cast<Real>(~std::uint32_t(0)) : Real(0); };
   placeGeometry(block.pin, lane, row, rowIndex);
   block.startAngle[lane] = row.deltaAngle;
   const Real mass = effectiveMass(row, angularJacobian());
@@ -475,11 +473,11 @@ void placeRevolute(RevoluteBlock& block, int lane, const JointRow& row, std::int
   block.lowerImpulse[lane] = impulses.lower;
   block.upperImpulse[lane] = impulses.upper;
   // springRow skips a spring without mass.
-  mark(block.springs, s.stiffness > 0 && mass != 0);
-  mark(block.motors, s.enableMotor);
-  mark(block.limits, s.enableLimit);
-  mark(block.needsAngle, s.stiffness > 0 || s.enableLimit);
-  mark(block.inTree, row.inTree);
+  block.springOn[lane] = mask(s.stiffness > 0 && mass != 0);
+  block.motorOn[lane] = mask(s.enableMotor);
+  block.limitOn[lane] = mask(s.enableLimit);
+  block.biasedPinOn[lane] = mask(!row.inTree);
+  block.needsAngle[lane] = s.stiffness > 0 || s.enableLimit;
 }
 
 void storeRevoluteImpulses(const RevoluteBlock& block, std::span<JointRow> rows) {

@@ -41,10 +41,11 @@ void buildStruckPyramid(World& world) {
   }
 }
 
-// A 60 x 60 grid of circles joined by revolute joints to their right and
-// lower neighbours, the top row's ends pinned: 3 600 bodies, 7 080 joints,
-// swinging and colliding as it falls.
-void buildJointGrid(World& world) {
+// A 60 x 60 grid of circles joined by revolute joints (`settingsOf` the
+// k-th) to their right and lower neighbours, the top row's ends pinned:
+// 3 600 bodies, 7 080 joints, swinging and colliding as it falls.
+template <class SettingsOf>
+void buildGridOfJoints(World& world, SettingsOf&& settingsOf) {
   constexpr int kSide = 60;
   std::vector<BodyId> bodies(kSide * kSide);
   for (int row = 0; row < kSide; ++row) {
@@ -54,11 +55,12 @@ void buildJointGrid(World& world) {
           world.createCircle(Vec2(Real(column) - 30, 40 - Real(row)), Real(0.4), {.properties = {.isStatic = pinned}}).id;
     }
   }
+  int joints = 0;
   auto join = [&](int a, int b) {
     const Vec2 anchor = world.bodyState(bodies[std::size_t(b)])->position;
     ASSERT_TRUE(world.createJoint({.bodyA = bodies[std::size_t(a)], .bodyB = bodies[std::size_t(b)],
                                    .anchorA = anchor, .anchorB = anchor,
-                                   .settings = RevoluteJointSettings{}})
+                                   .settings = settingsOf(joints++)})
                     .ok());
   };
   for (int row = 0; row < kSide; ++row) {
@@ -68,6 +70,27 @@ void buildJointGrid(World& world) {
       if (row + 1 < kSide) join(here, here + kSide);
     }
   }
+}
+
+// Plain pins.
+void buildJointGrid(World& world) {
+  buildGridOfJoints(world, [](int) { return RevoluteJointSettings{}; });
+}
+
+// Ragdoll-like joints: every mix of a limit a few degrees wide, a weak
+// motor holding still and a soft spring.
+void buildTurningJointGrid(World& world) {
+  buildGridOfJoints(world, [](int k) {
+    RevoluteJointSettings settings;
+    settings.enableLimit = k % 2 == 0 || k % 7 == 0;
+    settings.lowerAngle = Real(-0.1);
+    settings.upperAngle = Real(0.1);
+    settings.enableMotor = k % 3 != 0;
+    settings.maxMotorTorque = Real(0.5);
+    settings.stiffness = k % 5 < 2 ? Real(20) : Real(0);
+    settings.damping = Real(0.2);
+    return settings;
+  });
 }
 
 // 3 000 circles and boxes created overlapping in a walled pit: the push
@@ -165,6 +188,17 @@ TEST(WorkerThreads, JointGridGivesTheSameBitsOnOneAndTwoThreads) {
   const std::vector<std::uint64_t> one = hashesAfterEachStep(buildJointGrid, {}, 60);
   EXPECT_NE(one.front(), one.back()) << "the grid swings";
   expectSameBits(one, hashesAfterEachStep(buildJointGrid, {.workerCount = 2}, 60), "workers 2");
+}
+
+// The joints' blocks are filled side by side: a lane's settings must not
+// share a byte with its neighbours'.
+TEST(WorkerThreads, GridOfLimitedMotorisedSprungJointsGivesTheSameBitsOnOneToThreeThreads) {
+  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildTurningJointGrid, {}, 60);
+  EXPECT_NE(one.front(), one.back()) << "the grid swings";
+  for (int workers : {2, 3}) {
+    expectSameBits(one, hashesAfterEachStep(buildTurningJointGrid, {.workerCount = workers}, 60),
+                   ("workers " + std::to_string(workers)).c_str());
+  }
 }
 
 TEST(WorkerThreads, HailThroughAThinWallGivesTheSameBitsOnOneAndTwoThreads) {
