@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "union_find.h"
+
 namespace impulse {
 
 namespace {
@@ -205,26 +207,14 @@ void solveContacts(const ContactSolverContext& context, bool useBias) {
   }
 }
 
-namespace {
-
-std::int32_t findIsland(std::vector<std::int32_t>& island, std::int32_t state) {
-  while (island[std::size_t(state)] != state) {
-    island[std::size_t(state)] = island[std::size_t(island[std::size_t(state)])];
-    state = island[std::size_t(state)];
-  }
-  return state;
-}
-
-}  // namespace
-
 void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set) {
   set.island.resize(stateCount);
   for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = static_cast<std::int32_t>(s);
   for (const ConstraintRef& ref : refs) {
     if (ref.stateA == 0 || ref.stateB == 0) continue;
-    set.island[std::size_t(findIsland(set.island, ref.stateA))] = findIsland(set.island, ref.stateB);
+    set.island[std::size_t(unionFindRoot(set.island, ref.stateA))] = unionFindRoot(set.island, ref.stateB);
   }
-  for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = findIsland(set.island, std::int32_t(s));
+  for (std::size_t s = 0; s < stateCount; ++s) set.island[s] = unionFindRoot(set.island, std::int32_t(s));
 }
 
 bool hasIntrusion(const ContactConstraint& c, const Manifold& manifold) {

@@ -235,7 +235,7 @@ void storeImpulses(RevoluteBlock& block, int first, const TurnImpulses<F>& impul
   simd::store(block.upperImpulse + first, impulses.upper);
 }
 
-/// Frame::angle() on the lanes of `bits`, zero on the others; atan2 lane by
+/// Frame::angle() on the lanes that read it (needsAngle), zero on the others; atan2 lane by
 /// lane, the scalar call itself.
 template <class F>
 F jointAngles(const RevoluteBlock& block, int first, const WideBody<F>& a, const WideBody<F>& b) {

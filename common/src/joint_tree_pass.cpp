@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "union_find.h"
+
 namespace impulse {
 
 namespace {
@@ -25,14 +27,6 @@ constexpr double kCompliance = 1e-5;
 bool isBody(std::int32_t state, Real invMass) { return state != 0 && invMass > 0; }
 bool hasBodyA(const JointRow& row) { return isBody(row.stateA, row.invMassA); }
 bool hasBodyB(const JointRow& row) { return isBody(row.stateB, row.invMassB); }
-
-std::int32_t findGroup(std::vector<std::int32_t>& group, std::int32_t state) {
-  while (group[state] != state) {
-    group[state] = group[group[state]];
-    state = group[state];
-  }
-  return state;
-}
 
 // The joint's rows acting on one of its bodies (3 rows by vx, vy, w).
 Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
@@ -155,7 +149,7 @@ void JointTreePass::orderAnew(std::span<const JointRow> rows, std::size_t stateC
       const bool toWorld = hasBodyA(row) != hasBodyB(row);
       if (worldJointsOnly && !toWorld) continue;
       const std::int32_t body = hasBodyA(row) ? row.stateA : row.stateB;
-      if (groupHasLoop_[findGroup(bodyGroup_, body)]) continue;
+      if (groupHasLoop_[unionFindRoot(bodyGroup_, body)]) continue;
       orderGroup(static_cast<std::int32_t>(r), rows);
     }
   }
@@ -176,12 +170,12 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
     if (a) ++jointsStart_[row.stateA + 1];
     if (b) ++jointsStart_[row.stateB + 1];
     if (!a || !b) continue;
-    const std::int32_t groupA = findGroup(bodyGroup_, row.stateA);
-    const std::int32_t groupB = findGroup(bodyGroup_, row.stateB);
+    const std::int32_t groupA = unionFindRoot(bodyGroup_, row.stateA);
+    const std::int32_t groupB = unionFindRoot(bodyGroup_, row.stateB);
     if (groupA == groupB) loopBodies_.push_back(row.stateA);
     bodyGroup_[groupA] = groupB;
   }
-  for (std::int32_t state : loopBodies_) groupHasLoop_[findGroup(bodyGroup_, state)] = 1;
+  for (std::int32_t state : loopBodies_) groupHasLoop_[unionFindRoot(bodyGroup_, state)] = 1;
   for (std::size_t s = 0; s < stateCount; ++s) jointsStart_[s + 1] += jointsStart_[s];
   cursor_.assign(jointsStart_.begin(), jointsStart_.end() - 1);
   jointsOfBody_.resize(static_cast<std::size_t>(jointsStart_.back()));

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "union_find.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -45,14 +46,6 @@ Real massOf(Real invMass) { return invMass > 0 ? 1 / invMass : Real(0); }
 Real complianceOf(const Softness& softness) {
   if (softness.biasRate <= 0) return std::numeric_limits<Real>::infinity();
   return softness.impulseScale / (softness.massScale * softness.biasRate);
-}
-
-std::int32_t findStack(std::vector<std::int32_t>& stack, std::int32_t state) {
-  while (stack[std::size_t(state)] != state) {
-    stack[std::size_t(state)] = stack[std::size_t(stack[std::size_t(state)])];
-    state = stack[std::size_t(state)];
-  }
-  return state;
 }
 
 }  // namespace
@@ -284,9 +277,9 @@ void SupportPass::linkCandidates(std::span<const ConstraintRef> refs, std::size_
     link.upper = upperOf(candidates_[r], refs);
     link.lower = lowerOf(candidates_[r], refs);
     if (link.lower == 0) continue;
-    stack_[std::size_t(findStack(stack_, link.upper))] = findStack(stack_, link.lower);
+    stack_[std::size_t(unionFindRoot(stack_, link.upper))] = unionFindRoot(stack_, link.lower);
   }
-  for (CandidateLink& link : candidateLinks_) link.stack = findStack(stack_, link.upper);
+  for (CandidateLink& link : candidateLinks_) link.stack = unionFindRoot(stack_, link.upper);
 }
 
 // A body's k-th row in the storey goes to group k; the groups are then laid
