@@ -3,6 +3,7 @@
 // free list and are threaded through both bodies' edge lists.
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -292,8 +293,19 @@ void updateManifolds(WorldData& world, Real dt) {
 }
 
 // Chunks of collideList per worker for the touching list's side-by-side
-// compaction.
+// compaction, and the fewest contacts a chunk takes (reading a contact's
+// outcome is a few nanoseconds).
 constexpr std::int32_t kCollideChunksPerWorker = 4;
+constexpr std::size_t kContactsPerChunk = 256;
+
+// How many chunks a side-by-side pass over `size` items is cut into: up to
+// `perWorker` a worker, but `minItems` items each at least, so that a short
+// list (a lone body's step has none) runs on the calling thread instead of
+// waking a worker. Any count gives the same result: chunks join in order.
+std::int32_t chunksFor(const WorldData& world, std::size_t size, std::int32_t perWorker, std::size_t minItems) {
+  const auto byItems = std::int32_t(std::min(size / minItems, std::size_t(std::numeric_limits<std::int32_t>::max())));
+  return std::clamp(byItems, 1, perWorker * world.tasks.workerCount());
+}
 
 // Chunk c of n covers [c * size / n, (c + 1) * size / n) of a list of `size`.
 std::size_t chunkStart(std::size_t size, std::int32_t chunk, std::int32_t chunks) {
@@ -307,7 +319,7 @@ bool isEventful(std::uint8_t outcome) { return (outcome & (kApart | kTouchChange
 // its offset, side by side.
 void listTouching(WorldData& world) {
   const std::size_t size = world.collideList.size();
-  const std::int32_t chunks = kCollideChunksPerWorker * world.tasks.workerCount();
+  const std::int32_t chunks = chunksFor(world, size, kCollideChunksPerWorker, kContactsPerChunk);
   std::vector<CollideTally>& tallies = world.collideTallies;
   tallies.assign(std::size_t(chunks), {});
   world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
@@ -377,9 +389,10 @@ namespace {
 
 // Chunks of the pair search per worker: each chunk queries a slice of the
 // queued proxies into its own list, so chunks run side by side and join in
-// chunk order. A fixed count keeps the lists' capacities steady (a steady
-// step allocates nothing).
+// chunk order. The lists are kept when fewer chunks run (a steady step
+// allocates nothing). A proxy's query takes about a microsecond.
 constexpr std::int32_t kPairChunksPerWorker = 4;
+constexpr std::size_t kQueriesPerChunk = 16;
 
 // The broad phase's new pairs that may touch: the queued proxies' queries
 // side by side (the world is only read), then joined and sorted. A pair
@@ -391,8 +404,8 @@ void searchNewPairs(WorldData& world) {
     return world.contactByPair.contains(contactPairKey(first, second)) || !pairMayTouch(world, {first, second});
   };
   const std::span<const std::int32_t> queued = world.broadPhase.queuedProxies();
-  const std::int32_t chunks = kPairChunksPerWorker * world.tasks.workerCount();
-  world.pairChunks.resize(std::size_t(chunks));
+  const std::int32_t chunks = chunksFor(world, queued.size(), kPairChunksPerWorker, kQueriesPerChunk);
+  if (world.pairChunks.size() < std::size_t(chunks)) world.pairChunks.resize(std::size_t(chunks));
   world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t chunk = begin; chunk < end; ++chunk) {
       std::vector<ProxyPair>& found = world.pairChunks[std::size_t(chunk)];
