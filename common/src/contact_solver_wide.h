@@ -47,7 +47,7 @@ struct WideContactKernels {
   void (*solvePins)(std::span<SolverState> states, std::span<PinBlock> blocks,
                     const Softness& softness);
   /// The same for revolute joints with a limit, motor or spring (joint_pins.h),
-  /// whose impulses stay in `rows`; a pass of `pass`.
+  /// whose pins' impulses stay in `rows` (the tree pass's); a pass of `pass`.
   void (*warmStartRevolutes)(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
                              std::span<JointRow> rows);
   void (*solveRevolutes)(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
