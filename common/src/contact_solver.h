@@ -52,15 +52,16 @@ inline constexpr Real kIntrusionSlop = Real(0.005);
 /// otherwise throw its bodies (a thousand random bodies spawned overlapping
 /// in a box). A jointed body's loads are not weights it carries (a
 /// ragdoll's limbs), and its contacts never hold.
+inline constexpr Real kHoldFromWeights = Real(2);
+inline constexpr Real kHoldFullWeights = Real(6);
+inline constexpr Real kHoldShare = Real(0.8);
+inline constexpr Real kHoldSpeedSubSteps = Real(2);
+
 /// Whether a contact may hold as a wedge's: off level, between two moving
 /// bodies without joints (the rest, load and overlap, is per point).
 inline bool mayHoldAsWedge(const ConstraintRef& ref) {
   return ref.facing == 0 && !ref.jointed && ref.stateA != 0 && ref.stateB != 0;
 }
-inline constexpr Real kHoldFromWeights = Real(2);
-inline constexpr Real kHoldFullWeights = Real(6);
-inline constexpr Real kHoldShare = Real(0.8);
-inline constexpr Real kHoldSpeedSubSteps = Real(2);
 
 /// The soft push's cap of a point: the speed that carries its load, with
 /// kLoadPushMargin and at least kMinPushSpeed; held to exactly that speed

@@ -458,6 +458,7 @@ bool markIntrudingIslands(const WorldData& world, std::span<const ConstraintRef>
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
   for (std::size_t b = 0; b < bundles.size(); ++b) {
     const std::uint8_t intruding = set.bundleIntrusion[b];
+    if (intruding == 0) continue;
     for (int l = 0; l < F::kLanes; ++l) {
       if ((intruding >> l & 1u) != 0) markPushed(set, bundles[b].stateA[l], bundles[b].stateB[l]);
     }

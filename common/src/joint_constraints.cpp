@@ -157,8 +157,8 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
   tree_.order(rows_, world.solverStates.size(), pass_.rigid, world.tasks);
-  placePins();
-  fillPins(world.tasks);
+  placeBlocks();
+  fillBlocks(world.tasks);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   return false;
 }
@@ -174,7 +174,6 @@ void JointConstraints::findJointSides(const WorldData& world) {
       sides.stateA = sideOf(world, joint.edges.bodyA).state;
       sides.stateB = sideBOf(world, joint).state;
       sides.pulls = pullsToWorldPoint(joint);
-      sides.pin = isPlainPin(joint);
     }
   });
 }
@@ -186,8 +185,7 @@ void JointConstraints::findJointSides(const WorldData& world) {
 // the tree pass solves exactly stay rows: the tree pass reads and writes
 // their impulses during the step, which a pin block holds (a revolute block
 // leaves them in the rows).
-void JointConstraints::placePins() {
-  const bool anyInTree = tree_.jointCount() > 0;
+void JointConstraints::placeBlocks() {
   placeOf_.assign(order_.size(), {});
   std::int32_t pinBlocks = 0;
   std::int32_t revoluteBlocks = 0;
@@ -198,8 +196,7 @@ void JointConstraints::placePins() {
     for (std::int32_t r = colorStarts_[std::size_t(color)];
          r < colorStarts_[std::size_t(color) + 1]; ++r) {
       const JointRow& row = rows_[std::size_t(r)];
-      const std::int32_t joint = jointOf_[std::size_t(order_[std::size_t(r)])];
-      if (jointSides_[std::size_t(joint)].pin && !(anyInTree && row.inTree)) {
+      if (row.plainPin && !row.inTree) {
         placeOf_[std::size_t(r)] = {BlockKind::Pin, pinBlocks * PinGeometry::kLanes + pins++};
       } else if (isTurningRevolute(row)) {
         placeOf_[std::size_t(r)] = {BlockKind::Revolute,
@@ -229,7 +226,7 @@ void resetColoursLastBlocks(std::vector<Block>& blocks, const ColorStarts& start
 }
 
 // Copies each blocked joint into its lane, side by side.
-void JointConstraints::fillPins(const TaskRunner& tasks) {
+void JointConstraints::fillBlocks(const TaskRunner& tasks) {
   const int colours = coloursTaken(colorStarts_);
   resetColoursLastBlocks(pinBlocks_, pinBlockStarts_, colours);
   resetColoursLastBlocks(revoluteBlocks_, revoluteBlockStarts_, colours);
@@ -250,10 +247,10 @@ void JointConstraints::fillPins(const TaskRunner& tasks) {
 // Colour by colour: visitPins(blocks) on the colour's pin blocks,
 // visitRevolutes(blocks) on its revolute blocks and visit(row, stateA,
 // stateB) on its other rows, all side by side; then the rows that found no
-// colour one by one. Rows on a static or sleeping body
-// write a copy of the dummy state 0, never the state itself, which two
-// threads would otherwise write together (it stays zero: such a body has no
-// inverse mass); the pin kernels' scatter does the same.
+// colour one by one. Rows on a static or sleeping body write a copy of the
+// dummy state 0, never the state itself, which two threads would otherwise
+// write together (it stays zero: such a body has no inverse mass); the
+// block kernels' scatter does the same.
 template <class Visit, class VisitPins, class VisitRevolutes>
 void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins,
                                          VisitRevolutes&& visitRevolutes) {
@@ -335,22 +332,12 @@ void JointConstraints::countPasses(SolverPasses& passes) const {
 
 void JointConstraints::store(WorldData& world) {
   // Each block's lanes write their own rows: side by side.
-  world.tasks.forRanges(std::int32_t(pinBlocks_.size()), kJointRowsPerRange,
-                        [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t k = begin; k < end; ++k) {
-                            const PinBlock& block = pinBlocks_[std::size_t(k)];
-                            for (int lane = 0; lane < PinBlock::kLanes && block.pin.row[lane] >= 0;
-                                 ++lane) {
-                              rows_[std::size_t(block.pin.row[lane])].impulses.point =
-                                  Vec2(block.impulseX[lane], block.impulseY[lane]);
-                            }
-                          }
-                        });
-  world.tasks.forRanges(std::int32_t(revoluteBlocks_.size()), kJointRowsPerRange,
-                        [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t k = begin; k < end; ++k)
-                            storeRevoluteImpulses(revoluteBlocks_[std::size_t(k)], rows_);
-                        });
+  world.tasks.forRanges(std::int32_t(pinBlocks_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t k = begin; k < end; ++k) storePinImpulses(pinBlocks_[std::size_t(k)], rows_);
+  });
+  world.tasks.forRanges(std::int32_t(revoluteBlocks_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t k = begin; k < end; ++k) storeRevoluteImpulses(revoluteBlocks_[std::size_t(k)], rows_);
+  });
   // Each row writes its own joint: side by side.
   world.tasks.forRanges(
       std::int32_t(rows_.size()), kJointRowsPerRange, [&](std::int32_t begin, std::int32_t end) {

@@ -34,18 +34,17 @@ class JointConstraints final : public ConstraintKind {
   template <class Visit, class VisitPins, class VisitRevolutes>
   void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins, VisitRevolutes&& visitRevolutes);
   void findJointSides(const WorldData& world);
-  void placePins();
-  void fillPins(const TaskRunner& tasks);
+  void placeBlocks();
+  void fillBlocks(const TaskRunner& tasks);
 
   std::vector<JointRow> rows_;
   /// Per joint slot, what the colouring reads: whether it is solved this
-  /// step (an awake body), its sides' solver states, and its kind's flags.
+  /// step (an awake body), its sides' solver states, and whether it pulls.
   struct JointSides {
     std::int32_t stateA = 0;
     std::int32_t stateB = 0;
     bool solved = false;
     bool pulls = false;  ///< a mouse joint (pullingRows_)
-    bool pin = false;    ///< JointRow::plainPin
   };
   std::vector<JointSides> jointSides_;
   /// The joints of this step's rows, in the joints' order.

@@ -67,6 +67,13 @@ inline void placePin(PinBlock& block, int lane, const JointRow& row, std::int32_
   block.impulseY[lane] = row.impulses.point.y();
 }
 
+/// The block's pins' impulses back into `rows`.
+inline void storePinImpulses(const PinBlock& block, std::span<JointRow> rows) {
+  for (int lane = 0; lane < PinBlock::kLanes && block.pin.row[lane] >= 0; ++lane) {
+    rows[std::size_t(block.pin.row[lane])].impulses.point = Vec2(block.impulseX[lane], block.impulseY[lane]);
+  }
+}
+
 /// Revolute joints with a limit, a motor or a spring (every ragdoll joint),
 /// eight at a time: the pin as in PinBlock, then each lane's turning rows
 /// (joint_rows.cpp's solveKind for a revolute joint, row for row). What a

@@ -171,8 +171,6 @@ class BroadPhase {
     return std::size_t(node) < queued.size() && queued[std::size_t(node)] != 0;
   }
 
-  /// Gives a proxy that left its fat AABB a new one (enlarged in place when
-  /// in bulk, else re-inserted) and queues it; false when it stayed inside.
   /// Copies the proxy's fat AABB to userBoxes_.
   void recordUserBox(std::int32_t proxyKey);
   void recordAllUserBoxes();
