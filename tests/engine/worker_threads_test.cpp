@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <initializer_list>
 #include <random>
 #include <vector>
 
@@ -164,15 +165,22 @@ void expectSameBits(const std::vector<std::uint64_t>& expected, const std::vecto
   }
 }
 
+// The scene stepped on each of `workerCounts` threads gives `one` thread's
+// hashes, step by step.
+void expectSameBitsOn(std::initializer_list<int> workerCounts, SceneBuilder build,
+                      const std::vector<std::uint64_t>& one) {
+  for (int workers : workerCounts) {
+    expectSameBits(one, hashesAfterEachStep(build, {.workerCount = workers}, int(one.size())),
+                   ("workers " + std::to_string(workers)).c_str());
+  }
+}
+
 // Two and three threads: the three-way split of every phase is checked too
 // (on a 2-core machine the third thread only makes it slower).
 TEST(WorkerThreads, StruckPyramidGivesTheSameBitsOnOneToThreeThreads) {
   const std::vector<std::uint64_t> one = hashesAfterEachStep(buildStruckPyramid, {}, 60);
   EXPECT_NE(one.front(), one.back()) << "the scene moves";
-  for (int workers : {2, 3}) {
-    expectSameBits(one, hashesAfterEachStep(buildStruckPyramid, {.workerCount = workers}, 60),
-                   ("workers " + std::to_string(workers)).c_str());
-  }
+  expectSameBitsOn({2, 3}, buildStruckPyramid, one);
 }
 
 TEST(WorkerThreads, OverlappingPileGivesTheSameBitsOnOneAndTwoThreads) {
@@ -180,14 +188,13 @@ TEST(WorkerThreads, OverlappingPileGivesTheSameBitsOnOneAndTwoThreads) {
   buildOverlappingPile(world);
   world.step(kDt);
   EXPECT_GT(world.profile().passes.pushedContacts, 2000) << "the push pass runs on a large part of the pile";
-  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildOverlappingPile, {}, 40);
-  expectSameBits(one, hashesAfterEachStep(buildOverlappingPile, {.workerCount = 2}, 40), "workers 2");
+  expectSameBitsOn({2}, buildOverlappingPile, hashesAfterEachStep(buildOverlappingPile, {}, 40));
 }
 
 TEST(WorkerThreads, JointGridGivesTheSameBitsOnOneAndTwoThreads) {
   const std::vector<std::uint64_t> one = hashesAfterEachStep(buildJointGrid, {}, 60);
   EXPECT_NE(one.front(), one.back()) << "the grid swings";
-  expectSameBits(one, hashesAfterEachStep(buildJointGrid, {.workerCount = 2}, 60), "workers 2");
+  expectSameBitsOn({2}, buildJointGrid, one);
 }
 
 // The joints' blocks are filled side by side: a lane's settings must not
@@ -195,15 +202,11 @@ TEST(WorkerThreads, JointGridGivesTheSameBitsOnOneAndTwoThreads) {
 TEST(WorkerThreads, GridOfLimitedMotorisedSprungJointsGivesTheSameBitsOnOneToThreeThreads) {
   const std::vector<std::uint64_t> one = hashesAfterEachStep(buildTurningJointGrid, {}, 60);
   EXPECT_NE(one.front(), one.back()) << "the grid swings";
-  for (int workers : {2, 3}) {
-    expectSameBits(one, hashesAfterEachStep(buildTurningJointGrid, {.workerCount = workers}, 60),
-                   ("workers " + std::to_string(workers)).c_str());
-  }
+  expectSameBitsOn({2, 3}, buildTurningJointGrid, one);
 }
 
 TEST(WorkerThreads, HailThroughAThinWallGivesTheSameBitsOnOneAndTwoThreads) {
-  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildHail, {}, 40);
-  expectSameBits(one, hashesAfterEachStep(buildHail, {.workerCount = 2}, 40), "workers 2");
+  expectSameBitsOn({2}, buildHail, hashesAfterEachStep(buildHail, {}, 40));
   World world(wideSettings({.workerCount = 2}));
   buildHail(world);
   for (int i = 0; i < 40; ++i) world.step(kDt);
