@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstddef>
+#include <cstring>
 #include <span>
 #include <type_traits>
 
@@ -27,35 +29,6 @@ void setLane(F& wide, int lane, float value) {
 template <class F>
 void setLaneFlag(F& mask, int lane, bool on) {
   setLane(mask, lane, on ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
-}
-
-// A mask's lanes as bits (lane i: bit i), and back.
-template <class F>
-std::uint8_t laneBits(F mask) {
-  static_assert(F::kLanes <= 8);
-  float lanes[F::kLanes];
-  simd::store(lanes, mask);
-  std::uint8_t bits = 0;
-  for (int lane = 0; lane < F::kLanes; ++lane) {
-    if (std::bit_cast<std::uint32_t>(lanes[lane]) != 0) bits = std::uint8_t(bits | (1u << lane));
-  }
-  return bits;
-}
-
-template <class F>
-F laneMask(std::uint8_t bits) {
-  F mask = simd::broadcast<F>(0);
-  for (int lane = 0; lane < F::kLanes; ++lane) setLaneFlag(mask, lane, (bits >> lane & 1u) != 0);
-  return mask;
-}
-
-// An all-zero bundle: padding lanes point at the static dummy with zero mass.
-template <class F>
-WideConstraint<F> emptyBundle() {
-  WideConstraint<F> w{};
-  std::fill(std::begin(w.source), std::end(w.source), -1);
-  w.massScale = simd::broadcast<F>(1);
-  return w;
 }
 
 // ---- body gather and scatter -----------------------------------------------
@@ -200,8 +173,16 @@ void solveFriction(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBo
   applyWide(a, b, c, p, impulse * tx, impulse * ty);
 }
 
+// Whether any lane of the bundle resists rolling: most scenes have none, and
+// a lane without it holds no rolling impulse to warm start or solve.
+template <class F>
+bool anyRolling(const WideConstraint<F>& c) {
+  return simd::any(simd::notEqual(c.rollingResistance, simd::broadcast<F>(0)));
+}
+
 template <class F>
 void solveRolling(WideConstraint<F>& c, WideBody<F>& a, WideBody<F>& b, F totalNormalImpulse) {
+  if (!anyRolling(c)) return;
   F limit = c.rollingResistance * totalNormalImpulse;
   F previous = c.rollingImpulse;
   c.rollingImpulse = simd::clamp(previous - c.rollingMass * (b.w - a.w), -limit, limit);
@@ -264,55 +245,144 @@ struct BundleInputs {
   F mayHold;
 };
 
-// Zeroes one lane of every field of a point.
-template <class F>
-void clearLane(WidePoint<F>& p, int lane) {
-  static_assert(sizeof(WidePoint<F>) % sizeof(F) == 0 && std::is_standard_layout_v<WidePoint<F>>);
-  F* fields = reinterpret_cast<F*>(&p);
-  for (std::size_t k = 0; k < sizeof(WidePoint<F>) / sizeof(F); ++k) setLane(fields[k], lane, 0.0f);
+// ---- gathering a bundle's lanes -----------------------------------------------
+
+// A bundle's lanes are read as rows of eight floats from each lane's ref
+// and contact and turned into columns (simd::loadColumns): a field's
+// column is the float at its offset in the record. Lane by lane, the
+// fill's stores and the vector loads of finishBundle behind them had cost
+// a forwarding stall per field.
+constexpr std::size_t floatAt(std::size_t byteOffset) { return byteOffset / sizeof(float); }
+
+// Floats read of each lane's contact: its ContactSolverPart, which fills
+// the first two lines of its aligned Contact (so reading both whole stays
+// within it).
+constexpr std::size_t kContactFloats = 32;
+static_assert(sizeof(ContactSolverPart) <= kContactFloats * sizeof(float) &&
+              sizeof(Contact) >= kContactFloats * sizeof(float));
+// Floats read of each lane's ref: its contact, states and inverse masses.
+constexpr std::size_t kRefFloats = 8;
+static_assert(offsetof(ConstraintRef, invInertiaB) < kRefFloats * sizeof(float) &&
+              sizeof(ConstraintRef) >= kRefFloats * sizeof(float));
+static_assert(std::is_standard_layout_v<ContactSolverPart> && std::is_standard_layout_v<ConstraintRef>);
+
+// The column of the contact's field at byte offset `offset` in a
+// ContactSolverPart, and of its manifold point j's field at `pointOffset`.
+constexpr std::size_t partColumn(std::size_t offset) { return floatAt(offset); }
+constexpr std::size_t pointColumn(int j, std::size_t pointOffset) {
+  return floatAt(offsetof(ContactSolverPart, manifold) + offsetof(Manifold, points) +
+                 std::size_t(j) * sizeof(ManifoldPoint) + pointOffset);
 }
 
-// Copies one contact's numbers into its lane (every field of the lane but
-// those finishBundle derives).
+// Columns of `count` floats (a multiple of 8) from each lane's record.
 template <class F>
-void gatherLane(const ConstraintRef& ref, const ContactSolverPart& contact, const ContactSoftness& softness,
-                WideConstraint<F>& w, BundleInputs<F>& in, int lane) {
-  const Manifold& manifold = contact.manifold;
-  w.stateA[lane] = ref.stateA;
-  w.stateB[lane] = ref.stateB;
-  w.source[lane] = ref.contact;
-  setLane(w.normalX, lane, manifold.normal.x());
-  setLane(w.normalY, lane, manifold.normal.y());
-  setLane(w.invMassA, lane, ref.invMassA);
-  setLane(w.invInertiaA, lane, ref.invInertiaA);
-  setLane(w.invMassB, lane, ref.invMassB);
-  setLane(w.invInertiaB, lane, ref.invInertiaB);
-  const Softness& soft = (ref.stateA == 0 || ref.stateB == 0) ? softness.statics : softness.dynamic;
-  setLane(w.biasRate, lane, soft.biasRate);
-  setLane(w.massScale, lane, soft.massScale);
-  setLane(w.impulseScale, lane, soft.impulseScale);
-  setLane(w.restitution, lane, contact.restitution);
-  setLane(w.rollingResistance, lane, contact.rollingResistance);
-  setLane(w.rollingImpulse, lane, manifold.rollingImpulse);
-  setLane(in.staticFriction, lane, contact.staticFriction);
-  setLane(in.dynamicFriction, lane, contact.dynamicFriction);
-  setLaneFlag(in.bothMove, lane, ref.stateA != 0 && ref.stateB != 0);
-  setLaneFlag(in.mayHold, lane, mayHoldAsWedge(ref));
-  for (WidePoint<F>& p : w.points) setLane(p.totalNormalImpulse, lane, 0.0f);
-  // A point the manifold does not have is all zero: it never acts.
-  for (int j = manifold.pointCount; j < 2; ++j) clearLane(w.points[j], lane);
-  for (int j = 0; j < manifold.pointCount; ++j) {
-    const ManifoldPoint& mp = manifold.points[j];
+void loadRecordColumns(const void* const records[F::kLanes], std::size_t count, F* columns) {
+  for (std::size_t row = 0; row < count; row += 8) {
+    const float* rows[F::kLanes];
+    for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = static_cast<const float*>(records[lane]) + row;
+    simd::loadColumns(rows, columns + row);
+  }
+}
+
+// A column of 32-bit integers stored into a bundle's index array.
+template <class F>
+void storeIndices(F column, std::int32_t (&indices)[F::kLanes]) {
+  alignas(32) float bits[F::kLanes];
+  simd::store(bits, column);
+  std::memcpy(indices, bits, sizeof(indices));
+}
+
+// What a padding lane reads: no contact (source -1), the static dummy's
+// state, zero masses, and a manifold of no points.
+const ConstraintRef kPaddingRef{};
+alignas(64) constexpr float kPaddingContact[kContactFloats] = {};
+
+// The lane flags read off the refs' bytes: whether a lane's contact holds
+// its body up (its support impulse counts) and whether it may hold as a
+// wedge's.
+struct RefFlags {
+  std::uint8_t holdsUp = 0;
+  std::uint8_t mayHold = 0;
+};
+
+RefFlags refFlags(std::span<const ConstraintRef* const> refs) {
+  RefFlags flags;
+  for (std::size_t lane = 0; lane < refs.size(); ++lane) {
+    if (refs[lane]->holdsUp) flags.holdsUp = std::uint8_t(flags.holdsUp | (1u << lane));
+    if (mayHoldAsWedge(*refs[lane])) flags.mayHold = std::uint8_t(flags.mayHold | (1u << lane));
+  }
+  return flags;
+}
+
+// Copies the lanes' contacts into the bundle (every field but those
+// finishBundle derives; a point a manifold does not have is all zero, so it
+// never acts) and fills `in`. `refs` holds a short bundle's lanes in use.
+template <class F>
+void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& world, const ContactSoftness& softness,
+                 WideConstraint<F>& w, BundleInputs<F>& in) {
+  const void* refRows[F::kLanes];
+  const void* contactRows[F::kLanes];
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    const bool used = std::size_t(lane) < refs.size();
+    refRows[lane] = used ? refs[std::size_t(lane)] : &kPaddingRef;
+    contactRows[lane] = used ? static_cast<const void*>(&world.contacts[refs[std::size_t(lane)]->contact])
+                             : kPaddingContact;
+  }
+  F ref[kRefFloats];
+  F part[kContactFloats];
+  loadRecordColumns<F>(refRows, kRefFloats, ref);
+  loadRecordColumns<F>(contactRows, kContactFloats, part);
+  const auto refField = [&](std::size_t offset) { return ref[floatAt(offset)]; };
+  storeIndices(refField(offsetof(ConstraintRef, stateA)), w.stateA);
+  storeIndices(refField(offsetof(ConstraintRef, stateB)), w.stateB);
+  storeIndices(refField(offsetof(ConstraintRef, contact)), w.source);
+  w.invMassA = refField(offsetof(ConstraintRef, invMassA));
+  w.invInertiaA = refField(offsetof(ConstraintRef, invInertiaA));
+  w.invMassB = refField(offsetof(ConstraintRef, invMassB));
+  w.invInertiaB = refField(offsetof(ConstraintRef, invInertiaB));
+
+  const std::size_t normal = offsetof(ContactSolverPart, manifold) + offsetof(Manifold, normal);
+  w.normalX = part[partColumn(normal)];
+  w.normalY = part[partColumn(normal) + 1];
+  w.restitution = part[partColumn(offsetof(ContactSolverPart, restitution))];
+  w.rollingResistance = part[partColumn(offsetof(ContactSolverPart, rollingResistance))];
+  w.rollingImpulse = part[partColumn(offsetof(ContactSolverPart, manifold) + offsetof(Manifold, rollingImpulse))];
+  in.staticFriction = part[partColumn(offsetof(ContactSolverPart, staticFriction))];
+  in.dynamicFriction = part[partColumn(offsetof(ContactSolverPart, dynamicFriction))];
+
+  // Padding lanes keep an empty bundle's softness (massScale 1).
+  const F used = simd::intGreater(refField(offsetof(ConstraintRef, contact)), kNullIndex);
+  in.bothMove = simd::both(simd::intGreater(refField(offsetof(ConstraintRef, stateA)), 0),
+                           simd::intGreater(refField(offsetof(ConstraintRef, stateB)), 0));
+  const auto soft = [&](Real Softness::*term) {
+    return simd::select(used,
+                        simd::select(in.bothMove, simd::broadcast<F>(softness.dynamic.*term),
+                                     simd::broadcast<F>(softness.statics.*term)),
+                        simd::broadcast<F>(term == &Softness::massScale ? 1 : 0));
+  };
+  w.biasRate = soft(&Softness::biasRate);
+  w.massScale = soft(&Softness::massScale);
+  w.impulseScale = soft(&Softness::impulseScale);
+
+  const RefFlags flags = refFlags(refs);
+  in.mayHold = simd::maskOfBits<F>(flags.mayHold);
+  const F holdsUp = simd::maskOfBits<F>(flags.holdsUp);
+  const F pointCount = part[partColumn(offsetof(ContactSolverPart, manifold) + offsetof(Manifold, pointCount))];
+  const F zero = simd::broadcast<F>(0);
+  for (int j = 0; j < 2; ++j) {
+    const F present = simd::intGreater(pointCount, j);
+    const auto field = [&](std::size_t offset) { return simd::select(present, part[pointColumn(j, offset)], zero); };
     WidePoint<F>& p = w.points[j];
-    setLane(p.anchorAX, lane, mp.anchorA.x());
-    setLane(p.anchorAY, lane, mp.anchorA.y());
-    setLane(p.anchorBX, lane, mp.anchorB.x());
-    setLane(p.anchorBY, lane, mp.anchorB.y());
-    setLane(p.normalImpulse, lane, mp.normalImpulse);
-    setLane(p.tangentImpulse, lane, mp.tangentImpulse);
-    setLane(p.supportImpulse, lane, ref.holdsUp ? mp.supportImpulse : Real(0));
-    setLane(in.separation[j], lane, mp.separation);
-    setLaneFlag(in.present[j], lane, true);
+    p.anchorAX = field(offsetof(ManifoldPoint, anchorA));
+    p.anchorAY = field(offsetof(ManifoldPoint, anchorA) + sizeof(float));
+    p.anchorBX = field(offsetof(ManifoldPoint, anchorB));
+    p.anchorBY = field(offsetof(ManifoldPoint, anchorB) + sizeof(float));
+    p.normalImpulse = field(offsetof(ManifoldPoint, normalImpulse));
+    p.tangentImpulse = field(offsetof(ManifoldPoint, tangentImpulse));
+    p.supportImpulse = simd::select(holdsUp, field(offsetof(ManifoldPoint, supportImpulse)), zero);
+    p.totalNormalImpulse = zero;
+    in.separation[j] = field(offsetof(ManifoldPoint, separation));
+    in.present[j] = present;
   }
 }
 
@@ -469,13 +539,24 @@ bool markIntrudingIslands(const WorldData& world, std::span<const ConstraintRef>
   return true;
 }
 
-// Starts loading the solver parts of bundle b's contacts (ContactSolverPart).
+// Starts loading the solver parts of bundle b's contacts (ContactSolverPart),
+// and the refs of the bundle as far again ahead, whose contact indices that
+// fetch will read: the refs lie scattered too, in colour order.
 void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs, const WideContactSet& set,
                             std::int32_t b) {
-  const std::int32_t first = set.contactSlices.first[std::size_t(b)];
-  for (std::int32_t k = first; k < first + set.contactSlices.lanes[std::size_t(b)]; ++k) {
+  const BundleSlices& slices = set.contactSlices;
+  const std::int32_t first = slices.first[std::size_t(b)];
+  for (std::int32_t k = first; k < first + slices.lanes[std::size_t(b)]; ++k) {
     const ContactSolverPart& part = world.contacts[refs[std::size_t(set.order[std::size_t(k)])].contact];
     fetchLines(&part, sizeof(ContactSolverPart));
+  }
+  const std::int32_t further = b + kPrefetchBundles;
+  if (further >= slices.count()) return;
+  const std::int32_t furtherFirst = slices.first[std::size_t(further)];
+  for (std::int32_t k = furtherFirst; k < furtherFirst + slices.lanes[std::size_t(further)]; ++k) {
+    const auto* ref = reinterpret_cast<const char*>(&refs[std::size_t(set.order[std::size_t(k)])]);
+    fetchLines(ref);
+    fetchLines(ref + sizeof(ConstraintRef) - 1);  // a ref may straddle two lines
   }
 }
 
@@ -500,18 +581,14 @@ bool mayBounce(const WideConstraint<F>& c, Real restitutionThreshold) {
 template <class F>
 std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
                         WideContactSet& set, std::int32_t b) {
-  static const WideConstraint<F> kEmpty = emptyBundle<F>();
   WideConstraint<F>& c = bundlesOf<F>(set)[std::size_t(b)];
   const std::int32_t first = set.contactSlices.first[std::size_t(b)];
   const std::span<const std::int32_t> entries(set.order.data() + first, set.contactSlices.lanes[std::size_t(b)]);
-  // Each lane in use is written whole; only a short bundle has padding.
-  if (entries.size() < std::size_t(F::kLanes)) c = kEmpty;
-  BundleInputs<F> inputs{};
-  for (std::size_t lane = 0; lane < entries.size(); ++lane) {
-    const ConstraintRef& ref = refs[std::size_t(entries[lane])];
-    gatherLane(ref, world.contacts[ref.contact], softness, c, inputs, static_cast<int>(lane));
-  }
-  const std::uint8_t intruding = laneBits(finishBundle(world.solverStates, world.settings, softness, inputs, c));
+  const ConstraintRef* laneRefs[F::kLanes];
+  for (std::size_t lane = 0; lane < entries.size(); ++lane) laneRefs[lane] = &refs[std::size_t(entries[lane])];
+  BundleInputs<F> inputs;
+  gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, c, inputs);
+  const std::uint8_t intruding = simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c));
   packSupportLanes(set, c, entries);
   set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
   return intruding;
@@ -608,8 +685,10 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
       applyWide(a, b, c, p, p.normalImpulse * c.normalX + p.tangentImpulse * tx,
                 p.normalImpulse * c.normalY + p.tangentImpulse * ty);
     }
-    a.w -= c.invInertiaA * c.rollingImpulse;
-    b.w += c.invInertiaB * c.rollingImpulse;
+    if (anyRolling(c)) {
+      a.w -= c.invInertiaA * c.rollingImpulse;
+      b.w += c.invInertiaB * c.rollingImpulse;
+    }
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
   });
@@ -650,7 +729,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   // each other.
   forEachListedBundleByColor(context, set, set.pushBundles, context.reversePointOrder, [&](std::size_t k) {
     WideConstraint<F>& c = bundles[std::size_t(set.pushBundles[k])];
-    const F pushes = laneMask<F>(set.pushLanes[k]);
+    const F pushes = simd::maskOfBits<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;

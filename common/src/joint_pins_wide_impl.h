@@ -255,7 +255,7 @@ template <class F>
 void warmStartRevolutes(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
                         std::span<JointRow> rows) {
   const TurnJacobian<F> turn = turnJacobian<F>(false);
-  const F all = laneMask<F>(0xff);
+  const F all = simd::maskOfBits<F>(0xff);
   forEachPinRun<F>(states, blocks,
                    [&](RevoluteBlock& block, const PinLanes<F>& p, const PinFrame<F>& f,
                        WideBody<F>& a, WideBody<F>& b) {
@@ -349,7 +349,7 @@ void solveRevolutes(std::span<SolverState> states, std::span<RevoluteBlock> bloc
                   angle - simd::load<F>(block.lowerAngle + first), pass, limits, i.lower, a, b);
         turnLimit(p, true, simd::load<F>(block.reverseMass + first),
                   simd::load<F>(block.upperAngle + first) - angle, pass, limits, i.upper, a, b);
-        const F pins = pass.useBias ? simd::load<F>(block.biasedPinOn + first) : laneMask<F>(0xff);
+        const F pins = pass.useBias ? simd::load<F>(block.biasedPinOn + first) : simd::maskOfBits<F>(0xff);
         const PinStep<F> next = stepPin(p, f, a, b, soft, i.pointX, i.pointY);
         WideBody<F> pinned = a;
         WideBody<F> pinnedB = b;

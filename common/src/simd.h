@@ -6,6 +6,8 @@
 // these small types. Operation order is fixed and the same at both widths
 // (no fused multiply-add), so results stay deterministic and identical.
 
+#include <cstdint>
+
 #include <emmintrin.h>  // includes xmmintrin.h (_MM_TRANSPOSE4_PS)
 
 namespace impulse::simd {
@@ -40,8 +42,15 @@ inline F4 either(F4 a, F4 b) { return {_mm_or_ps(a.v, b.v)}; }
 inline F4 select(F4 mask, F4 a, F4 b) {
   return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
 }
+/// All-ones lanes where a, read as a 32-bit integer, is greater than b (a
+/// lane that carries an index or a count rather than a float).
+inline F4 intGreater(F4 a, std::int32_t b) {
+  return {_mm_castsi128_ps(_mm_cmpgt_epi32(_mm_castps_si128(a.v), _mm_set1_epi32(b)))};
+}
 /// True when any lane of a mask is set.
 inline bool any(F4 mask) { return _mm_movemask_ps(mask.v) != 0; }
+/// A mask's lanes as bits (lane i: bit i); maskOfBits turns them back.
+inline std::uint8_t bitsOf(F4 mask) { return std::uint8_t(_mm_movemask_ps(mask.v)); }
 inline void store(float* p, F4 a) { _mm_storeu_ps(p, a.v); }
 inline F4 set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
 
@@ -59,6 +68,16 @@ F broadcast(float x);
 template <>
 inline F4 broadcast<F4>(float x) {
   return splat(x);
+}
+
+/// A mask with lane i all ones where bit i of `bits` is set (width-generic
+/// code).
+template <class F>
+F maskOfBits(std::uint8_t bits);
+template <>
+inline F4 maskOfBits<F4>(std::uint8_t bits) {
+  const __m128i laneBit = _mm_setr_epi32(1, 2, 4, 8);
+  return {_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(bits), laneBit), laneBit))};
 }
 
 /// Reads the first eight floats of four rows as eight four-lane columns.

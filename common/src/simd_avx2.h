@@ -27,6 +27,11 @@ template <>
 inline F8 load<F8>(const float* p) {
   return {_mm256_loadu_ps(p)};
 }
+template <>
+inline F8 maskOfBits<F8>(std::uint8_t bits) {
+  const __m256i laneBit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), laneBit), laneBit))};
+}
 inline F8 operator+(F8 a, F8 b) { return {_mm256_add_ps(a.v, b.v)}; }
 inline F8 operator-(F8 a, F8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline F8 operator*(F8 a, F8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
@@ -48,7 +53,11 @@ inline F8 either(F8 a, F8 b) { return {_mm256_or_ps(a.v, b.v)}; }
 inline F8 select(F8 mask, F8 a, F8 b) {
   return {_mm256_or_ps(_mm256_and_ps(mask.v, a.v), _mm256_andnot_ps(mask.v, b.v))};
 }
+inline F8 intGreater(F8 a, std::int32_t b) {
+  return {_mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_castps_si256(a.v), _mm256_set1_epi32(b)))};
+}
 inline bool any(F8 mask) { return _mm256_movemask_ps(mask.v) != 0; }
+inline std::uint8_t bitsOf(F8 mask) { return std::uint8_t(_mm256_movemask_ps(mask.v)); }
 inline void store(float* p, F8 a) { _mm256_storeu_ps(p, a.v); }
 
 /// Reads the first eight floats of eight rows as eight eight-lane columns.
