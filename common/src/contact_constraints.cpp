@@ -102,28 +102,27 @@ ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {
 
 }  // namespace
 
-bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
+void ContactConstraints::collect(const WorldData& world) {
   collectTouching(world, refs_, wide_.refOfUnsorted);
+  markTouchingStates(refs_, world.solverStates.size(), touching_);
+}
+
+bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) {
   const ContactSoftness softness = contactSoftness(world.settings, step.h);
   const std::size_t stateCount = world.solverStates.size();
   if (refs_.empty()) {
     // Nothing to colour or bundle: the solver skips this kind's passes
     // (empty()). The support pass still learns that no stack stands.
     support_.order(world, refs_, stateCount, softness, step.h);
-    touching_.assign(stateCount, 0);
     return false;
   }
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
-  // The support pass's plan writes only the refs' holdsUp; the colours and
-  // touch marks read only their states: the two go side by side, given a
-  // range of refs.
+  // The support pass's plan writes only the refs' holdsUp; the colours read
+  // only their states: the two go side by side, given a range of refs.
   world.tasks.bothAtOnce(std::int32_t(refs_.size()), kRefsPerRange,
                          [&] { support_.order(world, refs_, stateCount, softness, step.h); },
-                         [&] {
-                           markTouchingStates(refs_, stateCount, touching_);
-                           colourContacts(refs_, coloring, wide_);
-                         });
+                         [&] { colourContacts(refs_, coloring, wide_); });
   return kernels_->build(world, refs_, softness, support_, wide_);
 }
 

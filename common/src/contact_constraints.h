@@ -15,6 +15,10 @@ struct WideContactKernels;
 
 class ContactConstraints final : public ConstraintKind {
  public:
+  /// Once per step, before any kind's prepare: takes the touching contacts
+  /// of awake bodies and marks their bodies (touches), which the joints'
+  /// prepare reads. prepare then colours and bundles them.
+  void collect(const WorldData& world);
   bool prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) override;
   bool empty() const override { return refs_.empty(); }
   void warmStart(const SubStep& sub) override;

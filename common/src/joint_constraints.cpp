@@ -52,12 +52,6 @@ Side sideBOf(const WorldData& world, const Joint& joint) {
   return pullsToWorldPoint(joint) ? Side{} : sideOf(world, joint.edges.bodyB);
 }
 
-// An awake body with a touching contact. A static or sleeping one counts
-// for nothing (the ground's list holds every contact on it).
-bool touchesAnything(const WorldData& world, std::int32_t slot) {
-  return slot != kNullIndex && world.bodies[slot].awake && hasTouchingContact(world, slot);
-}
-
 bool hasAwakeBody(const WorldData& world, const Joint& joint) {
   auto awake = [&](std::int32_t slot) { return slot != kNullIndex && world.bodies[slot].awake; };
   return joint.alive && (awake(joint.edges.bodyA) || awake(joint.edges.bodyB));
@@ -86,7 +80,9 @@ JointRow makeRow(const WorldData& world, const Joint& joint, std::int32_t index)
   row.deltaCenter = b.center - a.center;
   row.softRows = hasSoftRows(joint.settings);
   row.plainPin = isPlainPin(joint);
-  row.touches = touchesAnything(world, joint.edges.bodyA) || (!mouse && touchesAnything(world, joint.edges.bodyB));
+  // An awake body on a touching contact (the contacts' marks: a static or
+  // sleeping one, state 0, counts for nothing).
+  row.touches = world.contactConstraints.touches(a.state) || world.contactConstraints.touches(b.state);
   // The angle's atan2 is a frame's costliest part, and a pin never reads it.
   row.deltaAngle = row.plainPin ? Real(0) : jointAngle(joint, a.q, b.q);
   row.axis = a.q.apply(joint.localAxisA);

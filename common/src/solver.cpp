@@ -186,6 +186,7 @@ void solve(WorldData& world, Real dt) {
   loadStates(world, h);
 
   auto allKinds = constraintKinds(world);
+  world.contactConstraints.collect(world);
   world.coloring.reset(world.solverStates.size());
   bool needsPush = false;
   for (ConstraintKind* kind : allKinds) needsPush = kind->prepare(world, step, world.coloring) || needsPush;
