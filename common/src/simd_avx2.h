@@ -50,9 +50,9 @@ inline F8 atLeast(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OS)}; }
 inline F8 notEqual(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_NEQ_UQ)}; }
 inline F8 both(F8 a, F8 b) { return {_mm256_and_ps(a.v, b.v)}; }
 inline F8 either(F8 a, F8 b) { return {_mm256_or_ps(a.v, b.v)}; }
-inline F8 select(F8 mask, F8 a, F8 b) {
-  return {_mm256_or_ps(_mm256_and_ps(mask.v, a.v), _mm256_andnot_ps(mask.v, b.v))};
-}
+// One blend instead of SSE2's and, andnot, or: the same lanes, since every
+// mask's lanes are all ones or all zeros (blend reads their sign bits).
+inline F8 select(F8 mask, F8 a, F8 b) { return {_mm256_blendv_ps(b.v, a.v, mask.v)}; }
 inline F8 intGreater(F8 a, std::int32_t b) {
   return {_mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_castps_si256(a.v), _mm256_set1_epi32(b)))};
 }
