@@ -316,6 +316,7 @@ void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
 void JointConstraints::solveExact(const SubStep& sub) {
   tree_.solve(rows_, sub.states, pass_.h, *sub.tasks);
 }
+void JointConstraints::relaxExact(const SubStep& sub) { tree_.relax(rows_, sub.states, *sub.tasks); }
 void JointConstraints::pushExact(const SubStep& sub) {
   tree_.push(rows_, sub.states, *sub.tasks);
 }

@@ -24,6 +24,7 @@ class JointConstraints final : public ConstraintKind {
   void warmStart(const SubStep& sub) override;
   void solve(const SubStep& sub) override;
   void solveExact(const SubStep& sub) override;
+  void relaxExact(const SubStep& sub) override;
   void pushExact(const SubStep& sub) override;
   void relax(const SubStep& sub) override;
   void store(WorldData& world) override;

@@ -16,8 +16,13 @@ namespace {
 // millimetre (joint_accuracy_test; a fifth left 1.3 mm).
 constexpr double kErrorShare = 0.4;
 // The correction never moves a row faster than this (m/s or rad/s), so a
-// joint made far apart is pulled together, not thrown.
-constexpr double kMaxCorrectionSpeed = 1;
+// joint made far apart is pulled together, not thrown. The exact relax takes
+// the correction's speed out again each sub-step (it moves positions only);
+// faster, piles of ragdolls stir (the bench's ragdoll-pile ends with its
+// fastest body at 0.14 m/s at 2, 0.10-0.15 at 3-20), slower, a landing
+// ragdoll's knee closes slowly (v3's rain: widest gap 0.20 m at 1 m/s,
+// 0.197 at 2, 0.187 at 4).
+constexpr double kMaxCorrectionSpeed = 2;
 // Each row gives way by this share of its own inverse mass (it ends the pass
 // with a speed of 1e-5 of its impulse's own effect): that keeps the
 // elimination regular where rows repeat each other (two pins at one point,
@@ -271,6 +276,17 @@ void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> state
   const double errorRate = kErrorShare / h;
   forEachSolvedGroup(tasks, [&](std::span<Node> group) {
     assemble(group, rows, states, errorRate);
+    factor(group);
+    substitute(group);
+    applyVelocities(group, states, true);
+  });
+}
+
+void JointTreePass::relax(std::span<JointRow> rows, std::span<SolverState> states, const TaskRunner& tasks) {
+  // At the sub-step's new geometry: reusing the solve's factors (as the push
+  // does, before anything moved) let a long bridge's rows drift apart.
+  forEachSolvedGroup(tasks, [&](std::span<Node> group) {
+    assemble(group, rows, states, 0);
     factor(group);
     substitute(group);
     applyVelocities(group, states, true);

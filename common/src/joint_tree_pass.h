@@ -66,6 +66,10 @@ class JointTreePass {
   /// correction and applies the impulses, which join the joints' warm start.
   /// Groups share no body, so they run side by side on `tasks`.
   void solve(std::span<JointRow> rows, std::span<SolverState> states, Real h, const TaskRunner& tasks);
+  /// The pass without position correction, after every kind's relax: the
+  /// rows end the sub-step exactly satisfied, whatever the contacts' relax
+  /// did to one side, and the correction's speed is taken out again.
+  void relax(std::span<JointRow> rows, std::span<SolverState> states, const TaskRunner& tasks);
   /// The pass on the split impulse's pseudo velocities, which only the rows'
   /// speeds are taken out of. The bodies have not moved since this
   /// sub-step's `solve`, so its factors are reused: only the right-hand

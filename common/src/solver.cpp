@@ -207,6 +207,7 @@ void solve(WorldData& world, Real dt) {
     for (int r = 0; r < world.settings.relaxIterations; ++r) {
       for (ConstraintKind* kind : kinds) kind->relax(sub);
     }
+    for (ConstraintKind* kind : kinds) kind->relaxExact(sub);
   }
   // A flat face meeting a wall bounces on two points; one pass solves them
   // one after the other and leaves a spurious spin, a few converge.
