@@ -29,6 +29,11 @@ constexpr double kMaxCorrectionSpeed = 2;
 // both ends of a bridge), far below anything a step can show.
 constexpr double kCompliance = 1e-5;
 
+// The speed a row is given to take out its share of position error.
+double correctionSpeed(double errorRate, Real position) {
+  return std::clamp(errorRate * position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
+}
+
 bool isBody(std::int32_t state, Real invMass) { return state != 0 && invMass > 0; }
 bool hasBodyA(const JointRow& row) { return isBody(row.stateA, row.invMassA); }
 bool hasBodyB(const JointRow& row) { return isBody(row.stateB, row.invMassB); }
@@ -79,6 +84,7 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
                           const TaskRunner& tasks) {
   if (!sameRowsAsOrdered(rows, tasks)) orderAnew(rows, stateCount);
   const Real compliance = rigid.impulseScale / (rigid.massScale * rigid.biasRate);
+  factorsCurrent_ = false;
   jointCount_ = 0;
   solvedGroups_.clear();
   std::size_t begin = 0;
@@ -274,9 +280,14 @@ void JointTreePass::forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass) {
 void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h,
                           const TaskRunner& tasks) {
   const double errorRate = kErrorShare / h;
+  const bool factored = factorsCurrent_;
   forEachSolvedGroup(tasks, [&](std::span<Node> group) {
-    assemble(group, rows, states, errorRate);
-    factor(group);
+    if (factored) {
+      assembleCorrectedSpeeds(group, rows, states, errorRate);
+    } else {
+      assemble(group, rows, states, errorRate);
+      factor(group);
+    }
     substitute(group);
     applyVelocities(group, states, true);
   });
@@ -291,6 +302,9 @@ void JointTreePass::relax(std::span<JointRow> rows, std::span<SolverState> state
     substitute(group);
     applyVelocities(group, states, true);
   });
+  // Nothing moves until the next sub-step's solve (only velocities change
+  // before its positions are integrated): these factors are its own.
+  factorsCurrent_ = true;
 }
 
 void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> states,
@@ -324,9 +338,7 @@ void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const Sol
       continue;
     }
     node.diagonal(r, r) = -kCompliance * inverseMass;
-    const double correction =
-        std::clamp(errorRate * rigid[r].position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
-    node.value(r) = -(velocity(g, a, b) + correction);
+    node.value(r) = -(velocity(g, a, b) + correctionSpeed(errorRate, rigid[r].position));
     node.impulses[r] = rigid[r].impulse;
     node.jacobian[r] = g;
   }
@@ -357,6 +369,23 @@ void JointTreePass::assemble(std::span<Node> group, std::span<JointRow> rows,
 
 // The push's right-hand side: each used row's speed, without correction.
 // Returns whether any row moves.
+void JointTreePass::assembleCorrectedSpeeds(std::span<Node> group, std::span<JointRow> rows,
+                                            std::span<const SolverState> states, double errorRate) {
+  for (Node& node : group) {
+    node.value.setZero();
+    if (!node.isJoint) continue;
+    JointRow& row = rows[node.row];
+    const SolverState& a = states[row.stateA];
+    const SolverState& b = states[row.stateB];
+    RigidRows rigid;
+    rigidRows(row, a, b, rigid);
+    for (int r = 0; r < 3; ++r) {
+      if (node.impulses[r] == nullptr) continue;
+      node.value(r) = -(velocity(node.jacobian[r], a, b) + correctionSpeed(errorRate, rigid[r].position));
+    }
+  }
+}
+
 bool JointTreePass::assembleSpeeds(std::span<Node> group, std::span<const JointRow> rows,
                                    std::span<const SolverState> states) {
   bool moving = false;

@@ -58,6 +58,7 @@ class JointTreePass {
     solvedGroups_.clear();
     orderedFrom_.clear();
     jointCount_ = 0;
+    factorsCurrent_ = false;
   }
   /// The joints in the groups: what the pass solves each sub-step.
   int jointCount() const { return jointCount_; }
@@ -131,6 +132,10 @@ class JointTreePass {
                      double errorRate);
   bool assembleSpeeds(std::span<Node> group, std::span<const JointRow> rows,
                       std::span<const SolverState> states);
+  /// The right-hand side assemble writes, on factors already made at this
+  /// geometry (the last relax's).
+  void assembleCorrectedSpeeds(std::span<Node> group, std::span<JointRow> rows,
+                               std::span<const SolverState> states, double errorRate);
   void factor(std::span<Node> group);
   void substitute(std::span<Node> group);
   void applyVelocities(std::span<const Node> group, std::span<SolverState> states, bool keepImpulses);
@@ -149,6 +154,9 @@ class JointTreePass {
   std::vector<std::int32_t> solvedGroups_;  ///< the groups that need the pass this step
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
   int jointCount_ = 0;
+  /// The solved groups' factors are at the states' current geometry (made
+  /// by the last relax this step): the next solve needs only its speeds.
+  bool factorsCurrent_ = false;
 };
 
 }  // namespace impulse
