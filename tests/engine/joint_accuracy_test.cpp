@@ -358,7 +358,7 @@ double landingLegWorstKneeSpeed() {
     }
     return 0.0;
   });
-  EXPECT_GT(solvedSteps, 30) << "the leg touches the ground from its landing on";
+  EXPECT_GE(solvedSteps, 10) << "the tree pass solves the leg from its landing on";
   return worst;
 }
 
