@@ -314,46 +314,24 @@ RefFlags refFlags(std::span<const ConstraintRef* const> refs) {
   return flags;
 }
 
-// Copies the lanes' contacts into the bundle (every field but those
-// finishBundle derives; a point a manifold does not have is all zero, so it
-// never acts) and fills `in`. `refs` holds a short bundle's lanes in use.
+// The lanes' bodies off their refs' columns: states, source contacts,
+// inverse masses, and the softness of a contact on the static world or
+// between two moving bodies (padding lanes keep an empty bundle's: massScale
+// 1, the rest 0).
 template <class F>
-void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& world, const ContactSoftness& softness,
-                 WideConstraint<F>& w, BundleInputs<F>& in) {
-  const void* refRows[F::kLanes];
-  const void* contactRows[F::kLanes];
-  for (int lane = 0; lane < F::kLanes; ++lane) {
-    const bool used = std::size_t(lane) < refs.size();
-    refRows[lane] = used ? refs[std::size_t(lane)] : &kPaddingRef;
-    contactRows[lane] = used ? static_cast<const void*>(&world.contacts[refs[std::size_t(lane)]->contact])
-                             : kPaddingContact;
-  }
-  F ref[kRefFloats];
-  F part[kContactFloats];
-  loadRecordColumns<F>(refRows, kRefFloats, ref);
-  loadRecordColumns<F>(contactRows, kContactFloats, part);
-  const auto refField = [&](std::size_t offset) { return ref[floatAt(offset)]; };
-  storeIndices(refField(offsetof(ConstraintRef, stateA)), w.stateA);
-  storeIndices(refField(offsetof(ConstraintRef, stateB)), w.stateB);
-  storeIndices(refField(offsetof(ConstraintRef, contact)), w.source);
-  w.invMassA = refField(offsetof(ConstraintRef, invMassA));
-  w.invInertiaA = refField(offsetof(ConstraintRef, invInertiaA));
-  w.invMassB = refField(offsetof(ConstraintRef, invMassB));
-  w.invInertiaB = refField(offsetof(ConstraintRef, invInertiaB));
-
-  const std::size_t normal = offsetof(ContactSolverPart, manifold) + offsetof(Manifold, normal);
-  w.normalX = part[partColumn(normal)];
-  w.normalY = part[partColumn(normal) + 1];
-  w.restitution = part[partColumn(offsetof(ContactSolverPart, restitution))];
-  w.rollingResistance = part[partColumn(offsetof(ContactSolverPart, rollingResistance))];
-  w.rollingImpulse = part[partColumn(offsetof(ContactSolverPart, manifold) + offsetof(Manifold, rollingImpulse))];
-  in.staticFriction = part[partColumn(offsetof(ContactSolverPart, staticFriction))];
-  in.dynamicFriction = part[partColumn(offsetof(ContactSolverPart, dynamicFriction))];
-
-  // Padding lanes keep an empty bundle's softness (massScale 1).
-  const F used = simd::intGreater(refField(offsetof(ConstraintRef, contact)), kNullIndex);
-  in.bothMove = simd::both(simd::intGreater(refField(offsetof(ConstraintRef, stateA)), 0),
-                           simd::intGreater(refField(offsetof(ConstraintRef, stateB)), 0));
+void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, WideConstraint<F>& w,
+                  BundleInputs<F>& in) {
+  const auto field = [&](std::size_t offset) { return ref[floatAt(offset)]; };
+  storeIndices(field(offsetof(ConstraintRef, stateA)), w.stateA);
+  storeIndices(field(offsetof(ConstraintRef, stateB)), w.stateB);
+  storeIndices(field(offsetof(ConstraintRef, contact)), w.source);
+  w.invMassA = field(offsetof(ConstraintRef, invMassA));
+  w.invInertiaA = field(offsetof(ConstraintRef, invInertiaA));
+  w.invMassB = field(offsetof(ConstraintRef, invMassB));
+  w.invInertiaB = field(offsetof(ConstraintRef, invInertiaB));
+  const F used = simd::intGreater(field(offsetof(ConstraintRef, contact)), kNullIndex);
+  in.bothMove = simd::both(simd::intGreater(field(offsetof(ConstraintRef, stateA)), 0),
+                           simd::intGreater(field(offsetof(ConstraintRef, stateB)), 0));
   const auto soft = [&](Real Softness::*term) {
     return simd::select(used,
                         simd::select(in.bothMove, simd::broadcast<F>(softness.dynamic.*term),
@@ -363,11 +341,23 @@ void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& wo
   w.biasRate = soft(&Softness::biasRate);
   w.massScale = soft(&Softness::massScale);
   w.impulseScale = soft(&Softness::impulseScale);
+}
 
-  const RefFlags flags = refFlags(refs);
+// The lanes' manifolds and coefficients off their contacts' columns; a point
+// a manifold does not have is all zero, so it never acts.
+template <class F>
+void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, WideConstraint<F>& w, BundleInputs<F>& in) {
+  const std::size_t manifold = offsetof(ContactSolverPart, manifold);
+  w.normalX = part[partColumn(manifold + offsetof(Manifold, normal))];
+  w.normalY = part[partColumn(manifold + offsetof(Manifold, normal)) + 1];
+  w.rollingImpulse = part[partColumn(manifold + offsetof(Manifold, rollingImpulse))];
+  w.restitution = part[partColumn(offsetof(ContactSolverPart, restitution))];
+  w.rollingResistance = part[partColumn(offsetof(ContactSolverPart, rollingResistance))];
+  in.staticFriction = part[partColumn(offsetof(ContactSolverPart, staticFriction))];
+  in.dynamicFriction = part[partColumn(offsetof(ContactSolverPart, dynamicFriction))];
   in.mayHold = simd::maskOfBits<F>(flags.mayHold);
   const F holdsUp = simd::maskOfBits<F>(flags.holdsUp);
-  const F pointCount = part[partColumn(offsetof(ContactSolverPart, manifold) + offsetof(Manifold, pointCount))];
+  const F pointCount = part[partColumn(manifold + offsetof(Manifold, pointCount))];
   const F zero = simd::broadcast<F>(0);
   for (int j = 0; j < 2; ++j) {
     const F present = simd::intGreater(pointCount, j);
@@ -384,6 +374,28 @@ void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& wo
     in.separation[j] = field(offsetof(ManifoldPoint, separation));
     in.present[j] = present;
   }
+}
+
+// Copies the lanes' contacts into the bundle (every field but those
+// finishBundle derives) and fills `in`. `refs` holds a short bundle's lanes
+// in use; the others read the padding records.
+template <class F>
+void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& world, const ContactSoftness& softness,
+                 WideConstraint<F>& w, BundleInputs<F>& in) {
+  const void* refRows[F::kLanes];
+  const void* contactRows[F::kLanes];
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    const bool used = std::size_t(lane) < refs.size();
+    refRows[lane] = used ? refs[std::size_t(lane)] : &kPaddingRef;
+    contactRows[lane] = used ? static_cast<const void*>(&world.contacts[refs[std::size_t(lane)]->contact])
+                             : kPaddingContact;
+  }
+  F ref[kRefFloats];
+  F part[kContactFloats];
+  loadRecordColumns<F>(refRows, kRefFloats, ref);
+  loadRecordColumns<F>(contactRows, kContactFloats, part);
+  gatherBodies(ref, softness, w, in);
+  gatherManifolds(part, refFlags(refs), w, in);
 }
 
 // 1 / k where k > 0, else 0 (the quotient of the other lanes is dropped).
