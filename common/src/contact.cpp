@@ -428,11 +428,39 @@ void searchNewPairs(WorldData& world) {
   world.broadPhase.finishPairSearch(world.newPairs);
 }
 
+// Pairs ahead of the one whose contact is being made whose lines are
+// fetched meanwhile: their shapes twice this far ahead, then their bodies
+// and the contact slot they will take. Making a contact is otherwise a
+// chain of cache misses, one pair at a time, on the calling thread.
+constexpr std::size_t kCreatePrefetchDistance = 4;
+
+void fetchPairAhead(const WorldData& world, std::size_t k) {
+  const std::vector<ProxyPair>& pairs = world.newPairs;
+  if (k + 2 * kCreatePrefetchDistance < pairs.size()) {
+    const ProxyPair& ahead = pairs[k + 2 * kCreatePrefetchDistance];
+    fetchLines(&world.shapes[ahead.first]);
+    fetchLines(&world.shapes[ahead.second]);
+  }
+  if (k + kCreatePrefetchDistance < pairs.size()) {
+    const ProxyPair& ahead = pairs[k + kCreatePrefetchDistance];
+    fetchLines(&world.bodies[world.shapes[ahead.first].body]);
+    fetchLines(&world.bodies[world.shapes[ahead.second].body]);
+    // Free slots are handed out from the back.
+    const std::vector<std::int32_t>& free = world.freeContacts.slots();
+    if (kCreatePrefetchDistance < free.size()) {
+      fetchLines(&world.contacts[free[free.size() - 1 - kCreatePrefetchDistance]], sizeof(Contact));
+    }
+  }
+}
+
 }  // namespace
 
 void updatePairs(WorldData& world, Real /*dt*/) {
   searchNewPairs(world);
-  for (const ProxyPair& pair : world.newPairs) createContact(world, pair.first, pair.second);
+  for (std::size_t k = 0; k < world.newPairs.size(); ++k) {
+    fetchPairAhead(world, k);
+    createContact(world, world.newPairs[k].first, world.newPairs[k].second);
+  }
 }
 
 namespace {
