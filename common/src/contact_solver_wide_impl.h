@@ -220,6 +220,12 @@ void visitFetchingAhead(std::int32_t begin, std::int32_t end, Fetch&& fetch, Vis
 // Bundles per range of a colour run side by side: a bundle's pass costs
 // tens of nanoseconds, a hand-off to a thread about a microsecond.
 constexpr std::int32_t kBundlesPerRange = 64;
+// The same for the sub-steps' passes over a colour (warm start, solve,
+// relax, push, restitution), a bundle's 50 to 150 ns: shorter ranges, since
+// a colour under two ranges runs on one thread while the other waits, and
+// a crowd around one body (a tumbler's box, a drum) leaves many colours of
+// 20 to 120 bundles (with 64 a range, all of the tumbler's ran on one).
+constexpr std::int32_t kBundlesPerColorRange = 16;
 
 }  // namespace
 }  // namespace impulse
@@ -655,7 +661,7 @@ void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& s
   for (int color = 0; color < colours; ++color) {
     const std::int32_t first = set.colorBundleStart[std::size_t(color)];
     const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
-    context.tasks->forRanges(count, kBundlesPerRange, [&](std::int32_t begin, std::int32_t end) {
+    context.tasks->forRanges(count, kBundlesPerColorRange, [&](std::int32_t begin, std::int32_t end) {
       for (std::int32_t b = first + begin; b < first + end; ++b) visit(bundles[std::size_t(b)]);
     });
   }
@@ -678,7 +684,7 @@ void forEachListedBundleByColor(const ContactSolverContext& context, const WideC
   for (std::size_t k = 0; k < colours; ++k) {
     const std::size_t color = backwards ? colours - 1 - k : k;
     const std::size_t first = colorStart[color];
-    context.tasks->forRanges(std::int32_t(colorStart[color + 1] - first), kBundlesPerRange,
+    context.tasks->forRanges(std::int32_t(colorStart[color + 1] - first), kBundlesPerColorRange,
                              [&](std::int32_t begin, std::int32_t end) {
                                for (std::int32_t entry = begin; entry < end; ++entry) visit(first + std::size_t(entry));
                              });

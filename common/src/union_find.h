@@ -1,7 +1,7 @@
 #pragma once
 // The root of an item in a union-find forest kept as a parent array (a
-// root is its own parent), halving the path on the way: the islands of the
-// push pass, the stacks of the support pass and the joint tree pass's groups.
+// root is its own parent), halving the path on the way: the stacks of the
+// support pass and the joint tree pass's groups.
 
 #include <cstdint>
 #include <vector>

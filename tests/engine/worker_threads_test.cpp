@@ -139,6 +139,23 @@ void buildHail(World& world) {
   }
 }
 
+// The struck pyramid (over 4 000 touching contacts: their sort runs beside
+// the narrow phase's serial pass) and, on the ground to its left, 16 boxes
+// created asleep, each woken by a circle dropped on it from its own height:
+// steps on which that pass wakes bodies while the sort runs.
+void buildStruckPyramidWakingSleepers(World& world) {
+  buildStruckPyramid(world);
+  for (int i = 0; i < 16; ++i) {
+    const Real x = Real(-79 + i);
+    BodyDef box;
+    box.shape = Shape::makePolygon(makeBox(Real(0.3), Real(0.3)));
+    box.position = Vec2(x, Real(0.3));
+    box.isAwake = false;
+    ASSERT_TRUE(world.createBody(box).ok());
+    world.createCircle(Vec2(x, Real(1.5) + Real(0.25) * Real(i)), Real(0.2));
+  }
+}
+
 WorldSettings wideSettings(const TaskSettings& tasks) {
   WorldSettings settings;
   settings.bounds = {Vec2(-150, -50), Vec2(150, 250)};
@@ -195,6 +212,22 @@ TEST(WorkerThreads, JointGridGivesTheSameBitsOnOneAndTwoThreads) {
   const std::vector<std::uint64_t> one = hashesAfterEachStep(buildJointGrid, {}, 60);
   EXPECT_NE(one.front(), one.back()) << "the grid swings";
   expectSameBitsOn({2}, buildJointGrid, one);
+}
+
+TEST(WorkerThreads, WakesDuringTheNarrowPhaseGiveTheSameBitsOnOneAndTwoThreads) {
+  World world(wideSettings({}));
+  buildStruckPyramidWakingSleepers(world);
+  const int asleep = int(world.bodyIds().size()) - 1 - world.awakeBodyCount();  // less the ground
+  ASSERT_EQ(asleep, 16);
+  int wakingSteps = 0;
+  for (int i = 0; i < 60; ++i) {
+    const int awake = world.awakeBodyCount();
+    world.step(kDt);
+    const bool sortedBeside = world.profile().passes.contacts > 4096;
+    wakingSteps += world.awakeBodyCount() > awake && sortedBeside ? 1 : 0;
+  }
+  EXPECT_GE(wakingSteps, 8) << "the circles wake their boxes on several steps, among over 4 096 touching contacts";
+  expectSameBitsOn({2}, buildStruckPyramidWakingSleepers, hashesAfterEachStep(buildStruckPyramidWakingSleepers, {}, 60));
 }
 
 // The joints' blocks are filled side by side: a lane's settings must not
