@@ -445,11 +445,8 @@ void fetchPairAhead(const WorldData& world, std::size_t k) {
     const ProxyPair& ahead = pairs[k + kCreatePrefetchDistance];
     fetchLines(&world.bodies[world.shapes[ahead.first].body]);
     fetchLines(&world.bodies[world.shapes[ahead.second].body]);
-    // Free slots are handed out from the back.
-    const std::vector<std::int32_t>& free = world.freeContacts.slots();
-    if (kCreatePrefetchDistance < free.size()) {
-      fetchLines(&world.contacts[free[free.size() - 1 - kCreatePrefetchDistance]], sizeof(Contact));
-    }
+    const std::int32_t slot = world.freeContacts.upcoming(kCreatePrefetchDistance);
+    if (slot >= 0) fetchLines(&world.contacts[std::size_t(slot)], sizeof(Contact));
   }
 }
 

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <utility>
+
+#include "union_find.h"
 
 namespace impulse {
 
@@ -206,34 +207,14 @@ void solveContacts(const ContactSolverContext& context, bool useBias) {
   }
 }
 
-namespace {
-
-// Joins the islands of states a and b in a forest where every parent has
-// an index no greater than its child's (Rem's union-find with splicing):
-// each step hooks the item with the higher parent onto the lower parent, so
-// the invariant holds and paths shorten as they are walked.
-void joinStates(std::vector<std::int32_t>& parent, std::int32_t a, std::int32_t b) {
-  while (parent[std::size_t(a)] != parent[std::size_t(b)]) {
-    if (parent[std::size_t(a)] < parent[std::size_t(b)]) std::swap(a, b);
-    const std::int32_t above = parent[std::size_t(a)];
-    parent[std::size_t(a)] = parent[std::size_t(b)];
-    if (above == a) return;
-    a = above;
-  }
-}
-
-}  // namespace
-
 void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set) {
   std::vector<std::int32_t>& parent = set.island;
   parent.resize(stateCount);
   for (std::size_t s = 0; s < stateCount; ++s) parent[s] = static_cast<std::int32_t>(s);
   for (const ConstraintRef& ref : refs) {
-    if (ref.stateA != 0 && ref.stateB != 0) joinStates(parent, ref.stateA, ref.stateB);
+    if (ref.stateA != 0 && ref.stateB != 0) joinBelow(parent, ref.stateA, ref.stateB);
   }
-  // A parent precedes its child, so one pass in index order gives each
-  // state its root: the parent's entry already holds it.
-  for (std::size_t s = 0; s < stateCount; ++s) parent[s] = parent[std::size_t(parent[s])];
+  flattenBelow(parent);
 }
 
 bool hasIntrusion(const ContactConstraint& c, const Manifold& manifold) {
