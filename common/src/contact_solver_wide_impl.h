@@ -272,9 +272,7 @@ static_assert(offsetof(ConstraintRef, invInertiaB) < kRefFloats * sizeof(float) 
               sizeof(ConstraintRef) >= kRefFloats * sizeof(float));
 static_assert(std::is_standard_layout_v<ContactSolverPart> && std::is_standard_layout_v<ConstraintRef>);
 
-// The column of the contact's field at byte offset `offset` in a
-// ContactSolverPart, and of its manifold point j's field at `pointOffset`.
-constexpr std::size_t partColumn(std::size_t offset) { return floatAt(offset); }
+// The column of manifold point j's field at `pointOffset`.
 constexpr std::size_t pointColumn(int j, std::size_t pointOffset) {
   return floatAt(offsetof(ContactSolverPart, manifold) + offsetof(Manifold, points) +
                  std::size_t(j) * sizeof(ManifoldPoint) + pointOffset);
@@ -322,8 +320,8 @@ RefFlags refFlags(std::span<const ConstraintRef* const> refs) {
 
 // The lanes' bodies off their refs' columns: states, source contacts,
 // inverse masses, and the softness of a contact on the static world or
-// between two moving bodies (padding lanes keep an empty bundle's: massScale
-// 1, the rest 0).
+// between two moving bodies (a padding lane takes the static world's: with
+// no mass and no points it moves nothing whatever its softness).
 template <class F>
 void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, WideConstraint<F>& w,
                   BundleInputs<F>& in) {
@@ -335,14 +333,11 @@ void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, W
   w.invInertiaA = field(offsetof(ConstraintRef, invInertiaA));
   w.invMassB = field(offsetof(ConstraintRef, invMassB));
   w.invInertiaB = field(offsetof(ConstraintRef, invInertiaB));
-  const F used = simd::intGreater(field(offsetof(ConstraintRef, contact)), kNullIndex);
   in.bothMove = simd::both(simd::intGreater(field(offsetof(ConstraintRef, stateA)), 0),
                            simd::intGreater(field(offsetof(ConstraintRef, stateB)), 0));
   const auto soft = [&](Real Softness::*term) {
-    return simd::select(used,
-                        simd::select(in.bothMove, simd::broadcast<F>(softness.dynamic.*term),
-                                     simd::broadcast<F>(softness.statics.*term)),
-                        simd::broadcast<F>(term == &Softness::massScale ? 1 : 0));
+    return simd::select(in.bothMove, simd::broadcast<F>(softness.dynamic.*term),
+                        simd::broadcast<F>(softness.statics.*term));
   };
   w.biasRate = soft(&Softness::biasRate);
   w.massScale = soft(&Softness::massScale);
@@ -354,16 +349,16 @@ void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, W
 template <class F>
 void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, WideConstraint<F>& w, BundleInputs<F>& in) {
   const std::size_t manifold = offsetof(ContactSolverPart, manifold);
-  w.normalX = part[partColumn(manifold + offsetof(Manifold, normal))];
-  w.normalY = part[partColumn(manifold + offsetof(Manifold, normal)) + 1];
-  w.rollingImpulse = part[partColumn(manifold + offsetof(Manifold, rollingImpulse))];
-  w.restitution = part[partColumn(offsetof(ContactSolverPart, restitution))];
-  w.rollingResistance = part[partColumn(offsetof(ContactSolverPart, rollingResistance))];
-  in.staticFriction = part[partColumn(offsetof(ContactSolverPart, staticFriction))];
-  in.dynamicFriction = part[partColumn(offsetof(ContactSolverPart, dynamicFriction))];
+  w.normalX = part[floatAt(manifold + offsetof(Manifold, normal))];
+  w.normalY = part[floatAt(manifold + offsetof(Manifold, normal)) + 1];
+  w.rollingImpulse = part[floatAt(manifold + offsetof(Manifold, rollingImpulse))];
+  w.restitution = part[floatAt(offsetof(ContactSolverPart, restitution))];
+  w.rollingResistance = part[floatAt(offsetof(ContactSolverPart, rollingResistance))];
+  in.staticFriction = part[floatAt(offsetof(ContactSolverPart, staticFriction))];
+  in.dynamicFriction = part[floatAt(offsetof(ContactSolverPart, dynamicFriction))];
   in.mayHold = simd::maskOfBits<F>(flags.mayHold);
   const F holdsUp = simd::maskOfBits<F>(flags.holdsUp);
-  const F pointCount = part[partColumn(manifold + offsetof(Manifold, pointCount))];
+  const F pointCount = part[floatAt(manifold + offsetof(Manifold, pointCount))];
   const F zero = simd::broadcast<F>(0);
   for (int j = 0; j < 2; ++j) {
     const F present = simd::intGreater(pointCount, j);

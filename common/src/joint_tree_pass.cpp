@@ -276,10 +276,24 @@ void JointTreePass::forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass) {
   });
 }
 
-// Group by group, so that a group's nodes stay in cache through the passes.
 void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> states, Real h,
                           const TaskRunner& tasks) {
-  const double errorRate = kErrorShare / h;
+  solveGroups(rows, states, kErrorShare / h, tasks);
+}
+
+void JointTreePass::relax(std::span<JointRow> rows, std::span<SolverState> states, const TaskRunner& tasks) {
+  // The positions moved since the solve: its factors are another geometry's
+  // (reused, they let a long bridge's rows drift apart).
+  factorsCurrent_ = false;
+  solveGroups(rows, states, 0, tasks);
+}
+
+// Group by group, so that a group's nodes stay in cache through the passes.
+// The factors made here are this geometry's until the positions move: the
+// push reuses them, and so does the next sub-step's solve after a relax
+// (only velocities change in between).
+void JointTreePass::solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
+                                const TaskRunner& tasks) {
   const bool factored = factorsCurrent_;
   forEachSolvedGroup(tasks, [&](std::span<Node> group) {
     if (factored) {
@@ -291,19 +305,6 @@ void JointTreePass::solve(std::span<JointRow> rows, std::span<SolverState> state
     substitute(group);
     applyVelocities(group, states, true);
   });
-}
-
-void JointTreePass::relax(std::span<JointRow> rows, std::span<SolverState> states, const TaskRunner& tasks) {
-  // At the sub-step's new geometry: reusing the solve's factors (as the push
-  // does, before anything moved) let a long bridge's rows drift apart.
-  forEachSolvedGroup(tasks, [&](std::span<Node> group) {
-    assemble(group, rows, states, 0);
-    factor(group);
-    substitute(group);
-    applyVelocities(group, states, true);
-  });
-  // Nothing moves until the next sub-step's solve (only velocities change
-  // before its positions are integrated): these factors are its own.
   factorsCurrent_ = true;
 }
 

@@ -132,6 +132,8 @@ class JointTreePass {
                      double errorRate);
   bool assembleSpeeds(std::span<Node> group, std::span<const JointRow> rows,
                       std::span<const SolverState> states);
+  void solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
+                   const TaskRunner& tasks);
   /// The right-hand side assemble writes, on factors already made at this
   /// geometry (the last relax's).
   void assembleCorrectedSpeeds(std::span<Node> group, std::span<JointRow> rows,
@@ -154,8 +156,8 @@ class JointTreePass {
   std::vector<std::int32_t> solvedGroups_;  ///< the groups that need the pass this step
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
   int jointCount_ = 0;
-  /// The solved groups' factors are at the states' current geometry (made
-  /// by the last relax this step): the next solve needs only its speeds.
+  /// The solved groups' factors are at the states' current geometry: the
+  /// next solve needs only its speeds.
   bool factorsCurrent_ = false;
 };
 
