@@ -154,6 +154,16 @@ struct WideContactSet {
   /// supportGroupBundle[g + 1]).
   std::vector<WideSupportRow<simd::F4>> support4;
   std::vector<std::int32_t> supportGroupBundle;
+  /// Lane l of support bundle b as its contact filled it: record
+  /// b * lanes + l (SupportLaneRecord).
+  std::vector<SupportLaneRecord> supportLanes;
+  /// Per contact bundle lane (b * lanes + l) and per overflow constraint,
+  /// the record of its contact's support lane (-1: it holds nothing up).
+  std::vector<std::int32_t> laneSupportRecord;
+  std::vector<std::int32_t> overflowSupportRecord;
+  /// The support rows' last impulses, per support bundle its points'
+  /// columns: what the contacts' store writes into their manifolds.
+  std::vector<float> supportImpulses;
   /// The push pass's contacts: those of the islands (bodies joined by
   /// touching contacts) where a contact overlaps deeper than its load
   /// explains when prepared (hasIntrusion). By bundle, in bundle order, with

@@ -39,7 +39,7 @@ struct WideContactKernels {
   void (*restitution)(const ContactSolverContext& context, WideContactSet& set);
   /// Writes the impulses back into the manifolds for next step's warm start
   /// (the support pass's last, for next step's friction limit).
-  void (*store)(const WideContactSet& set, WorldData& world);
+  void (*store)(WideContactSet& set, WorldData& world);
   /// The plain pins' warm start and one pass, biased or relaxing as
   /// `softness` says, on `blocks` (joint_pins.h); kept in this table to share
   /// its bodies' gather and scatter and its choice of width.

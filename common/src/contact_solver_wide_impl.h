@@ -20,17 +20,6 @@
 namespace impulse {
 namespace {
 
-template <class F>
-void setLane(F& wide, int lane, float value) {
-  wide.v[lane] = value;  // GCC/Clang vector subscript
-}
-
-// A lane of a mask (simd::select): all ones where `on`.
-template <class F>
-void setLaneFlag(F& mask, int lane, bool on) {
-  setLane(mask, lane, on ? std::bit_cast<float>(~std::uint32_t(0)) : 0.0f);
-}
-
 // ---- body gather and scatter -----------------------------------------------
 
 template <class F>
@@ -227,16 +216,6 @@ constexpr std::int32_t kBundlesPerRange = 64;
 // 20 to 120 bundles (with 64 a range, all of the tumbler's ran on one).
 constexpr std::int32_t kBundlesPerColorRange = 16;
 
-}  // namespace
-}  // namespace impulse
-
-// The support pass's kernels, on the body gather and scatter above; the
-// contacts fill its lanes as they are prepared.
-#include "support_pass_wide_impl.h"
-
-namespace impulse {
-namespace {
-
 // ---- passes ------------------------------------------------------------------
 
 // What preparing a bundle needs besides the constraint's own fields.
@@ -295,6 +274,16 @@ void storeIndices(F column, std::int32_t (&indices)[F::kLanes]) {
   simd::store(bits, column);
   std::memcpy(indices, bits, sizeof(indices));
 }
+
+}  // namespace
+}  // namespace impulse
+
+// The support pass's kernels, on the body gather and scatter and the record
+// columns above; the contacts fill its lanes' records as they are prepared.
+#include "support_pass_wide_impl.h"
+
+namespace impulse {
+namespace {
 
 // What a padding lane reads: no contact (source -1), the static dummy's
 // state, zero masses, and a manifold of no points.
@@ -552,16 +541,21 @@ bool markIntrudingIslands(const WorldData& world, std::span<const ConstraintRef>
   return true;
 }
 
-// Starts loading the solver parts of bundle b's contacts (ContactSolverPart),
-// and the refs of the bundle as far again ahead, whose contact indices that
-// fetch will read: the refs lie scattered too, in colour order.
-void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs, const WideContactSet& set,
+// Starts loading the solver parts of bundle b's contacts (ContactSolverPart)
+// and the support records its lanes write, and the refs of the bundle as far
+// again ahead, whose contact indices that fetch will read: the refs lie
+// scattered too, in colour order.
+template <class F>
+void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set,
                             std::int32_t b) {
   const BundleSlices& slices = set.contactSlices;
   const std::int32_t first = slices.first[std::size_t(b)];
   for (std::int32_t k = first; k < first + slices.lanes[std::size_t(b)]; ++k) {
-    const ContactSolverPart& part = world.contacts[refs[std::size_t(set.order[std::size_t(k)])].contact];
+    const std::int32_t entry = set.order[std::size_t(k)];
+    const ContactSolverPart& part = world.contacts[refs[std::size_t(entry)].contact];
     fetchLines(&part, sizeof(ContactSolverPart));
+    const SupportPlace place = set.supportPlaceOf[std::size_t(entry)];
+    if (place.bundle >= 0) fetchLines(&supportLaneOf<F>(set, place), sizeof(SupportLaneRecord));
   }
   const std::int32_t further = b + kPrefetchBundles;
   if (further >= slices.count()) return;
@@ -602,7 +596,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   BundleInputs<F> inputs;
   gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, c, inputs);
   const std::uint8_t intruding = simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c));
-  packSupportLanes(set, c, entries);
+  packSupportLanes(set, c, b, entries);
   set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
   return intruding;
 }
@@ -617,11 +611,12 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
 
   auto& bundles = bundlesOf<F>(set);
   bundles.resize(std::size_t(bundleCount));
+  set.laneSupportRecord.resize(std::size_t(bundleCount) * F::kLanes);
   set.bundleIntrusion.resize(std::size_t(bundleCount));
   set.bundleMayBounce.resize(std::size_t(bundleCount));
   world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
     visitFetchingAhead(
-        begin, end, [&](std::int32_t b) { prefetchBundleContacts(world, refs, set, b); },
+        begin, end, [&](std::int32_t b) { prefetchBundleContacts<F>(world, refs, set, b); },
         [&](std::int32_t b) { set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b); });
   });
 
@@ -631,14 +626,14 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   }
   set.overflow.clear();
   set.overflowIntrudes.clear();
+  set.overflowSupportRecord.clear();
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     ContactConstraint& constraint = set.overflow.emplace_back();
     prepareContact(world, ref, softness, constraint);
     const SupportPlace place = set.supportPlaceOf[std::size_t(set.order[k])];
-    if (place.bundle >= 0) {
-      packSupportLane(supportBundlesOf<F>(set)[std::size_t(place.bundle)], place.lane, constraint, place.upperIsB);
-    }
+    set.overflowSupportRecord.push_back(supportRecordOf<F>(place));
+    if (place.bundle >= 0) packSupportLane(supportLaneOf<F>(set, place), constraint, place.upperIsB);
     set.overflowIntrudes.push_back(hasIntrusion(constraint, world.contacts[ref.contact].manifold) ? 1 : 0);
   }
   const bool anyIntrusion = markIntrudingIslands<F>(world, refs, set);
@@ -794,9 +789,11 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   applyRestitution(overflowContext(context, set));
 }
 
-// Writes one bundle's impulses into its lanes' manifolds.
+// Writes one bundle's impulses into its lanes' manifolds: the support
+// pass's where a lane's contact holds a body up (its `records`).
 template <class F>
-void storeBundleImpulses(const WideConstraint<F>& w, WorldData& world) {
+void storeBundleImpulses(const WideContactSet& set, const WideConstraint<F>& w, const std::int32_t* records,
+                         WorldData& world) {
   alignas(16) float rolling[F::kLanes];
   alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], support[2][F::kLanes];
   simd::store(rolling, w.rollingImpulse);
@@ -809,11 +806,25 @@ void storeBundleImpulses(const WideConstraint<F>& w, WorldData& world) {
     if (w.source[lane] < 0) continue;
     Manifold& manifold = world.contacts[w.source[lane]].manifold;
     manifold.rollingImpulse = rolling[lane];
+    const std::int32_t record = records[lane];
     for (int j = 0; j < manifold.pointCount; ++j) {
       manifold.points[j].normalImpulse = normal[j][lane];
       manifold.points[j].tangentImpulse = tangent[j][lane];
-      manifold.points[j].supportImpulse = support[j][lane];
+      manifold.points[j].supportImpulse = record < 0 ? support[j][lane] : supportImpulseOf<F>(set, record, j);
     }
+  }
+}
+
+// The overflow constraints' impulses, then the support pass's of those that
+// hold a body up.
+template <class F>
+void storeOverflowImpulses(const WideContactSet& set, WorldData& world) {
+  storeImpulses(set.overflow, world);
+  for (std::size_t k = 0; k < set.overflow.size(); ++k) {
+    const std::int32_t record = set.overflowSupportRecord[k];
+    if (record < 0) continue;
+    Manifold& manifold = world.contacts[set.overflow[k].contact].manifold;
+    for (int j = 0; j < manifold.pointCount; ++j) manifold.points[j].supportImpulse = supportImpulseOf<F>(set, record, j);
   }
 }
 
@@ -829,17 +840,20 @@ void prefetchStoreTargets(const WideConstraint<F>& w, const WorldData& world) {
 // Each bundle writes only its own lanes' manifolds: side by side, fetching
 // the manifolds of the bundles ahead meanwhile (as fillBundle).
 template <class F>
-void storeWideImpulses(const WideContactSet& set, WorldData& world) {
-  const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(const_cast<WideContactSet&>(set));
+void storeWideImpulses(WideContactSet& set, WorldData& world) {
+  collectSupportImpulses<F>(set, world.tasks);
+  const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
   world.tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           visitFetchingAhead(
                               begin, end,
                               [&](std::int32_t b) { prefetchStoreTargets(bundles[std::size_t(b)], world); },
-                              [&](std::int32_t b) { storeBundleImpulses(bundles[std::size_t(b)], world); });
+                              [&](std::int32_t b) {
+                                storeBundleImpulses(set, bundles[std::size_t(b)],
+                                                    &set.laneSupportRecord[std::size_t(b) * F::kLanes], world);
+                              });
                         });
-  storeImpulses(set.overflow, world);
-  storeSupportWide<F>(const_cast<WideContactSet&>(set), world);
+  storeOverflowImpulses<F>(set, world);
 }
 
 }  // namespace

@@ -20,12 +20,8 @@
 namespace impulse {
 namespace {
 
-template <class F>
-WideSupportRow<F> emptySupportBundle() {
-  WideSupportRow<F> row{};  // padding lanes: the static dummy, no points
-  std::fill(std::begin(row.contact), std::end(row.contact), -1);
-  return row;
-}
+// What a padding lane reads: the static dummy, no contact, no points.
+const SupportLaneRecord kPaddingSupportLane{};
 
 // What a support row takes of a contact lane.
 template <class F>
@@ -84,40 +80,80 @@ Real slipFrictionOf(const ContactConstraint& c, bool upperIsB) {
   return std::abs(tangent) >= kSidewaysShare * friction * normal && normal > 0 ? friction : Real(0);
 }
 
-// One row's numbers into its lane, upper body as B: a row holding up A is
+// One row's numbers into its record, upper body as B: a row holding up A is
 // swapped and its normal negated, which leaves every separation and normal
 // speed as it was. finishSupportBundle derives the rest.
-template <class F>
-void packSupportLane(WideSupportRow<F>& w, int lane, const ContactConstraint& c, bool upperIsB) {
+void packSupportLane(SupportLaneRecord& r, const ContactConstraint& c, bool upperIsB) {
   const Vec2 normal = upperIsB ? c.normal : Vec2(-c.normal);
-  w.stateA[lane] = upperIsB ? c.stateA : c.stateB;
-  w.stateB[lane] = upperIsB ? c.stateB : c.stateA;
-  w.contact[lane] = c.contact;
-  setLane(w.normalX, lane, normal.x());
-  setLane(w.normalY, lane, normal.y());
-  setLane(w.invMass, lane, upperIsB ? c.invMassB : c.invMassA);
-  setLane(w.invInertia, lane, upperIsB ? c.invInertiaB : c.invInertiaA);
-  setLane(w.slipFriction, lane, slipFrictionOf(c, upperIsB));
+  r.stateA = upperIsB ? c.stateA : c.stateB;
+  r.stateB = upperIsB ? c.stateB : c.stateA;
+  r.contact = c.contact;
+  r.normalX = normal.x();
+  r.normalY = normal.y();
+  r.invMass = upperIsB ? c.invMassB : c.invMassA;
+  r.invInertia = upperIsB ? c.invInertiaB : c.invInertiaA;
+  r.slipFriction = slipFrictionOf(c, upperIsB);
   for (int j = 0; j < 2; ++j) {
     const ConstraintPoint& cp = c.points[j];
     const Vec2& lower = upperIsB ? cp.anchorA : cp.anchorB;
     const Vec2& upper = upperIsB ? cp.anchorB : cp.anchorA;
-    WideSupportPoint<F>& p = w.points[j];
-    setLane(p.anchorAX, lane, lower.x());
-    setLane(p.anchorAY, lane, lower.y());
-    setLane(p.anchorBX, lane, upper.x());
-    setLane(p.anchorBY, lane, upper.y());
-    setLane(p.baseSeparation, lane, cp.baseSeparation);
-    setLaneFlag(p.present, lane, j < c.pointCount && cp.normalMass > 0);
+    SupportLaneRecord::Point& p = r.points[j];
+    p.anchorAX = lower.x();
+    p.anchorAY = lower.y();
+    p.anchorBX = upper.x();
+    p.anchorBY = upper.y();
+    p.baseSeparation = cp.baseSeparation;
+    p.present = j < c.pointCount && cp.normalMass > 0 ? ~std::uint32_t(0) : 0;
   }
 }
 
-// The upper body's response K (impulse to normal speed) at the points,
-// K_ij = invMass + invInertia * arm_i * arm_j, inverted once per step: both
-// points together (zero when singular or a point is missing), and each
-// alone (1 / K_jj; zero for a missing point).
+// The column of a record's field at `offset` (of point j's at `pointOffset`).
+constexpr std::size_t laneColumn(std::size_t offset) { return floatAt(offset); }
+constexpr std::size_t lanePointColumn(int j, std::size_t pointOffset) {
+  return floatAt(offsetof(SupportLaneRecord, points) + std::size_t(j) * sizeof(SupportLaneRecord::Point) +
+                 pointOffset);
+}
+
+// The bundle's lanes from their records, as columns.
 template <class F>
-void finishSupportBundle(WideSupportRow<F>& row) {
+void loadSupportLanes(const void* const records[F::kLanes], WideSupportRow<F>& row) {
+  constexpr std::size_t kFloats = sizeof(SupportLaneRecord) / sizeof(float);
+  F column[kFloats];
+  loadRecordColumns<F>(records, kFloats, column);
+  storeIndices(column[laneColumn(offsetof(SupportLaneRecord, stateA))], row.stateA);
+  storeIndices(column[laneColumn(offsetof(SupportLaneRecord, stateB))], row.stateB);
+  storeIndices(column[laneColumn(offsetof(SupportLaneRecord, contact))], row.contact);
+  row.normalX = column[laneColumn(offsetof(SupportLaneRecord, normalX))];
+  row.normalY = column[laneColumn(offsetof(SupportLaneRecord, normalY))];
+  row.invMass = column[laneColumn(offsetof(SupportLaneRecord, invMass))];
+  row.invInertia = column[laneColumn(offsetof(SupportLaneRecord, invInertia))];
+  row.slipFriction = column[laneColumn(offsetof(SupportLaneRecord, slipFriction))];
+  for (int j = 0; j < 2; ++j) {
+    WideSupportPoint<F>& p = row.points[j];
+    using Point = SupportLaneRecord::Point;
+    p.anchorAX = column[lanePointColumn(j, offsetof(Point, anchorAX))];
+    p.anchorAY = column[lanePointColumn(j, offsetof(Point, anchorAY))];
+    p.anchorBX = column[lanePointColumn(j, offsetof(Point, anchorBX))];
+    p.anchorBY = column[lanePointColumn(j, offsetof(Point, anchorBY))];
+    p.baseSeparation = column[lanePointColumn(j, offsetof(Point, baseSeparation))];
+    p.present = column[lanePointColumn(j, offsetof(Point, present))];
+  }
+}
+
+// Support bundle b from its lanes' records (a short bundle's others read
+// the padding record), and the upper body's response K (impulse to normal
+// speed) at the points, K_ij = invMass + invInertia * arm_i * arm_j,
+// inverted once per step: both points together (zero when singular or a
+// point is missing), and each alone (1 / K_jj; zero for a missing point).
+template <class F>
+void finishSupportBundle(const WideContactSet& set, std::int32_t b, WideSupportRow<F>& row) {
+  const int lanes = set.supportSlices.lanes[std::size_t(b)];
+  const void* records[F::kLanes];
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    records[lane] = lane < lanes ? &set.supportLanes[std::size_t(b) * F::kLanes + std::size_t(lane)]
+                                 : &kPaddingSupportLane;
+  }
+  loadSupportLanes<F>(records, row);
   const F zero = simd::broadcast<F>(0);
   for (WideSupportPoint<F>& p : row.points) {
     p.arm = simd::select(p.present, p.anchorBX * row.normalY - p.anchorBY * row.normalX, zero);
@@ -143,42 +179,54 @@ void finishSupportBundle(WideSupportRow<F>& row) {
 }
 
 // Lays the rows out group by group, each group in bundles of F::kLanes, and
-// notes each row's lane by its contact, which fills the lane as it is
-// prepared (packSupportLanes): the contact's numbers are at hand then.
-// Short bundles start empty; every other lane is written whole.
+// notes each row's lane by its contact, which fills the lane's record as it
+// is prepared (packSupportLanes): the contact's numbers are at hand then.
 template <class F>
 void placeSupportRows(const SupportPass& pass, std::size_t refCount, WideContactSet& set) {
-  static const WideSupportRow<F> kEmpty = emptySupportBundle<F>();
   const std::span<const std::int32_t> groups = pass.groupStarts();
   set.supportGroupBundle.resize(groups.size());
   set.supportSlices.cut(groups, F::kLanes, set.supportGroupBundle);
   const std::int32_t count = set.supportSlices.count();
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   bundles.resize(std::size_t(count));
+  set.supportLanes.resize(std::size_t(count) * F::kLanes);
   set.supportPlaceOf.assign(refCount, SupportPlace{});
   for (std::int32_t b = 0; b < count; ++b) {
     const std::int32_t first = set.supportSlices.first[std::size_t(b)];
-    const int lanes = set.supportSlices.lanes[std::size_t(b)];
-    if (lanes < F::kLanes) bundles[std::size_t(b)] = kEmpty;
-    for (int lane = 0; lane < lanes; ++lane) {
+    std::uint8_t leans = 0;
+    for (int lane = 0; lane < set.supportSlices.lanes[std::size_t(b)]; ++lane) {
       const SupportRow& row = pass.rows()[std::size_t(first + lane)];
       set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
-      setLaneFlag(bundles[std::size_t(b)].leans, lane, row.leans);
+      if (row.leans) leans = std::uint8_t(leans | (1u << lane));
     }
+    bundles[std::size_t(b)].leans = simd::maskOfBits<F>(leans);
   }
+}
+
+// The index of a row's lane record (SupportPlace), -1 for a contact that
+// holds nothing up.
+template <class F>
+std::int32_t supportRecordOf(const SupportPlace& place) {
+  return place.bundle < 0 ? -1 : place.bundle * F::kLanes + place.lane;
+}
+
+template <class F>
+SupportLaneRecord& supportLaneOf(WideContactSet& set, const SupportPlace& place) {
+  return set.supportLanes[std::size_t(supportRecordOf<F>(place))];
 }
 
 // The support lanes of a prepared contact bundle's lanes (`entries`, as
 // refs), for the lanes whose contact holds a body up.
 template <class F>
-void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std::span<const std::int32_t> entries) {
-  std::vector<WideSupportRow<F>>& support = supportBundlesOf<F>(set);
+void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std::int32_t b,
+                      std::span<const std::int32_t> entries) {
   for (std::size_t lane = 0; lane < entries.size(); ++lane) {
     const SupportPlace place = set.supportPlaceOf[std::size_t(entries[lane])];
+    set.laneSupportRecord[std::size_t(b) * F::kLanes + lane] = supportRecordOf<F>(place);
     if (place.bundle < 0) continue;
     ContactConstraint scratch;
     unpackForSupport(bundle, static_cast<int>(lane), scratch);
-    packSupportLane(support[std::size_t(place.bundle)], place.lane, scratch, place.upperIsB);
+    packSupportLane(supportLaneOf<F>(set, place), scratch, place.upperIsB);
   }
 }
 
@@ -188,7 +236,7 @@ void finishSupportBundles(const TaskRunner& tasks, WideContactSet& set) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
                   [&](std::int32_t begin, std::int32_t end) {
-                    for (std::int32_t b = begin; b < end; ++b) finishSupportBundle(bundles[std::size_t(b)]);
+                    for (std::int32_t b = begin; b < end; ++b) finishSupportBundle(set, b, bundles[std::size_t(b)]);
                   });
 }
 
@@ -339,36 +387,31 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
   }
 }
 
-// The last sub-step's impulses into the manifolds (next step's friction
-// limit and load); each row writes only its own contact's.
+// The last sub-step's impulses, bundle by bundle, into supportImpulses:
+// where the contacts' store takes them from (supportImpulseOf), in their
+// own order, instead of writing each row's manifold a second time.
 template <class F>
-void storeSupportBundle(const WideSupportRow<F>& row, WorldData& world) {
-  float impulse[2][F::kLanes];
-  for (int j = 0; j < 2; ++j) simd::store(impulse[j], row.points[j].impulse);
-  for (int lane = 0; lane < F::kLanes; ++lane) {
-    if (row.contact[lane] < 0) continue;
-    Manifold& manifold = world.contacts[row.contact[lane]].manifold;
-    for (int j = 0; j < manifold.pointCount; ++j) manifold.points[j].supportImpulse = impulse[j][lane];
-  }
-}
-
-// Starts loading the points row stores into.
-template <class F>
-void prefetchSupportTargets(const WideSupportRow<F>& row, const WorldData& world) {
-  for (int lane = 0; lane < F::kLanes; ++lane) {
-    if (row.contact[lane] >= 0) fetchLines(&world.contacts[row.contact[lane]].manifold.points);
-  }
-}
-
-template <class F>
-void storeSupportWide(WideContactSet& set, WorldData& world) {
+void collectSupportImpulses(WideContactSet& set, const TaskRunner& tasks) {
   const std::vector<WideSupportRow<F>>& rows = supportBundlesOf<F>(set);
-  world.tasks.forRanges(static_cast<std::int32_t>(rows.size()), kBundlesPerFillRange,
-                        [&](std::int32_t begin, std::int32_t end) {
-                          visitFetchingAhead(
-                              begin, end, [&](std::int32_t b) { prefetchSupportTargets(rows[std::size_t(b)], world); },
-                              [&](std::int32_t b) { storeSupportBundle(rows[std::size_t(b)], world); });
-                        });
+  set.supportImpulses.resize(rows.size() * 2 * F::kLanes);
+  tasks.forRanges(static_cast<std::int32_t>(rows.size()), kBundlesPerFillRange,
+                  [&](std::int32_t begin, std::int32_t end) {
+                    for (std::int32_t b = begin; b < end; ++b) {
+                      for (int j = 0; j < 2; ++j) {
+                        simd::store(&set.supportImpulses[(std::size_t(b) * 2 + std::size_t(j)) * F::kLanes],
+                                    rows[std::size_t(b)].points[j].impulse);
+                      }
+                    }
+                  });
+}
+
+// Point j's impulse of the row whose lane is record `record`
+// (collectSupportImpulses).
+template <class F>
+float supportImpulseOf(const WideContactSet& set, std::int32_t record, int j) {
+  const std::size_t bundle = std::size_t(record) / F::kLanes;
+  const std::size_t lane = std::size_t(record) % F::kLanes;
+  return set.supportImpulses[(bundle * 2 + std::size_t(j)) * F::kLanes + lane];
 }
 
 }  // namespace

@@ -8,6 +8,27 @@
 
 namespace impulse {
 
+/// One row's numbers, upper body as B, as its contact is prepared: written
+/// whole into one record, then read with the other lanes of its bundle and
+/// turned into the bundle's columns (finishSupportBundles). Written lane by
+/// lane into the bundle itself, each field had cost a scattered store.
+/// Laid out as whole rows of eight words (the columns' transpose).
+struct SupportLaneRecord {
+  std::int32_t stateA = 0;  ///< the lower body
+  std::int32_t stateB = 0;  ///< the upper body
+  std::int32_t contact = -1;
+  float normalX = 0, normalY = 0;
+  float invMass = 0, invInertia = 0;
+  float slipFriction = 0;
+  struct Point {
+    float anchorAX = 0, anchorAY = 0, anchorBX = 0, anchorBY = 0;
+    float baseSeparation = 0;
+    std::uint32_t present = 0;  ///< all bits set where the point exists
+  } points[2];
+  std::int32_t unused[4] = {};
+};
+static_assert(sizeof(SupportLaneRecord) == 24 * sizeof(float));
+
 template <class F>
 struct WideSupportPoint {
   F anchorAX, anchorAY, anchorBX, anchorBY;
