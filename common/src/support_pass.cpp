@@ -103,7 +103,7 @@ void SupportPass::walkLevels() {
 // From the static dummy (state 0) over the level contacts
 // (ConstraintRef::facing) first: a column of circles against a wall touches
 // the static world at every storey, yet stands on the ground alone. The
-// bodies that leaves unreached but contacts between two moving bodies join
+// bodies this leaves unreached but contacts between two moving bodies join
 // to reached ones (an arch's upper stones, leaning on each other, and what
 // stands on them) are levelled next over those contacts too: a stack
 // standing on such a body is then held up from it.
