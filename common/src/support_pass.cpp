@@ -28,6 +28,14 @@ bool isJointed(const WorldData& world, std::int32_t state) {
   return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
 }
 
+// Whether either of a contact's shapes is round (a circle or a capsule:
+// those that roll, ShapeSlot::rollingRadius).
+bool touchesRound(const WorldData& world, const ConstraintRef& ref) {
+  const Contact& contact = world.contacts[std::size_t(ref.contact)];
+  return world.shapes[std::size_t(contact.shapeA)].rollingRadius > 0 ||
+         world.shapes[std::size_t(contact.shapeB)].rollingRadius > 0;
+}
+
 // A row's upper and lower body's inverse masses, as its ref carries them.
 Real upperInvMass(const SupportRow& row, const ConstraintRef& ref) {
   return row.upperIsB ? ref.invMassB : ref.invMassA;
@@ -106,21 +114,28 @@ void SupportPass::walkLevels() {
 // bodies this leaves unreached but contacts between two moving bodies join
 // to reached ones (an arch's upper stones, leaning on each other, and what
 // stands on them) are levelled next over those contacts too: a stack
-// standing on such a body is then held up from it.
-void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount) {
+// standing on such a body is then held up from it. Not over steep contacts
+// with a round shape: a circle in the hollow between two others rests
+// where its contacts, all through its centre, put it, and rows between the
+// circles found standing on such circles (most of a pile, 440 rows in 2 000
+// staggered circles, most of them leaning) kept stirring the pile, which
+// fell asleep after 6.1 s instead of 5.3.
+void SupportPass::levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount) {
   linkBodies(refs, stateCount, [](const ConstraintRef& ref) { return ref.facing != 0; });
   level_.assign(stateCount, kUnreached);
   hangs_.assign(stateCount, 0);
   level_[0] = 0;
   queue_.assign(1, 0);
   walkLevels();
+  const auto betweenBodies = [&](const ConstraintRef& ref) {
+    return ref.stateA != 0 && ref.stateB != 0 && (ref.facing != 0 || !touchesRound(world, ref));
+  };
   const auto unreached = [&](std::int32_t state) { return level_[std::size_t(state)] == kUnreached; };
   const auto leftBetweenBodies = [&](const ConstraintRef& ref) {
-    return ref.stateA != 0 && ref.stateB != 0 && unreached(ref.stateA) != unreached(ref.stateB);
+    return betweenBodies(ref) && unreached(ref.stateA) != unreached(ref.stateB);
   };
   if (std::none_of(refs.begin(), refs.end(), leftBetweenBodies)) return;
-  linkBodies(refs, stateCount,
-             [](const ConstraintRef& ref) { return ref.facing != 0 || (ref.stateA != 0 && ref.stateB != 0); });
+  linkBodies(refs, stateCount, [&](const ConstraintRef& ref) { return ref.facing != 0 || betweenBodies(ref); });
   walkLevels();
 }
 
@@ -255,7 +270,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     level_.assign(stateCount, kUnreached);
     return;
   }
-  levelBodies(refs, stateCount);
+  levelBodies(world, refs, stateCount);
 
   unsorted_.clear();
   rowLevel_.clear();

@@ -1,11 +1,14 @@
 // A stack standing on a body that only steep contacts hold (a keystone
 // wedged between two posts): the support pass levels the keystone through
 // its steep joints and holds the stack on it up storey by storey, so the
-// stack's soft contacts do not give under its weight.
+// stack's soft contacts do not give under its weight. Not through a round
+// body's steep contacts: a circle in a hollow holds no rows up.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <span>
 
@@ -71,6 +74,34 @@ TEST(WedgedStack, StackOnAKeystoneIsHeldUp_ItsContactsDoNotGive) {
               1000 * double(built - standing), 1000 * double(keystoneDrop));
   EXPECT_LT(built - standing, Real(0.0005));
   EXPECT_LT(keystoneDrop, Real(0.05)) << "the keystone stays wedged";
+}
+
+// A circle resting in the hollow between two circles on the ground (its
+// contacts 30 degrees off level), walls keeping those apart, and four boxes
+// stacked on it. The pass does not level bodies through a round shape's
+// steep contacts (rows between circles found standing on such circles kept
+// a pile of them stirring): over the first half second it holds up only
+// the two circles on the ground, not the boxes (five rows when it did).
+TEST(WedgedStack, StackOnACircleInAHollow_IsNotHeldUp) {
+  World world;
+  addGround(world);
+  addBox(world, {.center = Vec2(-1.5, 1), .halfWidth = Real(0.5), .halfHeight = 1, .isStatic = true});
+  addBox(world, {.center = Vec2(1.5, 1), .halfWidth = Real(0.5), .halfHeight = 1, .isStatic = true});
+  addCircle(world, {.center = Vec2(-0.5, 0.5), .radius = Real(0.5)});
+  addCircle(world, {.center = Vec2(0.5, 0.5), .radius = Real(0.5)});
+  const Real hollowTop = Real(0.5 + std::sqrt(0.75) + 0.5);
+  addCircle(world, {.center = Vec2(0, hollowTop - Real(0.5)), .radius = Real(0.5)});
+  for (int i = 0; i < 4; ++i) {
+    addBox(world, {.center = Vec2(0, hollowTop + Real(0.25 + 0.5 * i)), .halfWidth = Real(0.5),
+                   .halfHeight = Real(0.25)});
+  }
+  int mostRows = 0;
+  for (int i = 0; i < stepsFor(0.5); ++i) {
+    world.step(kDt);
+    mostRows = std::max(mostRows, world.profile().passes.supportRows);
+  }
+  std::printf("measured: at most %d support rows a step\n", mostRows);
+  EXPECT_EQ(mostRows, 2);
 }
 
 }  // namespace
