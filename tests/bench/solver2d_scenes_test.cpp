@@ -67,8 +67,8 @@ TEST(Solver2D, VerticalStack_EveryBoxWithinFiveCentimetresOfStraightBelow) {
 // its start (Box2D v3: 31 cm): the keystone, the two stones beside it
 // and the slabs drop together as the thrust that holds them builds, their
 // joints with the next stones slipping at friction 0.6. From then on it
-// holds: no piece moves 6.2 mm after the first second (its haunches ease
-// outwards as the slabs' load settles into them), and all rest at the end
+// holds: no piece moves 6.2 mm after the first second (the stone above
+// each foot slides about 6 mm inwards on it), and all rest at the end
 // (0.25 mm/s). Held to under 3 cm, under 1 cm after the first second, and
 // at rest.
 TEST(Solver2D, Arch_SettlesUnderThreeCentimetres_ThenHoldsWithinOneCentimetre) {
