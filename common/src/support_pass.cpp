@@ -127,15 +127,15 @@ void SupportPass::levelBodies(const WorldData& world, std::span<const Constraint
   level_[0] = 0;
   queue_.assign(1, 0);
   walkLevels();
-  const auto betweenBodies = [&](const ConstraintRef& ref) {
-    return ref.stateA != 0 && ref.stateB != 0 && (ref.facing != 0 || !touchesRound(world, ref));
-  };
   const auto unreached = [&](std::int32_t state) { return level_[std::size_t(state)] == kUnreached; };
   const auto leftBetweenBodies = [&](const ConstraintRef& ref) {
-    return betweenBodies(ref) && unreached(ref.stateA) != unreached(ref.stateB);
+    return ref.stateA != 0 && ref.stateB != 0 && unreached(ref.stateA) != unreached(ref.stateB) &&
+           !touchesRound(world, ref);
   };
   if (std::none_of(refs.begin(), refs.end(), leftBetweenBodies)) return;
-  linkBodies(refs, stateCount, [&](const ConstraintRef& ref) { return ref.facing != 0 || betweenBodies(ref); });
+  linkBodies(refs, stateCount, [&](const ConstraintRef& ref) {
+    return ref.facing != 0 || (ref.stateA != 0 && ref.stateB != 0 && !touchesRound(world, ref));
+  });
   walkLevels();
 }
 
