@@ -148,16 +148,12 @@ TEST(CompactSnapshots, SettlingScene_AtMostTwoAndAHalfBitsPerBodyPerSnapshot_Wit
 }
 
 // Staggered rows roll off each other: every residual is busy and wide, and
-// the bits go to information, not to the layout (layout 1: 9.75; layout 2:
-// 8.05, and 8.40 once the support pass levelled bodies over level contacts
-// only, which changed how the rows settle). Per snapshot the figure follows
-// how long the scene takes to sleep: with exact circle manifolds (issue 10)
-// it sleeps after 4.6 s instead of 5.3, the quiet snapshots at the end are
-// fewer, and the figure rose from 8.49 to 9.63 bits while the whole settle
-// took fewer bytes (166 per body, 168 before); since the narrow phase walks
-// contacts by slot it sleeps after 4.4 s, at 10.06 bits and 164.7 bytes per
-// body. So the whole settle is held to its measure, and the per-snapshot
-// figure to a looser bound.
+// the bits go to information, not to the layout (layout 1: 9.75 bits per
+// body per snapshot). Per snapshot the figure follows how long the scene
+// takes to sleep: a quicker settle leaves fewer quiet snapshots at the end
+// and raises it while the whole settle takes fewer bytes. So the whole
+// settle is held to its measure, and the per-snapshot figure to a looser
+// bound. Today it sleeps after 5.3 s, at 7.5 bits and 149.3 bytes per body.
 TEST(CompactSnapshots, StaggeredSettlingScene_AtMostTenAndAHalfBitsAndHundredSeventyBytesPerBody_WithinAQuantum) {
   const SettleCost cost = settleAndMeasure(0.2);
   ASSERT_FALSE(HasFailure());
