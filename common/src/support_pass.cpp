@@ -110,16 +110,9 @@ void SupportPass::walkLevels() {
 
 // From the static dummy (state 0) over the level contacts
 // (ConstraintRef::facing) first: a column of circles against a wall touches
-// the static world at every storey, yet stands on the ground alone. The
-// bodies this leaves unreached but contacts between two moving bodies join
-// to reached ones (an arch's upper stones, leaning on each other, and what
-// stands on them) are levelled next over those contacts too: a stack
-// standing on such a body is then held up from it. Not over steep contacts
-// with a round shape: a circle in the hollow between two others rests
-// where its contacts, all through its centre, put it, and rows between the
-// circles found standing on such circles (most of a pile, 440 rows in 2 000
-// staggered circles, most of them leaning) kept stirring the pile, which
-// fell asleep after 6.1 s instead of 5.3.
+// the static world at every storey, yet stands on the ground alone. Then,
+// where some are left unreached, over the steep contacts between two moving
+// bodies too, but those with a round shape (support_pass.h says why).
 void SupportPass::levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount) {
   linkBodies(refs, stateCount, [](const ConstraintRef& ref) { return ref.facing != 0; });
   level_.assign(stateCount, kUnreached);
@@ -128,14 +121,15 @@ void SupportPass::levelBodies(const WorldData& world, std::span<const Constraint
   queue_.assign(1, 0);
   walkLevels();
   const auto unreached = [&](std::int32_t state) { return level_[std::size_t(state)] == kUnreached; };
-  const auto leftBetweenBodies = [&](const ConstraintRef& ref) {
-    return ref.stateA != 0 && ref.stateB != 0 && unreached(ref.stateA) != unreached(ref.stateB) &&
-           !touchesRound(world, ref);
+  const auto betweenMovingAngularShapes = [&](const ConstraintRef& ref) {
+    return ref.stateA != 0 && ref.stateB != 0 && !touchesRound(world, ref);
   };
-  if (std::none_of(refs.begin(), refs.end(), leftBetweenBodies)) return;
-  linkBodies(refs, stateCount, [&](const ConstraintRef& ref) {
-    return ref.facing != 0 || (ref.stateA != 0 && ref.stateB != 0 && !touchesRound(world, ref));
+  const bool anyLeftOver = std::any_of(refs.begin(), refs.end(), [&](const ConstraintRef& ref) {
+    return unreached(ref.stateA) != unreached(ref.stateB) && betweenMovingAngularShapes(ref);
   });
+  if (!anyLeftOver) return;
+  linkBodies(refs, stateCount,
+             [&](const ConstraintRef& ref) { return ref.facing != 0 || betweenMovingAngularShapes(ref); });
   walkLevels();
 }
 

@@ -44,8 +44,8 @@
 // keystone, and the arch crept apart at 2-4 mm/s. Not through a round
 // shape's steep contacts: a circle in a pile's hollow rests where its
 // contacts, all through its centre, put it, and rows on the circles found
-// standing on such circles stirred the pile (2 000 staggered circles fell
-// asleep after 6.1 s instead of 5.3).
+// standing on such circles (most of a pile, most of them leaning) stirred
+// the pile, which took a sixth longer to fall asleep.
 
 #include <cstdint>
 #include <span>
@@ -94,9 +94,10 @@ class SupportPass {
   /// level contacts (normal within 25 degrees of up: a box on the ground is
   /// 1, a box on it 2), then the bodies these leave unreached over any
   /// contact between two moving bodies but steep ones with a round shape
-  /// (an arch's upper stones, leaning on each other, and the slabs on them); takes as rows the level contacts
-  /// whose upper body is a level above the lower one and has no joints, and
-  /// whose lower body was not reached over a steep contact, lowest storey
+  /// (an arch's upper stones, leaning on each other, and the slabs on
+  /// them); takes as rows the level contacts whose upper body is a level
+  /// above the lower one and has no joints, and whose lower body was not
+  /// reached over a steep contact, lowest storey
   /// first: those on the static world, and those of the stacks (bodies
   /// joined by such contacts) whose estimated sink under the soft contacts
   /// of `softness` reaches kSupportedSink;
