@@ -8,6 +8,17 @@ namespace {
 using client::Client;
 using Clock = std::chrono::steady_clock;
 
+// What a hundred clients may leave behind in the server's resident size:
+// allocator slack, not per-client state. Under AddressSanitizer freed memory
+// waits in its quarantine instead of being reused, so the resident size
+// grows with churn by design; there LeakSanitizer, which fails the server's
+// exit (stop() below), is what finds anything left behind.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr long kLeftBehindKb = 64 * 1024;
+#else
+constexpr long kLeftBehindKb = 8 * 1024;
+#endif
+
 TEST(Churn, HundredClientsConnectAndDisconnectInALoop) {
   ServerProcess server({"--preset", "8"});
   Client observer(localClient(server.port(), "observer", false));
@@ -30,7 +41,7 @@ TEST(Churn, HundredClientsConnectAndDisconnectInALoop) {
   for (int i = 0; i < 50; ++i) RawConnection connection(server.port());
 
   EXPECT_EQ(clientsOnceSettled(observer, 1), 1u);
-  EXPECT_LT(server.residentKb() - before, 8 * 1024);
+  EXPECT_LT(server.residentKb() - before, kLeftBehindKb);
   EXPECT_EQ(observer.ping().stats().ticks_skipped(), 0u);
   EXPECT_EQ(server.stop(), 0);
 }

@@ -4,9 +4,6 @@
 // AddField, on every spawn under fields and on LoadScene, refused by name.
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <cstdio>
-
 #include "impulse/server/simulation.h"
 #include "impulse/wire/scene_convert.h"
 
@@ -57,14 +54,6 @@ TEST(FieldLimits, GravitationPastTheCostBudgetIsRefused_AndSoAreBodiesPastIt) {
             "with 1415 bodies the room's force fields would cost 1000405 body interactions per "
             "step, over the room's budget of 1000000 (--max-field-cost): remove a field first");
   EXPECT_EQ(simulation.world().bodyCount(), 1414);
-
-  // What the budget buys: one step of gravitation over 1414 bodies.
-  const auto start = std::chrono::steady_clock::now();
-  simulation.step();
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::printf("a step of gravitation over 1414 bodies (the budget): %.1f ms\n", ms);
-  EXPECT_LT(ms, 100.0);
 }
 
 TEST(FieldLimits, ASceneWhoseFieldsBreakTheBudgetIsRefused) {
