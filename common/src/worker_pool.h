@@ -40,7 +40,7 @@ class WorkerPool {
   void run(TaskFunction* task, int itemCount, int minRange, void* taskContext);
 
  private:
-  static constexpr int kPartsPerWorker = 4;
+  static constexpr int kPartsPerWorker = 8;
 
   // A thread's share of a phase: parts [next, end) are still unclaimed.
   struct alignas(64) Share {
