@@ -80,13 +80,23 @@ void WorkerPool::runParts(Phase& phase, int worker) {
 
 void WorkerPool::run(TaskFunction* task, int itemCount, int minRange, void* taskContext) {
   if (itemCount <= 0) return;
-  const int workers = workerCount();
   const int byRange = std::max(1, itemCount / std::max(minRange, 1));
-  const int parts = std::min(workers * kPartsPerWorker, byRange);
+  const int parts = std::min(workerCount() * kPartsPerWorker, byRange);
   if (parts == 1) {
     task(0, itemCount, 0, taskContext);
     return;
   }
+  Phase& phase = publish(task, itemCount, parts, taskContext);
+  runParts(phase, 0);
+  for (int spins = 0; phase.unfinished.load(std::memory_order_acquire) > 0;) spinOrYield(spins);
+}
+
+void WorkerPool::wake() {
+  if (sleepers_.load() > 0) publish(nullptr, 0, 0, nullptr);
+}
+
+WorkerPool::Phase& WorkerPool::publish(TaskFunction* task, int itemCount, int parts, void* taskContext) {
+  const int workers = workerCount();
   const std::uint64_t next = generation_.load() + 1;
   Phase& phase = phases_[next % 2];
   // A thread still looking at the phase before last must leave it first.
@@ -103,8 +113,7 @@ void WorkerPool::run(TaskFunction* task, int itemCount, int minRange, void* task
   phase.unfinished.store(parts, std::memory_order_relaxed);
   generation_.store(next);
   if (sleepers_.load() > 0) generation_.notify_all();
-  runParts(phase, 0);
-  for (int spins = 0; phase.unfinished.load(std::memory_order_acquire) > 0;) spinOrYield(spins);
+  return phase;
 }
 
 std::uint64_t WorkerPool::awaitGeneration(std::uint64_t seen) {
