@@ -21,7 +21,7 @@ constexpr int kSpinsPerClockRead = 64;
 constexpr int kSpinsBeforeYield = 2048;
 // Spins of a thread waiting for the others to finish a phase before it
 // yields to them, in case one of them was preempted.
-constexpr int kSpinsBeforeSleep = 4000;
+constexpr int kWaitSpinsBeforeYield = 4000;
 
 void relaxCpu() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -47,7 +47,7 @@ WorkerPool::~WorkerPool() {
 }
 
 void WorkerPool::spinOrYield(int& spins) {
-  if (++spins < kSpinsBeforeSleep) {
+  if (++spins < kWaitSpinsBeforeYield) {
     relaxCpu();
   } else {
     std::this_thread::yield();  // a thread we wait for was preempted: let it run

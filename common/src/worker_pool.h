@@ -8,7 +8,7 @@
 //
 // Threads poll between the phases of a step (a phase is tens of
 // microseconds; waking a sleeping thread costs as much) and sleep when no
-// phase comes for a while (between steps).
+// phase comes for a while (between steps); a step wakes them as it begins.
 //
 // A step runs a few hundred phases, so what a phase costs besides its
 // parts counts: a thread claims its own parts off a counter on its own
