@@ -144,15 +144,14 @@ bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, cons
 bool BroadPhase::growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
   assert(kindOf(proxyKey) == ProxyKind::Movable);
   if (holds(proxyKey, tightAABB, motion)) return false;
-  trees_[treeIndex(ProxyKind::Movable)].setLeafBox(nodeOf(proxyKey), fatten(tightAABB, ProxyKind::Movable, motion));
+  DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
+  movable.setLeafBox(nodeOf(proxyKey), fatten(tightAABB, ProxyKind::Movable, motion));
+  movable.markForRebuild(nodeOf(proxyKey));
   recordUserBox(proxyKey);
   return true;
 }
 
-void BroadPhase::queueGrown(std::int32_t proxyKey) {
-  trees_[treeIndex(ProxyKind::Movable)].markForRebuild(nodeOf(proxyKey));
-  moveBuffer_.push_back(proxyKey);
-}
+void BroadPhase::queueGrown(std::int32_t proxyKey) { moveBuffer_.push_back(proxyKey); }
 
 bool BroadPhase::holds(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) const {
   return trees_[treeIndex(kindOf(proxyKey))].box(nodeOf(proxyKey)).contains(expectedReach(tightAABB, motion));

@@ -1,6 +1,7 @@
 #include "impulse/dynamic_tree.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -118,12 +119,16 @@ void DynamicTree::enlargeProxy(std::int32_t node, const AABB& box) {
 }
 
 void DynamicTree::markForRebuild(std::int32_t node) {
-  // Marking stops at the first node marked before, whose ancestors are all
-  // marked. Their boxes are left as they are: the rebuild frees every
-  // marked node and computes the boxes of the nodes it makes.
-  for (std::int32_t index = nodes_[node].parent; index != kNull && !nodes_[index].enlarged;
-       index = nodes_[index].parent) {
-    nodes_[index].enlarged = true;
+  // Marking stops at the first node marked before: whoever marked it goes
+  // on to the root, so its ancestors are all marked by the time the marking
+  // ends, whichever thread marks which leaf's first. The flag is all that is
+  // written (atomically: two threads may mark one node), never the boxes:
+  // the rebuild frees every marked node and computes the boxes of the nodes
+  // it makes.
+  for (std::int32_t index = nodes_[node].parent; index != kNull; index = nodes_[index].parent) {
+    const std::atomic_ref<bool> enlarged(nodes_[index].enlarged);
+    if (enlarged.load(std::memory_order_relaxed)) return;
+    enlarged.store(true, std::memory_order_relaxed);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "joint_constraints.h"
 
 #include <algorithm>
+#include <array>
 
 #include "contact_solver_wide.h"
 #include "counting_sort.h"
@@ -153,7 +154,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   Real hertz = Real(0.25) / step.h;
   pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
   tree_.order(rows_, world.solverStates.size(), pass_.rigid, world.tasks);
-  placeBlocks();
+  placeBlocks(world.tasks);
   fillBlocks(world.tasks);
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   return false;
@@ -181,34 +182,67 @@ void JointConstraints::findJointSides(const WorldData& world) {
 // the tree pass solves exactly stay rows: the tree pass reads and writes
 // their impulses during the step, which a pin block holds (a revolute block
 // leaves them in the rows).
-void JointConstraints::placeBlocks() {
-  placeOf_.assign(order_.size(), {});
-  std::int32_t pinBlocks = 0;
-  std::int32_t revoluteBlocks = 0;
+void JointConstraints::placeBlocks(const TaskRunner& tasks) {
+  // Overflow rows stay out of blocks; the coloured rows are all written
+  // below, side by side, a colour to a range: first each row's kind and
+  // each colour's counts, then (from where each colour starts, summed in
+  // order) each row's lane or place beside the blocks.
+  placeOf_.resize(order_.size());
+  std::fill(placeOf_.begin() + colorStarts_[GraphColoring::kOverflow], placeOf_.end(), BlockPlace{});
   const int colours = coloursTaken(colorStarts_);
+  std::array<ColourRows, GraphColoring::kOverflow> counts{};
+  tasks.forRanges(colours, 1, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t color = begin; color < end; ++color) counts[std::size_t(color)] = markRowKinds(color);
+  });
   for (int color = 0; color < colours; ++color) {
-    std::int32_t pins = 0;
-    std::int32_t revolutes = 0;
-    for (std::int32_t r = colorStarts_[std::size_t(color)];
-         r < colorStarts_[std::size_t(color) + 1]; ++r) {
-      const JointRow& row = rows_[std::size_t(r)];
-      if (row.plainPin && !row.inTree) {
-        placeOf_[std::size_t(r)] = {BlockKind::Pin, pinBlocks * PinGeometry::kLanes + pins++};
-      } else if (isTurningRevolute(row)) {
-        placeOf_[std::size_t(r)] = {BlockKind::Revolute,
-                                    revoluteBlocks * PinGeometry::kLanes + revolutes++};
-      } else {
-        rowsBesidePins_.push_back(r);
-      }
-    }
-    pinBlocks += (pins + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
-    revoluteBlocks += (revolutes + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
-    pinBlockStarts_[std::size_t(color) + 1] = pinBlocks;
-    revoluteBlockStarts_[std::size_t(color) + 1] = revoluteBlocks;
-    besideStarts_[std::size_t(color) + 1] = std::int32_t(rowsBesidePins_.size());
+    const ColourRows& rows = counts[std::size_t(color)];
+    const auto next = std::size_t(color) + 1;
+    pinBlockStarts_[next] = pinBlockStarts_[next - 1] + (rows.pins + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
+    revoluteBlockStarts_[next] =
+        revoluteBlockStarts_[next - 1] + (rows.revolutes + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
+    besideStarts_[next] = besideStarts_[next - 1] + rows.beside;
   }
-  pinBlocks_.resize(std::size_t(pinBlocks));
-  revoluteBlocks_.resize(std::size_t(revoluteBlocks));
+  rowsBesidePins_.resize(std::size_t(besideStarts_[std::size_t(colours)]));
+  tasks.forRanges(colours, 1, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t color = begin; color < end; ++color) placeRowsOfColour(color);
+  });
+  pinBlocks_.resize(std::size_t(pinBlockStarts_[std::size_t(colours)]));
+  revoluteBlocks_.resize(std::size_t(revoluteBlockStarts_[std::size_t(colours)]));
+}
+
+// Each row of the colour marked with the kind of block it goes in (None:
+// beside the blocks), and the colour's counts of each.
+JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) {
+  ColourRows counts;
+  for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
+    const JointRow& row = rows_[std::size_t(r)];
+    BlockKind kind = BlockKind::None;
+    if (row.plainPin && !row.inTree) {
+      kind = BlockKind::Pin;
+      ++counts.pins;
+    } else if (isTurningRevolute(row)) {
+      kind = BlockKind::Revolute;
+      ++counts.revolutes;
+    } else {
+      ++counts.beside;
+    }
+    placeOf_[std::size_t(r)] = {kind, 0};
+  }
+  return counts;
+}
+
+// Each blocked row of the colour its lane (block times eight plus lane, by
+// rank within its kind), each other row its place beside the blocks.
+void JointConstraints::placeRowsOfColour(std::int32_t color) {
+  std::int32_t pin = pinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+  std::int32_t revolute = revoluteBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+  std::int32_t beside = besideStarts_[std::size_t(color)];
+  for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
+    BlockPlace& place = placeOf_[std::size_t(r)];
+    if (place.kind == BlockKind::Pin) place.lane = pin++;
+    if (place.kind == BlockKind::Revolute) place.lane = revolute++;
+    if (place.kind == BlockKind::None) rowsBesidePins_[std::size_t(beside++)] = r;
+  }
 }
 
 // The last block of each colour that has any, reset: the lanes a colour's

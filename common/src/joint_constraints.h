@@ -35,7 +35,16 @@ class JointConstraints final : public ConstraintKind {
   template <class Visit, class VisitPins, class VisitRevolutes>
   void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins, VisitRevolutes&& visitRevolutes);
   void findJointSides(const WorldData& world);
-  void placeBlocks();
+  /// How many of a colour's rows go in pin blocks, in revolute blocks and
+  /// beside them.
+  struct ColourRows {
+    std::int32_t pins = 0;
+    std::int32_t revolutes = 0;
+    std::int32_t beside = 0;
+  };
+  void placeBlocks(const TaskRunner& tasks);
+  ColourRows markRowKinds(std::int32_t color);
+  void placeRowsOfColour(std::int32_t color);
   void fillBlocks(const TaskRunner& tasks);
 
   std::vector<JointRow> rows_;

@@ -54,6 +54,7 @@ void loadState(WorldData& world, std::size_t k, Real h) {
   body.center0 = body.transform.p;
   body.rotation0 = body.transform.q;
   SolverState& state = world.solverStates[k];
+  state = SolverState{};
   state.linearVelocity = body.linearVelocity;
   state.angularVelocity = body.angularVelocity;
   SolverIntegration& in = world.solverIntegration[k];
@@ -69,7 +70,10 @@ void loadState(WorldData& world, std::size_t k, Real h) {
 
 void loadStates(WorldData& world, Real h) {
   const auto count = world.awakeBodies.size() + 1;
-  world.solverStates.assign(count, SolverState{});
+  // Each state is cleared where it is loaded, side by side; only the
+  // static dummy's here.
+  world.solverStates.resize(count);
+  world.solverStates[0] = SolverState{};
   world.solverIntegration.resize(count);
   forEachState(world, count, [&](std::size_t k) { loadState(world, k, h); });
 }
@@ -102,12 +106,13 @@ void integrateVelocities(WorldData& world, Real h) {
   });
 }
 
+void integratePosition(SolverState& state, Real h) {
+  state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
+  state.deltaPosition += h * state.linearVelocity;
+}
+
 void integratePositions(WorldData& world, Real h) {
-  forEachState(world, world.solverStates.size(), [&](std::size_t k) {
-    SolverState& state = world.solverStates[k];
-    state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
-    state.deltaPosition += h * state.linearVelocity;
-  });
+  forEachState(world, world.solverStates.size(), [&](std::size_t k) { integratePosition(world.solverStates[k], h); });
 }
 
 // A body being pushed out of an overlap moves without velocity; it must not
@@ -120,6 +125,8 @@ void keepAwakeWhilePushed(Body& body, const SolverState& pseudo, const WorldSett
 // Split impulse for intrusions: the push pass runs on pseudo velocities that
 // move the bodies this sub-step and are then dropped, so pushing overlap out
 // never becomes real velocity. The real velocities are parked meanwhile.
+// Each body's end (moving by both, taking back the real velocity) is one
+// pass: a pass over the bodies costs a hand-off between threads.
 void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* const> kinds,
                                 const SubStep& sub, Real h) {
   const std::size_t count = world.solverStates.size();
@@ -138,12 +145,9 @@ void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* cons
     const ParkedVelocity& real = world.parkedVelocities[k];
     state.linearVelocity += real.linear;
     state.angularVelocity += real.angular;
-  });
-  integratePositions(world, h);
-  forEachState(world, count, [&](std::size_t k) {
-    SolverState& state = world.solverStates[k];
-    state.linearVelocity = world.parkedVelocities[k].linear;
-    state.angularVelocity = world.parkedVelocities[k].angular;
+    integratePosition(state, h);
+    state.linearVelocity = real.linear;
+    state.angularVelocity = real.angular;
   });
 }
 

@@ -34,6 +34,10 @@ void TaskRunner::configure(const TaskSettings& requested) {
   if (ownThreads) pool_ = std::make_unique<WorkerPool>(next.workerCount);
 }
 
+void TaskRunner::stepBegins() const {
+  if (pool_) pool_->wake();
+}
+
 void TaskRunner::dispatch(TaskFunction* task, int count, int minRange, void* context) const {
   if (pool_) {
     pool_->run(task, count, minRange, context);

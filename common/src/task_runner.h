@@ -26,6 +26,9 @@ class TaskRunner {
   /// worker count or the callbacks changed, and does nothing otherwise.
   void configure(const TaskSettings& settings);
   int workerCount() const { return settings_.workerCount; }
+  /// A step begins: the world's own threads, if they sleep, are woken now,
+  /// so that they poll by its first parallel phase.
+  void stepBegins() const;
 
   /// Calls first() and second(), at once when there is a thread for each
   /// and the `items` each works through are at least `minItems` (fewer cost

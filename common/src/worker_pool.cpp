@@ -1,14 +1,27 @@
 #include "worker_pool.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace impulse {
 
 namespace {
 
-// About 0.1 ms of polling: longer than any gap between two phases of a
-// step, far shorter than a frame.
-constexpr int kSpinsBeforeSleep = 4000;
+// How long a worker polls for the next phase before it sleeps: longer than
+// the serial stretches of a step (the pair search's end, the top of the
+// tree's rebuild: up to a few tenths of a millisecond on 10 000 bodies),
+// since a sleeping worker takes tens of microseconds to wake, and short
+// beside a frame. Counted on the clock: a `pause` takes 10 to 140 cycles
+// depending on the processor.
+constexpr std::chrono::microseconds kPollBeforeSleep{400};
+// Polls between two readings of the clock, about a microsecond. Past the
+// first kSpinsBeforeYield, each reading also yields: on a loaded machine
+// the thread lets others run instead of burning their time.
+constexpr int kSpinsPerClockRead = 64;
+constexpr int kSpinsBeforeYield = 2048;
+// Spins of a thread waiting for the others to finish a phase before it
+// yields to them, in case one of them was preempted.
+constexpr int kWaitSpinsBeforeYield = 4000;
 
 void relaxCpu() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -34,28 +47,35 @@ WorkerPool::~WorkerPool() {
 }
 
 void WorkerPool::spinOrYield(int& spins) {
-  if (++spins < kSpinsBeforeSleep) {
+  if (++spins < kWaitSpinsBeforeYield) {
     relaxCpu();
   } else {
     std::this_thread::yield();  // a thread we wait for was preempted: let it run
   }
 }
 
-// Part p covers [p * count / parts, (p + 1) * count / parts).
-void WorkerPool::runPartIfFree(Phase& phase, int part, int worker) {
-  if (phase.claimed[std::size_t(part)].exchange(true, std::memory_order_acq_rel)) return;
-  const auto begin = int(std::int64_t(phase.itemCount) * part / phase.parts);
-  const auto end = int(std::int64_t(phase.itemCount) * (part + 1) / phase.parts);
-  if (begin < end) phase.task(begin, end, worker, phase.context);
-  phase.unfinished.fetch_sub(1, std::memory_order_release);
+// Runs the parts of `share` nobody has claimed; returns how many it ran.
+// Part p covers [p * count / parts, (p + 1) * count / parts). A share
+// already used up is only read: no write moves its cache line.
+int WorkerPool::runShare(Phase& phase, Share& share, int worker) {
+  int ran = 0;
+  while (share.next.load(std::memory_order_relaxed) < share.end) {
+    const int part = share.next.fetch_add(1, std::memory_order_relaxed);
+    if (part >= share.end) break;
+    const auto begin = int(std::int64_t(phase.itemCount) * part / phase.parts);
+    const auto end = int(std::int64_t(phase.itemCount) * (part + 1) / phase.parts);
+    if (begin < end) phase.task(begin, end, worker, phase.context);
+    ++ran;
+  }
+  return ran;
 }
 
-// A thread's own share first, then whatever is left.
+// A thread's own share first, then what is left of the others'.
 void WorkerPool::runParts(Phase& phase, int worker) {
-  const int first = phase.parts * worker / workerCount();
-  const int last = phase.parts * (worker + 1) / workerCount();
-  for (int part = first; part < last; ++part) runPartIfFree(phase, part, worker);
-  for (int part = 0; part < phase.parts; ++part) runPartIfFree(phase, part, worker);
+  const int workers = workerCount();
+  int ran = runShare(phase, phase.shares[std::size_t(worker)], worker);
+  for (int k = 1; k < workers; ++k) ran += runShare(phase, phase.shares[std::size_t((worker + k) % workers)], worker);
+  if (ran > 0) phase.unfinished.fetch_sub(ran, std::memory_order_release);
 }
 
 void WorkerPool::run(TaskFunction* task, int itemCount, int minRange, void* taskContext) {
@@ -66,6 +86,17 @@ void WorkerPool::run(TaskFunction* task, int itemCount, int minRange, void* task
     task(0, itemCount, 0, taskContext);
     return;
   }
+  Phase& phase = publish(task, itemCount, parts, taskContext);
+  runParts(phase, 0);
+  for (int spins = 0; phase.unfinished.load(std::memory_order_acquire) > 0;) spinOrYield(spins);
+}
+
+void WorkerPool::wake() {
+  if (sleepers_.load() > 0) publish(nullptr, 0, 0, nullptr);
+}
+
+WorkerPool::Phase& WorkerPool::publish(TaskFunction* task, int itemCount, int parts, void* taskContext) {
+  const int workers = workerCount();
   const std::uint64_t next = generation_.load() + 1;
   Phase& phase = phases_[next % 2];
   // A thread still looking at the phase before last must leave it first.
@@ -74,19 +105,27 @@ void WorkerPool::run(TaskFunction* task, int itemCount, int minRange, void* task
   phase.context = taskContext;
   phase.itemCount = itemCount;
   phase.parts = parts;
-  for (int part = 0; part < parts; ++part) phase.claimed[std::size_t(part)].store(false, std::memory_order_relaxed);
+  for (int worker = 0; worker < workers; ++worker) {
+    Share& share = phase.shares[std::size_t(worker)];
+    share.next.store(parts * worker / workers, std::memory_order_relaxed);
+    share.end = parts * (worker + 1) / workers;
+  }
   phase.unfinished.store(parts, std::memory_order_relaxed);
   generation_.store(next);
   if (sleepers_.load() > 0) generation_.notify_all();
-  runParts(phase, 0);
-  for (int spins = 0; phase.unfinished.load(std::memory_order_acquire) > 0;) spinOrYield(spins);
+  return phase;
 }
 
 std::uint64_t WorkerPool::awaitGeneration(std::uint64_t seen) {
-  for (int spins = 0; spins < kSpinsBeforeSleep; ++spins) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point sleepAt = Clock::now() + kPollBeforeSleep;
+  for (int spins = 1;; ++spins) {
     const std::uint64_t now = generation_.load(std::memory_order_acquire);
     if (now != seen) return now;
     relaxCpu();
+    if (spins % kSpinsPerClockRead != 0) continue;
+    if (Clock::now() >= sleepAt) break;
+    if (spins >= kSpinsBeforeYield) std::this_thread::yield();
   }
   // Announce the sleep before the last look: the caller either sees a
   // sleeper and notifies, or this thread sees the new generation.

@@ -3,12 +3,17 @@
 // (impulse/tasks.h). Each phase of the step is cut into a few parts per
 // thread; each thread first runs the parts of its own share (the same
 // bodies in every per-body phase, so their states stay in its cache), then
-// takes parts nobody has started. A thread the OS has not scheduled holds
-// nothing up: the others run its parts.
+// takes parts of the others' shares that nobody has started. A thread the
+// OS has not scheduled holds nothing up: the others run its parts.
 //
 // Threads poll between the phases of a step (a phase is tens of
 // microseconds; waking a sleeping thread costs as much) and sleep when no
-// phase comes for a while (between steps).
+// phase comes for a while (between steps); a step wakes them as it begins.
+//
+// A step runs a few hundred phases, so what a phase costs besides its
+// parts counts: a thread claims its own parts off a counter on its own
+// cache line (no other thread writes it until that share is nearly done)
+// and reports once per phase how many parts it ran.
 
 #include <array>
 #include <atomic>
@@ -33,10 +38,19 @@ class WorkerPool {
   /// Runs task over [0, itemCount) in ranges of at least minRange items and
   /// returns when every range has run.
   void run(TaskFunction* task, int itemCount, int minRange, void* taskContext);
+  /// Wakes the threads that sleep, with no work: they poll again, so that
+  /// the phases of a step about to begin find them awake (a sleeping thread
+  /// takes tens of microseconds to wake).
+  void wake();
 
  private:
-  static constexpr int kPartsPerWorker = 4;
-  static constexpr int kMaxParts = kPartsPerWorker * kMaxWorkers;
+  static constexpr int kPartsPerWorker = 8;
+
+  // A thread's share of a phase: parts [next, end) are still unclaimed.
+  struct alignas(64) Share {
+    std::atomic<int> next{0};
+    int end = 0;
+  };
 
   // One phase's description and progress. Two alternate, so a thread that
   // wakes late and still reads the last phase is never overwritten: the
@@ -46,15 +60,18 @@ class WorkerPool {
     void* context = nullptr;
     int itemCount = 0;
     int parts = 0;
-    std::array<std::atomic<bool>, kMaxParts> claimed{};
-    alignas(64) std::atomic<int> unfinished{0};
+    std::array<Share, kMaxWorkers> shares;
+    alignas(64) std::atomic<int> unfinished{0};  ///< parts not yet run
     alignas(64) std::atomic<int> readers{0};  ///< threads looking at it
   };
 
+  /// Describes the next phase (`parts` of them, none for a wake) and wakes
+  /// the threads that sleep.
+  Phase& publish(TaskFunction* task, int itemCount, int parts, void* taskContext);
   void work(int worker);
   std::uint64_t awaitGeneration(std::uint64_t seen);
   void runParts(Phase& phase, int worker);
-  void runPartIfFree(Phase& phase, int part, int worker);
+  int runShare(Phase& phase, Share& share, int worker);
   static void spinOrYield(int& spins);
 
   std::vector<std::jthread> threads_;

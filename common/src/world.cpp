@@ -564,6 +564,7 @@ void World::step(Real dt) {
   if (!(dt > 0) || !isFinite(dt)) return;
   const Clock::time_point start = Clock::now();
   w.tasks.configure(w.settings.tasks);
+  w.tasks.stepBegins();
   // One clock reading per stage: its end is the next stage's start.
   Clock::time_point stageStart = start;
   for (const StepStage& stage : kStepStages) {

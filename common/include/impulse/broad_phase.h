@@ -62,10 +62,10 @@ class BroadPhase {
   bool enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion = {});
   /// enlargeProxy of a movable proxy in two halves, for many proxies at
   /// once. growLeaf, side by side for distinct proxies (it writes only the
-  /// proxy's own leaf and box record), returns whether the proxy left its
-  /// fat box and grew; for each that did, queueGrown, one proxy at a time in
-  /// the order they are to be searched, marks its ancestors for the rebuild
-  /// and queues it.
+  /// proxy's own leaf and box record, and marks the leaf's ancestors for
+  /// the rebuild), returns whether the proxy left its fat box and grew; for
+  /// each that did, queueGrown, one proxy at a time in the order they are to
+  /// be searched, queues it.
   bool growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion);
   void queueGrown(std::int32_t proxyKey);
   /// Whether the proxy's fat AABB still holds its tight box with the motion

@@ -31,8 +31,8 @@ class DynamicTree {
   /// leave a better tree for the queries that follow.
   void enlargeProxy(std::int32_t node, const AABB& box);
   /// enlargeProxy in two halves, for many leaves at once: setLeafBox writes
-  /// only the leaf (distinct leaves side by side), markForRebuild its
-  /// ancestors (one leaf at a time).
+  /// only the leaf, markForRebuild only its ancestors' marks (both side by
+  /// side for distinct leaves).
   void setLeafBox(std::int32_t node, const AABB& box) { nodes_[node].box = box; }
   void markForRebuild(std::int32_t node);
   /// Rebuilds the marked part of the tree, top down, keeping every unmarked
