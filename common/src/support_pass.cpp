@@ -121,13 +121,20 @@ void SupportPass::levelBodies(const WorldData& world, std::span<const Constraint
   queue_.assign(1, 0);
   walkLevels();
   const auto unreached = [&](std::int32_t state) { return level_[std::size_t(state)] == kUnreached; };
+  // Every level contact now joins two reached bodies or two unreached ones,
+  // and only the latter can become rows through the second walk: without
+  // one (a crowd tumbling in a drum) the walk would change no row.
+  const bool levelContactLeft = std::any_of(refs.begin(), refs.end(), [&](const ConstraintRef& ref) {
+    return ref.facing != 0 && unreached(ref.stateA) && unreached(ref.stateB);
+  });
+  if (!levelContactLeft) return;
   const auto betweenMovingAngularShapes = [&](const ConstraintRef& ref) {
     return ref.stateA != 0 && ref.stateB != 0 && !touchesRound(world, ref);
   };
-  const bool anyLeftOver = std::any_of(refs.begin(), refs.end(), [&](const ConstraintRef& ref) {
+  const bool bridged = std::any_of(refs.begin(), refs.end(), [&](const ConstraintRef& ref) {
     return unreached(ref.stateA) != unreached(ref.stateB) && betweenMovingAngularShapes(ref);
   });
-  if (!anyLeftOver) return;
+  if (!bridged) return;
   linkBodies(refs, stateCount,
              [&](const ConstraintRef& ref) { return ref.facing != 0 || betweenMovingAngularShapes(ref); });
   walkLevels();
