@@ -11,6 +11,9 @@ namespace impulse {
 
 namespace {
 
+// Blocks of PinGeometry::kLanes lanes that hold `rows` rows.
+std::int32_t blocksFor(std::int32_t rows) { return (rows + PinGeometry::kLanes - 1) / PinGeometry::kLanes; }
+
 // Rigid rows are as stiff as the soft step allows (a quarter of the sub-step
 // rate, beyond which it rings): 60 Hz at the default 4 sub-steps of 60 Hz,
 // Box2D v3's figure, and stiffer with more sub-steps, which is what lets a
@@ -197,9 +200,8 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
   for (int color = 0; color < colours; ++color) {
     const ColourRows& rows = counts[std::size_t(color)];
     const auto next = std::size_t(color) + 1;
-    pinBlockStarts_[next] = pinBlockStarts_[next - 1] + (rows.pins + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
-    revoluteBlockStarts_[next] =
-        revoluteBlockStarts_[next - 1] + (rows.revolutes + PinGeometry::kLanes - 1) / PinGeometry::kLanes;
+    pinBlockStarts_[next] = pinBlockStarts_[next - 1] + blocksFor(rows.pins);
+    revoluteBlockStarts_[next] = revoluteBlockStarts_[next - 1] + blocksFor(rows.revolutes);
     besideStarts_[next] = besideStarts_[next - 1] + rows.beside;
   }
   rowsBesidePins_.resize(std::size_t(besideStarts_[std::size_t(colours)]));
