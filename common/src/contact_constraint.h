@@ -139,6 +139,11 @@ struct BundleSlices {
   void cut(std::span<const std::int32_t> runStarts, int width, std::span<std::int32_t> runBundleStart);
 };
 
+/// WideContactSet::pushZone's marks: a body with an intruding contact, and
+/// the rings of bodies one and two contacts from it.
+inline constexpr std::uint8_t kIntrudingBody = 3;
+inline constexpr std::uint8_t kNearIntrusion = 1;
+
 struct WideContactSet {
   /// Bundles of the width in use (the other stays empty).
   std::vector<WideConstraint<simd::F4>> bundles4;
@@ -164,10 +169,10 @@ struct WideContactSet {
   /// The support rows' last impulses, per support bundle its points'
   /// columns: what the contacts' store writes into their manifolds.
   std::vector<float> supportImpulses;
-  /// The push pass's contacts: those of the islands (bodies joined by
-  /// touching contacts) where a contact overlaps deeper than its load
-  /// explains when prepared (hasIntrusion). By bundle, in bundle order, with
-  /// a bit per such lane; and by index in the overflow list.
+  /// The push pass's contacts: those within two contacts of one that
+  /// overlaps deeper than its load explains when prepared (hasIntrusion):
+  /// the contacts of the bodies pushZone marks. By bundle, in bundle order,
+  /// with a bit per such lane; and by index in the overflow list.
   std::vector<std::int32_t> pushBundles;
   std::vector<std::uint8_t> pushLanes;
   std::vector<std::int32_t> pushOverflow;
@@ -178,10 +183,11 @@ struct WideContactSet {
   std::vector<std::uint8_t> bundlePushLanes;
   /// How many contacts that is.
   int pushedContacts = 0;
-  /// Per solver state: its island's root (the static dummy 0 joins
-  /// nothing), and by island root whether it is pushed.
-  std::vector<std::int32_t> island;
-  std::vector<std::uint8_t> islandPushes;
+  /// Per solver state: kIntrudingBody where one of its contacts intrudes,
+  /// down to kNearIntrusion two contacts from such a body, else 0 (the
+  /// static dummy 0 always); pushQueue is markNearIntrusions' scratch.
+  std::vector<std::uint8_t> pushZone;
+  std::vector<std::int32_t> pushQueue;
   /// Each ref's colour, the refs sorted by colour, and where each colour
   /// starts in that order (colourContacts).
   std::vector<std::int32_t> colorOf;

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "union_find.h"
+#include "edge_list.h"
+
 
 namespace impulse {
 
@@ -207,14 +208,51 @@ void solveContacts(const ContactSolverContext& context, bool useBias) {
   }
 }
 
-void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set) {
-  std::vector<std::int32_t>& parent = set.island;
-  parent.resize(stateCount);
-  for (std::size_t s = 0; s < stateCount; ++s) parent[s] = static_cast<std::int32_t>(s);
-  for (const ConstraintRef& ref : refs) {
-    if (ref.stateA != 0 && ref.stateB != 0) joinBelow(parent, ref.stateA, ref.stateB);
+namespace {
+
+// Gives the bodies jointed to one at `ring`, and theirs, the same mark: the
+// joint tree pass carries a push through a jointed group as a whole, and a
+// limb pushed into a contact the pass left out would end the step inside it.
+void markJointedAlike(const WorldData& world, std::uint8_t ring, WideContactSet& set) {
+  std::vector<std::uint8_t>& zone = set.pushZone;
+  std::vector<std::int32_t>& queue = set.pushQueue;
+  queue.clear();
+  for (std::size_t state = 1; state < zone.size(); ++state) {
+    if (zone[state] == ring) queue.push_back(std::int32_t(state));
   }
-  flattenBelow(parent);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::int32_t slot = world.solverIntegration[std::size_t(queue[head])].body;
+    forEachEdge(world.joints, world.bodies[slot].jointHead, [&](std::int32_t key, const Joint& joint) {
+      const std::int32_t other = joint.edges.otherBody(key);
+      if (other == kNullIndex || !world.bodies[other].awake) return;  // the world, or asleep: state 0
+      const std::int32_t state = world.bodies[other].solverIndex;
+      if (state == 0 || zone[std::size_t(state)] != 0) return;
+      zone[std::size_t(state)] = ring;
+      queue.push_back(state);
+    });
+  }
+}
+
+}  // namespace
+
+void markNearIntrusions(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set) {
+  std::vector<std::uint8_t>& zone = set.pushZone;
+  const bool jointed = !world.jointConstraints.empty();
+  // Ring by ring outwards; each pass reads one ring and writes the next
+  // over zeros only, so the marks do not depend on the contacts' order.
+  for (std::uint8_t ring = kIntrudingBody;; --ring) {
+    if (jointed) markJointedAlike(world, ring, set);
+    if (ring == kNearIntrusion) break;
+    const auto markNext = [&](std::int32_t from, std::int32_t to) {
+      if (zone[std::size_t(from)] == ring && to != 0 && zone[std::size_t(to)] == 0) {
+        zone[std::size_t(to)] = std::uint8_t(ring - 1);
+      }
+    };
+    for (const ConstraintRef& ref : refs) {
+      markNext(ref.stateA, ref.stateB);
+      markNext(ref.stateB, ref.stateA);
+    }
+  }
 }
 
 bool hasIntrusion(const ContactConstraint& c, const Manifold& manifold) {

@@ -76,10 +76,11 @@ inline bool mayHoldAsWedge(const ConstraintRef& ref) {
 /// recovery needs it.
 Real pushCapForLoad(Real biasRate, Real loadOverlap, bool heldToLoad, Real maxPushSpeed);
 
-/// The islands of the solver states the touching contacts `refs` link
-/// (WideContactSet::island: union-find, then each state given its root), for
-/// the push pass's choice of contacts. The static dummy joins nothing.
-void joinContactIslands(std::span<const ConstraintRef> refs, std::size_t stateCount, WideContactSet& set);
+/// WideContactSet::pushZone, whose intruding bodies the caller has marked
+/// kIntrudingBody: marks each ring of bodies the touching contacts `refs`
+/// join to the one inside it one less, down to kNearIntrusion, and jointed
+/// bodies as their partners. The static dummy is never marked.
+void markNearIntrusions(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set);
 
 /// True when a point of the prepared constraint overlaps deeper than its
 /// load explains by more than kIntrusionSlop.

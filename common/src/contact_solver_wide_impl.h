@@ -463,21 +463,28 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
   return intrusion;
 }
 
-// ---- the push pass's islands -------------------------------------------------
+// ---- the push pass's contacts ------------------------------------------------
 
-// A contact's island: its bodies' (the static dummy belongs to none).
-std::int32_t islandOf(const WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
-  return set.island[std::size_t(stateA != 0 ? stateA : stateB)];
+// Whether the push pass runs on a contact between these states: one of them
+// intrudes or touches a body that does (WideContactSet::pushZone).
+bool nearIntrusion(const WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
+  return (set.pushZone[std::size_t(stateA)] | set.pushZone[std::size_t(stateB)]) != 0;
 }
 
-void markPushed(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
-  set.islandPushes[std::size_t(islandOf(set, stateA, stateB))] = 1;
+void markIntruding(WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
+  for (const std::int32_t state : {stateA, stateB}) {
+    if (state != 0) set.pushZone[std::size_t(state)] = kIntrudingBody;
+  }
 }
 
-// Every contact of a pushed island, lane by lane: an island pushes as a
-// whole, so a body pushed out of one overlap into a neighbour is pushed
-// back out of that one in the same sub-step, and any width pushes the same
-// contacts.
+// The contacts within two contacts of an intrusion, lane by lane: a body
+// pushed out of an overlap into a neighbour is pushed back out of that one
+// in the same sub-step, and that neighbour out of the next; farther on the
+// push has spent itself, and a crowd's other contacts are left to their
+// soft rows as a crowd without intrusions is (islands, bodies joined by
+// touching contacts, pushed whole had pushed 95 % of the contacts of a pile
+// of 8 000 circles in three quarters of its steps; these, a quarter). Any
+// width pushes the same contacts.
 template <class F>
 void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool anyIntrusion) {
   set.pushBundles.clear();
@@ -493,9 +500,7 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
       const WideConstraint<F>& c = bundles[std::size_t(b)];
       std::uint8_t lanes = 0;
       for (int l = 0; l < F::kLanes; ++l) {
-        if (c.source[l] >= 0 && set.islandPushes[std::size_t(islandOf(set, c.stateA[l], c.stateB[l]))] != 0) {
-          lanes = std::uint8_t(lanes | (1u << l));
-        }
+        if (c.source[l] >= 0 && nearIntrusion(set, c.stateA[l], c.stateB[l])) lanes = std::uint8_t(lanes | (1u << l));
       }
       set.bundlePushLanes[std::size_t(b)] = lanes;
     }
@@ -509,35 +514,35 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
   }
   for (std::size_t k = 0; k < set.overflow.size(); ++k) {
     const ContactConstraint& c = set.overflow[k];
-    if (set.islandPushes[std::size_t(islandOf(set, c.stateA, c.stateB))] == 0) continue;
+    if (!nearIntrusion(set, c.stateA, c.stateB)) continue;
     set.pushOverflow.push_back(static_cast<std::int32_t>(k));
     ++set.pushedContacts;
   }
 }
 
-// Marks the islands with a contact that intrudes (WideContactSet::
-// islandPushes); returns whether there is one. The islands are joined only
-// then: a resting stack, which has none, skips the union-find.
+// Marks the bodies the push pass reaches (WideContactSet::pushZone);
+// returns whether a contact intrudes. A resting stack, which has none,
+// skips the marking.
 template <class F>
-bool markIntrudingIslands(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set) {
+bool markIntrusions(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set) {
   const auto intrudes = [](std::uint8_t lanes) { return lanes != 0; };
   if (std::none_of(set.bundleIntrusion.begin(), set.bundleIntrusion.end(), intrudes) &&
       std::none_of(set.overflowIntrudes.begin(), set.overflowIntrudes.end(), intrudes)) {
     return false;
   }
-  joinContactIslands(refs, world.solverStates.size(), set);
-  set.islandPushes.assign(world.solverStates.size(), 0);
+  set.pushZone.assign(world.solverStates.size(), 0);
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
   for (std::size_t b = 0; b < bundles.size(); ++b) {
     const std::uint8_t intruding = set.bundleIntrusion[b];
     if (intruding == 0) continue;
     for (int l = 0; l < F::kLanes; ++l) {
-      if ((intruding >> l & 1u) != 0) markPushed(set, bundles[b].stateA[l], bundles[b].stateB[l]);
+      if ((intruding >> l & 1u) != 0) markIntruding(set, bundles[b].stateA[l], bundles[b].stateB[l]);
     }
   }
   for (std::size_t k = 0; k < set.overflow.size(); ++k) {
-    if (set.overflowIntrudes[k] != 0) markPushed(set, set.overflow[k].stateA, set.overflow[k].stateB);
+    if (set.overflowIntrudes[k] != 0) markIntruding(set, set.overflow[k].stateA, set.overflow[k].stateB);
   }
+  markNearIntrusions(world, refs, set);
   return true;
 }
 
@@ -636,7 +641,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
     if (place.bundle >= 0) packSupportLane(supportLaneOf<F>(set, place), constraint, place.upperIsB);
     set.overflowIntrudes.push_back(hasIntrusion(constraint, world.contacts[ref.contact].manifold) ? 1 : 0);
   }
-  const bool anyIntrusion = markIntrudingIslands<F>(world, refs, set);
+  const bool anyIntrusion = markIntrusions<F>(world, refs, set);
   finishSupportBundles<F>(world.tasks, set);
   selectPushedContacts<F>(world.tasks, set, anyIntrusion);
   return anyIntrusion;
