@@ -47,6 +47,7 @@ void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
   contact.edges.bodyB = sb.body;
   contact.shapeA = shapeA;
   contact.shapeB = shapeB;
+  contact.rolls = sa.rolls() || sb.rolls();
   contact.collide = collideFunction(sa.type(), sb.type());
   contact.staticFriction = mixCoefficient(ma.staticFriction, mb.staticFriction);
   contact.dynamicFriction = mixCoefficient(ma.dynamicFriction, mb.dynamicFriction);

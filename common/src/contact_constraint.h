@@ -33,6 +33,8 @@ struct ConstraintRef {
   /// level; twice that when flat.
   /// Read with the contact's bodies, whose line holds its normal too.
   std::int8_t facing = 0;
+  /// Either shape is round (Contact::rolls).
+  bool rolls = false;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.
   Real invMassA = 0;

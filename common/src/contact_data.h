@@ -38,6 +38,9 @@ struct alignas(64) Contact : ContactSolverPart {
   /// The two shapes (slots), A's on edges.bodyA.
   std::int32_t shapeA = -1;
   std::int32_t shapeB = -1;
+  /// Either shape is round (ShapeSlot::rolls): on the line naming the
+  /// bodies, which the contact refs are read off (ConstraintRef::rolls).
+  bool rolls = false;
   ManifoldFrame frame;
   CollideFunction collide = nullptr;
   std::uint64_t pairKey = 0;

@@ -43,6 +43,7 @@ struct ShapeSlot {
 
   ShapeType type() const { return geometry.type; }
   ShapeRef ref() const { return geometry; }
+  bool rolls() const { return rollingRadius > 0; }
 };
 
 /// One type's geometries in chunks that are never moved or freed while the

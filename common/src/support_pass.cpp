@@ -28,14 +28,6 @@ bool isJointed(const WorldData& world, std::int32_t state) {
   return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
 }
 
-// Whether either of a contact's shapes is round (a circle or a capsule:
-// those that roll, ShapeSlot::rollingRadius).
-bool touchesRound(const WorldData& world, const ConstraintRef& ref) {
-  const Contact& contact = world.contacts[std::size_t(ref.contact)];
-  return world.shapes[std::size_t(contact.shapeA)].rollingRadius > 0 ||
-         world.shapes[std::size_t(contact.shapeB)].rollingRadius > 0;
-}
-
 // A row's upper and lower body's inverse masses, as its ref carries them.
 Real upperInvMass(const SupportRow& row, const ConstraintRef& ref) {
   return row.upperIsB ? ref.invMassB : ref.invMassA;
@@ -113,7 +105,7 @@ void SupportPass::walkLevels() {
 // the static world at every storey, yet stands on the ground alone. Then,
 // where some are left unreached, over the steep contacts between two moving
 // bodies too, but those with a round shape (support_pass.h says why).
-void SupportPass::levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount) {
+void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount) {
   linkBodies(refs, stateCount, [](const ConstraintRef& ref) { return ref.facing != 0; });
   level_.assign(stateCount, kUnreached);
   hangs_.assign(stateCount, 0);
@@ -129,14 +121,19 @@ void SupportPass::levelBodies(const WorldData& world, std::span<const Constraint
   });
   if (!levelContactLeft) return;
   const auto betweenMovingAngularShapes = [&](const ConstraintRef& ref) {
-    return ref.stateA != 0 && ref.stateB != 0 && !touchesRound(world, ref);
+    return ref.stateA != 0 && ref.stateB != 0 && !ref.rolls;
   };
   const bool bridged = std::any_of(refs.begin(), refs.end(), [&](const ConstraintRef& ref) {
     return unreached(ref.stateA) != unreached(ref.stateB) && betweenMovingAngularShapes(ref);
   });
   if (!bridged) return;
-  linkBodies(refs, stateCount,
-             [&](const ConstraintRef& ref) { return ref.facing != 0 || betweenMovingAngularShapes(ref); });
+  // The walk goes over the reached bodies again, but can only step to
+  // unreached ones: the contacts between two reached bodies are left out
+  // (levels the same; in a tumbling pile most of its contacts, whose
+  // shapes would be read to tell whether they are round).
+  linkBodies(refs, stateCount, [&](const ConstraintRef& ref) {
+    return (unreached(ref.stateA) || unreached(ref.stateB)) && (ref.facing != 0 || betweenMovingAngularShapes(ref));
+  });
   walkLevels();
 }
 
@@ -271,7 +268,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     level_.assign(stateCount, kUnreached);
     return;
   }
-  levelBodies(world, refs, stateCount);
+  levelBodies(refs, stateCount);
 
   unsorted_.clear();
   rowLevel_.clear();

@@ -136,7 +136,7 @@ class SupportPass {
   template <class Joins>
   void linkBodies(std::span<const ConstraintRef> refs, std::size_t stateCount, Joins&& joins);
   void walkLevels();
-  void levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
+  void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
   void linkCandidates(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void estimateSinks(std::span<const ConstraintRef> refs);

@@ -437,8 +437,10 @@ class StateImport {
         contact.shapeB = c.shapeB;
         contact.manifold = c.manifold;
         contact.frame = c.frame;
-        contact.collide = collideFunction(w.shapes[std::size_t(c.shapeA)].type(),
-                                          w.shapes[std::size_t(c.shapeB)].type());
+        const ShapeSlot& shapeA = w.shapes[std::size_t(c.shapeA)];
+        const ShapeSlot& shapeB = w.shapes[std::size_t(c.shapeB)];
+        contact.rolls = shapeA.rolls() || shapeB.rolls();
+        contact.collide = collideFunction(shapeA.type(), shapeB.type());
         contact.staticFriction = c.staticFriction;
         contact.dynamicFriction = c.dynamicFriction;
         contact.restitution = c.restitution;
