@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "world_data.h"
@@ -65,14 +66,6 @@ class LazySweep {
   std::optional<Sweep> sweep_;
 };
 
-bool isFast(const Body& body) {
-  const Real threshold = kFastFraction * body.innerRadius;
-  const Real moved = (body.transform.p - body.center0).norm();
-  // Moving that far is fast whatever the turn adds: its atan2 is spared.
-  if (moved > threshold) return true;
-  const Real travel = moved + std::abs(relativeRotation(body.rotation0, body.transform.q).angle()) * body.extent;
-  return travel > threshold;
-}
 
 // First time in (0, 1] at which the moving shape comes within the target
 // separation of the static one; 0 when it starts the step that close
@@ -238,7 +231,7 @@ void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bo
     const std::int32_t slot = world.shapes[shape].body;
     const Body& body = world.bodies[slot];
     const bool pressed = world.shapes[chainShape].type() == ShapeType::ChainSegment &&
-                         body.isDynamic() && !isFast(body) &&
+                         body.isDynamic() && !movedFast(body) &&
                          world.bodies[world.shapes[chainShape].body].isStatic;
     if (pressed) bodies.push_back(slot);
   };
@@ -255,30 +248,30 @@ void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bo
 // Fast bodies per range of the side-by-side sweep: a sweep costs several
 // microseconds.
 constexpr std::int32_t kFastBodiesPerRange = 8;
-// Awake bodies per range of the side-by-side search for fast ones: a test
-// costs tens of nanoseconds.
-constexpr std::int32_t kBodiesPerTestRange = 1024;
-
-// The awake dynamic bodies that moved fast this step, in awake order: tested
-// side by side (a turn's angle each), gathered in order.
-void findFastBodies(WorldData& world, std::vector<std::int32_t>& bodies) {
+// The awake bodies that moved fast this step (WorldData::awakeBodyFast), in
+// awake order.
+void findFastBodies(const WorldData& world, std::vector<std::int32_t>& bodies) {
   const std::vector<std::int32_t>& awake = world.awakeBodies;
-  std::vector<std::uint8_t>& fast = world.awakeBodyFast;
-  fast.resize(awake.size());
-  world.tasks.forRanges(static_cast<std::int32_t>(awake.size()), kBodiesPerTestRange,
-                        [&](std::int32_t begin, std::int32_t end) {
-                          for (std::int32_t i = begin; i < end; ++i) {
-                            // Kinematic bodies go where their velocity takes them, walls or not.
-                            const Body& body = world.bodies[awake[std::size_t(i)]];
-                            fast[std::size_t(i)] = body.isDynamic() && isFast(body) ? 1 : 0;
-                          }
-                        });
   for (std::size_t i = 0; i < awake.size(); ++i) {
-    if (fast[i] != 0) bodies.push_back(awake[i]);
+    if (world.awakeBodyFast[i] != 0) bodies.push_back(awake[i]);
   }
 }
 
 }  // namespace
+
+bool movedFast(const Body& body) {
+  // Kinematic bodies go where their velocity takes them, walls or not.
+  if (!body.isDynamic()) return false;
+  const Real threshold = kFastFraction * body.innerRadius;
+  const Real moved = (body.transform.p - body.center0).norm();
+  // Moving that far is fast whatever the turn adds: its atan2 is spared.
+  if (moved > threshold) return true;
+  const Rot turn = relativeRotation(body.rotation0, body.transform.q);
+  // Nor is it needed where the turn is under a quarter and even pi/2 times
+  // its sine (at least the angle there) leaves the body slow: most bodies.
+  if (turn.c >= 0 && moved + std::numbers::pi_v<Real> / 2 * std::abs(turn.s) * body.extent <= threshold) return false;
+  return moved + std::abs(turn.angle()) * body.extent > threshold;
+}
 
 void solveContinuous(WorldData& world, Real dt) {
   if (!world.settings.enableContinuous) return;

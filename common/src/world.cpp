@@ -110,19 +110,23 @@ ProxyMotion expectedMotion(const Body& body, Real dt, bool touches) {
 // body costs its shapes' boxes, tens of nanoseconds.
 constexpr std::int32_t kBodiesPerReachRange = 256;
 
-// Per awake body (in awakeBodies' order), the motion its boxes are stretched
-// along and whether a shape's box no longer held where it is heading; such
-// a shape's box grows in place (shapeGrown). Side by side: reads the bodies
+// Per awake body (in awakeBodies' order), whether it moved fast for
+// continuous collision, the motion its boxes are stretched along and whether
+// a shape's box no longer held where it is heading; such a shape's box grows
+// in place (shapeGrown). Side by side: reads the bodies
 // and the solver, and writes only each shape's own leaf (an awake body is
 // never static: its proxies are movable).
 void growEscapingBoxes(WorldData& world, Real dt) {
   world.awakeReach.resize(world.awakeBodies.size());
+  world.awakeBodyFast.resize(world.awakeBodies.size());
   world.shapeGrown.resize(world.shapes.size());
+  const bool continuous = world.settings.enableContinuous;
   world.tasks.forRanges(std::int32_t(world.awakeBodies.size()), kBodiesPerReachRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           for (std::int32_t i = begin; i < end; ++i) {
                             const std::int32_t slot = world.awakeBodies[std::size_t(i)];
                             const Body& body = world.bodies[slot];
+                            world.awakeBodyFast[std::size_t(i)] = continuous && movedFast(body) ? 1 : 0;
                             // The solver knows which bodies touched: asking it
                             // spares a walk of the body's contact list.
                             BodyReach& reach = world.awakeReach[std::size_t(i)];

@@ -157,7 +157,8 @@ struct WorldData {
   /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;
   std::vector<std::uint8_t> fastBodyMoved;
-  /// Per awake body: whether it moved fast this step (continuous.cpp).
+  /// Per awake body: whether it moved fast this step (movedFast), found
+  /// where the solved bodies' boxes grow, while each body is at hand.
   std::vector<std::uint8_t> awakeBodyFast;
   /// Per moved body: what the step guard found of it (step_guard.cpp).
   std::vector<std::uint8_t> guardFindings;
@@ -220,6 +221,9 @@ void applyFields(WorldData& world, Real dt);      // field.cpp: field forces
 void applySubStepFields(WorldData& world, int subStep, Real h);  // field.cpp: per sub-step, where a body needs it
 void solve(WorldData& world, Real dt);            // solver.cpp: constraints, integration
 void solveContinuous(WorldData& world, Real dt);  // continuous.cpp: time of impact
+/// Whether a dynamic body moved or turned far enough in the step (half its
+/// inner radius) for continuous collision to sweep it (continuous.cpp).
+bool movedFast(const Body& body);
 void updateSleep(WorldData& world, Real dt);      // island.cpp: islands, sleeping
 void updateSensors(WorldData& world, Real dt);    // sensor.cpp: sensor overlaps and events
 
