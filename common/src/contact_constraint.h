@@ -33,6 +33,10 @@ struct ConstraintRef {
   /// level; twice that when flat.
   /// Read with the contact's bodies, whose line holds its normal too.
   std::int8_t facing = 0;
+  /// One of its bodies hangs on steep contacts (an arch's upper stones,
+  /// support_pass.h): as a wedge's contact it holds from lighter loads
+  /// (kHangingHold, contact_solver.h).
+  bool hangs = false;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.
   Real invMassA = 0;

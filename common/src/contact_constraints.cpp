@@ -42,7 +42,7 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide a = sideOf(bodyA);
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
-  return {index,     a.state,      b.state,   false,        jointed, facingOf(contact.manifold.normal, up),
+  return {index,     a.state,      b.state,   false,        jointed, facingOf(contact.manifold.normal, up), false,
           a.invMass, a.invInertia, b.invMass, b.invInertia, lastLoad(contact.manifold)};
 }
 
