@@ -69,15 +69,18 @@ inline constexpr HoldRamp kHold{kHoldFromWeights, kHoldFullWeights, kHoldShare};
 
 /// A contact of a body that hangs on steep contacts (an arch's stones from
 /// its fourth to the keystone, which the support pass reaches over steep
-/// joints only, support_pass.h) holds from half a weight, fully from two.
-/// Such a stone is held up by its joints' thrust alone, and that thrust
-/// builds only as the joints carry load: under the shared ramp a joint held
-/// nothing until it carried two weights, the arch's top fell freely while
-/// its thrust built, the stones beside the keystone slid 13 mm down their
-/// joints, and the joints settled 1.5 to 3.6 mm into each other (Solver2D's
-/// arch: 2.3 cm, 0.62 cm after the first second; so held, 1.3 cm and 0.18
-/// cm). Lowered for every wedge, the ramp moved a card house's and a
-/// pyramid's pieces further (the card house settled 2.5 mm, not 1.8).
+/// joints only, ConstraintRef::hangs) holds from half a weight, fully (0.95)
+/// from two. Such a stone is held up by its joints' friction and thrust
+/// alone, and the thrust builds only as the joints take load: on the shared
+/// ramp a joint held nothing until it carried two weights, the arch's top
+/// fell almost freely while its thrust built, the stones beside the
+/// keystone slid 13 mm down their joints, and the joints settled 1.5 to 3.6
+/// mm into each other (Solver2D's arch: 2.3 cm, 0.62 cm after the first
+/// second; so held, 1.3 cm and 0.18 cm, its joints 0.25 to 0.6 mm). The
+/// shared ramp lowered as far for every wedge moved other scenes' pieces
+/// further: a card house settled 2.5 mm (1.8), the boxes of Solver2D's
+/// overlap recovery flew at 4.6 cm/s (2.5), a pyramid under heavy boxes
+/// ended 2.4 cm from its place (2.1).
 inline constexpr HoldRamp kHangingHold{Real(0.5), Real(2), Real(0.95)};
 
 /// Whether a contact may hold as a wedge's: off level, between two moving
