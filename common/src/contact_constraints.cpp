@@ -42,8 +42,9 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide a = sideOf(bodyA);
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
-  return {index,     a.state,      b.state,      false,        jointed, facingOf(contact.manifold.normal, up),
-          contact.rolls, a.invMass, a.invInertia, b.invMass, b.invInertia, lastLoad(contact.manifold)};
+  return {index,         a.state,   b.state,      false,        jointed,     facingOf(contact.manifold.normal, up),
+          contact.rolls, false,     a.invMass,    a.invInertia, b.invMass,   b.invInertia,
+          lastLoad(contact.manifold)};
 }
 
 // Contacts ahead of the one read whose lines (the manifold's two, and the

@@ -106,12 +106,13 @@ bool intrudes(Real separation, Real loadOverlap) { return separation + loadOverl
 // The push that holds a share of a point's load with no overlap: its share
 // of kHoldShare, by the load in weights of the lighter body, on a contact
 // off level between two moving bodies without joints, not intruding
-// (kHoldShare, contact_solver.h).
+// (kHoldShare, contact_solver.h); on kHangingHold's ramp where a body hangs.
 Real holdSpeedFor(const ConstraintRef& ref, const ContactConstraint& c, const ConstraintPoint& cp, Real load,
                   bool intruding, Real weightPerMass) {
   if (weightPerMass == 0 || !mayHoldAsWedge(ref) || intruding) return 0;
   const Real weights = load * std::max(c.invMassA, c.invMassB) / weightPerMass;
-  const Real share = kHoldShare * std::clamp((weights - kHoldFromWeights) / (kHoldFullWeights - kHoldFromWeights),
+  const HoldRamp& ramp = ref.hangs ? kHangingHold : kHold;
+  const Real share = ramp.share * std::clamp((weights - ramp.fromWeights) / (ramp.fullWeights - ramp.fromWeights),
                                              Real(0), Real(1));
   return std::min(share * c.softness.biasRate * cp.loadOverlap, kHoldSpeedSubSteps * weightPerMass);
 }

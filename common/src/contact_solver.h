@@ -57,6 +57,32 @@ inline constexpr Real kHoldFullWeights = Real(6);
 inline constexpr Real kHoldShare = Real(0.8);
 inline constexpr Real kHoldSpeedSubSteps = Real(2);
 
+/// How a wedge's contact holds: from `fromWeights` of the lighter body's
+/// weight, rising to `share` at `fullWeights`.
+struct HoldRamp {
+  Real fromWeights;
+  Real fullWeights;
+  Real share;
+};
+
+inline constexpr HoldRamp kHold{kHoldFromWeights, kHoldFullWeights, kHoldShare};
+
+/// A contact of a body that hangs on steep contacts (an arch's stones from
+/// its fourth to the keystone, which the support pass reaches over steep
+/// joints only, ConstraintRef::hangs) holds from half a weight, fully (0.95)
+/// from two. Such a stone is held up by its joints' friction and thrust
+/// alone, and the thrust builds only as the joints take load: on the shared
+/// ramp a joint held nothing until it carried two weights, the arch's top
+/// fell almost freely while its thrust built, the stones beside the
+/// keystone slid 13 mm down their joints, and the joints settled 1.5 to 3.6
+/// mm into each other (Solver2D's arch: 2.3 cm, 0.62 cm after the first
+/// second; so held, 1.3 cm and 0.18 cm, its joints 0.25 to 0.6 mm). The
+/// shared ramp lowered as far for every wedge moved other scenes' pieces
+/// further: a card house settled 2.5 mm (1.8), the boxes of Solver2D's
+/// overlap recovery flew at 4.6 cm/s (2.5), a pyramid under heavy boxes
+/// ended 2.4 cm from its place (2.1).
+inline constexpr HoldRamp kHangingHold{Real(0.5), Real(2), Real(0.95)};
+
 /// Whether a contact may hold as a wedge's: off level, between two moving
 /// bodies without joints (the rest, load and overlap, is per point).
 inline bool mayHoldAsWedge(const ConstraintRef& ref) {

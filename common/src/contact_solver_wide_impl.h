@@ -228,6 +228,8 @@ struct BundleInputs {
   /// All-ones where the contact may hold as a wedge's: off level
   /// (ConstraintRef::facing 0), between two moving bodies without joints.
   F mayHold;
+  /// All-ones where a body hangs (ConstraintRef::hangs): kHangingHold's ramp.
+  F hangs;
 };
 
 // ---- gathering a bundle's lanes -----------------------------------------------
@@ -296,6 +298,7 @@ alignas(64) constexpr float kPaddingContact[kContactFloats] = {};
 struct RefFlags {
   std::uint8_t holdsUp = 0;
   std::uint8_t mayHold = 0;
+  std::uint8_t hangs = 0;
 };
 
 RefFlags refFlags(std::span<const ConstraintRef* const> refs) {
@@ -303,6 +306,7 @@ RefFlags refFlags(std::span<const ConstraintRef* const> refs) {
   for (std::size_t lane = 0; lane < refs.size(); ++lane) {
     if (refs[lane]->holdsUp) flags.holdsUp = std::uint8_t(flags.holdsUp | (1u << lane));
     if (mayHoldAsWedge(*refs[lane])) flags.mayHold = std::uint8_t(flags.mayHold | (1u << lane));
+    if (refs[lane]->hangs) flags.hangs = std::uint8_t(flags.hangs | (1u << lane));
   }
   return flags;
 }
@@ -346,6 +350,7 @@ void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, WideConstr
   in.staticFriction = part[floatAt(offsetof(ContactSolverPart, staticFriction))];
   in.dynamicFriction = part[floatAt(offsetof(ContactSolverPart, dynamicFriction))];
   in.mayHold = simd::maskOfBits<F>(flags.mayHold);
+  in.hangs = simd::maskOfBits<F>(flags.hangs);
   const F holdsUp = simd::maskOfBits<F>(flags.holdsUp);
   const F pointCount = part[floatAt(manifold + offsetof(Manifold, pointCount))];
   const F zero = simd::broadcast<F>(0);
@@ -405,13 +410,16 @@ F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
 
 // holdSpeedFor, lane by lane, on the lanes of `mayHold` (kHoldShare).
 template <class F>
-F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHold, Real weightPerMass) {
+F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHold, F hangs, Real weightPerMass) {
   const F zero = simd::broadcast<F>(0);
   if (weightPerMass == 0 || !simd::any(mayHold)) return zero;
+  const auto ramp = [&](Real HoldRamp::*term) {
+    return simd::select(hangs, simd::broadcast<F>(kHangingHold.*term), simd::broadcast<F>(kHold.*term));
+  };
+  const F from = ramp(&HoldRamp::fromWeights);
   const F weights = load * simd::max(c.invMassA, c.invMassB) / simd::broadcast<F>(weightPerMass);
-  const F rise = (weights - simd::broadcast<F>(kHoldFromWeights)) /
-                 simd::broadcast<F>(kHoldFullWeights - kHoldFromWeights);
-  const F share = simd::broadcast<F>(kHoldShare) * simd::clamp(rise, zero, simd::broadcast<F>(1));
+  const F rise = (weights - from) / (ramp(&HoldRamp::fullWeights) - from);
+  const F share = ramp(&HoldRamp::share) * simd::clamp(rise, zero, simd::broadcast<F>(1));
   const F fastest = simd::broadcast<F>(kHoldSpeedSubSteps * weightPerMass);
   return simd::select(mayHold, simd::min(share * c.biasRate * p.loadOverlap, fastest), zero);
 }
@@ -457,7 +465,7 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
     p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
     intrusion = simd::either(intrusion, simd::both(present, deep));
-    p.holdSpeed = holdSpeedOf(c, p, load, simd::select(deep, zero, simd::both(present, in.mayHold)),
+    p.holdSpeed = holdSpeedOf(c, p, load, simd::select(deep, zero, simd::both(present, in.mayHold)), in.hangs,
                               softness.weightPerMass);
   }
   return intrusion;

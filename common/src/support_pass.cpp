@@ -135,6 +135,7 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
     return (unreached(ref.stateA) || unreached(ref.stateB)) && (ref.facing != 0 || betweenMovingAngularShapes(ref));
   });
   walkLevels();
+  anyHangs_ = true;
 }
 
 bool SupportPass::sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
@@ -251,6 +252,10 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   estimateSinks(refs);
   keepStacksThatSink();
   for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
+  if (!anyHangs_) return;
+  for (ConstraintRef& ref : refs) {
+    ref.hangs = hangs_[std::size_t(ref.stateA)] != 0 || hangs_[std::size_t(ref.stateB)] != 0;
+  }
 }
 
 void SupportPass::findCandidates(const WorldData& world, std::span<const ConstraintRef> refs,
@@ -259,6 +264,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   candidateGroupStart_.assign(1, 0);
   candidateStoreyStart_.assign(1, 0);
   candidateLinks_.clear();
+  anyHangs_ = false;
   // Levels count up from the static world: with no level contact on it (a
   // pile in a kinematic drum), no body has one and nothing is a candidate.
   const bool standsOnStatic = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) {

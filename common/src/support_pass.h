@@ -155,6 +155,9 @@ class SupportPass {
   /// Per state: reached over a steep contact (levelBodies), so it hangs on
   /// its joints and holds no row up.
   std::vector<std::uint8_t> hangs_;
+  /// Whether the second walk ran (some body may hang): only then are the
+  /// refs marked (ConstraintRef::hangs).
+  bool anyHangs_ = false;
   std::vector<std::int32_t> edgeStart_;
   std::vector<std::int32_t> neighbours_;
   std::vector<std::uint8_t> steepEdge_;

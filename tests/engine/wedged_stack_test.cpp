@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <span>
+#include <vector>
 
 #include "world_test_support.h"
 
@@ -74,6 +75,56 @@ TEST(WedgedStack, StackOnAKeystoneIsHeldUp_ItsContactsDoNotGive) {
               1000 * double(built - standing), 1000 * double(keystoneDrop));
   EXPECT_LT(built - standing, Real(0.0005));
   EXPECT_LT(keystoneDrop, Real(0.05)) << "the keystone stays wedged";
+}
+
+/// `count` of the keystones above side by side, 6 m apart, each with its four
+/// boxes and its own 6 m of ground: the keystones hang on their posts, and
+/// their joints hold on the hanging bodies' ramp (kHangingHold,
+/// contact_solver.h).
+void buildWedgedStacks(World& world, int count) {
+  for (int k = 0; k < count; ++k) {
+    const Real x = Real(6 * k - 3 * (count - 1));
+    addBox(world, {.center = Vec2(x, -1), .halfWidth = 3, .halfHeight = 1, .isStatic = true});
+    const std::array<Vec2, 4> leftPost = {Vec2(x - 2.5f, 0), Vec2(x - 0.4f, 0), Vec2(x - 0.6f, 2), Vec2(x - 2.5f, 2)};
+    const std::array<Vec2, 4> rightPost = {Vec2(x + 0.4f, 0), Vec2(x + 2.5f, 0), Vec2(x + 2.5f, 2), Vec2(x + 0.6f, 2)};
+    const std::array<Vec2, 4> keystone = {Vec2(x - 0.5f, 1), Vec2(x + 0.5f, 1), Vec2(x + 0.6f, 2), Vec2(x - 0.6f, 2)};
+    addStone(world, leftPost);
+    addStone(world, rightPost);
+    addStone(world, keystone);
+    for (int i = 0; i < 4; ++i) {
+      addBox(world, {.center = Vec2(x, Real(2.25 + 0.5 * i)), .halfWidth = Real(0.5), .halfHeight = Real(0.25),
+                     .material = Material::Stone});
+    }
+  }
+}
+
+/// The state hash after each of `steps` steps of 150 wedged stacks (enough
+/// contacts for a colour's bundles to be split between threads).
+std::vector<std::uint64_t> wedgedStacksHashes(SimdWidth width, int workers, int steps) {
+  WorldSettings settings;
+  settings.bounds = {Vec2(-500, -10), Vec2(500, 20)};
+  settings.simdWidth = width;
+  settings.tasks = {.workerCount = workers};
+  World world(settings);
+  buildWedgedStacks(world, 150);
+  std::vector<std::uint64_t> hashes;
+  for (int i = 0; i < steps; ++i) {
+    world.step(kDt);
+    hashes.push_back(world.stateHash());
+  }
+  return hashes;
+}
+
+// A bundle takes each lane's ramp from its own contact (whether a body of
+// it hangs): the bits do not depend on which contacts share a bundle (four
+// lanes on SSE2, eight on AVX2) nor on how many threads share a colour's
+// bundles.
+TEST(WedgedStack, HangingWedgesGiveTheSameBitsAtEveryLaneWidthAndOnTwoThreads) {
+  const int steps = 40;
+  const std::vector<std::uint64_t> widest = wedgedStacksHashes(SimdWidth::Best, 1, steps);
+  EXPECT_NE(widest.front(), widest.back()) << "the stacks settle";
+  EXPECT_EQ(wedgedStacksHashes(SimdWidth::Sse2, 1, steps), widest);
+  EXPECT_EQ(wedgedStacksHashes(SimdWidth::Best, 2, steps), widest);
 }
 
 // A circle resting in the hollow between two circles on the ground (its
