@@ -13,14 +13,6 @@ namespace impulse {
 namespace {
 
 constexpr std::int32_t kUnreached = -1;
-// cos(25 degrees): a body stands on contacts this close to level. Steeper
-// ones lean on their neighbour; among them the 30 degrees of circles packed
-// in a pile, which lifting one-sidedly would keep stirring.
-constexpr Real kMinUpwardNormal = Real(0.9);
-// cos(5 degrees): a row between two bodies on a contact further off level
-// than this leans, and runs before the soft rows (support_pass.h).
-constexpr Real kMinFlatNormal = Real(0.9962);
-constexpr std::int8_t kFlat = 2;
 
 // A jointed body is held by more than its contacts: lifting it alone would
 // fight its joints (a welded pair landing twisted), so the soft rows keep it.
@@ -52,12 +44,6 @@ Real complianceOf(const Softness& softness) {
 
 Vec2 upwards(const Vec2& gravity) {
   return gravity.squaredNorm() > 0 ? Vec2(-gravity.normalized()) : Vec2::Zero();
-}
-
-std::int8_t facingOf(const Vec2& normal, const Vec2& up) {
-  const Real upward = normal.dot(up);
-  const std::int8_t side = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
-  return std::abs(upward) >= kMinFlatNormal ? std::int8_t(kFlat * side) : side;
 }
 
 // Adjacency lists in one array (counted, then filled) over the contacts

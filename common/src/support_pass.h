@@ -48,6 +48,7 @@
 // the pile, which took a sixth longer to fall asleep.
 
 #include <cstdint>
+#include <cstdlib>
 #include <span>
 #include <vector>
 
@@ -65,10 +66,25 @@ inline constexpr Real kSupportedSink = Real(0.001);
 
 /// Up: against gravity (zero without it).
 Vec2 upwards(const Vec2& gravity);
+
+// cos(25 degrees): a body stands on contacts this close to level. Steeper
+// ones lean on their neighbour; among them the 30 degrees of circles packed
+// in a pile, which lifting one-sidedly would keep stirring.
+inline constexpr Real kMinUpwardNormal = Real(0.9);
+// cos(5 degrees): a row between two bodies on a contact further off level
+// than this leans, and runs before the soft rows (above).
+inline constexpr Real kMinFlatNormal = Real(0.9962);
+inline constexpr std::int8_t kFlat = 2;
+
 /// A contact of this normal is level enough to stand on (ConstraintRef::facing):
 /// +1 with B above, -1 with A above, 0 not level; twice that when within
-/// 5 degrees of level (flat: a row on it does not lean).
-std::int8_t facingOf(const Vec2& normal, const Vec2& up);
+/// 5 degrees of level (flat: a row on it does not lean). Inline: the refs'
+/// collection asks it of every contact every step.
+inline std::int8_t facingOf(const Vec2& normal, const Vec2& up) {
+  const Real upward = normal.dot(up);
+  const std::int8_t side = upward >= kMinUpwardNormal ? 1 : upward <= -kMinUpwardNormal ? -1 : 0;
+  return std::abs(upward) >= kMinFlatNormal ? std::int8_t(kFlat * side) : side;
+}
 
 /// One supporting contact: its ConstraintRef, which side holds the upper
 /// body, and whether it leans (between two bodies, more than 5 degrees off
