@@ -177,9 +177,9 @@ struct WideContactSet {
   /// The support rows' last impulses, per support bundle its points'
   /// columns: what the contacts' store writes into their manifolds.
   std::vector<float> supportImpulses;
-  /// The push pass's contacts: those within two contacts of one that
-  /// overlaps deeper than its load explains when prepared (hasIntrusion):
-  /// the contacts of the bodies pushZone marks. By bundle, in bundle order,
+  /// The push pass's contacts: those of the bodies at most two contacts
+  /// from one whose contact overlaps deeper than its load explains when
+  /// prepared (hasIntrusion), which pushZone marks. By bundle, in bundle order,
   /// with a bit per such lane; and by index in the overflow list.
   std::vector<std::int32_t> pushBundles;
   std::vector<std::uint8_t> pushLanes;

@@ -474,7 +474,8 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
 // ---- the push pass's contacts ------------------------------------------------
 
 // Whether the push pass runs on a contact between these states: one of them
-// intrudes or touches a body that does (WideContactSet::pushZone).
+// is marked (WideContactSet::pushZone), at most two contacts from a body
+// whose contact intrudes.
 bool nearIntrusion(const WideContactSet& set, std::int32_t stateA, std::int32_t stateB) {
   return (set.pushZone[std::size_t(stateA)] | set.pushZone[std::size_t(stateB)]) != 0;
 }
@@ -485,9 +486,10 @@ void markIntruding(WideContactSet& set, std::int32_t stateA, std::int32_t stateB
   }
 }
 
-// The contacts within two contacts of an intrusion, lane by lane: a body
-// pushed out of an overlap into a neighbour is pushed back out of that one
-// in the same sub-step, and that neighbour out of the next; farther on the
+// The contacts of the bodies at most two contacts from an intrusion, lane
+// by lane: a body pushed out of an overlap into a neighbour is pushed back
+// out of that one in the same sub-step, and that neighbour out of the next;
+// farther on the
 // push has spent itself, and a crowd's other contacts are left to their
 // soft rows as a crowd without intrusions is (islands, bodies joined by
 // touching contacts, pushed whole had pushed 95 % of the contacts of a pile
