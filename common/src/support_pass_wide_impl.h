@@ -20,7 +20,7 @@
 namespace impulse {
 namespace {
 
-// What a padding lane reads: the static dummy, no contact, no points.
+// What a padding lane reads: the static dummy, no points.
 const SupportLaneRecord kPaddingSupportLane{};
 
 // What a support row takes of a contact lane.
@@ -28,7 +28,6 @@ template <class F>
 void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c) {
   c.stateA = w.stateA[lane];
   c.stateB = w.stateB[lane];
-  c.contact = w.source[lane];
   c.pointCount = 2;  // a one-point manifold's second point has zero mass
   c.normal = Vec2(w.normalX.v[lane], w.normalY.v[lane]);
   c.invMassA = w.invMassA.v[lane];
@@ -87,7 +86,6 @@ void packSupportLane(SupportLaneRecord& r, const ContactConstraint& c, bool uppe
   const Vec2 normal = upperIsB ? c.normal : Vec2(-c.normal);
   r.stateA = upperIsB ? c.stateA : c.stateB;
   r.stateB = upperIsB ? c.stateB : c.stateA;
-  r.contact = c.contact;
   r.normalX = normal.x();
   r.normalY = normal.y();
   r.invMass = upperIsB ? c.invMassB : c.invMassA;
@@ -107,8 +105,7 @@ void packSupportLane(SupportLaneRecord& r, const ContactConstraint& c, bool uppe
   }
 }
 
-// The column of a record's field at `offset` (of point j's at `pointOffset`).
-constexpr std::size_t laneColumn(std::size_t offset) { return floatAt(offset); }
+// The column of point j's field at `pointOffset` in a record.
 constexpr std::size_t lanePointColumn(int j, std::size_t pointOffset) {
   return floatAt(offsetof(SupportLaneRecord, points) + std::size_t(j) * sizeof(SupportLaneRecord::Point) +
                  pointOffset);
@@ -120,14 +117,13 @@ void loadSupportLanes(const void* const records[F::kLanes], WideSupportRow<F>& r
   constexpr std::size_t kFloats = sizeof(SupportLaneRecord) / sizeof(float);
   F column[kFloats];
   loadRecordColumns<F>(records, kFloats, column);
-  storeIndices(column[laneColumn(offsetof(SupportLaneRecord, stateA))], row.stateA);
-  storeIndices(column[laneColumn(offsetof(SupportLaneRecord, stateB))], row.stateB);
-  storeIndices(column[laneColumn(offsetof(SupportLaneRecord, contact))], row.contact);
-  row.normalX = column[laneColumn(offsetof(SupportLaneRecord, normalX))];
-  row.normalY = column[laneColumn(offsetof(SupportLaneRecord, normalY))];
-  row.invMass = column[laneColumn(offsetof(SupportLaneRecord, invMass))];
-  row.invInertia = column[laneColumn(offsetof(SupportLaneRecord, invInertia))];
-  row.slipFriction = column[laneColumn(offsetof(SupportLaneRecord, slipFriction))];
+  storeIndices(column[floatAt(offsetof(SupportLaneRecord, stateA))], row.stateA);
+  storeIndices(column[floatAt(offsetof(SupportLaneRecord, stateB))], row.stateB);
+  row.normalX = column[floatAt(offsetof(SupportLaneRecord, normalX))];
+  row.normalY = column[floatAt(offsetof(SupportLaneRecord, normalY))];
+  row.invMass = column[floatAt(offsetof(SupportLaneRecord, invMass))];
+  row.invInertia = column[floatAt(offsetof(SupportLaneRecord, invInertia))];
+  row.slipFriction = column[floatAt(offsetof(SupportLaneRecord, slipFriction))];
   for (int j = 0; j < 2; ++j) {
     WideSupportPoint<F>& p = row.points[j];
     using Point = SupportLaneRecord::Point;

@@ -16,7 +16,6 @@ namespace impulse {
 struct SupportLaneRecord {
   std::int32_t stateA = 0;  ///< the lower body
   std::int32_t stateB = 0;  ///< the upper body
-  std::int32_t contact = -1;
   float normalX = 0, normalY = 0;
   float invMass = 0, invInertia = 0;
   float slipFriction = 0;
@@ -25,7 +24,7 @@ struct SupportLaneRecord {
     float baseSeparation = 0;
     std::uint32_t present = 0;  ///< all bits set where the point exists
   } points[2];
-  std::int32_t unused[4] = {};
+  std::int32_t unused[5] = {};
 };
 static_assert(sizeof(SupportLaneRecord) == 24 * sizeof(float));
 
@@ -50,8 +49,6 @@ template <class F>
 struct WideSupportRow {
   std::int32_t stateA[F::kLanes];  ///< the lower body (read only)
   std::int32_t stateB[F::kLanes];  ///< the upper body
-  /// The contact each lane came from (-1: padding).
-  std::int32_t contact[F::kLanes];
   F normalX, normalY;  ///< from the lower body towards the upper one
   F invMass, invInertia;  ///< the upper body's
   /// The upper body's response K at both points, inverted (zero when singular).
