@@ -26,7 +26,7 @@ struct ConstraintRef {
   /// Holds its upper body up in the support pass (support_pass.h).
   bool holdsUp = false;
   /// Either body has joints: its loads are not weights it carries, so the
-  /// contact never holds as a wedge's (kHoldShare, contact_solver.h).
+  /// contact never holds as a wedge's (kHold, contact_solver.h).
   bool jointed = false;
   /// Whether the contact is level enough to stand on, and which way up
   /// (support_pass.h, facingOf): +1 with B above, -1 with A above, 0 not
@@ -70,7 +70,7 @@ struct ConstraintPoint {
   /// Fastest the soft contact may push (m/s): enough to carry that load.
   Real pushCap = 0;
   /// Push (m/s) added while overlapping, so that the soft contact holds
-  /// most of that load with no overlap (kHoldShare, contact_solver.h); 0 on
+  /// most of that load with no overlap (kHold, contact_solver.h); 0 on
   /// most contacts.
   Real holdSpeed = 0;
 };
@@ -233,7 +233,7 @@ struct ContactSolverContext {
 /// The step's contact softness: between dynamic bodies, and against static
 /// ones (stiffer, so stacks are not pushed into the ground); and a unit
 /// mass's weight per sub-step (g h; 0 without gravity), against which a
-/// contact's load is measured (kHoldFromWeights, contact_solver.h).
+/// contact's load is measured (kHold, contact_solver.h).
 struct ContactSoftness {
   Softness dynamic;
   Softness statics;

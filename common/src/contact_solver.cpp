@@ -103,10 +103,10 @@ void solveRollingRow(ContactConstraint& c, SolverState& a, SolverState& b, Real 
 
 bool intrudes(Real separation, Real loadOverlap) { return separation + loadOverlap < -kIntrusionSlop; }
 
-// The push that holds a share of a point's load with no overlap: its share
-// of kHoldShare, by the load in weights of the lighter body, on a contact
-// off level between two moving bodies without joints, not intruding
-// (kHoldShare, contact_solver.h); on kHangingHold's ramp where a body hangs.
+// The push that holds a share of a point's load with no overlap, by the
+// load in weights of the lighter body (kHold's ramp, contact_solver.h;
+// kHangingHold's where a body hangs), on a contact off level between two
+// moving bodies without joints, not intruding.
 Real holdSpeedFor(const ConstraintRef& ref, const ContactConstraint& c, const ConstraintPoint& cp, Real load,
                   bool intruding, Real weightPerMass) {
   if (weightPerMass == 0 || !mayHoldAsWedge(ref) || intruding) return 0;

@@ -33,6 +33,15 @@ inline constexpr Real kMinPushSpeed = Real(0.02);
 /// pushed into each other) beyond this is pushed out by the push pass.
 inline constexpr Real kIntrusionSlop = Real(0.005);
 
+/// How a wedge's contact holds (kHold): none while its load is under
+/// `fromWeights` times the lighter body's weight, rising to `share` of it at
+/// `fullWeights`.
+struct HoldRamp {
+  Real fromWeights;
+  Real fullWeights;
+  Real share;
+};
+
 /// A soft contact carries its load at an overlap (its give), and where
 /// bodies wedge against each other the give adds up: the stones of an arch
 /// sink into their joints, its haunches spread, and the keystone drops many
@@ -40,32 +49,19 @@ inline constexpr Real kIntrusionSlop = Real(0.005);
 /// A contact that leans more than 25 degrees off level, between two moving
 /// bodies without joints, and not intruding, holds a share of last step's
 /// load with no overlap (its push is raised by the speed that carries that
-/// share): none while the load is under kHoldFromWeights times the lighter
-/// body's weight, rising to kHoldShare at kHoldFullWeights, so that a
-/// wedge's joint gives a fifth as much. Piles' and stacks' contacts carry
-/// less than that sideways and are left as they are; without gravity no
-/// contact holds. The share rises with the load rather than switching on at
-/// a threshold: a load that hovers there (an arch's lower joints) turned the
-/// hold on and off, and the arch shook. That push is no faster than gravity
-/// accelerates a body in kHoldSpeedSubSteps sub-steps (an arch's is
-/// slower): a heap's contacts, loaded by impacts rather than weights, would
-/// otherwise throw its bodies (a thousand random bodies spawned overlapping
-/// in a box). A jointed body's loads are not weights it carries (a
-/// ragdoll's limbs), and its contacts never hold.
-inline constexpr Real kHoldFromWeights = Real(2);
-inline constexpr Real kHoldFullWeights = Real(6);
-inline constexpr Real kHoldShare = Real(0.8);
+/// share): none under two weights of the lighter body, rising to 0.8 at
+/// six, so that a wedge's joint gives a fifth as much. Piles' and stacks'
+/// contacts carry less than that sideways and are left as they are; without
+/// gravity no contact holds. The share rises with the load rather than
+/// switching on at a threshold: a load that hovers there (an arch's lower
+/// joints) turned the hold on and off, and the arch shook. That push is no
+/// faster than gravity accelerates a body in kHoldSpeedSubSteps sub-steps
+/// (an arch's is slower): a heap's contacts, loaded by impacts rather than
+/// weights, would otherwise throw its bodies (a thousand random bodies
+/// spawned overlapping in a box). A jointed body's loads are not weights it
+/// carries (a ragdoll's limbs), and its contacts never hold.
+inline constexpr HoldRamp kHold{Real(2), Real(6), Real(0.8)};
 inline constexpr Real kHoldSpeedSubSteps = Real(2);
-
-/// How a wedge's contact holds: from `fromWeights` of the lighter body's
-/// weight, rising to `share` at `fullWeights`.
-struct HoldRamp {
-  Real fromWeights;
-  Real fullWeights;
-  Real share;
-};
-
-inline constexpr HoldRamp kHold{kHoldFromWeights, kHoldFullWeights, kHoldShare};
 
 /// A contact of a body that hangs on steep contacts (an arch's stones from
 /// its fourth to the keystone, which the support pass reaches over steep

@@ -408,7 +408,7 @@ F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
   return inverseOrZero(c.invMassA + c.invMassB + c.invInertiaA * ra * ra + c.invInertiaB * rb * rb);
 }
 
-// holdSpeedFor, lane by lane, on the lanes of `mayHold` (kHoldShare).
+// holdSpeedFor, lane by lane, on the lanes of `mayHold` (kHold).
 template <class F>
 F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHold, F hangs, Real weightPerMass) {
   const F zero = simd::broadcast<F>(0);
@@ -489,12 +489,11 @@ void markIntruding(WideContactSet& set, std::int32_t stateA, std::int32_t stateB
 // The contacts of the bodies at most two contacts from an intrusion, lane
 // by lane: a body pushed out of an overlap into a neighbour is pushed back
 // out of that one in the same sub-step, and that neighbour out of the next;
-// farther on the
-// push has spent itself, and a crowd's other contacts are left to their
-// soft rows as a crowd without intrusions is (islands, bodies joined by
-// touching contacts, pushed whole had pushed 95 % of the contacts of a pile
-// of 8 000 circles in three quarters of its steps; these, a quarter). Any
-// width pushes the same contacts.
+// farther on the push has spent itself, and a crowd's other contacts are
+// left to their soft rows as a crowd without intrusions is (islands, bodies
+// joined by touching contacts, pushed whole had pushed 95 % of the contacts
+// of a pile of 8 000 circles in three quarters of its steps; these, a
+// quarter). Any width pushes the same contacts.
 template <class F>
 void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool anyIntrusion) {
   set.pushBundles.clear();
