@@ -45,16 +45,12 @@ void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
   contact = Contact{};
   contact.edges.bodyA = sa.body;
   contact.edges.bodyB = sb.body;
-  contact.shapeA = shapeA;
-  contact.shapeB = shapeB;
-  contact.rolls = sa.rolls() || sb.rolls();
-  contact.collide = collideFunction(sa.type(), sb.type());
+  setContactShapes(contact, shapeA, sa, shapeB, sb);
   contact.staticFriction = mixCoefficient(ma.staticFriction, mb.staticFriction);
   contact.dynamicFriction = mixCoefficient(ma.dynamicFriction, mb.dynamicFriction);
   contact.restitution = mixCoefficient(ma.restitution, mb.restitution);
   contact.rollingResistance = mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
                               std::max(sa.rollingRadius, sb.rollingRadius);
-  contact.pairKey = contactPairKey(shapeA, shapeB);
   setContactEventFlags(world, contact);
   linkContact(world, index);
   if (world.bodies[sa.body].awake || world.bodies[sb.body].awake) world.activeContacts.insert(index);

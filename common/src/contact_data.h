@@ -7,6 +7,7 @@
 
 #include "edge_list.h"
 #include "impulse/manifold.h"
+#include "shape_data.h"
 #include "shape_pair.h"
 
 namespace impulse {
@@ -49,5 +50,16 @@ struct alignas(64) Contact : ContactSolverPart {
   bool reportsTouch = false;
   bool reportsHits = false;
 };
+
+/// A contact's two shapes (slots a and b, A's first) and what it keeps of
+/// them: how they collide, whether either rolls, and the pair's key.
+inline void setContactShapes(Contact& contact, std::int32_t a, const ShapeSlot& shapeA, std::int32_t b,
+                             const ShapeSlot& shapeB) {
+  contact.shapeA = a;
+  contact.shapeB = b;
+  contact.rolls = shapeA.rolls() || shapeB.rolls();
+  contact.collide = collideFunction(shapeA.type(), shapeB.type());
+  contact.pairKey = contactPairKey(a, b);
+}
 
 }  // namespace impulse

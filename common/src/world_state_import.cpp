@@ -433,19 +433,14 @@ class StateImport {
           return at("contact slot", slot) + error;
         contact.edges.bodyA = c.bodyA;
         contact.edges.bodyB = c.bodyB;
-        contact.shapeA = c.shapeA;
-        contact.shapeB = c.shapeB;
+        setContactShapes(contact, c.shapeA, w.shapes[std::size_t(c.shapeA)], c.shapeB,
+                         w.shapes[std::size_t(c.shapeB)]);
         contact.manifold = c.manifold;
         contact.frame = c.frame;
-        const ShapeSlot& shapeA = w.shapes[std::size_t(c.shapeA)];
-        const ShapeSlot& shapeB = w.shapes[std::size_t(c.shapeB)];
-        contact.rolls = shapeA.rolls() || shapeB.rolls();
-        contact.collide = collideFunction(shapeA.type(), shapeB.type());
         contact.staticFriction = c.staticFriction;
         contact.dynamicFriction = c.dynamicFriction;
         contact.restitution = c.restitution;
         contact.rollingResistance = c.rollingResistance;
-        contact.pairKey = contactPairKey(c.shapeA, c.shapeB);
         contact.touching = c.touching;
         setContactEventFlags(w, contact);
         if (!w.contactByPair.insert(contact.pairKey)) {
