@@ -153,7 +153,7 @@ TEST(CompactSnapshots, SettlingScene_AtMostTwoAndAHalfBitsPerBodyPerSnapshot_Wit
 // takes to sleep: a quicker settle leaves fewer quiet snapshots at the end
 // and raises it while the whole settle takes fewer bytes. So the whole
 // settle is held to its measure, and the per-snapshot figure to a looser
-// bound. Today it sleeps after 5.3 s, at 7.5 bits and 149.3 bytes per body.
+// bound. Today it sleeps after 4.9 s, at 8.2 bits and 150.4 bytes per body.
 TEST(CompactSnapshots, StaggeredSettlingScene_AtMostTenAndAHalfBitsAndHundredSeventyBytesPerBody_WithinAQuantum) {
   const SettleCost cost = settleAndMeasure(0.2);
   ASSERT_FALSE(HasFailure());
