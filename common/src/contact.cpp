@@ -213,6 +213,17 @@ std::uint8_t wakeOutcome(const Contact& contact, const Body& a, const Body& b) {
   return contact.touching && (sleeps(a) || sleeps(b)) ? kWakes : kKept;
 }
 
+// Whether the two bodies' shapes are farther apart than `distance`
+// everywhere: each body's shapes lie within its extent of its origin. A
+// manifold keeps only points closer than its distance, and a point is never
+// closer than the shapes are, so theirs would have none, and is not
+// computed: in crowds tumbling in a drum, a third to a half of the manifolds
+// computed afresh came back without points, and most of those so far apart.
+bool apartBeyond(const Body& a, const Body& b, Real distance) {
+  const Real reach = a.extent + b.extent + distance;
+  return (b.transform.p - a.transform.p).squaredNorm() > reach * reach;
+}
+
 // Reads the bodies and shapes, writes only this contact: contacts can be
 // updated side by side.
 std::uint8_t updateManifold(const WorldData& world, Contact& contact, Real dt) {
@@ -232,9 +243,11 @@ std::uint8_t updateManifold(const WorldData& world, Contact& contact, Real dt) {
     refreshManifold(contact, a, b);
     return wakeOutcome(contact, a, b);
   }
-  Manifold next = contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
-                                  world.shapes[contact.shapeB].ref().geometry, b.transform,
-                                  kSpeculativeDistance + reach());
+  const Real keptWithin = kSpeculativeDistance + reach();
+  Manifold next = apartBeyond(a, b, keptWithin)
+                      ? Manifold{}
+                      : contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
+                                        world.shapes[contact.shapeB].ref().geometry, b.transform, keptWithin);
   if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
   contact.manifold = next;
   const bool wasTouching = contact.touching;
