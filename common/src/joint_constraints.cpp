@@ -19,6 +19,15 @@ std::int32_t blocksFor(std::int32_t rows) { return (rows + PinGeometry::kLanes -
 // Box2D v3's figure, and stiffer with more sub-steps, which is what lets a
 // heavy load on light links stretch them less (joint_accuracy_test).
 constexpr Real kJointDampingRatio = 2;
+// The plain pins of a group with a loop (a grid) are stiffer: the tree pass
+// never solves them, and a soft pin gives way by its load over its own
+// effective mass times the stiffness squared, so a grid's pin next to a
+// fixed body, holding a flap a thousand times its links' mass, opened
+// 11.8 cm at the quarter rate (Solver2D's 30 x 30 grid). At 0.3 of the
+// sub-step rate and a damping ratio of 5 it opens 9.0 cm, and the grids of
+// 100 x 100 hold better too; from about 0.36 the grids stir and open more.
+constexpr Real kLoopPinRate = Real(0.3);
+constexpr Real kLoopPinDampingRatio = 5;
 
 // Joint rows per range of a colour run side by side: a row costs tens of
 // nanoseconds, a hand-off to a thread about a microsecond; a block of eight
@@ -155,7 +164,8 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
     }
   });
   Real hertz = Real(0.25) / step.h;
-  pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
+  pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h),
+           makeSoftness(kLoopPinRate / step.h, kLoopPinDampingRatio, step.h), true};
   tree_.order(rows_, world.solverStates.size(), pass_.rigid, world.tasks);
   placeBlocks(world.tasks);
   fillBlocks(world.tasks);
@@ -200,15 +210,20 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
   for (int color = 0; color < colours; ++color) {
     const ColourRows& rows = counts[std::size_t(color)];
     const auto next = std::size_t(color) + 1;
-    pinBlockStarts_[next] = pinBlockStarts_[next - 1] + blocksFor(rows.pins);
+    pinBlockStarts_[next] = pinBlockStarts_[next - 1] + blocksFor(rows.loopPins) + blocksFor(rows.pins);
     revoluteBlockStarts_[next] = revoluteBlockStarts_[next - 1] + blocksFor(rows.revolutes);
     besideStarts_[next] = besideStarts_[next - 1] + rows.beside;
   }
   rowsBesidePins_.resize(std::size_t(besideStarts_[std::size_t(colours)]));
   tasks.forRanges(colours, 1, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t color = begin; color < end; ++color) placeRowsOfColour(color);
+    for (std::int32_t color = begin; color < end; ++color) placeRowsOfColour(color, counts[std::size_t(color)]);
   });
   pinBlocks_.resize(std::size_t(pinBlockStarts_[std::size_t(colours)]));
+  pinBlockInLoop_.assign(pinBlocks_.size(), 0);
+  for (int color = 0; color < colours; ++color) {
+    const auto first = pinBlockInLoop_.begin() + pinBlockStarts_[std::size_t(color)];
+    std::fill(first, first + blocksFor(counts[std::size_t(color)].loopPins), 1);
+  }
   revoluteBlocks_.resize(std::size_t(revoluteBlockStarts_[std::size_t(colours)]));
 }
 
@@ -221,7 +236,7 @@ JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) 
     BlockKind kind = BlockKind::None;
     if (row.plainPin && !row.inTree) {
       kind = BlockKind::Pin;
-      ++counts.pins;
+      ++(row.pinInLoop ? counts.loopPins : counts.pins);
     } else if (isTurningRevolute(row)) {
       kind = BlockKind::Revolute;
       ++counts.revolutes;
@@ -234,14 +249,16 @@ JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) 
 }
 
 // Each blocked row of the colour its lane (block times eight plus lane, by
-// rank within its kind), each other row its place beside the blocks.
-void JointConstraints::placeRowsOfColour(std::int32_t color) {
-  std::int32_t pin = pinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+// rank within its kind, pins in loops first), each other row its place
+// beside the blocks.
+void JointConstraints::placeRowsOfColour(std::int32_t color, const ColourRows& rows) {
+  std::int32_t loopPin = pinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+  std::int32_t pin = (pinBlockStarts_[std::size_t(color)] + blocksFor(rows.loopPins)) * PinGeometry::kLanes;
   std::int32_t revolute = revoluteBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
   std::int32_t beside = besideStarts_[std::size_t(color)];
   for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
     BlockPlace& place = placeOf_[std::size_t(r)];
-    if (place.kind == BlockKind::Pin) place.lane = pin++;
+    if (place.kind == BlockKind::Pin) place.lane = rows_[std::size_t(r)].pinInLoop ? loopPin++ : pin++;
     if (place.kind == BlockKind::Revolute) place.lane = revolute++;
     if (place.kind == BlockKind::None) rowsBesidePins_[std::size_t(beside++)] = r;
   }
@@ -339,13 +356,23 @@ void JointConstraints::warmStart(const SubStep& sub) {
 void JointConstraints::run(const SubStep& sub, bool useBias) {
   JointPass pass = pass_;
   pass.useBias = useBias;
-  const Softness pinSoftness = rowSoftness(pass);
   forEachRowByColor(
       sub, [&](JointRow& row, SolverState& a, SolverState& b) { solveJoint(row, a, b, pass); },
-      [&](std::span<PinBlock> blocks) { kernels_->solvePins(sub.states, blocks, pinSoftness); },
+      [&](std::span<PinBlock> blocks) { solvePinBlocks(sub, blocks, pass); },
       [&](std::span<RevoluteBlock> blocks) {
         kernels_->solveRevolutes(sub.states, blocks, rows_, pass);
       });
+}
+
+// Pin blocks of one colour at each block's softness: those of pins in loops
+// come first.
+void JointConstraints::solvePinBlocks(const SubStep& sub, std::span<PinBlock> blocks, const JointPass& pass) {
+  const auto first = std::size_t(blocks.data() - pinBlocks_.data());
+  std::size_t loopBlocks = 0;
+  while (loopBlocks < blocks.size() && pinBlockInLoop_[first + loopBlocks] != 0) ++loopBlocks;
+  if (loopBlocks > 0) kernels_->solvePins(sub.states, blocks.first(loopBlocks), loopPinSoftness(pass));
+  if (loopBlocks < blocks.size())
+    kernels_->solvePins(sub.states, blocks.subspan(loopBlocks), rowSoftness(pass));
 }
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }
