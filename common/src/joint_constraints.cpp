@@ -19,15 +19,17 @@ std::int32_t blocksFor(std::int32_t rows) { return (rows + PinGeometry::kLanes -
 // Box2D v3's figure, and stiffer with more sub-steps, which is what lets a
 // heavy load on light links stretch them less (joint_accuracy_test).
 constexpr Real kJointDampingRatio = 2;
-// The plain pins of a group with a loop (a grid) are stiffer: the tree pass
-// never solves them, and a soft pin gives way by its load over its own
-// effective mass times the stiffness squared, so a grid's pin next to a
-// fixed body, holding a flap a thousand times its links' mass, opened
-// 11.8 cm at the quarter rate (Solver2D's 30 x 30 grid). At 0.3 of the
-// sub-step rate and a damping ratio of 5 it opens 9.0 cm, and the grids of
-// 100 x 100 hold better too; from about 0.36 the grids stir and open more.
-constexpr Real kLoopPinRate = Real(0.3);
-constexpr Real kLoopPinDampingRatio = 5;
+// The plain pins of a group with a loop (a grid, a linkage) are stiffer:
+// the tree pass never solves them, and a soft pin gives way by its load over
+// its own effective mass times its stiffness squared, so in Solver2D's
+// 30 x 30 grid the pin beside a fixed circle that holds a flap of 360 circles
+// opened 11.8 cm at the quarter rate. At a third of the sub-step rate,
+// damped at a ratio of 1, it opens 8.8 cm, v3's 100 x 100 grid 0.42 m
+// (0.60) and a four-bar linkage 6.5 mm (9.6); a higher ratio damps the
+// swing of a linkage's error more slowly (at 5: 17 mm). From 0.4 of the rate
+// v3's grid stirs itself apart (2.6 m).
+constexpr Real kLoopPinRate = Real(0.33);
+constexpr Real kLoopPinDampingRatio = 1;
 
 // Joint rows per range of a colour run side by side: a row costs tens of
 // nanoseconds, a hand-off to a thread about a microsecond; a block of eight
