@@ -212,13 +212,15 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
   for (int color = 0; color < colours; ++color) {
     const ColourRows& rows = counts[std::size_t(color)];
     const auto next = std::size_t(color) + 1;
-    pinBlockStarts_[next] = pinBlockStarts_[next - 1] + blocksFor(rows.loopPins) + blocksFor(rows.pins);
+    pinBlockStarts_[next] =
+        pinBlockStarts_[next - 1] + blocksFor(rows.loopPins) + blocksFor(rows.pins);
     revoluteBlockStarts_[next] = revoluteBlockStarts_[next - 1] + blocksFor(rows.revolutes);
     besideStarts_[next] = besideStarts_[next - 1] + rows.beside;
   }
   rowsBesidePins_.resize(std::size_t(besideStarts_[std::size_t(colours)]));
   tasks.forRanges(colours, 1, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t color = begin; color < end; ++color) placeRowsOfColour(color, counts[std::size_t(color)]);
+    for (std::int32_t color = begin; color < end; ++color)
+      placeRowsOfColour(color, counts[std::size_t(color)]);
   });
   pinBlocks_.resize(std::size_t(pinBlockStarts_[std::size_t(colours)]));
   pinBlockInLoop_.assign(pinBlocks_.size(), 0);
@@ -255,12 +257,14 @@ JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) 
 // beside the blocks.
 void JointConstraints::placeRowsOfColour(std::int32_t color, const ColourRows& rows) {
   std::int32_t loopPin = pinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
-  std::int32_t pin = (pinBlockStarts_[std::size_t(color)] + blocksFor(rows.loopPins)) * PinGeometry::kLanes;
+  std::int32_t pin =
+      (pinBlockStarts_[std::size_t(color)] + blocksFor(rows.loopPins)) * PinGeometry::kLanes;
   std::int32_t revolute = revoluteBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
   std::int32_t beside = besideStarts_[std::size_t(color)];
   for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
     BlockPlace& place = placeOf_[std::size_t(r)];
-    if (place.kind == BlockKind::Pin) place.lane = rows_[std::size_t(r)].pinInLoop ? loopPin++ : pin++;
+    if (place.kind == BlockKind::Pin)
+      place.lane = rows_[std::size_t(r)].pinInLoop ? loopPin++ : pin++;
     if (place.kind == BlockKind::Revolute) place.lane = revolute++;
     if (place.kind == BlockKind::None) rowsBesidePins_[std::size_t(beside++)] = r;
   }
@@ -368,11 +372,13 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
 
 // Pin blocks of one colour at each block's softness: those of pins in loops
 // come first.
-void JointConstraints::solvePinBlocks(const SubStep& sub, std::span<PinBlock> blocks, const JointPass& pass) {
+void JointConstraints::solvePinBlocks(const SubStep& sub, std::span<PinBlock> blocks,
+                                      const JointPass& pass) {
   const auto first = std::size_t(blocks.data() - pinBlocks_.data());
   std::size_t loopBlocks = 0;
   while (loopBlocks < blocks.size() && pinBlockInLoop_[first + loopBlocks] != 0) ++loopBlocks;
-  if (loopBlocks > 0) kernels_->solvePins(sub.states, blocks.first(loopBlocks), loopPinSoftness(pass));
+  if (loopBlocks > 0)
+    kernels_->solvePins(sub.states, blocks.first(loopBlocks), loopPinSoftness(pass));
   if (loopBlocks < blocks.size())
     kernels_->solvePins(sub.states, blocks.subspan(loopBlocks), rowSoftness(pass));
 }

@@ -2,7 +2,8 @@
 // Joints as a constraint kind: each step takes the joints with an awake
 // body, colours them in the shared colouring (before the contacts take
 // theirs) and solves them soft-step style: rigid rows with the joint
-// softness, warm started; springs as exact-stiffness implicit rows.
+// softness (stiffer for the plain pins of groups with loops), warm started;
+// springs as exact-stiffness implicit rows.
 
 #include <cstdint>
 #include <span>

@@ -90,12 +90,13 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
   factorsCurrent_ = false;
   jointCount_ = 0;
   solvedGroups_.clear();
-  tasks.forRanges(std::int32_t(rows.size()), kRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t r = begin; r < end; ++r) {
-      JointRow& row = rows[std::size_t(r)];
-      row.pinInLoop = row.plainPin && rowInLoop_[std::size_t(r)] != 0;
-    }
-  });
+  tasks.forRanges(std::int32_t(rows.size()), kRowsPerRange,
+                  [&](std::int32_t begin, std::int32_t end) {
+                    for (std::int32_t r = begin; r < end; ++r) {
+                      JointRow& row = rows[std::size_t(r)];
+                      row.pinInLoop = row.plainPin && rowInLoop_[std::size_t(r)] != 0;
+                    }
+                  });
   std::size_t begin = 0;
   for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
     const std::span<const Node> group(nodes_.data() + begin, std::size_t(groupEnds_[g]) - begin);
@@ -141,11 +142,13 @@ JointTreePass::RowShape JointTreePass::shapeOf(const JointRow& row) {
 bool JointTreePass::sameRowsAsOrdered(std::span<const JointRow> rows, const TaskRunner& tasks) const {
   if (rows.size() != orderedFrom_.size()) return false;
   std::atomic<bool> differs{false};
-  tasks.forRanges(std::int32_t(rows.size()), kRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
-    const bool same = std::equal(rows.begin() + begin, rows.begin() + end, orderedFrom_.begin() + begin,
-                                 [](const JointRow& row, const RowShape& shape) { return shapeOf(row) == shape; });
-    if (!same) differs.store(true, std::memory_order_relaxed);
-  });
+  tasks.forRanges(
+      std::int32_t(rows.size()), kRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+        const bool same = std::equal(
+            rows.begin() + begin, rows.begin() + end, orderedFrom_.begin() + begin,
+            [](const JointRow& row, const RowShape& shape) { return shapeOf(row) == shape; });
+        if (!same) differs.store(true, std::memory_order_relaxed);
+      });
   return !differs.load(std::memory_order_relaxed);
 }
 
@@ -206,7 +209,9 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
 
 void JointTreePass::findRowsInLoops(std::span<const JointRow> rows) {
   rowInLoop_.assign(rows.size(), 0);
-  auto inLoop = [&](std::int32_t state) { return groupHasLoop_[unionFindRoot(bodyGroup_, state)] != 0; };
+  auto inLoop = [&](std::int32_t state) {
+    return groupHasLoop_[unionFindRoot(bodyGroup_, state)] != 0;
+  };
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const JointRow& row = rows[r];
     if (row.rigidRowCount == 0) continue;
