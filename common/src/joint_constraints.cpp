@@ -19,6 +19,17 @@ std::int32_t blocksFor(std::int32_t rows) { return (rows + PinGeometry::kLanes -
 // Box2D v3's figure, and stiffer with more sub-steps, which is what lets a
 // heavy load on light links stretch them less (joint_accuracy_test).
 constexpr Real kJointDampingRatio = 2;
+// The plain pins of a group with a loop (a grid, a linkage) are stiffer:
+// the tree pass never solves them, and a soft pin gives way by its load over
+// its own effective mass times its stiffness squared, so in Solver2D's
+// 30 x 30 grid the pin beside a fixed circle that holds a flap of 360 circles
+// opened 11.8 cm at the quarter rate. At a third of the sub-step rate,
+// damped at a ratio of 1, it opens 8.8 cm, v3's 100 x 100 grid 0.42 m
+// (0.60) and a four-bar linkage 6.5 mm (9.6); a higher ratio damps the
+// swing of a linkage's error more slowly (at 5: 17 mm). From 0.4 of the rate
+// v3's grid stirs itself apart (2.6 m).
+constexpr Real kLoopPinRate = Real(0.33);
+constexpr Real kLoopPinDampingRatio = 1;
 
 // Joint rows per range of a colour run side by side: a row costs tens of
 // nanoseconds, a hand-off to a thread about a microsecond; a block of eight
@@ -155,7 +166,8 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
     }
   });
   Real hertz = Real(0.25) / step.h;
-  pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h), true};
+  pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h),
+           makeSoftness(kLoopPinRate / step.h, kLoopPinDampingRatio, step.h), true};
   tree_.order(rows_, world.solverStates.size(), pass_.rigid, world.tasks);
   placeBlocks(world.tasks);
   fillBlocks(world.tasks);
@@ -200,15 +212,22 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
   for (int color = 0; color < colours; ++color) {
     const ColourRows& rows = counts[std::size_t(color)];
     const auto next = std::size_t(color) + 1;
-    pinBlockStarts_[next] = pinBlockStarts_[next - 1] + blocksFor(rows.pins);
+    pinBlockStarts_[next] =
+        pinBlockStarts_[next - 1] + blocksFor(rows.loopPins) + blocksFor(rows.pins);
     revoluteBlockStarts_[next] = revoluteBlockStarts_[next - 1] + blocksFor(rows.revolutes);
     besideStarts_[next] = besideStarts_[next - 1] + rows.beside;
   }
   rowsBesidePins_.resize(std::size_t(besideStarts_[std::size_t(colours)]));
   tasks.forRanges(colours, 1, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t color = begin; color < end; ++color) placeRowsOfColour(color);
+    for (std::int32_t color = begin; color < end; ++color)
+      placeRowsOfColour(color, counts[std::size_t(color)]);
   });
   pinBlocks_.resize(std::size_t(pinBlockStarts_[std::size_t(colours)]));
+  pinBlockInLoop_.assign(pinBlocks_.size(), 0);
+  for (int color = 0; color < colours; ++color) {
+    const auto first = pinBlockInLoop_.begin() + pinBlockStarts_[std::size_t(color)];
+    std::fill(first, first + blocksFor(counts[std::size_t(color)].loopPins), 1);
+  }
   revoluteBlocks_.resize(std::size_t(revoluteBlockStarts_[std::size_t(colours)]));
 }
 
@@ -221,7 +240,7 @@ JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) 
     BlockKind kind = BlockKind::None;
     if (row.plainPin && !row.inTree) {
       kind = BlockKind::Pin;
-      ++counts.pins;
+      ++(row.pinInLoop ? counts.loopPins : counts.pins);
     } else if (isTurningRevolute(row)) {
       kind = BlockKind::Revolute;
       ++counts.revolutes;
@@ -234,14 +253,18 @@ JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) 
 }
 
 // Each blocked row of the colour its lane (block times eight plus lane, by
-// rank within its kind), each other row its place beside the blocks.
-void JointConstraints::placeRowsOfColour(std::int32_t color) {
-  std::int32_t pin = pinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+// rank within its kind, pins in loops first), each other row its place
+// beside the blocks.
+void JointConstraints::placeRowsOfColour(std::int32_t color, const ColourRows& rows) {
+  std::int32_t loopPin = pinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+  std::int32_t pin =
+      (pinBlockStarts_[std::size_t(color)] + blocksFor(rows.loopPins)) * PinGeometry::kLanes;
   std::int32_t revolute = revoluteBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
   std::int32_t beside = besideStarts_[std::size_t(color)];
   for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
     BlockPlace& place = placeOf_[std::size_t(r)];
-    if (place.kind == BlockKind::Pin) place.lane = pin++;
+    if (place.kind == BlockKind::Pin)
+      place.lane = rows_[std::size_t(r)].pinInLoop ? loopPin++ : pin++;
     if (place.kind == BlockKind::Revolute) place.lane = revolute++;
     if (place.kind == BlockKind::None) rowsBesidePins_[std::size_t(beside++)] = r;
   }
@@ -339,13 +362,25 @@ void JointConstraints::warmStart(const SubStep& sub) {
 void JointConstraints::run(const SubStep& sub, bool useBias) {
   JointPass pass = pass_;
   pass.useBias = useBias;
-  const Softness pinSoftness = rowSoftness(pass);
   forEachRowByColor(
       sub, [&](JointRow& row, SolverState& a, SolverState& b) { solveJoint(row, a, b, pass); },
-      [&](std::span<PinBlock> blocks) { kernels_->solvePins(sub.states, blocks, pinSoftness); },
+      [&](std::span<PinBlock> blocks) { solvePinBlocks(sub, blocks, pass); },
       [&](std::span<RevoluteBlock> blocks) {
         kernels_->solveRevolutes(sub.states, blocks, rows_, pass);
       });
+}
+
+// Pin blocks of one colour at each block's softness: those of pins in loops
+// come first.
+void JointConstraints::solvePinBlocks(const SubStep& sub, std::span<PinBlock> blocks,
+                                      const JointPass& pass) {
+  const auto first = std::size_t(blocks.data() - pinBlocks_.data());
+  std::size_t loopBlocks = 0;
+  while (loopBlocks < blocks.size() && pinBlockInLoop_[first + loopBlocks] != 0) ++loopBlocks;
+  if (loopBlocks > 0)
+    kernels_->solvePins(sub.states, blocks.first(loopBlocks), loopPinSoftness(pass));
+  if (loopBlocks < blocks.size())
+    kernels_->solvePins(sub.states, blocks.subspan(loopBlocks), rowSoftness(pass));
 }
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }

@@ -2,9 +2,11 @@
 // Joints as a constraint kind: each step takes the joints with an awake
 // body, colours them in the shared colouring (before the contacts take
 // theirs) and solves them soft-step style: rigid rows with the joint
-// softness, warm started; springs as exact-stiffness implicit rows.
+// softness (stiffer for the plain pins of groups with loops), warm started;
+// springs as exact-stiffness implicit rows.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "constraint_kind.h"
@@ -35,16 +37,18 @@ class JointConstraints final : public ConstraintKind {
   template <class Visit, class VisitPins, class VisitRevolutes>
   void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins, VisitRevolutes&& visitRevolutes);
   void findJointSides(const WorldData& world);
-  /// How many of a colour's rows go in pin blocks, in revolute blocks and
-  /// beside them.
+  /// How many of a colour's rows go in pin blocks (those of pins in loops
+  /// apart), in revolute blocks and beside them.
   struct ColourRows {
+    std::int32_t loopPins = 0;
     std::int32_t pins = 0;
     std::int32_t revolutes = 0;
     std::int32_t beside = 0;
   };
   void placeBlocks(const TaskRunner& tasks);
   ColourRows markRowKinds(std::int32_t color);
-  void placeRowsOfColour(std::int32_t color);
+  void placeRowsOfColour(std::int32_t color, const ColourRows& rows);
+  void solvePinBlocks(const SubStep& sub, std::span<PinBlock> blocks, const JointPass& pass);
   void fillBlocks(const TaskRunner& tasks);
 
   std::vector<JointRow> rows_;
@@ -70,8 +74,11 @@ class JointConstraints final : public ConstraintKind {
   /// Colour c's plain pins outside the tree pass, eight to a block, are
   /// pinBlocks_[pinBlockStarts_[c], pinBlockStarts_[c + 1]), its revolute
   /// joints with turning rows likewise in revoluteBlocks_; its other rows
-  /// are rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]).
+  /// are rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]). A
+  /// colour's pins in loops (JointRow::pinInLoop) fill its first pin blocks,
+  /// marked in pinBlockInLoop_, as they take another softness.
   std::vector<PinBlock> pinBlocks_;
+  std::vector<std::uint8_t> pinBlockInLoop_;
   std::vector<RevoluteBlock> revoluteBlocks_;
   /// Per row (by rank), the kind of block it is in and its block * 8 + lane.
   enum class BlockKind : std::uint8_t { None, Pin, Revolute };

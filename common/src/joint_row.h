@@ -31,6 +31,9 @@ struct JointRow {
   /// Its rigid rows belong to the tree pass (joint_tree_pass.h), which solves
   /// them exactly after the soft pass: the soft pass skips them.
   bool inTree = false;
+  /// A plain pin in a group with a loop (a grid): the tree pass never
+  /// solves it, so its soft rows alone hold the load, at JointPass::loop.
+  bool pinInLoop = false;
   /// How many rigid rows it has (rigidRows), and whether it has others (a
   /// motor, a limit, a spring): fixed by its settings, found once a step.
   int rigidRowCount = 0;
@@ -49,6 +52,8 @@ struct JointPass {
   Real h = 0;
   Real invH = 0;
   Softness rigid;
+  /// The plain pins of groups with loops (JointRow::pinInLoop): stiffer.
+  Softness loop;
   bool useBias = true;
 };
 
@@ -79,6 +84,12 @@ using RigidRows = std::array<RigidRow, 3>;
 /// A rigid row's softness in `pass`: the soft step's, with position
 /// feedback, in the biased pass; hard (velocity only) in the relax pass.
 Softness rowSoftness(const JointPass& pass);
+/// A pin in a loop's softness in `pass`: JointPass::loop in the biased pass,
+/// hard in the relax pass.
+Softness loopPinSoftness(const JointPass& pass);
+/// A rigid point row's softness in `pass`: loopPinSoftness for a pin in a
+/// loop, rowSoftness otherwise.
+Softness pointSoftness(const JointRow& row, const JointPass& pass);
 
 /// The rows of one kind (joint_rows.cpp).
 void warmStartJoint(JointRow& row, SolverState& a, SolverState& b);

@@ -171,7 +171,8 @@ void pointRow(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumula
 void rigidPoint(const JointRow& row, const Frame& f, const Vec2& c, Vec2& accumulated,
                 const JointPass& pass, SolverState& a, SolverState& b) {
   if (row.inTree && pass.useBias) return;
-  pointRow(row, f, c, accumulated, rowSoftness(pass), std::numeric_limits<Real>::infinity(), a, b);
+  pointRow(row, f, c, accumulated, pointSoftness(row, pass), std::numeric_limits<Real>::infinity(),
+           a, b);
 }
 
 // The share of its force a rigid mouse joint plans to brake with: the rest
@@ -408,6 +409,14 @@ void addRigid(RigidRowsOut& out, RigidContext& x, const WheelJointSettings& s) {
 }  // namespace
 
 Softness rowSoftness(const JointPass& pass) { return pass.useBias ? pass.rigid : Softness{0, 1, 0}; }
+
+Softness loopPinSoftness(const JointPass& pass) {
+  return pass.useBias ? pass.loop : rowSoftness(pass);
+}
+
+Softness pointSoftness(const JointRow& row, const JointPass& pass) {
+  return row.pinInLoop ? loopPinSoftness(pass) : rowSoftness(pass);
+}
 
 Real jointAngle(const Joint& joint, const Rot& qA, const Rot& qB) {
   constexpr Real pi = std::numbers::pi_v<Real>;

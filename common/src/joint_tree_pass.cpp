@@ -28,6 +28,9 @@ constexpr double kMaxCorrectionSpeed = 2;
 // elimination regular where rows repeat each other (two pins at one point,
 // both ends of a bridge), far below anything a step can show.
 constexpr double kCompliance = 1e-5;
+// Rows per range of the side-by-side passes over every row (comparing it,
+// marking it): a row costs a few nanoseconds.
+constexpr std::int32_t kRowsPerRange = 1024;
 
 // The speed a row is given to take out its share of position error.
 double correctionSpeed(double errorRate, Real position) {
@@ -87,6 +90,13 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
   factorsCurrent_ = false;
   jointCount_ = 0;
   solvedGroups_.clear();
+  tasks.forRanges(std::int32_t(rows.size()), kRowsPerRange,
+                  [&](std::int32_t begin, std::int32_t end) {
+                    for (std::int32_t r = begin; r < end; ++r) {
+                      JointRow& row = rows[std::size_t(r)];
+                      row.pinInLoop = row.plainPin && rowInLoop_[std::size_t(r)] != 0;
+                    }
+                  });
   std::size_t begin = 0;
   for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
     const std::span<const Node> group(nodes_.data() + begin, std::size_t(groupEnds_[g]) - begin);
@@ -129,18 +139,16 @@ JointTreePass::RowShape JointTreePass::shapeOf(const JointRow& row) {
           row.invMassA, row.invInertiaA, row.invMassB, row.invInertiaB};
 }
 
-// Rows per range of the side-by-side comparison: a row costs a few
-// nanoseconds.
-constexpr std::int32_t kRowsPerCompareRange = 1024;
-
 bool JointTreePass::sameRowsAsOrdered(std::span<const JointRow> rows, const TaskRunner& tasks) const {
   if (rows.size() != orderedFrom_.size()) return false;
   std::atomic<bool> differs{false};
-  tasks.forRanges(std::int32_t(rows.size()), kRowsPerCompareRange, [&](std::int32_t begin, std::int32_t end) {
-    const bool same = std::equal(rows.begin() + begin, rows.begin() + end, orderedFrom_.begin() + begin,
-                                 [](const JointRow& row, const RowShape& shape) { return shapeOf(row) == shape; });
-    if (!same) differs.store(true, std::memory_order_relaxed);
-  });
+  tasks.forRanges(
+      std::int32_t(rows.size()), kRowsPerRange, [&](std::int32_t begin, std::int32_t end) {
+        const bool same = std::equal(
+            rows.begin() + begin, rows.begin() + end, orderedFrom_.begin() + begin,
+            [](const JointRow& row, const RowShape& shape) { return shapeOf(row) == shape; });
+        if (!same) differs.store(true, std::memory_order_relaxed);
+      });
   return !differs.load(std::memory_order_relaxed);
 }
 
@@ -148,6 +156,7 @@ void JointTreePass::orderAnew(std::span<const JointRow> rows, std::size_t stateC
   clear();
   for (const JointRow& row : rows) orderedFrom_.push_back(shapeOf(row));
   buildGroups(rows, stateCount);
+  findRowsInLoops(rows);
   jointTaken_.assign(rows.size(), 0);
   bodyVisit_.assign(stateCount, -1);
   // A joint to the world is the best root: then no leaf is a joint alone,
@@ -195,6 +204,18 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
     if (row.rigidRowCount == 0) continue;
     if (hasBodyA(row)) jointsOfBody_[cursor_[row.stateA]++] = static_cast<std::int32_t>(r);
     if (hasBodyB(row)) jointsOfBody_[cursor_[row.stateB]++] = static_cast<std::int32_t>(r);
+  }
+}
+
+void JointTreePass::findRowsInLoops(std::span<const JointRow> rows) {
+  rowInLoop_.assign(rows.size(), 0);
+  auto inLoop = [&](std::int32_t state) {
+    return groupHasLoop_[unionFindRoot(bodyGroup_, state)] != 0;
+  };
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const JointRow& row = rows[r];
+    if (row.rigidRowCount == 0) continue;
+    rowInLoop_[r] = (hasBodyA(row) && inLoop(row.stateA)) || (hasBodyB(row) && inLoop(row.stateB));
   }
 }
 

@@ -49,7 +49,8 @@ class JointTreePass {
   /// each group's bodies and joints from the leaves to a root. Last step's
   /// groups are kept while every row joins the same states with the same
   /// masses. Then marks `inTree` the rows of the groups it solves this
-  /// step (needsExactPass; `rigid` is the soft rigid rows' softness).
+  /// step (needsExactPass; `rigid` is the soft rigid rows' softness), and
+  /// `pinInLoop` the plain pins of the groups with a loop.
   void order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid, const TaskRunner& tasks);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() {
@@ -116,6 +117,7 @@ class JointTreePass {
   bool sameRowsAsOrdered(std::span<const JointRow> rows, const TaskRunner& tasks) const;
   void orderAnew(std::span<const JointRow> rows, std::size_t stateCount);
   void buildGroups(std::span<const JointRow> rows, std::size_t stateCount);
+  void findRowsInLoops(std::span<const JointRow> rows);
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
   void storeReversed(std::span<const JointRow> rows);
   Eigen::Vector3d bodyMass(std::span<const JointRow> rows, const Visit& body) const;
@@ -150,6 +152,7 @@ class JointTreePass {
   std::vector<std::int32_t> jointsStart_;
   std::vector<std::int32_t> cursor_;
   std::vector<std::int32_t> loopBodies_;
+  std::vector<std::uint8_t> rowInLoop_;  ///< by row: its group has a loop
   std::vector<Visit> walk_;
   std::vector<Node> nodes_;  ///< every group, each leaves first, root last
   std::vector<std::int32_t> groupEnds_;  ///< where each group's nodes end in nodes_
