@@ -143,6 +143,9 @@ void ContactConstraints::solve(const SubStep& sub) {
   if (support_.leaningRows() > 0)
     kernels_->solveSupport(context, wide_, support_, SupportRows::Leaning);
   kernels_->solve(context, wide_, true);
+  if (sub.index == 0) {
+    for (int pass = 0; pass < support_.startPasses(); ++pass) kernels_->solve(context, wide_, true);
+  }
   kernels_->solveSupport(context, wide_, support_, SupportRows::Standing);
 }
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }

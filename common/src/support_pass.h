@@ -75,6 +75,17 @@ inline constexpr Real kMinUpwardNormal = Real(0.9);
 // than this leans, and runs before the soft rows (above).
 inline constexpr Real kMinFlatNormal = Real(0.9962);
 inline constexpr std::int8_t kFlat = 2;
+// Start loads (SupportPass::estimateStartLoads). A contact closer to
+// vertical than this (cos of its normal to up) carries no weight to start
+// from (a box beside another on the ground).
+inline constexpr Real kMinLeaningUpward = Real(0.05);
+// A new contact's point within this gap (m) touches, and starts loaded...
+inline constexpr Real kStartTouch = Real(0.0005);
+// ... where its bodies meet or part slower than this (m/s): at rest.
+inline constexpr Real kStartRestSpeed = Real(0.01);
+// Soft passes added to the first sub-step of a step that started a hanging
+// body's contact (a wedge built at rest: an arch's joints).
+inline constexpr int kStartPasses = 5;
 
 /// A contact of this normal is level enough to stand on (ConstraintRef::facing):
 /// +1 with B above, -1 with A above, 0 not level; twice that when within
@@ -137,6 +148,10 @@ class SupportPass {
   std::span<const std::int32_t> storeyStarts() const { return storeyGroupStart_; }
   /// How many of the rows lean (SupportRow::leans).
   int leaningRows() const { return leaningRows_; }
+  /// Extra soft passes the step's first sub-step takes: kStartPasses where
+  /// a contact of a hanging body started from its estimated load this step
+  /// (estimateStartLoads), else none.
+  int startPasses() const { return startedHanging_ > 0 ? kStartPasses : 0; }
 
  private:
   /// Compliance (impulseScale / (massScale * biasRate)) of the soft contacts
@@ -157,6 +172,7 @@ class SupportPass {
   void linkCandidates(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void estimateSinks(std::span<const ConstraintRef> refs);
   void keepStacksThatSink();
+  void estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs);
   std::int32_t upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
   std::int32_t lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
 
@@ -211,6 +227,24 @@ class SupportPass {
   std::vector<Real> sink_;
   std::vector<std::int32_t> stack_;
   std::vector<Real> stackSink_;
+  /// New contacts' start loads (estimateStartLoads): the contacts a body
+  /// stands or leans on, by its level, and per state the sum of their
+  /// upward normals.
+  struct Leaning {
+    std::int32_t ref = 0;
+    std::int32_t upper = 0;
+    std::int32_t lower = 0;
+    Real upward = 0;
+    std::int32_t touching = 0;
+  };
+  std::vector<Leaning> leanings_;
+  std::vector<Leaning> leaningsByLevel_;
+  std::vector<Real> upwardSum_;
+  std::vector<std::int32_t> standingPoints_;
+  /// Per contact: among last step's refs (set and cleared within
+  /// estimateStartLoads).
+  std::vector<std::uint8_t> touchedLastStep_;
+  int startedHanging_ = 0;
   std::vector<SupportRow> rows_;
   int leaningRows_ = 0;
   std::vector<std::int32_t> groupStart_;
