@@ -245,7 +245,7 @@ void SupportPass::keepStacksThatSink() {
 // friction's help: share / (up . n + friction * |up . t|).
 void SupportPass::estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs) {
   const bool anyNew = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.lastLoad == 0; });
-  if (!anyNew) return;
+  if (!anyHangs_ || !anyNew) return;
   // New: not among last step's refs (a contact that carried nothing then
   // is left as it is).
   touchedLastStep_.resize(world.contacts.size(), 0);
@@ -295,13 +295,15 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<Constrain
     const Real share = carried_[std::size_t(l.upper)] * l.upward / upwardSum_[std::size_t(l.upper)];
     if (l.lower != 0) carried_[std::size_t(l.lower)] += share;
     ConstraintRef& ref = refs[std::size_t(l.ref)];
-    if (ref.lastLoad != 0 || touchedLastStep_[std::size_t(ref.contact)] != 0 || standingPoints_[std::size_t(l.upper)] < 2)
+    if (hangs_[std::size_t(l.upper)] == 0 || ref.lastLoad != 0 || touchedLastStep_[std::size_t(ref.contact)] != 0 ||
+        standingPoints_[std::size_t(l.upper)] < 2) {
       continue;
+    }
     const ContactSolverPart& contact = world.contacts[ref.contact];
     const Real across = std::sqrt(std::max(Real(1) - l.upward * l.upward, Real(0)));
     const Real normal = weightPerMass_ * share / (l.upward + contact.staticFriction * across);
     ref.startImpulse = normal / Real(l.touching);
-    if (hangs_[std::size_t(l.upper)] != 0 && l.lower != 0) ++startedHanging_;
+    ++started_;
   }
   if (haveLast_) {
     for (const ConstraintRef& ref : lastRefs_) {
@@ -322,7 +324,7 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   }
   weightPerMass_ = world.settings.gravity.norm() * h;
   compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
-  startedHanging_ = 0;
+  started_ = 0;
   if (!sameGraphAsLastStep(world, refs)) {
     findCandidates(world, refs, stateCount);
     estimateStartLoads(world, refs);

@@ -151,7 +151,7 @@ class SupportPass {
   /// Extra soft passes the step's first sub-step takes: kStartPasses where
   /// a contact of a hanging body started from its estimated load this step
   /// (estimateStartLoads), else none.
-  int startPasses() const { return startedHanging_ > 0 ? kStartPasses : 0; }
+  int startPasses() const { return started_ > 0 ? kStartPasses : 0; }
 
  private:
   /// Compliance (impulseScale / (massScale * biasRate)) of the soft contacts
@@ -244,7 +244,7 @@ class SupportPass {
   /// Per contact: among last step's refs (set and cleared within
   /// estimateStartLoads).
   std::vector<std::uint8_t> touchedLastStep_;
-  int startedHanging_ = 0;
+  int started_ = 0;
   std::vector<SupportRow> rows_;
   int leaningRows_ = 0;
   std::vector<std::int32_t> groupStart_;
