@@ -41,6 +41,10 @@ struct ConstraintRef {
   /// support_pass.h): as a wedge's contact it holds from lighter loads
   /// (kHangingHold, contact_solver.h).
   bool hangs : 1 = false;
+  /// A point touches (within kStartTouch, support_pass.h) and none carried
+  /// a load last step: it may be new, and start from an estimated load
+  /// (SupportPass::estimateStartLoads).
+  bool touchesUnloaded : 1 = false;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.
   Real invMassA = 0;

@@ -33,6 +33,14 @@ Real lastLoad(const Manifold& manifold) {
   return load;
 }
 
+// Whether a point touches (kStartTouch): read with the manifold's impulses.
+bool touches(const Manifold& manifold) {
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    if (manifold.points[j].separation <= kStartTouch) return true;
+  }
+  return false;
+}
+
 // Everything the step reads of a contact outside its bundle lane, read
 // together while its lines are in.
 ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) {
@@ -42,9 +50,10 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide a = sideOf(bodyA);
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
+  const Real load = lastLoad(contact.manifold);
   return {index,         a.state,   b.state,      false,        jointed,     facingOf(contact.manifold.normal, up),
-          contact.rolls, false,     a.invMass,    a.invInertia, b.invMass,   b.invInertia,
-          lastLoad(contact.manifold)};
+          contact.rolls, false,     load == 0 && touches(contact.manifold),
+          a.invMass,     a.invInertia, b.invMass,  b.invInertia, load};
 }
 
 // Contacts ahead of the one read whose lines (the manifold's two, and the

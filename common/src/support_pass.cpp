@@ -243,17 +243,42 @@ void SupportPass::keepStacksThatSink() {
 // on it, top level first) shared over the contacts it leans on by their
 // upward normals, and the normal impulse that holds that share up with the
 // friction's help: share / (up . n + friction * |up . t|).
-void SupportPass::estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs) {
-  const bool anyNew = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.lastLoad == 0; });
-  if (!anyHangs_ || !anyNew) return;
-  // New: not among last step's refs (a contact that carried nothing then
-  // is left as it is).
-  touchedLastStep_.resize(world.contacts.size(), 0);
-  if (haveLast_) {
+// Marks the refs that may start (startable_): of those of a hanging body
+// that carried nothing last step (startCandidates_, order), those at rest
+// and new (not among last step's refs: a contact that carried nothing then
+// is left as it is). Returns whether any may. Cheapest tests first: most
+// steps no candidate is at rest, and last step's refs are not read.
+bool SupportPass::markStartable(const WorldData& world, std::span<const ConstraintRef> refs) {
+  const auto restless = [&](std::int32_t i) {
+    const ConstraintRef& ref = refs[std::size_t(i)];
+    return pointsAtRest(world, ref, world.contacts[ref.contact].manifold) == 0;
+  };
+  startCandidates_.erase(std::remove_if(startCandidates_.begin(), startCandidates_.end(), restless),
+                         startCandidates_.end());
+  if (startCandidates_.empty()) return false;
+  // All zero between calls; a contact of last step's beyond the world's
+  // (should they have shrunk) cannot be one of this step's.
+  touchedLastStep_.resize(std::max(touchedLastStep_.size(), world.contacts.size()), 0);
+  const auto markLastStep = [&](std::uint8_t mark) {
+    if (!haveLast_) return;
     for (const ConstraintRef& ref : lastRefs_) {
-      if (std::size_t(ref.contact) < touchedLastStep_.size()) touchedLastStep_[std::size_t(ref.contact)] = 1;
+      if (std::size_t(ref.contact) < touchedLastStep_.size()) touchedLastStep_[std::size_t(ref.contact)] = mark;
     }
+  };
+  markLastStep(1);
+  startable_.assign(refs.size(), 0);
+  bool any = false;
+  for (const std::int32_t i : startCandidates_) {
+    if (touchedLastStep_[std::size_t(refs[std::size_t(i)].contact)] != 0) continue;
+    startable_[std::size_t(i)] = 1;
+    any = true;
   }
+  markLastStep(0);
+  return any;
+}
+
+void SupportPass::estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs) {
+  if (!markStartable(world, refs)) return;
   const Vec2 up = upwards(world.settings.gravity);
   const std::size_t stateCount = level_.size();
   leanings_.clear();
@@ -295,20 +320,13 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<Constrain
     const Real share = carried_[std::size_t(l.upper)] * l.upward / upwardSum_[std::size_t(l.upper)];
     if (l.lower != 0) carried_[std::size_t(l.lower)] += share;
     ConstraintRef& ref = refs[std::size_t(l.ref)];
-    if (hangs_[std::size_t(l.upper)] == 0 || ref.lastLoad != 0 || touchedLastStep_[std::size_t(ref.contact)] != 0 ||
-        standingPoints_[std::size_t(l.upper)] < 2) {
+    if (startable_[std::size_t(l.ref)] == 0 || hangs_[std::size_t(l.upper)] == 0 || standingPoints_[std::size_t(l.upper)] < 2)
       continue;
-    }
     const ContactSolverPart& contact = world.contacts[ref.contact];
     const Real across = std::sqrt(std::max(Real(1) - l.upward * l.upward, Real(0)));
     const Real normal = weightPerMass_ * share / (l.upward + contact.staticFriction * across);
     ref.startImpulse = normal / Real(l.touching);
     ++started_;
-  }
-  if (haveLast_) {
-    for (const ConstraintRef& ref : lastRefs_) {
-      if (std::size_t(ref.contact) < touchedLastStep_.size()) touchedLastStep_[std::size_t(ref.contact)] = 0;
-    }
   }
 }
 
@@ -325,18 +343,22 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   weightPerMass_ = world.settings.gravity.norm() * h;
   compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
   started_ = 0;
-  if (!sameGraphAsLastStep(world, refs)) {
-    findCandidates(world, refs, stateCount);
-    estimateStartLoads(world, refs);
-    remember(world, refs);
-  }
+  const bool graphChanged = !sameGraphAsLastStep(world, refs);
+  if (graphChanged) findCandidates(world, refs, stateCount);
   estimateSinks(refs);
   keepStacksThatSink();
   for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
-  if (!anyHangs_) return;
-  for (ConstraintRef& ref : refs) {
-    ref.hangs = hangs_[std::size_t(ref.stateA)] != 0 || hangs_[std::size_t(ref.stateB)] != 0;
+  if (anyHangs_) {
+    startCandidates_.clear();
+    for (std::size_t i = 0; i < refs.size(); ++i) {
+      ConstraintRef& ref = refs[i];
+      ref.hangs = hangs_[std::size_t(ref.stateA)] != 0 || hangs_[std::size_t(ref.stateB)] != 0;
+      if (ref.hangs && ref.touchesUnloaded && !ref.jointed) startCandidates_.push_back(std::int32_t(i));
+    }
+    // New contacts change the graph.
+    if (graphChanged) estimateStartLoads(world, refs);
   }
+  if (graphChanged) remember(world, refs);
 }
 
 void SupportPass::findCandidates(const WorldData& world, std::span<const ConstraintRef> refs,

@@ -172,6 +172,7 @@ class SupportPass {
   void linkCandidates(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void estimateSinks(std::span<const ConstraintRef> refs);
   void keepStacksThatSink();
+  bool markStartable(const WorldData& world, std::span<const ConstraintRef> refs);
   void estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs);
   std::int32_t upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
   std::int32_t lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
@@ -241,9 +242,12 @@ class SupportPass {
   std::vector<Leaning> leaningsByLevel_;
   std::vector<Real> upwardSum_;
   std::vector<std::int32_t> standingPoints_;
-  /// Per contact: among last step's refs (set and cleared within
-  /// estimateStartLoads).
+  /// Refs that may start but for being new, and per contact whether it
+  /// was among last step's refs (markStartable).
+  std::vector<std::int32_t> startCandidates_;
   std::vector<std::uint8_t> touchedLastStep_;
+  /// Per ref: may start from an estimated load (markStartable).
+  std::vector<std::uint8_t> startable_;
   int started_ = 0;
   std::vector<SupportRow> rows_;
   int leaningRows_ = 0;
