@@ -128,8 +128,9 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   }
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
-  // The support pass's plan writes only the refs' holdsUp; the colours read
-  // only their states: the two go side by side, given a range of refs.
+  // The support pass's plan writes only the refs' flags and start loads;
+  // the colours read only their states: the two go side by side, given a
+  // range of refs.
   world.tasks.bothAtOnce(std::int32_t(refs_.size()), kRefsPerRange,
                          [&] { support_.order(world, refs_, stateCount, softness, step.h); },
                          [&] { colourContacts(refs_, coloring, wide_); });
@@ -152,6 +153,7 @@ void ContactConstraints::solve(const SubStep& sub) {
   if (support_.leaningRows() > 0)
     kernels_->solveSupport(context, wide_, support_, SupportRows::Leaning);
   kernels_->solve(context, wide_, true);
+  // A structure built at rest settles its new contacts' loads (kStartPasses).
   if (sub.index == 0) {
     for (int pass = 0; pass < support_.startPasses(); ++pass) kernels_->solve(context, wide_, true);
   }

@@ -238,16 +238,11 @@ void SupportPass::keepStacksThatSink() {
   }
 }
 
-// A new contact's start load: the weight its upper body leans on it with,
-// each body's carried mass (its own and its shares of the bodies leaning
-// on it, top level first) shared over the contacts it leans on by their
-// upward normals, and the normal impulse that holds that share up with the
-// friction's help: share / (up . n + friction * |up . t|).
 // Marks the refs that may start (startable_): of those of a hanging body
 // that carried nothing last step (startCandidates_, order), those at rest
 // and new (not among last step's refs: a contact that carried nothing then
-// is left as it is). Returns whether any may. Cheapest tests first: most
-// steps no candidate is at rest, and last step's refs are not read.
+// is left as it is). Returns whether any may. Last step's refs are read
+// only where some candidate is at rest.
 bool SupportPass::markStartable(const WorldData& world, std::span<const ConstraintRef> refs) {
   const auto restless = [&](std::int32_t i) {
     const ConstraintRef& ref = refs[std::size_t(i)];
@@ -277,6 +272,14 @@ bool SupportPass::markStartable(const WorldData& world, std::span<const Constrai
   return any;
 }
 
+// A new contact's start load: the weight its upper body leans on it with,
+// each body's carried mass (its own and its shares of the bodies leaning
+// on it, top level first) shared over the contacts it leans on by their
+// upward normals, and the normal impulse that holds that share up with the
+// friction's help: share / (up . n + friction * |up . t|).
+// Only a hanging body's contacts start (support_pass.h), and only where
+// the body stands on two points or more: on one (a card on its corner) the
+// load would spin it.
 void SupportPass::estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs) {
   if (!markStartable(world, refs)) return;
   const Vec2 up = upwards(world.settings.gravity);
