@@ -41,6 +41,10 @@ struct ConstraintRef {
   /// support_pass.h): as a wedge's contact it holds from lighter loads
   /// (kHangingHold, contact_solver.h).
   bool hangs : 1 = false;
+  /// A point touches (within kStartTouch, support_pass.h) and none carried
+  /// a load last step: it may be new, and start from an estimated load
+  /// (SupportPass::estimateStartLoads).
+  bool touchesUnloaded : 1 = false;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.
   Real invMassA = 0;
@@ -50,6 +54,10 @@ struct ConstraintRef {
   /// What its points carried in the last sub-step of last step (normal
   /// plus support impulses): the support pass's measured load.
   Real lastLoad = 0;
+  /// A new contact's normal impulse per touching point to start from (the
+  /// support pass's estimate of its load, SupportPass::estimateStartLoads);
+  /// 0 for any contact that carried a load last step.
+  Real startImpulse = 0;
 };
 
 struct ConstraintPoint {

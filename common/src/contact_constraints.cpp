@@ -33,6 +33,14 @@ Real lastLoad(const Manifold& manifold) {
   return load;
 }
 
+// Whether a point touches (kStartTouch): read with the manifold's impulses.
+bool touches(const Manifold& manifold) {
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    if (manifold.points[j].separation <= kStartTouch) return true;
+  }
+  return false;
+}
+
 // Everything the step reads of a contact outside its bundle lane, read
 // together while its lines are in.
 ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) {
@@ -42,9 +50,10 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide a = sideOf(bodyA);
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
+  const Real load = lastLoad(contact.manifold);
   return {index,         a.state,   b.state,      false,        jointed,     facingOf(contact.manifold.normal, up),
-          contact.rolls, false,     a.invMass,    a.invInertia, b.invMass,   b.invInertia,
-          lastLoad(contact.manifold)};
+          contact.rolls, false,     load == 0 && touches(contact.manifold),
+          a.invMass,     a.invInertia, b.invMass,  b.invInertia, load};
 }
 
 // Contacts ahead of the one read whose lines (the manifold's two, and the
@@ -119,8 +128,9 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   }
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
-  // The support pass's plan writes only the refs' holdsUp; the colours read
-  // only their states: the two go side by side, given a range of refs.
+  // The support pass's plan writes only the refs' flags and start loads;
+  // the colours read only their states: the two go side by side, given a
+  // range of refs.
   world.tasks.bothAtOnce(std::int32_t(refs_.size()), kRefsPerRange,
                          [&] { support_.order(world, refs_, stateCount, softness, step.h); },
                          [&] { colourContacts(refs_, coloring, wide_); });
@@ -143,6 +153,10 @@ void ContactConstraints::solve(const SubStep& sub) {
   if (support_.leaningRows() > 0)
     kernels_->solveSupport(context, wide_, support_, SupportRows::Leaning);
   kernels_->solve(context, wide_, true);
+  // A structure built at rest settles its new contacts' loads (kStartPasses).
+  if (sub.index == 0) {
+    for (int pass = 0; pass < support_.startPasses(); ++pass) kernels_->solve(context, wide_, true);
+  }
   kernels_->solveSupport(context, wide_, support_, SupportRows::Standing);
 }
 void ContactConstraints::relax(const SubStep& sub) { kernels_->solve(contextFor(sub), wide_, false); }

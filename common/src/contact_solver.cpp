@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "edge_list.h"
+#include "support_pass.h"
 
 
 namespace impulse {
@@ -156,7 +157,7 @@ void prepareContact(const WorldData& world, const ConstraintRef& ref, const Cont
     ConstraintPoint& cp = c.points[j];
     cp.anchorA = mp.anchorA;
     cp.anchorB = mp.anchorB;
-    cp.normalImpulse = mp.normalImpulse;
+    cp.normalImpulse = mp.normalImpulse + (mp.separation <= kStartTouch ? ref.startImpulse : Real(0));
     cp.tangentImpulse = mp.tangentImpulse;
     cp.supportImpulse = ref.holdsUp ? mp.supportImpulse : Real(0);
     cp.totalNormalImpulse = 0;

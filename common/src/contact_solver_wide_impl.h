@@ -340,7 +340,8 @@ void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, W
 // The lanes' manifolds and coefficients off their contacts' columns; a point
 // a manifold does not have is all zero, so it never acts.
 template <class F>
-void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, WideConstraint<F>& w, BundleInputs<F>& in) {
+void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, F startImpulse, WideConstraint<F>& w,
+                     BundleInputs<F>& in) {
   const std::size_t manifold = offsetof(ContactSolverPart, manifold);
   w.normalX = part[floatAt(manifold + offsetof(Manifold, normal))];
   w.normalY = part[floatAt(manifold + offsetof(Manifold, normal)) + 1];
@@ -362,7 +363,10 @@ void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, WideConstr
     p.anchorAY = field(offsetof(ManifoldPoint, anchorA) + sizeof(float));
     p.anchorBX = field(offsetof(ManifoldPoint, anchorB));
     p.anchorBY = field(offsetof(ManifoldPoint, anchorB) + sizeof(float));
-    p.normalImpulse = field(offsetof(ManifoldPoint, normalImpulse));
+    // A new contact's touching points start from its estimated load.
+    const F touches = simd::both(present, simd::atLeast(simd::broadcast<F>(kStartTouch),
+                                                        field(offsetof(ManifoldPoint, separation))));
+    p.normalImpulse = field(offsetof(ManifoldPoint, normalImpulse)) + simd::select(touches, startImpulse, zero);
     p.tangentImpulse = field(offsetof(ManifoldPoint, tangentImpulse));
     p.supportImpulse = simd::select(holdsUp, field(offsetof(ManifoldPoint, supportImpulse)), zero);
     p.totalNormalImpulse = zero;
@@ -390,7 +394,9 @@ void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& wo
   loadRecordColumns<F>(refRows, kRefFloats, ref);
   loadRecordColumns<F>(contactRows, kContactFloats, part);
   gatherBodies(ref, softness, w, in);
-  gatherManifolds(part, refFlags(refs), w, in);
+  alignas(32) float starts[F::kLanes] = {};
+  for (std::size_t lane = 0; lane < refs.size(); ++lane) starts[lane] = refs[lane]->startImpulse;
+  gatherManifolds(part, refFlags(refs), simd::load<F>(starts), w, in);
 }
 
 // 1 / k where k > 0, else 0 (the quotient of the other lanes is dropped).

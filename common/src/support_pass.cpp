@@ -40,6 +40,25 @@ Real complianceOf(const Softness& softness) {
   return softness.impulseScale / (softness.massScale * softness.biasRate);
 }
 
+// How many of a new contact's points touch (within kStartTouch), or none
+// unless its bodies rest against each other there (meet or part along the
+// normal slower than kStartRestSpeed): a contact made as a body lands takes
+// the load it meets.
+int pointsAtRest(const WorldData& world, const ConstraintRef& ref, const Manifold& manifold) {
+  const SolverState& a = world.solverStates[std::size_t(ref.stateA)];
+  const SolverState& b = world.solverStates[std::size_t(ref.stateB)];
+  int touching = 0;
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    const ManifoldPoint& point = manifold.points[j];
+    if (point.separation > kStartTouch) continue;
+    const Vec2 relative = b.linearVelocity + cross(b.angularVelocity, point.anchorB) - a.linearVelocity -
+                          cross(a.angularVelocity, point.anchorA);
+    if (std::abs(relative.dot(manifold.normal)) > kStartRestSpeed) return 0;
+    ++touching;
+  }
+  return touching;
+}
+
 }  // namespace
 
 Vec2 upwards(const Vec2& gravity) {
@@ -219,6 +238,101 @@ void SupportPass::keepStacksThatSink() {
   }
 }
 
+// Marks the refs that may start (startable_): of those of a hanging body
+// that carried nothing last step (startCandidates_, order), those at rest
+// and new (not among last step's refs: a contact that carried nothing then
+// is left as it is). Returns whether any may. Last step's refs are read
+// only where some candidate is at rest.
+bool SupportPass::markStartable(const WorldData& world, std::span<const ConstraintRef> refs) {
+  const auto restless = [&](std::int32_t i) {
+    const ConstraintRef& ref = refs[std::size_t(i)];
+    return pointsAtRest(world, ref, world.contacts[ref.contact].manifold) == 0;
+  };
+  startCandidates_.erase(std::remove_if(startCandidates_.begin(), startCandidates_.end(), restless),
+                         startCandidates_.end());
+  if (startCandidates_.empty()) return false;
+  // All zero between calls; a contact of last step's beyond the world's
+  // (should they have shrunk) cannot be one of this step's.
+  touchedLastStep_.resize(std::max(touchedLastStep_.size(), world.contacts.size()), 0);
+  const auto markLastStep = [&](std::uint8_t mark) {
+    if (!haveLast_) return;
+    for (const ConstraintRef& ref : lastRefs_) {
+      if (std::size_t(ref.contact) < touchedLastStep_.size()) touchedLastStep_[std::size_t(ref.contact)] = mark;
+    }
+  };
+  markLastStep(1);
+  startable_.assign(refs.size(), 0);
+  bool any = false;
+  for (const std::int32_t i : startCandidates_) {
+    if (touchedLastStep_[std::size_t(refs[std::size_t(i)].contact)] != 0) continue;
+    startable_[std::size_t(i)] = 1;
+    any = true;
+  }
+  markLastStep(0);
+  return any;
+}
+
+// A new contact's start load: the weight its upper body leans on it with,
+// each body's carried mass (its own and its shares of the bodies leaning
+// on it, top level first) shared over the contacts it leans on by their
+// upward normals, and the normal impulse that holds that share up with the
+// friction's help: share / (up . n + friction * |up . t|).
+// Only a hanging body's contacts start (support_pass.h), and only where
+// the body stands on two points or more: on one (a card on its corner) the
+// load would spin it.
+void SupportPass::estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs) {
+  if (!markStartable(world, refs)) return;
+  const Vec2 up = upwards(world.settings.gravity);
+  const std::size_t stateCount = level_.size();
+  leanings_.clear();
+  upwardSum_.assign(stateCount, 0);
+  standingPoints_.assign(stateCount, 0);
+  carried_.assign(stateCount, 0);
+  std::int32_t topLevel = 0;
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const ConstraintRef& ref = refs[i];
+    if (ref.jointed) continue;
+    const Real upward = world.contacts[ref.contact].manifold.normal.dot(up);
+    const bool upperIsB = upward > 0;
+    const std::int32_t upper = upperIsB ? ref.stateB : ref.stateA;
+    const std::int32_t lower = upperIsB ? ref.stateA : ref.stateB;
+    if (std::abs(upward) < kMinLeaningUpward || upper == 0) continue;
+    const std::int32_t upperLevel = level_[std::size_t(upper)];
+    if (upperLevel == kUnreached || level_[std::size_t(lower)] == kUnreached || upperLevel <= level_[std::size_t(lower)])
+      continue;
+    const Manifold& manifold = world.contacts[ref.contact].manifold;
+    const std::int32_t touching = pointsAtRest(world, ref, manifold);
+    if (touching == 0) continue;
+    leanings_.push_back({std::int32_t(i), upper, lower, std::abs(upward), touching});
+    upwardSum_[std::size_t(upper)] += std::abs(upward);
+    standingPoints_[std::size_t(upper)] += touching;
+    carried_[std::size_t(upper)] = massOf(upperIsB ? ref.invMassB : ref.invMassA);
+    if (lower != 0) carried_[std::size_t(lower)] = massOf(upperIsB ? ref.invMassA : ref.invMassB);
+    topLevel = std::max(topLevel, upperLevel);
+  }
+  // Top level first (a counting sort by the upper body's level, descending).
+  storeyStart_.assign(std::size_t(topLevel) + 2, 0);
+  for (const Leaning& l : leanings_) ++storeyStart_[std::size_t(topLevel - level_[std::size_t(l.upper)]) + 1];
+  for (std::size_t k = 1; k < storeyStart_.size(); ++k) storeyStart_[k] += storeyStart_[k - 1];
+  leaningsByLevel_.resize(leanings_.size());
+  cursor_.assign(storeyStart_.begin(), storeyStart_.end() - 1);
+  for (const Leaning& l : leanings_) {
+    leaningsByLevel_[std::size_t(cursor_[std::size_t(topLevel - level_[std::size_t(l.upper)])]++)] = l;
+  }
+  for (const Leaning& l : leaningsByLevel_) {
+    const Real share = carried_[std::size_t(l.upper)] * l.upward / upwardSum_[std::size_t(l.upper)];
+    if (l.lower != 0) carried_[std::size_t(l.lower)] += share;
+    ConstraintRef& ref = refs[std::size_t(l.ref)];
+    if (startable_[std::size_t(l.ref)] == 0 || hangs_[std::size_t(l.upper)] == 0 || standingPoints_[std::size_t(l.upper)] < 2)
+      continue;
+    const ContactSolverPart& contact = world.contacts[ref.contact];
+    const Real across = std::sqrt(std::max(Real(1) - l.upward * l.upward, Real(0)));
+    const Real normal = weightPerMass_ * share / (l.upward + contact.staticFriction * across);
+    ref.startImpulse = normal / Real(l.touching);
+    ++started_;
+  }
+}
+
 void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
                         const ContactSoftness& softness, Real h) {
   rows_.clear();
@@ -231,17 +345,23 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   }
   weightPerMass_ = world.settings.gravity.norm() * h;
   compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
-  if (!sameGraphAsLastStep(world, refs)) {
-    findCandidates(world, refs, stateCount);
-    remember(world, refs);
-  }
+  started_ = 0;
+  const bool graphChanged = !sameGraphAsLastStep(world, refs);
+  if (graphChanged) findCandidates(world, refs, stateCount);
   estimateSinks(refs);
   keepStacksThatSink();
   for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
-  if (!anyHangs_) return;
-  for (ConstraintRef& ref : refs) {
-    ref.hangs = hangs_[std::size_t(ref.stateA)] != 0 || hangs_[std::size_t(ref.stateB)] != 0;
+  if (anyHangs_) {
+    startCandidates_.clear();
+    for (std::size_t i = 0; i < refs.size(); ++i) {
+      ConstraintRef& ref = refs[i];
+      ref.hangs = hangs_[std::size_t(ref.stateA)] != 0 || hangs_[std::size_t(ref.stateB)] != 0;
+      if (ref.hangs && ref.touchesUnloaded && !ref.jointed) startCandidates_.push_back(std::int32_t(i));
+    }
+    // New contacts change the graph.
+    if (graphChanged) estimateStartLoads(world, refs);
   }
+  if (graphChanged) remember(world, refs);
 }
 
 void SupportPass::findCandidates(const WorldData& world, std::span<const ConstraintRef> refs,

@@ -62,17 +62,16 @@ TEST(Solver2D, VerticalStack_EveryBoxWithinFiveCentimetresOfStraightBelow) {
 }
 
 // 17 stones without mortar and four slabs, friction 0.6: Solver2D asks that
-// no piece moves more than 1 cm in 10 s; Impulse does not reach it. The
-// arch settles within its first second, the farthest piece 1.3 cm from its
-// start (Box2D v3: 31 cm): the keystone, the two stones beside it and the
-// slabs drop together as the thrust that holds them builds, those two
-// stones sliding about 1 cm down their joints with the next ones in the
-// first tenth of a second. From then on it holds: no piece moves 1.8 mm
-// after the first second, and all rest at the end (0.08 mm/s). Held to
-// under 1.5 cm, under 0.5 cm after the first second, and at rest.
-TEST(Solver2D, Arch_SettlesUnderOneAndAHalfCentimetres_ThenHoldsWithinHalfACentimetre) {
+// no piece moves more than 1 cm in 10 s. The arch's joints start from the
+// loads the support pass estimates for them and settle in the first step's
+// extra passes, so its top drops about 3 mm in the first tenth of a second
+// while the thrust builds, and no piece gets 4.2 mm from its start (Box2D
+// v3: 31 cm); no piece moves 2.6 mm after the first second, and all rest
+// at the end (0.07 mm/s). Held to under 6 mm, under 5 mm after the first
+// second, and at rest.
+TEST(Solver2D, Arch_StandsWithinSixMillimetres) {
   const Figures figures = runInImpulse("s2d-arch");
-  EXPECT_LT(figures["max slip m"], 0.015);
+  EXPECT_LT(figures["max slip m"], 0.006);
   EXPECT_LT(figures["settled slip m"], 0.005);
   EXPECT_LT(figures["end speed m/s"], 0.0005);
 }
