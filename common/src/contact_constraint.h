@@ -54,10 +54,6 @@ struct ConstraintRef {
   /// What its points carried in the last sub-step of last step (normal
   /// plus support impulses): the support pass's measured load.
   Real lastLoad = 0;
-  /// A new contact's normal impulse per touching point to start from (the
-  /// support pass's estimate of its load, SupportPass::estimateStartLoads);
-  /// 0 for any contact that carried a load last step.
-  Real startImpulse = 0;
 };
 
 struct ConstraintPoint {

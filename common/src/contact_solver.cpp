@@ -7,7 +7,6 @@
 #include "edge_list.h"
 #include "support_pass.h"
 
-
 namespace impulse {
 
 namespace {
@@ -127,7 +126,7 @@ Real pushCapForLoad(Real biasRate, Real loadOverlap, bool heldToLoad, Real maxPu
 }
 
 void prepareContact(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
-                    ContactConstraint& c) {
+                    Real startImpulse, ContactConstraint& c) {
   const Contact& contact = world.contacts[ref.contact];
   const Body& bodyA = world.bodies[contact.edges.bodyA];
   const Body& bodyB = world.bodies[contact.edges.bodyB];
@@ -157,7 +156,7 @@ void prepareContact(const WorldData& world, const ConstraintRef& ref, const Cont
     ConstraintPoint& cp = c.points[j];
     cp.anchorA = mp.anchorA;
     cp.anchorB = mp.anchorB;
-    cp.normalImpulse = mp.normalImpulse + (mp.separation <= kStartTouch ? ref.startImpulse : Real(0));
+    cp.normalImpulse = mp.normalImpulse + (mp.separation <= kStartTouch ? startImpulse : Real(0));
     cp.tangentImpulse = mp.tangentImpulse;
     cp.supportImpulse = ref.holdsUp ? mp.supportImpulse : Real(0);
     cp.totalNormalImpulse = 0;

@@ -10,9 +10,10 @@
 namespace impulse {
 
 /// Fills a constraint from a touching contact (velocities read from the
-/// world's solver states).
+/// world's solver states), its touching points starting from
+/// `startImpulse` more (SupportPass::startImpulses).
 void prepareContact(const WorldData& world, const ConstraintRef& ref, const ContactSoftness& softness,
-                    ContactConstraint& constraint);
+                    Real startImpulse, ContactConstraint& constraint);
 
 /// Applies the accumulated impulses to the velocities.
 void warmStartContacts(const ContactSolverContext& context);

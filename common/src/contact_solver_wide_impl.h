@@ -380,7 +380,7 @@ void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, F startImp
 // in use; the others read the padding records.
 template <class F>
 void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& world, const ContactSoftness& softness,
-                 WideConstraint<F>& w, BundleInputs<F>& in) {
+                 F startImpulse, WideConstraint<F>& w, BundleInputs<F>& in) {
   const void* refRows[F::kLanes];
   const void* contactRows[F::kLanes];
   for (int lane = 0; lane < F::kLanes; ++lane) {
@@ -394,9 +394,17 @@ void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& wo
   loadRecordColumns<F>(refRows, kRefFloats, ref);
   loadRecordColumns<F>(contactRows, kContactFloats, part);
   gatherBodies(ref, softness, w, in);
-  alignas(32) float starts[F::kLanes] = {};
-  for (std::size_t lane = 0; lane < refs.size(); ++lane) starts[lane] = refs[lane]->startImpulse;
-  gatherManifolds(part, refFlags(refs), simd::load<F>(starts), w, in);
+  gatherManifolds(part, refFlags(refs), startImpulse, w, in);
+}
+
+// The lanes' start impulses (SupportPass::startImpulses), read only in a
+// step that starts some contact.
+template <class F>
+F startImpulsesOf(std::span<const Real> starts, std::span<const std::int32_t> entries) {
+  if (starts.empty()) return simd::broadcast<F>(0);
+  alignas(32) float lanes[F::kLanes] = {};
+  for (std::size_t lane = 0; lane < entries.size(); ++lane) lanes[lane] = starts[std::size_t(entries[lane])];
+  return simd::load<F>(lanes);
 }
 
 // 1 / k where k > 0, else 0 (the quotient of the other lanes is dropped).
@@ -607,14 +615,14 @@ bool mayBounce(const WideConstraint<F>& c, Real restitutionThreshold) {
 // and writes only its own bundle, so bundles fill side by side.
 template <class F>
 std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
-                        WideContactSet& set, std::int32_t b) {
+                        std::span<const Real> starts, WideContactSet& set, std::int32_t b) {
   WideConstraint<F>& c = bundlesOf<F>(set)[std::size_t(b)];
   const std::int32_t first = set.contactSlices.first[std::size_t(b)];
   const std::span<const std::int32_t> entries(set.order.data() + first, set.contactSlices.lanes[std::size_t(b)]);
   const ConstraintRef* laneRefs[F::kLanes];
   for (std::size_t lane = 0; lane < entries.size(); ++lane) laneRefs[lane] = &refs[std::size_t(entries[lane])];
   BundleInputs<F> inputs;
-  gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, c, inputs);
+  gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, startImpulsesOf<F>(starts, entries), c, inputs);
   const std::uint8_t intruding = simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c));
   packSupportLanes(set, c, b, entries);
   set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
@@ -637,7 +645,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
     visitFetchingAhead(
         begin, end, [&](std::int32_t b) { prefetchBundleContacts<F>(world, refs, set, b); },
-        [&](std::int32_t b) { set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, set, b); });
+        [&](std::int32_t b) { set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, support.startImpulses(), set, b);
+        });
   });
 
   set.bounceBundles.clear();
@@ -650,7 +659,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     ContactConstraint& constraint = set.overflow.emplace_back();
-    prepareContact(world, ref, softness, constraint);
+    const std::span<const Real> starts = support.startImpulses();
+    prepareContact(world, ref, softness, starts.empty() ? Real(0) : starts[std::size_t(set.order[k])], constraint);
     const SupportPlace place = set.supportPlaceOf[std::size_t(set.order[k])];
     set.overflowSupportRecord.push_back(supportRecordOf<F>(place));
     if (place.bundle >= 0) packSupportLane(supportLaneOf<F>(set, place), constraint, place.upperIsB);

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "counting_sort.h"
 #include "union_find.h"
 #include "world_data.h"
 
@@ -280,7 +281,7 @@ bool SupportPass::markStartable(const WorldData& world, std::span<const Constrai
 // Only a hanging body's contacts start (support_pass.h), and only where
 // the body stands on two points or more: on one (a card on its corner) the
 // load would spin it.
-void SupportPass::estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs) {
+void SupportPass::estimateStartLoads(const WorldData& world, std::span<const ConstraintRef> refs) {
   if (!markStartable(world, refs)) return;
   const Vec2 up = upwards(world.settings.gravity);
   const std::size_t stateCount = level_.size();
@@ -310,26 +311,22 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<Constrain
     if (lower != 0) carried_[std::size_t(lower)] = massOf(upperIsB ? ref.invMassA : ref.invMassB);
     topLevel = std::max(topLevel, upperLevel);
   }
-  // Top level first (a counting sort by the upper body's level, descending).
-  storeyStart_.assign(std::size_t(topLevel) + 2, 0);
-  for (const Leaning& l : leanings_) ++storeyStart_[std::size_t(topLevel - level_[std::size_t(l.upper)]) + 1];
-  for (std::size_t k = 1; k < storeyStart_.size(); ++k) storeyStart_[k] += storeyStart_[k - 1];
-  leaningsByLevel_.resize(leanings_.size());
-  cursor_.assign(storeyStart_.begin(), storeyStart_.end() - 1);
-  for (const Leaning& l : leanings_) {
-    leaningsByLevel_[std::size_t(cursor_[std::size_t(topLevel - level_[std::size_t(l.upper)])]++)] = l;
-  }
-  for (const Leaning& l : leaningsByLevel_) {
+  // Top level first.
+  leaningDepth_.clear();
+  for (const Leaning& l : leanings_) leaningDepth_.push_back(topLevel - level_[std::size_t(l.upper)]);
+  storeyStart_.resize(std::size_t(topLevel) + 2);
+  countingSort(leaningDepth_, storeyStart_, leaningOrder_);
+  for (const std::int32_t k : leaningOrder_) {
+    const Leaning& l = leanings_[std::size_t(k)];
     const Real share = carried_[std::size_t(l.upper)] * l.upward / upwardSum_[std::size_t(l.upper)];
     if (l.lower != 0) carried_[std::size_t(l.lower)] += share;
-    ConstraintRef& ref = refs[std::size_t(l.ref)];
     if (startable_[std::size_t(l.ref)] == 0 || hangs_[std::size_t(l.upper)] == 0 || standingPoints_[std::size_t(l.upper)] < 2)
       continue;
-    const ContactSolverPart& contact = world.contacts[ref.contact];
+    const ContactSolverPart& contact = world.contacts[refs[std::size_t(l.ref)].contact];
     const Real across = std::sqrt(std::max(Real(1) - l.upward * l.upward, Real(0)));
     const Real normal = weightPerMass_ * share / (l.upward + contact.staticFriction * across);
-    ref.startImpulse = normal / Real(l.touching);
-    ++started_;
+    if (startImpulse_.empty()) startImpulse_.assign(refs.size(), 0);
+    startImpulse_[std::size_t(l.ref)] = normal / Real(l.touching);
   }
 }
 
@@ -345,7 +342,7 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   }
   weightPerMass_ = world.settings.gravity.norm() * h;
   compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
-  started_ = 0;
+  startImpulse_.clear();
   const bool graphChanged = !sameGraphAsLastStep(world, refs);
   if (graphChanged) findCandidates(world, refs, stateCount);
   estimateSinks(refs);

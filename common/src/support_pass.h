@@ -53,7 +53,7 @@
 // stones beside the keystone slid 9.5 mm down their joints while the
 // thrust built (Solver2D's arch: 1.3 cm). So a new contact that a hanging
 // body leans on, touching and at rest, starts from the load the pass
-// estimates for it (ConstraintRef::startImpulse), and the step that starts
+// estimates for it (SupportPass::startImpulses), and the step that starts
 // one takes kStartPasses more soft passes in its first sub-step, which
 // settle the thrust (0.42 cm). Either alone does not: the start loads
 // alone 1.25 cm, 30 more passes every sub-step alone 1.05 cm. Started on
@@ -161,10 +161,13 @@ class SupportPass {
   std::span<const std::int32_t> storeyStarts() const { return storeyGroupStart_; }
   /// How many of the rows lean (SupportRow::leans).
   int leaningRows() const { return leaningRows_; }
+  /// Per ref, the normal impulse its touching points start from this step
+  /// (estimateStartLoads): empty in a step that starts none, which is
+  /// nearly every step of every world.
+  std::span<const Real> startImpulses() const { return startImpulse_; }
   /// Extra soft passes the step's first sub-step takes: kStartPasses where
-  /// a contact of a hanging body started from its estimated load this step
-  /// (estimateStartLoads), else none.
-  int startPasses() const { return started_ > 0 ? kStartPasses : 0; }
+  /// a contact started from its estimated load this step, else none.
+  int startPasses() const { return startImpulse_.empty() ? 0 : kStartPasses; }
 
  private:
   /// Compliance (impulseScale / (massScale * biasRate)) of the soft contacts
@@ -186,7 +189,7 @@ class SupportPass {
   void estimateSinks(std::span<const ConstraintRef> refs);
   void keepStacksThatSink();
   bool markStartable(const WorldData& world, std::span<const ConstraintRef> refs);
-  void estimateStartLoads(const WorldData& world, std::span<ConstraintRef> refs);
+  void estimateStartLoads(const WorldData& world, std::span<const ConstraintRef> refs);
   std::int32_t upperOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
   std::int32_t lowerOf(const SupportRow& row, std::span<const ConstraintRef> refs) const;
 
@@ -252,7 +255,10 @@ class SupportPass {
     std::int32_t touching = 0;
   };
   std::vector<Leaning> leanings_;
-  std::vector<Leaning> leaningsByLevel_;
+  /// Per leaning, its upper body's depth below the top level, and the
+  /// leanings in that order (countingSort).
+  std::vector<std::int32_t> leaningDepth_;
+  std::vector<std::int32_t> leaningOrder_;
   std::vector<Real> upwardSum_;
   std::vector<std::int32_t> standingPoints_;
   /// Refs that may start but for being new, and per contact whether it
@@ -261,7 +267,7 @@ class SupportPass {
   std::vector<std::uint8_t> touchedLastStep_;
   /// Per ref: may start from an estimated load (markStartable).
   std::vector<std::uint8_t> startable_;
-  int started_ = 0;
+  std::vector<Real> startImpulse_;
   std::vector<SupportRow> rows_;
   int leaningRows_ = 0;
   std::vector<std::int32_t> groupStart_;
