@@ -269,6 +269,25 @@ void loadRecordColumns(const void* const records[F::kLanes], std::size_t count, 
   }
 }
 
+// The inverse: `count` floats (a multiple of 4) of each lane's record from
+// its columns.
+template <class F>
+void storeRecordColumns(const F* columns, std::size_t count, void* const records[F::kLanes]) {
+  for (std::size_t row = 0; row < count; row += 4) {
+    float* rows[F::kLanes];
+    for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = static_cast<float*>(records[lane]) + row;
+    simd::storeColumns(columns + row, rows);
+  }
+}
+
+// A bundle's index array as a column of 32-bit integers.
+template <class F>
+F loadIndices(const std::int32_t (&indices)[F::kLanes]) {
+  alignas(32) float bits[F::kLanes];
+  std::memcpy(bits, indices, sizeof(bits));
+  return simd::load<F>(bits);
+}
+
 // A column of 32-bit integers stored into a bundle's index array.
 template <class F>
 void storeIndices(F column, std::int32_t (&indices)[F::kLanes]) {

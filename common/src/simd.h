@@ -28,6 +28,8 @@ inline F4& operator+=(F4& a, F4 b) { return a = a + b; }
 inline F4& operator-=(F4& a, F4 b) { return a = a - b; }
 /// |a|: the sign bit cleared.
 inline F4 abs(F4 a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
+/// -a exactly as a scalar negation: the sign flipped, also of a zero.
+inline F4 negated(F4 a) { return {_mm_xor_ps(_mm_set1_ps(-0.0f), a.v)}; }
 inline F4 max(F4 a, F4 b) { return {_mm_max_ps(a.v, b.v)}; }
 inline F4 min(F4 a, F4 b) { return {_mm_min_ps(a.v, b.v)}; }
 inline F4 clamp(F4 x, F4 lo, F4 hi) { return min(max(x, lo), hi); }

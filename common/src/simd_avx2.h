@@ -40,6 +40,8 @@ inline F8 operator-(F8 a) { return {_mm256_sub_ps(_mm256_setzero_ps(), a.v)}; }
 inline F8& operator+=(F8& a, F8 b) { return a = a + b; }
 inline F8& operator-=(F8& a, F8 b) { return a = a - b; }
 inline F8 abs(F8 a) { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }
+/// -a exactly as a scalar negation: the sign flipped, also of a zero.
+inline F8 negated(F8 a) { return {_mm256_xor_ps(_mm256_set1_ps(-0.0f), a.v)}; }
 inline F8 max(F8 a, F8 b) { return {_mm256_max_ps(a.v, b.v)}; }
 inline F8 min(F8 a, F8 b) { return {_mm256_min_ps(a.v, b.v)}; }
 inline F8 clamp(F8 x, F8 lo, F8 hi) { return min(max(x, lo), hi); }

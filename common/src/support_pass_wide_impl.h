@@ -23,31 +23,6 @@ namespace {
 // What a padding lane reads: the static dummy, no points.
 const SupportLaneRecord kPaddingSupportLane{};
 
-// What a support row takes of a contact lane.
-template <class F>
-void unpackForSupport(const WideConstraint<F>& w, int lane, ContactConstraint& c) {
-  c.stateA = w.stateA[lane];
-  c.stateB = w.stateB[lane];
-  c.pointCount = 2;  // a one-point manifold's second point has zero mass
-  c.normal = Vec2(w.normalX.v[lane], w.normalY.v[lane]);
-  c.invMassA = w.invMassA.v[lane];
-  c.invInertiaA = w.invInertiaA.v[lane];
-  c.invMassB = w.invMassB.v[lane];
-  c.invInertiaB = w.invInertiaB.v[lane];
-  for (int j = 0; j < 2; ++j) {
-    const WidePoint<F>& p = w.points[j];
-    ConstraintPoint& cp = c.points[j];
-    cp.anchorA = Vec2(p.anchorAX.v[lane], p.anchorAY.v[lane]);
-    cp.anchorB = Vec2(p.anchorBX.v[lane], p.anchorBY.v[lane]);
-    cp.baseSeparation = p.baseSeparation.v[lane];
-    cp.normalMass = p.normalMass.v[lane];
-    cp.friction = p.friction.v[lane];
-    cp.normalImpulse = p.normalImpulse.v[lane];
-    cp.tangentImpulse = p.tangentImpulse.v[lane];
-    cp.supportImpulse = p.supportImpulse.v[lane];
-  }
-}
-
 // A contact holds its upper body sideways when last step's friction
 // carried at least this share of what its cone allowed: a body pushed from
 // one side (an arch's foot), not one standing free.
@@ -105,18 +80,73 @@ void packSupportLane(SupportLaneRecord& r, const ContactConstraint& c, bool uppe
   }
 }
 
+// Floats of a support lane's record.
+constexpr std::size_t kSupportLaneFloats = sizeof(SupportLaneRecord) / sizeof(float);
+
 // The column of point j's field at `pointOffset` in a record.
 constexpr std::size_t lanePointColumn(int j, std::size_t pointOffset) {
   return floatAt(offsetof(SupportLaneRecord, points) + std::size_t(j) * sizeof(SupportLaneRecord::Point) +
                  pointOffset);
 }
 
+// standsNarrow and slipFrictionOf for a bundle's lanes, upper body as B
+// (`normal` already turned so), with the same operations in the same
+// order; a bundle's lanes have two points, the second all zero when the
+// manifold has one.
+template <class F>
+F slipFrictionOfLanes(const WideConstraint<F>& c, F upperIsB, F normalX, F normalY) {
+  const WidePoint<F>& p0 = c.points[0];
+  const WidePoint<F>& p1 = c.points[1];
+  const F firstX = simd::select(upperIsB, p0.anchorBX, p0.anchorAX);
+  const F firstY = simd::select(upperIsB, p0.anchorBY, p0.anchorAY);
+  const F lastX = simd::select(upperIsB, p1.anchorBX, p1.anchorAX);
+  const F lastY = simd::select(upperIsB, p1.anchorBY, p1.anchorAY);
+  const F base = simd::abs((firstX - lastX) * normalY + (firstY - lastY) * simd::negated(normalX));
+  const F centreHeight = simd::negated(firstX * normalX + firstY * normalY);
+  const F zero = simd::broadcast<F>(0);
+  const F tangent = (zero + p0.tangentImpulse) + p1.tangentImpulse;
+  const F normal = (zero + (p0.normalImpulse + p0.supportImpulse)) + (p1.normalImpulse + p1.supportImpulse);
+  const F friction = p0.friction;
+  const F holds = simd::both(simd::atLeast(simd::abs(tangent), simd::broadcast<F>(kSidewaysShare) * friction * normal),
+                             simd::greater(normal, zero));
+  return simd::select(simd::both(simd::less(base, centreHeight), holds), friction, zero);
+}
+
+// The records of a contact bundle's lanes (packSupportLane's numbers for
+// every lane at once), as columns in the record's layout.
+template <class F>
+void supportColumns(const WideConstraint<F>& c, F upperIsB, F (&column)[kSupportLaneFloats]) {
+  const auto field = [](std::size_t offset) { return floatAt(offset); };
+  const F stateA = loadIndices<F>(c.stateA);
+  const F stateB = loadIndices<F>(c.stateB);
+  const F normalX = simd::select(upperIsB, c.normalX, simd::negated(c.normalX));
+  const F normalY = simd::select(upperIsB, c.normalY, simd::negated(c.normalY));
+  for (F& unused : column) unused = simd::broadcast<F>(0);
+  column[field(offsetof(SupportLaneRecord, stateA))] = simd::select(upperIsB, stateA, stateB);
+  column[field(offsetof(SupportLaneRecord, stateB))] = simd::select(upperIsB, stateB, stateA);
+  column[field(offsetof(SupportLaneRecord, normalX))] = normalX;
+  column[field(offsetof(SupportLaneRecord, normalY))] = normalY;
+  column[field(offsetof(SupportLaneRecord, invMass))] = simd::select(upperIsB, c.invMassB, c.invMassA);
+  column[field(offsetof(SupportLaneRecord, invInertia))] = simd::select(upperIsB, c.invInertiaB, c.invInertiaA);
+  column[field(offsetof(SupportLaneRecord, slipFriction))] = slipFrictionOfLanes(c, upperIsB, normalX, normalY);
+  using Point = SupportLaneRecord::Point;
+  for (int j = 0; j < 2; ++j) {
+    const WidePoint<F>& p = c.points[j];
+    column[lanePointColumn(j, offsetof(Point, anchorAX))] = simd::select(upperIsB, p.anchorAX, p.anchorBX);
+    column[lanePointColumn(j, offsetof(Point, anchorAY))] = simd::select(upperIsB, p.anchorAY, p.anchorBY);
+    column[lanePointColumn(j, offsetof(Point, anchorBX))] = simd::select(upperIsB, p.anchorBX, p.anchorAX);
+    column[lanePointColumn(j, offsetof(Point, anchorBY))] = simd::select(upperIsB, p.anchorBY, p.anchorAY);
+    column[lanePointColumn(j, offsetof(Point, baseSeparation))] = p.baseSeparation;
+    column[lanePointColumn(j, offsetof(Point, present))] = simd::greater(p.normalMass, simd::broadcast<F>(0));
+  }
+}
+
+
 // The bundle's lanes from their records, as columns.
 template <class F>
 void loadSupportLanes(const void* const records[F::kLanes], WideSupportRow<F>& row) {
-  constexpr std::size_t kFloats = sizeof(SupportLaneRecord) / sizeof(float);
-  F column[kFloats];
-  loadRecordColumns<F>(records, kFloats, column);
+  F column[kSupportLaneFloats];
+  loadRecordColumns<F>(records, kSupportLaneFloats, column);
   storeIndices(column[floatAt(offsetof(SupportLaneRecord, stateA))], row.stateA);
   storeIndices(column[floatAt(offsetof(SupportLaneRecord, stateB))], row.stateB);
   row.normalX = column[floatAt(offsetof(SupportLaneRecord, normalX))];
@@ -216,14 +246,24 @@ SupportLaneRecord& supportLaneOf(WideContactSet& set, const SupportPlace& place)
 template <class F>
 void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std::int32_t b,
                       std::span<const std::int32_t> entries) {
-  for (std::size_t lane = 0; lane < entries.size(); ++lane) {
-    const SupportPlace place = set.supportPlaceOf[std::size_t(entries[lane])];
-    set.laneSupportRecord[std::size_t(b) * F::kLanes + lane] = supportRecordOf<F>(place);
+  SupportLaneRecord unused;  // what lanes that hold nothing up write
+  void* records[F::kLanes];
+  std::uint8_t holds = 0;
+  std::uint8_t upperIsB = 0;
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    records[lane] = &unused;
+    if (std::size_t(lane) >= entries.size()) continue;
+    const SupportPlace place = set.supportPlaceOf[std::size_t(entries[std::size_t(lane)])];
+    set.laneSupportRecord[std::size_t(b) * F::kLanes + std::size_t(lane)] = supportRecordOf<F>(place);
     if (place.bundle < 0) continue;
-    ContactConstraint scratch;
-    unpackForSupport(bundle, static_cast<int>(lane), scratch);
-    packSupportLane(supportLaneOf<F>(set, place), scratch, place.upperIsB);
+    records[lane] = &supportLaneOf<F>(set, place);
+    holds = std::uint8_t(holds | (1u << lane));
+    if (place.upperIsB) upperIsB = std::uint8_t(upperIsB | (1u << lane));
   }
+  if (holds == 0) return;
+  F column[kSupportLaneFloats];
+  supportColumns(bundle, simd::maskOfBits<F>(upperIsB), column);
+  storeRecordColumns<F>(column, kSupportLaneFloats, records);
 }
 
 // Each support bundle's masses once all its lanes are in, side by side.
