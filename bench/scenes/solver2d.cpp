@@ -13,6 +13,9 @@
 // description holds: they are engine tests only
 // (tests/engine/solver2d_scenes_test.cpp).
 //
+// Added: the card house's twin built with every card touching its supports
+// (s2d-card-house-touching), whose cards only give and slide.
+//
 // Where the description departs from Solver2D, for every engine alike: the
 // chains' and the bridge's angular damping (0.1/s) is left out, their
 // linear damping kept; the far ragdoll pile stands 80 km out, not
@@ -376,26 +379,61 @@ class DominoWatch final : public Measure {
   std::vector<double> tipped_;
 };
 
+/// Where a card house's cards stand (its storeys from the ground up): each
+/// storey's pairs of cards leaning at 25 degrees, 35 cm apart, with flat
+/// cards lying across neighbouring pairs, each storey's first pair 17.5 cm
+/// right of the one below.
+struct CardHouseLayout {
+  double firstLeanY;      ///< height of the first storey's leaning cards' centres
+  double storeyRise;      ///< from one storey's leaning cards' centres to the next's
+  double flatAboveLean;   ///< from a storey's leaning cards' centres to its flat cards'
+  double leanFromMiddle;  ///< a leaning card's centre from its pair's middle, sideways
+  /// Flat cards of a storey collide with each other (each storey's overlap
+  /// 5 cm end to end at the same height).
+  bool flatsCollide;
+};
+
+constexpr double kCardHalfLength = 0.2, kCardHalfThickness = 0.001;
+constexpr double kCardLean = 25 * kPi / 180;
+
 /// PEEL's card house: five storeys of 2 mm x 40 cm cards leaning at 25
-/// degrees, flat cards between, friction 0.7.
-SceneDescription cardHouse() {
+/// degrees, flat cards between, friction 0.7. Its gaps (2.3 mm under each
+/// flat card and under each pair above the first storey, 4.1 mm between
+/// the tops of a pair) put the top cards' resting place about 2 cm lower;
+/// its first storey's feet start 1.7 mm inside the ground.
+constexpr CardHouseLayout kPeelCardHouse{0.18, 0.37, 0.185, 0.0875, true};
+
+/// The same house with every card where it rests touching its supports:
+/// each leaning card's lowest corner on the ground or the flat card below,
+/// a pair's inner top corners meeting at the pair's middle, the flat cards
+/// on the pairs' outer top corners (the highest). Flat cards of a storey lie
+/// side by side (in 3D) and do not collide with each other.
+CardHouseLayout touchingCardHouse() {
+  const double h = kCardHalfLength, t = kCardHalfThickness;
+  const double s = std::sin(kCardLean), c = std::cos(kCardLean);
+  const double leanAboveSupport = h * c + t * s;   // centre over its lowest corner
+  const double flatAboveLean = h * c + t * s + t;  // highest corner, then half a card
+  return {leanAboveSupport, leanAboveSupport + flatAboveLean + t, flatAboveLean, h * s + t * c,
+          false};
+}
+
+SceneDescription cardHouse(const CardHouseLayout& layout) {
   SceneDescription scene = solver2DWorld();
   addStatic(scene, ShapeDesc::box(40, 2), {0, -2}, 0.7);
-  const double height = 0.2, thickness = 0.001, lean = 25 * kPi / 180;
-  auto card = [&](Vec2d at, double angle) {
-    BodyDesc body = s2Body(ShapeDesc::box(thickness, height), at, 0.7);
+  auto card = [&](Vec2d at, double angle, bool flat) {
+    BodyDesc body = s2Body(ShapeDesc::box(kCardHalfThickness, kCardHalfLength), at, 0.7);
+    if (flat && !layout.flatsCollide) body.shape.filter.group = -1;
     body.angle = angle;
     addBody(scene, body);
   };
-  double z0 = 0, y = height - 0.02;
-  for (int storey = 5; storey > 0; --storey, y += 2 * height - 0.03, z0 += 0.175) {
-    double z = z0;
-    for (int i = 0; i < storey; ++i) {
-      if (i != storey - 1) card({z + 0.25, y + height - 0.015}, 0.5 * kPi);
-      card({z, y}, -lean);
-      z += 0.175;
-      card({z, y}, lean);
-      z += 0.175;
+  constexpr double kPairPitch = 0.35, kFlatFromPair = 0.25;
+  double z0 = 0, y = layout.firstLeanY;
+  for (int pairs = 5; pairs > 0; --pairs, y += layout.storeyRise, z0 += 0.5 * kPairPitch) {
+    for (int i = 0; i < pairs; ++i) {
+      const double z = z0 + i * kPairPitch, middle = z + 0.25 * kPairPitch;
+      if (i != pairs - 1) card({z + kFlatFromPair, y + layout.flatAboveLean}, 0.5 * kPi, true);
+      card({middle - layout.leanFromMiddle, y}, -kCardLean, false);
+      card({middle + layout.leanFromMiddle, y}, kCardLean, false);
     }
   }
   return scene;
@@ -686,7 +724,10 @@ void addSolver2DScenes(SceneList& scenes, bool quick) {
   addScene<RestWatch<verticalStackRest>>(scenes, quick, "vertical-stack", verticalStack, 5);
   addScene<SlipWatch>(scenes, quick, "arch", arch, 10);
   addScene<DominoWatch>(scenes, quick, "double-domino", doubleDomino, 10);
-  addScene<SlipWatch>(scenes, quick, "card-house", cardHouse, 10);
+  addScene<SlipWatch>(
+      scenes, quick, "card-house", [] { return cardHouse(kPeelCardHouse); }, 10);
+  addScene<SlipWatch>(
+      scenes, quick, "card-house-touching", [] { return cardHouse(touchingCardHouse()); }, 10);
   addScene<RestWatch<circleStackRest>>(scenes, quick, "circle-stack", circleStack, 5);
   addScene<HoldWatch>(scenes, quick, "bridge", bridge, 5, {}, 1);
   addScene<HoldWatch>(scenes, quick, "ball-and-chain", ballAndChain, 5);
