@@ -13,8 +13,9 @@
 // description holds: they are engine tests only
 // (tests/engine/solver2d_scenes_test.cpp).
 //
-// Added: the card house's twin built with every card touching its supports
-// (s2d-card-house-touching), whose cards only give and slide.
+// Beyond Solver2D's collection: the card house's twin built with every card
+// touching its supports (s2d-card-house-touching), whose cards only give
+// and slide.
 //
 // Where the description departs from Solver2D, for every engine alike: the
 // chains' and the bridge's angular damping (0.1/s) is left out, their
