@@ -33,17 +33,15 @@ struct ConstraintRef {
   /// level; twice that when flat.
   /// Read with the contact's bodies, whose line holds its normal too.
   std::int8_t facing = 0;
-  /// Either shape is round (Contact::rolls). This flag and the next are
-  /// bits of one byte, which keeps the masses within the ref's first 32
-  /// bytes, all the wide fill reads of it (kRefFloats).
-  bool rolls : 1 = false;
   /// One of its bodies hangs on steep contacts (an arch's upper stones,
   /// support_pass.h): as a wedge's contact it holds from lighter loads
   /// (kHangingHold, contact_solver.h).
   bool hangs : 1 = false;
   /// A point touches (within kStartTouch, support_pass.h) and none carried
   /// a load last step: it may be new, and start from an estimated load
-  /// (SupportPass::estimateStartLoads).
+  /// (SupportPass::estimateStartLoads). This flag and the last are bits of
+  /// one byte, which keeps the masses within the ref's first 32 bytes, all
+  /// the wide fill reads of it (kRefFloats).
   bool touchesUnloaded : 1 = false;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.

@@ -51,9 +51,9 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
   const Real load = lastLoad(contact.manifold);
-  return {index,         a.state,   b.state,      false,        jointed,     facingOf(contact.manifold.normal, up),
-          contact.rolls, false,     load == 0 && touches(contact.manifold),
-          a.invMass,     a.invInertia, b.invMass,  b.invInertia, load};
+  return {index,     a.state,      b.state,   false,        jointed, facingOf(contact.manifold.normal, up),
+          false,     load == 0 && touches(contact.manifold),
+          a.invMass, a.invInertia, b.invMass, b.invInertia, load};
 }
 
 // Contacts ahead of the one read whose lines (the manifold's two, and the

@@ -67,21 +67,23 @@ Vec2 upwards(const Vec2& gravity) {
 }
 
 // Adjacency lists in one array (counted, then filled) over the contacts
-// `joins` takes, each edge marked steep where its contact is not level.
+// `joins` takes (by position in refs), each edge marked steep where its
+// contact is not level.
 template <class Joins>
 void SupportPass::linkBodies(std::span<const ConstraintRef> refs, std::size_t stateCount, Joins&& joins) {
   edgeStart_.assign(stateCount + 1, 0);
-  for (const ConstraintRef& ref : refs) {
-    if (!joins(ref)) continue;
-    ++edgeStart_[std::size_t(ref.stateA) + 1];
-    ++edgeStart_[std::size_t(ref.stateB) + 1];
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    if (!joins(i)) continue;
+    ++edgeStart_[std::size_t(refs[i].stateA) + 1];
+    ++edgeStart_[std::size_t(refs[i].stateB) + 1];
   }
   for (std::size_t s = 1; s <= stateCount; ++s) edgeStart_[s] += edgeStart_[s - 1];
   neighbours_.resize(std::size_t(edgeStart_[stateCount]));
   steepEdge_.resize(neighbours_.size());
   cursor_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
-  for (const ConstraintRef& ref : refs) {
-    if (!joins(ref)) continue;
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    if (!joins(i)) continue;
+    const ConstraintRef& ref = refs[i];
     for (const auto& [from, to] : {std::pair{ref.stateA, ref.stateB}, std::pair{ref.stateB, ref.stateA}}) {
       const std::size_t edge = std::size_t(cursor_[std::size_t(from)]++);
       neighbours_[edge] = to;
@@ -111,8 +113,8 @@ void SupportPass::walkLevels() {
 // the static world at every storey, yet stands on the ground alone. Then,
 // where some are left unreached, over the steep contacts between two moving
 // bodies too, but those with a round shape (support_pass.h says why).
-void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount) {
-  linkBodies(refs, stateCount, [](const ConstraintRef& ref) { return ref.facing != 0; });
+void SupportPass::levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount) {
+  linkBodies(refs, stateCount, [&](std::size_t i) { return refs[i].facing != 0; });
   level_.assign(stateCount, kUnreached);
   hangs_.assign(stateCount, 0);
   level_[0] = 0;
@@ -126,8 +128,11 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
     return ref.facing != 0 && unreached(ref.stateA) && unreached(ref.stateB);
   });
   if (!levelContactLeft) return;
+  // Whether a contact's shapes are round is read off the contact, and only
+  // for a steep contact between moving bodies that reaches an unreached
+  // one: the refs of every step leave it out, a cache line of each contact.
   const auto betweenMovingAngularShapes = [&](const ConstraintRef& ref) {
-    return ref.stateA != 0 && ref.stateB != 0 && !ref.rolls;
+    return ref.stateA != 0 && ref.stateB != 0 && !world.contacts[ref.contact].rolls;
   };
   const bool bridged = std::any_of(refs.begin(), refs.end(), [&](const ConstraintRef& ref) {
     return unreached(ref.stateA) != unreached(ref.stateB) && betweenMovingAngularShapes(ref);
@@ -137,9 +142,13 @@ void SupportPass::levelBodies(std::span<const ConstraintRef> refs, std::size_t s
   // unreached ones: the contacts between two reached bodies are left out
   // (levels the same; in a tumbling pile most of its contacts, whose
   // shapes would be read to tell whether they are round).
-  linkBodies(refs, stateCount, [&](const ConstraintRef& ref) {
-    return (unreached(ref.stateA) || unreached(ref.stateB)) && (ref.facing != 0 || betweenMovingAngularShapes(ref));
-  });
+  secondWalkLinks_.resize(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const ConstraintRef& ref = refs[i];
+    secondWalkLinks_[i] = (unreached(ref.stateA) || unreached(ref.stateB)) &&
+                          (ref.facing != 0 || betweenMovingAngularShapes(ref));
+  }
+  linkBodies(refs, stateCount, [&](std::size_t i) { return secondWalkLinks_[i] != 0; });
   walkLevels();
   anyHangs_ = true;
 }
@@ -377,7 +386,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     level_.assign(stateCount, kUnreached);
     return;
   }
-  levelBodies(refs, stateCount);
+  levelBodies(world, refs, stateCount);
 
   unsorted_.clear();
   rowLevel_.clear();

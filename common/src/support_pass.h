@@ -183,7 +183,7 @@ class SupportPass {
   template <class Joins>
   void linkBodies(std::span<const ConstraintRef> refs, std::size_t stateCount, Joins&& joins);
   void walkLevels();
-  void levelBodies(std::span<const ConstraintRef> refs, std::size_t stateCount);
+  void levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
   void linkCandidates(std::span<const ConstraintRef> refs, std::size_t stateCount);
   void estimateSinks(std::span<const ConstraintRef> refs);
@@ -211,6 +211,8 @@ class SupportPass {
   std::vector<std::int32_t> neighbours_;
   std::vector<std::uint8_t> steepEdge_;
   std::vector<std::int32_t> queue_;
+  /// Per ref: whether the second walk may step over it (levelBodies).
+  std::vector<std::uint8_t> secondWalkLinks_;
   /// Fill positions of a counting sort (adjacency lists, storeys, groups).
   std::vector<std::int32_t> cursor_;
   std::vector<SupportRow> unsorted_;
