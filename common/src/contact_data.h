@@ -39,8 +39,8 @@ struct alignas(64) Contact : ContactSolverPart {
   /// The two shapes (slots), A's on edges.bodyA.
   std::int32_t shapeA = -1;
   std::int32_t shapeB = -1;
-  /// Either shape is round (ShapeSlot::rolls): on the line naming the
-  /// bodies, which the contact refs are read off (ConstraintRef::rolls).
+  /// Either shape is round (ShapeSlot::rolls): read by the support pass's
+  /// second levelling only, off the refs' lines.
   bool rolls = false;
   ManifoldFrame frame;
   CollideFunction collide = nullptr;
