@@ -116,19 +116,18 @@ F slipFrictionOfLanes(const WideConstraint<F>& c, F upperIsB, F normalX, F norma
 // every lane at once), as columns in the record's layout.
 template <class F>
 void supportColumns(const WideConstraint<F>& c, F upperIsB, F (&column)[kSupportLaneFloats]) {
-  const auto field = [](std::size_t offset) { return floatAt(offset); };
   const F stateA = loadIndices<F>(c.stateA);
   const F stateB = loadIndices<F>(c.stateB);
   const F normalX = simd::select(upperIsB, c.normalX, simd::negated(c.normalX));
   const F normalY = simd::select(upperIsB, c.normalY, simd::negated(c.normalY));
-  for (F& unused : column) unused = simd::broadcast<F>(0);
-  column[field(offsetof(SupportLaneRecord, stateA))] = simd::select(upperIsB, stateA, stateB);
-  column[field(offsetof(SupportLaneRecord, stateB))] = simd::select(upperIsB, stateB, stateA);
-  column[field(offsetof(SupportLaneRecord, normalX))] = normalX;
-  column[field(offsetof(SupportLaneRecord, normalY))] = normalY;
-  column[field(offsetof(SupportLaneRecord, invMass))] = simd::select(upperIsB, c.invMassB, c.invMassA);
-  column[field(offsetof(SupportLaneRecord, invInertia))] = simd::select(upperIsB, c.invInertiaB, c.invInertiaA);
-  column[field(offsetof(SupportLaneRecord, slipFriction))] = slipFrictionOfLanes(c, upperIsB, normalX, normalY);
+  for (F& value : column) value = simd::broadcast<F>(0);  // the record's unused tail
+  column[floatAt(offsetof(SupportLaneRecord, stateA))] = simd::select(upperIsB, stateA, stateB);
+  column[floatAt(offsetof(SupportLaneRecord, stateB))] = simd::select(upperIsB, stateB, stateA);
+  column[floatAt(offsetof(SupportLaneRecord, normalX))] = normalX;
+  column[floatAt(offsetof(SupportLaneRecord, normalY))] = normalY;
+  column[floatAt(offsetof(SupportLaneRecord, invMass))] = simd::select(upperIsB, c.invMassB, c.invMassA);
+  column[floatAt(offsetof(SupportLaneRecord, invInertia))] = simd::select(upperIsB, c.invInertiaB, c.invInertiaA);
+  column[floatAt(offsetof(SupportLaneRecord, slipFriction))] = slipFrictionOfLanes(c, upperIsB, normalX, normalY);
   using Point = SupportLaneRecord::Point;
   for (int j = 0; j < 2; ++j) {
     const WidePoint<F>& p = c.points[j];
@@ -140,7 +139,6 @@ void supportColumns(const WideConstraint<F>& c, F upperIsB, F (&column)[kSupport
     column[lanePointColumn(j, offsetof(Point, present))] = simd::greater(p.normalMass, simd::broadcast<F>(0));
   }
 }
-
 
 // The bundle's lanes from their records, as columns.
 template <class F>
@@ -246,12 +244,12 @@ SupportLaneRecord& supportLaneOf(WideContactSet& set, const SupportPlace& place)
 template <class F>
 void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std::int32_t b,
                       std::span<const std::int32_t> entries) {
-  SupportLaneRecord unused;  // what lanes that hold nothing up write
+  SupportLaneRecord discarded;  // what lanes that hold nothing up write
   void* records[F::kLanes];
   std::uint8_t holds = 0;
   std::uint8_t upperIsB = 0;
   for (int lane = 0; lane < F::kLanes; ++lane) {
-    records[lane] = &unused;
+    records[lane] = &discarded;
     if (std::size_t(lane) >= entries.size()) continue;
     const SupportPlace place = set.supportPlaceOf[std::size_t(entries[std::size_t(lane)])];
     set.laneSupportRecord[std::size_t(b) * F::kLanes + std::size_t(lane)] = supportRecordOf<F>(place);
