@@ -1,6 +1,24 @@
 #include "engine_adapter.h"
 
+#include <cstdio>
+
 namespace bench {
+
+void StageTimes::add(const std::vector<double>& ms) {
+  for (std::size_t i = 0; i < sums_.size() && i < ms.size(); ++i) sums_[i] += ms[i];
+  ++steps_;
+}
+
+std::string StageTimes::describe() const {
+  if (steps_ == 0) return {};
+  std::string line;
+  char part[64];
+  for (std::size_t i = 0; i < names_.size(); ++i) {
+    std::snprintf(part, sizeof part, "%s%s %.3f", i == 0 ? "" : " ", names_[i].c_str(), sums_[i] / steps_);
+    line += part;
+  }
+  return line + " ms/step";
+}
 
 const char* engineName(Engine engine) {
   switch (engine) {

@@ -16,6 +16,9 @@ std::string engineSetting(const RunResult& r) {
   return std::string(engineName(r.setting.engine)) + " " + r.setting.label();
 }
 
+// Both engines default to the same sub-steps (4).
+bool atDefaultSubSteps(const RunResult& r) { return r.setting.iterations == impulse::WorldSettings{}.subSteps; }
+
 const RunResult* firstOk(const std::vector<RunResult>& results) {
   for (const RunResult& r : results) {
     if (r.ok()) return &r;
@@ -56,9 +59,16 @@ void printTable(std::FILE* out, const std::vector<RunResult>& results) {
   }
   // One line, at the default setting: the passes barely differ by sub-steps.
   for (const RunResult& r : results) {
-    if (r.ok() && !r.passes.empty() && r.setting.engine == Engine::Impulse &&
-        r.setting.iterations == impulse::WorldSettings{}.subSteps) {
+    if (r.ok() && !r.passes.empty() && r.setting.engine == Engine::Impulse && atDefaultSubSteps(r)) {
       std::fprintf(out, "passes of %s: %s\n", engineSetting(r).c_str(), r.passes.c_str());
+    }
+  }
+  // Where each engine's own timers put the time, at the default setting:
+  // Impulse and Box2D v3 AVX2, at each thread count run.
+  for (const RunResult& r : results) {
+    const bool timed = r.setting.engine == Engine::Impulse || r.setting.engine == Engine::Box2DV3Avx2;
+    if (r.ok() && !r.stages.empty() && timed && atDefaultSubSteps(r)) {
+      std::fprintf(out, "stages of %s: %s\n", engineSetting(r).c_str(), r.stages.c_str());
     }
   }
 }

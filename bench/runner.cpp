@@ -23,7 +23,7 @@ bool finitePoses(const EngineAdapter& engine, const SceneDescription& scene) {
 }  // namespace
 
 RunResult runScene(const Scene& scene, const SceneDescription& description, const EngineSetting& setting) {
-  RunResult result{scene.name(), setting, {}, false, {}, {}, 0, 0, {}};
+  RunResult result{scene.name(), setting, {}, false, {}, {}, {}, 0, 0, {}};
   const RunLength length = scene.length();
   std::vector<double> msPerStep;
   try {
@@ -52,6 +52,7 @@ RunResult runScene(const Scene& scene, const SceneDescription& description, cons
         result.metrics = measure->results(*engine);
         result.approximation = engine->approximation();
         result.passes = engine->passes();
+        result.stages = engine->stages();
       }
     }
   } catch (const Unsupported& e) {

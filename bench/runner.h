@@ -16,6 +16,7 @@ struct RunResult {
   bool failed = false;  ///< built but threw or produced non-finite numbers
   std::string approximation;  ///< EngineAdapter::approximation()
   std::string passes;         ///< EngineAdapter::passes() after the first repeat
+  std::string stages;         ///< EngineAdapter::stages() after the first repeat
   double minMs = 0;     ///< ms/step, min and median over repeats
   double medianMs = 0;
   std::vector<Metric> metrics;

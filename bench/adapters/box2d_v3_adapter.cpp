@@ -163,11 +163,17 @@ class Box2DV3Adapter final : public EngineAdapter {
   void step(double dt) override {
     for (const KinematicTarget& target : scene_.targets) steer(target, dt);
     b2World_Step(world_, float(dt), subSteps_);
+    // v3 times its continuous collision and island sleeping within its
+    // solve; they are told apart as Impulse's stages are.
+    const b2Profile profile = b2World_GetProfile(world_);
+    stageTimes_.add({profile.pairs, profile.collide, profile.solve - profile.bullets - profile.sleepIslands,
+                     profile.bullets, profile.sleepIslands});
     ++stepCount_;
     spawnDue();
   }
 
   bool hasQueries() const override { return true; }
+  std::string stages() const override { return stageTimes_.describe(); }
 
   double castRayClosest(const Vec2d& origin, const Vec2d& translation) override {
     const b2RayResult result = b2World_CastRayClosest(world_, toVec(origin), toVec(translation), b2DefaultQueryFilter());
@@ -315,6 +321,7 @@ class Box2DV3Adapter final : public EngineAdapter {
   const SceneDescription& scene_;
   SpawnSchedule schedule_;
   int stepCount_ = 0;
+  StageTimes stageTimes_{{"pairs", "collide", "solve", "continuous", "sleep"}};
   b2WorldId world_{};
   b2BodyId ground_ = b2_nullBodyId;
   int subSteps_;

@@ -173,7 +173,9 @@ class ImpulseAdapter final : public EngineAdapter {
   void step(double dt) override {
     for (const KinematicTarget& target : scene_.targets) steer(target, dt);
     world_.step(Real(dt));
-    passTotals_.add(world_.profile().passes);
+    const impulse::StepProfile& profile = world_.profile();
+    passTotals_.add(profile.passes);
+    stageTimes_.add({profile.pairs, profile.collide, profile.solve, profile.continuous, profile.sleep});
     ++stepCount_;
     spawnDue();
   }
@@ -207,6 +209,7 @@ class ImpulseAdapter final : public EngineAdapter {
   }
 
   std::string passes() const override { return passTotals_.describe(stepCount_); }
+  std::string stages() const override { return stageTimes_.describe(); }
 
  private:
   /// The solver's pass counts summed over the steps.
@@ -332,6 +335,7 @@ class ImpulseAdapter final : public EngineAdapter {
   std::vector<Created> bodies_;
   int stepCount_ = 0;
   PassTotals passTotals_;
+  StageTimes stageTimes_{{"pairs", "collide", "solve", "continuous", "sleep"}};
 };
 
 }  // namespace
