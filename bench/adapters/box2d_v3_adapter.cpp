@@ -163,8 +163,9 @@ class Box2DV3Adapter final : public EngineAdapter {
   void step(double dt) override {
     for (const KinematicTarget& target : scene_.targets) steer(target, dt);
     b2World_Step(world_, float(dt), subSteps_);
-    // v3 times its continuous collision and island sleeping within its
-    // solve; they are told apart as Impulse's stages are.
+    // v3 times its bullets' continuous collision and its island sleeping
+    // within its solve: told apart as Impulse's stages are (its other
+    // bodies' continuous collision stays within the solve).
     const b2Profile profile = b2World_GetProfile(world_);
     stageTimes_.add({profile.pairs, profile.collide, profile.solve - profile.bullets - profile.sleepIslands,
                      profile.bullets, profile.sleepIslands});
