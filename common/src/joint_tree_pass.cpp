@@ -41,12 +41,13 @@ bool isBody(std::int32_t state, Real invMass) { return state != 0 && invMass > 0
 bool hasBodyA(const JointRow& row) { return isBody(row.stateA, row.invMassA); }
 bool hasBodyB(const JointRow& row) { return isBody(row.stateB, row.invMassB); }
 
-// The joint's rows acting on one of its bodies (3 rows by vx, vy, w).
-Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
-  Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
-  for (int r = 0; r < count; ++r) {
-    const Jacobian& row = rows[r].jacobian;
-    const double sign = sideB ? 1 : -1;
+// The joint's N rows acting on one of its bodies (by vx, vy, w).
+template <int N>
+[[gnu::always_inline]] inline Eigen::Matrix<double, N, 3> jacobianOn(const RigidRows& rows, bool sideB) {
+  Eigen::Matrix<double, N, 3> g;
+  const double sign = sideB ? 1 : -1;
+  for (int r = 0; r < N; ++r) {
+    const Jacobian& row = rows[std::size_t(r)].jacobian;
     g(r, 0) = sign * row.linear.x();
     g(r, 1) = sign * row.linear.y();
     g(r, 2) = sideB ? row.angularB : -row.angularA;
@@ -60,7 +61,7 @@ using Square = Eigen::Matrix<double, N, N>;
 // The blocks D_i are symmetric: their inverse by cofactors, read from the
 // upper triangle.
 template <int N>
-Square<N> symmetricInverse(const Square<N>& a) {
+[[gnu::always_inline]] inline Square<N> symmetricInverse(const Square<N>& a) {
   if constexpr (N == 1) {
     return Square<1>(1 / a(0, 0));
   } else if constexpr (N == 2) {
@@ -85,7 +86,7 @@ Square<N> symmetricInverse(const Square<N>& a) {
 // target -= left^T * right where the product is symmetric (left^T D^-1
 // left, left^T M^-1 left): its upper triangle, mirrored.
 template <int Cols, class Left, class Right, class Target>
-void subtractSymmetricProduct(const Left& left, const Right& right, Target& target) {
+[[gnu::always_inline]] inline void subtractSymmetricProduct(const Left& left, const Right& right, Target& target) {
   for (int i = 0; i < Cols; ++i) {
     for (int j = i; j < Cols; ++j) {
       const double product = left.col(i).dot(right.col(j));
@@ -103,7 +104,7 @@ Eigen::Vector3d inverseMassOf(Real invMass, Real invInertia) {
 // One node's elimination and substitutions, for its size N and its
 // parent's P (0: a root), fixed at compile time: a chain's pins are 2 x 2.
 template <int N, int P, class Block>
-void eliminateNode(Block& node, Block& parent) {
+[[gnu::always_inline]] inline void eliminateNode(Block& node, Block& parent) {
   const Square<N> inverse = symmetricInverse<N>(node.diagonal.template topLeftCorner<N, N>());
   node.diagonal.template topLeftCorner<N, N>() = inverse;
   if constexpr (P > 0) {
@@ -115,7 +116,7 @@ void eliminateNode(Block& node, Block& parent) {
 }
 
 template <int N, int P, class Block>
-void substituteForward(Block& node, Block& parent) {
+[[gnu::always_inline]] inline void substituteForward(Block& node, Block& parent) {
   const Eigen::Matrix<double, N, 1> reduced = node.value.template head<N>();
   node.value.template head<N>().noalias() = node.diagonal.template topLeftCorner<N, N>() * reduced;
   if constexpr (P > 0) {
@@ -125,7 +126,7 @@ void substituteForward(Block& node, Block& parent) {
 }
 
 template <int N, int P, class Block>
-void substituteBackward(Block& node, const Block& parent) {
+[[gnu::always_inline]] inline void substituteBackward(Block& node, const Block& parent) {
   if constexpr (P > 0) {
     node.value.template head<N>().noalias() -=
         node.toParent.template topLeftCorner<N, P>() * parent.value.template head<P>();
@@ -134,6 +135,16 @@ void substituteBackward(Block& node, const Block& parent) {
 
 template <int V>
 using Size = std::integral_constant<int, V>;
+
+// visit(Size<N>) for a joint node's row count.
+template <class Visit>
+void withRows(int rows, Visit&& visit) {
+  switch (rows) {
+    case 1: return visit(Size<1>{});
+    case 2: return visit(Size<2>{});
+    default: return visit(Size<3>{});
+  }
+}
 
 // visit(Size<N>, Size<P>) for the node's size and its parent's.
 template <class Block, class Visit>
@@ -456,6 +467,7 @@ void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> 
 
 // A joint's block at the sub-step's geometry: its rows' compliance, and the
 // right-hand side that takes out their share of position error.
+template <int N, int P>
 void JointTreePass::assembleJoint(std::int32_t node, JointRow& row, std::span<const SolverState> states,
                                   double errorRate) {
   Block& block = blocks_[std::size_t(node)];
@@ -463,59 +475,68 @@ void JointTreePass::assembleJoint(std::int32_t node, JointRow& row, std::span<co
   const SolverState& a = states[row.stateA];
   const SolverState& b = states[row.stateB];
   RigidRows rigid;
-  const int count = rigidRows(row, a, b, rigid);
-  joint.sideJacobian = {jacobianOn(rigid, count, false), jacobianOn(rigid, count, true)};
+  rigidRows(row, a, b, rigid);
+  Eigen::Matrix<double, N, 3> onA = jacobianOn<N>(rigid, false);
+  Eigen::Matrix<double, N, 3> onB = jacobianOn<N>(rigid, true);
   block.diagonal.setIdentity();
   block.value.setZero();
   joint.impulses = {};
-  for (int r = 0; r < count; ++r) {
-    const Jacobian& g = rigid[r].jacobian;
+  for (int r = 0; r < N; ++r) {
+    const Jacobian& g = rigid[std::size_t(r)].jacobian;
     const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
                                row.invInertiaA * g.angularA * g.angularA +
                                row.invInertiaB * g.angularB * g.angularB;
     if (inverseMass <= 0) {  // moves nothing: an identity row, cut loose
-      joint.sideJacobian[0].row(r).setZero();
-      joint.sideJacobian[1].row(r).setZero();
+      onA.row(r).setZero();
+      onB.row(r).setZero();
       continue;
     }
     block.diagonal(r, r) = -kCompliance * inverseMass;
-    block.value(r) = -(velocity(g, a, b) + correctionSpeed(errorRate, rigid[r].position));
-    joint.impulses[r] = rigid[r].impulse;
-    joint.jacobian[r] = g;
-    joint.position[r] = rigid[r].position;
+    block.value(r) = -(velocity(g, a, b) + correctionSpeed(errorRate, rigid[std::size_t(r)].position));
+    joint.impulses[std::size_t(r)] = rigid[std::size_t(r)].impulse;
+    joint.jacobian[std::size_t(r)] = g;
+    joint.position[std::size_t(r)] = rigid[std::size_t(r)].position;
   }
-  for (int side = 0; side < 2; ++side) coupleSide(node, side);
+  joint.sideJacobian[0].topRows<N>() = onA;
+  joint.sideJacobian[1].topRows<N>() = onB;
+  for (int side = 0; side < 2; ++side) coupleSide<N, P>(node, side);
 }
 
 // What one side's body adds to the joint's block: a body eliminated first
 // its inverse mass through the joint's rows, and a coupling to the joint of
 // its parent when that is the joint's parent; a hub its coupling to the
 // joint, as the joint's parent or child.
+template <int N, int P>
 void JointTreePass::coupleSide(std::int32_t node, int side) {
   Block& block = blocks_[std::size_t(node)];
   const JointNode& joint = joints_[std::size_t(node)];
   if (joint.bodies[std::size_t(side)] < 0) return;
   const TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
-  const Eigen::Matrix3d& rows = joint.sideJacobian[std::size_t(side)];
+  const Eigen::Matrix<double, N, 3> rows = joint.sideJacobian[std::size_t(side)].topRows<N>();
   const bool towardsParent = side == joint.parentSide;
   if (body.node >= 0) {
     if (towardsParent) {
-      block.toParent = rows;
+      block.toParent.topLeftCorner<N, 3>() = rows;
     } else {
       Block& hub = blocks_[std::size_t(body.node)];
       hub.diagonal = inverseMassOf(body.invMass, body.invInertia).cwiseInverse().asDiagonal();
       // A body that cannot turn has an inertia beyond any lever.
       if (body.invInertia <= 0) hub.diagonal(2, 2) = 1e30;
       hub.value.setZero();
-      hub.toParent = rows.transpose();
+      hub.toParent.topLeftCorner<3, N>() = rows.transpose();
     }
     return;
   }
-  const Eigen::Matrix3d weighted = rows * inverseMassOf(body.invMass, body.invInertia).asDiagonal();
-  subtractSymmetricProduct<3>(rows.transpose(), weighted.transpose(), block.diagonal);
-  if (towardsParent) {
-    const JointNode& parent = joints_[std::size_t(body.parentJoint)];
-    block.toParent.noalias() = -weighted * parent.sideJacobian[std::size_t(body.parentSide)].transpose();
+  const Eigen::Matrix<double, N, 3> weighted = rows * inverseMassOf(body.invMass, body.invInertia).asDiagonal();
+  const Eigen::Matrix<double, 3, N> rowsT = rows.transpose();
+  const Eigen::Matrix<double, 3, N> weightedT = weighted.transpose();
+  subtractSymmetricProduct<N>(rowsT, weightedT, block.diagonal);
+  if constexpr (P > 0) {
+    if (towardsParent) {
+      const JointNode& parent = joints_[std::size_t(body.parentJoint)];
+      block.toParent.topLeftCorner<N, P>().noalias() =
+          -weighted * parent.sideJacobian[std::size_t(body.parentSide)].topRows<P>().transpose();
+    }
   }
 }
 
@@ -525,7 +546,10 @@ void JointTreePass::assemble(const GroupView& group, std::span<JointRow> rows,
                              std::span<const SolverState> states, double errorRate) {
   for (std::int32_t node = group.end - 1; node >= group.begin; --node) {
     const std::int32_t row = joints_[std::size_t(node)].row;
-    if (row >= 0) assembleJoint(node, rows[std::size_t(row)], states, errorRate);
+    if (row < 0) continue;
+    withSizes(blocks_[std::size_t(node)], [&](auto n, auto p) {
+      assembleJoint<n(), p()>(node, rows[std::size_t(row)], states, errorRate);
+    });
   }
 }
 
@@ -589,22 +613,28 @@ void JointTreePass::applyVelocities(const GroupView& group, std::span<SolverStat
   for (std::int32_t node = group.begin; node < group.end; ++node) {
     const JointNode& joint = joints_[std::size_t(node)];
     if (joint.row < 0) continue;
-    const Eigen::Vector3d& negated = blocks_[std::size_t(node)].value;
-    for (int side = 0; side < 2; ++side) {
-      if (joint.bodies[std::size_t(side)] < 0) continue;
-      TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
-      body.change -= inverseMassOf(body.invMass, body.invInertia).cwiseProduct(
-          joint.sideJacobian[std::size_t(side)].transpose() * negated);
-    }
-    if (!keepImpulses) continue;
-    for (int r = 0; r < 3; ++r) {
-      if (joint.impulses[std::size_t(r)] != nullptr) *joint.impulses[std::size_t(r)] -= Real(negated(r));
-    }
+    const Block& block = blocks_[std::size_t(node)];
+    withRows(block.size, [&](auto n) { applyImpulses<n()>(joint, block.value, keepImpulses); });
   }
   for (const TreeBody& body : group.bodies) {
     SolverState& state = states[body.state];
     state.linearVelocity += Vec2(Real(body.change(0)), Real(body.change(1)));
     state.angularVelocity += Real(body.change(2));
+  }
+}
+
+template <int N>
+void JointTreePass::applyImpulses(const JointNode& joint, const Eigen::Vector3d& negated, bool keepImpulses) {
+  for (int side = 0; side < 2; ++side) {
+    if (joint.bodies[std::size_t(side)] < 0) continue;
+    TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
+    body.change -= inverseMassOf(body.invMass, body.invInertia)
+                       .cwiseProduct(joint.sideJacobian[std::size_t(side)].topRows<N>().transpose() *
+                                     negated.head<N>());
+  }
+  if (!keepImpulses) return;
+  for (int r = 0; r < N; ++r) {
+    if (joint.impulses[std::size_t(r)] != nullptr) *joint.impulses[std::size_t(r)] -= Real(negated(r));
   }
 }
 

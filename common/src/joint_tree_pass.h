@@ -101,7 +101,7 @@ class JointTreePass {
     std::int32_t row = -1;                       ///< its JointRow, -1: a hub body
     std::array<std::int32_t, 2> bodies{-1, -1};  ///< its bodies (A, B) in bodies_, -1: none
     std::int8_t parentSide = -1;                 ///< the side whose body leads to the parent, -1: root
-    std::array<Eigen::Matrix3d, 2> sideJacobian;  ///< its rows on A's and B's (vx, vy, w); cut rows zero
+    std::array<Eigen::Matrix3d, 2> sideJacobian;  ///< its rows on A's and B's (vx, vy, w), size rows; cut rows zero
     std::array<Real*, 3> impulses{};   ///< its rows' accumulated impulses; null: unused
     std::array<Jacobian, 3> jacobian{};  ///< its rows, for the speeds
     std::array<Real, 3> position{};      ///< its rows' errors at the blocks' geometry
@@ -165,7 +165,9 @@ class JointTreePass {
   void forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass);
   void assemble(const GroupView& group, std::span<JointRow> rows, std::span<const SolverState> states,
                 double errorRate);
+  template <int N, int P>
   void assembleJoint(std::int32_t node, JointRow& row, std::span<const SolverState> states, double errorRate);
+  template <int N, int P>
   void coupleSide(std::int32_t node, int side);
   bool assembleSpeeds(const GroupView& group, std::span<const JointRow> rows,
                       std::span<const SolverState> states, double errorRate);
@@ -174,6 +176,8 @@ class JointTreePass {
   void factor(const GroupView& group);
   void substitute(const GroupView& group);
   void applyVelocities(const GroupView& group, std::span<SolverState> states, bool keepImpulses);
+  template <int N>
+  void applyImpulses(const JointNode& joint, const Eigen::Vector3d& negated, bool keepImpulses);
 
   std::vector<std::int32_t> bodyGroup_;     ///< union-find over solver states
   std::vector<std::uint8_t> groupHasLoop_;  ///< by union-find root
