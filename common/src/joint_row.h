@@ -31,6 +31,11 @@ struct JointRow {
   /// Its rigid rows belong to the tree pass (joint_tree_pass.h), which solves
   /// them exactly after the soft pass: the soft pass skips them.
   bool inTree = false;
+  /// In the tree pass, in a group whose rows are all rigid and whose bodies
+  /// nothing else acts on (no contact, no other joint): the exact relax
+  /// leaves the rows' velocities what it would after the soft relax, which
+  /// moves the bodies only along the rows, so the soft relax skips it.
+  bool relaxedExactly = false;
   /// A plain pin in a group with a loop (a grid): the tree pass never
   /// solves it, so its soft rows alone hold the load, at JointPass::loop.
   bool pinInLoop = false;

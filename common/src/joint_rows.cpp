@@ -383,8 +383,9 @@ struct RigidContext {
 
 void addRigid(RigidRowsOut& out, RigidContext& x, const DistanceJointSettings& s) {
   if (s.stiffness > 0) return;
-  Jacobian j = lineJacobian(x.f, unitOr(x.f.d, x.row.lastAxis));
-  out.add(j, x.f.d.norm() - x.row.joint->length, x.row.impulses.axial);
+  // The axis its reaction is reported along, as the soft row keeps it.
+  x.row.lastAxis = unitOr(x.f.d, x.row.lastAxis);
+  out.add(lineJacobian(x.f, x.row.lastAxis), x.f.d.norm() - x.row.joint->length, x.row.impulses.axial);
 }
 void addRigid(RigidRowsOut&, RigidContext&, const RopeJointSettings&) {}
 void addRigid(RigidRowsOut&, RigidContext&, const MouseJointSettings&) {}
@@ -443,7 +444,7 @@ void warmStartJoint(JointRow& row, SolverState& a, SolverState& b) {
 }
 
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass) {
-  if (pass.useBias && row.inTree && !row.softRows) return;
+  if (row.inTree && !row.softRows && (pass.useBias || row.relaxedExactly)) return;
   if (row.plainPin) {
     const Frame f = frameOf(row, a, b);
     rigidPoint(row, f, f.d, row.impulses.point, pass, a, b);
@@ -516,8 +517,12 @@ bool hasSoftRows(const JointSettings& settings) {
 }
 
 int rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
-  RigidContext x{row, a, frameOf(row, a, b)};
   RigidRowsOut rows{out};
+  if (row.plainPin) {  // the commonest joint: its point alone
+    rows.addPoint(frameOf(row, a, b), row.impulses.point);
+    return rows.count;
+  }
+  RigidContext x{row, a, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { addRigid(rows, x, settings); }, row.joint->settings);
   return rows.count;
 }

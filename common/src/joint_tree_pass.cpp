@@ -185,12 +185,26 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
     const GroupView group = groupAt(g);
     if (!needsExactPass(group, rows, compliance)) continue;
     solvedGroups_.push_back(std::int32_t(g));
+    bool alone = !group.otherJoints;
     for (std::int32_t node = group.begin; node < group.end; ++node) {
       const std::int32_t row = joints_[std::size_t(node)].row;
       if (row < 0) continue;
-      rows[std::size_t(row)].inTree = true;
+      JointRow& joint = rows[std::size_t(row)];
+      joint.inTree = true;
+      alone = alone && !joint.touches && !joint.softRows;
       ++jointCount_;
     }
+    if (alone) markRelaxedExactly(group, rows);
+  }
+}
+
+// The soft relax of such a group's rows moves its bodies only along the
+// rows, which the exact relax then projects out again: it changes the end
+// velocities by the compliance's share of its impulses (1e-5) alone.
+void JointTreePass::markRelaxedExactly(const GroupView& group, std::span<JointRow> rows) const {
+  for (std::int32_t node = group.begin; node < group.end; ++node) {
+    const std::int32_t row = joints_[std::size_t(node)].row;
+    if (row >= 0) rows[std::size_t(row)].relaxedExactly = true;
   }
 }
 
@@ -198,7 +212,8 @@ JointTreePass::GroupView JointTreePass::groupAt(std::size_t g) {
   const GroupEnd begin = g == 0 ? GroupEnd{} : groupEnds_[g - 1];
   const GroupEnd end = groupEnds_[g];
   return {begin.nodes, end.nodes,
-          std::span<TreeBody>(bodies_).subspan(std::size_t(begin.bodies), std::size_t(end.bodies - begin.bodies))};
+          std::span<TreeBody>(bodies_).subspan(std::size_t(begin.bodies), std::size_t(end.bodies - begin.bodies)),
+          end.otherJoints};
 }
 
 // A group held by the world (a chain, a bridge, a pendulum, a crane) hangs
@@ -273,10 +288,15 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
   bodyGroup_.resize(stateCount);
   for (std::size_t s = 0; s < stateCount; ++s) bodyGroup_[s] = static_cast<std::int32_t>(s);
   groupHasLoop_.assign(stateCount, 0);
+  otherJointOn_.assign(stateCount, 0);
   jointsStart_.assign(stateCount + 1, 0);
   loopBodies_.clear();
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const JointRow& row = rows[r];
+    if (row.rigidRowCount == 0) {
+      otherJointOn_[std::size_t(row.stateA)] = 1;
+      otherJointOn_[std::size_t(row.stateB)] = 1;
+    }
     const bool a = hasBodyA(row) && row.rigidRowCount > 0;
     const bool b = hasBodyB(row) && row.rigidRowCount > 0;
     if (a) ++jointsStart_[row.stateA + 1];
@@ -366,7 +386,9 @@ void JointTreePass::storeReversed(std::span<const JointRow> rows) {
       storeBody(rows, at);
     }
   }
-  groupEnds_.push_back({static_cast<std::int32_t>(blocks_.size()), static_cast<std::int32_t>(bodies_.size())});
+  const bool otherJoints = std::any_of(bodies_.begin() + (groupEnds_.empty() ? 0 : groupEnds_.back().bodies),
+                                       bodies_.end(), [&](const TreeBody& b) { return otherJointOn_[std::size_t(b.state)] != 0; });
+  groupEnds_.push_back({static_cast<std::int32_t>(blocks_.size()), static_cast<std::int32_t>(bodies_.size()), otherJoints});
 }
 
 void JointTreePass::storeJoint(std::span<const JointRow> rows, std::int32_t at) {

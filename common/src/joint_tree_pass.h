@@ -49,8 +49,10 @@ class JointTreePass {
   /// each group's bodies and joints from the leaves to a root. Last step's
   /// groups are kept while every row joins the same states with the same
   /// masses. Then marks `inTree` the rows of the groups it solves this
-  /// step (needsExactPass; `rigid` is the soft rigid rows' softness), and
-  /// `pinInLoop` the plain pins of the groups with a loop.
+  /// step (needsExactPass; `rigid` is the soft rigid rows' softness),
+  /// `relaxedExactly` those of them in groups of rigid rows alone that
+  /// nothing else acts on, and `pinInLoop` the plain pins of the groups with
+  /// a loop.
   void order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid, const TaskRunner& tasks);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() {
@@ -120,12 +122,14 @@ class JointTreePass {
   struct GroupEnd {
     std::int32_t nodes = 0;
     std::int32_t bodies = 0;
+    bool otherJoints = false;  ///< a joint without rigid rows (a rope, a mouse) acts on a body
   };
   /// A group's nodes (blocks_ and joints_ from `begin`) and bodies.
   struct GroupView {
     std::int32_t begin = 0;
     std::int32_t end = 0;
     std::span<TreeBody> bodies;
+    bool otherJoints = false;
   };
   /// What the groups are built from, per row.
   struct RowShape {
@@ -157,6 +161,7 @@ class JointTreePass {
   void storeJoint(std::span<const JointRow> rows, std::int32_t at);
   void storeBody(std::span<const JointRow> rows, std::int32_t at);
   GroupView groupAt(std::size_t g);
+  void markRelaxedExactly(const GroupView& group, std::span<JointRow> rows) const;
   /// Whether a group is held by the world, touches anything, or the soft
   /// rows alone would let its joints give way by kExactTreeStretch or more.
   bool needsExactPass(const GroupView& group, std::span<const JointRow> rows, Real compliance) const;
@@ -188,6 +193,7 @@ class JointTreePass {
   std::vector<std::int32_t> cursor_;
   std::vector<std::int32_t> loopBodies_;
   std::vector<std::uint8_t> rowInLoop_;  ///< by row: its group has a loop
+  std::vector<std::uint8_t> otherJointOn_;  ///< by state: a joint without rigid rows acts on it
   std::vector<Visit> walk_;
   std::vector<std::int32_t> nodeAt_;  ///< by walk position: its node, -1 for a body eliminated first
   std::vector<std::int32_t> bodyAt_;  ///< by walk position: its place in bodies_
