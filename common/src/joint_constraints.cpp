@@ -394,7 +394,7 @@ void JointConstraints::solveExact(const SubStep& sub) {
 }
 void JointConstraints::relaxExact(const SubStep& sub) { tree_.relax(rows_, sub.states, *sub.tasks); }
 void JointConstraints::pushExact(const SubStep& sub) {
-  tree_.push(rows_, sub.states, *sub.tasks);
+  tree_.push(sub.states, *sub.tasks);
 }
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 

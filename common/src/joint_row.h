@@ -86,6 +86,30 @@ struct RigidRow {
 };
 using RigidRows = std::array<RigidRow, 3>;
 
+/// A joint's point now: its anchors from the centres, turned by the
+/// sub-step's rotations, and B's anchor minus A's.
+struct PointFrame {
+  Vec2 rA;
+  Vec2 rB;
+  Vec2 d;
+};
+inline PointFrame pointFrameOf(const JointRow& row, const SolverState& a, const SolverState& b) {
+  const Vec2 rA = a.deltaRotation.apply(row.anchorA);
+  const Vec2 rB = b.deltaRotation.apply(row.anchorB);
+  return {rA, rB, (b.deltaPosition - a.deltaPosition) + row.deltaCenter + rB - rA};
+}
+/// A point's two rigid rows, along x then y, whose impulses are `impulse`'s.
+inline void pointRows(const PointFrame& f, Vec2& impulse, RigidRow* out) {
+  out[0] = {{Vec2(1, 0), -f.rA.y(), -f.rB.y()}, f.d.x(), &impulse.x()};
+  out[1] = {{Vec2(0, 1), f.rA.x(), f.rB.x()}, f.d.y(), &impulse.y()};
+}
+/// rigidRows of a plain pin (JointRow::plainPin), inline for the tree
+/// pass, which makes them every sub-step.
+inline int plainPinRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
+  pointRows(pointFrameOf(row, a, b), row.impulses.point, out.data());
+  return 2;
+}
+
 /// A rigid row's softness in `pass`: the soft step's, with position
 /// feedback, in the biased pass; hard (velocity only) in the relax pass.
 Softness rowSoftness(const JointPass& pass);

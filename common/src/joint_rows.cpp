@@ -33,10 +33,8 @@ struct Frame {
 };
 
 Frame frameOf(const JointRow& row, const SolverState& a, const SolverState& b) {
-  Vec2 rA = a.deltaRotation.apply(row.anchorA);
-  Vec2 rB = b.deltaRotation.apply(row.anchorB);
-  Vec2 d = (b.deltaPosition - a.deltaPosition) + row.deltaCenter + rB - rA;
-  return {rA, rB, d, row.deltaAngle, a.deltaRotation, b.deltaRotation};
+  const PointFrame point = pointFrameOf(row, a, b);
+  return {point.rA, point.rB, point.d, row.deltaAngle, a.deltaRotation, b.deltaRotation};
 }
 
 Jacobian angularJacobian() { return {Vec2::Zero(), 1, 1}; }
@@ -369,8 +367,8 @@ struct RigidRowsOut {
     rows[count++] = {j, position, &impulse};
   }
   void addPoint(const Frame& f, Vec2& impulse) {
-    add({Vec2(1, 0), -f.rA.y(), -f.rB.y()}, f.d.x(), impulse.x());
-    add({Vec2(0, 1), f.rA.x(), f.rB.x()}, f.d.y(), impulse.y());
+    pointRows({f.rA, f.rB, f.d}, impulse, rows.data() + count);
+    count += 2;
   }
 };
 
@@ -517,11 +515,8 @@ bool hasSoftRows(const JointSettings& settings) {
 }
 
 int rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
+  if (row.plainPin) return plainPinRows(row, a, b, out);
   RigidRowsOut rows{out};
-  if (row.plainPin) {  // the commonest joint: its point alone
-    rows.addPoint(frameOf(row, a, b), row.impulses.point);
-    return rows.count;
-  }
   RigidContext x{row, a, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { addRigid(rows, x, settings); }, row.joint->settings);
   return rows.count;

@@ -42,17 +42,21 @@ bool hasBodyA(const JointRow& row) { return isBody(row.stateA, row.invMassA); }
 bool hasBodyB(const JointRow& row) { return isBody(row.stateB, row.invMassB); }
 
 // The joint's N rows acting on one of its bodies (by vx, vy, w).
-template <int N>
-[[gnu::always_inline]] inline Eigen::Matrix<double, N, 3> jacobianOn(const RigidRows& rows, bool sideB) {
-  Eigen::Matrix<double, N, 3> g;
+template <class SideRows>
+void fillSide(const RigidRows& rows, int count, bool sideB, SideRows& side) {
   const double sign = sideB ? 1 : -1;
-  for (int r = 0; r < N; ++r) {
+  for (int r = 0; r < count; ++r) {
     const Jacobian& row = rows[std::size_t(r)].jacobian;
-    g(r, 0) = sign * row.linear.x();
-    g(r, 1) = sign * row.linear.y();
-    g(r, 2) = sideB ? row.angularB : -row.angularA;
+    side[std::size_t(r)] = {sign * row.linear.x(), sign * row.linear.y(),
+                            sideB ? double(row.angularB) : -double(row.angularA)};
   }
-  return g;
+}
+
+// A row's speed, in double.
+double rowSpeed(const std::array<double, 3>& onA, const std::array<double, 3>& onB, const SolverState& a,
+                const SolverState& b) {
+  return onA[0] * a.linearVelocity.x() + onA[1] * a.linearVelocity.y() + onA[2] * a.angularVelocity +
+         onB[0] * b.linearVelocity.x() + onB[1] * b.linearVelocity.y() + onB[2] * b.angularVelocity;
 }
 
 template <int N>
@@ -94,11 +98,6 @@ template <int Cols, class Left, class Right, class Target>
       if (j != i) target(j, i) -= product;
     }
   }
-}
-
-// The inverse mass (m^-1, m^-1, I^-1) of a body.
-Eigen::Vector3d inverseMassOf(Real invMass, Real invInertia) {
-  return {double(invMass), double(invMass), double(invInertia)};
 }
 
 // One node's elimination and substitutions, for its size N and its
@@ -396,6 +395,7 @@ void JointTreePass::storeJoint(std::span<const JointRow> rows, std::int32_t at) 
   const JointRow& row = rows[std::size_t(visit.row)];
   JointNode joint;
   joint.row = visit.row;
+  joint.states = {row.stateA, row.stateB};
   if (hasBodyA(row)) joint.bodies[0] = bodyAt_[std::size_t(bodyVisit_[row.stateA])];
   if (hasBodyB(row)) joint.bodies[1] = bodyAt_[std::size_t(bodyVisit_[row.stateB])];
   Block block;
@@ -467,7 +467,7 @@ void JointTreePass::solveGroups(std::span<JointRow> rows, std::span<SolverState>
   const bool factored = factorsCurrent_;
   forEachSolvedGroup(tasks, [&](const GroupView& group) {
     if (factored) {
-      if (!assembleSpeeds(group, rows, states, errorRate)) return;  // no row moves: no impulse
+      if (!assembleSpeeds(group, states, errorRate)) return;  // no row moves: no impulse
     } else {
       assemble(group, rows, states, errorRate);
       factor(group);
@@ -478,10 +478,9 @@ void JointTreePass::solveGroups(std::span<JointRow> rows, std::span<SolverState>
   factorsCurrent_ = true;
 }
 
-void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> states,
-                         const TaskRunner& tasks) {
+void JointTreePass::push(std::span<SolverState> states, const TaskRunner& tasks) {
   forEachSolvedGroup(tasks, [&](const GroupView& group) {
-    if (!assembleSpeeds(group, rows, states, 0)) return;  // nothing pushed it: no change
+    if (!assembleSpeeds(group, states, 0)) return;  // nothing pushed it: no change
     substitute(group);
     applyVelocities(group, states, false);
   });
@@ -497,31 +496,36 @@ void JointTreePass::assembleJoint(std::int32_t node, JointRow& row, std::span<co
   const SolverState& a = states[row.stateA];
   const SolverState& b = states[row.stateB];
   RigidRows rigid;
-  rigidRows(row, a, b, rigid);
-  Eigen::Matrix<double, N, 3> onA = jacobianOn<N>(rigid, false);
-  Eigen::Matrix<double, N, 3> onB = jacobianOn<N>(rigid, true);
+  if (row.plainPin) {
+    plainPinRows(row, a, b, rigid);
+  } else {
+    rigidRows(row, a, b, rigid);
+  }
+  SideRows& onA = joint.sideJacobian[0];
+  SideRows& onB = joint.sideJacobian[1];
+  fillSide(rigid, N, false, onA);
+  fillSide(rigid, N, true, onB);
   block.diagonal.setIdentity();
   block.value.setZero();
   joint.impulses = {};
   for (int r = 0; r < N; ++r) {
-    const Jacobian& g = rigid[std::size_t(r)].jacobian;
+    const auto k = std::size_t(r);
+    const Jacobian& g = rigid[k].jacobian;
     const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
                                row.invInertiaA * g.angularA * g.angularA +
                                row.invInertiaB * g.angularB * g.angularB;
     if (inverseMass <= 0) {  // moves nothing: an identity row, cut loose
-      onA.row(r).setZero();
-      onB.row(r).setZero();
+      onA[k] = {};
+      onB[k] = {};
       continue;
     }
     block.diagonal(r, r) = -kCompliance * inverseMass;
-    block.value(r) = -(velocity(g, a, b) + correctionSpeed(errorRate, rigid[std::size_t(r)].position));
-    joint.impulses[std::size_t(r)] = rigid[std::size_t(r)].impulse;
-    joint.jacobian[std::size_t(r)] = g;
-    joint.position[std::size_t(r)] = rigid[std::size_t(r)].position;
+    block.value(r) = -(rowSpeed(onA[k], onB[k], a, b) + correctionSpeed(errorRate, rigid[k].position));
+    joint.impulses[k] = rigid[k].impulse;
+    joint.position[k] = rigid[k].position;
   }
-  joint.sideJacobian[0].topRows<N>() = onA;
-  joint.sideJacobian[1].topRows<N>() = onB;
-  for (int side = 0; side < 2; ++side) coupleSide<N, P>(node, side);
+  coupleSide<N, P>(node, 0);
+  coupleSide<N, P>(node, 1);
 }
 
 // What one side's body adds to the joint's block: a body eliminated first
@@ -529,36 +533,49 @@ void JointTreePass::assembleJoint(std::int32_t node, JointRow& row, std::span<co
 // its parent when that is the joint's parent; a hub its coupling to the
 // joint, as the joint's parent or child.
 template <int N, int P>
-void JointTreePass::coupleSide(std::int32_t node, int side) {
+[[gnu::always_inline]] inline void JointTreePass::coupleSide(std::int32_t node, int side) {
   Block& block = blocks_[std::size_t(node)];
   const JointNode& joint = joints_[std::size_t(node)];
   if (joint.bodies[std::size_t(side)] < 0) return;
   const TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
-  const Eigen::Matrix<double, N, 3> rows = joint.sideJacobian[std::size_t(side)].topRows<N>();
+  const SideRows& rows = joint.sideJacobian[std::size_t(side)];
   const bool towardsParent = side == joint.parentSide;
   if (body.node >= 0) {
-    if (towardsParent) {
-      block.toParent.topLeftCorner<N, 3>() = rows;
-    } else {
-      Block& hub = blocks_[std::size_t(body.node)];
-      hub.diagonal = inverseMassOf(body.invMass, body.invInertia).cwiseInverse().asDiagonal();
+    Block& hub = blocks_[std::size_t(body.node)];
+    if (!towardsParent) {
       // A body that cannot turn has an inertia beyond any lever.
-      if (body.invInertia <= 0) hub.diagonal(2, 2) = 1e30;
+      const double inertia = body.invInertia > 0 ? 1.0 / body.invInertia : 1e30;
+      hub.diagonal = Eigen::Vector3d(1.0 / body.invMass, 1.0 / body.invMass, inertia).asDiagonal();
       hub.value.setZero();
-      hub.toParent.topLeftCorner<3, N>() = rows.transpose();
+    }
+    for (int r = 0; r < N; ++r) {
+      for (int k = 0; k < 3; ++k) {
+        const double entry = rows[std::size_t(r)][std::size_t(k)];
+        if (towardsParent) {
+          block.toParent(r, k) = entry;
+        } else {
+          hub.toParent(k, r) = entry;
+        }
+      }
     }
     return;
   }
-  const Eigen::Matrix<double, N, 3> weighted = rows * inverseMassOf(body.invMass, body.invInertia).asDiagonal();
-  const Eigen::Matrix<double, 3, N> rowsT = rows.transpose();
-  const Eigen::Matrix<double, 3, N> weightedT = weighted.transpose();
-  subtractSymmetricProduct<N>(rowsT, weightedT, block.diagonal);
-  if constexpr (P > 0) {
-    if (towardsParent) {
-      const JointNode& parent = joints_[std::size_t(body.parentJoint)];
-      block.toParent.topLeftCorner<N, P>().noalias() =
-          -weighted * parent.sideJacobian[std::size_t(body.parentSide)].topRows<P>().transpose();
+  const std::array<double, 3> inverseMass{body.invMass, body.invMass, body.invInertia};
+  const SideRows& parentRows =
+      joints_[std::size_t(body.parentJoint)].sideJacobian[std::size_t(body.parentSide)];
+  for (int i = 0; i < N; ++i) {
+    std::array<double, 3> weighted;
+    for (std::size_t k = 0; k < 3; ++k) weighted[k] = rows[std::size_t(i)][k] * inverseMass[k];
+    auto dot = [&](const std::array<double, 3>& other) {
+      return weighted[0] * other[0] + weighted[1] * other[1] + weighted[2] * other[2];
+    };
+    for (int j = i; j < N; ++j) {
+      const double product = dot(rows[std::size_t(j)]);
+      block.diagonal(i, j) -= product;
+      if (j != i) block.diagonal(j, i) -= product;
     }
+    if (!towardsParent) continue;
+    for (int j = 0; j < P; ++j) block.toParent(i, j) = -dot(parentRows[std::size_t(j)]);
   }
 }
 
@@ -578,21 +595,21 @@ void JointTreePass::assemble(const GroupView& group, std::span<JointRow> rows,
 // The right-hand side alone, on blocks made at this geometry: each used
 // row's speed and its correction (none in the push). Returns whether any
 // row moves.
-bool JointTreePass::assembleSpeeds(const GroupView& group, std::span<const JointRow> rows,
-                                   std::span<const SolverState> states, double errorRate) {
+bool JointTreePass::assembleSpeeds(const GroupView& group, std::span<const SolverState> states,
+                                   double errorRate) {
   bool moving = false;
   for (std::int32_t node = group.begin; node < group.end; ++node) {
     Block& block = blocks_[std::size_t(node)];
     const JointNode& joint = joints_[std::size_t(node)];
     block.value.setZero();
     if (joint.row < 0) continue;
-    const JointRow& row = rows[std::size_t(joint.row)];
-    const SolverState& a = states[row.stateA];
-    const SolverState& b = states[row.stateB];
+    const SolverState& a = states[std::size_t(joint.states[0])];
+    const SolverState& b = states[std::size_t(joint.states[1])];
     for (int r = 0; r < block.size; ++r) {
-      if (joint.impulses[std::size_t(r)] == nullptr) continue;
-      block.value(r) = -(velocity(joint.jacobian[std::size_t(r)], a, b) +
-                         correctionSpeed(errorRate, joint.position[std::size_t(r)]));
+      const auto k = std::size_t(r);
+      if (joint.impulses[k] == nullptr) continue;
+      block.value(r) = -(rowSpeed(joint.sideJacobian[0][k], joint.sideJacobian[1][k], a, b) +
+                         correctionSpeed(errorRate, joint.position[k]));
       moving = moving || block.value(r) != 0;
     }
   }
@@ -650,9 +667,14 @@ void JointTreePass::applyImpulses(const JointNode& joint, const Eigen::Vector3d&
   for (int side = 0; side < 2; ++side) {
     if (joint.bodies[std::size_t(side)] < 0) continue;
     TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
-    body.change -= inverseMassOf(body.invMass, body.invInertia)
-                       .cwiseProduct(joint.sideJacobian[std::size_t(side)].topRows<N>().transpose() *
-                                     negated.head<N>());
+    const SideRows& rows = joint.sideJacobian[std::size_t(side)];
+    std::array<double, 3> push{};
+    for (int r = 0; r < N; ++r) {
+      for (std::size_t k = 0; k < 3; ++k) push[k] += rows[std::size_t(r)][k] * negated(r);
+    }
+    body.change(0) -= body.invMass * push[0];
+    body.change(1) -= body.invMass * push[1];
+    body.change(2) -= body.invInertia * push[2];
   }
   if (!keepImpulses) return;
   for (int r = 0; r < N; ++r) {

@@ -80,7 +80,7 @@ class JointTreePass {
   /// speeds are taken out of. The bodies have not moved since this
   /// sub-step's `solve`, so its factors are reused: only the right-hand
   /// side is new.
-  void push(std::span<const JointRow> rows, std::span<SolverState> states, const TaskRunner& tasks);
+  void push(std::span<SolverState> states, const TaskRunner& tasks);
 
  private:
   /// A node of a group's elimination: a joint (its rigid rows, 1 to 3) or
@@ -98,15 +98,19 @@ class JointTreePass {
     std::int8_t size = 3;
     std::int8_t parentSize = 0;  ///< 0 for a root
   };
+  /// A joint's rows on one body, row by row (read and written element by
+  /// element: no vector load straddles two scalar stores).
+  using SideRows = std::array<std::array<double, 3>, 3>;
   /// A joint node's rows, beside its block (unused for a hub).
   struct JointNode {
     std::int32_t row = -1;                       ///< its JointRow, -1: a hub body
+    std::array<std::int32_t, 2> states{0, 0};    ///< its JointRow's stateA and stateB
     std::array<std::int32_t, 2> bodies{-1, -1};  ///< its bodies (A, B) in bodies_, -1: none
     std::int8_t parentSide = -1;                 ///< the side whose body leads to the parent, -1: root
-    std::array<Eigen::Matrix3d, 2> sideJacobian;  ///< its rows on A's and B's (vx, vy, w), size rows; cut rows zero
+    /// Its rows (size of them) on A's and B's (vx, vy, w); cut rows zero.
+    std::array<SideRows, 2> sideJacobian{};
     std::array<Real*, 3> impulses{};   ///< its rows' accumulated impulses; null: unused
-    std::array<Jacobian, 3> jacobian{};  ///< its rows, for the speeds
-    std::array<Real, 3> position{};      ///< its rows' errors at the blocks' geometry
+    std::array<Real, 3> position{};    ///< its rows' errors at the blocks' geometry
   };
   /// A body of a group.
   struct TreeBody {
@@ -174,8 +178,7 @@ class JointTreePass {
   void assembleJoint(std::int32_t node, JointRow& row, std::span<const SolverState> states, double errorRate);
   template <int N, int P>
   void coupleSide(std::int32_t node, int side);
-  bool assembleSpeeds(const GroupView& group, std::span<const JointRow> rows,
-                      std::span<const SolverState> states, double errorRate);
+  bool assembleSpeeds(const GroupView& group, std::span<const SolverState> states, double errorRate);
   void solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
                    const TaskRunner& tasks);
   void factor(const GroupView& group);
