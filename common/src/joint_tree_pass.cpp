@@ -135,16 +135,6 @@ template <int N, int P, class Block>
 template <int V>
 using Size = std::integral_constant<int, V>;
 
-// visit(Size<N>) for a joint node's row count.
-template <class Visit>
-void withRows(int rows, Visit&& visit) {
-  switch (rows) {
-    case 1: return visit(Size<1>{});
-    case 2: return visit(Size<2>{});
-    default: return visit(Size<3>{});
-  }
-}
-
 // visit(Size<N>, Size<P>) for the node's size and its parent's.
 template <class Block, class Visit>
 void withSizes(const Block& node, Visit&& visit) {
@@ -468,12 +458,12 @@ void JointTreePass::solveGroups(std::span<JointRow> rows, std::span<SolverState>
   forEachSolvedGroup(tasks, [&](const GroupView& group) {
     if (factored) {
       if (!assembleSpeeds(group, states, errorRate)) return;  // no row moves: no impulse
+      reduce(group);
     } else {
       assemble(group, rows, states, errorRate);
-      factor(group);
+      factorAndReduce(group);
     }
-    substitute(group);
-    applyVelocities(group, states, true);
+    backSubstituteAndApply(group, states, true);
   });
   factorsCurrent_ = true;
 }
@@ -481,8 +471,8 @@ void JointTreePass::solveGroups(std::span<JointRow> rows, std::span<SolverState>
 void JointTreePass::push(std::span<SolverState> states, const TaskRunner& tasks) {
   forEachSolvedGroup(tasks, [&](const GroupView& group) {
     if (!assembleSpeeds(group, states, 0)) return;  // nothing pushed it: no change
-    substitute(group);
-    applyVelocities(group, states, false);
+    reduce(group);
+    backSubstituteAndApply(group, states, false);
   });
 }
 
@@ -617,43 +607,46 @@ bool JointTreePass::assembleSpeeds(const GroupView& group, std::span<const Solve
 }
 
 // L D L^T of the tree, leaves first (every child before its parent): each
-// node keeps D_i^-1 and D_i^-1 H_{i,parent}, all the substitutions need. A
+// node keeps D_i^-1 and D_i^-1 H_{i,parent}, all the substitutions need,
+// and takes its forward substitution at once (its children's are in). A
 // root's parent is itself, unread.
-void JointTreePass::factor(const GroupView& group) {
+void JointTreePass::factorAndReduce(const GroupView& group) {
   for (std::int32_t node = group.begin; node < group.end; ++node) {
     Block& block = blocks_[std::size_t(node)];
     Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
-    withSizes(block, [&](auto n, auto p) { eliminateNode<n(), p()>(block, parent); });
+    withSizes(block, [&](auto n, auto p) {
+      eliminateNode<n(), p()>(block, parent);
+      substituteForward<n(), p()>(block, parent);
+    });
   }
 }
 
-// The two substitutions; the solution replaces each node's value: a
-// joint's negated impulses (a hub's velocity change, unread).
-void JointTreePass::substitute(const GroupView& group) {
+// The forward substitution alone, on factors already made.
+void JointTreePass::reduce(const GroupView& group) {
   for (std::int32_t node = group.begin; node < group.end; ++node) {
     Block& block = blocks_[std::size_t(node)];
     Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
     withSizes(block, [&](auto n, auto p) { substituteForward<n(), p()>(block, parent); });
   }
+}
+
+// The backward substitution, root first; each node's solution is then
+// final: a joint's negated impulses, applied at once (a hub's velocity
+// change is unread). Bodies take the velocity change of their joints'
+// impulses, summed in double (a light link between two heavily loaded pins
+// takes two large, nearly opposite ones); joints' impulses join the warm
+// start, except the push's, which belong to pseudo velocities.
+void JointTreePass::backSubstituteAndApply(const GroupView& group, std::span<SolverState> states,
+                                           bool keepImpulses) {
+  for (TreeBody& body : group.bodies) body.change.setZero();
   for (std::int32_t node = group.end - 1; node >= group.begin; --node) {
     Block& block = blocks_[std::size_t(node)];
     const Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
-    withSizes(block, [&](auto n, auto p) { substituteBackward<n(), p()>(block, parent); });
-  }
-}
-
-// Bodies take the velocity change of their joints' impulses, summed in
-// double (a light link between two heavily loaded pins takes two large,
-// nearly opposite ones); joints' impulses join the warm start, except the
-// push's, which belong to pseudo velocities.
-void JointTreePass::applyVelocities(const GroupView& group, std::span<SolverState> states,
-                                    bool keepImpulses) {
-  for (TreeBody& body : group.bodies) body.change.setZero();
-  for (std::int32_t node = group.begin; node < group.end; ++node) {
     const JointNode& joint = joints_[std::size_t(node)];
-    if (joint.row < 0) continue;
-    const Block& block = blocks_[std::size_t(node)];
-    withRows(block.size, [&](auto n) { applyImpulses<n()>(joint, block.value, keepImpulses); });
+    withSizes(block, [&](auto n, auto p) {
+      substituteBackward<n(), p()>(block, parent);
+      if (joint.row >= 0) applyImpulses<n()>(joint, block.value, keepImpulses);
+    });
   }
   for (const TreeBody& body : group.bodies) {
     SolverState& state = states[body.state];

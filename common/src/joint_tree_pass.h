@@ -181,9 +181,9 @@ class JointTreePass {
   bool assembleSpeeds(const GroupView& group, std::span<const SolverState> states, double errorRate);
   void solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
                    const TaskRunner& tasks);
-  void factor(const GroupView& group);
-  void substitute(const GroupView& group);
-  void applyVelocities(const GroupView& group, std::span<SolverState> states, bool keepImpulses);
+  void factorAndReduce(const GroupView& group);
+  void reduce(const GroupView& group);
+  void backSubstituteAndApply(const GroupView& group, std::span<SolverState> states, bool keepImpulses);
   template <int N>
   void applyImpulses(const JointNode& joint, const Eigen::Vector3d& negated, bool keepImpulses);
 
