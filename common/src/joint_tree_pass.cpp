@@ -52,11 +52,14 @@ void fillSide(const RigidRows& rows, int count, bool sideB, SideRows& side) {
   }
 }
 
-// A row's speed, in double.
+// A row's speed, from its rows on A and B (which hold its float Jacobian
+// exactly), worked out in float as the soft rows do: the bench's ragdoll
+// pile, whose widest pin gap comes from one moment, opened 14.6 cm instead
+// of 5.3 with the speeds in double.
 double rowSpeed(const std::array<double, 3>& onA, const std::array<double, 3>& onB, const SolverState& a,
                 const SolverState& b) {
-  return onA[0] * a.linearVelocity.x() + onA[1] * a.linearVelocity.y() + onA[2] * a.angularVelocity +
-         onB[0] * b.linearVelocity.x() + onB[1] * b.linearVelocity.y() + onB[2] * b.angularVelocity;
+  const Jacobian row{Vec2(Real(onB[0]), Real(onB[1])), Real(-onA[2]), Real(onB[2])};
+  return velocity(row, a, b);
 }
 
 template <int N>
