@@ -205,8 +205,13 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
   placeOf_.resize(order_.size());
   std::fill(placeOf_.begin() + colorStarts_[GraphColoring::kOverflow], placeOf_.end(), BlockPlace{});
   const int colours = coloursTaken(colorStarts_);
+  // Colours per range: enough for kJointsPerMakeRange rows, so that a few
+  // dozen joints are placed without a hand-off.
+  const std::int32_t coloured = colorStarts_[std::size_t(colours)];
+  const std::int32_t coloursPerRange =
+      std::max<std::int32_t>(1, colours * kJointsPerMakeRange / std::max<std::int32_t>(coloured, 1));
   std::array<ColourRows, GraphColoring::kOverflow> counts{};
-  tasks.forRanges(colours, 1, [&](std::int32_t begin, std::int32_t end) {
+  tasks.forRanges(colours, coloursPerRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t color = begin; color < end; ++color) counts[std::size_t(color)] = markRowKinds(color);
   });
   for (int color = 0; color < colours; ++color) {
@@ -218,7 +223,7 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
     besideStarts_[next] = besideStarts_[next - 1] + rows.beside;
   }
   rowsBesidePins_.resize(std::size_t(besideStarts_[std::size_t(colours)]));
-  tasks.forRanges(colours, 1, [&](std::int32_t begin, std::int32_t end) {
+  tasks.forRanges(colours, coloursPerRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t color = begin; color < end; ++color)
       placeRowsOfColour(color, counts[std::size_t(color)]);
   });
@@ -389,7 +394,7 @@ void JointConstraints::solveExact(const SubStep& sub) {
 }
 void JointConstraints::relaxExact(const SubStep& sub) { tree_.relax(rows_, sub.states, *sub.tasks); }
 void JointConstraints::pushExact(const SubStep& sub) {
-  tree_.push(rows_, sub.states, *sub.tasks);
+  tree_.push(sub.states, *sub.tasks);
 }
 void JointConstraints::relax(const SubStep& sub) { run(sub, false); }
 

@@ -31,6 +31,11 @@ struct JointRow {
   /// Its rigid rows belong to the tree pass (joint_tree_pass.h), which solves
   /// them exactly after the soft pass: the soft pass skips them.
   bool inTree = false;
+  /// In the tree pass, in a group whose rows are all rigid and whose bodies
+  /// nothing else acts on (no contact, no other joint): the exact relax
+  /// leaves the rows' velocities what it would after the soft relax, which
+  /// moves the bodies only along the rows, so the soft relax skips it.
+  bool relaxedExactly = false;
   /// A plain pin in a group with a loop (a grid): the tree pass never
   /// solves it, so its soft rows alone hold the load, at JointPass::loop.
   bool pinInLoop = false;
@@ -80,6 +85,30 @@ struct RigidRow {
   Real* impulse = nullptr;
 };
 using RigidRows = std::array<RigidRow, 3>;
+
+/// A joint's point now: its anchors from the centres, turned by the
+/// sub-step's rotations, and B's anchor minus A's.
+struct PointFrame {
+  Vec2 rA;
+  Vec2 rB;
+  Vec2 d;
+};
+inline PointFrame pointFrameOf(const JointRow& row, const SolverState& a, const SolverState& b) {
+  const Vec2 rA = a.deltaRotation.apply(row.anchorA);
+  const Vec2 rB = b.deltaRotation.apply(row.anchorB);
+  return {rA, rB, (b.deltaPosition - a.deltaPosition) + row.deltaCenter + rB - rA};
+}
+/// A point's two rigid rows, along x then y, whose impulses are `impulse`'s.
+inline void pointRows(const PointFrame& f, Vec2& impulse, RigidRow* out) {
+  out[0] = {{Vec2(1, 0), -f.rA.y(), -f.rB.y()}, f.d.x(), &impulse.x()};
+  out[1] = {{Vec2(0, 1), f.rA.x(), f.rB.x()}, f.d.y(), &impulse.y()};
+}
+/// rigidRows of a plain pin (JointRow::plainPin), inline for the tree
+/// pass, which makes them every sub-step.
+inline int plainPinRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
+  pointRows(pointFrameOf(row, a, b), row.impulses.point, out.data());
+  return 2;
+}
 
 /// A rigid row's softness in `pass`: the soft step's, with position
 /// feedback, in the biased pass; hard (velocity only) in the relax pass.

@@ -33,10 +33,8 @@ struct Frame {
 };
 
 Frame frameOf(const JointRow& row, const SolverState& a, const SolverState& b) {
-  Vec2 rA = a.deltaRotation.apply(row.anchorA);
-  Vec2 rB = b.deltaRotation.apply(row.anchorB);
-  Vec2 d = (b.deltaPosition - a.deltaPosition) + row.deltaCenter + rB - rA;
-  return {rA, rB, d, row.deltaAngle, a.deltaRotation, b.deltaRotation};
+  const PointFrame point = pointFrameOf(row, a, b);
+  return {point.rA, point.rB, point.d, row.deltaAngle, a.deltaRotation, b.deltaRotation};
 }
 
 Jacobian angularJacobian() { return {Vec2::Zero(), 1, 1}; }
@@ -369,8 +367,8 @@ struct RigidRowsOut {
     rows[count++] = {j, position, &impulse};
   }
   void addPoint(const Frame& f, Vec2& impulse) {
-    add({Vec2(1, 0), -f.rA.y(), -f.rB.y()}, f.d.x(), impulse.x());
-    add({Vec2(0, 1), f.rA.x(), f.rB.x()}, f.d.y(), impulse.y());
+    pointRows({f.rA, f.rB, f.d}, impulse, rows.data() + count);
+    count += 2;
   }
 };
 
@@ -383,8 +381,9 @@ struct RigidContext {
 
 void addRigid(RigidRowsOut& out, RigidContext& x, const DistanceJointSettings& s) {
   if (s.stiffness > 0) return;
-  Jacobian j = lineJacobian(x.f, unitOr(x.f.d, x.row.lastAxis));
-  out.add(j, x.f.d.norm() - x.row.joint->length, x.row.impulses.axial);
+  // The axis its reaction is reported along, as the soft row keeps it.
+  x.row.lastAxis = unitOr(x.f.d, x.row.lastAxis);
+  out.add(lineJacobian(x.f, x.row.lastAxis), x.f.d.norm() - x.row.joint->length, x.row.impulses.axial);
 }
 void addRigid(RigidRowsOut&, RigidContext&, const RopeJointSettings&) {}
 void addRigid(RigidRowsOut&, RigidContext&, const MouseJointSettings&) {}
@@ -443,7 +442,7 @@ void warmStartJoint(JointRow& row, SolverState& a, SolverState& b) {
 }
 
 void solveJoint(JointRow& row, SolverState& a, SolverState& b, const JointPass& pass) {
-  if (pass.useBias && row.inTree && !row.softRows) return;
+  if (row.inTree && !row.softRows && (pass.useBias || row.relaxedExactly)) return;
   if (row.plainPin) {
     const Frame f = frameOf(row, a, b);
     rigidPoint(row, f, f.d, row.impulses.point, pass, a, b);
@@ -516,8 +515,9 @@ bool hasSoftRows(const JointSettings& settings) {
 }
 
 int rigidRows(JointRow& row, const SolverState& a, const SolverState& b, RigidRows& out) {
-  RigidContext x{row, a, frameOf(row, a, b)};
+  if (row.plainPin) return plainPinRows(row, a, b, out);
   RigidRowsOut rows{out};
+  RigidContext x{row, a, frameOf(row, a, b)};
   std::visit([&](const auto& settings) { addRigid(rows, x, settings); }, row.joint->settings);
   return rows.count;
 }

@@ -41,43 +41,119 @@ bool isBody(std::int32_t state, Real invMass) { return state != 0 && invMass > 0
 bool hasBodyA(const JointRow& row) { return isBody(row.stateA, row.invMassA); }
 bool hasBodyB(const JointRow& row) { return isBody(row.stateB, row.invMassB); }
 
-// The joint's rows acting on one of its bodies (3 rows by vx, vy, w).
-Eigen::Matrix3d jacobianOn(const RigidRows& rows, int count, bool sideB) {
-  Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
+// The joint's N rows acting on one of its bodies (by vx, vy, w).
+template <class SideRows>
+void fillSide(const RigidRows& rows, int count, bool sideB, SideRows& side) {
+  const double sign = sideB ? 1 : -1;
   for (int r = 0; r < count; ++r) {
-    const Jacobian& row = rows[r].jacobian;
-    const double sign = sideB ? 1 : -1;
-    g(r, 0) = sign * row.linear.x();
-    g(r, 1) = sign * row.linear.y();
-    g(r, 2) = sideB ? row.angularB : -row.angularA;
+    const Jacobian& row = rows[std::size_t(r)].jacobian;
+    side[std::size_t(r)] = {sign * row.linear.x(), sign * row.linear.y(),
+                            sideB ? double(row.angularB) : -double(row.angularA)};
   }
-  return g;
 }
 
-// The blocks D_i are symmetric: their inverse by cofactors, six of them.
-Eigen::Matrix3d symmetricInverse(const Eigen::Matrix3d& a) {
-  const double xx = a(1, 1) * a(2, 2) - a(1, 2) * a(1, 2);
-  const double xy = a(0, 2) * a(1, 2) - a(0, 1) * a(2, 2);
-  const double xz = a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1);
-  const double scale = 1 / (a(0, 0) * xx + a(0, 1) * xy + a(0, 2) * xz);
-  const double yy = (a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2)) * scale;
-  const double yz = (a(0, 2) * a(0, 1) - a(0, 0) * a(1, 2)) * scale;
-  const double zz = (a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1)) * scale;
-  Eigen::Matrix3d inverse;
-  inverse << xx * scale, xy * scale, xz * scale, xy * scale, yy, yz, xz * scale, yz, zz;
-  return inverse;
+// A row's speed, from its rows on A and B (which hold its float Jacobian
+// exactly), worked out in float as the soft rows do: the bench's ragdoll
+// pile, whose widest pin gap comes from one moment, opened 14.6 cm instead
+// of 5.3 with the speeds in double.
+double rowSpeed(const std::array<double, 3>& onA, const std::array<double, 3>& onB, const SolverState& a,
+                const SolverState& b) {
+  const Jacobian row{Vec2(Real(onB[0]), Real(onB[1])), Real(-onA[2]), Real(onB[2])};
+  return velocity(row, a, b);
 }
 
-// target -= coupling^T * lower, which is symmetric (coupling^T D^-1
-// coupling): six dot products instead of nine.
-void subtractSymmetricProduct(const Eigen::Matrix3d& coupling, const Eigen::Matrix3d& lower,
-                              Eigen::Matrix3d& target) {
-  for (int i = 0; i < 3; ++i) {
-    for (int j = i; j < 3; ++j) {
-      const double product = coupling.col(i).dot(lower.col(j));
+template <int N>
+using Square = Eigen::Matrix<double, N, N>;
+
+// The blocks D_i are symmetric: their inverse by cofactors, read from the
+// upper triangle.
+template <int N>
+[[gnu::always_inline]] inline Square<N> symmetricInverse(const Square<N>& a) {
+  if constexpr (N == 1) {
+    return Square<1>(1 / a(0, 0));
+  } else if constexpr (N == 2) {
+    const double scale = 1 / (a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1));
+    Square<2> inverse;
+    inverse << a(1, 1) * scale, -a(0, 1) * scale, -a(0, 1) * scale, a(0, 0) * scale;
+    return inverse;
+  } else {
+    const double xx = a(1, 1) * a(2, 2) - a(1, 2) * a(1, 2);
+    const double xy = a(0, 2) * a(1, 2) - a(0, 1) * a(2, 2);
+    const double xz = a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1);
+    const double scale = 1 / (a(0, 0) * xx + a(0, 1) * xy + a(0, 2) * xz);
+    const double yy = (a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2)) * scale;
+    const double yz = (a(0, 2) * a(0, 1) - a(0, 0) * a(1, 2)) * scale;
+    const double zz = (a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1)) * scale;
+    Square<3> inverse;
+    inverse << xx * scale, xy * scale, xz * scale, xy * scale, yy, yz, xz * scale, yz, zz;
+    return inverse;
+  }
+}
+
+// target -= left^T * right where the product is symmetric (left^T D^-1
+// left, left^T M^-1 left): its upper triangle, mirrored.
+template <int Cols, class Left, class Right, class Target>
+[[gnu::always_inline]] inline void subtractSymmetricProduct(const Left& left, const Right& right, Target& target) {
+  for (int i = 0; i < Cols; ++i) {
+    for (int j = i; j < Cols; ++j) {
+      const double product = left.col(i).dot(right.col(j));
       target(i, j) -= product;
       if (j != i) target(j, i) -= product;
     }
+  }
+}
+
+// One node's elimination and substitutions, for its size N and its
+// parent's P (0: a root), fixed at compile time: a chain's pins are 2 x 2.
+template <int N, int P, class Block>
+[[gnu::always_inline]] inline void eliminateNode(Block& node, Block& parent) {
+  const Square<N> inverse = symmetricInverse<N>(node.diagonal.template topLeftCorner<N, N>());
+  node.diagonal.template topLeftCorner<N, N>() = inverse;
+  if constexpr (P > 0) {
+    const Eigen::Matrix<double, N, P> coupling = node.toParent.template topLeftCorner<N, P>();
+    const Eigen::Matrix<double, N, P> lower = inverse * coupling;
+    subtractSymmetricProduct<P>(coupling, lower, parent.diagonal);
+    node.toParent.template topLeftCorner<N, P>() = lower;
+  }
+}
+
+template <int N, int P, class Block>
+[[gnu::always_inline]] inline void substituteForward(Block& node, Block& parent) {
+  const Eigen::Matrix<double, N, 1> reduced = node.value.template head<N>();
+  node.value.template head<N>().noalias() = node.diagonal.template topLeftCorner<N, N>() * reduced;
+  if constexpr (P > 0) {
+    parent.value.template head<P>().noalias() -=
+        node.toParent.template topLeftCorner<N, P>().transpose() * reduced;
+  }
+}
+
+template <int N, int P, class Block>
+[[gnu::always_inline]] inline void substituteBackward(Block& node, const Block& parent) {
+  if constexpr (P > 0) {
+    node.value.template head<N>().noalias() -=
+        node.toParent.template topLeftCorner<N, P>() * parent.value.template head<P>();
+  }
+}
+
+template <int V>
+using Size = std::integral_constant<int, V>;
+
+// visit(Size<N>, Size<P>) for the node's size and its parent's.
+template <class Block, class Visit>
+void withSizes(const Block& node, Visit&& visit) {
+  switch (node.size * 4 + node.parentSize) {
+    case 4: return visit(Size<1>{}, Size<0>{});
+    case 5: return visit(Size<1>{}, Size<1>{});
+    case 6: return visit(Size<1>{}, Size<2>{});
+    case 7: return visit(Size<1>{}, Size<3>{});
+    case 8: return visit(Size<2>{}, Size<0>{});
+    case 9: return visit(Size<2>{}, Size<1>{});
+    case 10: return visit(Size<2>{}, Size<2>{});
+    case 11: return visit(Size<2>{}, Size<3>{});
+    case 12: return visit(Size<3>{}, Size<0>{});
+    case 13: return visit(Size<3>{}, Size<1>{});
+    case 14: return visit(Size<3>{}, Size<2>{});
+    default: return visit(Size<3>{}, Size<3>{});
   }
 }
 
@@ -97,18 +173,39 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
                       row.pinInLoop = row.plainPin && rowInLoop_[std::size_t(r)] != 0;
                     }
                   });
-  std::size_t begin = 0;
   for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
-    const std::span<const Node> group(nodes_.data() + begin, std::size_t(groupEnds_[g]) - begin);
-    begin = std::size_t(groupEnds_[g]);
+    const GroupView group = groupAt(g);
     if (!needsExactPass(group, rows, compliance)) continue;
     solvedGroups_.push_back(std::int32_t(g));
-    for (const Node& node : group) {
-      if (!node.isJoint) continue;
-      rows[node.row].inTree = true;
+    bool alone = !group.otherJoints;
+    for (std::int32_t node = group.begin; node < group.end; ++node) {
+      const std::int32_t row = joints_[std::size_t(node)].row;
+      if (row < 0) continue;
+      JointRow& joint = rows[std::size_t(row)];
+      joint.inTree = true;
+      alone = alone && !joint.touches && !joint.softRows;
       ++jointCount_;
     }
+    if (alone) markRelaxedExactly(group, rows);
   }
+}
+
+// The soft relax of such a group's rows moves its bodies only along the
+// rows, which the exact relax then projects out again: it changes the end
+// velocities by the compliance's share of its impulses (1e-5) alone.
+void JointTreePass::markRelaxedExactly(const GroupView& group, std::span<JointRow> rows) const {
+  for (std::int32_t node = group.begin; node < group.end; ++node) {
+    const std::int32_t row = joints_[std::size_t(node)].row;
+    if (row >= 0) rows[std::size_t(row)].relaxedExactly = true;
+  }
+}
+
+JointTreePass::GroupView JointTreePass::groupAt(std::size_t g) {
+  const GroupEnd begin = g == 0 ? GroupEnd{} : groupEnds_[g - 1];
+  const GroupEnd end = groupEnds_[g];
+  return {begin.nodes, end.nodes,
+          std::span<TreeBody>(bodies_).subspan(std::size_t(begin.bodies), std::size_t(end.bodies - begin.bodies)),
+          end.otherJoints};
 }
 
 // A group held by the world (a chain, a bridge, a pendulum, a crane) hangs
@@ -118,14 +215,16 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
 // measured. A group in flight is measured: each joint's linear load last
 // step (its stored impulses, warm started or not) over its rows' effective
 // mass, the pair's masses taken as points.
-bool JointTreePass::needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance) {
+bool JointTreePass::needsExactPass(const GroupView& group, std::span<const JointRow> rows,
+                                   Real compliance) const {
   // The walk roots a group at a joint to the world when it has one.
-  const Node& root = group.back();
-  if (root.sides[0] < 0 || root.sides[1] < 0) return true;
+  const JointNode& root = joints_[std::size_t(group.end - 1)];
+  if (root.bodies[0] < 0 || root.bodies[1] < 0) return true;
   Real give = 0;
-  for (const Node& node : group) {
-    if (!node.isJoint) continue;
-    const JointRow& row = rows[node.row];
+  for (std::int32_t node = group.begin; node < group.end; ++node) {
+    const std::int32_t index = joints_[std::size_t(node)].row;
+    if (index < 0) continue;
+    const JointRow& row = rows[std::size_t(index)];
     if (row.touches) return true;
     const JointImpulses& last = row.joint->impulses;
     const Real load = last.point.norm() + std::abs(last.perpendicular) + std::abs(last.axial);
@@ -181,10 +280,15 @@ void JointTreePass::buildGroups(std::span<const JointRow> rows, std::size_t stat
   bodyGroup_.resize(stateCount);
   for (std::size_t s = 0; s < stateCount; ++s) bodyGroup_[s] = static_cast<std::int32_t>(s);
   groupHasLoop_.assign(stateCount, 0);
+  otherJointOn_.assign(stateCount, 0);
   jointsStart_.assign(stateCount + 1, 0);
   loopBodies_.clear();
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const JointRow& row = rows[r];
+    if (row.rigidRowCount == 0) {
+      otherJointOn_[std::size_t(row.stateA)] = 1;
+      otherJointOn_[std::size_t(row.stateB)] = 1;
+    }
     const bool a = hasBodyA(row) && row.rigidRowCount > 0;
     const bool b = hasBodyB(row) && row.rigidRowCount > 0;
     if (a) ++jointsStart_[row.stateA + 1];
@@ -248,38 +352,80 @@ void JointTreePass::orderGroup(std::int32_t rootJoint, std::span<const JointRow>
   storeReversed(rows);
 }
 
-void JointTreePass::storeReversed(std::span<const JointRow> rows) {
-  const auto base = static_cast<std::int32_t>(nodes_.size());
-  const auto last = static_cast<std::int32_t>(walk_.size()) - 1;
-  auto nodeOf = [&](std::int32_t walked) { return walked < 0 ? -1 : base + last - walked; };
-  for (std::int32_t at = last; at >= 0; --at) {
-    const Visit& visit = walk_[at];
-    Node node;
-    node.parent = nodeOf(visit.parent);
-    node.state = visit.state;
-    node.row = visit.row;
-    node.isJoint = visit.row >= 0;
-    if (node.isJoint) {
-      const JointRow& row = rows[visit.row];
-      if (hasBodyA(row)) node.sides[0] = nodeOf(bodyVisit_[row.stateA]);
-      if (hasBodyB(row)) node.sides[1] = nodeOf(bodyVisit_[row.stateB]);
-    } else {
-      node.mass = bodyMass(rows, visit);
-    }
-    nodes_.push_back(node);
-  }
-  groupEnds_.push_back(static_cast<std::int32_t>(nodes_.size()));
+// A body with three or more joints stays a node of its own (JointTreePass::Block).
+bool JointTreePass::isHub(const Visit& visit) const {
+  return visit.row < 0 && jointsStart_[visit.state + 1] - jointsStart_[visit.state] > 2;
 }
 
-// m, m and I of a body, from the joint that reached it or that it reached.
-Eigen::Vector3d JointTreePass::bodyMass(std::span<const JointRow> rows, const Visit& body) const {
-  const Visit& joint = walk_[body.parent];
-  const JointRow& row = rows[joint.row];
-  const bool sideB = row.stateB == body.state;
-  const Real invMass = sideB ? row.invMassB : row.invMassA;
-  const Real invInertia = sideB ? row.invInertiaB : row.invInertiaA;
-  // A body that cannot turn has an inertia beyond any lever.
-  return {1.0 / invMass, 1.0 / invMass, invInertia > 0 ? 1.0 / invInertia : 1e30};
+// Nodes in reverse walk order, so that every node comes before its parent;
+// a body eliminated first is no node, and the joints it reached take its
+// parent joint as theirs.
+void JointTreePass::storeReversed(std::span<const JointRow> rows) {
+  const auto last = static_cast<std::int32_t>(walk_.size()) - 1;
+  nodeAt_.assign(walk_.size(), -1);
+  bodyAt_.assign(walk_.size(), -1);
+  auto node = static_cast<std::int32_t>(blocks_.size());
+  auto body = static_cast<std::int32_t>(bodies_.size());
+  for (std::int32_t at = last; at >= 0; --at) {
+    const Visit& visit = walk_[std::size_t(at)];
+    if (visit.row >= 0 || isHub(visit)) nodeAt_[std::size_t(at)] = node++;
+    if (visit.row < 0) bodyAt_[std::size_t(at)] = body++;
+  }
+  for (std::int32_t at = last; at >= 0; --at) {
+    if (walk_[std::size_t(at)].row >= 0) {
+      storeJoint(rows, at);
+    } else {
+      storeBody(rows, at);
+    }
+  }
+  const bool otherJoints = std::any_of(bodies_.begin() + (groupEnds_.empty() ? 0 : groupEnds_.back().bodies),
+                                       bodies_.end(), [&](const TreeBody& b) { return otherJointOn_[std::size_t(b.state)] != 0; });
+  groupEnds_.push_back({static_cast<std::int32_t>(blocks_.size()), static_cast<std::int32_t>(bodies_.size()), otherJoints});
+}
+
+void JointTreePass::storeJoint(std::span<const JointRow> rows, std::int32_t at) {
+  const Visit& visit = walk_[std::size_t(at)];
+  const JointRow& row = rows[std::size_t(visit.row)];
+  JointNode joint;
+  joint.row = visit.row;
+  joint.states = {row.stateA, row.stateB};
+  if (hasBodyA(row)) joint.bodies[0] = bodyAt_[std::size_t(bodyVisit_[row.stateA])];
+  if (hasBodyB(row)) joint.bodies[1] = bodyAt_[std::size_t(bodyVisit_[row.stateB])];
+  Block block;
+  block.size = static_cast<std::int8_t>(row.rigidRowCount);
+  if (visit.parent >= 0) {
+    const Visit& parentBody = walk_[std::size_t(visit.parent)];
+    joint.parentSide = parentBody.state == row.stateB ? 1 : 0;
+    // A parent body eliminated first hands on its own parent joint.
+    const std::int32_t parent = isHub(parentBody) ? visit.parent : parentBody.parent;
+    block.parent = nodeAt_[std::size_t(parent)];
+    const Visit& parentNode = walk_[std::size_t(parent)];
+    block.parentSize = static_cast<std::int8_t>(parentNode.row >= 0 ? rows[std::size_t(parentNode.row)].rigidRowCount : 3);
+  }
+  blocks_.push_back(block);
+  joints_.push_back(joint);
+}
+
+// A body's masses, from the joint that reached it.
+void JointTreePass::storeBody(std::span<const JointRow> rows, std::int32_t at) {
+  const Visit& visit = walk_[std::size_t(at)];
+  const Visit& reachedBy = walk_[std::size_t(visit.parent)];
+  const JointRow& row = rows[std::size_t(reachedBy.row)];
+  const bool sideB = row.stateB == visit.state;
+  TreeBody body;
+  body.state = visit.state;
+  body.invMass = sideB ? row.invMassB : row.invMassA;
+  body.invInertia = sideB ? row.invInertiaB : row.invInertiaA;
+  body.node = nodeAt_[std::size_t(at)];
+  body.parentJoint = nodeAt_[std::size_t(visit.parent)];
+  body.parentSide = sideB ? 1 : 0;
+  bodies_.push_back(body);
+  if (body.node < 0) return;
+  Block block;
+  block.parent = body.parentJoint;
+  block.parentSize = static_cast<std::int8_t>(row.rigidRowCount);
+  blocks_.push_back(block);
+  joints_.emplace_back();
 }
 
 // Solved groups per range when they run side by side: a ragdoll's group
@@ -289,11 +435,7 @@ constexpr std::int32_t kGroupsPerRange = 4;
 template <class Pass>
 void JointTreePass::forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass) {
   tasks.forRanges(std::int32_t(solvedGroups_.size()), kGroupsPerRange, [&](std::int32_t first, std::int32_t last) {
-    for (std::int32_t k = first; k < last; ++k) {
-      const auto g = std::size_t(solvedGroups_[std::size_t(k)]);
-      const auto begin = std::size_t(g == 0 ? 0 : groupEnds_[g - 1]);
-      pass(std::span<Node>(nodes_).subspan(begin, std::size_t(groupEnds_[g]) - begin));
-    }
+    for (std::int32_t k = first; k < last; ++k) pass(groupAt(std::size_t(solvedGroups_[std::size_t(k)])));
   });
 }
 
@@ -316,156 +458,223 @@ void JointTreePass::relax(std::span<JointRow> rows, std::span<SolverState> state
 void JointTreePass::solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
                                 const TaskRunner& tasks) {
   const bool factored = factorsCurrent_;
-  forEachSolvedGroup(tasks, [&](std::span<Node> group) {
+  forEachSolvedGroup(tasks, [&](const GroupView& group) {
     if (factored) {
-      assembleCorrectedSpeeds(group, rows, states, errorRate);
+      if (!assembleSpeeds(group, states, errorRate)) return;  // no row moves: no impulse
+      reduce(group);
     } else {
       assemble(group, rows, states, errorRate);
-      factor(group);
+      factorAndReduce(group);
     }
-    substitute(group);
-    applyVelocities(group, states, true);
+    backSubstituteAndApply(group, states, true);
   });
   factorsCurrent_ = true;
 }
 
-void JointTreePass::push(std::span<const JointRow> rows, std::span<SolverState> states,
-                         const TaskRunner& tasks) {
-  forEachSolvedGroup(tasks, [&](std::span<Node> group) {
-    if (!assembleSpeeds(group, rows, states)) return;  // nothing pushed it: no change
-    substitute(group);
-    applyVelocities(group, states, false);
+void JointTreePass::push(std::span<SolverState> states, const TaskRunner& tasks) {
+  forEachSolvedGroup(tasks, [&](const GroupView& group) {
+    if (!assembleSpeeds(group, states, 0)) return;  // nothing pushed it: no change
+    reduce(group);
+    backSubstituteAndApply(group, states, false);
   });
 }
 
-void JointTreePass::assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
+// A joint's block at the sub-step's geometry: its rows' compliance, and the
+// right-hand side that takes out their share of position error.
+template <int N, int P>
+void JointTreePass::assembleJoint(std::int32_t node, JointRow& row, std::span<const SolverState> states,
                                   double errorRate) {
+  Block& block = blocks_[std::size_t(node)];
+  JointNode& joint = joints_[std::size_t(node)];
   const SolverState& a = states[row.stateA];
   const SolverState& b = states[row.stateB];
   RigidRows rigid;
-  const int count = rigidRows(row, a, b, rigid);
-  std::array<Eigen::Matrix3d, 2> jacobians{jacobianOn(rigid, count, false),
-                                           jacobianOn(rigid, count, true)};
-  node.diagonal = Eigen::Matrix3d::Identity();
-  node.value.setZero();
-  node.impulses = {};
-  for (int r = 0; r < count; ++r) {
-    const Jacobian& g = rigid[r].jacobian;
+  if (row.plainPin) {
+    plainPinRows(row, a, b, rigid);
+  } else {
+    rigidRows(row, a, b, rigid);
+  }
+  SideRows& onA = joint.sideJacobian[0];
+  SideRows& onB = joint.sideJacobian[1];
+  fillSide(rigid, N, false, onA);
+  fillSide(rigid, N, true, onB);
+  block.diagonal.setIdentity();
+  block.value.setZero();
+  joint.impulses = {};
+  for (int r = 0; r < N; ++r) {
+    const auto k = std::size_t(r);
+    const Jacobian& g = rigid[k].jacobian;
     const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
                                row.invInertiaA * g.angularA * g.angularA +
                                row.invInertiaB * g.angularB * g.angularB;
     if (inverseMass <= 0) {  // moves nothing: an identity row, cut loose
-      jacobians[0].row(r).setZero();
-      jacobians[1].row(r).setZero();
+      onA[k] = {};
+      onB[k] = {};
       continue;
     }
-    node.diagonal(r, r) = -kCompliance * inverseMass;
-    node.value(r) = -(velocity(g, a, b) + correctionSpeed(errorRate, rigid[r].position));
-    node.impulses[r] = rigid[r].impulse;
-    node.jacobian[r] = g;
+    block.diagonal(r, r) = -kCompliance * inverseMass;
+    block.value(r) = -(rowSpeed(onA[k], onB[k], a, b) + correctionSpeed(errorRate, rigid[k].position));
+    joint.impulses[k] = rigid[k].impulse;
+    joint.position[k] = rigid[k].position;
   }
-  // The joint's rows couple it to its parent body, or its child bodies to it.
-  for (std::size_t side = 0; side < 2; ++side) {
-    const std::int32_t body = node.sides[side];
-    if (body < 0) continue;
-    if (body == node.parent) {
-      node.toParent = jacobians[side];
-    } else {
-      nodes_[body].toParent = jacobians[side].transpose();
+  coupleSide<N, P>(node, 0);
+  coupleSide<N, P>(node, 1);
+}
+
+// What one side's body adds to the joint's block: a body eliminated first
+// its inverse mass through the joint's rows, and a coupling to the joint of
+// its parent when that is the joint's parent; a hub its coupling to the
+// joint, as the joint's parent or child.
+template <int N, int P>
+[[gnu::always_inline]] inline void JointTreePass::coupleSide(std::int32_t node, int side) {
+  Block& block = blocks_[std::size_t(node)];
+  const JointNode& joint = joints_[std::size_t(node)];
+  if (joint.bodies[std::size_t(side)] < 0) return;
+  const TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
+  const SideRows& rows = joint.sideJacobian[std::size_t(side)];
+  const bool towardsParent = side == joint.parentSide;
+  if (body.node >= 0) {
+    Block& hub = blocks_[std::size_t(body.node)];
+    if (!towardsParent) {
+      // A body that cannot turn has an inertia beyond any lever.
+      const double inertia = body.invInertia > 0 ? 1.0 / body.invInertia : 1e30;
+      hub.diagonal = Eigen::Vector3d(1.0 / body.invMass, 1.0 / body.invMass, inertia).asDiagonal();
+      hub.value.setZero();
     }
+    for (int r = 0; r < N; ++r) {
+      for (int k = 0; k < 3; ++k) {
+        const double entry = rows[std::size_t(r)][std::size_t(k)];
+        if (towardsParent) {
+          block.toParent(r, k) = entry;
+        } else {
+          hub.toParent(k, r) = entry;
+        }
+      }
+    }
+    return;
+  }
+  const std::array<double, 3> inverseMass{body.invMass, body.invMass, body.invInertia};
+  const SideRows& parentRows =
+      joints_[std::size_t(body.parentJoint)].sideJacobian[std::size_t(body.parentSide)];
+  for (int i = 0; i < N; ++i) {
+    std::array<double, 3> weighted;
+    for (std::size_t k = 0; k < 3; ++k) weighted[k] = rows[std::size_t(i)][k] * inverseMass[k];
+    auto dot = [&](const std::array<double, 3>& other) {
+      return weighted[0] * other[0] + weighted[1] * other[1] + weighted[2] * other[2];
+    };
+    for (int j = i; j < N; ++j) {
+      const double product = dot(rows[std::size_t(j)]);
+      block.diagonal(i, j) -= product;
+      if (j != i) block.diagonal(j, i) -= product;
+    }
+    if (!towardsParent) continue;
+    for (int j = 0; j < P; ++j) block.toParent(i, j) = -dot(parentRows[std::size_t(j)]);
   }
 }
 
-// H_ii, H_{i,parent} and the right-hand side at the sub-step's geometry.
-void JointTreePass::assemble(std::span<Node> group, std::span<JointRow> rows,
+// Every block at the sub-step's geometry, parents first: a joint's coupling
+// through a body eliminated first reads its parent joint's rows.
+void JointTreePass::assemble(const GroupView& group, std::span<JointRow> rows,
                              std::span<const SolverState> states, double errorRate) {
-  for (Node& node : group) {
-    if (node.isJoint) {
-      assembleJoint(node, rows[node.row], states, errorRate);
-    } else {
-      node.diagonal = node.mass.asDiagonal();
-      node.value.setZero();
-    }
+  for (std::int32_t node = group.end - 1; node >= group.begin; --node) {
+    const std::int32_t row = joints_[std::size_t(node)].row;
+    if (row < 0) continue;
+    withSizes(blocks_[std::size_t(node)], [&](auto n, auto p) {
+      assembleJoint<n(), p()>(node, rows[std::size_t(row)], states, errorRate);
+    });
   }
 }
 
-// The push's right-hand side: each used row's speed, without correction.
-// Returns whether any row moves.
-void JointTreePass::assembleCorrectedSpeeds(std::span<Node> group, std::span<JointRow> rows,
-                                            std::span<const SolverState> states, double errorRate) {
-  for (Node& node : group) {
-    node.value.setZero();
-    if (!node.isJoint) continue;
-    JointRow& row = rows[node.row];
-    const SolverState& a = states[row.stateA];
-    const SolverState& b = states[row.stateB];
-    RigidRows rigid;
-    rigidRows(row, a, b, rigid);
-    for (int r = 0; r < 3; ++r) {
-      if (node.impulses[r] == nullptr) continue;
-      node.value(r) = -(velocity(node.jacobian[r], a, b) + correctionSpeed(errorRate, rigid[r].position));
-    }
-  }
-}
-
-bool JointTreePass::assembleSpeeds(std::span<Node> group, std::span<const JointRow> rows,
-                                   std::span<const SolverState> states) {
+// The right-hand side alone, on blocks made at this geometry: each used
+// row's speed and its correction (none in the push). Returns whether any
+// row moves.
+bool JointTreePass::assembleSpeeds(const GroupView& group, std::span<const SolverState> states,
+                                   double errorRate) {
   bool moving = false;
-  for (Node& node : group) {
-    node.value.setZero();
-    if (!node.isJoint) continue;
-    const JointRow& row = rows[node.row];
-    const SolverState& a = states[row.stateA];
-    const SolverState& b = states[row.stateB];
-    for (int r = 0; r < 3; ++r) {
-      if (node.impulses[r] == nullptr) continue;
-      node.value(r) = -velocity(node.jacobian[r], a, b);
-      moving = moving || node.value(r) != 0;
+  for (std::int32_t node = group.begin; node < group.end; ++node) {
+    Block& block = blocks_[std::size_t(node)];
+    const JointNode& joint = joints_[std::size_t(node)];
+    block.value.setZero();
+    if (joint.row < 0) continue;
+    const SolverState& a = states[std::size_t(joint.states[0])];
+    const SolverState& b = states[std::size_t(joint.states[1])];
+    for (int r = 0; r < block.size; ++r) {
+      const auto k = std::size_t(r);
+      if (joint.impulses[k] == nullptr) continue;
+      block.value(r) = -(rowSpeed(joint.sideJacobian[0][k], joint.sideJacobian[1][k], a, b) +
+                         correctionSpeed(errorRate, joint.position[k]));
+      moving = moving || block.value(r) != 0;
     }
   }
   return moving;
 }
 
 // L D L^T of the tree, leaves first (every child before its parent): each
-// node keeps D_i^-1 and D_i^-1 H_{i,parent}, all the substitutions need.
-void JointTreePass::factor(std::span<Node> group) {
-  for (Node& node : group) {
-    node.diagonal = symmetricInverse(node.diagonal);
-    if (node.parent < 0) continue;
-    const Eigen::Matrix3d lower = node.diagonal * node.toParent;
-    subtractSymmetricProduct(node.toParent, lower, nodes_[node.parent].diagonal);
-    node.toParent = lower;
+// node keeps D_i^-1 and D_i^-1 H_{i,parent}, all the substitutions need,
+// and takes its forward substitution at once (its children's are in). A
+// root's parent is itself, unread.
+void JointTreePass::factorAndReduce(const GroupView& group) {
+  for (std::int32_t node = group.begin; node < group.end; ++node) {
+    Block& block = blocks_[std::size_t(node)];
+    Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
+    withSizes(block, [&](auto n, auto p) {
+      eliminateNode<n(), p()>(block, parent);
+      substituteForward<n(), p()>(block, parent);
+    });
   }
 }
 
-// The two substitutions; the solution replaces each node's value: a body's
-// velocity change, a joint's negated impulses.
-void JointTreePass::substitute(std::span<Node> group) {
-  for (Node& node : group) {
-    const Eigen::Vector3d reduced = node.value;
-    node.value.noalias() = node.diagonal * reduced;
-    if (node.parent >= 0) nodes_[node.parent].value.noalias() -= node.toParent.transpose() * reduced;
-  }
-  for (auto node = group.rbegin(); node != group.rend(); ++node) {
-    if (node->parent >= 0) node->value.noalias() -= node->toParent * nodes_[node->parent].value;
+// The forward substitution alone, on factors already made.
+void JointTreePass::reduce(const GroupView& group) {
+  for (std::int32_t node = group.begin; node < group.end; ++node) {
+    Block& block = blocks_[std::size_t(node)];
+    Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
+    withSizes(block, [&](auto n, auto p) { substituteForward<n(), p()>(block, parent); });
   }
 }
 
-// Bodies take their velocity change; joints' impulses join the warm start,
-// except the push's, which belong to pseudo velocities.
-void JointTreePass::applyVelocities(std::span<const Node> group, std::span<SolverState> states,
-                                    bool keepImpulses) {
-  for (const Node& node : group) {
-    if (!node.isJoint) {
-      SolverState& state = states[node.state];
-      state.linearVelocity += Vec2(Real(node.value(0)), Real(node.value(1)));
-      state.angularVelocity += Real(node.value(2));
-      continue;
+// The backward substitution, root first; each node's solution is then
+// final: a joint's negated impulses, applied at once (a hub's velocity
+// change is unread). Bodies take the velocity change of their joints'
+// impulses, summed in double (a light link between two heavily loaded pins
+// takes two large, nearly opposite ones); joints' impulses join the warm
+// start, except the push's, which belong to pseudo velocities.
+void JointTreePass::backSubstituteAndApply(const GroupView& group, std::span<SolverState> states,
+                                           bool keepImpulses) {
+  for (TreeBody& body : group.bodies) body.change.setZero();
+  for (std::int32_t node = group.end - 1; node >= group.begin; --node) {
+    Block& block = blocks_[std::size_t(node)];
+    const Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
+    const JointNode& joint = joints_[std::size_t(node)];
+    withSizes(block, [&](auto n, auto p) {
+      substituteBackward<n(), p()>(block, parent);
+      if (joint.row >= 0) applyImpulses<n()>(joint, block.value, keepImpulses);
+    });
+  }
+  for (const TreeBody& body : group.bodies) {
+    SolverState& state = states[body.state];
+    state.linearVelocity += Vec2(Real(body.change(0)), Real(body.change(1)));
+    state.angularVelocity += Real(body.change(2));
+  }
+}
+
+template <int N>
+void JointTreePass::applyImpulses(const JointNode& joint, const Eigen::Vector3d& negated, bool keepImpulses) {
+  for (int side = 0; side < 2; ++side) {
+    if (joint.bodies[std::size_t(side)] < 0) continue;
+    TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
+    const SideRows& rows = joint.sideJacobian[std::size_t(side)];
+    std::array<double, 3> push{};
+    for (int r = 0; r < N; ++r) {
+      for (std::size_t k = 0; k < 3; ++k) push[k] += rows[std::size_t(r)][k] * negated(r);
     }
-    if (!keepImpulses) continue;
-    for (int r = 0; r < 3; ++r) {
-      if (node.impulses[r] != nullptr) *node.impulses[r] -= Real(node.value(r));
-    }
+    body.change(0) -= body.invMass * push[0];
+    body.change(1) -= body.invMass * push[1];
+    body.change(2) -= body.invInertia * push[2];
+  }
+  if (!keepImpulses) return;
+  for (int r = 0; r < N; ++r) {
+    if (joint.impulses[std::size_t(r)] != nullptr) *joint.impulses[std::size_t(r)] -= Real(negated(r));
   }
 }
 

@@ -49,12 +49,16 @@ class JointTreePass {
   /// each group's bodies and joints from the leaves to a root. Last step's
   /// groups are kept while every row joins the same states with the same
   /// masses. Then marks `inTree` the rows of the groups it solves this
-  /// step (needsExactPass; `rigid` is the soft rigid rows' softness), and
-  /// `pinInLoop` the plain pins of the groups with a loop.
+  /// step (needsExactPass; `rigid` is the soft rigid rows' softness),
+  /// `relaxedExactly` those of them in groups of rigid rows alone that
+  /// nothing else acts on, and `pinInLoop` the plain pins of the groups with
+  /// a loop.
   void order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid, const TaskRunner& tasks);
   /// Forgets the groups, for a step with no joint on an awake body.
   void clear() {
-    nodes_.clear();
+    blocks_.clear();
+    joints_.clear();
+    bodies_.clear();
     groupEnds_.clear();
     solvedGroups_.clear();
     orderedFrom_.clear();
@@ -76,23 +80,60 @@ class JointTreePass {
   /// speeds are taken out of. The bodies have not moved since this
   /// sub-step's `solve`, so its factors are reused: only the right-hand
   /// side is new.
-  void push(std::span<const JointRow> rows, std::span<SolverState> states, const TaskRunner& tasks);
+  void push(std::span<SolverState> states, const TaskRunner& tasks);
 
  private:
-  /// A body or a joint of a group. Joints have up to three rigid rows;
-  /// unused rows are identity rows with a zero right-hand side.
-  struct Node {
-    std::int32_t parent = -1;  ///< position in nodes_, -1 for a root
-    std::int32_t state = 0;    ///< a body's solver state
-    std::int32_t row = -1;     ///< a joint's JointRow
-    bool isJoint = false;
-    std::array<std::int32_t, 2> sides{-1, -1};  ///< a joint's bodies' nodes (A, B), -1: none
-    Eigen::Vector3d mass = Eigen::Vector3d::Zero();      ///< a body's m, m, I
-    Eigen::Matrix3d diagonal = Eigen::Matrix3d::Zero();  ///< H_ii, then D_i, then D_i^-1
-    Eigen::Matrix3d toParent = Eigen::Matrix3d::Zero();  ///< H_{i,parent}, then D_i^-1 H_{i,parent}
-    Eigen::Vector3d value = Eigen::Vector3d::Zero();     ///< right-hand side, then solution
-    std::array<Real*, 3> impulses{};  ///< a joint's rows' accumulated impulses; null: unused
-    std::array<Jacobian, 3> jacobian{};  ///< a joint's rows, kept for the push
+  /// A node of a group's elimination: a joint (its rigid rows, 1 to 3) or
+  /// a hub body (m, m, I). Bodies with one or two joints are eliminated
+  /// first, into their joints' blocks (their mass is diagonal, which makes
+  /// no fill-in while the joints stay a tree): a chain solves 2x2 blocks of
+  /// its pins instead of 3x3 blocks of pins and links. Bodies with three or
+  /// more joints (a ragdoll's torso) stay nodes, where eliminating them
+  /// first would couple all their joints.
+  struct Block {
+    Eigen::Matrix3d diagonal;  ///< H_ii, then D_i, then D_i^-1 (size x size)
+    Eigen::Matrix3d toParent;  ///< H_{i,parent}, then D_i^-1 H_{i,parent} (size x parentSize)
+    Eigen::Vector3d value;     ///< right-hand side, then solution (size)
+    std::int32_t parent = -1;  ///< position in blocks_, -1 for a root
+    std::int8_t size = 3;
+    std::int8_t parentSize = 0;  ///< 0 for a root
+  };
+  /// A joint's rows on one body, row by row (read and written element by
+  /// element: no vector load straddles two scalar stores).
+  using SideRows = std::array<std::array<double, 3>, 3>;
+  /// A joint node's rows, beside its block (unused for a hub).
+  struct JointNode {
+    std::int32_t row = -1;                       ///< its JointRow, -1: a hub body
+    std::array<std::int32_t, 2> states{0, 0};    ///< its JointRow's stateA and stateB
+    std::array<std::int32_t, 2> bodies{-1, -1};  ///< its bodies (A, B) in bodies_, -1: none
+    std::int8_t parentSide = -1;                 ///< the side whose body leads to the parent, -1: root
+    /// Its rows (size of them) on A's and B's (vx, vy, w); cut rows zero.
+    std::array<SideRows, 2> sideJacobian{};
+    std::array<Real*, 3> impulses{};   ///< its rows' accumulated impulses; null: unused
+    std::array<Real, 3> position{};    ///< its rows' errors at the blocks' geometry
+  };
+  /// A body of a group.
+  struct TreeBody {
+    std::int32_t state = 0;
+    Real invMass = 0;
+    Real invInertia = 0;
+    std::int32_t node = -1;         ///< its hub block, -1: eliminated into its joints
+    std::int32_t parentJoint = -1;  ///< the joint node that reached it
+    std::int8_t parentSide = 0;     ///< which side of that joint it is
+    Eigen::Vector3d change = Eigen::Vector3d::Zero();  ///< velocity change, summed from its joints
+  };
+  /// Where a group's blocks and bodies end.
+  struct GroupEnd {
+    std::int32_t nodes = 0;
+    std::int32_t bodies = 0;
+    bool otherJoints = false;  ///< a joint without rigid rows (a rope, a mouse) acts on a body
+  };
+  /// A group's nodes (blocks_ and joints_ from `begin`) and bodies.
+  struct GroupView {
+    std::int32_t begin = 0;
+    std::int32_t end = 0;
+    std::span<TreeBody> bodies;
+    bool otherJoints = false;
   };
   /// What the groups are built from, per row.
   struct RowShape {
@@ -106,7 +147,7 @@ class JointTreePass {
     Real invInertiaB = 0;
     bool operator==(const RowShape&) const = default;
   };
-  /// A node as the walk finds it (parent and sides by walk position).
+  /// A node as the walk finds it (parent by walk position).
   struct Visit {
     std::int32_t parent = -1;
     std::int32_t state = 0;
@@ -119,30 +160,32 @@ class JointTreePass {
   void buildGroups(std::span<const JointRow> rows, std::size_t stateCount);
   void findRowsInLoops(std::span<const JointRow> rows);
   void orderGroup(std::int32_t rootJoint, std::span<const JointRow> rows);
+  bool isHub(const Visit& visit) const;
   void storeReversed(std::span<const JointRow> rows);
-  Eigen::Vector3d bodyMass(std::span<const JointRow> rows, const Visit& body) const;
+  void storeJoint(std::span<const JointRow> rows, std::int32_t at);
+  void storeBody(std::span<const JointRow> rows, std::int32_t at);
+  GroupView groupAt(std::size_t g);
+  void markRelaxedExactly(const GroupView& group, std::span<JointRow> rows) const;
   /// Whether a group is held by the world, touches anything, or the soft
   /// rows alone would let its joints give way by kExactTreeStretch or more.
-  static bool needsExactPass(std::span<const Node> group, std::span<const JointRow> rows, Real compliance);
-  /// Runs pass(group) for each solved group's nodes, a span of nodes_
-  /// (whose parent and side indices stay positions in nodes_), side by side.
+  bool needsExactPass(const GroupView& group, std::span<const JointRow> rows, Real compliance) const;
+  /// Runs pass(group) for each solved group, side by side.
   template <class Pass>
   void forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass);
-  void assemble(std::span<Node> group, std::span<JointRow> rows, std::span<const SolverState> states,
+  void assemble(const GroupView& group, std::span<JointRow> rows, std::span<const SolverState> states,
                 double errorRate);
-  void assembleJoint(Node& node, JointRow& row, std::span<const SolverState> states,
-                     double errorRate);
-  bool assembleSpeeds(std::span<Node> group, std::span<const JointRow> rows,
-                      std::span<const SolverState> states);
+  template <int N, int P>
+  void assembleJoint(std::int32_t node, JointRow& row, std::span<const SolverState> states, double errorRate);
+  template <int N, int P>
+  void coupleSide(std::int32_t node, int side);
+  bool assembleSpeeds(const GroupView& group, std::span<const SolverState> states, double errorRate);
   void solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
                    const TaskRunner& tasks);
-  /// The right-hand side assemble writes, on factors already made at this
-  /// geometry (the last relax's).
-  void assembleCorrectedSpeeds(std::span<Node> group, std::span<JointRow> rows,
-                               std::span<const SolverState> states, double errorRate);
-  void factor(std::span<Node> group);
-  void substitute(std::span<Node> group);
-  void applyVelocities(std::span<const Node> group, std::span<SolverState> states, bool keepImpulses);
+  void factorAndReduce(const GroupView& group);
+  void reduce(const GroupView& group);
+  void backSubstituteAndApply(const GroupView& group, std::span<SolverState> states, bool keepImpulses);
+  template <int N>
+  void applyImpulses(const JointNode& joint, const Eigen::Vector3d& negated, bool keepImpulses);
 
   std::vector<std::int32_t> bodyGroup_;     ///< union-find over solver states
   std::vector<std::uint8_t> groupHasLoop_;  ///< by union-find root
@@ -153,9 +196,14 @@ class JointTreePass {
   std::vector<std::int32_t> cursor_;
   std::vector<std::int32_t> loopBodies_;
   std::vector<std::uint8_t> rowInLoop_;  ///< by row: its group has a loop
+  std::vector<std::uint8_t> otherJointOn_;  ///< by state: a joint without rigid rows acts on it
   std::vector<Visit> walk_;
-  std::vector<Node> nodes_;  ///< every group, each leaves first, root last
-  std::vector<std::int32_t> groupEnds_;  ///< where each group's nodes end in nodes_
+  std::vector<std::int32_t> nodeAt_;  ///< by walk position: its node, -1 for a body eliminated first
+  std::vector<std::int32_t> bodyAt_;  ///< by walk position: its place in bodies_
+  std::vector<Block> blocks_;     ///< every group's nodes, each leaves first, root last
+  std::vector<JointNode> joints_;  ///< beside blocks_
+  std::vector<TreeBody> bodies_;  ///< every group's bodies
+  std::vector<GroupEnd> groupEnds_;  ///< where each group ends in blocks_ and bodies_
   std::vector<std::int32_t> solvedGroups_;  ///< the groups that need the pass this step
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
   int jointCount_ = 0;
