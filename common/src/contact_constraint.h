@@ -39,10 +39,16 @@ struct ConstraintRef {
   bool hangs : 1 = false;
   /// A point touches (within kStartTouch, support_pass.h) and none carried
   /// a load last step: it may be new, and start from an estimated load
-  /// (SupportPass::estimateStartLoads). This flag and the last are bits of
-  /// one byte, which keeps the masses within the ref's first 32 bytes, all
-  /// the wide fill reads of it (kRefFloats).
+  /// (SupportPass::estimateStartLoads). This flag, the last and the next
+  /// are bits of one byte, which keeps the masses within the ref's first 32
+  /// bytes, all the wide fill reads of it (kRefFloats).
   bool touchesUnloaded : 1 = false;
+  /// Quiet: it carried no impulse last step (normal, support, friction or
+  /// rolling) and every point is apart. Most of a tumbling crowd's
+  /// speculative contacts stay so through a step; each colour's quiet
+  /// contacts are bundled together (colourContacts), so that passes over
+  /// bundles that would change nothing skip their bodies' write-back.
+  bool quiet : 1 = false;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.
   Real invMassA = 0;
@@ -113,6 +119,9 @@ struct WideConstraint {
   std::int32_t stateB[F::kLanes];
   /// The contact each lane came from (-1: padding).
   std::int32_t source[F::kLanes];
+  /// Every lane was quiet when prepared (ConstraintRef::quiet): its passes
+  /// first check whether they would change anything (staysQuiet).
+  bool quiet = false;
   F normalX, normalY;
   F invMassA, invInertiaA, invMassB, invInertiaB;
   F biasRate, massScale, impulseScale;
@@ -198,9 +207,10 @@ struct WideContactSet {
   /// static dummy 0 always); pushQueue is markNearIntrusions' scratch.
   std::vector<std::uint8_t> pushZone;
   std::vector<std::int32_t> pushQueue;
-  /// Each ref's colour, the refs sorted by colour, and where each colour
-  /// starts in that order (colourContacts).
-  std::vector<std::int32_t> colorOf;
+  /// Each ref's key (its colour, its quiet ones after the others), the refs
+  /// sorted by it, and where each colour starts in that order
+  /// (colourContacts).
+  std::vector<std::int32_t> colorKey;
   std::vector<std::int32_t> order;
   ColorStarts colorStart{};
   /// Per entry of WorldData::touchingUnsorted, its ConstraintRef.

@@ -1,6 +1,7 @@
 #include "contact_constraints.h"
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 #include "contact_solver_wide.h"
@@ -41,6 +42,15 @@ bool touches(const Manifold& manifold) {
   return false;
 }
 
+// ConstraintRef::quiet, given the manifold's last load (normal and support).
+bool quiet(const Manifold& manifold, Real load) {
+  if (load != 0 || manifold.rollingImpulse != 0) return false;
+  for (int j = 0; j < manifold.pointCount; ++j) {
+    if (manifold.points[j].tangentImpulse != 0 || manifold.points[j].separation <= 0) return false;
+  }
+  return manifold.pointCount > 0;
+}
+
 // Everything the step reads of a contact outside its bundle lane, read
 // together while its lines are in.
 ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) {
@@ -52,7 +62,7 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
   const Real load = lastLoad(contact.manifold);
   return {index,     a.state,      b.state,   false,        jointed, facingOf(contact.manifold.normal, up),
-          false,     load == 0 && touches(contact.manifold),
+          false,     load == 0 && touches(contact.manifold), quiet(contact.manifold, load),
           a.invMass, a.invInertia, b.invMass, b.invInertia, load};
 }
 
@@ -97,11 +107,19 @@ void markTouchingStates(std::span<const ConstraintRef> refs, std::size_t stateCo
 }
 
 // Takes each ref a colour from the step's shared colouring and sorts the
-// refs by colour: what the wide build cuts into bundles.
+// refs by colour, each colour's quiet ones last: what the wide build cuts
+// into bundles. A colour's contacts share no body, so their order within
+// it changes no result; the overflow's, solved one by one, keep theirs.
 void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring, WideContactSet& set) {
-  set.colorOf.resize(refs.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) set.colorOf[i] = coloring.take(refs[i].stateA, refs[i].stateB);
-  set.colorStart = sortByColor(set.colorOf, set.order);
+  set.colorKey.resize(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const int color = coloring.take(refs[i].stateA, refs[i].stateB);
+    set.colorKey[i] = 2 * color + (color != GraphColoring::kOverflow && refs[i].quiet ? 1 : 0);
+  }
+  std::array<std::int32_t, 2 * (GraphColoring::kOverflow + 1)> keyStart{};
+  countingSort(set.colorKey, keyStart, set.order);
+  for (int color = 0; color <= GraphColoring::kOverflow; ++color) set.colorStart[std::size_t(color)] = keyStart[2 * std::size_t(color)];
+  set.colorStart[GraphColoring::kOverflow + 1] = std::int32_t(refs.size());
 }
 
 ContactSoftness contactSoftness(const WorldSettings& settings, Real h) {

@@ -642,6 +642,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   for (std::size_t lane = 0; lane < entries.size(); ++lane) laneRefs[lane] = &refs[std::size_t(entries[lane])];
   BundleInputs<F> inputs;
   gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, startImpulsesOf<F>(starts, entries), c, inputs);
+  c.quiet = std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; });
   const std::uint8_t intruding = simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c));
   packSupportLanes(set, c, b, entries);
   set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
@@ -730,9 +731,46 @@ void forEachListedBundleByColor(const ContactSolverContext& context, const WideC
   }
 }
 
+// Whether a bundle holds no impulse at all: its warm start and friction
+// would apply nothing.
+template <class F>
+bool holdsNoImpulse(const WideConstraint<F>& c) {
+  const F zero = simd::broadcast<F>(0);
+  F held = simd::notEqual(c.rollingImpulse, zero);
+  for (const WidePoint<F>& p : c.points) {
+    held = simd::either(held, simd::either(simd::notEqual(p.normalImpulse, zero), simd::notEqual(p.tangentImpulse, zero)));
+    held = simd::either(held, simd::notEqual(p.supportImpulse, zero));
+  }
+  return !simd::any(held);
+}
+
+// Whether solving a quiet bundle (WideConstraint::quiet) would change
+// nothing: it holds no impulse, and each point is apart and closing no
+// faster than its gap closes in the sub-step, so the solve's own rule
+// (solveNormal's, for a speculative point) gives it no impulse, and with
+// none its friction and rolling have no room either. Then its bodies are
+// not written back. (Exactly so but for the sign of a velocity that is
+// zero: the skipped solve would add a zero impulse to it.)
+template <class F>
+bool staysQuiet(const WideConstraint<F>& c, const WideBody<F>& a, const WideBody<F>& b, F dpx, F dpy,
+                const ContactSolverContext& context) {
+  if (!holdsNoImpulse(c)) return false;
+  const F zero = simd::broadcast<F>(0);
+  F acts = zero;
+  for (const WidePoint<F>& p : c.points) {
+    const F separation = currentSeparation(a, b, p, dpx, dpy, c);
+    const F closeGap = separation * simd::broadcast<F>(context.inverseSubStep);
+    const F closesFaster = simd::less(normalVelocity(a, b, c, p) + closeGap, zero);
+    const F present = simd::greater(p.normalMass, zero);
+    acts = simd::either(acts, simd::both(present, simd::either(simd::atLeast(zero, separation), closesFaster)));
+  }
+  return !simd::any(acts);
+}
+
 template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
   forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
+    if (c.quiet && holdsNoImpulse(c)) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F tx = c.normalY;
@@ -759,6 +797,7 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
+    if (c.quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
     F totalNormalImpulse = simd::broadcast<F>(0);
     for (int k = 0; k < 2; ++k) {
       WidePoint<F>& p = c.points[context.reversePointOrder ? 1 - k : k];
@@ -791,8 +830,18 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
-    for (WidePoint<F>& p : c.points) {
-      F intrusion = currentSeparation(a, b, p, dpx, dpy, c) + p.loadOverlap;
+    F intrusions[2];
+    F pushing = simd::broadcast<F>(0);
+    for (int j = 0; j < 2; ++j) {
+      intrusions[j] = currentSeparation(a, b, c.points[j], dpx, dpy, c) + c.points[j].loadOverlap;
+      pushing = simd::either(pushing, simd::both(pushes, simd::less(intrusions[j], simd::broadcast<F>(0))));
+    }
+    // No pushed lane intrudes (in a tumbling crowd, most quiet bundles):
+    // every impulse below would be zero, and its bodies are not written back.
+    if (!simd::any(pushing)) return;
+    for (int j = 0; j < 2; ++j) {
+      WidePoint<F>& p = c.points[j];
+      const F intrusion = intrusions[j];
       F bias = simd::max(c.biasRate * intrusion, maxPush);
       F vn = normalVelocity(a, b, c, p);
       F impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::broadcast<F>(0));
