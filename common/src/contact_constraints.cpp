@@ -118,7 +118,7 @@ void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring
   }
   std::array<std::int32_t, 2 * (GraphColoring::kOverflow + 1)> keyStart{};
   countingSort(set.colorKey, keyStart, set.order);
-  for (int color = 0; color <= GraphColoring::kOverflow; ++color) set.colorStart[std::size_t(color)] = keyStart[2 * std::size_t(color)];
+  for (std::size_t color = 0; color <= GraphColoring::kOverflow; ++color) set.colorStart[color] = keyStart[2 * color];
   set.colorStart[GraphColoring::kOverflow + 1] = std::int32_t(refs.size());
 }
 

@@ -738,7 +738,8 @@ bool holdsNoImpulse(const WideConstraint<F>& c) {
   const F zero = simd::broadcast<F>(0);
   F held = simd::notEqual(c.rollingImpulse, zero);
   for (const WidePoint<F>& p : c.points) {
-    held = simd::either(held, simd::either(simd::notEqual(p.normalImpulse, zero), simd::notEqual(p.tangentImpulse, zero)));
+    held = simd::either(held, simd::notEqual(p.normalImpulse, zero));
+    held = simd::either(held, simd::notEqual(p.tangentImpulse, zero));
     held = simd::either(held, simd::notEqual(p.supportImpulse, zero));
   }
   return !simd::any(held);
@@ -762,7 +763,8 @@ bool staysQuiet(const WideConstraint<F>& c, const WideBody<F>& a, const WideBody
     const F closeGap = separation * simd::broadcast<F>(context.inverseSubStep);
     const F closesFaster = simd::less(normalVelocity(a, b, c, p) + closeGap, zero);
     const F present = simd::greater(p.normalMass, zero);
-    acts = simd::either(acts, simd::both(present, simd::either(simd::atLeast(zero, separation), closesFaster)));
+    const F touches = simd::atLeast(zero, separation);
+    acts = simd::either(acts, simd::both(present, simd::either(touches, closesFaster)));
   }
   return !simd::any(acts);
 }
@@ -831,22 +833,20 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
     F intrusions[2];
-    F pushing = simd::broadcast<F>(0);
+    F pushed[2];  // the lanes whose point j is pushed
     for (int j = 0; j < 2; ++j) {
       intrusions[j] = currentSeparation(a, b, c.points[j], dpx, dpy, c) + c.points[j].loadOverlap;
-      pushing = simd::either(pushing, simd::both(pushes, simd::less(intrusions[j], simd::broadcast<F>(0))));
+      pushed[j] = simd::both(pushes, simd::less(intrusions[j], simd::broadcast<F>(0)));
     }
     // No pushed lane intrudes (in a tumbling crowd, most quiet bundles):
     // every impulse below would be zero, and its bodies are not written back.
-    if (!simd::any(pushing)) return;
+    if (!simd::any(simd::either(pushed[0], pushed[1]))) return;
     for (int j = 0; j < 2; ++j) {
       WidePoint<F>& p = c.points[j];
-      const F intrusion = intrusions[j];
-      F bias = simd::max(c.biasRate * intrusion, maxPush);
+      F bias = simd::max(c.biasRate * intrusions[j], maxPush);
       F vn = normalVelocity(a, b, c, p);
       F impulse = simd::max(-(p.normalMass * c.massScale * (vn + bias)), simd::broadcast<F>(0));
-      impulse = simd::select(simd::both(pushes, simd::less(intrusion, simd::broadcast<F>(0))), impulse,
-                             simd::broadcast<F>(0));
+      impulse = simd::select(pushed[j], impulse, simd::broadcast<F>(0));
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
     scatter<F>(context.states, c.stateA, a);
