@@ -4,8 +4,11 @@
 
 namespace bench {
 
-void StageTimes::add(const std::vector<double>& ms) {
-  for (std::size_t i = 0; i < sums_.size() && i < ms.size(); ++i) sums_[i] += ms[i];
+void StageTimes::add(std::initializer_list<double> ms) {
+  std::size_t i = 0;
+  for (const double stage : ms) {
+    if (i < sums_.size()) sums_[i++] += stage;
+  }
   ++steps_;
 }
 

@@ -147,8 +147,7 @@ bool ContactConstraints::prepare(const WorldData& world, const SolveStep& step, 
   kernels_ = &wideContactKernels(world.settings.simdWidth);
   context_ = {{}, {}, 1 / step.h, world.settings.maxContactPushSpeed, world.settings.restitutionThreshold};
   // The support pass's plan writes only the refs' flags; the colours read
-  // only their states: the two go side by side, given a
-  // range of refs.
+  // only their states: the two go side by side, given a range of refs.
   world.tasks.bothAtOnce(std::int32_t(refs_.size()), kRefsPerRange,
                          [&] { support_.order(world, refs_, stateCount, softness, step.h); },
                          [&] { colourContacts(refs_, coloring, wide_); });

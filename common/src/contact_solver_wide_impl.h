@@ -416,13 +416,18 @@ void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& wo
   gatherManifolds(part, refFlags(refs), startImpulse, w, in);
 }
 
-// The lanes' start impulses (SupportPass::startImpulses), read only in a
-// step that starts some contact.
+// A ref's start impulse (SupportPass::startImpulses: empty in a step that
+// starts no contact).
+Real startImpulseOf(std::span<const Real> starts, std::int32_t entry) {
+  return starts.empty() ? Real(0) : starts[std::size_t(entry)];
+}
+
+// The lanes' start impulses, read only in a step that starts some contact.
 template <class F>
 F startImpulsesOf(std::span<const Real> starts, std::span<const std::int32_t> entries) {
   if (starts.empty()) return simd::broadcast<F>(0);
   alignas(32) float lanes[F::kLanes] = {};
-  for (std::size_t lane = 0; lane < entries.size(); ++lane) lanes[lane] = starts[std::size_t(entries[lane])];
+  for (std::size_t lane = 0; lane < entries.size(); ++lane) lanes[lane] = startImpulseOf(starts, entries[lane]);
   return simd::load<F>(lanes);
 }
 
@@ -662,10 +667,12 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   set.laneSupportRecord.resize(std::size_t(bundleCount) * F::kLanes);
   set.bundleIntrusion.resize(std::size_t(bundleCount));
   set.bundleMayBounce.resize(std::size_t(bundleCount));
+  const std::span<const Real> starts = support.startImpulses();
   world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
     visitFetchingAhead(
         begin, end, [&](std::int32_t b) { prefetchBundleContacts<F>(world, refs, set, b); },
-        [&](std::int32_t b) { set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, support.startImpulses(), set, b);
+        [&](std::int32_t b) {
+          set.bundleIntrusion[std::size_t(b)] = fillBundle<F>(world, refs, softness, starts, set, b);
         });
   });
 
@@ -679,8 +686,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   for (std::int32_t k = start[GraphColoring::kOverflow]; k < start[GraphColoring::kOverflow + 1]; ++k) {
     const ConstraintRef& ref = refs[std::size_t(set.order[k])];
     ContactConstraint& constraint = set.overflow.emplace_back();
-    const std::span<const Real> starts = support.startImpulses();
-    prepareContact(world, ref, softness, starts.empty() ? Real(0) : starts[std::size_t(set.order[k])], constraint);
+    prepareContact(world, ref, softness, startImpulseOf(starts, set.order[k]), constraint);
     const SupportPlace place = set.supportPlaceOf[std::size_t(set.order[k])];
     set.overflowSupportRecord.push_back(supportRecordOf<F>(place));
     if (place.bundle >= 0) packSupportLane(supportLaneOf<F>(set, place), constraint, place.upperIsB);

@@ -302,7 +302,8 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<const Con
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const ConstraintRef& ref = refs[i];
     if (ref.jointed) continue;
-    const Real upward = world.contacts[ref.contact].manifold.normal.dot(up);
+    const Manifold& manifold = world.contacts[ref.contact].manifold;
+    const Real upward = manifold.normal.dot(up);
     const bool upperIsB = upward > 0;
     const std::int32_t upper = upperIsB ? ref.stateB : ref.stateA;
     const std::int32_t lower = upperIsB ? ref.stateA : ref.stateB;
@@ -310,7 +311,6 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<const Con
     const std::int32_t upperLevel = level_[std::size_t(upper)];
     if (upperLevel == kUnreached || level_[std::size_t(lower)] == kUnreached || upperLevel <= level_[std::size_t(lower)])
       continue;
-    const Manifold& manifold = world.contacts[ref.contact].manifold;
     const std::int32_t touching = pointsAtRest(world, ref, manifold);
     if (touching == 0) continue;
     leanings_.push_back({std::int32_t(i), upper, lower, std::abs(upward), touching});

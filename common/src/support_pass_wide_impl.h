@@ -244,12 +244,13 @@ SupportLaneRecord& supportLaneOf(WideContactSet& set, const SupportPlace& place)
 template <class F>
 void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std::int32_t b,
                       std::span<const std::int32_t> entries) {
-  SupportLaneRecord discarded;  // what lanes that hold nothing up write
+  // What lanes that hold nothing up write (left uninitialised: never read).
+  alignas(SupportLaneRecord) float discarded[kSupportLaneFloats];
   void* records[F::kLanes];
   std::uint8_t holds = 0;
   std::uint8_t upperIsB = 0;
   for (int lane = 0; lane < F::kLanes; ++lane) {
-    records[lane] = &discarded;
+    records[lane] = discarded;
     if (std::size_t(lane) >= entries.size()) continue;
     const SupportPlace place = set.supportPlaceOf[std::size_t(entries[std::size_t(lane)])];
     set.laneSupportRecord[std::size_t(b) * F::kLanes + std::size_t(lane)] = supportRecordOf<F>(place);
