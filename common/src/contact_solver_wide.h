@@ -52,6 +52,11 @@ struct WideContactKernels {
                              std::span<JointRow> rows);
   void (*solveRevolutes)(std::span<SolverState> states, std::span<RevoluteBlock> blocks,
                          std::span<JointRow> rows, const JointPass& pass);
+  /// Moves each of `states` by its velocity over a sub-step of `h`
+  /// (integrateRotation, math.h, and the delta position's step), the same
+  /// bit for bit; returns how many from the first it did (whole bundles),
+  /// leaving the rest to the caller.
+  std::size_t (*integratePositions)(std::span<SolverState> states, float h);
 };
 
 /// The bundle list of width F in a set (defined by the file of that width).

@@ -24,6 +24,8 @@ inline F4 operator-(F4 a, F4 b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline F4 operator*(F4 a, F4 b) { return {_mm_mul_ps(a.v, b.v)}; }
 inline F4 operator/(F4 a, F4 b) { return {_mm_div_ps(a.v, b.v)}; }
 inline F4 operator-(F4 a) { return {_mm_sub_ps(_mm_setzero_ps(), a.v)}; }
+/// The correctly rounded square root, as std::sqrt's of each lane.
+inline F4 sqrt(F4 a) { return {_mm_sqrt_ps(a.v)}; }
 inline F4& operator+=(F4& a, F4 b) { return a = a + b; }
 inline F4& operator-=(F4& a, F4 b) { return a = a - b; }
 /// |a|: the sign bit cleared.

@@ -37,6 +37,7 @@ inline F8 operator-(F8 a, F8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline F8 operator*(F8 a, F8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
 inline F8 operator/(F8 a, F8 b) { return {_mm256_div_ps(a.v, b.v)}; }
 inline F8 operator-(F8 a) { return {_mm256_sub_ps(_mm256_setzero_ps(), a.v)}; }
+inline F8 sqrt(F8 a) { return {_mm256_sqrt_ps(a.v)}; }
 inline F8& operator+=(F8& a, F8 b) { return a = a + b; }
 inline F8& operator-=(F8& a, F8 b) { return a = a - b; }
 inline F8 abs(F8 a) { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }

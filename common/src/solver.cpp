@@ -21,6 +21,7 @@
 #include <span>
 
 #include "constraint_kind.h"
+#include "contact_solver_wide.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -111,8 +112,15 @@ void integratePosition(SolverState& state, Real h) {
   state.deltaPosition += h * state.linearVelocity;
 }
 
+// Whole bundles of states side by side (WideContactKernels::integratePositions),
+// the few left over one at a time.
 void integratePositions(WorldData& world, Real h) {
-  forEachState(world, world.solverStates.size(), [&](std::size_t k) { integratePosition(world.solverStates[k], h); });
+  const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
+  const std::size_t count = world.solverStates.size();
+  world.tasks.forRanges(std::int32_t(count) - 1, kBodiesPerRange, [&](std::int32_t begin, std::int32_t end) {
+    const std::span<SolverState> range(world.solverStates.data() + begin + 1, std::size_t(end - begin));
+    for (std::size_t k = kernels.integratePositions(range, h); k < range.size(); ++k) integratePosition(range[k], h);
+  });
 }
 
 // A body being pushed out of an overlap moves without velocity; it must not
