@@ -110,6 +110,36 @@ ProxyMotion expectedMotion(const Body& body, Real dt, bool touches) {
 // body costs its shapes' boxes, tens of nanoseconds.
 constexpr std::int32_t kBodiesPerReachRange = 256;
 
+// How far, relative to the coordinates' size, two float computations of a
+// shape's box may lie apart: a few roundings each (about 1e-7), with room.
+constexpr Real kBoxRounding = 1e-5f;
+
+// Whether shape s's tight box is sure to lie in its fat box without being
+// computed: its body, not stretched along a motion, has moved and turned
+// since the box's anchor (ShapeBoxAnchor) by less than the anchored box's
+// room in the fat box. A point of the body moves by at most the centre's
+// move plus |q - q0| (the rotation's change, bounded by |dc| + |ds|) times
+// its distance from the centre, at most the body's extent; the float boxes
+// both ways may be a few roundings off the exact ones, hence the allowance.
+bool staysInFatBox(const WorldData& world, std::int32_t s, const Body& body, const ProxyMotion& motion) {
+  if (!motion.displacement.isZero() || motion.turnReach != 0) return false;
+  const ShapeBoxAnchor& anchor = world.shapeBoxAnchors[std::size_t(s)];
+  if (anchor.generation != world.shapes[s].generation) return false;
+  const Transform& now = body.transform;
+  const Real turn = std::abs(now.q.c - anchor.rotation.c) + std::abs(now.q.s - anchor.rotation.s);
+  const Real moved = (now.p - anchor.position).cwiseAbs().maxCoeff() + turn * body.extent;
+  const Real rounding = kBoxRounding * (now.p.cwiseAbs().maxCoeff() + body.extent) + kBoxRounding;
+  return world.broadPhase.fatAABBOfUser(s).contains(anchor.tight.expanded(moved + rounding));
+}
+
+// The tight box of shape s, anchored for staysInFatBox; grows its fat box
+// if it left it. Returns whether it did.
+bool growBoxIfEscaped(WorldData& world, std::int32_t s, const Body& body, const ProxyMotion& motion) {
+  const AABB tight = shapeAABB(world, s);
+  world.shapeBoxAnchors[std::size_t(s)] = {tight, body.transform.p, body.transform.q, world.shapes[s].generation};
+  return world.broadPhase.growLeaf(world.shapes[s].proxyKey, tight, motion);
+}
+
 // Per awake body (in awakeBodies' order), whether it moved fast for
 // continuous collision, the motion its boxes are stretched along and whether
 // a shape's box no longer held where it is heading; such a shape's box grows
@@ -120,6 +150,7 @@ void growEscapingBoxes(WorldData& world, Real dt) {
   world.awakeReach.resize(world.awakeBodies.size());
   world.awakeBodyFast.resize(world.awakeBodies.size());
   world.shapeGrown.resize(world.shapes.size());
+  world.shapeBoxAnchors.resize(world.shapes.size());
   const bool continuous = world.settings.enableContinuous;
   world.tasks.forRanges(std::int32_t(world.awakeBodies.size()), kBodiesPerReachRange,
                         [&](std::int32_t begin, std::int32_t end) {
@@ -133,8 +164,8 @@ void growEscapingBoxes(WorldData& world, Real dt) {
                             reach.motion = expectedMotion(body, dt, world.contactConstraints.touches(body.solverIndex));
                             reach.escapes = false;
                             world.forEachShape(slot, [&](std::int32_t s) {
-                              const bool grown =
-                                  world.broadPhase.growLeaf(world.shapes[s].proxyKey, shapeAABB(world, s), reach.motion);
+                              const bool grown = !staysInFatBox(world, s, body, reach.motion) &&
+                                                 growBoxIfEscaped(world, s, body, reach.motion);
                               world.shapeGrown[std::size_t(s)] = grown ? 1 : 0;
                               reach.escapes = reach.escapes || grown;
                             });

@@ -5,6 +5,7 @@
 // contact_constraint.h, solver_data.h).
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,6 +81,19 @@ struct CollideTally {
   std::int32_t firstTouching = 0;
 };
 
+/// A shape's tight box as last computed, its body's pose then and the
+/// shape's generation (a slot used again holds another shape): until the
+/// body has moved or turned far enough for the box to leave its fat box,
+/// the box need not be computed again (a settled pyramid's boxes never
+/// are). A box of NaN (a slot never anchored) proves nothing.
+struct ShapeBoxAnchor {
+  AABB tight{Vec2::Constant(std::numeric_limits<Real>::quiet_NaN()),
+             Vec2::Constant(std::numeric_limits<Real>::quiet_NaN())};
+  Vec2 position = Vec2::Zero();
+  Rot rotation;
+  std::uint32_t generation = 0;
+};
+
 struct WorldData {
   WorldSettings settings;
   /// World::origin: every float position here is relative to it.
@@ -153,6 +167,9 @@ struct WorldData {
   /// left its fat box (world.cpp, solveAndMoveProxies).
   std::vector<BodyReach> awakeReach;
   std::vector<std::uint8_t> shapeGrown;  ///< per shape slot, this step (growEscapingBoxes)
+  /// Per shape slot, its tight box where growEscapingBoxes last computed it
+  /// (world.cpp, ShapeBoxAnchor).
+  std::vector<ShapeBoxAnchor> shapeBoxAnchors;
   /// The bodies continuous collision looks at (the fast ones, then the slow
   /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;

@@ -112,6 +112,8 @@ class BroadPhase {
     return userBoxes_[std::size_t(userValueA)].overlaps(userBoxes_[std::size_t(userValueB)]);
   }
   const AABB& fatAABB(std::int32_t proxyKey) const;
+  /// The fat AABB of a user value's live proxy, from the same copy.
+  const AABB& fatAABBOfUser(std::int32_t userValue) const { return userBoxes_[std::size_t(userValue)]; }
 
   /// Calls visit(userValue) for every proxy whose fat AABB overlaps box;
   /// visit returns false to stop early.
