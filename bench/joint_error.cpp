@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spawn_schedule.h"
+
 namespace bench {
 
 Vec2d worldPoint(const Pose& pose, const Vec2d& local) {
@@ -10,10 +12,14 @@ Vec2d worldPoint(const Pose& pose, const Vec2d& local) {
   return {pose.position.x + c * local.x - s * local.y, pose.position.y + s * local.x + c * local.y};
 }
 
-Vec2d localPoint(const BodyDesc& body, const Vec2d& world) {
-  const double c = std::cos(body.angle), s = std::sin(body.angle);
-  const double dx = world.x - body.position.x, dy = world.y - body.position.y;
+Vec2d localPoint(const Pose& pose, const Vec2d& world) {
+  const double c = std::cos(pose.angle), s = std::sin(pose.angle);
+  const double dx = world.x - pose.position.x, dy = world.y - pose.position.y;
   return {c * dx + s * dy, -s * dx + c * dy};
+}
+
+Vec2d localPoint(const BodyDesc& body, const Vec2d& world) {
+  return localPoint(describedPose(body), world);
 }
 
 JointProbe::JointProbe(const SceneDescription& scene) {

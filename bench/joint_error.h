@@ -13,6 +13,8 @@ namespace bench {
 
 /// `local` (in the body's frame, about its centroid) at the pose.
 Vec2d worldPoint(const Pose& pose, const Vec2d& local);
+/// The world point `world` in the frame of a body at `pose`.
+Vec2d localPoint(const Pose& pose, const Vec2d& world);
 /// The world point `world` in the frame of `body` as described.
 Vec2d localPoint(const BodyDesc& body, const Vec2d& world);
 

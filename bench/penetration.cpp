@@ -6,45 +6,11 @@
 #include <limits>
 #include <unordered_map>
 
+#include "placed_polygon.h"
+
 namespace bench {
 
 namespace {
-
-struct Placed {
-  const ShapeDesc* shape = nullptr;
-  Vec2d centre;
-  std::vector<Vec2d> vertices;  // world, anticlockwise
-};
-
-Placed place(const BodyDesc& body, const Pose& pose) {
-  Placed placed{&body.shape, pose.position, {}};
-  double c = std::cos(pose.angle), s = std::sin(pose.angle);
-  for (const Vec2d& v : body.shape.vertices) {
-    placed.vertices.push_back({pose.position.x + c * v.x - s * v.y, pose.position.y + s * v.x + c * v.y});
-  }
-  return placed;
-}
-
-double dot(const Vec2d& a, const Vec2d& b) { return a.x * b.x + a.y * b.y; }
-Vec2d sub(const Vec2d& a, const Vec2d& b) { return {a.x - b.x, a.y - b.y}; }
-
-Vec2d edgeNormal(const std::vector<Vec2d>& v, std::size_t i) {
-  Vec2d e = sub(v[(i + 1) % v.size()], v[i]);
-  double len = std::hypot(e.x, e.y);
-  return {e.y / len, -e.x / len};
-}
-
-// Largest separation of b's vertices from a's edges (negative: overlap).
-double maxSeparation(const std::vector<Vec2d>& a, const std::vector<Vec2d>& b) {
-  double best = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    Vec2d n = edgeNormal(a, i);
-    double least = std::numeric_limits<double>::infinity();
-    for (const Vec2d& p : b) least = std::min(least, dot(n, sub(p, a[i])));
-    best = std::max(best, least);
-  }
-  return best;
-}
 
 double distanceToSegment(const Vec2d& p, const Vec2d& a, const Vec2d& b) {
   Vec2d ab = sub(b, a);
@@ -66,7 +32,7 @@ double circlePolygon(const Vec2d& centre, double radius, const std::vector<Vec2d
   return std::max(0.0, radius - distance);
 }
 
-double penetration(const Placed& a, const Placed& b) {
+double penetration(const PlacedShape& a, const PlacedShape& b) {
   bool circleA = a.shape->kind == ShapeKind::Circle, circleB = b.shape->kind == ShapeKind::Circle;
   if (circleA && circleB) {
     double d = std::hypot(a.centre.x - b.centre.x, a.centre.y - b.centre.y);
@@ -74,7 +40,8 @@ double penetration(const Placed& a, const Placed& b) {
   }
   if (circleA) return circlePolygon(a.centre, a.shape->radius, b.vertices);
   if (circleB) return circlePolygon(b.centre, b.shape->radius, a.vertices);
-  double separation = std::max(maxSeparation(a.vertices, b.vertices), maxSeparation(b.vertices, a.vertices));
+  double separation = std::max(deepestFace(a.vertices, b.vertices).separation,
+                               deepestFace(b.vertices, a.vertices).separation);
   return std::max(0.0, -separation);
 }
 
@@ -95,7 +62,7 @@ PenetrationProbe::PenetrationProbe(const SceneDescription& scene) : scene_(scene
 }
 
 double PenetrationProbe::maxPenetration(const EngineAdapter& engine) {
-  std::vector<Placed> placed(scene_.bodies.size());
+  std::vector<PlacedShape> placed(scene_.bodies.size());
   for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i) {
     placed[static_cast<std::size_t>(i)] = place(scene_.bodies[static_cast<std::size_t>(i)], engine.pose(i));
   }
