@@ -22,4 +22,17 @@ inline void fetchLines(const void* address, std::size_t bytes = 1) {
   }
 }
 
+/// The same for lines about to be written: fetched ready to be written
+/// (prefetchw), so the stores that follow need not wait for them.
+inline void fetchLinesForWrite(void* address, std::size_t bytes = 1) {
+  char* start = static_cast<char*>(address);
+  for (std::size_t offset = 0; offset < bytes; offset += 64) {
+#if defined(__x86_64__) || defined(__i386__)
+    asm volatile("prefetchw %0" : : "m"(start[offset]));
+#else
+    __builtin_prefetch(start + offset, 1);
+#endif
+  }
+}
+
 }  // namespace impulse
