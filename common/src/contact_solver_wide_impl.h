@@ -192,8 +192,11 @@ constexpr std::int32_t kBundlesPerFillRange = 16;
 // Bundles ahead of the one being filled or stored whose contacts are
 // fetched into the cache meanwhile: a colour's contacts lie scattered in
 // memory, and asking for the next bundles' lines early overlaps their
-// misses with the work on this one.
-constexpr std::int32_t kPrefetchBundles = 6;
+// misses with the work on this one. Since the fill also asks for each
+// bundle's own 25 lines, fewer bundles in flight wait less for room to miss
+// in (v3's many_pyramids: the fill's samples fell by about a quarter at 4
+// against 6; at 2 or 3 the store's rose).
+constexpr std::int32_t kPrefetchBundles = 4;
 
 // visit(b) for each bundle b of [begin, end), fetch(b) having been asked
 // kPrefetchBundles bundles before.
