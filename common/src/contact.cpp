@@ -415,8 +415,12 @@ constexpr std::size_t kQueriesPerChunk = 16;
 // passed over like a known one, so a jointed body that keeps moving out of
 // its box does not list its neighbours again every step.
 void searchNewPairs(WorldData& world) {
-  const BroadPhase::KnownPair known = [&](std::int32_t first, std::int32_t second) {
-    return world.contactByPair.contains(contactPairKey(first, second)) || !pairMayTouch(world, {first, second});
+  const BroadPhase::KnownPairs known = [&](std::span<ProxyPair> candidates) {
+    for (const ProxyPair& pair : candidates) world.contactByPair.prefetch(contactPairKey(pair.first, pair.second));
+    const auto unknown = std::remove_if(candidates.begin(), candidates.end(), [&](const ProxyPair& pair) {
+      return world.contactByPair.contains(contactPairKey(pair.first, pair.second)) || !pairMayTouch(world, pair);
+    });
+    return std::size_t(unknown - candidates.begin());
   };
   const std::span<const std::int32_t> queued = world.broadPhase.queuedProxies();
   const std::int32_t chunks = chunksFor(world, queued.size(), kPairChunksPerWorker, kQueriesPerChunk);
@@ -427,7 +431,7 @@ void searchNewPairs(WorldData& world) {
       found.clear();
       const std::size_t first = chunkStart(queued.size(), chunk, chunks);
       const std::size_t last = chunkStart(queued.size(), chunk + 1, chunks);
-      for (std::int32_t proxyKey : queued.subspan(first, last - first)) world.broadPhase.queryPairs(proxyKey, known, found);
+      world.broadPhase.queryPairs(queued.subspan(first, last - first), known, found);
     }
   });
   world.newPairs.clear();
