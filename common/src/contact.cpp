@@ -3,6 +3,7 @@
 // free list and are threaded through both bodies' edge lists.
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -282,7 +283,46 @@ std::uint8_t collideOutcome(const WorldData& world, Contact& contact, Real dt, s
 
 // Contacts ahead of the one being updated whose lines are fetched
 // meanwhile: the list runs through memory in slot order, but with gaps.
-constexpr std::int32_t kContactPrefetchDistance = 4;
+// Then, once a contact's own lines are in, what it names: its bodies and
+// shape slots three contacts ahead, and, once the slots are in, the shapes'
+// geometry two ahead. Each is otherwise a cache miss in a crowd: on v3's
+// smash and washer the stage took a quarter more time without them.
+constexpr std::int32_t kContactPrefetchDistance = 6;
+constexpr std::int32_t kBodyPrefetchDistance = 3;
+constexpr std::int32_t kGeometryPrefetchDistance = 2;
+
+// Every cache line the object lies on (a body's 168 bytes span three or
+// four, and the update reads from its first bytes to its last).
+template <class T>
+void fetchAllLines(const T& object) {
+  fetchLines(&object, sizeof(T) + reinterpret_cast<std::uintptr_t>(&object) % 64);
+}
+
+void fetchContactInputs(const WorldData& world, const Contact& contact) {
+  fetchAllLines(world.bodies[contact.edges.bodyA]);
+  fetchAllLines(world.bodies[contact.edges.bodyB]);
+  fetchLines(&world.shapes[contact.shapeA]);
+  fetchLines(&world.shapes[contact.shapeB]);
+}
+
+// A polygon's count and first vertices, its first normals and its radius
+// lie on three lines; the other types' geometry is 40 bytes at most.
+void fetchGeometry(ShapeRef shape) {
+  if (shape.type != ShapeType::Polygon) {
+    fetchLines(shape.geometry);
+    fetchLines(static_cast<const char*>(shape.geometry) + sizeof(ChainSegment) - 1);
+    return;
+  }
+  const auto& polygon = *static_cast<const Polygon*>(shape.geometry);
+  fetchLines(&polygon.count);
+  fetchLines(&polygon.normals);
+  fetchLines(&polygon.radius);
+}
+
+void fetchContactGeometry(const WorldData& world, const Contact& contact) {
+  fetchGeometry(world.shapes[contact.shapeA].ref());
+  fetchGeometry(world.shapes[contact.shapeB].ref());
+}
 
 void updateManifolds(WorldData& world, Real dt) {
   world.collideList.clear();
@@ -295,6 +335,12 @@ void updateManifolds(WorldData& world, Real dt) {
                             const auto k = std::size_t(i);
                             if (i + kContactPrefetchDistance < end) {
                               fetchLines(&world.contacts[world.collideList[k + kContactPrefetchDistance]], sizeof(Contact));
+                            }
+                            if (i + kBodyPrefetchDistance < end) {
+                              fetchContactInputs(world, world.contacts[world.collideList[k + kBodyPrefetchDistance]]);
+                            }
+                            if (i + kGeometryPrefetchDistance < end) {
+                              fetchContactGeometry(world, world.contacts[world.collideList[k + kGeometryPrefetchDistance]]);
                             }
                             world.collideOutcomes[k] = collideOutcome(world, world.contacts[world.collideList[k]], dt,
                                                                       world.collideKeys[k]);
