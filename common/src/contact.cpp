@@ -283,8 +283,8 @@ std::uint8_t collideOutcome(const WorldData& world, Contact& contact, Real dt, s
 
 // Contacts ahead of the one being updated whose lines are fetched
 // meanwhile: the list runs through memory in slot order, but with gaps.
-// Then, once a contact's own lines are in, what it names: its bodies and
-// shape slots three contacts ahead, and, once the slots are in, the shapes'
+// Then, once a contact's own lines are in, what it names: its bodies,
+// shape slots and the shapes' fat boxes three contacts ahead, and, once the slots are in, the shapes'
 // geometry two ahead. Each is otherwise a cache miss in a crowd: on v3's
 // smash and washer the stage took a quarter more time without them.
 constexpr std::int32_t kContactPrefetchDistance = 6;
@@ -303,6 +303,8 @@ void fetchContactInputs(const WorldData& world, const Contact& contact) {
   fetchAllLines(world.bodies[contact.edges.bodyB]);
   fetchLines(&world.shapes[contact.shapeA]);
   fetchLines(&world.shapes[contact.shapeB]);
+  world.broadPhase.fetchFatBox(contact.shapeA);
+  world.broadPhase.fetchFatBox(contact.shapeB);
 }
 
 // A polygon's count and first vertices, its first normals and its radius
