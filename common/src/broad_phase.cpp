@@ -54,13 +54,13 @@ bool pairLess(const ProxyPair& a, const ProxyPair& b) {
 }
 
 // Candidate pairs of one query, held back so that the caller is asked
-// which are known in runs after the tree walk rather than during it: the
-// lookups (mostly a cache miss each into the caller's set of contacts) then
-// do not wait on one another. A fixed array, so that known pairs never
-// grow (or allocate) the output list.
+// which are known a batch at a time after the tree walk rather than one by
+// one during it: the caller starts the batch's lookups (mostly a cache miss
+// each into its set of contacts) together. A fixed array, so that known
+// pairs never grow (or allocate) the output list.
 class PairBatch {
  public:
-  PairBatch(const BroadPhase::KnownPair& known, std::vector<ProxyPair>& pairs) : known_(known), pairs_(pairs) {}
+  PairBatch(const BroadPhase::KnownPairs& known, std::vector<ProxyPair>& pairs) : known_(known), pairs_(pairs) {}
   ~PairBatch() { flush(); }
   PairBatch(const PairBatch&) = delete;
   PairBatch& operator=(const PairBatch&) = delete;
@@ -71,29 +71,28 @@ class PairBatch {
   }
 
  private:
-  static constexpr int kCapacity = 32;
+  static constexpr std::size_t kCapacity = 32;
 
   void flush() {
-    for (int i = 0; i < count_; ++i) {
-      if (!known_ || !known_(held_[i].first, held_[i].second)) pairs_.push_back(held_[i]);
-    }
+    const std::size_t unknown = known_ ? known_(std::span(held_, count_)) : count_;
+    pairs_.insert(pairs_.end(), held_, held_ + unknown);
     count_ = 0;
   }
 
-  const BroadPhase::KnownPair& known_;
+  const BroadPhase::KnownPairs& known_;
   std::vector<ProxyPair>& pairs_;
   ProxyPair held_[kCapacity];
-  int count_ = 0;
+  std::size_t count_ = 0;
 };
 
 // Adds a pair of `userValue` with every leaf of `tree` overlapping `box`,
 // except the leaves `skip` names.
-template <class Skip>
-void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, Skip&& skip, PairBatch& batch) {
+template <class Skip, class Add>
+void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, Skip&& skip, Add&& add) {
   tree.query(box, [&](std::int32_t node) {
     if (skip(node)) return true;
     const std::int32_t other = tree.userValue(node);
-    batch.add({std::min(userValue, other), std::max(userValue, other)});
+    add(ProxyPair{std::min(userValue, other), std::max(userValue, other)});
     return true;
   });
 }
@@ -161,9 +160,9 @@ void BroadPhase::rebuildEnlarged() { trees_[treeIndex(ProxyKind::Movable)].rebui
 
 void BroadPhase::touchProxy(std::int32_t proxyKey) { moveBuffer_.push_back(proxyKey); }
 
-void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs, const KnownPair& known) {
+void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs, const KnownPairs& known) {
   pairs.clear();
-  for (std::int32_t proxyKey : queuedProxies()) queryPairs(proxyKey, known, pairs);
+  queryPairs(queuedProxies(), known, pairs);
   finishPairSearch(pairs);
 }
 
@@ -247,27 +246,33 @@ std::int32_t BroadPhase::leafUserValue(std::int32_t proxyKey) const {
   return tree.isLeafNode(nodeOf(proxyKey)) ? tree.userValue(nodeOf(proxyKey)) : -1;
 }
 
-void BroadPhase::queryPairs(std::int32_t proxyKey, const KnownPair& known, std::vector<ProxyPair>& pairs) const {
+template <class Add>
+void BroadPhase::forEachPairOf(std::int32_t proxyKey, Add&& add) const {
   const ProxyKind kind = kindOf(proxyKey);
   const std::int32_t node = nodeOf(proxyKey);
   const DynamicTree& own = trees_[treeIndex(kind)];
   const AABB& box = own.box(node);
   const std::int32_t userValue = own.userValue(node);
   const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
-  PairBatch batch(known, pairs);
   if (kind == ProxyKind::Movable) {
     // A queued static partner finds this pair itself, and so does a queued
     // movable one of a lower node.
     collectPairs(trees_[treeIndex(ProxyKind::Static)], box, userValue,
-                 [&](std::int32_t other) { return isQueued(ProxyKind::Static, other); }, batch);
+                 [&](std::int32_t other) { return isQueued(ProxyKind::Static, other); }, add);
     collectPairs(movable, box, userValue,
                  [&](std::int32_t other) { return other == node || (other < node && isQueued(ProxyKind::Movable, other)); },
-                 batch);
+                 add);
   } else {
     // A queued static proxy (touched or teleported) only looks for movable
     // partners: static-static pairs never collide.
-    collectPairs(movable, box, userValue, [](std::int32_t) { return false; }, batch);
+    collectPairs(movable, box, userValue, [](std::int32_t) { return false; }, add);
   }
+}
+
+void BroadPhase::queryPairs(std::span<const std::int32_t> proxyKeys, const KnownPairs& known,
+                            std::vector<ProxyPair>& pairs) const {
+  PairBatch batch(known, pairs);
+  for (std::int32_t proxyKey : proxyKeys) forEachPairOf(proxyKey, [&](const ProxyPair& pair) { batch.add(pair); });
 }
 
 }  // namespace impulse

@@ -3,6 +3,7 @@
 // free list and are threaded through both bodies' edge lists.
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -282,7 +283,48 @@ std::uint8_t collideOutcome(const WorldData& world, Contact& contact, Real dt, s
 
 // Contacts ahead of the one being updated whose lines are fetched
 // meanwhile: the list runs through memory in slot order, but with gaps.
-constexpr std::int32_t kContactPrefetchDistance = 4;
+// Then, once a contact's own lines are in, what it names: its bodies,
+// shape slots and the shapes' fat boxes three contacts ahead, and, once the slots are in, the shapes'
+// geometry two ahead. Each is otherwise a cache miss in a crowd: on v3's
+// smash and washer the stage took a quarter more time without them.
+constexpr std::int32_t kContactPrefetchDistance = 6;
+constexpr std::int32_t kBodyPrefetchDistance = 3;
+constexpr std::int32_t kGeometryPrefetchDistance = 2;
+
+// Every cache line the object lies on (a body's 168 bytes span three or
+// four, and the update reads from its first bytes to its last).
+template <class T>
+void fetchAllLines(const T& object) {
+  fetchLines(&object, sizeof(T) + reinterpret_cast<std::uintptr_t>(&object) % 64);
+}
+
+void fetchContactInputs(const WorldData& world, const Contact& contact) {
+  fetchAllLines(world.bodies[contact.edges.bodyA]);
+  fetchAllLines(world.bodies[contact.edges.bodyB]);
+  fetchLines(&world.shapes[contact.shapeA]);
+  fetchLines(&world.shapes[contact.shapeB]);
+  world.broadPhase.fetchFatBox(contact.shapeA);
+  world.broadPhase.fetchFatBox(contact.shapeB);
+}
+
+// A polygon's count and first vertices, its first normals and its radius
+// lie on three lines; the other types' geometry is 40 bytes at most.
+void fetchGeometry(ShapeRef shape) {
+  if (shape.type != ShapeType::Polygon) {
+    fetchLines(shape.geometry);
+    fetchLines(static_cast<const char*>(shape.geometry) + sizeof(ChainSegment) - 1);
+    return;
+  }
+  const auto& polygon = *static_cast<const Polygon*>(shape.geometry);
+  fetchLines(&polygon.count);
+  fetchLines(&polygon.normals);
+  fetchLines(&polygon.radius);
+}
+
+void fetchContactGeometry(const WorldData& world, const Contact& contact) {
+  fetchGeometry(world.shapes[contact.shapeA].ref());
+  fetchGeometry(world.shapes[contact.shapeB].ref());
+}
 
 void updateManifolds(WorldData& world, Real dt) {
   world.collideList.clear();
@@ -295,6 +337,12 @@ void updateManifolds(WorldData& world, Real dt) {
                             const auto k = std::size_t(i);
                             if (i + kContactPrefetchDistance < end) {
                               fetchLines(&world.contacts[world.collideList[k + kContactPrefetchDistance]], sizeof(Contact));
+                            }
+                            if (i + kBodyPrefetchDistance < end) {
+                              fetchContactInputs(world, world.contacts[world.collideList[k + kBodyPrefetchDistance]]);
+                            }
+                            if (i + kGeometryPrefetchDistance < end) {
+                              fetchContactGeometry(world, world.contacts[world.collideList[k + kGeometryPrefetchDistance]]);
                             }
                             world.collideOutcomes[k] = collideOutcome(world, world.contacts[world.collideList[k]], dt,
                                                                       world.collideKeys[k]);
@@ -415,8 +463,12 @@ constexpr std::size_t kQueriesPerChunk = 16;
 // passed over like a known one, so a jointed body that keeps moving out of
 // its box does not list its neighbours again every step.
 void searchNewPairs(WorldData& world) {
-  const BroadPhase::KnownPair known = [&](std::int32_t first, std::int32_t second) {
-    return world.contactByPair.contains(contactPairKey(first, second)) || !pairMayTouch(world, {first, second});
+  const BroadPhase::KnownPairs known = [&](std::span<ProxyPair> candidates) {
+    for (const ProxyPair& pair : candidates) world.contactByPair.prefetch(contactPairKey(pair.first, pair.second));
+    const auto unknown = std::remove_if(candidates.begin(), candidates.end(), [&](const ProxyPair& pair) {
+      return world.contactByPair.contains(contactPairKey(pair.first, pair.second)) || !pairMayTouch(world, pair);
+    });
+    return std::size_t(unknown - candidates.begin());
   };
   const std::span<const std::int32_t> queued = world.broadPhase.queuedProxies();
   const std::int32_t chunks = chunksFor(world, queued.size(), kPairChunksPerWorker, kQueriesPerChunk);
@@ -427,7 +479,7 @@ void searchNewPairs(WorldData& world) {
       found.clear();
       const std::size_t first = chunkStart(queued.size(), chunk, chunks);
       const std::size_t last = chunkStart(queued.size(), chunk + 1, chunks);
-      for (std::int32_t proxyKey : queued.subspan(first, last - first)) world.broadPhase.queryPairs(proxyKey, known, found);
+      world.broadPhase.queryPairs(queued.subspan(first, last - first), known, found);
     }
   });
   world.newPairs.clear();

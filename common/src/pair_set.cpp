@@ -4,6 +4,8 @@
 #include <bit>
 #include <utility>
 
+#include "prefetch.h"
+
 namespace impulse {
 
 namespace {
@@ -23,6 +25,10 @@ bool PairSet::contains(std::uint64_t key) const {
     if (slots_[slot] == key) return true;
     if (slots_[slot] == kEmpty) return false;
   }
+}
+
+void PairSet::prefetch(std::uint64_t key) const {
+  if (!slots_.empty()) fetchLines(&slots_[home(key)]);
 }
 
 bool PairSet::insert(std::uint64_t key) {

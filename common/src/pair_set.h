@@ -16,6 +16,8 @@ class PairSet {
   /// Whether the key is in the set. Safe from several threads at once while
   /// nothing inserts or erases.
   bool contains(std::uint64_t key) const;
+  /// Starts loading the slot where contains(key) begins its search.
+  void prefetch(std::uint64_t key) const;
   /// Adds the key; false when it was there already. Keys are never 0 (a
   /// pair's two shapes differ).
   bool insert(std::uint64_t key);

@@ -60,6 +60,7 @@ void loadState(WorldData& world, std::size_t k, Real h) {
   state.angularVelocity = body.angularVelocity;
   SolverIntegration& in = world.solverIntegration[k];
   in.body = slot;
+  in.extent = body.extent;
   in.linearAcceleration = body.invMass * body.force;
   if (body.isDynamic() && !body.ignoreGravity) in.linearAcceleration += body.gravityScale * world.settings.gravity;
   in.angularAcceleration = body.invInertia * body.torque;
@@ -124,10 +125,10 @@ void integratePositions(WorldData& world, Real h) {
 }
 
 // A body being pushed out of an overlap moves without velocity; it must not
-// fall asleep halfway out.
-void keepAwakeWhilePushed(Body& body, const SolverState& pseudo, const WorldSettings& settings) {
-  Real pushSpeed = std::max(pseudo.linearVelocity.norm(), body.extent * std::abs(pseudo.angularVelocity));
-  if (pushSpeed > settings.linearSleepTolerance) body.sleepTime = 0;
+// fall asleep halfway out. Only a pushed body is read (most are not).
+void keepAwakeWhilePushed(WorldData& world, const SolverIntegration& in, const SolverState& pseudo) {
+  Real pushSpeed = std::max(pseudo.linearVelocity.norm(), in.extent * std::abs(pseudo.angularVelocity));
+  if (pushSpeed > world.settings.linearSleepTolerance) world.bodies[in.body].sleepTime = 0;
 }
 
 // Split impulse for intrusions: the push pass runs on pseudo velocities that
@@ -149,7 +150,7 @@ void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* cons
   for (ConstraintKind* kind : kinds) kind->pushExact(sub);
   forEachState(world, count, [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
-    keepAwakeWhilePushed(world.bodies[world.solverIntegration[k].body], state, world.settings);
+    keepAwakeWhilePushed(world, world.solverIntegration[k], state);
     const ParkedVelocity& real = world.parkedVelocities[k];
     state.linearVelocity += real.linear;
     state.angularVelocity += real.angular;

@@ -33,6 +33,9 @@ struct SolverIntegration {
   Real linearDamping = 1;   ///< velocity factor per sub-step
   Real angularDamping = 1;
   std::int32_t body = kNullIndex;
+  /// The body's extent, so that the push pass's end need not read the body
+  /// to tell whether it was pushed (keepAwakeWhilePushed).
+  Real extent = 0;
 };
 
 /// A soft constraint's spring-damper terms for one sub-step length.

@@ -85,24 +85,28 @@ class BroadPhase {
   /// queued static proxy looks for movable partners only.
   void touchProxy(std::int32_t proxyKey);
 
-  /// Whether a pair of user values (smaller first) is already known to the
-  /// caller (has a contact).
-  using KnownPair = std::function<bool(std::int32_t first, std::int32_t second)>;
+  /// Drops from `candidates` (pairs of user values, smaller first) the ones
+  /// already known to the caller (that have a contact), keeping the rest at
+  /// the front in their order, and returns how many are left. Given a batch
+  /// at a time, so the caller's lookups (mostly a cache miss each) can be
+  /// started together.
+  using KnownPairs = std::function<std::size_t(std::span<ProxyPair> candidates)>;
 
   /// Finds the pairs whose fat AABBs overlap and involve a queued proxy, sorted
   /// and without duplicates, into `pairs` (cleared first), then empties the
   /// queue. Pairs `known` accepts are left out as they are found: in a moving
   /// pile most overlaps already have their contact, and sorting them was
   /// most of the work.
-  void findNewPairs(std::vector<ProxyPair>& pairs, const KnownPair& known = nullptr);
+  void findNewPairs(std::vector<ProxyPair>& pairs, const KnownPairs& known = nullptr);
 
   /// findNewPairs in three parts, for a search split among threads: the
-  /// queued proxies (each once); then, from any thread, queryPairs on each,
-  /// appending the pairs it finds to that thread's list; then
+  /// queued proxies (each once); then, from any thread, queryPairs on a
+  /// slice of them, appending the pairs it finds to that thread's list; then
   /// finishPairSearch on all the lists joined, which sorts them, drops
   /// duplicates and empties the queue.
   std::span<const std::int32_t> queuedProxies();
-  void queryPairs(std::int32_t proxyKey, const KnownPair& known, std::vector<ProxyPair>& pairs) const;
+  void queryPairs(std::span<const std::int32_t> proxyKeys, const KnownPairs& known,
+                  std::vector<ProxyPair>& pairs) const;
   void finishPairSearch(std::vector<ProxyPair>& pairs);
 
   /// Whether the fat AABBs of the live proxies of two user values overlap.
@@ -114,6 +118,8 @@ class BroadPhase {
   const AABB& fatAABB(std::int32_t proxyKey) const;
   /// The fat AABB of a user value's live proxy, from the same copy.
   const AABB& fatAABBOfUser(std::int32_t userValue) const { return userBoxes_[std::size_t(userValue)]; }
+  /// Starts loading what fatAABBsOverlap reads of the user value.
+  void fetchFatBox(std::int32_t userValue) const { __builtin_prefetch(&userBoxes_[std::size_t(userValue)]); }
 
   /// Calls visit(userValue) for every proxy whose fat AABB overlaps box;
   /// visit returns false to stop early.
@@ -172,6 +178,10 @@ class BroadPhase {
     const std::vector<std::uint8_t>& queued = queuedNode_[static_cast<int>(kind)];
     return std::size_t(node) < queued.size() && queued[std::size_t(node)] != 0;
   }
+
+  /// Calls add(pair) for each pair of the proxy that queryPairs lists.
+  template <class Add>
+  void forEachPairOf(std::int32_t proxyKey, Add&& add) const;
 
   /// Copies the proxy's fat AABB to userBoxes_.
   void recordUserBox(std::int32_t proxyKey);
