@@ -6,12 +6,6 @@
 namespace impulse::test {
 namespace {
 
-WorldSettings awakeSettings() {
-  WorldSettings settings;
-  settings.enableSleep = false;  // keep the stack in the step
-  return settings;
-}
-
 int manifoldUpdatesOver(World& world, int steps) {
   int updates = 0;
   for (int i = 0; i < steps; ++i) {
@@ -22,7 +16,7 @@ int manifoldUpdatesOver(World& world, int steps) {
 }
 
 TEST(NarrowPhaseReuse, RestingStackRecomputesNoManifold_OnceSettled) {
-  World world(awakeSettings());
+  World world(sleepless());
   addGround(world);
   for (int i = 0; i < 5; ++i) addBox(world, {.center = Vec2(0, Real(0.5) + Real(i))});
   simulate(world, 3);
@@ -32,7 +26,7 @@ TEST(NarrowPhaseReuse, RestingStackRecomputesNoManifold_OnceSettled) {
 }
 
 TEST(NarrowPhaseReuse, PushedBodyRecomputesItsManifolds) {
-  World world(awakeSettings());
+  World world(sleepless());
   addGround(world);
   BodyId lower = addBox(world, {.center = Vec2(0, Real(0.5))});
   BodyId upper = addBox(world, {.center = Vec2(0, Real(1.5))});
@@ -50,7 +44,7 @@ TEST(NarrowPhaseReuse, PushedBodyRecomputesItsManifolds) {
 }
 
 TEST(NarrowPhaseReuse, SlidingBoxRecomputesEveryStep) {
-  World world(awakeSettings());
+  World world(sleepless());
   addGround(world);
   addBox(world, {.center = Vec2(0, Real(0.5)), .material = Material::Ice, .velocity = Vec2(3, 0)});
   world.step(kDt);

@@ -11,12 +11,6 @@
 namespace impulse::test {
 namespace {
 
-WorldSettings awakeSettings() {
-  WorldSettings settings;
-  settings.enableSleep = false;
-  return settings;
-}
-
 // Drives `mover` at `speed` along +x for `seconds`, setting its velocity
 // each step as a kinematic push would; returns how far its right face went
 // past the left face of `target` at worst (positive: overlap).
@@ -34,7 +28,7 @@ Real worstOverlapWhileCreeping(World& world, BodyId mover, Real moverHalfWidth, 
 }
 
 TEST(ShapeBoxAnchor, ABoxCreepingOnTheGround_MeetsTheBoxAhead) {
-  World world(awakeSettings());
+  World world(sleepless());
   addGround(world);
   const BodyId mover = addBox(world, {.center = Vec2(0, Real(0.5))});
   const BodyId target = addBox(world, {.center = Vec2(3, Real(0.5))});
@@ -47,7 +41,7 @@ TEST(ShapeBoxAnchor, ABoxCreepingOnTheGround_MeetsTheBoxAhead) {
 }
 
 TEST(ShapeBoxAnchor, APlankTurningSlowly_MeetsTheBoxInItsSweep) {
-  WorldSettings settings = awakeSettings();
+  WorldSettings settings = sleepless();
   settings.gravity = Vec2::Zero();
   World world(settings);
   const BodyId plank = addBox(world, {.halfWidth = 2, .halfHeight = Real(0.05)});

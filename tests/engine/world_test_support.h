@@ -103,6 +103,13 @@ inline BodyId addCircle(World& world, const CircleSpec& spec) {
   return addBody(world, Shape::makeCircle(spec.radius), spec);
 }
 
+/// Default settings with sleeping off: every body stays in the step.
+inline WorldSettings sleepless() {
+  WorldSettings settings;
+  settings.enableSleep = false;
+  return settings;
+}
+
 /// A static ground slab whose top face is at y = top, spanning |x| <= halfWidth.
 inline BodyId addGround(World& world, Real top = 0, Real halfWidth = 20) {
   return addBox(
