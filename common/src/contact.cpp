@@ -303,8 +303,8 @@ void fetchContactInputs(const WorldData& world, const Contact& contact) {
   fetchAllLines(world.bodies[contact.edges.bodyB]);
   fetchLines(&world.shapes[contact.shapeA]);
   fetchLines(&world.shapes[contact.shapeB]);
-  world.broadPhase.fetchFatBox(contact.shapeA);
-  world.broadPhase.fetchFatBox(contact.shapeB);
+  fetchLines(&world.broadPhase.fatAABBOfUser(contact.shapeA));
+  fetchLines(&world.broadPhase.fatAABBOfUser(contact.shapeB));
 }
 
 // A polygon's count and first vertices, its first normals and its radius

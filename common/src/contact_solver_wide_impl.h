@@ -35,14 +35,20 @@ static_assert(sizeof(SolverState) == 8 * sizeof(float) && std::is_standard_layou
 const float* floatsOf(const SolverState& state) { return reinterpret_cast<const float*>(&state); }
 float* floatsOf(SolverState& state) { return reinterpret_cast<float*>(&state); }
 
+// The lanes' states, given as rows, as columns.
+template <class F>
+[[gnu::always_inline]] inline WideBody<F> bodyOfRows(const float* const rows[F::kLanes]) {
+  F columns[8];
+  simd::loadColumns(rows, columns);
+  return {columns[0], columns[1], columns[2], columns[3], columns[4], columns[5], columns[6]};
+}
+
 template <class F>
 [[gnu::always_inline]] inline WideBody<F> gather(std::span<const SolverState> states,
                                                  const std::int32_t index[F::kLanes]) {
   const float* rows[F::kLanes];
   for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = floatsOf(states[index[lane]]);
-  F columns[8];
-  simd::loadColumns(rows, columns);
-  return {columns[0], columns[1], columns[2], columns[3], columns[4], columns[5], columns[6]};
+  return bodyOfRows<F>(rows);
 }
 
 // Writes velocities back (the first four floats, delta position unchanged).
@@ -980,9 +986,7 @@ std::size_t integratePositionsWide(std::span<SolverState> states, float h) {
   for (std::size_t first = 0; first < whole; first += F::kLanes) {
     float* rows[F::kLanes];
     for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = floatsOf(states[first + std::size_t(lane)]);
-    F columns[8];
-    simd::loadColumns(rows, columns);
-    const WideBody<F> body{columns[0], columns[1], columns[2], columns[3], columns[4], columns[5], columns[6]};
+    const WideBody<F> body = bodyOfRows<F>(rows);
     const F turn = step * body.w;
     const F c = body.dqc - turn * body.dqs;
     const F s = body.dqs + turn * body.dqc;

@@ -116,10 +116,9 @@ class BroadPhase {
     return userBoxes_[std::size_t(userValueA)].overlaps(userBoxes_[std::size_t(userValueB)]);
   }
   const AABB& fatAABB(std::int32_t proxyKey) const;
-  /// The fat AABB of a user value's live proxy, from the same copy.
+  /// The fat AABB of a user value's live proxy, from the same copy (what
+  /// fatAABBsOverlap reads).
   const AABB& fatAABBOfUser(std::int32_t userValue) const { return userBoxes_[std::size_t(userValue)]; }
-  /// Starts loading what fatAABBsOverlap reads of the user value.
-  void fetchFatBox(std::int32_t userValue) const { __builtin_prefetch(&userBoxes_[std::size_t(userValue)]); }
 
   /// Calls visit(userValue) for every proxy whose fat AABB overlaps box;
   /// visit returns false to stop early.
