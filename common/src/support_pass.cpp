@@ -155,7 +155,8 @@ void SupportPass::levelBodies(const WorldData& world, std::span<const Constraint
 
 bool SupportPass::sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const {
   auto sameRef = [](const ConstraintRef& a, const ConstraintRef& b) {
-    return a.contact == b.contact && a.stateA == b.stateA && a.stateB == b.stateB && a.facing == b.facing;
+    return a.contact == b.contact && a.stateA == b.stateA && a.stateB == b.stateB && a.facing == b.facing &&
+           a.invMassA == b.invMassA && a.invMassB == b.invMassB;
   };
   return haveLast_ && world.jointLinkChanges == lastJointLinkChanges_ &&
          world.awakeBodies == lastAwake_ && std::equal(refs.begin(), refs.end(), lastRefs_.begin(), lastRefs_.end(), sameRef);
@@ -187,7 +188,11 @@ std::int32_t SupportPass::lowerOf(const SupportRow& row, std::span<const Constra
 // the soft contact's under that load (ground first): load times the pair's
 // inverse mass times the contact's compliance. An estimate within a small
 // factor: the points' lever arms and the load's true spread are left out.
-void SupportPass::estimateSinks(std::span<const ConstraintRef> refs) {
+//
+// What each body carries at rest depends on the candidates and the bodies'
+// masses alone: worked out when the candidates are found, it holds while
+// the graph does (sameGraphAsLastStep compares the masses too).
+void SupportPass::carryWeights(std::span<const ConstraintRef> refs) {
   const std::size_t stateCount = level_.size();
   carried_.assign(stateCount, 0);
   supports_.assign(stateCount, 0);
@@ -202,7 +207,10 @@ void SupportPass::estimateSinks(std::span<const ConstraintRef> refs) {
   for (auto link = candidateLinks_.rbegin(); link != candidateLinks_.rend(); ++link) {
     carried_[std::size_t(link->lower)] += carried_[std::size_t(link->upper)] / Real(supports_[std::size_t(link->upper)]);
   }
-  sink_.assign(stateCount, 0);
+}
+
+void SupportPass::estimateSinks(std::span<const ConstraintRef> refs) {
+  sink_.assign(level_.size(), 0);
   for (std::size_t r = 0; r < candidates_.size(); ++r) {
     const SupportRow& row = candidates_[r];
     const CandidateLink& link = candidateLinks_[r];
@@ -297,7 +305,7 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<const Con
   leanings_.clear();
   upwardSum_.assign(stateCount, 0);
   standingPoints_.assign(stateCount, 0);
-  carried_.assign(stateCount, 0);
+  startCarried_.assign(stateCount, 0);
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const ConstraintRef& ref = refs[i];
@@ -316,8 +324,8 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<const Con
     leanings_.push_back({std::int32_t(i), upper, lower, std::abs(upward), touching});
     upwardSum_[std::size_t(upper)] += std::abs(upward);
     standingPoints_[std::size_t(upper)] += touching;
-    carried_[std::size_t(upper)] = massOf(upperIsB ? ref.invMassB : ref.invMassA);
-    if (lower != 0) carried_[std::size_t(lower)] = massOf(upperIsB ? ref.invMassA : ref.invMassB);
+    startCarried_[std::size_t(upper)] = massOf(upperIsB ? ref.invMassB : ref.invMassA);
+    if (lower != 0) startCarried_[std::size_t(lower)] = massOf(upperIsB ? ref.invMassA : ref.invMassB);
     topLevel = std::max(topLevel, upperLevel);
   }
   // Top level first.
@@ -327,8 +335,8 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<const Con
   countingSort(leaningDepth_, storeyStart_, leaningOrder_);
   for (const std::int32_t k : leaningOrder_) {
     const Leaning& l = leanings_[std::size_t(k)];
-    const Real share = carried_[std::size_t(l.upper)] * l.upward / upwardSum_[std::size_t(l.upper)];
-    if (l.lower != 0) carried_[std::size_t(l.lower)] += share;
+    const Real share = startCarried_[std::size_t(l.upper)] * l.upward / upwardSum_[std::size_t(l.upper)];
+    if (l.lower != 0) startCarried_[std::size_t(l.lower)] += share;
     if (startable_[std::size_t(l.ref)] == 0 || hangs_[std::size_t(l.upper)] == 0 || standingPoints_[std::size_t(l.upper)] < 2)
       continue;
     const ContactSolverPart& contact = world.contacts[refs[std::size_t(l.ref)].contact];
@@ -353,7 +361,10 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   compliance_ = {complianceOf(softness.statics), complianceOf(softness.dynamic)};
   startImpulse_.clear();
   const bool graphChanged = !sameGraphAsLastStep(world, refs);
-  if (graphChanged) findCandidates(world, refs, stateCount);
+  if (graphChanged) {
+    findCandidates(world, refs, stateCount);
+    carryWeights(refs);
+  }
   estimateSinks(refs);
   keepStacksThatSink();
   for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;

@@ -186,6 +186,7 @@ class SupportPass {
   void levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
   void linkCandidates(std::span<const ConstraintRef> refs, std::size_t stateCount);
+  void carryWeights(std::span<const ConstraintRef> refs);
   void estimateSinks(std::span<const ConstraintRef> refs);
   void keepStacksThatSink();
   bool markStartable(const WorldData& world, std::span<const ConstraintRef> refs);
@@ -263,6 +264,8 @@ class SupportPass {
   std::vector<std::int32_t> leaningOrder_;
   std::vector<Real> upwardSum_;
   std::vector<std::int32_t> standingPoints_;
+  /// Per state, the mass it carries as carried_, counted over the leanings.
+  std::vector<Real> startCarried_;
   /// Refs that may start but for being new, and per contact whether it
   /// was among last step's refs (markStartable).
   std::vector<std::int32_t> startCandidates_;

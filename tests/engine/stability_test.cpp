@@ -206,6 +206,24 @@ TEST(Stacking, HeavyBoxHoldsOnLightBoxes_AtMassRatioOneToHundred) {
   EXPECT_EQ(world.awakeBodyCount(), 0);
 }
 
+// A FOAM box on a FOAM box sinks too little for the support pass to hold
+// the upper one up (only the row on the ground is kept). Made GLASS, 83
+// times heavier, with the same contacts between the same bodies, the upper
+// box is held up from the step its mass changed: the pass works out the
+// loads a stack carries at rest only when its contacts change, and a
+// changed mass counts as such a change.
+TEST(Stacking, BoxMadeHeavyOnAStack_IsHeldUpFromTheStepItsMassChanged) {
+  World world(sleepless());
+  addGround(world);
+  addBox(world, {.center = Vec2(0, Real(0.5)), .material = Material::Foam});
+  const BodyId upper = addBox(world, {.center = Vec2(0, Real(1.5)), .material = Material::Foam});
+  simulate(world, 1);
+  ASSERT_EQ(world.profile().passes.supportRows, 1) << "light: only the row on the ground";
+  ASSERT_TRUE(world.setMaterial(upper, Material::Glass).ok());
+  world.step(kDt);
+  EXPECT_EQ(world.profile().passes.supportRows, 2);
+}
+
 TEST(Overlap, HalfOverlappingBoxesSeparate_WithoutLaunching) {
   World world;
   addGround(world);
