@@ -1,6 +1,7 @@
 // Shape geometry is stored per type (shape_data.h): a slot holds no
-// geometry of its own, a freed place is handed out again, and an address
-// handed out stays valid however much the pools grow.
+// geometry of its own, shapes of the same geometry share a place, a freed
+// place is handed out again, and an address handed out stays valid however
+// much the pools grow.
 
 #include <gtest/gtest.h>
 
@@ -62,6 +63,32 @@ TEST(ShapeStorage, StoringAnotherTypeGivesTheOldGeometryBack) {
   EXPECT_EQ(geometries.liveCount<Circle>(), 0);
   EXPECT_EQ(geometries.liveCount<Capsule>(), 1);
   EXPECT_EQ(geometryAs<Capsule>(slot.ref()).center2, Vec2(1, 0));
+}
+
+TEST(ShapeStorage, EqualGeometryIsSharedUntilItsLastShapeLetsGo) {
+  ShapeGeometries geometries;
+  ShapeSlot first;
+  ShapeSlot second;
+  ShapeSlot other;
+  geometries.store(first, Shape::makePolygon(makeBox(1, 1)));
+  geometries.store(second, Shape::makePolygon(makeBox(1, 1)));
+  geometries.store(other, Shape::makePolygon(makeBox(1, 2)));
+  EXPECT_EQ(first.ref().geometry, second.ref().geometry);
+  EXPECT_NE(first.ref().geometry, other.ref().geometry);
+  EXPECT_EQ(geometries.liveCount<Polygon>(), 2);
+
+  geometries.release(first);
+  EXPECT_EQ(geometries.liveCount<Polygon>(), 2);
+  EXPECT_EQ(geometryAs<Polygon>(second.ref()).vertices[0], makeBox(1, 1).vertices[0]);
+  geometries.release(second);
+  EXPECT_EQ(geometries.liveCount<Polygon>(), 1);
+
+  // The freed place is no longer found as the box's: storing the box again
+  // fills it afresh.
+  ShapeSlot again;
+  geometries.store(again, Shape::makePolygon(makeBox(1, 1)));
+  EXPECT_EQ(geometries.liveCount<Polygon>(), 2);
+  EXPECT_EQ(geometryAs<Polygon>(again.ref()).vertices[0], makeBox(1, 1).vertices[0]);
 }
 
 }  // namespace
