@@ -150,6 +150,8 @@ struct WorldData {
 
   // Scratch reused every step, so the steady state allocates nothing.
   std::vector<ProxyPair> newPairs;
+  /// The slot each new pair's contact takes, in newPairs' order.
+  std::vector<std::int32_t> newContactSlots;
   /// The pair search's lists, one per chunk of queued proxies.
   std::vector<std::vector<ProxyPair>> pairChunks;
   SlotBits contactsToCollide;
