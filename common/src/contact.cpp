@@ -378,9 +378,9 @@ constexpr std::int32_t kTouchingSortedBeside = 4096;
 
 bool isEventful(std::uint8_t outcome) { return (outcome & (kApart | kTouchChanged | kHits | kWakes)) != 0; }
 
-// The touching contacts (with their keys) in the visiting order, and the
-// count of recomputed manifolds: each chunk counts, then writes its part at
-// its offset, side by side.
+// The touching contacts (with their keys) and the eventful entries in the
+// visiting order, and the count of recomputed manifolds: each chunk counts,
+// then writes its part at its offsets, side by side.
 void listTouching(WorldData& world) {
   const std::size_t size = world.collideList.size();
   const std::int32_t chunks = chunksFor(world, size, kCollideChunksPerWorker, kContactsPerChunk);
@@ -398,19 +398,26 @@ void listTouching(WorldData& world) {
     }
   });
   std::int32_t touching = 0;
+  std::int32_t eventful = 0;
   world.profile.manifoldUpdates = 0;
   for (CollideTally& tally : tallies) {
     tally.firstTouching = touching;
     touching += tally.touching;
+    tally.firstEventful = eventful;
+    eventful += tally.eventful;
     world.profile.manifoldUpdates += tally.recomputed;
   }
   world.touchingContacts.resize(std::size_t(touching));
   world.touchingKeys.resize(std::size_t(touching));
+  world.eventfulEntries.resize(std::size_t(eventful));
   world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t chunk = begin; chunk < end; ++chunk) {
       auto at = std::size_t(tallies[std::size_t(chunk)].firstTouching);
+      auto eventfulAt = std::size_t(tallies[std::size_t(chunk)].firstEventful);
       for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
-        if ((world.collideOutcomes[i] & kTouching) == 0) continue;
+        const std::uint8_t outcome = world.collideOutcomes[i];
+        if (isEventful(outcome)) world.eventfulEntries[eventfulAt++] = std::int32_t(i);
+        if ((outcome & kTouching) == 0) continue;
         world.touchingContacts[at] = world.collideList[i];
         world.touchingKeys[at] = world.collideKeys[i];
         ++at;
@@ -576,23 +583,47 @@ void applyCollideEvents(WorldData& world, Contact& contact, std::uint8_t outcome
   }
 }
 
+// Eventful entries ahead of the one being applied whose lines are fetched
+// meanwhile: the contact twice this far ahead, then what destroying it
+// touches (its pair's slot in the known pairs, its bodies, its neighbours
+// in their lists). Applying is otherwise a chain of cache misses, one
+// contact at a time, on one thread.
+constexpr std::size_t kEventfulFetchDistance = 4;
+
+void fetchOutcomeAhead(const WorldData& world, std::size_t k) {
+  const std::vector<std::int32_t>& entries = world.eventfulEntries;
+  if (k + 2 * kEventfulFetchDistance < entries.size()) {
+    const std::size_t i = std::size_t(entries[k + 2 * kEventfulFetchDistance]);
+    const Contact& contact = world.contacts[std::size_t(world.collideList[i])];
+    fetchLines(&contact.edges);
+    fetchLines(&contact.pairKey);
+  }
+  if (k + kEventfulFetchDistance >= entries.size()) return;
+  const std::size_t i = std::size_t(entries[k + kEventfulFetchDistance]);
+  if ((world.collideOutcomes[i] & kApart) == 0) return;
+  const Contact& contact = world.contacts[std::size_t(world.collideList[i])];
+  world.contactByPair.prefetch(contact.pairKey);
+  for (int side = 0; side < 2; ++side) {
+    fetchLines(&world.bodies[contact.edges.body(side)].contactHead);
+    for (const std::int32_t key : {contact.edges.prev[side], contact.edges.next[side]}) {
+      if (key != kNullIndex) fetchLines(&world.contacts[std::size_t(edgeElement(key))].edges);
+    }
+  }
+}
+
 // What changes lists and other bodies (contacts that went apart, touch and
-// hit events, wakes) runs in the visiting order, over the chunks that have
-// any.
+// hit events, wakes) runs in the visiting order, over the eventful entries.
 void applyCollideOutcomes(WorldData& world, Real dt) {
-  const std::size_t size = world.collideList.size();
-  const auto chunks = std::int32_t(world.collideTallies.size());
-  for (std::int32_t chunk = 0; chunk < chunks; ++chunk) {
-    if (world.collideTallies[std::size_t(chunk)].eventful == 0) continue;
-    for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
-      const std::uint8_t outcome = world.collideOutcomes[i];
-      if (!isEventful(outcome)) continue;
-      const std::int32_t index = world.collideList[i];
-      if ((outcome & kApart) != 0) {
-        destroyContact(world, index);
-      } else {
-        applyCollideEvents(world, world.contacts[index], outcome, dt);
-      }
+  const std::vector<std::int32_t>& entries = world.eventfulEntries;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    fetchOutcomeAhead(world, k);
+    const auto i = std::size_t(entries[k]);
+    const std::uint8_t outcome = world.collideOutcomes[i];
+    const std::int32_t index = world.collideList[i];
+    if ((outcome & kApart) != 0) {
+      destroyContact(world, index);
+    } else {
+      applyCollideEvents(world, world.contacts[index], outcome, dt);
     }
   }
 }

@@ -77,8 +77,10 @@ struct CollideTally {
   std::int32_t touching = 0;
   std::int32_t recomputed = 0;
   std::int32_t eventful = 0;
-  /// Where its touching contacts start in the touching list.
+  /// Where its touching contacts start in the touching list, and its
+  /// eventful ones in the eventful list.
   std::int32_t firstTouching = 0;
+  std::int32_t firstEventful = 0;
 };
 
 /// A shape's tight box as last computed, its body's pose then and the
@@ -165,6 +167,9 @@ struct WorldData {
   /// Per chunk of collideList (contact.cpp, listTouching): how many of its
   /// contacts touch, were recomputed, or ask the serial pass for more.
   std::vector<CollideTally> collideTallies;
+  /// The positions in collideList whose outcome asks the serial pass for
+  /// more (contacts gone apart, events, wakes), in its order.
+  std::vector<std::int32_t> eventfulEntries;
   /// Per awake body after the solve: how its boxes stretch, and whether one
   /// left its fat box (world.cpp, solveAndMoveProxies).
   std::vector<BodyReach> awakeReach;
