@@ -181,6 +181,9 @@ struct WorldData {
   /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;
   std::vector<std::uint8_t> fastBodyMoved;
+  /// Per touching contact (touchingUnsorted): which of its bodies lies
+  /// pressed on a static chain, bit 0 A's, bit 1 B's (continuous.cpp).
+  std::vector<std::uint8_t> chainPresses;
   /// Per awake body: whether it moved fast this step (movedFast), found
   /// where the solved bodies' boxes grow, while each body is at hand.
   std::vector<std::uint8_t> awakeBodyFast;
