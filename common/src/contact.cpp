@@ -17,12 +17,6 @@ namespace impulse {
 
 namespace {
 
-std::int32_t allocateContact(WorldData& world) {
-  std::int32_t index = world.freeContacts.acquire(world.contacts.size());
-  if (index == static_cast<std::int32_t>(world.contacts.size())) world.contacts.emplace_back();
-  return index;
-}
-
 // Threads the contact through both bodies' contact lists.
 void linkContact(WorldData& world, std::int32_t index) {
   for (int side = 0; side < 2; ++side) {
@@ -31,7 +25,9 @@ void linkContact(WorldData& world, std::int32_t index) {
   }
 }
 
-void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
+// A new contact's own fields, from its two shapes: writes nothing but the
+// contact, so new contacts fill side by side.
+void fillContact(const WorldData& world, Contact& contact, std::int32_t shapeA, std::int32_t shapeB) {
   // The collide table holds each pair of types in one order only.
   if (collideFunction(world.shapes[shapeA].type(), world.shapes[shapeB].type()) == nullptr) {
     std::swap(shapeA, shapeB);
@@ -40,9 +36,6 @@ void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
   const ShapeSlot& sb = world.shapes[shapeB];
   const MaterialProperties& ma = sa.coefficients;
   const MaterialProperties& mb = sb.coefficients;
-
-  std::int32_t index = allocateContact(world);
-  Contact& contact = world.contacts[index];
   contact = Contact{};
   contact.edges.bodyA = sa.body;
   contact.edges.bodyB = sb.body;
@@ -53,8 +46,16 @@ void createContact(WorldData& world, std::int32_t shapeA, std::int32_t shapeB) {
   contact.rollingResistance = mixCoefficient(ma.rollingResistance, mb.rollingResistance) *
                               std::max(sa.rollingRadius, sb.rollingRadius);
   setContactEventFlags(world, contact);
+}
+
+// What a filled contact changes besides itself: its bodies' lists, the
+// active contacts and the known pairs.
+void enlistContact(WorldData& world, std::int32_t index) {
   linkContact(world, index);
-  if (world.bodies[sa.body].awake || world.bodies[sb.body].awake) world.activeContacts.insert(index);
+  const Contact& contact = world.contacts[index];
+  if (world.bodies[contact.edges.bodyA].awake || world.bodies[contact.edges.bodyB].awake) {
+    world.activeContacts.insert(index);
+  }
   world.contactByPair.insert(contact.pairKey);
 }
 
@@ -377,9 +378,9 @@ constexpr std::int32_t kTouchingSortedBeside = 4096;
 
 bool isEventful(std::uint8_t outcome) { return (outcome & (kApart | kTouchChanged | kHits | kWakes)) != 0; }
 
-// The touching contacts (with their keys) in the visiting order, and the
-// count of recomputed manifolds: each chunk counts, then writes its part at
-// its offset, side by side.
+// The touching contacts (with their keys) and the eventful entries in the
+// visiting order, and the count of recomputed manifolds: each chunk counts,
+// then writes its part at its offsets, side by side.
 void listTouching(WorldData& world) {
   const std::size_t size = world.collideList.size();
   const std::int32_t chunks = chunksFor(world, size, kCollideChunksPerWorker, kContactsPerChunk);
@@ -397,19 +398,26 @@ void listTouching(WorldData& world) {
     }
   });
   std::int32_t touching = 0;
+  std::int32_t eventful = 0;
   world.profile.manifoldUpdates = 0;
   for (CollideTally& tally : tallies) {
     tally.firstTouching = touching;
     touching += tally.touching;
+    tally.firstEventful = eventful;
+    eventful += tally.eventful;
     world.profile.manifoldUpdates += tally.recomputed;
   }
   world.touchingContacts.resize(std::size_t(touching));
   world.touchingKeys.resize(std::size_t(touching));
+  world.eventfulEntries.resize(std::size_t(eventful));
   world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t chunk = begin; chunk < end; ++chunk) {
       auto at = std::size_t(tallies[std::size_t(chunk)].firstTouching);
+      auto eventfulAt = std::size_t(tallies[std::size_t(chunk)].firstEventful);
       for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
-        if ((world.collideOutcomes[i] & kTouching) == 0) continue;
+        const std::uint8_t outcome = world.collideOutcomes[i];
+        if (isEventful(outcome)) world.eventfulEntries[eventfulAt++] = std::int32_t(i);
+        if ((outcome & kTouching) == 0) continue;
         world.touchingContacts[at] = world.collideList[i];
         world.touchingKeys[at] = world.collideKeys[i];
         ++at;
@@ -490,35 +498,74 @@ void searchNewPairs(WorldData& world) {
   world.broadPhase.finishPairSearch(world.newPairs);
 }
 
-// Pairs ahead of the one whose contact is being made whose lines are
-// fetched meanwhile: their shapes twice this far ahead, then their bodies
-// and the contact slot they will take. Making a contact is otherwise a
-// chain of cache misses, one pair at a time, on the calling thread.
-constexpr std::size_t kCreatePrefetchDistance = 4;
+// The slot each new pair's contact takes (world.newContactSlots), in the
+// pairs' order: freed slots last freed first, then new ones at the end of
+// the array, which grows once.
+void takeContactSlots(WorldData& world) {
+  std::vector<std::int32_t>& slots = world.newContactSlots;
+  slots.resize(world.newPairs.size());
+  std::size_t size = world.contacts.size();
+  for (std::int32_t& slot : slots) {
+    slot = world.freeContacts.acquire(size);
+    if (std::size_t(slot) == size) ++size;
+  }
+  world.contacts.resize(size);
+}
 
-void fetchPairAhead(const WorldData& world, std::size_t k) {
+// New contacts per range of their fill: a fill is a few cache misses.
+constexpr std::int32_t kNewContactsPerRange = 32;
+
+// Pairs ahead of the one whose contact is being filled, or enlisted, whose
+// lines are fetched meanwhile: their shapes (then their bodies) twice this
+// far ahead, the contact slot once. Each is otherwise a chain of cache
+// misses, one pair at a time.
+constexpr std::size_t kNewContactFetchDistance = 4;
+
+void fetchFillAhead(WorldData& world, std::size_t k) {
   const std::vector<ProxyPair>& pairs = world.newPairs;
-  if (k + 2 * kCreatePrefetchDistance < pairs.size()) {
-    const ProxyPair& ahead = pairs[k + 2 * kCreatePrefetchDistance];
+  if (k + 2 * kNewContactFetchDistance < pairs.size()) {
+    const ProxyPair& ahead = pairs[k + 2 * kNewContactFetchDistance];
     fetchLines(&world.shapes[ahead.first]);
     fetchLines(&world.shapes[ahead.second]);
   }
-  if (k + kCreatePrefetchDistance < pairs.size()) {
-    const ProxyPair& ahead = pairs[k + kCreatePrefetchDistance];
+  if (k + kNewContactFetchDistance < pairs.size()) {
+    fetchLinesForWrite(&world.contacts[std::size_t(world.newContactSlots[k + kNewContactFetchDistance])],
+                       sizeof(Contact));
+  }
+}
+
+void fetchEnlistAhead(const WorldData& world, std::size_t k) {
+  const std::vector<ProxyPair>& pairs = world.newPairs;
+  if (k + 2 * kNewContactFetchDistance < pairs.size()) {
+    const ProxyPair& ahead = pairs[k + 2 * kNewContactFetchDistance];
     fetchLines(&world.bodies[world.shapes[ahead.first].body]);
     fetchLines(&world.bodies[world.shapes[ahead.second].body]);
-    const std::int32_t slot = world.freeContacts.upcoming(kCreatePrefetchDistance);
-    if (slot >= 0) fetchLines(&world.contacts[std::size_t(slot)], sizeof(Contact));
+  }
+  if (k + kNewContactFetchDistance < pairs.size()) {
+    fetchLines(&world.contacts[std::size_t(world.newContactSlots[k + kNewContactFetchDistance])].edges);
   }
 }
 
 }  // namespace
 
+// New pairs become contacts: each takes its slot in the pairs' order, the
+// contacts fill side by side, then join their bodies' lists and the sets
+// one by one in that order (the lists' order is the pairs').
 void updatePairs(WorldData& world, Real /*dt*/) {
   searchNewPairs(world);
+  takeContactSlots(world);
+  world.tasks.forRanges(std::int32_t(world.newPairs.size()), kNewContactsPerRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (auto k = std::size_t(begin); k < std::size_t(end); ++k) {
+                            fetchFillAhead(world, k);
+                            const ProxyPair& pair = world.newPairs[k];
+                            fillContact(world, world.contacts[std::size_t(world.newContactSlots[k])], pair.first,
+                                        pair.second);
+                          }
+                        });
   for (std::size_t k = 0; k < world.newPairs.size(); ++k) {
-    fetchPairAhead(world, k);
-    createContact(world, world.newPairs[k].first, world.newPairs[k].second);
+    fetchEnlistAhead(world, k);
+    enlistContact(world, world.newContactSlots[k]);
   }
 }
 
@@ -536,23 +583,47 @@ void applyCollideEvents(WorldData& world, Contact& contact, std::uint8_t outcome
   }
 }
 
+// Eventful entries ahead of the one being applied whose lines are fetched
+// meanwhile: the contact twice this far ahead, then what destroying it
+// touches (its pair's slot in the known pairs, its bodies, its neighbours
+// in their lists). Applying is otherwise a chain of cache misses, one
+// contact at a time, on one thread.
+constexpr std::size_t kEventfulFetchDistance = 4;
+
+void fetchOutcomeAhead(const WorldData& world, std::size_t k) {
+  const std::vector<std::int32_t>& entries = world.eventfulEntries;
+  if (k + 2 * kEventfulFetchDistance < entries.size()) {
+    const std::size_t i = std::size_t(entries[k + 2 * kEventfulFetchDistance]);
+    const Contact& contact = world.contacts[std::size_t(world.collideList[i])];
+    fetchLines(&contact.edges);
+    fetchLines(&contact.pairKey);
+  }
+  if (k + kEventfulFetchDistance >= entries.size()) return;
+  const std::size_t i = std::size_t(entries[k + kEventfulFetchDistance]);
+  if ((world.collideOutcomes[i] & kApart) == 0) return;
+  const Contact& contact = world.contacts[std::size_t(world.collideList[i])];
+  world.contactByPair.prefetch(contact.pairKey);
+  for (int side = 0; side < 2; ++side) {
+    fetchLines(&world.bodies[contact.edges.body(side)].contactHead);
+    for (const std::int32_t key : {contact.edges.prev[side], contact.edges.next[side]}) {
+      if (key != kNullIndex) fetchLines(&world.contacts[std::size_t(edgeElement(key))].edges);
+    }
+  }
+}
+
 // What changes lists and other bodies (contacts that went apart, touch and
-// hit events, wakes) runs in the visiting order, over the chunks that have
-// any.
+// hit events, wakes) runs in the visiting order, over the eventful entries.
 void applyCollideOutcomes(WorldData& world, Real dt) {
-  const std::size_t size = world.collideList.size();
-  const auto chunks = std::int32_t(world.collideTallies.size());
-  for (std::int32_t chunk = 0; chunk < chunks; ++chunk) {
-    if (world.collideTallies[std::size_t(chunk)].eventful == 0) continue;
-    for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
-      const std::uint8_t outcome = world.collideOutcomes[i];
-      if (!isEventful(outcome)) continue;
-      const std::int32_t index = world.collideList[i];
-      if ((outcome & kApart) != 0) {
-        destroyContact(world, index);
-      } else {
-        applyCollideEvents(world, world.contacts[index], outcome, dt);
-      }
+  const std::vector<std::int32_t>& entries = world.eventfulEntries;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    fetchOutcomeAhead(world, k);
+    const auto i = std::size_t(entries[k]);
+    const std::uint8_t outcome = world.collideOutcomes[i];
+    const std::int32_t index = world.collideList[i];
+    if ((outcome & kApart) != 0) {
+      destroyContact(world, index);
+    } else {
+      applyCollideEvents(world, world.contacts[index], outcome, dt);
     }
   }
 }

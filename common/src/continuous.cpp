@@ -216,6 +216,18 @@ bool sweepAgainstStatics(WorldData& world, std::int32_t slot) {
   return firstHit < 1 || heldInFront;
 }
 
+// Whether the body of `shape`, touching `chainShape`, is a slow dynamic body
+// on a static chain's segment.
+bool pressedOnChain(const WorldData& world, std::int32_t shape, std::int32_t chainShape) {
+  const Body& body = world.bodies[world.shapes[shape].body];
+  return world.shapes[chainShape].type() == ShapeType::ChainSegment && body.isDynamic() && !movedFast(body) &&
+         world.bodies[world.shapes[chainShape].body].isStatic;
+}
+
+// Touching contacts per range of the search for pressed bodies: a contact's
+// check is a few cache misses.
+constexpr std::int32_t kContactsPerPressRange = 512;
+
 // A body slow for its size can still be pushed across a chain segment it is
 // pressed into: a crowd, or a pusher that does not give way, presses it
 // deeper than the segment's soft contact gives back within one solve (the
@@ -224,21 +236,27 @@ bool sweepAgainstStatics(WorldData& world, std::int32_t slot) {
 // a body touches the segment, so the dynamic bodies touching a static chain
 // segment have their centre's path held in front as the fast ones do. They
 // are appended to `bodies` once each, in slot order; fast ones are there
-// already. The contacts are read in the order memory holds them.
-void addSlowBodiesOnChains(const WorldData& world, std::vector<std::int32_t>& bodies) {
+// already. The contacts are read in the order memory holds them, side by
+// side: each marks which of its bodies lies pressed (world.chainPresses, bit
+// 0 A's, bit 1 B's), and a walk of the marks lists those bodies.
+void addSlowBodiesOnChains(WorldData& world, std::vector<std::int32_t>& bodies) {
   const std::size_t first = bodies.size();
-  const auto onChain = [&](std::int32_t shape, std::int32_t chainShape) {
-    const std::int32_t slot = world.shapes[shape].body;
-    const Body& body = world.bodies[slot];
-    const bool pressed = world.shapes[chainShape].type() == ShapeType::ChainSegment &&
-                         body.isDynamic() && !movedFast(body) &&
-                         world.bodies[world.shapes[chainShape].body].isStatic;
-    if (pressed) bodies.push_back(slot);
-  };
-  for (std::int32_t index : world.touchingUnsorted) {
-    const Contact& contact = world.contacts[index];
-    onChain(contact.shapeA, contact.shapeB);
-    onChain(contact.shapeB, contact.shapeA);
+  const std::vector<std::int32_t>& touching = world.touchingUnsorted;
+  std::vector<std::uint8_t>& presses = world.chainPresses;
+  presses.resize(touching.size());
+  world.tasks.forRanges(std::int32_t(touching.size()), kContactsPerPressRange,
+                        [&](std::int32_t begin, std::int32_t end) {
+                          for (auto i = std::size_t(begin); i < std::size_t(end); ++i) {
+                            const Contact& contact = world.contacts[std::size_t(touching[i])];
+                            presses[i] = std::uint8_t((pressedOnChain(world, contact.shapeA, contact.shapeB) ? 1 : 0) |
+                                                      (pressedOnChain(world, contact.shapeB, contact.shapeA) ? 2 : 0));
+                          }
+                        });
+  for (std::size_t i = 0; i < touching.size(); ++i) {
+    if (presses[i] == 0) continue;
+    const Contact& contact = world.contacts[std::size_t(touching[i])];
+    if ((presses[i] & 1) != 0) bodies.push_back(world.shapes[contact.shapeA].body);
+    if ((presses[i] & 2) != 0) bodies.push_back(world.shapes[contact.shapeB].body);
   }
   // Each once: the bodies are moved side by side.
   std::sort(bodies.begin() + std::ptrdiff_t(first), bodies.end());

@@ -24,11 +24,6 @@ class FreeList {
     return slot;
   }
   void release(std::int32_t slot) { free_.push_back(slot); }
-  /// The slot the acquire `ahead` calls from now returns, if a freed one
-  /// (none: -1); for fetching it ahead.
-  std::int32_t upcoming(std::size_t ahead) const {
-    return ahead < free_.size() ? free_[free_.size() - 1 - ahead] : -1;
-  }
   /// Free slots, the next one handed out last (for saving a world).
   const std::vector<std::int32_t>& slots() const { return free_; }
   /// Replaces the free slots (the caller has checked them).

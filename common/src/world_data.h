@@ -77,8 +77,10 @@ struct CollideTally {
   std::int32_t touching = 0;
   std::int32_t recomputed = 0;
   std::int32_t eventful = 0;
-  /// Where its touching contacts start in the touching list.
+  /// Where its touching contacts start in the touching list, and its
+  /// eventful ones in the eventful list.
   std::int32_t firstTouching = 0;
+  std::int32_t firstEventful = 0;
 };
 
 /// A shape's tight box as last computed, its body's pose then and the
@@ -150,6 +152,8 @@ struct WorldData {
 
   // Scratch reused every step, so the steady state allocates nothing.
   std::vector<ProxyPair> newPairs;
+  /// The slot each new pair's contact takes, in newPairs' order.
+  std::vector<std::int32_t> newContactSlots;
   /// The pair search's lists, one per chunk of queued proxies.
   std::vector<std::vector<ProxyPair>> pairChunks;
   SlotBits contactsToCollide;
@@ -163,6 +167,9 @@ struct WorldData {
   /// Per chunk of collideList (contact.cpp, listTouching): how many of its
   /// contacts touch, were recomputed, or ask the serial pass for more.
   std::vector<CollideTally> collideTallies;
+  /// The positions in collideList whose outcome asks the serial pass for
+  /// more (contacts gone apart, events, wakes), in its order.
+  std::vector<std::int32_t> eventfulEntries;
   /// Per awake body after the solve: how its boxes stretch, and whether one
   /// left its fat box (world.cpp, solveAndMoveProxies).
   std::vector<BodyReach> awakeReach;
@@ -174,6 +181,9 @@ struct WorldData {
   /// ones pressed into chains), and whether each was moved.
   std::vector<std::int32_t> fastBodies;
   std::vector<std::uint8_t> fastBodyMoved;
+  /// Per touching contact (touchingUnsorted): which of its bodies lies
+  /// pressed on a static chain, bit 0 A's, bit 1 B's (continuous.cpp).
+  std::vector<std::uint8_t> chainPresses;
   /// Per awake body: whether it moved fast this step (movedFast), found
   /// where the solved bodies' boxes grow, while each body is at hand.
   std::vector<std::uint8_t> awakeBodyFast;
