@@ -146,9 +146,10 @@ class SupportPass {
   ///
   /// The candidate rows (before the sink decides) depend only on the
   /// contacts, which of them are level and which way up, the awake bodies
-  /// and which bodies are jointed: when none of these changed since the last
-  /// step (a resting stack), last step's are kept, and only the sinks are
-  /// estimated anew (from the loads the contacts carried last step).
+  /// and which bodies are jointed, and the weight each body carries at rest
+  /// on those and the bodies' masses: when none of these changed since the
+  /// last step (a resting stack), last step's are kept, and only the sinks
+  /// are estimated anew (from the loads the contacts carried last step).
   void order(const WorldData& world, std::span<ConstraintRef> refs, std::size_t stateCount,
              const ContactSoftness& softness, Real h);
   /// The rows, group by group.

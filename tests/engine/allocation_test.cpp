@@ -36,9 +36,7 @@ namespace impulse {
 namespace {
 
 TEST(SteadyStateStep, DoesNotAllocate_WhenPyramidRests) {
-  WorldSettings settings;
-  settings.enableSleep = false;  // keep every body in the step
-  World world(settings);
+  World world(test::sleepless());  // every body kept in the step
   buildPyramid(world, 20);
   for (int i = 0; i < 120; ++i) world.step(Real(1.0 / 60.0));
 
@@ -79,9 +77,8 @@ TEST(SteadyStateStep, DoesNotAllocate_WhenAChainSwings) {
 // gravity: the push pass runs step after step on the same contacts (a crowd
 // that moves would also make and break contacts, which is not the solver).
 TEST(SteadyStateStep, DoesNotAllocate_WhileOverlapIsPushedOut) {
-  WorldSettings settings;
+  WorldSettings settings = test::sleepless();
   settings.gravity = Vec2::Zero();
-  settings.enableSleep = false;
   World world(settings);
   for (Real side : {Real(-1), Real(1)}) {
     test::addBox(world, {.center = Vec2(side * Real(1.01), 2.5), .halfWidth = 0.5, .halfHeight = 3.5, .isStatic = true});

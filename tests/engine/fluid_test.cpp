@@ -71,9 +71,7 @@ TEST(Submerged, CircleInsideACorner_CountsOnlyTheOverlap) {
 /// put to sleep below 0.05 m/s may rest up to 0.05 / omega (1.3 cm for WOOD)
 /// off its depth.
 double floatingFraction(Material material, double seconds) {
-  WorldSettings settings;
-  settings.enableSleep = false;
-  World world(settings);
+  World world(sleepless());
   const Real share = materialProperties(material).density / 1000;
   BodyId box = addBox(world, {.center = Vec2(0, Real(0.6) - share), .material = material});
   world.addField(makeFluidRegion(water(5, 5)).field);

@@ -268,9 +268,7 @@ std::vector<BodyId> addFreeChain(World& world, int links, Real y) {
 // group while its joints carry a load. A free chain falling carries none;
 // slung over a peg, its two hanging halves load every joint.
 TEST(JointTreePass, FreeChainSolvedExactlyWhileLoaded_HeldChainAlways) {
-  WorldSettings settings;
-  settings.enableSleep = false;
-  World world(settings);
+  World world(sleepless());
   addCircle(world, {.center = Vec2(0, 10), .radius = Real(0.5), .isStatic = true});
   const std::vector<BodyId> slung = addFreeChain(world, 12, Real(12));
   // A pendulum of two bars beside it, held by a world pin.
@@ -300,9 +298,7 @@ TEST(JointTreePass, FreeChainSolvedExactlyWhileLoaded_HeldChainAlways) {
 /// step in which the tree pass solved the leg, over the landing and the
 /// second after it.
 double landingLegWorstKneeSpeed() {
-  WorldSettings settings;
-  settings.enableSleep = false;
-  World world(settings);
+  World world(sleepless());
   // Dead (no bounce, as v3's rain): the restitution pass runs after the
   // sub-steps and gives the contacts the last word by design.
   const auto deadBox = [&](const BoxSpec& spec) {

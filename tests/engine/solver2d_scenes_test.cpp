@@ -17,9 +17,8 @@ namespace impulse::test {
 namespace {
 
 WorldSettings solver2DSettings(Vec2 gravity) {
-  WorldSettings settings;
+  WorldSettings settings = sleepless();
   settings.gravity = gravity;
-  settings.enableSleep = false;
   return settings;
 }
 

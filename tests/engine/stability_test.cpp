@@ -76,9 +76,7 @@ TEST(Stacking, TwentyRowPyramidStandsTenSeconds_AndFallsAsleep) {
 // points always in the same order leaned it 0.21 m; alternating the order
 // each sub-step keeps it at the float noise (measured 0.0000 m).
 TEST(Stacking, StraightFifteenBoxTowerDoesNotLean_WhenKeptAwake) {
-  WorldSettings settings;
-  settings.enableSleep = false;
-  World world(settings);
+  World world(sleepless());
   std::vector<BodyId> boxes = buildTower(world, 15);
   simulate(world, 10);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -92,16 +90,10 @@ TEST(Stacking, StraightFifteenBoxTowerDoesNotLean_WhenKeptAwake) {
 // Soft contacts alone let them sink (a 60-row pyramid's top 0.28 m) or fall
 // through (a 300:1 load on a light pyramid); the support pass holds each
 // body up on what is under it.
-World awakeWorld() {
-  WorldSettings settings;
-  settings.enableSleep = false;
-  return World(settings);
-}
-
 Real sinkOf(const World& world, BodyId id, const Vec2& start) { return start.y() - stateOf(world, id).position.y(); }
 
 TEST(Stacking, SixtyRowPyramidTopSinksUnderFiveCentimetres_AndStaysInColumn) {
-  World world = awakeWorld();
+  World world(sleepless());
   Pyramid pyramid = buildPyramid(world, 60);
   simulate(world, 10);
   BodyState top = stateOf(world, pyramid.top);
@@ -111,7 +103,7 @@ TEST(Stacking, SixtyRowPyramidTopSinksUnderFiveCentimetres_AndStaysInColumn) {
 }
 
 TEST(Stacking, HundredRowPyramidTopSinksUnderTenCentimetres) {
-  World world = awakeWorld();
+  World world(sleepless());
   Pyramid pyramid = buildPyramid(world, 100);
   simulate(world, 10);
   EXPECT_LT(std::abs(sinkOf(world, pyramid.top, pyramid.topStart)), 0.10);
@@ -121,7 +113,7 @@ TEST(Stacking, HundredRowPyramidTopSinksUnderTenCentimetres) {
 // 15 boxes alternately 1 cm left and right: every box within 1 cm of where
 // it started.
 TEST(Stacking, OffsetFifteenBoxTower_EveryBoxStaysWithinOneCentimetre) {
-  World world = awakeWorld();
+  World world(sleepless());
   std::vector<BodyId> boxes = buildTower(world, 15, Real(0.01));
   std::vector<Vec2> start;
   for (BodyId id : boxes) start.push_back(stateOf(world, id).position);
@@ -144,7 +136,7 @@ class HeavyLoad : public testing::TestWithParam<int> {};
 
 // On the top of a base-10 pyramid: holds 10 s and sinks under 2 cm.
 TEST_P(HeavyLoad, OnBaseTenPyramid_HoldsAndSinksUnderTwoCentimetres) {
-  World world = awakeWorld();
+  World world(sleepless());
   Pyramid pyramid = buildPyramid(world, 10);
   const Vec2 start = pyramid.topStart + Vec2(0, 1);
   BodyId heavy = addHeavyBox(world, start, Real(GetParam()), materialProperties(Material::Solid).density, 1);
@@ -158,7 +150,7 @@ TEST_P(HeavyLoad, OnBaseTenPyramid_HoldsAndSinksUnderTwoCentimetres) {
 
 // On one 0.5 m box on the ground: sinks under 1 cm.
 TEST_P(HeavyLoad, OnOneSmallBox_SinksUnderOneCentimetre) {
-  World world = awakeWorld();
+  World world(sleepless());
   addGround(world);
   BodyId small = addBox(world, {.center = Vec2(0, Real(0.25)), .halfWidth = Real(0.25), .halfHeight = Real(0.25)});
   const Vec2 start(0, 1);
@@ -360,9 +352,8 @@ TEST(Crowd, ThousandRandomBodiesStayFiniteAndInsideClosedBox_ForSixtySeconds) {
 // end squeezed most of the way through each other (the deepest pair is
 // 0.68 m in; Box2D 2.4.1 and Chipmunk end at 0.39-0.67 in the bench).
 TEST(Crowd, ConfinedOverlappingCircles_AreNotThrownApart) {
-  WorldSettings settings;
+  WorldSettings settings = sleepless();
   settings.gravity = Vec2::Zero();
-  settings.enableSleep = false;
   World world(settings);
   Container box(world, 10);
   std::vector<BodyId> circles;
@@ -398,9 +389,7 @@ TEST(Crowd, ConfinedOverlappingCircles_AreNotThrownApart) {
 // storey by storey (it once took them for storey 1 and left the top of
 // each falling: 0.91 m/s).
 TEST(Crowd, SqueezedLatticeOfCircles_HoldsStill) {
-  WorldSettings settings;
-  settings.enableSleep = false;
-  World world(settings);
+  World world(sleepless());
   const Real half = 15;
   addBox(world, {.center = Vec2(0, -1), .halfWidth = half + 2, .halfHeight = 1, .isStatic = true});
   for (Real side : {Real(-1), Real(1)}) {
