@@ -112,7 +112,8 @@ void changeShapeInteraction(WorldData& world, std::int32_t s, const ShapeInterac
 
 void createShapeProxy(WorldData& world, std::int32_t s) {
   ShapeSlot& slot = world.shapes[s];
-  slot.proxyKey = world.broadPhase.createProxy(shapeAABB(world, s), s, proxyKindOf(world.bodies[slot.body]));
+  slot.proxyKey = world.broadPhase.createProxy(shapeAABB(world, s), s, proxyKindOf(world.bodies[slot.body]),
+                                               shapeMotion(world, s, {}));
 }
 
 void detachShape(WorldData& world, std::int32_t s) {

@@ -22,13 +22,6 @@ BroadPhase::ProxyKind kindOf(std::int32_t proxyKey) {
 }
 int treeIndex(BroadPhase::ProxyKind kind) { return static_cast<int>(kind); }
 
-// Margin per metre of a shape's half-diagonal. At a fixed 10 cm a drum of
-// tumbling 20 cm boxes (v3's washer) held 2.5 contacts per touching one; at
-// a quarter, 1.7. An eighth (Box2D v3's) halves them again, but pairs form
-// late enough in a rain of 25 cm balls to leave its deepest overlap 8 mm
-// deeper; at a quarter that overlap is unchanged.
-constexpr Real kMarginPerSize = Real(0.25);
-
 // The box moved by `shift`, joined with where it was.
 AABB swept(const AABB& box, const Vec2& shift) {
   return {box.lower + shift.cwiseMin(Vec2::Zero()), box.upper + shift.cwiseMax(Vec2::Zero())};
@@ -101,12 +94,14 @@ void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userVal
 
 AABB BroadPhase::fatBox(const AABB& tightAABB, const ProxyMotion& motion) {
   const Real halfDiagonal = Real(0.5) * (tightAABB.upper - tightAABB.lower).norm();
-  const Real margin = std::min(kAabbMargin, kSpeculativeDistance + kMarginPerSize * halfDiagonal);
+  const Real margin = std::min(kAabbMargin, kSpeculativeDistance + motion.room * halfDiagonal);
   return expectedReach(tightAABB, motion).expanded(margin);
 }
 
-std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind) {
-  const std::int32_t node = trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind, {}), userValue);
+std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind,
+                                     const ProxyMotion& motion) {
+  const std::int32_t node =
+      trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind, {.room = motion.room}), userValue);
   const std::int32_t key = makeKey(node, kind);
   recordUserBox(key);
   // A new static proxy is not queued: it cannot pair with other static proxies,

@@ -137,7 +137,7 @@ bool staysInFatBox(const WorldData& world, std::int32_t s, const Body& body, con
 bool growBoxIfEscaped(WorldData& world, std::int32_t s, const Body& body, const ProxyMotion& motion) {
   const AABB tight = shapeAABB(world, s);
   world.shapeBoxAnchors[std::size_t(s)] = {tight, body.transform.p, body.transform.q, world.shapes[s].generation};
-  return world.broadPhase.growLeaf(world.shapes[s].proxyKey, tight, motion);
+  return world.broadPhase.growLeaf(world.shapes[s].proxyKey, tight, shapeMotion(world, s, motion));
 }
 
 // Per awake body (in awakeBodies' order), whether it moved fast for
@@ -240,6 +240,11 @@ const Body* WorldData::find(BodyId id) const { return findLive(bodies, id); }
 ShapeSlot* WorldData::find(ShapeId id) { return findLive(shapes, id); }
 const ShapeSlot* WorldData::find(ShapeId id) const { return findLive(shapes, id); }
 
+ProxyMotion shapeMotion(const WorldData& world, std::int32_t shape, ProxyMotion bodyMotion) {
+  bodyMotion.room = world.shapes[shape].type() == ShapeType::Polygon ? kPolygonRoom : kDefaultRoom;
+  return bodyMotion;
+}
+
 AABB shapeAABB(const WorldData& world, std::int32_t shape) {
   const ShapeSlot& slot = world.shapes[shape];
   return computeAABB(slot.ref(), world.bodies[slot.body].transform);
@@ -248,7 +253,7 @@ AABB shapeAABB(const WorldData& world, std::int32_t shape) {
 void moveBodyProxies(WorldData& world, std::int32_t body, Real dt) {
   const ProxyMotion motion = expectedMotion(world.bodies[body], dt, hasTouchingContact(world, body));
   world.forEachShape(body, [&](std::int32_t s) {
-    world.broadPhase.updateProxy(world.shapes[s].proxyKey, shapeAABB(world, s), motion);
+    world.broadPhase.updateProxy(world.shapes[s].proxyKey, shapeAABB(world, s), shapeMotion(world, s, motion));
   });
 }
 

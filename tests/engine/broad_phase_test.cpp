@@ -271,6 +271,28 @@ TEST(BroadPhase, FatBox_MarginFollowsTheShapesSize_StretchedAlongItsMotion) {
                                       Vec2(1 + around + Real(0.3), 1 + around)}));
 }
 
+// A polygon's proxy keeps less room than the default quarter
+// (kPolygonRoom): a tenth of the half-diagonal beyond the speculative
+// distance, still capped at kAabbMargin, and stretched along its motion
+// all the same.
+TEST(BroadPhase, FatBox_KeepsTheRoomItsMotionGives) {
+  const AABB small = makeBox(0, 0, Real(0.1), Real(0.1));
+  const Real halfDiagonal = Real(0.1) * std::sqrt(Real(2));
+  EXPECT_TRUE(nearlySameBox(BroadPhase::fatBox(small, {.room = kPolygonRoom}),
+                            small.expanded(kSpeculativeDistance + kPolygonRoom * halfDiagonal)));
+  const AABB huge = makeBox(0, 0, 10, 10);
+  EXPECT_TRUE(sameBox(BroadPhase::fatBox(huge, {.room = kPolygonRoom}), huge.expanded(kAabbMargin)));
+  const ProxyMotion rising{.displacement = Vec2(0, Real(0.5)), .room = kPolygonRoom};
+  const Real margin = kSpeculativeDistance + kPolygonRoom * halfDiagonal;
+  EXPECT_TRUE(nearlySameBox(BroadPhase::fatBox(small, rising),
+                            AABB{small.lower - Vec2(margin, margin), small.upper + Vec2(margin, margin + Real(0.5))}));
+  // A proxy created with that room gets it from its first box.
+  BroadPhase broadPhase;
+  const std::int32_t key =
+      broadPhase.createProxy(small, 0, BroadPhase::ProxyKind::Movable, {.room = kPolygonRoom});
+  EXPECT_TRUE(nearlySameBox(broadPhase.fatAABB(key), small.expanded(margin)));
+}
+
 TEST(BroadPhase, UpdateProxy_RefattensWhenTheComingStepWouldLeaveTheBox) {
   BroadPhase broadPhase;
   const AABB tight = makeBox(0, 0, 1, 1);
