@@ -162,19 +162,24 @@ void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs, const KnownPairs& k
 }
 
 std::span<const std::int32_t> BroadPhase::queuedProxies() {
-  // A proxy both moved and touched is queued twice but needs one query; a
-  // destroyed one left a null key.
-  std::sort(moveBuffer_.begin(), moveBuffer_.end());
-  moveBuffer_.erase(std::unique(moveBuffer_.begin(), moveBuffer_.end()), moveBuffer_.end());
-  const auto live = std::upper_bound(moveBuffer_.begin(), moveBuffer_.end(), kNullKey);
   // The flags are all clear between searches (finishPairSearch clears the
   // ones set here), so a step pays for its queued proxies, not the trees.
   for (int tree = 0; tree < 2; ++tree) {
     const auto capacity = std::size_t(trees_[tree].nodeCapacity());
     if (queuedNode_[tree].size() < capacity) queuedNode_[tree].resize(capacity, 0);
   }
-  for (auto key = live; key != moveBuffer_.end(); ++key) markQueued(queuedNode_, *key, 1);
-  return {live, moveBuffer_.end()};
+  // A proxy both moved and touched is queued twice but needs one query; a
+  // destroyed one left a null key. Each keeps its first place: which order
+  // the queries run in changes nothing (finishPairSearch sorts the pairs),
+  // and sorting a crowd's thousands of keys had been a serial stretch.
+  auto kept = moveBuffer_.begin();
+  for (const std::int32_t key : moveBuffer_) {
+    if (key == kNullKey || isQueued(kindOf(key), nodeOf(key))) continue;
+    markQueued(queuedNode_, key, 1);
+    *kept++ = key;
+  }
+  moveBuffer_.erase(kept, moveBuffer_.end());
+  return moveBuffer_;
 }
 
 void BroadPhase::finishPairSearch(std::vector<ProxyPair>& pairs) {
