@@ -15,6 +15,7 @@
 #include <numbers>
 #include <optional>
 
+#include "prefetch.h"
 #include "world_data.h"
 
 namespace impulse {
@@ -228,6 +229,25 @@ bool pressedOnChain(const WorldData& world, std::int32_t shape, std::int32_t cha
 // check is a few cache misses.
 constexpr std::int32_t kContactsPerPressRange = 512;
 
+// How far ahead of its check a touching contact's shape slots are fetched
+// and, half as far, the slots they name: the list is in the contacts'
+// order in memory, but with gaps, and on v3's spinner (25 000 touching
+// contacts, one static chain) two thirds of the search's time went to
+// loading the contacts' shape slots. A check is a few nanoseconds: at 16
+// ahead most loads still waited, at 128 the search takes 0.4 of its time.
+constexpr std::size_t kPressContactAhead = 128;
+constexpr std::size_t kPressShapeAhead = kPressContactAhead / 2;
+
+void fetchForPressCheck(const WorldData& world, const std::vector<std::int32_t>& touching, std::size_t i,
+                        std::size_t end) {
+  if (i + kPressContactAhead < end) fetchLines(&world.contacts[std::size_t(touching[i + kPressContactAhead])].shapeA);
+  if (i + kPressShapeAhead < end) {
+    const Contact& ahead = world.contacts[std::size_t(touching[i + kPressShapeAhead])];
+    fetchLines(&world.shapes[ahead.shapeA]);
+    fetchLines(&world.shapes[ahead.shapeB]);
+  }
+}
+
 // A body slow for its size can still be pushed across a chain segment it is
 // pressed into: a crowd, or a pusher that does not give way, presses it
 // deeper than the segment's soft contact gives back within one solve (the
@@ -247,6 +267,7 @@ void addSlowBodiesOnChains(WorldData& world, std::vector<std::int32_t>& bodies) 
   world.tasks.forRanges(std::int32_t(touching.size()), kContactsPerPressRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           for (auto i = std::size_t(begin); i < std::size_t(end); ++i) {
+                            fetchForPressCheck(world, touching, i, std::size_t(end));
                             const Contact& contact = world.contacts[std::size_t(touching[i])];
                             presses[i] = std::uint8_t((pressedOnChain(world, contact.shapeA, contact.shapeB) ? 1 : 0) |
                                                       (pressedOnChain(world, contact.shapeB, contact.shapeA) ? 2 : 0));
