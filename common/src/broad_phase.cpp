@@ -136,13 +136,28 @@ bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, cons
 }
 
 bool BroadPhase::growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
+  if (!resizeLeaf(proxyKey, tightAABB, motion)) return false;
+  markGrown(std::span(&proxyKey, 1));
+  return true;
+}
+
+bool BroadPhase::resizeLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
   assert(kindOf(proxyKey) == ProxyKind::Movable);
   if (holds(proxyKey, tightAABB, motion)) return false;
-  DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
-  movable.setLeafBox(nodeOf(proxyKey), fatten(tightAABB, ProxyKind::Movable, motion));
-  movable.markForRebuild(nodeOf(proxyKey));
+  trees_[treeIndex(ProxyKind::Movable)].setLeafBox(nodeOf(proxyKey), fatten(tightAABB, ProxyKind::Movable, motion));
   recordUserBox(proxyKey);
   return true;
+}
+
+void BroadPhase::markGrown(std::span<const std::int32_t> proxyKeys) {
+  // A mark costs little but the wait for the parent's line: fetched this
+  // far ahead, the waits overlap.
+  constexpr std::size_t kParentsAhead = 8;
+  DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
+  for (std::size_t i = 0; i < proxyKeys.size(); ++i) {
+    if (i + kParentsAhead < proxyKeys.size()) movable.fetchParent(nodeOf(proxyKeys[i + kParentsAhead]));
+    movable.markForRebuild(nodeOf(proxyKeys[i]));
+  }
 }
 
 void BroadPhase::queueGrown(std::int32_t proxyKey) { moveBuffer_.push_back(proxyKey); }

@@ -3,9 +3,11 @@
 #include "impulse/world.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <chrono>
 #include <cstring>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -132,12 +134,42 @@ bool staysInFatBox(const WorldData& world, std::int32_t s, const Body& body, con
   return world.broadPhase.fatAABBOfUser(s).contains(anchor.tight.expanded(moved + rounding));
 }
 
+// The leaves one range of bodies grew, whose ancestors are marked for the
+// tree's rebuild a batch at a time (BroadPhase::markGrown). A fixed array:
+// nothing allocates while a step runs.
+class GrownLeaves {
+ public:
+  explicit GrownLeaves(BroadPhase& broadPhase) : broadPhase_(broadPhase) {}
+  ~GrownLeaves() { mark(); }
+  GrownLeaves(const GrownLeaves&) = delete;
+  GrownLeaves& operator=(const GrownLeaves&) = delete;
+
+  void add(std::int32_t proxyKey) {
+    keys_[count_++] = proxyKey;
+    if (count_ == keys_.size()) mark();
+  }
+
+ private:
+  void mark() {
+    broadPhase_.markGrown(std::span(keys_.data(), count_));
+    count_ = 0;
+  }
+
+  BroadPhase& broadPhase_;
+  std::array<std::int32_t, 64> keys_;
+  std::size_t count_ = 0;
+};
+
 // The tight box of shape s, anchored for staysInFatBox; grows its fat box
 // if it left it. Returns whether it did.
-bool growBoxIfEscaped(WorldData& world, std::int32_t s, const Body& body, const ProxyMotion& motion) {
+bool growBoxIfEscaped(WorldData& world, std::int32_t s, const Body& body, const ProxyMotion& motion,
+                      GrownLeaves& grown) {
   const AABB tight = shapeAABB(world, s);
   world.shapeBoxAnchors[std::size_t(s)] = {tight, body.transform.p, body.transform.q, world.shapes[s].generation};
-  return world.broadPhase.growLeaf(world.shapes[s].proxyKey, tight, shapeMotion(world, s, motion));
+  const std::int32_t proxyKey = world.shapes[s].proxyKey;
+  if (!world.broadPhase.resizeLeaf(proxyKey, tight, shapeMotion(world, s, motion))) return false;
+  grown.add(proxyKey);
+  return true;
 }
 
 // Per awake body (in awakeBodies' order), whether it moved fast for
@@ -154,6 +186,7 @@ void growEscapingBoxes(WorldData& world, Real dt) {
   const bool continuous = world.settings.enableContinuous;
   world.tasks.forRanges(std::int32_t(world.awakeBodies.size()), kBodiesPerReachRange,
                         [&](std::int32_t begin, std::int32_t end) {
+                          GrownLeaves grownLeaves(world.broadPhase);
                           for (std::int32_t i = begin; i < end; ++i) {
                             const std::int32_t slot = world.awakeBodies[std::size_t(i)];
                             const Body& body = world.bodies[slot];
@@ -165,7 +198,7 @@ void growEscapingBoxes(WorldData& world, Real dt) {
                             reach.escapes = false;
                             world.forEachShape(slot, [&](std::int32_t s) {
                               const bool grown = !staysInFatBox(world, s, body, reach.motion) &&
-                                                 growBoxIfEscaped(world, s, body, reach.motion);
+                                                 growBoxIfEscaped(world, s, body, reach.motion, grownLeaves);
                               world.shapeGrown[std::size_t(s)] = grown ? 1 : 0;
                               reach.escapes = reach.escapes || grown;
                             });

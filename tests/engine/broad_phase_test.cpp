@@ -54,9 +54,10 @@ struct ModelProxy {
 // Drives a BroadPhase and the model through the same random history of
 // creations, moves, touches and destructions, checking each step against a
 // brute-force pair search.
-// How a step's movers reach the broad phase: one re-insertion each, or
-// enlarged in place and the tree rebuilt once (as the world's step does).
-enum class Moves { OneByOne, InBulk };
+// How a step's movers reach the broad phase: one re-insertion each,
+// enlarged in place and the tree rebuilt once, or enlarged in place with
+// their ancestors marked a batch at a time (as the world's step does).
+enum class Moves { OneByOne, InBulk, InBatches };
 
 class Scenario {
  public:
@@ -79,7 +80,8 @@ class Scenario {
       const Real dy = jump ? large(rng_) : small(rng_);
       move(proxy, shifted(proxy.tight, dx, dy));
     }
-    if (moves_ == Moves::InBulk) broadPhase_.rebuildEnlarged();
+    if (moves_ == Moves::InBatches) markBatch();
+    if (moves_ != Moves::OneByOne) broadPhase_.rebuildEnlarged();
     for (ModelProxy& proxy : proxies_) {
       if (proxy.alive && percent(rng_) < 3) {
         broadPhase_.touchProxy(proxy.key);
@@ -152,8 +154,7 @@ class Scenario {
 
   void move(ModelProxy& proxy, const AABB& tight) {
     const bool leaves = !proxy.fat.contains(tight);
-    const bool moved = moves_ == Moves::InBulk ? broadPhase_.enlargeProxy(proxy.key, tight)
-                                               : broadPhase_.updateProxy(proxy.key, tight);
+    const bool moved = moveProxy(proxy.key, tight);
     ASSERT_EQ(moved, leaves);
     proxy.tight = tight;
     if (leaves) {
@@ -162,10 +163,32 @@ class Scenario {
     }
   }
 
+  bool moveProxy(std::int32_t key, const AABB& tight) {
+    switch (moves_) {
+      case Moves::OneByOne:
+        return broadPhase_.updateProxy(key, tight);
+      case Moves::InBulk:
+        return broadPhase_.enlargeProxy(key, tight);
+      case Moves::InBatches:
+        if (!broadPhase_.resizeLeaf(key, tight, {})) return false;
+        grown_.push_back(key);
+        return true;
+    }
+    return false;
+  }
+
+  // The batch's ancestors marked at once, then its proxies queued.
+  void markBatch() {
+    broadPhase_.markGrown(grown_);
+    for (const std::int32_t key : grown_) broadPhase_.queueGrown(key);
+    grown_.clear();
+  }
+
   std::mt19937 rng_;
   Moves moves_;
   BroadPhase broadPhase_;
   std::vector<ModelProxy> proxies_;
+  std::vector<std::int32_t> grown_;
 };
 
 class BroadPhaseMoves : public ::testing::TestWithParam<Moves> {};
@@ -192,10 +215,19 @@ TEST_P(BroadPhaseMoves, FindsExactlyTheOverlappingPairsInvolvingQueuedProxies) {
 }
 
 std::string movesName(const ::testing::TestParamInfo<Moves>& moves) {
-  return moves.param == Moves::InBulk ? "InBulk" : "OneByOne";
+  switch (moves.param) {
+    case Moves::OneByOne:
+      return "OneByOne";
+    case Moves::InBulk:
+      return "InBulk";
+    case Moves::InBatches:
+      return "InBatches";
+  }
+  return "";
 }
 
-INSTANTIATE_TEST_SUITE_P(OneByOneOrInBulk, BroadPhaseMoves, ::testing::Values(Moves::OneByOne, Moves::InBulk), movesName);
+INSTANTIATE_TEST_SUITE_P(HowMoversArrive, BroadPhaseMoves,
+                         ::testing::Values(Moves::OneByOne, Moves::InBulk, Moves::InBatches), movesName);
 
 TEST(BroadPhase, PairsAreSortedUniqueAndNeverStaticStatic) {
   Scenario scenario(9);

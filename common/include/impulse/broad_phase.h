@@ -90,6 +90,13 @@ class BroadPhase {
   /// be searched, queues it.
   bool growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion);
   void queueGrown(std::int32_t proxyKey);
+  /// growLeaf in two halves, for many leaves at once: resizeLeaf gives the
+  /// leaf its new box (returning whether it had to grow), and markGrown
+  /// marks the ancestors of a batch of grown leaves for the rebuild, each
+  /// leaf's parent (a cache miss in a crowd) fetched a few leaves ahead.
+  /// Side by side for distinct proxies, as growLeaf.
+  bool resizeLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion);
+  void markGrown(std::span<const std::int32_t> proxyKeys);
   /// Whether the proxy's fat AABB still holds its tight box with the motion
   /// it is about to make (then updateProxy and enlargeProxy leave it). Safe
   /// from several threads at once while nothing moves a proxy.

@@ -35,6 +35,11 @@ class DynamicTree {
   /// side for distinct leaves).
   void setLeafBox(std::int32_t node, const AABB& box) { nodes_[node].box = box; }
   void markForRebuild(std::int32_t node);
+  /// Starts loading the node's parent, the first node markForRebuild reads.
+  void fetchParent(std::int32_t node) const {
+    const std::int32_t parent = nodes_[node].parent;
+    if (parent != kNull) __builtin_prefetch(&nodes_[parent]);
+  }
   /// Rebuilds the marked part of the tree, top down, keeping every unmarked
   /// subtree as it is. Leaves keep their node indices. Returns how many
   /// subtrees it joined (0 when nothing was marked).
