@@ -471,8 +471,8 @@ constexpr std::size_t kQueriesPerChunk = 16;
 // passed over like a known one, so a jointed body that keeps moving out of
 // its box does not list its neighbours again every step.
 void searchNewPairs(WorldData& world) {
-  const BroadPhase::KnownPairs known = [&](std::span<ProxyPair> candidates) {
-    for (const ProxyPair& pair : candidates) world.contactByPair.prefetch(contactPairKey(pair.first, pair.second));
+  const BroadPhase::KnownPairs known = [&](std::span<ProxyPair> candidates, std::span<const ProxyPair> next) {
+    for (const ProxyPair& pair : next) world.contactByPair.prefetch(contactPairKey(pair.first, pair.second));
     const auto unknown = std::remove_if(candidates.begin(), candidates.end(), [&](const ProxyPair& pair) {
       return world.contactByPair.contains(contactPairKey(pair.first, pair.second)) || !pairMayTouch(world, pair);
     });

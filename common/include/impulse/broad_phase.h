@@ -117,9 +117,10 @@ class BroadPhase {
   /// Drops from `candidates` (pairs of user values, smaller first) the ones
   /// already known to the caller (that have a contact), keeping the rest at
   /// the front in their order, and returns how many are left. Given a batch
-  /// at a time, so the caller's lookups (mostly a cache miss each) can be
-  /// started together.
-  using KnownPairs = std::function<std::size_t(std::span<ProxyPair> candidates)>;
+  /// at a time, with the batch it will be given next (`next`, possibly
+  /// empty), whose lookups (mostly a cache miss each) the caller can start.
+  using KnownPairs =
+      std::function<std::size_t(std::span<ProxyPair> candidates, std::span<const ProxyPair> next)>;
 
   /// Finds the pairs whose fat AABBs overlap and involve a queued proxy, sorted
   /// and without duplicates, into `pairs` (cleared first), then empties the
