@@ -39,7 +39,7 @@ struct ProxyPair {
 /// leave its deepest overlap 5 % deeper.
 inline constexpr Real kDefaultRoom = Real(0.25);
 /// A polygon's room: on v3's smash, washer, junkyard and tumbler (crowds of
-/// boxes) a tenth rather than a quarter took 6-15 % off a step, the
+/// boxes) a tenth rather than a quarter took 5-10 % off a step, the
 /// collide stage most; the bench's stacks, pyramids and piles keep their
 /// errors. None at all (the speculative distance alone) lets a row of
 /// boxes flying 5 cm apart lose its pairs once their speculative points
