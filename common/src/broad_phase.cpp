@@ -112,10 +112,8 @@ AABB BroadPhase::fatBox(const AABB& tightAABB, const ProxyMotion& motion) {
   return expectedReach(tightAABB, motion).expanded(margin);
 }
 
-std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind,
-                                     const ProxyMotion& motion) {
-  const std::int32_t node =
-      trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind, {.room = motion.room}), userValue);
+std::int32_t BroadPhase::createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind, Real room) {
+  const std::int32_t node = trees_[treeIndex(kind)].createProxy(fatten(tightAABB, kind, {.room = room}), userValue);
   const std::int32_t key = makeKey(node, kind);
   recordUserBox(key);
   // A new static proxy is not queued: it cannot pair with other static proxies,
@@ -144,14 +142,9 @@ bool BroadPhase::updateProxy(std::int32_t proxyKey, const AABB& tightAABB, const
 bool BroadPhase::enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
   // Only the movable tree is rebuilt; a static proxy (teleported) re-inserts.
   if (kindOf(proxyKey) != ProxyKind::Movable) return updateProxy(proxyKey, tightAABB, motion);
-  if (!growLeaf(proxyKey, tightAABB, motion)) return false;
-  queueGrown(proxyKey);
-  return true;
-}
-
-bool BroadPhase::growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion) {
   if (!resizeLeaf(proxyKey, tightAABB, motion)) return false;
   markGrown(std::span(&proxyKey, 1));
+  queueGrown(proxyKey);
   return true;
 }
 

@@ -215,15 +215,8 @@ TEST_P(BroadPhaseMoves, FindsExactlyTheOverlappingPairsInvolvingQueuedProxies) {
 }
 
 std::string movesName(const ::testing::TestParamInfo<Moves>& moves) {
-  switch (moves.param) {
-    case Moves::OneByOne:
-      return "OneByOne";
-    case Moves::InBulk:
-      return "InBulk";
-    case Moves::InBatches:
-      return "InBatches";
-  }
-  return "";
+  constexpr const char* kNames[] = {"OneByOne", "InBulk", "InBatches"};
+  return kNames[static_cast<int>(moves.param)];
 }
 
 INSTANTIATE_TEST_SUITE_P(HowMoversArrive, BroadPhaseMoves,
@@ -321,7 +314,7 @@ TEST(BroadPhase, FatBox_KeepsTheRoomItsMotionGives) {
   // A proxy created with that room gets it from its first box.
   BroadPhase broadPhase;
   const std::int32_t key =
-      broadPhase.createProxy(small, 0, BroadPhase::ProxyKind::Movable, {.room = kPolygonRoom});
+      broadPhase.createProxy(small, 0, BroadPhase::ProxyKind::Movable, kPolygonRoom);
   EXPECT_TRUE(nearlySameBox(broadPhase.fatAABB(key), small.expanded(margin)));
 }
 

@@ -67,10 +67,10 @@ class BroadPhase {
   static AABB fatBox(const AABB& tightAABB, const ProxyMotion& motion);
 
   /// Adds a proxy for a tight AABB; movable proxies are fattened (fatBox,
-  /// with `motion`'s room but no motion: a new body's first step is not
-  /// known yet). Returns a proxy key (tree index and kind packed together).
+  /// with `room` but no motion: a new body's first step is not known yet).
+  /// Returns a proxy key (tree index and kind packed together).
   std::int32_t createProxy(const AABB& tightAABB, std::int32_t userValue, ProxyKind kind,
-                           const ProxyMotion& motion = {});
+                           Real room = kDefaultRoom);
   void destroyProxy(std::int32_t proxyKey);
 
   /// Called with the new tight AABB of a moving proxy. Re-inserts it (and
@@ -82,21 +82,17 @@ class BroadPhase {
   /// movable proxy that left its fat AABB is enlarged in place, and
   /// rebuildEnlarged() must follow before any other change or query.
   bool enlargeProxy(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion = {});
-  /// enlargeProxy of a movable proxy in two halves, for many proxies at
-  /// once. growLeaf, side by side for distinct proxies (it writes only the
-  /// proxy's own leaf and box record, and marks the leaf's ancestors for
-  /// the rebuild), returns whether the proxy left its fat box and grew; for
-  /// each that did, queueGrown, one proxy at a time in the order they are to
-  /// be searched, queues it.
-  bool growLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion);
-  void queueGrown(std::int32_t proxyKey);
-  /// growLeaf in two halves, for many leaves at once: resizeLeaf gives the
-  /// leaf its new box (returning whether it had to grow), and markGrown
-  /// marks the ancestors of a batch of grown leaves for the rebuild, each
-  /// leaf's parent (a cache miss in a crowd) fetched a few leaves ahead.
-  /// Side by side for distinct proxies, as growLeaf.
+  /// enlargeProxy of movable proxies in three parts, for many at once.
+  /// resizeLeaf, side by side for distinct proxies (it writes only the
+  /// proxy's own leaf and box record), gives a proxy that left its fat box
+  /// its new one and returns whether it did; markGrown, side by side for
+  /// distinct batches, marks the ancestors of a batch of such proxies for
+  /// the rebuild, each leaf's parent (a cache miss in a crowd) fetched a
+  /// few leaves ahead; queueGrown, one proxy at a time in the order they
+  /// are to be searched, queues each.
   bool resizeLeaf(std::int32_t proxyKey, const AABB& tightAABB, const ProxyMotion& motion);
   void markGrown(std::span<const std::int32_t> proxyKeys);
+  void queueGrown(std::int32_t proxyKey);
   /// Whether the proxy's fat AABB still holds its tight box with the motion
   /// it is about to make (then updateProxy and enlargeProxy leave it). Safe
   /// from several threads at once while nothing moves a proxy.
