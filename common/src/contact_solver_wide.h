@@ -62,6 +62,9 @@ struct WideContactKernels {
 /// The bundle list of width F in a set (defined by the file of that width).
 template <class F>
 std::vector<WideConstraint<F>>& bundlesOf(WideContactSet& set);
+/// Their cold parts, one per bundle (likewise).
+template <class F>
+std::vector<WideContactCold<F>>& coldPartsOf(WideContactSet& set);
 /// The support bundle list of width F in a set (likewise).
 template <class F>
 std::vector<WideSupportRow<F>>& supportBundlesOf(WideContactSet& set);

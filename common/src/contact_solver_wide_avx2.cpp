@@ -28,6 +28,7 @@ namespace impulse {
 
 struct Avx2Bundles {
   std::vector<WideConstraint<simd::F8>> list;
+  std::vector<WideContactCold<simd::F8>> cold;
   std::vector<WideSupportRow<simd::F8>> support;
 };
 
@@ -39,6 +40,12 @@ template <>
 std::vector<WideConstraint<simd::F8>>& bundlesOf<simd::F8>(WideContactSet& set) {
   if (!set.bundles8) set.bundles8.reset(new Avx2Bundles);
   return set.bundles8->list;
+}
+
+template <>
+std::vector<WideContactCold<simd::F8>>& coldPartsOf<simd::F8>(WideContactSet& set) {
+  if (!set.bundles8) set.bundles8.reset(new Avx2Bundles);
+  return set.bundles8->cold;
 }
 
 template <>

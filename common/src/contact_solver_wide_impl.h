@@ -345,11 +345,11 @@ RefFlags refFlags(std::span<const ConstraintRef* const> refs) {
 // no mass and no points it moves nothing whatever its softness).
 template <class F>
 void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, WideConstraint<F>& w,
-                  BundleInputs<F>& in) {
+                  WideContactCold<F>& cold, BundleInputs<F>& in) {
   const auto field = [&](std::size_t offset) { return ref[floatAt(offset)]; };
   storeIndices(field(offsetof(ConstraintRef, stateA)), w.stateA);
   storeIndices(field(offsetof(ConstraintRef, stateB)), w.stateB);
-  storeIndices(field(offsetof(ConstraintRef, contact)), w.source);
+  storeIndices(field(offsetof(ConstraintRef, contact)), cold.source);
   w.invMassA = field(offsetof(ConstraintRef, invMassA));
   w.invInertiaA = field(offsetof(ConstraintRef, invInertiaA));
   w.invMassB = field(offsetof(ConstraintRef, invMassB));
@@ -369,12 +369,12 @@ void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, W
 // a manifold does not have is all zero, so it never acts.
 template <class F>
 void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, F startImpulse, WideConstraint<F>& w,
-                     BundleInputs<F>& in) {
+                     WideContactCold<F>& cold, BundleInputs<F>& in) {
   const std::size_t manifold = offsetof(ContactSolverPart, manifold);
   w.normalX = part[floatAt(manifold + offsetof(Manifold, normal))];
   w.normalY = part[floatAt(manifold + offsetof(Manifold, normal)) + 1];
   w.rollingImpulse = part[floatAt(manifold + offsetof(Manifold, rollingImpulse))];
-  w.restitution = part[floatAt(offsetof(ContactSolverPart, restitution))];
+  cold.restitution = part[floatAt(offsetof(ContactSolverPart, restitution))];
   w.rollingResistance = part[floatAt(offsetof(ContactSolverPart, rollingResistance))];
   in.staticFriction = part[floatAt(offsetof(ContactSolverPart, staticFriction))];
   in.dynamicFriction = part[floatAt(offsetof(ContactSolverPart, dynamicFriction))];
@@ -408,7 +408,7 @@ void gatherManifolds(const F (&part)[kContactFloats], RefFlags flags, F startImp
 // in use; the others read the padding records.
 template <class F>
 void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& world, const ContactSoftness& softness,
-                 F startImpulse, WideConstraint<F>& w, BundleInputs<F>& in) {
+                 F startImpulse, WideConstraint<F>& w, WideContactCold<F>& cold, BundleInputs<F>& in) {
   const void* refRows[F::kLanes];
   const void* contactRows[F::kLanes];
   for (int lane = 0; lane < F::kLanes; ++lane) {
@@ -421,8 +421,8 @@ void gatherLanes(std::span<const ConstraintRef* const> refs, const WorldData& wo
   F part[kContactFloats];
   loadRecordColumns<F>(refRows, kRefFloats, ref);
   loadRecordColumns<F>(contactRows, kContactFloats, part);
-  gatherBodies(ref, softness, w, in);
-  gatherManifolds(part, refFlags(refs), startImpulse, w, in);
+  gatherBodies(ref, softness, w, cold, in);
+  gatherManifolds(part, refFlags(refs), startImpulse, w, cold, in);
 }
 
 // A ref's start impulse (SupportPass::startImpulses: empty in a step that
@@ -457,7 +457,7 @@ F effectiveMass(const WideConstraint<F>& c, const WidePoint<F>& p, F dx, F dy) {
 
 // holdSpeedFor, lane by lane, on the lanes of `mayHold` (kHold).
 template <class F>
-F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHold, F hangs, Real weightPerMass) {
+F holdSpeedOf(const WideConstraint<F>& c, F loadOverlap, F load, F mayHold, F hangs, Real weightPerMass) {
   const F zero = simd::broadcast<F>(0);
   if (weightPerMass == 0 || !simd::any(mayHold)) return zero;
   const auto ramp = [&](Real HoldRamp::*term) {
@@ -468,7 +468,7 @@ F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHo
   const F rise = (weights - from) / (ramp(&HoldRamp::fullWeights) - from);
   const F share = ramp(&HoldRamp::share) * simd::clamp(rise, zero, simd::broadcast<F>(1));
   const F fastest = simd::broadcast<F>(kHoldSpeedSubSteps * weightPerMass);
-  return simd::select(mayHold, simd::min(share * c.biasRate * p.loadOverlap, fastest), zero);
+  return simd::select(mayHold, simd::min(share * c.biasRate * loadOverlap, fastest), zero);
 }
 
 // Everything a bundle derives from its gathered numbers and the bodies'
@@ -476,7 +476,7 @@ F holdSpeedOf(const WideConstraint<F>& c, const WidePoint<F>& p, F load, F mayHo
 // lanes with a point deeper than its load explains (hasIntrusion).
 template <class F>
 F finishBundle(std::span<const SolverState> states, const WorldSettings& settings, const ContactSoftness& softness,
-               const BundleInputs<F>& in, WideConstraint<F>& c) {
+               const BundleInputs<F>& in, WideConstraint<F>& c, WideContactCold<F>& cold) {
   const F zero = simd::broadcast<F>(0);
   const WideBody<F> a = gather<F>(states, c.stateA);
   const WideBody<F> b = gather<F>(states, c.stateB);
@@ -495,25 +495,26 @@ F finishBundle(std::span<const SolverState> states, const WorldSettings& setting
     p.normalMass = simd::select(present, effectiveMass(c, p, c.normalX, c.normalY), zero);
     p.tangentMass = simd::select(present, effectiveMass(c, p, tx, ty), zero);
     const Relative<F> dv = relativeVelocity(a, b, p);
-    p.relativeVelocity = simd::select(present, dv.vx * c.normalX + dv.vy * c.normalY, zero);
+    cold.relativeVelocity[j] = simd::select(present, dv.vx * c.normalX + dv.vy * c.normalY, zero);
     // The load includes what the support pass carried, or a held-up body's
     // resting overlap would read as an intrusion to push out.
     const F stiffness = p.normalMass * c.massScale * c.biasRate;
     const F load = p.normalImpulse + p.supportImpulse;
-    p.loadOverlap = simd::select(simd::greater(stiffness, zero), c.impulseScale * load / stiffness, zero);
+    const F loadOverlap = simd::select(simd::greater(stiffness, zero), c.impulseScale * load / stiffness, zero);
+    cold.loadOverlap[j] = loadOverlap;
     // pushCapForLoad, lane by lane.
-    const F deep = simd::less(in.separation[j] + p.loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
-    const F loadCap = simd::min(c.biasRate * p.loadOverlap, maxPush);
+    const F deep = simd::less(in.separation[j] + loadOverlap, simd::broadcast<F>(-kIntrusionSlop));
+    const F loadCap = simd::min(c.biasRate * loadOverlap, maxPush);
     const F marginCap =
-        simd::clamp(simd::broadcast<F>(kLoadPushMargin) * c.biasRate * p.loadOverlap, minPush, maxPush);
+        simd::clamp(simd::broadcast<F>(kLoadPushMargin) * c.biasRate * loadOverlap, minPush, maxPush);
     p.pushCap = simd::select(present, simd::select(simd::both(deep, in.bothMove), loadCap, marginCap), zero);
     // Coulomb with two coefficients: a contact that is not slipping is held
     // by static friction; once it slips, dynamic friction opposes it.
     const F sticks = simd::less(simd::abs(dv.vx * tx + dv.vy * ty), stickSpeed);
     p.friction = simd::select(present, simd::select(sticks, in.staticFriction, in.dynamicFriction), zero);
     intrusion = simd::either(intrusion, simd::both(present, deep));
-    p.holdSpeed = holdSpeedOf(c, p, load, simd::select(deep, zero, simd::both(present, in.mayHold)), in.hangs,
-                              softness.weightPerMass);
+    p.holdSpeed = holdSpeedOf(c, loadOverlap, load, simd::select(deep, zero, simd::both(present, in.mayHold)),
+                              in.hangs, softness.weightPerMass);
   }
   return intrusion;
 }
@@ -550,13 +551,15 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
   if (!anyIntrusion) return;
   // Each bundle's pushed lanes side by side, then listed in bundle order.
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  const std::vector<WideContactCold<F>>& cold = coldPartsOf<F>(set);
   set.bundlePushLanes.resize(bundles.size());
   tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t b = begin; b < end; ++b) {
       const WideConstraint<F>& c = bundles[std::size_t(b)];
+      const std::int32_t* source = cold[std::size_t(b)].source;
       std::uint8_t lanes = 0;
       for (int l = 0; l < F::kLanes; ++l) {
-        if (c.source[l] >= 0 && nearIntrusion(set, c.stateA[l], c.stateB[l])) lanes = std::uint8_t(lanes | (1u << l));
+        if (source[l] >= 0 && nearIntrusion(set, c.stateA[l], c.stateB[l])) lanes = std::uint8_t(lanes | (1u << l));
       }
       set.bundlePushLanes[std::size_t(b)] = lanes;
     }
@@ -622,6 +625,7 @@ void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRe
     if (place.bundle >= 0) fetchLines(&supportLaneOf<F>(set, place), sizeof(SupportLaneRecord));
   }
   fetchLinesForWrite(&bundlesOf<F>(set)[std::size_t(b)], sizeof(WideConstraint<F>));
+  fetchLinesForWrite(&coldPartsOf<F>(set)[std::size_t(b)], sizeof(WideContactCold<F>));
   const std::int32_t further = b + kPrefetchBundles;
   if (further >= slices.count()) return;
   const std::int32_t furtherFirst = slices.first[std::size_t(further)];
@@ -637,14 +641,15 @@ void prefetchBundleContacts(const WorldData& world, std::span<const ConstraintRe
 // two conditions, which the solve does not change (its third, that the
 // point pushed, it does).
 template <class F>
-F bouncingAtPrepare(const WideConstraint<F>& c, const WidePoint<F>& p, F threshold) {
-  return simd::both(simd::less(p.relativeVelocity, threshold), simd::notEqual(c.restitution, simd::broadcast<F>(0)));
+F bouncingAtPrepare(const WideContactCold<F>& cold, int j, F threshold) {
+  return simd::both(simd::less(cold.relativeVelocity[j], threshold),
+                    simd::notEqual(cold.restitution, simd::broadcast<F>(0)));
 }
 
 template <class F>
-bool mayBounce(const WideConstraint<F>& c, Real restitutionThreshold) {
+bool mayBounce(const WideContactCold<F>& cold, Real restitutionThreshold) {
   const F threshold = simd::broadcast<F>(-restitutionThreshold);
-  return simd::any(bouncingAtPrepare(c, c.points[0], threshold)) || simd::any(bouncingAtPrepare(c, c.points[1], threshold));
+  return simd::any(bouncingAtPrepare(cold, 0, threshold)) || simd::any(bouncingAtPrepare(cold, 1, threshold));
 }
 
 // Prepares bundle b from its lanes' contacts; returns its lanes with a
@@ -654,16 +659,20 @@ template <class F>
 std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> refs, const ContactSoftness& softness,
                         std::span<const Real> starts, WideContactSet& set, std::int32_t b) {
   WideConstraint<F>& c = bundlesOf<F>(set)[std::size_t(b)];
+  WideContactCold<F>& cold = coldPartsOf<F>(set)[std::size_t(b)];
   const std::int32_t first = set.contactSlices.first[std::size_t(b)];
   const std::span<const std::int32_t> entries(set.order.data() + first, set.contactSlices.lanes[std::size_t(b)]);
   const ConstraintRef* laneRefs[F::kLanes];
   for (std::size_t lane = 0; lane < entries.size(); ++lane) laneRefs[lane] = &refs[std::size_t(entries[lane])];
   BundleInputs<F> inputs;
-  gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, startImpulsesOf<F>(starts, entries), c, inputs);
-  c.quiet = std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; });
-  const std::uint8_t intruding = simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c));
+  gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, startImpulsesOf<F>(starts, entries), c, cold,
+                 inputs);
+  set.bundleQuiet[std::size_t(b)] =
+      std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; }) ? 1 : 0;
+  const std::uint8_t intruding =
+      simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c, cold));
   packSupportLanes(set, c, b, entries);
-  set.bundleMayBounce[std::size_t(b)] = mayBounce(c, world.settings.restitutionThreshold) ? 1 : 0;
+  set.bundleMayBounce[std::size_t(b)] = mayBounce(cold, world.settings.restitutionThreshold) ? 1 : 0;
   return intruding;
 }
 
@@ -677,6 +686,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
 
   auto& bundles = bundlesOf<F>(set);
   bundles.resize(std::size_t(bundleCount));
+  coldPartsOf<F>(set).resize(std::size_t(bundleCount));
+  set.bundleQuiet.resize(std::size_t(bundleCount));
   set.laneSupportRecord.resize(std::size_t(bundleCount) * F::kLanes);
   set.bundleIntrusion.resize(std::size_t(bundleCount));
   set.bundleMayBounce.resize(std::size_t(bundleCount));
@@ -711,8 +722,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   return anyIntrusion;
 }
 
-// visit(bundle) colour by colour; one colour's bundles side by side, since
-// none of their lanes shares a body.
+// visit(bundle, quiet) colour by colour (quiet: WideContactSet::bundleQuiet);
+// one colour's bundles side by side, since none of their lanes shares a body.
 template <class F, class Visit>
 void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& set, Visit&& visit) {
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
@@ -721,7 +732,9 @@ void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& s
     const std::int32_t first = set.colorBundleStart[std::size_t(color)];
     const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
     context.tasks->forRanges(count, kBundlesPerColorRange, [&](std::int32_t begin, std::int32_t end) {
-      for (std::int32_t b = first + begin; b < first + end; ++b) visit(bundles[std::size_t(b)]);
+      for (std::int32_t b = first + begin; b < first + end; ++b) {
+        visit(bundles[std::size_t(b)], set.bundleQuiet[std::size_t(b)] != 0);
+      }
     });
   }
 }
@@ -790,8 +803,8 @@ bool staysQuiet(const WideConstraint<F>& c, const WideBody<F>& a, const WideBody
 
 template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
-    if (c.quiet && holdsNoImpulse(c)) return;
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet) {
+    if (quiet && holdsNoImpulse(c)) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F tx = c.normalY;
@@ -813,12 +826,12 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
 
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c) {
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet) {
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
-    if (c.quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
+    if (quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
     F totalNormalImpulse = simd::broadcast<F>(0);
     for (int k = 0; k < 2; ++k) {
       WidePoint<F>& p = c.points[context.reversePointOrder ? 1 - k : k];
@@ -838,6 +851,7 @@ template <class F>
 void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   const F maxPush = simd::broadcast<F>(-context.maxPushSpeed);
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  const std::vector<WideContactCold<F>>& cold = coldPartsOf<F>(set);
   // The colours run backwards on the sub-steps that reverse the point
   // order. The push starts from rest every sub-step and sweeps once, so the
   // contacts solved last have the last word: in one fixed order a body is
@@ -846,6 +860,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   // each other.
   forEachListedBundleByColor(context, set, set.pushBundles, context.reversePointOrder, [&](std::size_t k) {
     WideConstraint<F>& c = bundles[std::size_t(set.pushBundles[k])];
+    const F* loadOverlap = cold[std::size_t(set.pushBundles[k])].loadOverlap;
     const F pushes = simd::maskOfBits<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
@@ -854,7 +869,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     F intrusions[2];
     F pushed[2];  // the lanes whose point j is pushed
     for (int j = 0; j < 2; ++j) {
-      intrusions[j] = currentSeparation(a, b, c.points[j], dpx, dpy, c) + c.points[j].loadOverlap;
+      intrusions[j] = currentSeparation(a, b, c.points[j], dpx, dpy, c) + loadOverlap[j];
       pushed[j] = simd::both(pushes, simd::less(intrusions[j], simd::broadcast<F>(0)));
     }
     // No pushed lane intrudes (in a tumbling crowd, most quiet bundles):
@@ -879,21 +894,25 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   const F threshold = simd::broadcast<F>(-context.restitutionThreshold);
   // Same rule as the scalar pass: only points that approached fast and
   // pushed, on contacts that bounce at all.
-  auto bouncing = [&](const WideConstraint<F>& c, const WidePoint<F>& p) {
-    return simd::both(bouncingAtPrepare(c, p, threshold), simd::notEqual(p.totalNormalImpulse, simd::broadcast<F>(0)));
+  auto bouncing = [&](const WideContactCold<F>& cold, const WideConstraint<F>& c, int j) {
+    return simd::both(bouncingAtPrepare(cold, j, threshold),
+                      simd::notEqual(c.points[j].totalNormalImpulse, simd::broadcast<F>(0)));
   };
   // Only the bundles that may bounce (mayBounce, when prepared).
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  const std::vector<WideContactCold<F>>& coldParts = coldPartsOf<F>(set);
   forEachListedBundleByColor(context, set, set.bounceBundles, false, [&](std::size_t k) {
     WideConstraint<F>& c = bundles[std::size_t(set.bounceBundles[k])];
+    const WideContactCold<F>& cold = coldParts[std::size_t(set.bounceBundles[k])];
     // Resting contacts never bounce: skip their bodies entirely.
-    if (!simd::any(bouncing(c, c.points[0])) && !simd::any(bouncing(c, c.points[1]))) return;
+    if (!simd::any(bouncing(cold, c, 0)) && !simd::any(bouncing(cold, c, 1))) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
-    for (WidePoint<F>& p : c.points) {
-      F bounces = bouncing(c, p);
+    for (int j = 0; j < 2; ++j) {
+      WidePoint<F>& p = c.points[j];
+      F bounces = bouncing(cold, c, j);
       F vn = normalVelocity(a, b, c, p);
-      F impulse = -(p.normalMass * (vn + c.restitution * p.relativeVelocity));
+      F impulse = -(p.normalMass * (vn + cold.restitution * cold.relativeVelocity[j]));
       F accumulated = simd::max(p.normalImpulse + impulse, simd::broadcast<F>(0));
       impulse = simd::select(bounces, accumulated - p.normalImpulse, simd::broadcast<F>(0));
       p.normalImpulse += impulse;
@@ -909,8 +928,8 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
 // Writes one bundle's impulses into its lanes' manifolds: the support
 // pass's where a lane's contact holds a body up (its `records`).
 template <class F>
-void storeBundleImpulses(const WideContactSet& set, const WideConstraint<F>& w, const std::int32_t* records,
-                         WorldData& world) {
+void storeBundleImpulses(const WideContactSet& set, const WideConstraint<F>& w, const WideContactCold<F>& cold,
+                         const std::int32_t* records, WorldData& world) {
   alignas(16) float rolling[F::kLanes];
   alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], support[2][F::kLanes];
   simd::store(rolling, w.rollingImpulse);
@@ -920,8 +939,8 @@ void storeBundleImpulses(const WideContactSet& set, const WideConstraint<F>& w, 
     simd::store(support[j], w.points[j].supportImpulse);
   }
   for (int lane = 0; lane < F::kLanes; ++lane) {
-    if (w.source[lane] < 0) continue;
-    Manifold& manifold = world.contacts[w.source[lane]].manifold;
+    if (cold.source[lane] < 0) continue;
+    Manifold& manifold = world.contacts[cold.source[lane]].manifold;
     manifold.rollingImpulse = rolling[lane];
     const std::int32_t record = records[lane];
     for (int j = 0; j < manifold.pointCount; ++j) {
@@ -945,12 +964,12 @@ void storeOverflowImpulses(const WideContactSet& set, WorldData& world) {
   }
 }
 
-// Starts loading the manifolds bundle w stores into.
+// Starts loading the manifolds a bundle stores into (`cold`: its cold part).
 template <class F>
-void prefetchStoreTargets(const WideConstraint<F>& w, const WorldData& world) {
+void prefetchStoreTargets(const WideContactCold<F>& cold, const WorldData& world) {
   for (int lane = 0; lane < F::kLanes; ++lane) {
-    if (w.source[lane] < 0) continue;
-    fetchLines(&world.contacts[w.source[lane]].manifold, sizeof(Manifold));
+    if (cold.source[lane] < 0) continue;
+    fetchLines(&world.contacts[cold.source[lane]].manifold, sizeof(Manifold));
   }
 }
 
@@ -960,13 +979,14 @@ template <class F>
 void storeWideImpulses(WideContactSet& set, WorldData& world) {
   collectSupportImpulses<F>(set, world.tasks);
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  const std::vector<WideContactCold<F>>& cold = coldPartsOf<F>(set);
   world.tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
                         [&](std::int32_t begin, std::int32_t end) {
                           visitFetchingAhead(
                               begin, end,
-                              [&](std::int32_t b) { prefetchStoreTargets(bundles[std::size_t(b)], world); },
+                              [&](std::int32_t b) { prefetchStoreTargets(cold[std::size_t(b)], world); },
                               [&](std::int32_t b) {
-                                storeBundleImpulses(set, bundles[std::size_t(b)],
+                                storeBundleImpulses(set, bundles[std::size_t(b)], cold[std::size_t(b)],
                                                     &set.laneSupportRecord[std::size_t(b) * F::kLanes], world);
                               });
                         });

@@ -12,6 +12,11 @@ std::vector<WideConstraint<simd::F4>>& bundlesOf<simd::F4>(WideContactSet& set) 
 }
 
 template <>
+std::vector<WideContactCold<simd::F4>>& coldPartsOf<simd::F4>(WideContactSet& set) {
+  return set.cold4;
+}
+
+template <>
 std::vector<WideSupportRow<simd::F4>>& supportBundlesOf<simd::F4>(WideContactSet& set) {
   return set.support4;
 }
