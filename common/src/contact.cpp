@@ -10,6 +10,7 @@
 
 #include "contact_events.h"
 #include "counting_sort.h"
+#include "manifold_internal.h"
 #include "prefetch.h"
 #include "world_data.h"
 
@@ -226,6 +227,50 @@ bool apartBeyond(const Body& a, const Body& b, Real distance) {
   return (b.transform.p - a.transform.p).squaredNorm() > reach * reach;
 }
 
+// The pair's manifold from its collide function, keeping the impulses of
+// the points that persist.
+void collideAfresh(const WorldData& world, Contact& contact, const Body& a, const Body& b, Real keptWithin) {
+  Manifold next = apartBeyond(a, b, keptWithin)
+                      ? Manifold{}
+                      : contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
+                                        world.shapes[contact.shapeB].ref().geometry, b.transform, keptWithin);
+  if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
+  contact.manifold = next;
+}
+
+// Two circles' manifold computed in place: collideCircles' point, keeping the
+// impulses matchWarmStart would carry over (a circle pair's one point always
+// has id 0), without building a manifold to copy in. In a crowd of circles
+// every pair is computed every step (carriesManifold).
+void updateCircles(const WorldData& world, Contact& contact, const Body& a, const Body& b, Real keptWithin) {
+  Manifold& manifold = contact.manifold;
+  narrow::CirclePoint pair;
+  const bool near = !apartBeyond(a, b, keptWithin);
+  if (near) {
+    pair = narrow::circlesInA(*static_cast<const Circle*>(world.shapes[contact.shapeA].ref().geometry), a.transform,
+                              *static_cast<const Circle*>(world.shapes[contact.shapeB].ref().geometry), b.transform);
+  }
+  if (!near || pair.point.separation >= keptWithin) {
+    manifold = Manifold{};
+    return;
+  }
+  const bool carries = world.settings.enableWarmStarting && manifold.pointCount > 0;
+  ManifoldPoint& point = manifold.points[0];
+  const ManifoldPoint last = point;
+  point = ManifoldPoint{};
+  manifold.points[1] = ManifoldPoint{};
+  narrow::placeInWorld(pair.point, a.transform, b.transform, point);
+  if (carries) {
+    point.normalImpulse = last.normalImpulse;
+    point.tangentImpulse = last.tangentImpulse;
+    point.supportImpulse = last.supportImpulse;
+  } else {
+    manifold.rollingImpulse = 0;
+  }
+  manifold.normal = a.transform.q.apply(pair.normal);
+  manifold.pointCount = 1;
+}
+
 // Reads the bodies and shapes, writes only this contact: contacts can be
 // updated side by side.
 std::uint8_t updateManifold(const WorldData& world, Contact& contact, Real dt) {
@@ -246,14 +291,13 @@ std::uint8_t updateManifold(const WorldData& world, Contact& contact, Real dt) {
     return wakeOutcome(contact, a, b);
   }
   const Real keptWithin = kSpeculativeDistance + reach();
-  Manifold next = apartBeyond(a, b, keptWithin)
-                      ? Manifold{}
-                      : contact.collide(world.shapes[contact.shapeA].ref().geometry, a.transform,
-                                        world.shapes[contact.shapeB].ref().geometry, b.transform, keptWithin);
-  if (world.settings.enableWarmStarting) matchWarmStart(contact.manifold, next);
-  contact.manifold = next;
+  if (carried) {
+    collideAfresh(world, contact, a, b, keptWithin);
+  } else {
+    updateCircles(world, contact, a, b, keptWithin);
+  }
   const bool wasTouching = contact.touching;
-  contact.touching = next.pointCount > 0;
+  contact.touching = contact.manifold.pointCount > 0;
   if (carried) recordFrame(contact, a, b);
   return std::uint8_t(kRecomputed | (contact.touching != wasTouching ? kTouchChanged : 0) | wakeOutcome(contact, a, b));
 }

@@ -219,6 +219,14 @@ EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const
 
 std::uint16_t swapFeatures(std::uint16_t id) { return makeFeatureId(id & 0xFF, id >> 8); }
 
+void placeInWorld(const LocalPoint& local, const Transform& xfA, const Transform& xfB, ManifoldPoint& out) {
+  out.anchorA = xfA.q.apply(local.point);
+  out.anchorB = out.anchorA + (xfA.p - xfB.p);
+  out.point = xfA.p + out.anchorA;
+  out.separation = local.separation;
+  out.id = local.id;
+}
+
 Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, const Transform& xfA,
                  const Transform& xfB, Real speculativeDistance) {
   Manifold manifold;
@@ -226,12 +234,7 @@ Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, co
     if (local.separation >= speculativeDistance) {
       continue;
     }
-    ManifoldPoint& mp = manifold.points[manifold.pointCount++];
-    mp.anchorA = xfA.q.apply(local.point);
-    mp.anchorB = mp.anchorA + (xfA.p - xfB.p);
-    mp.point = xfA.p + mp.anchorA;
-    mp.separation = local.separation;
-    mp.id = local.id;
+    placeInWorld(local, xfA, xfB, manifold.points[manifold.pointCount++]);
   }
   if (manifold.pointCount > 0) {
     manifold.normal = xfA.q.apply(localNormal);
@@ -332,11 +335,16 @@ using namespace narrow;
 // circle B along a unit normal (A's frame). Circle contacts keep id 0 whichever
 // feature of A they touch, so a circle rolling over a polygon's vertex keeps
 // its warm-start impulse.
+LocalPoint circlePoint(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
+                       Real separation) {
+  Vec2 surfaceB = centerB - radiusB * normal;
+  return {Real(0.5) * (surfaceA + surfaceB), separation, makeFeatureId(0, 0)};
+}
+
 Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
                        Real separation, const Transform& xfA, const Transform& xfB,
                        Real speculativeDistance) {
-  Vec2 surfaceB = centerB - radiusB * normal;
-  LocalPoint point{Real(0.5) * (surfaceA + surfaceB), separation, makeFeatureId(0, 0)};
+  const LocalPoint point = circlePoint(surfaceA, centerB, radiusB, normal, separation);
   return toWorld(normal, std::span(&point, 1), xfA, xfB, speculativeDistance);
 }
 
@@ -359,6 +367,13 @@ Manifold circleVertexContact(const Vec2& vertex, Real radiusA, const Vec2& cente
 // midway between the two surface points along the normal.
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
                         const Transform& xfB, Real speculativeDistance) {
+  const CirclePoint pair = circlesInA(a, xfA, b, xfB);
+  return toWorld(pair.normal, std::span(&pair.point, 1), xfA, xfB, speculativeDistance);
+}
+
+namespace narrow {
+
+CirclePoint circlesInA(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB) {
   Vec2 centerB = placeInA(relativeTransform(xfA, xfB), b.center);
   Vec2 offset = a.center.isZero() ? centerB : Vec2(centerB - a.center);
   Real distance = offset.norm();
@@ -366,9 +381,10 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
   // valid push apart, and A's local up is as good as any.
   Vec2 normal = distance > kMinDirectionLength ? Vec2(offset / distance) : Vec2(0, 1);
   Vec2 surfaceA = a.center.isZero() ? Vec2(a.radius * normal) : Vec2(a.center + a.radius * normal);
-  return circleContact(surfaceA, centerB, b.radius, normal, distance - a.radius - b.radius, xfA,
-                       xfB, speculativeDistance);
+  return {normal, circlePoint(surfaceA, centerB, b.radius, normal, distance - a.radius - b.radius)};
 }
+
+}  // namespace narrow
 
 // In A's frame, with c the circle centre, r its radius and R A's rounding:
 //   face i = argmax n_i . (c - v_i)           (max separation s)

@@ -95,6 +95,19 @@ int findIncidentEdge(const Polygon& incident, const Vec2& referenceNormal);
 EdgeContacts clipIncidentEdge(const Polygon& reference, int referenceEdge, const Polygon& incident,
                               int incidentEdge);
 
+// A point computed in A's frame, in the world: its anchors on A and B, the
+// point itself, its separation and id.
+void placeInWorld(const LocalPoint& local, const Transform& xfA, const Transform& xfB, ManifoldPoint& out);
+
+// Two circles in A's frame: the unit normal from A's centre to B's (A's
+// local up when the centres coincide) and their one point, midway between
+// the surfaces, with id 0.
+struct CirclePoint {
+  Vec2 normal = Vec2::Zero();
+  LocalPoint point;
+};
+CirclePoint circlesInA(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB);
+
 // Converts contacts computed in A's frame to world, keeping only those within
 // the speculative distance.
 Manifold toWorld(const Vec2& localNormal, std::span<const LocalPoint> points, const Transform& xfA,
