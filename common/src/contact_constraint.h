@@ -239,6 +239,10 @@ struct WideContactSet {
   /// (ConstraintRef::quiet): its passes first check whether they would
   /// change anything (staysQuiet).
   std::vector<std::uint8_t> bundleQuiet;
+  /// Per contact bundle, the most points a lane has (1 or 2): the warm
+  /// start, solve, relax and push of a bundle of one-point lanes (circles)
+  /// skip the second point, all zero, which would move nothing.
+  std::vector<std::uint8_t> bundlePoints;
   /// Per contact bundle, whether a lane may bounce (mayBounce); the
   /// restitution pass's bundles, in bundle order.
   std::vector<std::uint8_t> bundleMayBounce;

@@ -669,6 +669,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
                  inputs);
   set.bundleQuiet[std::size_t(b)] =
       std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; }) ? 1 : 0;
+  set.bundlePoints[std::size_t(b)] = simd::any(inputs.present[1]) ? 2 : 1;
   const std::uint8_t intruding =
       simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c, cold));
   packSupportLanes(set, c, b, entries);
@@ -688,6 +689,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   bundles.resize(std::size_t(bundleCount));
   coldPartsOf<F>(set).resize(std::size_t(bundleCount));
   set.bundleQuiet.resize(std::size_t(bundleCount));
+  set.bundlePoints.resize(std::size_t(bundleCount));
   set.laneSupportRecord.resize(std::size_t(bundleCount) * F::kLanes);
   set.bundleIntrusion.resize(std::size_t(bundleCount));
   set.bundleMayBounce.resize(std::size_t(bundleCount));
@@ -722,8 +724,9 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   return anyIntrusion;
 }
 
-// visit(bundle, quiet) colour by colour (quiet: WideContactSet::bundleQuiet);
-// one colour's bundles side by side, since none of their lanes shares a body.
+// visit(bundle, quiet, points) colour by colour (WideContactSet::bundleQuiet
+// and bundlePoints); one colour's bundles side by side, since none of their
+// lanes shares a body.
 template <class F, class Visit>
 void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& set, Visit&& visit) {
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
@@ -733,7 +736,7 @@ void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& s
     const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
     context.tasks->forRanges(count, kBundlesPerColorRange, [&](std::int32_t begin, std::int32_t end) {
       for (std::int32_t b = first + begin; b < first + end; ++b) {
-        visit(bundles[std::size_t(b)], set.bundleQuiet[std::size_t(b)] != 0);
+        visit(bundles[std::size_t(b)], set.bundleQuiet[std::size_t(b)] != 0, int(set.bundlePoints[std::size_t(b)]));
       }
     });
   }
@@ -803,13 +806,13 @@ bool staysQuiet(const WideConstraint<F>& c, const WideBody<F>& a, const WideBody
 
 template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet) {
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet, int points) {
     if (quiet && holdsNoImpulse(c)) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F tx = c.normalY;
     F ty = -c.normalX;
-    for (WidePoint<F>& p : c.points) {
+    for (WidePoint<F>& p : std::span(c.points, std::size_t(points))) {
       p.totalNormalImpulse += p.normalImpulse;
       applyWide(a, b, c, p, p.normalImpulse * c.normalX + p.tangentImpulse * tx,
                 p.normalImpulse * c.normalY + p.tangentImpulse * ty);
@@ -826,18 +829,18 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
 
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet) {
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet, int points) {
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
     if (quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
     F totalNormalImpulse = simd::broadcast<F>(0);
-    for (int k = 0; k < 2; ++k) {
-      WidePoint<F>& p = c.points[context.reversePointOrder ? 1 - k : k];
+    for (int k = 0; k < points; ++k) {
+      WidePoint<F>& p = c.points[context.reversePointOrder ? points - 1 - k : k];
       totalNormalImpulse += solveNormal(c, p, a, b, dpx, dpy, context, useBias);
     }
-    for (WidePoint<F>& p : c.points) solveFriction(c, p, a, b);
+    for (WidePoint<F>& p : std::span(c.points, std::size_t(points))) solveFriction(c, p, a, b);
     solveRolling(c, a, b, totalNormalImpulse);
     scatter<F>(context.states, c.stateA, a);
     scatter<F>(context.states, c.stateB, b);
@@ -859,23 +862,25 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
   // and in a packed crowd pairs of circles were squeezed almost through
   // each other.
   forEachListedBundleByColor(context, set, set.pushBundles, context.reversePointOrder, [&](std::size_t k) {
-    WideConstraint<F>& c = bundles[std::size_t(set.pushBundles[k])];
-    const F* loadOverlap = cold[std::size_t(set.pushBundles[k])].loadOverlap;
+    const auto bundle = std::size_t(set.pushBundles[k]);
+    WideConstraint<F>& c = bundles[bundle];
+    const F* loadOverlap = cold[bundle].loadOverlap;
+    const int points = set.bundlePoints[bundle];
     const F pushes = simd::maskOfBits<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
     F intrusions[2];
-    F pushed[2];  // the lanes whose point j is pushed
-    for (int j = 0; j < 2; ++j) {
+    F pushed[2] = {simd::broadcast<F>(0), simd::broadcast<F>(0)};  // the lanes whose point j is pushed
+    for (int j = 0; j < points; ++j) {
       intrusions[j] = currentSeparation(a, b, c.points[j], dpx, dpy, c) + loadOverlap[j];
       pushed[j] = simd::both(pushes, simd::less(intrusions[j], simd::broadcast<F>(0)));
     }
     // No pushed lane intrudes (in a tumbling crowd, most quiet bundles):
     // every impulse below would be zero, and its bodies are not written back.
     if (!simd::any(simd::either(pushed[0], pushed[1]))) return;
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < points; ++j) {
       WidePoint<F>& p = c.points[j];
       F bias = simd::max(c.biasRate * intrusions[j], maxPush);
       F vn = normalVelocity(a, b, c, p);
