@@ -49,6 +49,9 @@ struct ConstraintRef {
   /// contacts are bundled together (colourContacts), so that passes over
   /// bundles that would change nothing skip their bodies' write-back.
   bool quiet : 1 = false;
+  /// Its manifold has two points: each colour's one-point contacts are
+  /// bundled together too, whose passes skip the second point.
+  bool twoPoints : 1 = false;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.
   Real invMassA = 0;

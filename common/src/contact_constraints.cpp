@@ -61,9 +61,21 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
   const Real load = lastLoad(contact.manifold);
-  return {index,     a.state,      b.state,   false,        jointed, facingOf(contact.manifold.normal, up),
-          false,     load == 0 && touches(contact.manifold), quiet(contact.manifold, load),
-          a.invMass, a.invInertia, b.invMass, b.invInertia, load};
+  return {index,
+          a.state,
+          b.state,
+          false,
+          jointed,
+          facingOf(contact.manifold.normal, up),
+          false,
+          load == 0 && touches(contact.manifold),
+          quiet(contact.manifold, load),
+          contact.manifold.pointCount == 2,
+          a.invMass,
+          a.invInertia,
+          b.invMass,
+          b.invInertia,
+          load};
 }
 
 // Contacts ahead of the one read whose lines (the manifold's two, and the
@@ -132,19 +144,29 @@ void markTouchingStates(std::span<const ConstraintRef> refs, std::size_t stateCo
   }
 }
 
+// Keys per colour: whether quiet, then whether of two points.
+constexpr int kKeysPerColor = 4;
+
+// A ref's place within its colour: quiet ones last, and within either part
+// the one-point ones first.
+int keyWithinColor(const ConstraintRef& ref) { return (ref.quiet ? 2 : 0) + (ref.twoPoints ? 1 : 0); }
+
 // Takes each ref a colour from the step's shared colouring and sorts the
-// refs by colour, each colour's quiet ones last: what the wide build cuts
-// into bundles. A colour's contacts share no body, so their order within
-// it changes no result; the overflow's, solved one by one, keep theirs.
+// refs by colour, each colour's quiet ones last and its one-point ones
+// together: what the wide build cuts into bundles. A colour's contacts share
+// no body, so their order within it changes no result; the overflow's,
+// solved one by one, keep theirs.
 void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring, WideContactSet& set) {
   set.colorKey.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const int color = coloring.take(refs[i].stateA, refs[i].stateB);
-    set.colorKey[i] = 2 * color + (color != GraphColoring::kOverflow && refs[i].quiet ? 1 : 0);
+    set.colorKey[i] = kKeysPerColor * color + (color != GraphColoring::kOverflow ? keyWithinColor(refs[i]) : 0);
   }
-  std::array<std::int32_t, 2 * (GraphColoring::kOverflow + 1)> keyStart{};
+  std::array<std::int32_t, kKeysPerColor * (GraphColoring::kOverflow + 1)> keyStart{};
   countingSort(set.colorKey, keyStart, set.order);
-  for (std::size_t color = 0; color <= GraphColoring::kOverflow; ++color) set.colorStart[color] = keyStart[2 * color];
+  for (std::size_t color = 0; color <= GraphColoring::kOverflow; ++color) {
+    set.colorStart[color] = keyStart[kKeysPerColor * color];
+  }
   set.colorStart[GraphColoring::kOverflow + 1] = std::int32_t(refs.size());
 }
 
