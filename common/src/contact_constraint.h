@@ -174,6 +174,27 @@ struct BundleSlices {
   void cut(std::span<const std::int32_t> runStarts, int width, std::span<std::int32_t> runBundleStart);
 };
 
+/// What the passes over a contact bundle read of it besides its fields.
+struct BundleTraits {
+  /// Every lane was quiet when prepared (ConstraintRef::quiet): its passes
+  /// first check whether they would change anything (staysQuiet).
+  bool quiet = false;
+  /// The most points a lane has (1 or 2): the warm start, solve, relax and
+  /// push of a bundle of one-point lanes (circles) skip the second point,
+  /// all zero, which would move nothing.
+  std::uint8_t points = 2;
+  /// A bit per lane whose body A, and B, contacts can move (a mass or an
+  /// inertia to give): only those are written back. A static, kinematic or
+  /// padding lane's body is only read, so any number of lanes of a colour
+  /// may share it (movesBody).
+  std::uint8_t movesA = 0;
+  std::uint8_t movesB = 0;
+};
+
+/// Whether contacts can change a body's motion: the colouring takes a
+/// colour only for such bodies, and the bundles write back only theirs.
+inline bool movesBody(Real invMass, Real invInertia) { return invMass != 0 || invInertia != 0; }
+
 /// WideContactSet::pushZone's marks: a body with an intruding contact, and
 /// the rings of bodies one and two contacts from it.
 inline constexpr std::uint8_t kIntrudingBody = 3;
@@ -238,14 +259,7 @@ struct WideContactSet {
   BundleSlices contactSlices;
   BundleSlices supportSlices;
   std::vector<std::uint8_t> bundleIntrusion;
-  /// Per contact bundle, 1 where every lane was quiet when prepared
-  /// (ConstraintRef::quiet): its passes first check whether they would
-  /// change anything (staysQuiet).
-  std::vector<std::uint8_t> bundleQuiet;
-  /// Per contact bundle, the most points a lane has (1 or 2): the warm
-  /// start, solve, relax and push of a bundle of one-point lanes (circles)
-  /// skip the second point, all zero, which would move nothing.
-  std::vector<std::uint8_t> bundlePoints;
+  std::vector<BundleTraits> bundleTraits;
   /// Per contact bundle, whether a lane may bounce (mayBounce); the
   /// restitution pass's bundles, in bundle order.
   std::vector<std::uint8_t> bundleMayBounce;

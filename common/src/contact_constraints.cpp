@@ -159,8 +159,12 @@ int keyWithinColor(const ConstraintRef& ref) { return (ref.quiet ? 2 : 0) + (ref
 void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring, WideContactSet& set) {
   set.colorKey.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    const int color = coloring.take(refs[i].stateA, refs[i].stateB);
-    set.colorKey[i] = kKeysPerColor * color + (color != GraphColoring::kOverflow ? keyWithinColor(refs[i]) : 0);
+    const ConstraintRef& ref = refs[i];
+    // A body contacts do not move (static, kinematic) is only read: it
+    // takes no colour, or a drum's contacts would take one colour each.
+    const int color = coloring.take(movesBody(ref.invMassA, ref.invInertiaA) ? ref.stateA : 0,
+                                    movesBody(ref.invMassB, ref.invInertiaB) ? ref.stateB : 0);
+    set.colorKey[i] = kKeysPerColor * color + (color != GraphColoring::kOverflow ? keyWithinColor(ref) : 0);
   }
   std::array<std::int32_t, kKeysPerColor * (GraphColoring::kOverflow + 1)> keyStart{};
   countingSort(set.colorKey, keyStart, set.order);

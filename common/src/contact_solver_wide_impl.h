@@ -65,6 +65,20 @@ template <class F>
   simd::storeColumns(columns, rows);
 }
 
+// scatter for a contact bundle's side: only the lanes of `moves`
+// (BundleTraits::movesA or movesB) are written back, the others into a sink.
+template <class F>
+[[gnu::always_inline]] inline void scatterMoving(std::span<SolverState> states, const std::int32_t index[F::kLanes],
+                                                 std::uint8_t moves, const WideBody<F>& body) {
+  float* rows[F::kLanes];
+  alignas(32) float sink[8];
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    rows[lane] = (moves >> lane & 1u) != 0 ? floatsOf(states[index[lane]]) : sink;
+  }
+  const F columns[4] = {body.vx, body.vy, body.w, body.dpx};
+  simd::storeColumns(columns, rows);
+}
+
 template <class F>
 struct Relative {
   F vx, vy;
@@ -652,6 +666,14 @@ bool mayBounce(const WideContactCold<F>& cold, Real restitutionThreshold) {
   return simd::any(bouncingAtPrepare(cold, 0, threshold)) || simd::any(bouncingAtPrepare(cold, 1, threshold));
 }
 
+// The lanes whose body (of inverse mass and inertia as given) contacts move
+// (movesBody), as bits.
+template <class F>
+std::uint8_t movingLanes(F invMass, F invInertia) {
+  const F zero = simd::broadcast<F>(0);
+  return std::uint8_t(simd::bitsOf(simd::either(simd::notEqual(invMass, zero), simd::notEqual(invInertia, zero))));
+}
+
 // Prepares bundle b from its lanes' contacts; returns its lanes with a
 // point deeper than its load explains. Reads only its own lanes' contacts
 // and writes only its own bundle, so bundles fill side by side.
@@ -667,9 +689,11 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   BundleInputs<F> inputs;
   gatherLanes<F>(std::span(laneRefs, entries.size()), world, softness, startImpulsesOf<F>(starts, entries), c, cold,
                  inputs);
-  set.bundleQuiet[std::size_t(b)] =
-      std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; }) ? 1 : 0;
-  set.bundlePoints[std::size_t(b)] = simd::any(inputs.present[1]) ? 2 : 1;
+  BundleTraits& traits = set.bundleTraits[std::size_t(b)];
+  traits.quiet = std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; });
+  traits.points = simd::any(inputs.present[1]) ? 2 : 1;
+  traits.movesA = movingLanes<F>(c.invMassA, c.invInertiaA);
+  traits.movesB = movingLanes<F>(c.invMassB, c.invInertiaB);
   const std::uint8_t intruding =
       simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c, cold));
   packSupportLanes(set, c, b, entries);
@@ -688,8 +712,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   auto& bundles = bundlesOf<F>(set);
   bundles.resize(std::size_t(bundleCount));
   coldPartsOf<F>(set).resize(std::size_t(bundleCount));
-  set.bundleQuiet.resize(std::size_t(bundleCount));
-  set.bundlePoints.resize(std::size_t(bundleCount));
+  set.bundleTraits.resize(std::size_t(bundleCount));
   set.laneSupportRecord.resize(std::size_t(bundleCount) * F::kLanes);
   set.bundleIntrusion.resize(std::size_t(bundleCount));
   set.bundleMayBounce.resize(std::size_t(bundleCount));
@@ -724,9 +747,8 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   return anyIntrusion;
 }
 
-// visit(bundle, quiet, points) colour by colour (WideContactSet::bundleQuiet
-// and bundlePoints); one colour's bundles side by side, since none of their
-// lanes shares a body.
+// visit(bundle, traits) colour by colour; one colour's bundles side by side,
+// since none of their lanes shares a body that they move.
 template <class F, class Visit>
 void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& set, Visit&& visit) {
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
@@ -736,7 +758,7 @@ void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& s
     const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
     context.tasks->forRanges(count, kBundlesPerColorRange, [&](std::int32_t begin, std::int32_t end) {
       for (std::int32_t b = first + begin; b < first + end; ++b) {
-        visit(bundles[std::size_t(b)], set.bundleQuiet[std::size_t(b)] != 0, int(set.bundlePoints[std::size_t(b)]));
+        visit(bundles[std::size_t(b)], set.bundleTraits[std::size_t(b)]);
       }
     });
   }
@@ -806,13 +828,13 @@ bool staysQuiet(const WideConstraint<F>& c, const WideBody<F>& a, const WideBody
 
 template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet, int points) {
-    if (quiet && holdsNoImpulse(c)) return;
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, const BundleTraits& traits) {
+    if (traits.quiet && holdsNoImpulse(c)) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F tx = c.normalY;
     F ty = -c.normalX;
-    for (WidePoint<F>& p : std::span(c.points, std::size_t(points))) {
+    for (WidePoint<F>& p : std::span(c.points, std::size_t(traits.points))) {
       p.totalNormalImpulse += p.normalImpulse;
       applyWide(a, b, c, p, p.normalImpulse * c.normalX + p.tangentImpulse * tx,
                 p.normalImpulse * c.normalY + p.tangentImpulse * ty);
@@ -821,20 +843,21 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
       a.w -= c.invInertiaA * c.rollingImpulse;
       b.w += c.invInertiaB * c.rollingImpulse;
     }
-    scatter<F>(context.states, c.stateA, a);
-    scatter<F>(context.states, c.stateB, b);
+    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
+    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
   });
   warmStartContacts(overflowContext(context, set));
 }
 
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, bool quiet, int points) {
+  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, const BundleTraits& traits) {
+    const int points = traits.points;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
     F dpy = b.dpy - a.dpy;
-    if (quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
+    if (traits.quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
     F totalNormalImpulse = simd::broadcast<F>(0);
     for (int k = 0; k < points; ++k) {
       WidePoint<F>& p = c.points[context.reversePointOrder ? points - 1 - k : k];
@@ -842,8 +865,8 @@ void solveWide(const ContactSolverContext& context, WideContactSet& set, bool us
     }
     for (WidePoint<F>& p : std::span(c.points, std::size_t(points))) solveFriction(c, p, a, b);
     solveRolling(c, a, b, totalNormalImpulse);
-    scatter<F>(context.states, c.stateA, a);
-    scatter<F>(context.states, c.stateB, b);
+    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
+    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
   });
   solveContacts(overflowContext(context, set), useBias);
 }
@@ -865,7 +888,8 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     const auto bundle = std::size_t(set.pushBundles[k]);
     WideConstraint<F>& c = bundles[bundle];
     const F* loadOverlap = cold[bundle].loadOverlap;
-    const int points = set.bundlePoints[bundle];
+    const BundleTraits& traits = set.bundleTraits[bundle];
+    const int points = traits.points;
     const F pushes = simd::maskOfBits<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
@@ -888,8 +912,8 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
       impulse = simd::select(pushed[j], impulse, simd::broadcast<F>(0));
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
-    scatter<F>(context.states, c.stateA, a);
-    scatter<F>(context.states, c.stateB, b);
+    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
+    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
   });
   for (std::int32_t index : set.pushOverflow) pushOverlap(context, set.overflow[std::size_t(index)]);
 }
@@ -907,8 +931,10 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
   const std::vector<WideContactCold<F>>& coldParts = coldPartsOf<F>(set);
   forEachListedBundleByColor(context, set, set.bounceBundles, false, [&](std::size_t k) {
-    WideConstraint<F>& c = bundles[std::size_t(set.bounceBundles[k])];
-    const WideContactCold<F>& cold = coldParts[std::size_t(set.bounceBundles[k])];
+    const auto bundle = std::size_t(set.bounceBundles[k]);
+    WideConstraint<F>& c = bundles[bundle];
+    const WideContactCold<F>& cold = coldParts[bundle];
+    const BundleTraits& traits = set.bundleTraits[bundle];
     // Resting contacts never bounce: skip their bodies entirely.
     if (!simd::any(bouncing(cold, c, 0)) && !simd::any(bouncing(cold, c, 1))) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
@@ -924,8 +950,8 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
       p.totalNormalImpulse += impulse;
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
-    scatter<F>(context.states, c.stateA, a);
-    scatter<F>(context.states, c.stateB, b);
+    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
+    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
   });
   applyRestitution(overflowContext(context, set));
 }

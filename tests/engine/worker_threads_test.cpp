@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -156,6 +158,42 @@ void buildStruckPyramidWakingSleepers(World& world) {
   }
 }
 
+// A kinematic drum of 24 capsule staves turning at 1 rad/s around 2 000
+// circles and boxes: its hundreds of contacts all read the drum, which
+// takes no colour (contacts cannot move it), so many lanes of a colour share
+// it on several threads at once.
+void buildTurningKinematicDrum(World& world) {
+  constexpr int kStaves = 24;
+  constexpr Real kRadius = 14;
+  const auto stave = [&](int i) {
+    const Real step = 2 * std::numbers::pi_v<Real> / kStaves;
+    const auto at = [&](Real angle) { return Vec2(kRadius * std::cos(angle), kRadius * std::sin(angle)); };
+    return Shape::makeCapsule(at(step * Real(i)), at(step * Real(i + 1)), Real(0.3));
+  };
+  BodyDef drum;
+  drum.shape = stave(0);
+  drum.position = Vec2(0, 20);
+  drum.properties.isKinematic = true;
+  drum.angularVelocity = 1;
+  const CreateResult created = world.createBody(drum);
+  ASSERT_TRUE(created.ok()) << created.error;
+  for (int i = 1; i < kStaves; ++i) {
+    ShapeDef def;
+    def.shape = stave(i);
+    ASSERT_TRUE(world.createShape(created.id, def).ok());
+  }
+  std::mt19937 random(7);
+  std::uniform_real_distribution<Real> offset(-9, 9);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 centre = Vec2(0, 20) + Vec2(offset(random), offset(random));
+    if (i % 2 == 0) {
+      world.createCircle(centre, Real(0.2));
+    } else {
+      addBox(world, {.center = centre, .halfWidth = Real(0.2), .halfHeight = Real(0.2)});
+    }
+  }
+}
+
 WorldSettings wideSettings(const TaskSettings& tasks) {
   WorldSettings settings;
   settings.bounds = {Vec2(-150, -50), Vec2(150, 250)};
@@ -236,6 +274,12 @@ TEST(WorkerThreads, GridOfLimitedMotorisedSprungJointsGivesTheSameBitsOnOneToThr
   const std::vector<std::uint64_t> one = hashesAfterEachStep(buildTurningJointGrid, {}, 60);
   EXPECT_NE(one.front(), one.back()) << "the grid swings";
   expectSameBitsOn({2, 3}, buildTurningJointGrid, one);
+}
+
+TEST(WorkerThreads, TurningKinematicDrumGivesTheSameBitsOnOneToThreeThreads) {
+  const std::vector<std::uint64_t> one = hashesAfterEachStep(buildTurningKinematicDrum, {}, 90);
+  EXPECT_NE(one.front(), one.back()) << "the scene moves";
+  expectSameBitsOn({2, 3}, buildTurningKinematicDrum, one);
 }
 
 TEST(WorkerThreads, HailThroughAThinWallGivesTheSameBitsOnOneAndTwoThreads) {
