@@ -254,22 +254,30 @@ TEST(Rooms, CliJoinsARoomAndListsRooms) {
 }
 
 // One overloaded room keeps its own thread busy; another room on the pool
-// keeps its tick rate. The heavy room: a pile of circles stepped with many
+// keeps its tick rate. The heavy room: a pile of circles and capsules stepped with many
 // sub-steps (--substeps applies to every room; the light room is empty, so
 // it costs almost nothing there).
 TEST(Rooms, SlowRoomDoesNotDelayAnother) {
-  const double tickHz = kTestTickHz;
+  // A tick half as short again as the other tests': the heavy room's ticks
+  // take about twice its period.
+  const double tickHz = 1.5 * kTestTickHz;
   ServerProcess server({"--tick-hz", std::to_string(int(tickHz)), "--snapshot-hz", "10",
-                        // 64 sub-steps on 8000 circles: overloaded on an idle
-                        // machine too (32 on 4000 ran 11 ms of a 16.7 ms tick).
-                        "--substeps", "64", "--room-threads", "2",
+                        // 64 sub-steps (the most) on 11 200 circles and
+                        // capsules: overloaded on an idle machine too (on
+                        // 6 963 circles a tick took 14.8 ms of 16.7 once
+                        // one-point contact bundles halved their solve).
+                        "--substeps", "64", "--room-threads", "2", "--max-bodies", "20000",
                         "--max-commands-per-second", "1000000"});
   client::Client heavy(inRoom(server.port(), "heavy"));
   client::Client light(inRoom(server.port(), "light"));
   std::vector<v1::ClientMessage> pile;
-  for (int row = 0; row < 100; ++row) {
-    for (int column = 0; column < 80; ++column) {
-      pile.push_back(client::spawnCircle({-20 + 0.5 * column, 2 + 0.5 * row}, 0.2));
+  // Within the preset's bounds, (-25, -25) to (50, 45).
+  for (int row = 0; row < 80; ++row) {
+    for (int column = 0; column < 140; ++column) {
+      const double x = -24 + 0.5 * column;
+      const double y = 2 + 0.5 * row;
+      pile.push_back((row + column) % 2 == 0 ? client::spawnCircle({x, y}, 0.2)
+                                             : client::spawnCapsule({x - 0.1, y}, {x + 0.1, y}, 0.15));
     }
   }
   requestAll(heavy, pile);
