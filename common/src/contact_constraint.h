@@ -189,6 +189,9 @@ struct BundleTraits {
   /// may share it (movesBody).
   std::uint8_t movesA = 0;
   std::uint8_t movesB = 0;
+  /// A lane reads a body it does not move (on a state, not in movesA or
+  /// movesB): only then are the masks read (scatterBundle).
+  bool readsOnly = false;
 };
 
 /// Whether contacts can change a body's motion: the colouring takes a

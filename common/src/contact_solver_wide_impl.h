@@ -65,8 +65,9 @@ template <class F>
   simd::storeColumns(columns, rows);
 }
 
-// scatter for a contact bundle's side: only the lanes of `moves`
-// (BundleTraits::movesA or movesB) are written back, the others into a sink.
+// scatter of one side of a contact bundle that reads a body it does not
+// move: only the lanes of `moves` (BundleTraits::movesA or movesB) are
+// written back, the others into a sink.
 template <class F>
 [[gnu::always_inline]] inline void scatterMoving(std::span<SolverState> states, const std::int32_t index[F::kLanes],
                                                  std::uint8_t moves, const WideBody<F>& body) {
@@ -77,6 +78,23 @@ template <class F>
   }
   const F columns[4] = {body.vx, body.vy, body.w, body.dpx};
   simd::storeColumns(columns, rows);
+}
+
+// Writes a contact bundle's bodies back: as scatter, or, in a bundle that
+// reads a body contacts do not move (BundleTraits::readsOnly), only the
+// lanes whose body it moves. (Testing every bundle's lanes for it made the
+// warm start of v3's many_pyramids, with no such body, a tenth slower.)
+template <class F>
+[[gnu::always_inline]] inline void scatterBundle(std::span<SolverState> states, const WideConstraint<F>& c,
+                                                 const BundleTraits& traits, const WideBody<F>& a,
+                                                 const WideBody<F>& b) {
+  if (!traits.readsOnly) {
+    scatter<F>(states, c.stateA, a);
+    scatter<F>(states, c.stateB, b);
+    return;
+  }
+  scatterMoving<F>(states, c.stateA, traits.movesA, a);
+  scatterMoving<F>(states, c.stateB, traits.movesB, b);
 }
 
 template <class F>
@@ -156,7 +174,7 @@ F currentSeparation(const WideBody<F>& a, const WideBody<F>& b, const P& p, F dp
 }
 
 template <class F>
-F solveNormal(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy,
+[[gnu::always_inline]] inline F solveNormal(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy,
                const ContactSolverContext& context, bool useBias) {
   Bias<F> bias = contactBias(c, p, currentSeparation(a, b, p, dpx, dpy, c), context, useBias);
   F vn = normalVelocity(a, b, c, p);
@@ -170,7 +188,7 @@ F solveNormal(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>
 }
 
 template <class F>
-void solveFriction(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b) {
+[[gnu::always_inline]] inline void solveFriction(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b) {
   F tx = c.normalY;  // right perpendicular of the normal
   F ty = -c.normalX;
   Relative<F> dv = relativeVelocity(a, b, p);
@@ -674,6 +692,16 @@ std::uint8_t movingLanes(F invMass, F invInertia) {
   return std::uint8_t(simd::bitsOf(simd::either(simd::notEqual(invMass, zero), simd::notEqual(invInertia, zero))));
 }
 
+// The lanes on a body's state rather than the static dummy's, as bits.
+template <class F>
+std::uint8_t lanesWithState(const std::int32_t (&state)[F::kLanes]) {
+  std::uint8_t lanes = 0;
+  for (int lane = 0; lane < F::kLanes; ++lane) {
+    if (state[lane] != 0) lanes = std::uint8_t(lanes | (1u << lane));
+  }
+  return lanes;
+}
+
 // Prepares bundle b from its lanes' contacts; returns its lanes with a
 // point deeper than its load explains. Reads only its own lanes' contacts
 // and writes only its own bundle, so bundles fill side by side.
@@ -694,6 +722,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   traits.points = simd::any(inputs.present[1]) ? 2 : 1;
   traits.movesA = movingLanes<F>(c.invMassA, c.invInertiaA);
   traits.movesB = movingLanes<F>(c.invMassB, c.invInertiaB);
+  traits.readsOnly = traits.movesA != lanesWithState<F>(c.stateA) || traits.movesB != lanesWithState<F>(c.stateB);
   const std::uint8_t intruding =
       simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c, cold));
   packSupportLanes(set, c, b, entries);
@@ -826,47 +855,65 @@ bool staysQuiet(const WideConstraint<F>& c, const WideBody<F>& a, const WideBody
   return !simd::any(acts);
 }
 
+// The warm start of a bundle's first `points` points.
+template <int points, class F>
+[[gnu::always_inline]] inline void warmStartPoints(WideConstraint<F>& c, WideBody<F>& a, WideBody<F>& b) {
+  const F tx = c.normalY;
+  const F ty = -c.normalX;
+  for (int j = 0; j < points; ++j) {
+    WidePoint<F>& p = c.points[j];
+    p.totalNormalImpulse += p.normalImpulse;
+    applyWide(a, b, c, p, p.normalImpulse * c.normalX + p.tangentImpulse * tx,
+              p.normalImpulse * c.normalY + p.tangentImpulse * ty);
+  }
+}
+
 template <class F>
 void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
   forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, const BundleTraits& traits) {
     if (traits.quiet && holdsNoImpulse(c)) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
-    F tx = c.normalY;
-    F ty = -c.normalX;
-    for (WidePoint<F>& p : std::span(c.points, std::size_t(traits.points))) {
-      p.totalNormalImpulse += p.normalImpulse;
-      applyWide(a, b, c, p, p.normalImpulse * c.normalX + p.tangentImpulse * tx,
-                p.normalImpulse * c.normalY + p.tangentImpulse * ty);
+    if (traits.points == 2) {
+      warmStartPoints<2>(c, a, b);
+    } else {
+      warmStartPoints<1>(c, a, b);
     }
     if (anyRolling(c)) {
       a.w -= c.invInertiaA * c.rollingImpulse;
       b.w += c.invInertiaB * c.rollingImpulse;
     }
-    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
-    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
+    scatterBundle<F>(context.states, c, traits, a, b);
   });
   warmStartContacts(overflowContext(context, set));
+}
+
+// The normal and friction rows of a bundle's first `points` points (a
+// fixed count, as warmStartPoints); returns the normal impulse they hold.
+template <int points, class F>
+[[gnu::always_inline]] inline F solvePoints(WideConstraint<F>& c, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy, const ContactSolverContext& context,
+              bool useBias) {
+  F totalNormalImpulse = simd::broadcast<F>(0);
+  for (int k = 0; k < points; ++k) {
+    WidePoint<F>& p = c.points[context.reversePointOrder ? points - 1 - k : k];
+    totalNormalImpulse += solveNormal(c, p, a, b, dpx, dpy, context, useBias);
+  }
+  for (int j = 0; j < points; ++j) solveFriction(c, c.points[j], a, b);
+  return totalNormalImpulse;
 }
 
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
   forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, const BundleTraits& traits) {
-    const int points = traits.points;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
-    F dpx = b.dpx - a.dpx;
-    F dpy = b.dpy - a.dpy;
+    const F dpx = b.dpx - a.dpx;
+    const F dpy = b.dpy - a.dpy;
     if (traits.quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
-    F totalNormalImpulse = simd::broadcast<F>(0);
-    for (int k = 0; k < points; ++k) {
-      WidePoint<F>& p = c.points[context.reversePointOrder ? points - 1 - k : k];
-      totalNormalImpulse += solveNormal(c, p, a, b, dpx, dpy, context, useBias);
-    }
-    for (WidePoint<F>& p : std::span(c.points, std::size_t(points))) solveFriction(c, p, a, b);
+    const F totalNormalImpulse = traits.points == 2 ? solvePoints<2>(c, a, b, dpx, dpy, context, useBias)
+                                                    : solvePoints<1>(c, a, b, dpx, dpy, context, useBias);
     solveRolling(c, a, b, totalNormalImpulse);
-    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
-    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
+    scatterBundle<F>(context.states, c, traits, a, b);
   });
   solveContacts(overflowContext(context, set), useBias);
 }
@@ -912,8 +959,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
       impulse = simd::select(pushed[j], impulse, simd::broadcast<F>(0));
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
-    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
-    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
+    scatterBundle<F>(context.states, c, traits, a, b);
   });
   for (std::int32_t index : set.pushOverflow) pushOverlap(context, set.overflow[std::size_t(index)]);
 }
@@ -950,8 +996,7 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
       p.totalNormalImpulse += impulse;
       applyWide(a, b, c, p, impulse * c.normalX, impulse * c.normalY);
     }
-    scatterMoving<F>(context.states, c.stateA, traits.movesA, a);
-    scatterMoving<F>(context.states, c.stateB, traits.movesB, b);
+    scatterBundle<F>(context.states, c, traits, a, b);
   });
   applyRestitution(overflowContext(context, set));
 }
