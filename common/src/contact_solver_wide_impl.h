@@ -174,8 +174,8 @@ F currentSeparation(const WideBody<F>& a, const WideBody<F>& b, const P& p, F dp
 }
 
 template <class F>
-[[gnu::always_inline]] inline F solveNormal(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy,
-               const ContactSolverContext& context, bool useBias) {
+[[gnu::always_inline]] inline F solveNormal(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b,
+                                            F dpx, F dpy, const ContactSolverContext& context, bool useBias) {
   Bias<F> bias = contactBias(c, p, currentSeparation(a, b, p, dpx, dpy, c), context, useBias);
   F vn = normalVelocity(a, b, c, p);
   F impulse = -(p.normalMass * bias.massScale * (vn + bias.bias)) - bias.impulseScale * p.normalImpulse;
@@ -188,7 +188,8 @@ template <class F>
 }
 
 template <class F>
-[[gnu::always_inline]] inline void solveFriction(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a, WideBody<F>& b) {
+[[gnu::always_inline]] inline void solveFriction(WideConstraint<F>& c, WidePoint<F>& p, WideBody<F>& a,
+                                                WideBody<F>& b) {
   F tx = c.normalY;  // right perpendicular of the normal
   F ty = -c.normalX;
   Relative<F> dv = relativeVelocity(a, b, p);
@@ -891,8 +892,8 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
 // The normal and friction rows of a bundle's first `points` points (a
 // fixed count, as warmStartPoints); returns the normal impulse they hold.
 template <int points, class F>
-[[gnu::always_inline]] inline F solvePoints(WideConstraint<F>& c, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy, const ContactSolverContext& context,
-              bool useBias) {
+[[gnu::always_inline]] inline F solvePoints(WideConstraint<F>& c, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy,
+                                            const ContactSolverContext& context, bool useBias) {
   F totalNormalImpulse = simd::broadcast<F>(0);
   for (int k = 0; k < points; ++k) {
     WidePoint<F>& p = c.points[context.reversePointOrder ? points - 1 - k : k];
