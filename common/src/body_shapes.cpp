@@ -113,7 +113,7 @@ void changeShapeInteraction(WorldData& world, std::int32_t s, const ShapeInterac
 void createShapeProxy(WorldData& world, std::int32_t s) {
   ShapeSlot& slot = world.shapes[s];
   slot.proxyKey = world.broadPhase.createProxy(shapeAABB(world, s), s, proxyKindOf(world.bodies[slot.body]),
-                                               shapeMotion(world, s, {}).room);
+                                               shapeRoom(world, s));
 }
 
 void detachShape(WorldData& world, std::int32_t s) {

@@ -60,17 +60,22 @@ void enlistContact(WorldData& world, std::int32_t index) {
   world.contactByPair.insert(contact.pairKey);
 }
 
-// Carries impulses of points that persist (same feature id) into the new
-// manifold, so the solver starts from last step's answer.
+// A point that persists (same feature id) keeps last step's impulses, so the
+// solver starts from last step's answer.
+void carryImpulses(const ManifoldPoint& old, ManifoldPoint& point) {
+  point.normalImpulse = old.normalImpulse;
+  point.tangentImpulse = old.tangentImpulse;
+  point.supportImpulse = old.supportImpulse;
+}
+
+// carryImpulses for every point of the new manifold that persists, and the
+// rolling impulse where it has points.
 void matchWarmStart(const Manifold& previous, Manifold& next) {
   for (int i = 0; i < next.pointCount; ++i) {
     ManifoldPoint& point = next.points[i];
     for (int j = 0; j < previous.pointCount; ++j) {
-      const ManifoldPoint& old = previous.points[j];
-      if (old.id != point.id) continue;
-      point.normalImpulse = old.normalImpulse;
-      point.tangentImpulse = old.tangentImpulse;
-      point.supportImpulse = old.supportImpulse;
+      if (previous.points[j].id != point.id) continue;
+      carryImpulses(previous.points[j], point);
       break;
     }
   }
@@ -244,26 +249,24 @@ void collideAfresh(const WorldData& world, Contact& contact, const Body& a, cons
 // every pair is computed every step (carriesManifold).
 void updateCircles(const WorldData& world, Contact& contact, const Body& a, const Body& b, Real keptWithin) {
   Manifold& manifold = contact.manifold;
-  narrow::CirclePoint pair;
-  const bool near = !apartBeyond(a, b, keptWithin);
-  if (near) {
-    pair = narrow::circlesInA(*static_cast<const Circle*>(world.shapes[contact.shapeA].ref().geometry), a.transform,
-                              *static_cast<const Circle*>(world.shapes[contact.shapeB].ref().geometry), b.transform);
+  if (apartBeyond(a, b, keptWithin)) {
+    manifold = Manifold{};
+    return;
   }
-  if (!near || pair.point.separation >= keptWithin) {
+  const narrow::CirclePoint pair =
+      narrow::circlesInA(*static_cast<const Circle*>(world.shapes[contact.shapeA].ref().geometry), a.transform,
+                         *static_cast<const Circle*>(world.shapes[contact.shapeB].ref().geometry), b.transform);
+  if (pair.point.separation >= keptWithin) {
     manifold = Manifold{};
     return;
   }
   const bool carries = world.settings.enableWarmStarting && manifold.pointCount > 0;
-  ManifoldPoint& point = manifold.points[0];
-  const ManifoldPoint last = point;
-  point = ManifoldPoint{};
+  const ManifoldPoint last = manifold.points[0];
+  manifold.points[0] = ManifoldPoint{};
   manifold.points[1] = ManifoldPoint{};
-  narrow::placeInWorld(pair.point, a.transform, b.transform, point);
+  narrow::placeInWorld(pair.point, a.transform, b.transform, manifold.points[0]);
   if (carries) {
-    point.normalImpulse = last.normalImpulse;
-    point.tangentImpulse = last.tangentImpulse;
-    point.supportImpulse = last.supportImpulse;
+    carryImpulses(last, manifold.points[0]);
   } else {
     manifold.rollingImpulse = 0;
   }

@@ -192,6 +192,9 @@ struct BundleTraits {
   /// A lane reads a body it does not move (on a state, not in movesA or
   /// movesB): only then are the masks read (scatterBundle).
   bool readsOnly = false;
+  /// A lane may bounce (approached faster than the restitution threshold
+  /// when prepared, on a contact that bounces at all).
+  bool mayBounce = false;
 };
 
 /// Whether contacts can change a body's motion: the colouring takes a
@@ -263,9 +266,8 @@ struct WideContactSet {
   BundleSlices supportSlices;
   std::vector<std::uint8_t> bundleIntrusion;
   std::vector<BundleTraits> bundleTraits;
-  /// Per contact bundle, whether a lane may bounce (mayBounce); the
-  /// restitution pass's bundles, in bundle order.
-  std::vector<std::uint8_t> bundleMayBounce;
+  /// The restitution pass's bundles (BundleTraits::mayBounce), in bundle
+  /// order.
   std::vector<std::int32_t> bounceBundles;
 };
 

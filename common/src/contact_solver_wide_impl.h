@@ -51,23 +51,29 @@ template <class F>
   return bodyOfRows<F>(rows);
 }
 
-// Writes velocities back (the first four floats, delta position unchanged).
-// Lanes on the static dummy write into a sink instead: their inverse mass is
-// zero, so they would write the zeros they read, but bundles of one colour
-// run on several threads and must not write one state together.
+// Writes velocities back (the first four floats, delta position unchanged)
+// through `rows`, one per lane.
+template <class F>
+[[gnu::always_inline]] inline void storeVelocities(float* const (&rows)[F::kLanes], const WideBody<F>& body) {
+  const F columns[4] = {body.vx, body.vy, body.w, body.dpx};
+  simd::storeColumns(columns, rows);
+}
+
+// Every lane but those on the static dummy, which write into a sink: their
+// inverse mass is zero, so they would write the zeros they read, but
+// bundles of one colour run on several threads and must not write one
+// state together.
 template <class F>
 [[gnu::always_inline]] inline void scatter(std::span<SolverState> states, const std::int32_t index[F::kLanes],
                                            const WideBody<F>& body) {
   float* rows[F::kLanes];
   alignas(32) float sink[8];
   for (int lane = 0; lane < F::kLanes; ++lane) rows[lane] = index[lane] != 0 ? floatsOf(states[index[lane]]) : sink;
-  const F columns[4] = {body.vx, body.vy, body.w, body.dpx};
-  simd::storeColumns(columns, rows);
+  storeVelocities<F>(rows, body);
 }
 
-// scatter of one side of a contact bundle that reads a body it does not
-// move: only the lanes of `moves` (BundleTraits::movesA or movesB) are
-// written back, the others into a sink.
+// One side of a contact bundle that reads a body it does not move: only the
+// lanes of `moves` (BundleTraits::movesA or movesB), the others into a sink.
 template <class F>
 [[gnu::always_inline]] inline void scatterMoving(std::span<SolverState> states, const std::int32_t index[F::kLanes],
                                                  std::uint8_t moves, const WideBody<F>& body) {
@@ -76,8 +82,7 @@ template <class F>
   for (int lane = 0; lane < F::kLanes; ++lane) {
     rows[lane] = (moves >> lane & 1u) != 0 ? floatsOf(states[index[lane]]) : sink;
   }
-  const F columns[4] = {body.vx, body.vy, body.w, body.dpx};
-  simd::storeColumns(columns, rows);
+  storeVelocities<F>(rows, body);
 }
 
 // Writes a contact bundle's bodies back: as scatter, or, in a bundle that
@@ -583,16 +588,15 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
   set.pushedContacts = 0;
   if (!anyIntrusion) return;
   // Each bundle's pushed lanes side by side, then listed in bundle order.
+  // A padding lane's states are both the static dummy's, never marked.
   const std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
-  const std::vector<WideContactCold<F>>& cold = coldPartsOf<F>(set);
   set.bundlePushLanes.resize(bundles.size());
   tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerRange, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t b = begin; b < end; ++b) {
       const WideConstraint<F>& c = bundles[std::size_t(b)];
-      const std::int32_t* source = cold[std::size_t(b)].source;
       std::uint8_t lanes = 0;
       for (int l = 0; l < F::kLanes; ++l) {
-        if (source[l] >= 0 && nearIntrusion(set, c.stateA[l], c.stateB[l])) lanes = std::uint8_t(lanes | (1u << l));
+        if (nearIntrusion(set, c.stateA[l], c.stateB[l])) lanes = std::uint8_t(lanes | (1u << l));
       }
       set.bundlePushLanes[std::size_t(b)] = lanes;
     }
@@ -727,7 +731,7 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   const std::uint8_t intruding =
       simd::bitsOf(finishBundle(world.solverStates, world.settings, softness, inputs, c, cold));
   packSupportLanes(set, c, b, entries);
-  set.bundleMayBounce[std::size_t(b)] = mayBounce(cold, world.settings.restitutionThreshold) ? 1 : 0;
+  traits.mayBounce = mayBounce(cold, world.settings.restitutionThreshold);
   return intruding;
 }
 
@@ -745,7 +749,6 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   set.bundleTraits.resize(std::size_t(bundleCount));
   set.laneSupportRecord.resize(std::size_t(bundleCount) * F::kLanes);
   set.bundleIntrusion.resize(std::size_t(bundleCount));
-  set.bundleMayBounce.resize(std::size_t(bundleCount));
   const std::span<const Real> starts = support.startImpulses();
   world.tasks.forRanges(bundleCount, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
     visitFetchingAhead(
@@ -757,7 +760,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
 
   set.bounceBundles.clear();
   for (std::int32_t b = 0; b < bundleCount; ++b) {
-    if (set.bundleMayBounce[std::size_t(b)] != 0) set.bounceBundles.push_back(b);
+    if (set.bundleTraits[std::size_t(b)].mayBounce) set.bounceBundles.push_back(b);
   }
   set.overflow.clear();
   set.overflowIntrudes.clear();

@@ -331,20 +331,21 @@ namespace {
 
 using namespace narrow;
 
-// Single-point contact between a point of A's surface and the centre of a
-// circle B along a unit normal (A's frame). Circle contacts keep id 0 whichever
-// feature of A they touch, so a circle rolling over a polygon's vertex keeps
-// its warm-start impulse.
-LocalPoint circlePoint(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
-                       Real separation) {
+// The point midway between a point of A's surface and a circle B's surface
+// along a unit normal (A's frame), with id 0: circle contacts keep id 0
+// whichever feature of A they touch, so a circle rolling over a polygon's
+// vertex keeps its warm-start impulse.
+LocalPoint midSurfacePoint(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
+                           Real separation) {
   Vec2 surfaceB = centerB - radiusB * normal;
   return {Real(0.5) * (surfaceA + surfaceB), separation, makeFeatureId(0, 0)};
 }
 
+// That point as a single-point contact.
 Manifold circleContact(const Vec2& surfaceA, const Vec2& centerB, Real radiusB, const Vec2& normal,
                        Real separation, const Transform& xfA, const Transform& xfB,
                        Real speculativeDistance) {
-  const LocalPoint point = circlePoint(surfaceA, centerB, radiusB, normal, separation);
+  const LocalPoint point = midSurfacePoint(surfaceA, centerB, radiusB, normal, separation);
   return toWorld(normal, std::span(&point, 1), xfA, xfB, speculativeDistance);
 }
 
@@ -381,7 +382,7 @@ CirclePoint circlesInA(const Circle& a, const Transform& xfA, const Circle& b, c
   // valid push apart, and A's local up is as good as any.
   Vec2 normal = distance > kMinDirectionLength ? Vec2(offset / distance) : Vec2(0, 1);
   Vec2 surfaceA = a.center.isZero() ? Vec2(a.radius * normal) : Vec2(a.center + a.radius * normal);
-  return {normal, circlePoint(surfaceA, centerB, b.radius, normal, distance - a.radius - b.radius)};
+  return {normal, midSurfacePoint(surfaceA, centerB, b.radius, normal, distance - a.radius - b.radius)};
 }
 
 }  // namespace narrow

@@ -273,8 +273,12 @@ const Body* WorldData::find(BodyId id) const { return findLive(bodies, id); }
 ShapeSlot* WorldData::find(ShapeId id) { return findLive(shapes, id); }
 const ShapeSlot* WorldData::find(ShapeId id) const { return findLive(shapes, id); }
 
+Real shapeRoom(const WorldData& world, std::int32_t shape) {
+  return world.shapes[shape].type() == ShapeType::Polygon ? kPolygonRoom : kDefaultRoom;
+}
+
 ProxyMotion shapeMotion(const WorldData& world, std::int32_t shape, ProxyMotion bodyMotion) {
-  bodyMotion.room = world.shapes[shape].type() == ShapeType::Polygon ? kPolygonRoom : kDefaultRoom;
+  bodyMotion.room = shapeRoom(world, shape);
   return bodyMotion;
 }
 

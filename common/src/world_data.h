@@ -281,8 +281,10 @@ void setContactEventFlags(const WorldData& world, Contact& contact);
 void publishEvents(WorldData& world);
 // world.cpp: the shape's tight box where its body is now.
 AABB shapeAABB(const WorldData& world, std::int32_t shape);
-// world.cpp: the body's expected motion as the broad phase takes it for one
-// of its shapes, with the room the shape's type keeps (kPolygonRoom).
+// world.cpp: the room the shape's type keeps in its fat box (kPolygonRoom),
+// and the body's expected motion as the broad phase takes it for one of its
+// shapes, with that room.
+Real shapeRoom(const WorldData& world, std::int32_t shape);
 ProxyMotion shapeMotion(const WorldData& world, std::int32_t shape, ProxyMotion bodyMotion);
 // world.cpp: the broad phase learns where the body went (every shape's proxy)
 // and, for dt > 0, where its velocity takes it over a step of dt (0: a body
