@@ -282,7 +282,7 @@ void DynamicTree::joinUnderNode(std::int32_t parent, std::int32_t child1, std::i
 
 DynamicTree::TreeNode DynamicTree::packed(const Node& node) {
   const bool leaf = node.isLeaf() && node.height == 0;
-  return {node.box, node.parent, node.child1, leaf ? node.userValue : node.child2, node.height, false};
+  return {{}, node.box, node.parent, node.child1, leaf ? node.userValue : node.child2, node.height, false};
 }
 
 DynamicTree::Node DynamicTree::unpacked(const TreeNode& node) {
@@ -309,6 +309,7 @@ bool DynamicTree::restore(const State& state) {
   candidate.root_ = state.root;
   candidate.freeList_ = state.freeList;
   candidate.leafCount_ = state.leafCount;
+  candidate.copyAllChildBoxes();
   if (!candidate.isValid()) return false;
   for (const TreeNode& node : candidate.nodes_) {
     if (node.height == 0 && !(isFinite(node.box.lower) && isFinite(node.box.upper))) return false;
@@ -316,6 +317,18 @@ bool DynamicTree::restore(const State& state) {
   *this = std::move(candidate);
   reserveBuildItems();
   return true;
+}
+
+// A saved tree keeps no copies of children's boxes: they are taken from
+// the children (where both are nodes; isValid rejects the rest).
+void DynamicTree::copyAllChildBoxes() {
+  const auto size = static_cast<std::int32_t>(nodes_.size());
+  auto inRange = [size](std::int32_t index) { return index >= 0 && index < size; };
+  for (TreeNode& node : nodes_) {
+    if (node.height <= 0 || !inRange(node.child1) || !inRange(node.child2)) continue;
+    node.childBoxes[0] = nodes_[node.child1].box;
+    node.childBoxes[1] = nodes_[node.child2].box;
+  }
 }
 
 // A rebuild joins at most every node; its scratch grows with the node
@@ -329,11 +342,14 @@ void DynamicTree::reserveBuildItems() {
 }
 
 void DynamicTree::shift(const Vec2d& offset) {
+  // The copies of children's boxes move as the boxes do, rounded alike.
+  auto shiftBox = [&](AABB& box) {
+    box.lower = Vec2(shiftedDown(box.lower.x(), offset.x()), shiftedDown(box.lower.y(), offset.y()));
+    box.upper = Vec2(shiftedUp(box.upper.x(), offset.x()), shiftedUp(box.upper.y(), offset.y()));
+  };
   for (TreeNode& node : nodes_) {
-    node.box.lower = Vec2(shiftedDown(node.box.lower.x(), offset.x()),
-                          shiftedDown(node.box.lower.y(), offset.y()));
-    node.box.upper = Vec2(shiftedUp(node.box.upper.x(), offset.x()),
-                          shiftedUp(node.box.upper.y(), offset.y()));
+    shiftBox(node.box);
+    for (AABB& childBox : node.childBoxes) shiftBox(childBox);
   }
 }
 
@@ -512,8 +528,17 @@ void DynamicTree::refit(std::int32_t node) {
   TreeNode& n = nodes_[node];
   const TreeNode& a = nodes_[n.child1];
   const TreeNode& b = nodes_[n.child2];
+  n.childBoxes[0] = a.box;
+  n.childBoxes[1] = b.box;
   n.box = a.box.unite(b.box);
   n.height = static_cast<std::int16_t>(1 + std::max(a.height, b.height));
+}
+
+void DynamicTree::copyBoxToParent(std::int32_t node) {
+  const std::int32_t parent = nodes_[node].parent;
+  if (parent == kNull) return;
+  TreeNode& p = nodes_[parent];
+  p.childBoxes[p.child1 == node ? 0 : 1] = nodes_[node].box;
 }
 
 // Walks up from `node`, whose box and height still hold their values from
@@ -524,9 +549,12 @@ void DynamicTree::refitAncestors(std::int32_t node, bool trySwaps) {
     const int oldHeight = nodes_[node].height;
     node = balance(node, trySwaps);
     // A subtree that keeps its box and height changes nothing above it (a leaf
-    // moving inside a crowd stops here, long before the root).
+    // moving inside a crowd stops here, long before the root) but the
+    // parent's copy of its box: a rotation may have put another node in
+    // its place, whose box the parent copied before it was refitted.
     const TreeNode& top = nodes_[node];
     if (top.height == oldHeight && top.box.lower == oldBox.lower && top.box.upper == oldBox.upper) {
+      copyBoxToParent(node);
       return;
     }
     node = top.parent;
@@ -634,9 +662,10 @@ bool DynamicTree::isValidNode(std::int32_t index) const {
   const TreeNode& a = nodes_[node.child1];
   const TreeNode& b = nodes_[node.child2];
   const AABB enclosing = a.box.unite(b.box);
+  auto same = [](const AABB& x, const AABB& y) { return x.lower == y.lower && x.upper == y.upper; };
   return a.parent == index && b.parent == index && a.height >= 0 && b.height >= 0 &&
-         node.height == 1 + std::max(a.height, b.height) &&
-         node.box.lower == enclosing.lower && node.box.upper == enclosing.upper;
+         node.height == 1 + std::max(a.height, b.height) && same(node.box, enclosing) &&
+         same(node.childBoxes[0], a.box) && same(node.childBoxes[1], b.box);
 }
 
 // Number of nodes on the free list, or -1 when it is broken (a cycle, an index

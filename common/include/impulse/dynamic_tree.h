@@ -129,11 +129,14 @@ class DynamicTree {
   bool isValid() const;
 
  private:
-  // A node as the tree keeps it: 32 bytes on a 32-byte boundary, so that
-  // testing a node's box reads one cache line (at 36 bytes, 44% of the
-  // nodes straddled two). A leaf has no children and keeps its user value
-  // in child2.
-  struct alignas(32) TreeNode {
+  // A node as the tree keeps it: one cache line, on a line's boundary. An
+  // inner node keeps a copy of its children's boxes (childBoxes, in child
+  // order), so that a query decides where to go next from the node it is
+  // at, one line, rather than from its two children's lines (in a crowd's
+  // pair search most of the time went to those loads). A leaf has no
+  // children and keeps its user value in child2.
+  struct alignas(64) TreeNode {
+    AABB childBoxes[2];
     AABB box;
     std::int32_t parent = kNull;
     std::int32_t child1 = kNull;
@@ -144,7 +147,7 @@ class DynamicTree {
     bool enlarged = false;
     bool isLeaf() const { return child1 == kNull; }
   };
-  static_assert(sizeof(TreeNode) == 32);
+  static_assert(sizeof(TreeNode) == 64);
   static TreeNode packed(const Node& node);
   static Node unpacked(const TreeNode& node);
 
@@ -154,7 +157,12 @@ class DynamicTree {
   void removeLeaf(std::int32_t leaf);
   std::int32_t findBestSibling(const AABB& leafBox) const;
   void replaceChild(std::int32_t parent, std::int32_t oldChild, std::int32_t newChild);
+  // Sets the node's box and height from its children's, and its copies of
+  // their boxes.
   void refit(std::int32_t node);
+  // Copies the node's box into its parent's copy of it.
+  void copyBoxToParent(std::int32_t node);
+  void copyAllChildBoxes();
   void refitAncestors(std::int32_t node, bool trySwaps);
   std::int32_t balance(std::int32_t node, bool trySwaps);
   std::int32_t rotateUp(std::int32_t node, std::int32_t child, bool trySwaps);
@@ -225,18 +233,20 @@ class DynamicTree {
   // rebuilds the whole tree.
   static constexpr int kStackSize = 256;
   static constexpr int kMaxHeight = kStackSize - 2;
-  // Starts loading the nodes of an inner node's children, whose boxes a
-  // query tests once it pops the node: they arrive while the nodes pushed
-  // after it are searched (in a crowd's pair search the queries spent most
-  // of their time on the loads of node boxes). Returns the node.
-  std::int32_t fetchChildren(std::int32_t node) const;
+  // Starts loading a node a query pushes, whose line it reads once it pops
+  // the node: it arrives while the nodes pushed after it are searched.
+  // Returns the node.
+  std::int32_t fetch(std::int32_t node) const {
+    __builtin_prefetch(&nodes_[node]);
+    return node;
+  }
 };
 
 template <typename Visit>
 void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
   if (root_ == kNull || !nodes_[root_].box.overlaps(queryBox)) return;
-  // Only nodes whose box overlaps go on the stack: both children of a node
-  // are tested together, so their two loads (often cache misses) overlap.
+  // Only nodes whose box overlaps go on the stack, tested from their
+  // parent's copies of their boxes.
   std::int32_t stack[kStackSize];
   int count = 0;
   stack[count++] = root_;
@@ -247,20 +257,11 @@ void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
       if (!visit(index)) return;
       continue;
     }
-    const bool first = nodes_[node.child1].box.overlaps(queryBox);
-    const bool second = nodes_[node.child2].box.overlaps(queryBox);
-    if (first) stack[count++] = fetchChildren(node.child1);
-    if (second) stack[count++] = fetchChildren(node.child2);
+    const bool first = node.childBoxes[0].overlaps(queryBox);
+    const bool second = node.childBoxes[1].overlaps(queryBox);
+    if (first) stack[count++] = fetch(node.child1);
+    if (second) stack[count++] = fetch(node.child2);
   }
-}
-
-inline std::int32_t DynamicTree::fetchChildren(std::int32_t index) const {
-  const TreeNode& node = nodes_[index];
-  if (!node.isLeaf()) {
-    __builtin_prefetch(&nodes_[node.child1]);
-    __builtin_prefetch(&nodes_[node.child2]);
-  }
-  return index;
 }
 
 // Where the segment origin + t * translation, t in [0, maxFraction], is
