@@ -88,14 +88,8 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
 // perf samples).
 constexpr std::int32_t kRefPrefetchDistance = 16;
 
-// The lines of a body that refOf reads, from its inverse mass to whether it
-// is awake (the last fetched on its own: a body does not start on a line).
-void fetchRefSide(const Body& body) {
-  const char* first = reinterpret_cast<const char*>(&body.invMass);
-  const char* last = reinterpret_cast<const char*>(&body.awake);
-  fetchLines(first, std::size_t(last - first));
-  fetchLines(last);
-}
+// The line of a body that refOf reads: its first (Body's layout).
+void fetchRefSide(const Body& body) { fetchLines(&body); }
 
 // The fetches for entry j of the narrow phase's list (see above).
 void fetchAhead(const WorldData& world, std::span<ConstraintRef> refs, std::span<const std::int32_t> refOfUnsorted,
