@@ -25,23 +25,27 @@
 
 namespace impulse {
 
-struct ShapeSlot {
+// Laid out by who reads it: the first cache line holds what every step
+// reads of a moving body's shapes (the narrow phase the geometry; the
+// boxes' update the geometry, its body, the next shape, the proxy and the
+// generation), the rest what pairs read when they begin.
+struct alignas(64) ShapeSlot {
   /// The geometry, in the body's frame (origin at its centre of mass): its
   /// type and its address in that type's pool (ShapeGeometries).
   ShapeRef geometry;
-  /// The material's coefficients with any override applied.
-  MaterialProperties coefficients{};
-  ShapeInteraction interaction;
-  /// The geometry's place in its type's pool.
-  std::int32_t geometryIndex = kNullIndex;
-  /// Rolling resistance acts on round shapes only: their radius, else 0.
-  Real rollingRadius = 0;
   std::int32_t body = kNullIndex;
   std::int32_t nextInBody = kNullIndex;
   std::int32_t proxyKey = kNullIndex;
   std::uint32_t generation = 0;
+  /// Rolling resistance acts on round shapes only: their radius, else 0.
+  Real rollingRadius = 0;
+  /// The geometry's place in its type's pool.
+  std::int32_t geometryIndex = kNullIndex;
   Material material = Material::Solid;
   bool alive = false;
+  /// The material's coefficients with any override applied.
+  MaterialProperties coefficients{};
+  ShapeInteraction interaction;
 
   ShapeType type() const { return geometry.type; }
   ShapeRef ref() const { return geometry; }
