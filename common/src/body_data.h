@@ -15,9 +15,9 @@ namespace impulse {
 // properties().
 // Laid out by who reads what, on whole cache lines: the first line holds
 // what the narrow phase and the solver's contact refs read of every
-// touching body (after the properties, which a base must open with), the
-// second its mass and what sleeping, continuous collision and the lists
-// read, the third what the step's force and island passes read.
+// touching body (after the properties, which a base must open with); the
+// first two all that the solver's load and finish of an awake body read;
+// the third what island walks, events and the fields read.
 struct alignas(64) Body : BodyProperties {
   BodyProperties& properties() { return *this; }
   const BodyProperties& properties() const { return *this; }
@@ -49,15 +49,15 @@ struct alignas(64) Body : BodyProperties {
   Rot rotation0;
   // First of this body's shapes (ShapeSlot::nextInBody links the rest).
   std::int32_t shapeHead = kNullIndex;
-  std::int32_t shapeCount = 0;
+  Vec2 force = Vec2::Zero();
+  Real torque = 0;
+
   // Head of this body's contact edge list (edge_list.h).
   std::int32_t contactHead = kNullIndex;
+  std::int32_t shapeCount = 0;
   std::uint32_t generation = 0;
-
-  Vec2 force = Vec2::Zero();
   // How fast the fields' part of `force` changes over the step (field.cpp).
   Vec2 fieldForceChange = Vec2::Zero();
-  Real torque = 0;
   std::uint64_t islandMark = 0;
   std::uint64_t creationOrder = 0;
 };
