@@ -534,13 +534,6 @@ void DynamicTree::refit(std::int32_t node) {
   n.height = static_cast<std::int16_t>(1 + std::max(a.height, b.height));
 }
 
-void DynamicTree::copyBoxToParent(std::int32_t node) {
-  const std::int32_t parent = nodes_[node].parent;
-  if (parent == kNull) return;
-  TreeNode& p = nodes_[parent];
-  p.childBoxes[p.child1 == node ? 0 : 1] = nodes_[node].box;
-}
-
 // Walks up from `node`, whose box and height still hold their values from
 // before the change below it, balancing and refitting each ancestor.
 void DynamicTree::refitAncestors(std::int32_t node, bool trySwaps) {
@@ -549,12 +542,11 @@ void DynamicTree::refitAncestors(std::int32_t node, bool trySwaps) {
     const int oldHeight = nodes_[node].height;
     node = balance(node, trySwaps);
     // A subtree that keeps its box and height changes nothing above it (a leaf
-    // moving inside a crowd stops here, long before the root) but the
-    // parent's copy of its box: a rotation may have put another node in
-    // its place, whose box the parent copied before it was refitted.
+    // moving inside a crowd stops here, long before the root), not even the
+    // parent's copy of its box, which is still the old box (a rotation here
+    // puts another node in its place with the same box).
     const TreeNode& top = nodes_[node];
     if (top.height == oldHeight && top.box.lower == oldBox.lower && top.box.upper == oldBox.upper) {
-      copyBoxToParent(node);
       return;
     }
     node = top.parent;

@@ -160,8 +160,6 @@ class DynamicTree {
   // Sets the node's box and height from its children's, and its copies of
   // their boxes.
   void refit(std::int32_t node);
-  // Copies the node's box into its parent's copy of it.
-  void copyBoxToParent(std::int32_t node);
   void copyAllChildBoxes();
   void refitAncestors(std::int32_t node, bool trySwaps);
   std::int32_t balance(std::int32_t node, bool trySwaps);
