@@ -339,9 +339,9 @@ constexpr std::int32_t kContactPrefetchDistance = 6;
 constexpr std::int32_t kBodyPrefetchDistance = 3;
 constexpr std::int32_t kGeometryPrefetchDistance = 2;
 
-// The lines of a body the update reads: its first (pose, velocity, mass,
-// extent, whether awake) and its second (its centre of mass, which the
-// closing reach reads).
+// The lines of a body the update reads: its first (pose, linear velocity,
+// inverse masses, extent, whether awake) and its second (its centre of
+// mass, which the closing reach reads).
 void fetchNarrowPhaseLines(const Body& body) {
   const auto* first = reinterpret_cast<const char*>(&body);
   const auto* center = reinterpret_cast<const char*>(&body.mass.center);

@@ -319,8 +319,9 @@ bool DynamicTree::restore(const State& state) {
   return true;
 }
 
-// A saved tree keeps no copies of children's boxes: they are taken from
-// the children (where both are nodes; isValid rejects the rest).
+// Every inner node's copies of its children's boxes, taken from the
+// children: after a shift, and for a restored tree, which keeps no copies
+// (where both children are nodes; isValid rejects the rest).
 void DynamicTree::copyAllChildBoxes() {
   const auto size = static_cast<std::int32_t>(nodes_.size());
   auto inRange = [size](std::int32_t index) { return index >= 0 && index < size; };
@@ -342,15 +343,13 @@ void DynamicTree::reserveBuildItems() {
 }
 
 void DynamicTree::shift(const Vec2d& offset) {
-  // The copies of children's boxes move as the boxes do, rounded alike.
-  auto shiftBox = [&](AABB& box) {
-    box.lower = Vec2(shiftedDown(box.lower.x(), offset.x()), shiftedDown(box.lower.y(), offset.y()));
-    box.upper = Vec2(shiftedUp(box.upper.x(), offset.x()), shiftedUp(box.upper.y(), offset.y()));
-  };
   for (TreeNode& node : nodes_) {
-    shiftBox(node.box);
-    for (AABB& childBox : node.childBoxes) shiftBox(childBox);
+    node.box.lower = Vec2(shiftedDown(node.box.lower.x(), offset.x()),
+                          shiftedDown(node.box.lower.y(), offset.y()));
+    node.box.upper = Vec2(shiftedUp(node.box.upper.x(), offset.x()),
+                          shiftedUp(node.box.upper.y(), offset.y()));
   }
+  copyAllChildBoxes();
 }
 
 int DynamicTree::height() const { return root_ == kNull ? 0 : nodes_[root_].height; }

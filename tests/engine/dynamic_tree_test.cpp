@@ -172,6 +172,23 @@ TEST(DynamicTree, QueryReturnsExactlyTheOverlappingLeaves) {
   expectQueriesMatchBruteForce(tree, kept, source);
 }
 
+TEST(DynamicTree, ShiftedTree_StaysValid_HoldsEachBoxMoved_AndQueriesExactly) {
+  DynamicTree tree;
+  BoxSource source(23);
+  std::vector<Leaf> leaves = addRandomLeaves(tree, source, 1000);
+  const Vec2d offset(-40.25, 25.5);
+  tree.shift(offset);
+  // isValid checks every inner node's copies of its children's boxes too.
+  ASSERT_TRUE(tree.isValid());
+  const Vec2 move(Real(offset.x()), Real(offset.y()));
+  for (Leaf& leaf : leaves) {
+    const AABB moved{leaf.box.lower - move, leaf.box.upper - move};
+    ASSERT_TRUE(tree.box(leaf.node).contains(moved));
+    leaf.box = tree.box(leaf.node);
+  }
+  expectQueriesMatchBruteForce(tree, leaves, source);
+}
+
 TEST(DynamicTree, QueryStopsWhenVisitReturnsFalse) {
   DynamicTree tree;
   for (int i = 0; i < 10; ++i) tree.createProxy(makeBox(0, 0, 1, 1), i);
