@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "graph_coloring.h"
 #include "impulse/scenes/stress.h"
 #include "impulse/world.h"
 #include "world_test_support.h"
@@ -196,6 +197,37 @@ TEST(Stacking, HeavyBoxHoldsOnLightBoxes_AtMassRatioOneToHundred) {
     EXPECT_NEAR(s.angle, 0, 0.005);
   }
   EXPECT_EQ(world.awakeBodyCount(), 0);
+}
+
+// A board carrying 80 boxes touches more bodies than there are colours
+// (GraphColoring::kColorCount, 64): the contacts that find none are solved
+// one by one after the coloured ones. They hold their boxes up as the
+// coloured ones do, and the board lies level on the ground.
+TEST(Stacking, BoardCarryingEightyBoxes_HoldsEveryOne_ThoughItsContactsOutnumberTheColours) {
+  constexpr Real kPitch = Real(0.5);
+  World world;
+  addGround(world, 0, 24);
+  const BodyId board = addBox(
+      world, {.center = Vec2(0, Real(0.25)), .halfWidth = Real(20.5), .halfHeight = Real(0.25), .material = Material::Wood});
+  std::vector<BodyId> boxes;
+  for (int i = 0; i < 80; ++i) {
+    boxes.push_back(addBox(world, {.center = Vec2(kPitch * (Real(i) - Real(39.5)), Real(0.7)),
+                                   .halfWidth = Real(0.2),
+                                   .halfHeight = Real(0.2)}));
+  }
+  simulate(world, 3);
+
+  ASSERT_GT(world.contactCount(), GraphColoring::kColorCount);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    SCOPED_TRACE(i);
+    const BodyState s = stateOf(world, boxes[i]);
+    // Two contacts' slop (5 mm each) at most: on the board, the board on the ground.
+    EXPECT_NEAR(s.position.y(), 0.7, 0.01);
+    EXPECT_NEAR(s.position.x(), kPitch * (double(i) - 39.5), 0.005);
+    EXPECT_NEAR(s.angle, 0, 0.005);
+  }
+  EXPECT_NEAR(stateOf(world, board).position.y(), 0.25, 0.005);
+  EXPECT_NEAR(stateOf(world, board).angle, 0, 0.001);
 }
 
 // A FOAM box on a FOAM box sinks too little for the support pass to hold
