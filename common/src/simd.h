@@ -66,6 +66,16 @@ inline F4 load<F4>(const float* p) {
   return {_mm_loadu_ps(p)};
 }
 
+/// Lanes of 32-bit integers from p[0], p[1], ... (an index column), and
+/// back: one vector move each way (width-generic code).
+template <class F>
+F loadInts(const std::int32_t* p);
+template <>
+inline F4 loadInts<F4>(const std::int32_t* p) {
+  return {_mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))};
+}
+inline void storeInts(std::int32_t* p, F4 a) { _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm_castps_si128(a.v)); }
+
 /// x in every lane of F (width-generic code).
 template <class F>
 F broadcast(float x);

@@ -28,6 +28,13 @@ inline F8 load<F8>(const float* p) {
   return {_mm256_loadu_ps(p)};
 }
 template <>
+inline F8 loadInts<F8>(const std::int32_t* p) {
+  return {_mm256_castsi256_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)))};
+}
+inline void storeInts(std::int32_t* p, F8 a) {
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), _mm256_castps_si256(a.v));
+}
+template <>
 inline F8 maskOfBits<F8>(std::uint8_t bits) {
   const __m256i laneBit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
   return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), laneBit), laneBit))};
