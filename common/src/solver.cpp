@@ -115,13 +115,23 @@ void integratePosition(SolverState& state, Real h) {
 
 // Whole bundles of states side by side (WideContactKernels::integratePositions),
 // the few left over one at a time.
-void integratePositions(WorldData& world, Real h) {
-  const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
+void integrateRange(const WideContactKernels& kernels, std::span<SolverState> range, Real h) {
+  for (std::size_t k = kernels.integratePositions(range, h); k < range.size(); ++k) integratePosition(range[k], h);
+}
+
+// visit(range, first) for ranges of the awake bodies' solver states side by
+// side; `first` is the range's first state.
+template <class Visit>
+void forEachStateRange(WorldData& world, Visit&& visit) {
   const std::size_t count = world.solverStates.size();
   world.tasks.forRanges(std::int32_t(count) - 1, kBodiesPerRange, [&](std::int32_t begin, std::int32_t end) {
-    const std::span<SolverState> range(world.solverStates.data() + begin + 1, std::size_t(end - begin));
-    for (std::size_t k = kernels.integratePositions(range, h); k < range.size(); ++k) integratePosition(range[k], h);
+    visit(std::span<SolverState>(world.solverStates.data() + begin + 1, std::size_t(end - begin)), std::size_t(begin + 1));
   });
+}
+
+void integratePositions(WorldData& world, Real h) {
+  const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
+  forEachStateRange(world, [&](std::span<SolverState> range, std::size_t) { integrateRange(kernels, range, h); });
 }
 
 // A body being pushed out of an overlap moves without velocity; it must not
@@ -134,8 +144,9 @@ void keepAwakeWhilePushed(WorldData& world, const SolverIntegration& in, const S
 // Split impulse for intrusions: the push pass runs on pseudo velocities that
 // move the bodies this sub-step and are then dropped, so pushing overlap out
 // never becomes real velocity. The real velocities are parked meanwhile.
-// Each body's end (moving by both, taking back the real velocity) is one
-// pass: a pass over the bodies costs a hand-off between threads.
+// Each range of bodies ends in one hand-off (a pass over the bodies costs
+// one between threads): moved by both velocities, whole bundles of them at
+// once as integratePositions moves them, then given back the real one.
 void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* const> kinds,
                                 const SubStep& sub, Real h) {
   const std::size_t count = world.solverStates.size();
@@ -148,15 +159,21 @@ void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* cons
   });
   for (ConstraintKind* kind : kinds) kind->push(sub);
   for (ConstraintKind* kind : kinds) kind->pushExact(sub);
-  forEachState(world, count, [&](std::size_t k) {
-    SolverState& state = world.solverStates[k];
-    keepAwakeWhilePushed(world, world.solverIntegration[k], state);
-    const ParkedVelocity& real = world.parkedVelocities[k];
-    state.linearVelocity += real.linear;
-    state.angularVelocity += real.angular;
-    integratePosition(state, h);
-    state.linearVelocity = real.linear;
-    state.angularVelocity = real.angular;
+  const WideContactKernels& kernels = wideContactKernels(world.settings.simdWidth);
+  forEachStateRange(world, [&](std::span<SolverState> range, std::size_t first) {
+    for (std::size_t i = 0; i < range.size(); ++i) {
+      SolverState& state = range[i];
+      keepAwakeWhilePushed(world, world.solverIntegration[first + i], state);
+      const ParkedVelocity& real = world.parkedVelocities[first + i];
+      state.linearVelocity += real.linear;
+      state.angularVelocity += real.angular;
+    }
+    integrateRange(kernels, range, h);
+    for (std::size_t i = 0; i < range.size(); ++i) {
+      const ParkedVelocity& real = world.parkedVelocities[first + i];
+      range[i].linearVelocity = real.linear;
+      range[i].angularVelocity = real.angular;
+    }
   });
 }
 
