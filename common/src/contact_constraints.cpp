@@ -61,21 +61,19 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
   const Real load = lastLoad(contact.manifold);
-  return {index,
-          a.state,
-          b.state,
-          false,
-          jointed,
-          facingOf(contact.manifold.normal, up),
-          false,
-          load == 0 && touches(contact.manifold),
-          quiet(contact.manifold, load),
-          contact.manifold.pointCount == 2,
-          a.invMass,
-          a.invInertia,
-          b.invMass,
-          b.invInertia,
-          load};
+  return {.contact = index,
+          .stateA = a.state,
+          .stateB = b.state,
+          .jointed = jointed,
+          .facing = facingOf(contact.manifold.normal, up),
+          .touchesUnloaded = load == 0 && touches(contact.manifold),
+          .quiet = quiet(contact.manifold, load),
+          .twoPoints = contact.manifold.pointCount == 2,
+          .invMassA = a.invMass,
+          .invInertiaA = a.invInertia,
+          .invMassB = b.invMass,
+          .invInertiaB = b.invInertia,
+          .lastLoad = load};
 }
 
 // Contacts ahead of the one read whose lines (the manifold's two, and the
