@@ -187,6 +187,9 @@ struct BundleTraits {
   /// push of a bundle of one-point lanes (circles) skip the second point,
   /// all zero, which would move nothing.
   std::uint8_t points = 2;
+  /// A bit per lane whose manifold has two points: the store writes their
+  /// second point's impulses without reading the manifold's count first.
+  std::uint8_t twoPointLanes = 0;
   /// A bit per lane whose body A, and B, contacts can move (a mass or an
   /// inertia to give): only those are written back. A static, kinematic or
   /// padding lane's body is only read, so any number of lanes of a colour

@@ -721,7 +721,8 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
                  inputs);
   BundleTraits& traits = set.bundleTraits[std::size_t(b)];
   traits.quiet = std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; });
-  traits.points = simd::any(inputs.present[1]) ? 2 : 1;
+  traits.twoPointLanes = simd::bitsOf(inputs.present[1]);
+  traits.points = traits.twoPointLanes != 0 ? 2 : 1;
   traits.movesA = movingLanes<F>(c.invMassA, c.invInertiaA);
   traits.movesB = movingLanes<F>(c.invMassB, c.invInertiaB);
   traits.readsOnly = traits.movesA != lanesWithState<F>(c.stateA) || traits.movesB != lanesWithState<F>(c.stateB);
@@ -1014,10 +1015,12 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
 }
 
 // Writes one bundle's impulses into its lanes' manifolds: the support
-// pass's where a lane's contact holds a body up (its `records`).
+// pass's where a lane's contact holds a body up (its `records`). Only
+// writes: each lane's point count comes with the bundle (reading the
+// manifold's made each store wait for its line).
 template <class F>
 void storeBundleImpulses(const WideContactSet& set, const WideConstraint<F>& w, const WideContactCold<F>& cold,
-                         const std::int32_t* records, WorldData& world) {
+                         const BundleTraits& traits, const std::int32_t* records, WorldData& world) {
   alignas(16) float rolling[F::kLanes];
   alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], support[2][F::kLanes];
   simd::store(rolling, w.rollingImpulse);
@@ -1031,7 +1034,8 @@ void storeBundleImpulses(const WideContactSet& set, const WideConstraint<F>& w, 
     Manifold& manifold = world.contacts[cold.source[lane]].manifold;
     manifold.rollingImpulse = rolling[lane];
     const std::int32_t record = records[lane];
-    for (int j = 0; j < manifold.pointCount; ++j) {
+    const int points = 1 + (traits.twoPointLanes >> lane & 1);
+    for (int j = 0; j < points; ++j) {
       manifold.points[j].normalImpulse = normal[j][lane];
       manifold.points[j].tangentImpulse = tangent[j][lane];
       manifold.points[j].supportImpulse = record < 0 ? support[j][lane] : supportImpulseOf<F>(set, record, j);
@@ -1052,12 +1056,13 @@ void storeOverflowImpulses(const WideContactSet& set, WorldData& world) {
   }
 }
 
-// Starts loading the manifolds a bundle stores into (`cold`: its cold part).
+// Starts loading the manifolds a bundle stores into (`cold`: its cold
+// part), ready to be written.
 template <class F>
-void prefetchStoreTargets(const WideContactCold<F>& cold, const WorldData& world) {
+void prefetchStoreTargets(const WideContactCold<F>& cold, WorldData& world) {
   for (int lane = 0; lane < F::kLanes; ++lane) {
     if (cold.source[lane] < 0) continue;
-    fetchLines(&world.contacts[cold.source[lane]].manifold, sizeof(Manifold));
+    fetchLinesForWrite(&world.contacts[cold.source[lane]].manifold, sizeof(Manifold));
   }
 }
 
@@ -1075,6 +1080,7 @@ void storeWideImpulses(WideContactSet& set, WorldData& world) {
                               [&](std::int32_t b) { prefetchStoreTargets(cold[std::size_t(b)], world); },
                               [&](std::int32_t b) {
                                 storeBundleImpulses(set, bundles[std::size_t(b)], cold[std::size_t(b)],
+                                                    set.bundleTraits[std::size_t(b)],
                                                     &set.laneSupportRecord[std::size_t(b) * F::kLanes], world);
                               });
                         });
