@@ -148,8 +148,8 @@ int keyWithinColor(const ConstraintRef& ref) { return (ref.quiet ? 2 : 0) + (ref
 // together: what the wide build cuts into bundles. A colour's contacts share
 // no body, so their order within it changes no result; the overflow's,
 // solved one by one, keep theirs. The sort runs over the keys of the
-// colours taken and the overflow's, which follows them: over all 65
-// colours' keys, it cost a tower of 15 boxes a fiftieth of its step.
+// colours taken and the overflow's, which follows them: its fixed cost over
+// all 65 colours' keys was 1.6 % of a 15-box tower's step, 6 % of two boxes'.
 void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring, WideContactSet& set) {
   constexpr std::int32_t kOverflowKey = kKeysPerColor * GraphColoring::kOverflow;
   set.colorKey.resize(refs.size());

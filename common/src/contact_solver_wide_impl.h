@@ -326,9 +326,9 @@ void storeRecordColumns(const F* columns, std::size_t count, void* const records
   }
 }
 
-// A bundle's index array as a column of 32-bit integers. Copied through
-// floats on the stack, the column's load waited on the two halves the copy
-// had just stored there (a tenth of the contacts' fill).
+// A bundle's index array as a column of 32-bit integers, in one vector
+// move: copied through floats on the stack, the column's load waited on
+// the two halves the copy had just stored there.
 template <class F>
 F loadIndices(const std::int32_t (&indices)[F::kLanes]) {
   return simd::loadInts<F>(indices);
