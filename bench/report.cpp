@@ -52,7 +52,8 @@ void printTable(std::FILE* out, const std::vector<RunResult>& results) {
       std::fprintf(out, " %s\n", r.problem.c_str());
       continue;
     }
-    std::fprintf(out, " %9.3f %9.3f", r.minMs, r.medianMs);
+    // Four significant digits: a one-body scene takes a microsecond or two.
+    std::fprintf(out, " %9.4g %9.4g", r.minMs, r.medianMs);
     for (const Metric& m : r.metrics) std::fprintf(out, " %14.4g", m.value);
     if (!r.approximation.empty()) std::fprintf(out, "  (%s)", r.approximation.c_str());
     std::fprintf(out, "\n");
@@ -102,7 +103,7 @@ void printFront(std::FILE* out, const std::vector<RunResult>& results) {
   if (reference == nullptr || reference->metrics.empty()) return;
   std::fprintf(out, "front (ms med against %s, fastest first):", reference->metrics.front().name.c_str());
   for (const RunResult* r : paretoFront(results)) {
-    std::fprintf(out, "  | %s (%.3f ms, %.4g)", engineSetting(*r).c_str(), r->medianMs, r->error());
+    std::fprintf(out, "  | %s (%.4g ms, %.4g)", engineSetting(*r).c_str(), r->medianMs, r->error());
   }
   std::fprintf(out, "\n");
 }
@@ -135,7 +136,7 @@ void printDerived(std::FILE* out, const std::vector<RunResult>& all) {
     if (!awakeOnly) continue;
     if (!header) std::fprintf(out, "\n== cost of 5000 sleeping bodies: ms/step over the awake-only scene ==\n");
     header = true;
-    std::fprintf(out, "%-22s %+.3f ms (min %.3f vs %.3f)\n", engineSetting(r).c_str(), r.minMs - *awakeOnly,
+    std::fprintf(out, "%-22s %+.4f ms (min %.4f vs %.4f)\n", engineSetting(r).c_str(), r.minMs - *awakeOnly,
                  r.minMs, *awakeOnly);
   }
 }
