@@ -183,10 +183,6 @@ struct BundleTraits {
   /// Every lane was quiet when prepared (ConstraintRef::quiet): its passes
   /// first check whether they would change anything (staysQuiet).
   bool quiet = false;
-  /// The most points a lane has (1 or 2): the warm start, solve, relax and
-  /// push of a bundle of one-point lanes (circles) skip the second point,
-  /// all zero, which would move nothing.
-  std::uint8_t points = 2;
   /// A bit per lane whose manifold has two points: the store writes their
   /// second point's impulses without reading the manifold's count first.
   std::uint8_t twoPointLanes = 0;
@@ -202,6 +198,11 @@ struct BundleTraits {
   /// A lane may bounce (approached faster than the restitution threshold
   /// when prepared, on a contact that bounces at all).
   bool mayBounce = false;
+
+  /// The most points a lane has (1 or 2): the warm start, solve, relax and
+  /// push of a bundle of one-point lanes (circles) skip the second point,
+  /// all zero, which would move nothing.
+  int points() const { return twoPointLanes != 0 ? 2 : 1; }
 };
 
 /// Whether contacts can change a body's motion: the colouring takes a

@@ -722,7 +722,6 @@ std::uint8_t fillBundle(const WorldData& world, std::span<const ConstraintRef> r
   BundleTraits& traits = set.bundleTraits[std::size_t(b)];
   traits.quiet = std::all_of(laneRefs, laneRefs + entries.size(), [](const ConstraintRef* ref) { return ref->quiet; });
   traits.twoPointLanes = simd::bitsOf(inputs.present[1]);
-  traits.points = traits.twoPointLanes != 0 ? 2 : 1;
   traits.movesA = movingLanes<F>(c.invMassA, c.invInertiaA);
   traits.movesB = movingLanes<F>(c.invMassB, c.invInertiaB);
   traits.readsOnly = traits.movesA != lanesWithState<F>(c.stateA) || traits.movesB != lanesWithState<F>(c.stateB);
@@ -876,7 +875,7 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
     if (traits.quiet && holdsNoImpulse(c)) return;
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
-    if (traits.points == 2) {
+    if (traits.points() == 2) {
       warmStartPoints<2>(c, a, b);
     } else {
       warmStartPoints<1>(c, a, b);
@@ -922,7 +921,7 @@ template <int points, class F>
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
   forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, const BundleTraits& traits) {
-    if (traits.points == 2) {
+    if (traits.points() == 2) {
       solveBundle<2>(c, traits, context, useBias);
     } else {
       solveBundle<1>(c, traits, context, useBias);
@@ -949,7 +948,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     WideConstraint<F>& c = bundles[bundle];
     const F* loadOverlap = cold[bundle].loadOverlap;
     const BundleTraits& traits = set.bundleTraits[bundle];
-    const int points = traits.points;
+    const int points = traits.points();
     const F pushes = simd::maskOfBits<F>(set.pushLanes[k]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);

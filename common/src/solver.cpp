@@ -39,12 +39,23 @@ constexpr int kRestitutionIterations = 4;
 // nanoseconds, so a range must be long to outweigh its hand-off.
 constexpr std::int32_t kBodiesPerRange = 1024;
 
+// visit(range, first) for ranges of the awake bodies' solver states side by
+// side; `first` is the range's first state (states start at 1: 0 is the
+// static dummy).
+template <class Visit>
+void forEachStateRange(WorldData& world, Visit&& visit) {
+  const std::size_t count = world.solverStates.size();
+  world.tasks.forRanges(std::int32_t(count) - 1, kBodiesPerRange, [&](std::int32_t begin, std::int32_t end) {
+    visit(std::span<SolverState>(world.solverStates.data() + begin + 1, std::size_t(end - begin)), std::size_t(begin + 1));
+  });
+}
+
 // visit(k) for every awake body's solver state k >= 1, side by side: each
 // visit writes only body k's state and the body itself.
 template <class Visit>
-void forEachState(const WorldData& world, std::size_t stateCount, Visit&& visit) {
-  world.tasks.forRanges(std::int32_t(stateCount) - 1, kBodiesPerRange, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t k = begin + 1; k <= end; ++k) visit(std::size_t(k));
+void forEachState(WorldData& world, Visit&& visit) {
+  forEachStateRange(world, [&](std::span<SolverState> range, std::size_t first) {
+    for (std::size_t i = 0; i < range.size(); ++i) visit(first + i);
   });
 }
 
@@ -77,7 +88,7 @@ void loadStates(WorldData& world, Real h) {
   world.solverStates.resize(count);
   world.solverStates[0] = SolverState{};
   world.solverIntegration.resize(count);
-  forEachState(world, count, [&](std::size_t k) { loadState(world, k, h); });
+  forEachState(world, [&](std::size_t k) { loadState(world, k, h); });
 }
 
 // Every kind of constraint the solver runs, in the order each stage visits
@@ -96,7 +107,7 @@ std::span<ConstraintKind* const> kindsWithConstraints(std::array<ConstraintKind*
 
 void integrateVelocities(WorldData& world, Real h) {
   const Real maxAngularSpeed = kMaxRotationPerSubStep / h;
-  forEachState(world, world.solverStates.size(), [&](std::size_t k) {
+  forEachState(world, [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
     const SolverIntegration& in = world.solverIntegration[k];
     Vec2 v = in.linearDamping * (state.linearVelocity + h * in.linearAcceleration);
@@ -117,16 +128,6 @@ void integratePosition(SolverState& state, Real h) {
 // the few left over one at a time.
 void integrateRange(const WideContactKernels& kernels, std::span<SolverState> range, Real h) {
   for (std::size_t k = kernels.integratePositions(range, h); k < range.size(); ++k) integratePosition(range[k], h);
-}
-
-// visit(range, first) for ranges of the awake bodies' solver states side by
-// side; `first` is the range's first state.
-template <class Visit>
-void forEachStateRange(WorldData& world, Visit&& visit) {
-  const std::size_t count = world.solverStates.size();
-  world.tasks.forRanges(std::int32_t(count) - 1, kBodiesPerRange, [&](std::int32_t begin, std::int32_t end) {
-    visit(std::span<SolverState>(world.solverStates.data() + begin + 1, std::size_t(end - begin)), std::size_t(begin + 1));
-  });
 }
 
 void integratePositions(WorldData& world, Real h) {
@@ -151,7 +152,7 @@ void pushThenIntegratePositions(WorldData& world, std::span<ConstraintKind* cons
                                 const SubStep& sub, Real h) {
   const std::size_t count = world.solverStates.size();
   world.parkedVelocities.resize(count);
-  forEachState(world, count, [&](std::size_t k) {
+  forEachState(world, [&](std::size_t k) {
     SolverState& state = world.solverStates[k];
     world.parkedVelocities[k] = {state.linearVelocity, state.angularVelocity};
     state.linearVelocity.setZero();
@@ -184,7 +185,7 @@ Rot compose(const Rot& delta, const Rot& q) {
 }
 
 void finalizeBodies(WorldData& world) {
-  forEachState(world, world.solverStates.size(), [&](std::size_t k) {
+  forEachState(world, [&](std::size_t k) {
     const SolverState& state = world.solverStates[k];
     Body& body = world.bodies[world.solverIntegration[k].body];
     body.linearVelocity = state.linearVelocity;
