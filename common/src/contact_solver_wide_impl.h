@@ -326,20 +326,6 @@ void storeRecordColumns(const F* columns, std::size_t count, void* const records
   }
 }
 
-// A bundle's index array as a column of 32-bit integers, in one vector
-// move: copied through floats on the stack, the column's load waited on
-// the two halves the copy had just stored there.
-template <class F>
-F loadIndices(const std::int32_t (&indices)[F::kLanes]) {
-  return simd::loadInts<F>(indices);
-}
-
-// A column of 32-bit integers stored into a bundle's index array.
-template <class F>
-void storeIndices(F column, std::int32_t (&indices)[F::kLanes]) {
-  simd::storeInts(indices, column);
-}
-
 }  // namespace
 }  // namespace impulse
 
@@ -382,9 +368,9 @@ template <class F>
 void gatherBodies(const F (&ref)[kRefFloats], const ContactSoftness& softness, WideConstraint<F>& w,
                   WideContactCold<F>& cold, BundleInputs<F>& in) {
   const auto field = [&](std::size_t offset) { return ref[floatAt(offset)]; };
-  storeIndices(field(offsetof(ConstraintRef, stateA)), w.stateA);
-  storeIndices(field(offsetof(ConstraintRef, stateB)), w.stateB);
-  storeIndices(field(offsetof(ConstraintRef, contact)), cold.source);
+  simd::storeInts(w.stateA, field(offsetof(ConstraintRef, stateA)));
+  simd::storeInts(w.stateB, field(offsetof(ConstraintRef, stateB)));
+  simd::storeInts(cold.source, field(offsetof(ConstraintRef, contact)));
   w.invMassA = field(offsetof(ConstraintRef, invMassA));
   w.invInertiaA = field(offsetof(ConstraintRef, invInertiaA));
   w.invMassB = field(offsetof(ConstraintRef, invMassB));

@@ -67,7 +67,9 @@ inline F4 load<F4>(const float* p) {
 }
 
 /// Lanes of 32-bit integers from p[0], p[1], ... (an index column), and
-/// back: one vector move each way (width-generic code).
+/// back: one vector move each way (width-generic code). Copied through
+/// floats on the stack instead, a column's load waited on the two halves
+/// the copy had just stored there.
 template <class F>
 F loadInts(const std::int32_t* p);
 template <>

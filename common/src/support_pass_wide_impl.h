@@ -116,8 +116,8 @@ F slipFrictionOfLanes(const WideConstraint<F>& c, F upperIsB, F normalX, F norma
 // every lane at once), as columns in the record's layout.
 template <class F>
 void supportColumns(const WideConstraint<F>& c, F upperIsB, F (&column)[kSupportLaneFloats]) {
-  const F stateA = loadIndices<F>(c.stateA);
-  const F stateB = loadIndices<F>(c.stateB);
+  const F stateA = simd::loadInts<F>(c.stateA);
+  const F stateB = simd::loadInts<F>(c.stateB);
   const F normalX = simd::select(upperIsB, c.normalX, simd::negated(c.normalX));
   const F normalY = simd::select(upperIsB, c.normalY, simd::negated(c.normalY));
   for (F& value : column) value = simd::broadcast<F>(0);  // the record's unused tail
@@ -145,8 +145,8 @@ template <class F>
 void loadSupportLanes(const void* const records[F::kLanes], WideSupportRow<F>& row) {
   F column[kSupportLaneFloats];
   loadRecordColumns<F>(records, kSupportLaneFloats, column);
-  storeIndices(column[floatAt(offsetof(SupportLaneRecord, stateA))], row.stateA);
-  storeIndices(column[floatAt(offsetof(SupportLaneRecord, stateB))], row.stateB);
+  simd::storeInts(row.stateA, column[floatAt(offsetof(SupportLaneRecord, stateA))]);
+  simd::storeInts(row.stateB, column[floatAt(offsetof(SupportLaneRecord, stateB))]);
   row.normalX = column[floatAt(offsetof(SupportLaneRecord, normalX))];
   row.normalY = column[floatAt(offsetof(SupportLaneRecord, normalY))];
   row.invMass = column[floatAt(offsetof(SupportLaneRecord, invMass))];
