@@ -889,30 +889,73 @@ template <int points, class F>
   return totalNormalImpulse;
 }
 
-// One bundle's solve, compiled apart for each point count: inlined side by
-// side in one loop, the two copies' registers crowded each other (a lone
-// 60-row pyramid's solve, all two-point, took a tenth longer).
-template <int points, class F>
-[[gnu::noinline]] void solveBundle(WideConstraint<F>& c, const BundleTraits& traits,
-                                   const ContactSolverContext& context, bool useBias) {
-  WideBody<F> a = gather<F>(context.states, c.stateA);
-  WideBody<F> b = gather<F>(context.states, c.stateB);
-  const F dpx = b.dpx - a.dpx;
-  const F dpy = b.dpy - a.dpy;
-  if (traits.quiet && staysQuiet(c, a, b, dpx, dpy, context)) return;
-  solveRolling(c, a, b, solvePoints<points>(c, a, b, dpx, dpy, context, useBias));
-  scatterBundle<F>(context.states, c, traits, a, b);
+// The solve of `count` bundles of one colour (one or two), compiled apart
+// for each point count: inlined side by side in one loop, the two counts'
+// copies crowded each other's registers (a lone 60-row pyramid's solve,
+// all two-point, took a tenth longer). A bundle's rows are one long chain
+// of dependent arithmetic; two bundles' chains, row by row in step, keep
+// the core's units busier. Each bundle's arithmetic is its own, as alone:
+// the same bits. A quiet bundle comes alone (its check may leave its
+// bodies as they are).
+template <int points, std::size_t count, class F>
+[[gnu::noinline]] void solveBundles(const std::array<WideConstraint<F>*, count>& bundles,
+                                    const std::array<const BundleTraits*, count>& traits,
+                                    const ContactSolverContext& context, bool useBias) {
+  std::array<WideBody<F>, count> a, b;
+  std::array<F, count> dpx, dpy;
+  std::array<F, count> normalImpulse;
+  for (std::size_t n = 0; n < count; ++n) {
+    a[n] = gather<F>(context.states, bundles[n]->stateA);
+    b[n] = gather<F>(context.states, bundles[n]->stateB);
+    dpx[n] = b[n].dpx - a[n].dpx;
+    dpy[n] = b[n].dpy - a[n].dpy;
+    normalImpulse[n] = simd::broadcast<F>(0);
+  }
+  if (count == 1 && traits[0]->quiet && staysQuiet(*bundles[0], a[0], b[0], dpx[0], dpy[0], context)) return;
+  for (int k = 0; k < points; ++k) {
+    const int j = context.reversePointOrder ? points - 1 - k : k;
+    for (std::size_t n = 0; n < count; ++n) {
+      WideConstraint<F>& c = *bundles[n];
+      normalImpulse[n] += solveNormal(c, c.points[j], a[n], b[n], dpx[n], dpy[n], context, useBias);
+    }
+  }
+  for (int j = 0; j < points; ++j) {
+    for (std::size_t n = 0; n < count; ++n) solveFriction(*bundles[n], bundles[n]->points[j], a[n], b[n]);
+  }
+  for (std::size_t n = 0; n < count; ++n) solveRolling(*bundles[n], a[n], b[n], normalImpulse[n]);
+  for (std::size_t n = 0; n < count; ++n) scatterBundle<F>(context.states, *bundles[n], *traits[n], a[n], b[n]);
 }
 
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
-  forEachBundleByColor<F>(context, set, [&](WideConstraint<F>& c, const BundleTraits& traits) {
-    if (traits.points() == 2) {
-      solveBundle<2>(c, traits, context, useBias);
-    } else {
-      solveBundle<1>(c, traits, context, useBias);
-    }
-  });
+  std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  const int colours = coloursTaken(set.colorBundleStart);
+  for (int color = 0; color < colours; ++color) {
+    const std::int32_t first = set.colorBundleStart[std::size_t(color)];
+    const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
+    context.tasks->forRanges(count, kBundlesPerColorRange, [&](std::int32_t begin, std::int32_t end) {
+      for (std::int32_t b = first + begin; b < first + end;) {
+        WideConstraint<F>* c = &bundles[std::size_t(b)];
+        const BundleTraits* traits = &set.bundleTraits[std::size_t(b)];
+        const BundleTraits* next = b + 1 < first + end ? traits + 1 : nullptr;
+        const bool paired = next != nullptr && !traits->quiet && !next->quiet && next->points() == traits->points();
+        if (paired) {
+          const std::array<WideConstraint<F>*, 2> pair{c, c + 1};
+          const std::array<const BundleTraits*, 2> pairTraits{traits, next};
+          if (traits->points() == 2) {
+            solveBundles<2>(pair, pairTraits, context, useBias);
+          } else {
+            solveBundles<1>(pair, pairTraits, context, useBias);
+          }
+        } else if (traits->points() == 2) {
+          solveBundles<2, 1, F>({c}, {traits}, context, useBias);
+        } else {
+          solveBundles<1, 1, F>({c}, {traits}, context, useBias);
+        }
+        b += paired ? 2 : 1;
+      }
+    });
+  }
   solveContacts(overflowContext(context, set), useBias);
 }
 
