@@ -763,21 +763,28 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
   return anyIntrusion;
 }
 
-// visit(bundle, traits) colour by colour; one colour's bundles side by side,
-// since none of their lanes shares a body that they move.
-template <class F, class Visit>
-void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& set, Visit&& visit) {
-  std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+// visitRun(begin, end) for runs of bundles [begin, end), colour by colour;
+// one colour's runs side by side, since none of their lanes shares a body
+// that they move.
+template <class VisitRun>
+void forEachBundleRunByColor(const ContactSolverContext& context, const WideContactSet& set, VisitRun&& visitRun) {
   const int colours = coloursTaken(set.colorBundleStart);
   for (int color = 0; color < colours; ++color) {
     const std::int32_t first = set.colorBundleStart[std::size_t(color)];
     const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
     context.tasks->forRanges(count, kBundlesPerColorRange, [&](std::int32_t begin, std::int32_t end) {
-      for (std::int32_t b = first + begin; b < first + end; ++b) {
-        visit(bundles[std::size_t(b)], set.bundleTraits[std::size_t(b)]);
-      }
+      visitRun(first + begin, first + end);
     });
   }
+}
+
+// visit(bundle, traits) for each bundle, as forEachBundleRunByColor.
+template <class F, class Visit>
+void forEachBundleByColor(const ContactSolverContext& context, WideContactSet& set, Visit&& visit) {
+  std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  forEachBundleRunByColor(context, set, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end; ++b) visit(bundles[std::size_t(b)], set.bundleTraits[std::size_t(b)]);
+  });
 }
 
 // visit(k) for each entry k of a list of bundles in bundle order (the push
@@ -926,36 +933,32 @@ template <int points, std::size_t count, class F>
   for (std::size_t n = 0; n < count; ++n) scatterBundle<F>(context.states, *bundles[n], *traits[n], a[n], b[n]);
 }
 
+// Two bundles at a time where they are alike (solveBundles).
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
-  const int colours = coloursTaken(set.colorBundleStart);
-  for (int color = 0; color < colours; ++color) {
-    const std::int32_t first = set.colorBundleStart[std::size_t(color)];
-    const std::int32_t count = set.colorBundleStart[std::size_t(color) + 1] - first;
-    context.tasks->forRanges(count, kBundlesPerColorRange, [&](std::int32_t begin, std::int32_t end) {
-      for (std::int32_t b = first + begin; b < first + end;) {
-        WideConstraint<F>* c = &bundles[std::size_t(b)];
-        const BundleTraits* traits = &set.bundleTraits[std::size_t(b)];
-        const BundleTraits* next = b + 1 < first + end ? traits + 1 : nullptr;
-        const bool paired = next != nullptr && !traits->quiet && !next->quiet && next->points() == traits->points();
-        if (paired) {
-          const std::array<WideConstraint<F>*, 2> pair{c, c + 1};
-          const std::array<const BundleTraits*, 2> pairTraits{traits, next};
-          if (traits->points() == 2) {
-            solveBundles<2>(pair, pairTraits, context, useBias);
-          } else {
-            solveBundles<1>(pair, pairTraits, context, useBias);
-          }
-        } else if (traits->points() == 2) {
-          solveBundles<2, 1, F>({c}, {traits}, context, useBias);
+  forEachBundleRunByColor(context, set, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end;) {
+      WideConstraint<F>* c = &bundles[std::size_t(b)];
+      const BundleTraits* traits = &set.bundleTraits[std::size_t(b)];
+      const BundleTraits* next = b + 1 < end ? traits + 1 : nullptr;
+      const bool paired = next != nullptr && !traits->quiet && !next->quiet && next->points() == traits->points();
+      if (paired) {
+        const std::array<WideConstraint<F>*, 2> pair{c, c + 1};
+        const std::array<const BundleTraits*, 2> pairTraits{traits, next};
+        if (traits->points() == 2) {
+          solveBundles<2>(pair, pairTraits, context, useBias);
         } else {
-          solveBundles<1, 1, F>({c}, {traits}, context, useBias);
+          solveBundles<1>(pair, pairTraits, context, useBias);
         }
-        b += paired ? 2 : 1;
+      } else if (traits->points() == 2) {
+        solveBundles<2, 1, F>({c}, {traits}, context, useBias);
+      } else {
+        solveBundles<1, 1, F>({c}, {traits}, context, useBias);
       }
-    });
-  }
+      b += paired ? 2 : 1;
+    }
+  });
   solveContacts(overflowContext(context, set), useBias);
 }
 
