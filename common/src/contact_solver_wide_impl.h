@@ -882,28 +882,16 @@ void warmStartWide(const ContactSolverContext& context, WideContactSet& set) {
   warmStartContacts(overflowContext(context, set));
 }
 
-// The normal and friction rows of a bundle's first `points` points (a
-// fixed count, as warmStartPoints); returns the normal impulse they hold.
-template <int points, class F>
-[[gnu::always_inline]] inline F solvePoints(WideConstraint<F>& c, WideBody<F>& a, WideBody<F>& b, F dpx, F dpy,
-                                            const ContactSolverContext& context, bool useBias) {
-  F totalNormalImpulse = simd::broadcast<F>(0);
-  for (int k = 0; k < points; ++k) {
-    WidePoint<F>& p = c.points[context.reversePointOrder ? points - 1 - k : k];
-    totalNormalImpulse += solveNormal(c, p, a, b, dpx, dpy, context, useBias);
-  }
-  for (int j = 0; j < points; ++j) solveFriction(c, c.points[j], a, b);
-  return totalNormalImpulse;
-}
-
-// The solve of `count` bundles of one colour (one or two), compiled apart
-// for each point count: inlined side by side in one loop, the two counts'
-// copies crowded each other's registers (a lone 60-row pyramid's solve,
-// all two-point, took a tenth longer). A bundle's rows are one long chain
-// of dependent arithmetic; two bundles' chains, row by row in step, keep
-// the core's units busier. Each bundle's arithmetic is its own, as alone:
-// the same bits. A quiet bundle comes alone (its check may leave its
-// bodies as they are).
+// The solve of `count` bundles of one colour (one or two): each bundle's
+// normal rows of its first `points` points (a fixed count, as
+// warmStartPoints), then their friction rows, then its rolling row.
+// Compiled apart for each point count: inlined side by side in one loop,
+// the two counts' copies crowded each other's registers (a lone 60-row
+// pyramid's solve, all two-point, took a tenth longer). A bundle's rows
+// are one long chain of dependent arithmetic; two bundles' chains, row by
+// row in step, keep the core's units busier. Each bundle's arithmetic is
+// its own, as alone: the same bits. A quiet bundle comes alone (its check
+// may leave its bodies as they are).
 template <int points, std::size_t count, class F>
 [[gnu::noinline]] void solveBundles(const std::array<WideConstraint<F>*, count>& bundles,
                                     const std::array<const BundleTraits*, count>& traits,
