@@ -921,28 +921,32 @@ template <int points, std::size_t count, class F>
   for (std::size_t n = 0; n < count; ++n) scatterBundle<F>(context.states, *bundles[n], *traits[n], a[n], b[n]);
 }
 
+// Bundle b alone, or with the one after it (`paired`), of `points` points.
+template <int points, class F>
+void solveBundleOrPair(std::vector<WideConstraint<F>>& bundles, const std::vector<BundleTraits>& traits,
+                       std::size_t b, bool paired, const ContactSolverContext& context, bool useBias) {
+  if (paired) {
+    solveBundles<points>(std::array{&bundles[b], &bundles[b + 1]}, std::array{&traits[b], &traits[b + 1]}, context,
+                         useBias);
+  } else {
+    solveBundles<points>(std::array{&bundles[b]}, std::array{&traits[b]}, context, useBias);
+  }
+}
+
 // Two bundles at a time where they are alike (solveBundles).
 template <class F>
 void solveWide(const ContactSolverContext& context, WideContactSet& set, bool useBias) {
   std::vector<WideConstraint<F>>& bundles = bundlesOf<F>(set);
+  const std::vector<BundleTraits>& traits = set.bundleTraits;
   forEachBundleRunByColor(context, set, [&](std::int32_t begin, std::int32_t end) {
-    for (std::int32_t b = begin; b < end;) {
-      WideConstraint<F>* c = &bundles[std::size_t(b)];
-      const BundleTraits* traits = &set.bundleTraits[std::size_t(b)];
-      const BundleTraits* next = b + 1 < end ? traits + 1 : nullptr;
-      const bool paired = next != nullptr && !traits->quiet && !next->quiet && next->points() == traits->points();
-      if (paired) {
-        const std::array<WideConstraint<F>*, 2> pair{c, c + 1};
-        const std::array<const BundleTraits*, 2> pairTraits{traits, next};
-        if (traits->points() == 2) {
-          solveBundles<2>(pair, pairTraits, context, useBias);
-        } else {
-          solveBundles<1>(pair, pairTraits, context, useBias);
-        }
-      } else if (traits->points() == 2) {
-        solveBundles<2, 1, F>({c}, {traits}, context, useBias);
+    for (auto b = std::size_t(begin); b < std::size_t(end);) {
+      const int points = traits[b].points();
+      const bool paired = b + 1 < std::size_t(end) && !traits[b].quiet && !traits[b + 1].quiet &&
+                          traits[b + 1].points() == points;
+      if (points == 2) {
+        solveBundleOrPair<2>(bundles, traits, b, paired, context, useBias);
       } else {
-        solveBundles<1, 1, F>({c}, {traits}, context, useBias);
+        solveBundleOrPair<1>(bundles, traits, b, paired, context, useBias);
       }
       b += paired ? 2 : 1;
     }
