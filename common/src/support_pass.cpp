@@ -405,10 +405,14 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   anyHangs_ = false;
   // Levels count up from the static world: with no level contact on it (a
   // pile in a kinematic drum), no body has one and nothing is a candidate.
+  // Nor where every moving body has joints (a pile of ragdolls): a row's
+  // upper body has none, and the levels of bodies that never stand on a row
+  // would be walked for nothing.
   const bool standsOnStatic = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) {
     return ref.facing != 0 && (ref.stateA == 0 || ref.stateB == 0);
   });
-  if (!standsOnStatic) {
+  const bool anyFreeBody = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.movesFree; });
+  if (!standsOnStatic || !anyFreeBody) {
     level_.assign(stateCount, kUnreached);
     return;
   }
