@@ -411,7 +411,8 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   const bool standsOnStatic = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) {
     return ref.facing != 0 && (ref.stateA == 0 || ref.stateB == 0);
   });
-  const bool anyFreeBody = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.movesFree; });
+  const bool anyFreeBody =
+      std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.movesFree; });
   if (!standsOnStatic || !anyFreeBody) {
     level_.assign(stateCount, kUnreached);
     return;

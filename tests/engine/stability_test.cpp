@@ -14,6 +14,7 @@
 #include "graph_coloring.h"
 #include "impulse/scenes/stress.h"
 #include "impulse/world.h"
+#include "joint_test_support.h"
 #include "world_test_support.h"
 
 namespace impulse {
@@ -246,6 +247,24 @@ TEST(Stacking, BoxMadeHeavyOnAStack_IsHeldUpFromTheStepItsMassChanged) {
   ASSERT_TRUE(world.setMaterial(upper, Material::Glass).ok());
   world.step(kDt);
   EXPECT_EQ(world.profile().passes.supportRows, 2);
+}
+
+// A support row never lifts a body with joints: two pinned boxes on the
+// ground take no row (the pass does not even level them). A GLASS box set
+// on one of them, free and 83 times heavier, is held up all the same.
+TEST(Stacking, FreeBoxOnAJointedOne_IsHeldUp_WhereJointedBoxesAloneTakeNoRow) {
+  World world(sleepless());
+  addGround(world);
+  const BodyId lower = addBox(world, {.center = Vec2(0, Real(0.5)), .material = Material::Foam});
+  const BodyId beside =
+      addBox(world, {.center = Vec2(Real(1.02), Real(0.5)), .material = Material::Foam});
+  const Vec2 pin(Real(0.51), Real(0.5));
+  addJoint(world, lower, beside, pin, pin, RevoluteJointSettings{});
+  simulate(world, 1);
+  ASSERT_EQ(world.profile().passes.supportRows, 0) << "every moving body has a joint";
+  addBox(world, {.center = Vec2(0, Real(1.5)), .material = Material::Glass});
+  simulate(world, 1);
+  EXPECT_EQ(world.profile().passes.supportRows, 1) << "the glass box's row on the jointed box";
 }
 
 TEST(Overlap, HalfOverlappingBoxesSeparate_WithoutLaunching) {
