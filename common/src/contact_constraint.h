@@ -52,13 +52,16 @@ struct ConstraintRef {
   /// Its manifold has two points: each colour's one-point contacts are
   /// bundled together too, whose passes skip the second point.
   bool twoPoints : 1 = false;
-  /// One of its moving bodies has no joints: it may stand in a stack the
-  /// support pass holds up (support_pass.h; a jointed body never does).
-  bool movesFree : 1 = false;
+  /// Body A (B) moves and has no joints: only such a body stands on a row
+  /// of the support pass (a jointed one is held by more than its contacts:
+  /// lifting it alone would fight its joints, as a welded pair landing
+  /// twisted did), read off the bodies with the rest of the ref.
+  bool freeA : 1 = false;
+  bool freeB : 1 = false;
   /// The byte's other bits, named so that a ref built whole is stored whole:
   /// left unnamed, they were read back from the ref's place before each
   /// store, a cache miss for most refs (a third of their collection's time).
-  std::uint8_t unusedBits : 3 = 0;
+  std::uint8_t unusedBits : 2 = 0;
   /// The bodies' inverse mass and inertia, zero unless awake: read once
   /// with the states, so preparing a contact touches no body.
   Real invMassA = 0;

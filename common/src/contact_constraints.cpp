@@ -60,8 +60,6 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const RefSide a = sideOf(bodyA);
   const RefSide b = sideOf(bodyB);
   const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
-  const bool movesFree = (a.state != 0 && bodyA.jointHead == kNullIndex) ||
-                         (b.state != 0 && bodyB.jointHead == kNullIndex);
   const Real load = lastLoad(contact.manifold);
   return {.contact = index,
           .stateA = a.state,
@@ -71,7 +69,8 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
           .touchesUnloaded = load == 0 && touches(contact.manifold),
           .quiet = quiet(contact.manifold, load),
           .twoPoints = contact.manifold.pointCount == 2,
-          .movesFree = movesFree,
+          .freeA = a.state != 0 && bodyA.jointHead == kNullIndex,
+          .freeB = b.state != 0 && bodyB.jointHead == kNullIndex,
           .invMassA = a.invMass,
           .invInertiaA = a.invInertia,
           .invMassB = b.invMass,

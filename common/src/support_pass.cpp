@@ -16,12 +16,6 @@ namespace {
 
 constexpr std::int32_t kUnreached = -1;
 
-// A jointed body is held by more than its contacts: lifting it alone would
-// fight its joints (a welded pair landing twisted), so the soft rows keep it.
-bool isJointed(const WorldData& world, std::int32_t state) {
-  return world.bodies[world.solverIntegration[std::size_t(state)].body].jointHead != kNullIndex;
-}
-
 // A row's upper and lower body's inverse masses, as its ref carries them.
 Real upperInvMass(const SupportRow& row, const ConstraintRef& ref) {
   return row.upperIsB ? ref.invMassB : ref.invMassA;
@@ -405,14 +399,14 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   anyHangs_ = false;
   // Levels count up from the static world: with no level contact on it (a
   // pile in a kinematic drum), no body has one and nothing is a candidate.
-  // Nor where every moving body has joints (a pile of ragdolls): a row's
-  // upper body has none, and the levels of bodies that never stand on a row
-  // would be walked for nothing.
+  // Nor where no moving body is free of joints (a pile of ragdolls): a
+  // row's upper body is a free one (ConstraintRef::freeA, freeB), and the
+  // levels of bodies that never stand on a row would be walked for nothing.
   const bool standsOnStatic = std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) {
     return ref.facing != 0 && (ref.stateA == 0 || ref.stateB == 0);
   });
   const bool anyFreeBody =
-      std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.movesFree; });
+      std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.freeA || ref.freeB; });
   if (!standsOnStatic || !anyFreeBody) {
     level_.assign(stateCount, kUnreached);
     return;
@@ -429,7 +423,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || hangs_[std::size_t(upperIsB ? ref.stateA : ref.stateB)] != 0 ||
-        isJointed(world, upperIsB ? ref.stateB : ref.stateA)) {
+        !(upperIsB ? ref.freeB : ref.freeA)) {
       continue;
     }
     SupportRow row;
