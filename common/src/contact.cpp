@@ -332,12 +332,14 @@ std::uint8_t collideOutcome(const WorldData& world, Contact& contact, Real dt, s
 // Contacts ahead of the one being updated whose lines are fetched
 // meanwhile: the list runs through memory in slot order, but with gaps.
 // Then, once a contact's own lines are in, what it names: its bodies,
-// shape slots and the shapes' fat boxes three contacts ahead, and, once the slots are in, the shapes'
-// geometry two ahead. Each is otherwise a cache miss in a crowd: on v3's
-// smash and washer the stage took a quarter more time without them.
+// shape slots and the shapes' fat boxes three contacts ahead. Each is
+// otherwise a cache miss in a crowd: on v3's smash and washer the stage
+// took a quarter more time without them. Not the shapes' geometry: most
+// contacts never read it (carried manifolds, pairs apart beyond their
+// reach), and finding it reads the slots, which waited on their lines
+// (large_pyramid's perf totals 0.97 without it, no scene slower).
 constexpr std::int32_t kContactPrefetchDistance = 6;
 constexpr std::int32_t kBodyPrefetchDistance = 3;
-constexpr std::int32_t kGeometryPrefetchDistance = 2;
 
 // The lines of a body the update reads: its first (pose, linear velocity,
 // inverse masses, extent, whether awake) and its second (its centre of
@@ -357,25 +359,6 @@ void fetchContactInputs(const WorldData& world, const Contact& contact) {
   fetchLines(&world.broadPhase.fatAABBOfUser(contact.shapeB));
 }
 
-// A polygon's count and first vertices, its first normals and its radius
-// lie on three lines; the other types' geometry is 40 bytes at most.
-void fetchGeometry(ShapeRef shape) {
-  if (shape.type != ShapeType::Polygon) {
-    fetchLines(shape.geometry);
-    fetchLines(static_cast<const char*>(shape.geometry) + sizeof(ChainSegment) - 1);
-    return;
-  }
-  const auto& polygon = *static_cast<const Polygon*>(shape.geometry);
-  fetchLines(&polygon.count);
-  fetchLines(&polygon.normals);
-  fetchLines(&polygon.radius);
-}
-
-void fetchContactGeometry(const WorldData& world, const Contact& contact) {
-  fetchGeometry(world.shapes[contact.shapeA].ref());
-  fetchGeometry(world.shapes[contact.shapeB].ref());
-}
-
 void updateManifolds(WorldData& world, Real dt) {
   world.collideList.clear();
   world.contactsToCollide.forEachDescending([&](std::int32_t index) { world.collideList.push_back(index); });
@@ -390,9 +373,6 @@ void updateManifolds(WorldData& world, Real dt) {
                             }
                             if (i + kBodyPrefetchDistance < end) {
                               fetchContactInputs(world, world.contacts[world.collideList[k + kBodyPrefetchDistance]]);
-                            }
-                            if (i + kGeometryPrefetchDistance < end) {
-                              fetchContactGeometry(world, world.contacts[world.collideList[k + kGeometryPrefetchDistance]]);
                             }
                             world.collideOutcomes[k] = collideOutcome(world, world.contacts[world.collideList[k]], dt,
                                                                       world.collideKeys[k]);
