@@ -1,6 +1,7 @@
 #include "contact_solver.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -234,25 +235,40 @@ void markJointedAlike(const WorldData& world, std::uint8_t ring, WideContactSet&
   }
 }
 
+// Refs per range of a ring's marking: a ref costs a few nanoseconds.
+constexpr std::int32_t kRefsPerMarkRange = 1024;
+
+// Marks the bodies a contact from one of `ring` with the next ring, over
+// zeros only, the refs side by side. Two ranges may mark one body: both
+// write the same mark over a zero, and a mark being written reads as zero
+// or as the next ring, neither of which is `ring`; so the marks are the
+// same for any order and split of the refs (relaxed atomics, plain moves
+// on x86).
+void markNextRing(const TaskRunner& tasks, std::span<const ConstraintRef> refs, std::uint8_t ring,
+                  std::vector<std::uint8_t>& zone) {
+  const auto markOf = [&](std::int32_t state) { return std::atomic_ref<std::uint8_t>(zone[std::size_t(state)]); };
+  const auto markNext = [&](std::int32_t from, std::int32_t to) {
+    if (to == 0 || markOf(from).load(std::memory_order_relaxed) != ring) return;
+    if (markOf(to).load(std::memory_order_relaxed) == 0) markOf(to).store(std::uint8_t(ring - 1), std::memory_order_relaxed);
+  };
+  tasks.forRanges(std::int32_t(refs.size()), kRefsPerMarkRange, [&](std::int32_t begin, std::int32_t end) {
+    for (const ConstraintRef& ref : refs.subspan(std::size_t(begin), std::size_t(end - begin))) {
+      markNext(ref.stateA, ref.stateB);
+      markNext(ref.stateB, ref.stateA);
+    }
+  });
+}
+
 }  // namespace
 
 void markNearIntrusions(const WorldData& world, std::span<const ConstraintRef> refs, WideContactSet& set) {
-  std::vector<std::uint8_t>& zone = set.pushZone;
   const bool jointed = !world.jointConstraints.empty();
   // Ring by ring outwards; each pass reads one ring and writes the next
   // over zeros only, so the marks do not depend on the contacts' order.
   for (std::uint8_t ring = kIntrudingBody;; --ring) {
     if (jointed) markJointedAlike(world, ring, set);
     if (ring == kNearIntrusion) break;
-    const auto markNext = [&](std::int32_t from, std::int32_t to) {
-      if (zone[std::size_t(from)] == ring && to != 0 && zone[std::size_t(to)] == 0) {
-        zone[std::size_t(to)] = std::uint8_t(ring - 1);
-      }
-    };
-    for (const ConstraintRef& ref : refs) {
-      markNext(ref.stateA, ref.stateB);
-      markNext(ref.stateB, ref.stateA);
-    }
+    markNextRing(world.tasks, refs, ring, set.pushZone);
   }
 }
 
