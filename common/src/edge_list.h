@@ -53,15 +53,27 @@ void unlinkEdge(std::vector<Element>& elements, std::int32_t& head, std::int32_t
   if (next != kNullIndex) elements[edgeElement(next)].edges.prev[edgeSide(next)] = prev;
 }
 
-/// Calls visit(key, element) for each edge of the list at `head` (elements
-/// may be a const vector); visit may not unlink the edge it is given.
-template <class Elements, class Visit>
-void forEachEdge(Elements& elements, std::int32_t head, Visit&& visit) {
+/// Calls goOn(key, element) for the edges of the list at `head` (elements
+/// may be a const vector) until it returns false; returns whether every
+/// edge was visited. goOn may not unlink the edge it is given.
+template <class Elements, class GoOn>
+bool forEachEdgeWhile(Elements& elements, std::int32_t head, GoOn&& goOn) {
   for (std::int32_t key = head; key != kNullIndex;) {
     auto& element = elements[edgeElement(key)];
-    visit(key, element);
+    if (!goOn(key, element)) return false;
     key = element.edges.next[edgeSide(key)];
   }
+  return true;
+}
+
+/// Calls visit(key, element) for each edge of the list at `head`, as
+/// forEachEdgeWhile.
+template <class Elements, class Visit>
+void forEachEdge(Elements& elements, std::int32_t head, Visit&& visit) {
+  forEachEdgeWhile(elements, head, [&](std::int32_t key, auto& element) {
+    visit(key, element);
+    return true;
+  });
 }
 
 }  // namespace impulse
