@@ -249,7 +249,8 @@ void markNextRing(const TaskRunner& tasks, std::span<const ConstraintRef> refs, 
   const auto markOf = [&](std::int32_t state) { return std::atomic_ref<std::uint8_t>(zone[std::size_t(state)]); };
   const auto markNext = [&](std::int32_t from, std::int32_t to) {
     if (to == 0 || markOf(from).load(std::memory_order_relaxed) != ring) return;
-    if (markOf(to).load(std::memory_order_relaxed) == 0) markOf(to).store(std::uint8_t(ring - 1), std::memory_order_relaxed);
+    if (markOf(to).load(std::memory_order_relaxed) != 0) return;
+    markOf(to).store(std::uint8_t(ring - 1), std::memory_order_relaxed);
   };
   tasks.forRanges(std::int32_t(refs.size()), kRefsPerMarkRange, [&](std::int32_t begin, std::int32_t end) {
     for (const ConstraintRef& ref : refs.subspan(std::size_t(begin), std::size_t(end - begin))) {
