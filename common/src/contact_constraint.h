@@ -25,9 +25,6 @@ struct ConstraintRef {
   std::int32_t stateB = 0;
   /// Holds its upper body up in the support pass (support_pass.h).
   bool holdsUp = false;
-  /// Either body has joints: its loads are not weights it carries, so the
-  /// contact never holds as a wedge's (kHold, contact_solver.h).
-  bool jointed = false;
   /// Whether the contact is level enough to stand on, and which way up
   /// (support_pass.h, facingOf): +1 with B above, -1 with A above, 0 not
   /// level; twice that when flat.
@@ -52,12 +49,9 @@ struct ConstraintRef {
   /// Its manifold has two points: each colour's one-point contacts are
   /// bundled together too, whose passes skip the second point.
   bool twoPoints : 1 = false;
-  /// Body A (B) moves and has no joints: only such a body stands on a row
-  /// of the support pass (a jointed one is held by more than its contacts:
-  /// lifting it alone would fight its joints, as a welded pair landing
-  /// twisted did), read off the bodies with the rest of the ref.
-  bool freeA : 1 = false;
-  bool freeB : 1 = false;
+  /// Body A (B) has joints, read off the bodies with the rest of the ref.
+  bool jointedA : 1 = false;
+  bool jointedB : 1 = false;
   /// The byte's other bits, named so that a ref built whole is stored whole:
   /// left unnamed, they were read back from the ref's place before each
   /// store, a cache miss for most refs (a third of their collection's time).
@@ -71,6 +65,16 @@ struct ConstraintRef {
   /// What its points carried in the last sub-step of last step (normal
   /// plus support impulses): the support pass's measured load.
   Real lastLoad = 0;
+
+  /// Either body has joints: its loads are not weights it carries, so the
+  /// contact never holds as a wedge's (kHold, contact_solver.h).
+  bool jointed() const { return jointedA || jointedB; }
+  /// Body A (B) moves and has no joints: only such a body stands on a row
+  /// of the support pass (a jointed one is held by more than its contacts:
+  /// lifting it alone would fight its joints, as a welded pair landing
+  /// twisted did).
+  bool freeA() const { return stateA != 0 && !jointedA; }
+  bool freeB() const { return stateB != 0 && !jointedB; }
 };
 
 struct ConstraintPoint {

@@ -59,18 +59,16 @@ ConstraintRef refOf(const WorldData& world, std::int32_t index, const Vec2& up) 
   const Body& bodyB = world.bodies[contact.edges.bodyB];
   const RefSide a = sideOf(bodyA);
   const RefSide b = sideOf(bodyB);
-  const bool jointed = bodyA.jointHead != kNullIndex || bodyB.jointHead != kNullIndex;
   const Real load = lastLoad(contact.manifold);
   return {.contact = index,
           .stateA = a.state,
           .stateB = b.state,
-          .jointed = jointed,
           .facing = facingOf(contact.manifold.normal, up),
           .touchesUnloaded = load == 0 && touches(contact.manifold),
           .quiet = quiet(contact.manifold, load),
           .twoPoints = contact.manifold.pointCount == 2,
-          .freeA = a.state != 0 && bodyA.jointHead == kNullIndex,
-          .freeB = b.state != 0 && bodyB.jointHead == kNullIndex,
+          .jointedA = bodyA.jointHead != kNullIndex,
+          .jointedB = bodyB.jointHead != kNullIndex,
           .invMassA = a.invMass,
           .invInertiaA = a.invInertia,
           .invMassB = b.invMass,

@@ -83,7 +83,7 @@ inline constexpr HoldRamp kHangingHold{Real(0.5), Real(2), Real(0.95)};
 /// Whether a contact may hold as a wedge's: off level, between two moving
 /// bodies without joints (the rest, load and overlap, is per point).
 inline bool mayHoldAsWedge(const ConstraintRef& ref) {
-  return ref.facing == 0 && !ref.jointed && ref.stateA != 0 && ref.stateB != 0;
+  return ref.facing == 0 && !ref.jointed() && ref.stateA != 0 && ref.stateB != 0;
 }
 
 /// The soft push's cap of a point: the speed that carries its load, with

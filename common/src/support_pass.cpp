@@ -318,7 +318,7 @@ void SupportPass::estimateStartLoads(const WorldData& world, std::span<const Con
   std::int32_t topLevel = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const ConstraintRef& ref = refs[i];
-    if (ref.jointed) continue;
+    if (ref.jointed()) continue;
     const Manifold& manifold = world.contacts[ref.contact].manifold;
     const Real upward = manifold.normal.dot(up);
     const bool upperIsB = upward > 0;
@@ -382,7 +382,7 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
     for (std::size_t i = 0; i < refs.size(); ++i) {
       ConstraintRef& ref = refs[i];
       ref.hangs = hangs_[std::size_t(ref.stateA)] != 0 || hangs_[std::size_t(ref.stateB)] != 0;
-      if (ref.hangs && ref.touchesUnloaded && !ref.jointed) startCandidates_.push_back(std::int32_t(i));
+      if (ref.hangs && ref.touchesUnloaded && !ref.jointed()) startCandidates_.push_back(std::int32_t(i));
     }
     // New contacts change the graph.
     if (graphChanged) estimateStartLoads(world, refs);
@@ -406,7 +406,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     return ref.facing != 0 && (ref.stateA == 0 || ref.stateB == 0);
   });
   const bool anyFreeBody =
-      std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.freeA || ref.freeB; });
+      std::any_of(refs.begin(), refs.end(), [](const ConstraintRef& ref) { return ref.freeA() || ref.freeB(); });
   if (!standsOnStatic || !anyFreeBody) {
     level_.assign(stateCount, kUnreached);
     return;
@@ -423,7 +423,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
     if (lower == kUnreached || upper <= lower || hangs_[std::size_t(upperIsB ? ref.stateA : ref.stateB)] != 0 ||
-        !(upperIsB ? ref.freeB : ref.freeA)) {
+        !(upperIsB ? ref.freeB() : ref.freeA())) {
       continue;
     }
     SupportRow row;
