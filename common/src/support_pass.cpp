@@ -61,24 +61,41 @@ Vec2 upwards(const Vec2& gravity) {
   return gravity.squaredNorm() > 0 ? Vec2(-gravity.normalized()) : Vec2::Zero();
 }
 
+namespace {
+
+// The positions i in [0, count) where takes(i), in order, into `list`.
+// Without a branch on takes(i): whether a contact in a tumbling crowd is
+// level is a coin toss, and the loops over every ref that branched on it
+// mispredicted about half the time (the levelling took twice as long).
+template <class Takes>
+void listWhere(std::size_t count, Takes&& takes, std::vector<std::int32_t>& list) {
+  list.resize(count);
+  std::size_t listed = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    list[listed] = std::int32_t(i);
+    listed += takes(i) ? 1 : 0;
+  }
+  list.resize(listed);
+}
+
+}  // namespace
+
 // Adjacency lists in one array (counted, then filled) over the contacts
-// `joins` takes (by position in refs), each edge marked steep where its
+// `joined` lists (by position in refs), each edge marked steep where its
 // contact is not level.
-template <class Joins>
-void SupportPass::linkBodies(std::span<const ConstraintRef> refs, std::size_t stateCount, Joins&& joins) {
+void SupportPass::linkBodies(std::span<const ConstraintRef> refs, std::size_t stateCount,
+                             std::span<const std::int32_t> joined) {
   edgeStart_.assign(stateCount + 1, 0);
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (!joins(i)) continue;
-    ++edgeStart_[std::size_t(refs[i].stateA) + 1];
-    ++edgeStart_[std::size_t(refs[i].stateB) + 1];
+  for (const std::int32_t i : joined) {
+    ++edgeStart_[std::size_t(refs[std::size_t(i)].stateA) + 1];
+    ++edgeStart_[std::size_t(refs[std::size_t(i)].stateB) + 1];
   }
   for (std::size_t s = 1; s <= stateCount; ++s) edgeStart_[s] += edgeStart_[s - 1];
   neighbours_.resize(std::size_t(edgeStart_[stateCount]));
   steepEdge_.resize(neighbours_.size());
   cursor_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (!joins(i)) continue;
-    const ConstraintRef& ref = refs[i];
+  for (const std::int32_t i : joined) {
+    const ConstraintRef& ref = refs[std::size_t(i)];
     for (const auto& [from, to] : {std::pair{ref.stateA, ref.stateB}, std::pair{ref.stateB, ref.stateA}}) {
       const std::size_t edge = std::size_t(cursor_[std::size_t(from)]++);
       neighbours_[edge] = to;
@@ -114,7 +131,8 @@ constexpr std::size_t kRoundnessAhead = 64;
 // where some are left unreached, over the steep contacts between two moving
 // bodies too, but those with a round shape (support_pass.h says why).
 void SupportPass::levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount) {
-  linkBodies(refs, stateCount, [&](std::size_t i) { return refs[i].facing != 0; });
+  listWhere(refs.size(), [&](std::size_t i) { return refs[i].facing != 0; }, levelRefs_);
+  linkBodies(refs, stateCount, levelRefs_);
   level_.assign(stateCount, kUnreached);
   hangs_.assign(stateCount, 0);
   level_[0] = 0;
@@ -124,8 +142,8 @@ void SupportPass::levelBodies(const WorldData& world, std::span<const Constraint
   // Every level contact now joins two reached bodies or two unreached ones,
   // and only the latter can become rows through the second walk: without
   // one (a crowd tumbling in a drum) the walk would change no row.
-  const bool levelContactLeft = std::any_of(refs.begin(), refs.end(), [&](const ConstraintRef& ref) {
-    return ref.facing != 0 && unreached(ref.stateA) && unreached(ref.stateB);
+  const bool levelContactLeft = std::any_of(levelRefs_.begin(), levelRefs_.end(), [&](std::int32_t i) {
+    return unreached(refs[std::size_t(i)].stateA) && unreached(refs[std::size_t(i)].stateB);
   });
   if (!levelContactLeft) return;
   // Whether a contact's shapes are round is read off the contact, and only
@@ -150,14 +168,13 @@ void SupportPass::levelBodies(const WorldData& world, std::span<const Constraint
   // unreached ones: the contacts between two reached bodies are left out
   // (levels the same; in a tumbling pile most of its contacts, whose
   // shapes would be read to tell whether they are round).
-  secondWalkLinks_.resize(refs.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) {
+  const auto secondWalkLinks = [&](std::size_t i) {
     fetchRoundnessAhead(i);
     const ConstraintRef& ref = refs[i];
-    secondWalkLinks_[i] = (unreached(ref.stateA) || unreached(ref.stateB)) &&
-                          (ref.facing != 0 || betweenMovingAngularShapes(ref));
-  }
-  linkBodies(refs, stateCount, [&](std::size_t i) { return secondWalkLinks_[i] != 0; });
+    return (unreached(ref.stateA) || unreached(ref.stateB)) && (ref.facing != 0 || betweenMovingAngularShapes(ref));
+  };
+  listWhere(refs.size(), secondWalkLinks, secondWalkRefs_);
+  linkBodies(refs, stateCount, secondWalkRefs_);
   walkLevels();
   anyHangs_ = true;
 }
@@ -416,9 +433,8 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
   unsorted_.clear();
   rowLevel_.clear();
   std::int32_t topLevel = 0;
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    const ConstraintRef& ref = refs[i];
-    if (ref.facing == 0) continue;
+  for (const std::int32_t i : levelRefs_) {
+    const ConstraintRef& ref = refs[std::size_t(i)];
     const bool upperIsB = ref.facing > 0;
     std::int32_t lower = level_[std::size_t(upperIsB ? ref.stateA : ref.stateB)];
     std::int32_t upper = level_[std::size_t(upperIsB ? ref.stateB : ref.stateA)];
@@ -427,7 +443,7 @@ void SupportPass::findCandidates(const WorldData& world, std::span<const Constra
       continue;
     }
     SupportRow row;
-    row.ref = static_cast<std::int32_t>(i);
+    row.ref = i;
     row.upperIsB = upperIsB;
     row.leans = lower > 0 && std::abs(ref.facing) != kFlat;
     unsorted_.push_back(row);

@@ -181,8 +181,7 @@ class SupportPass {
   bool sameGraphAsLastStep(const WorldData& world, std::span<const ConstraintRef> refs) const;
   void remember(const WorldData& world, std::span<const ConstraintRef> refs);
   void findCandidates(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
-  template <class Joins>
-  void linkBodies(std::span<const ConstraintRef> refs, std::size_t stateCount, Joins&& joins);
+  void linkBodies(std::span<const ConstraintRef> refs, std::size_t stateCount, std::span<const std::int32_t> joined);
   void walkLevels();
   void levelBodies(const WorldData& world, std::span<const ConstraintRef> refs, std::size_t stateCount);
   void groupStorey(std::span<const ConstraintRef> refs, std::size_t storey);
@@ -209,12 +208,14 @@ class SupportPass {
   /// Whether the second walk ran (some body may hang): only then are the
   /// refs marked (ConstraintRef::hangs).
   bool anyHangs_ = false;
+  /// The level refs (ConstraintRef::facing not 0), by position.
+  std::vector<std::int32_t> levelRefs_;
   std::vector<std::int32_t> edgeStart_;
   std::vector<std::int32_t> neighbours_;
   std::vector<std::uint8_t> steepEdge_;
   std::vector<std::int32_t> queue_;
-  /// Per ref: whether the second walk may step over it (levelBodies).
-  std::vector<std::uint8_t> secondWalkLinks_;
+  /// The refs the second walk may step over (levelBodies), by position.
+  std::vector<std::int32_t> secondWalkRefs_;
   /// Fill positions of a counting sort (adjacency lists, storeys, groups).
   std::vector<std::int32_t> cursor_;
   std::vector<SupportRow> unsorted_;
