@@ -243,16 +243,20 @@ constexpr std::int32_t kRefsPerMarkRange = 1024;
 // write the same mark over a zero, and a mark being written reads as zero
 // or as the next ring, neither of which is `ring`; so the marks are the
 // same for any order and split of the refs (relaxed atomics, plain moves
-// on x86).
+// on x86). Without a branch: a mark that is not made goes to a byte of the
+// range's own (in a crowd, whether a ref marks is a coin toss, which the
+// branches mispredicted).
 void markNextRing(const TaskRunner& tasks, std::span<const ConstraintRef> refs, std::uint8_t ring,
                   std::vector<std::uint8_t>& zone) {
   const auto markOf = [&](std::int32_t state) { return std::atomic_ref<std::uint8_t>(zone[std::size_t(state)]); };
-  const auto markNext = [&](std::int32_t from, std::int32_t to) {
-    if (to == 0 || markOf(from).load(std::memory_order_relaxed) != ring) return;
-    if (markOf(to).load(std::memory_order_relaxed) != 0) return;
-    markOf(to).store(std::uint8_t(ring - 1), std::memory_order_relaxed);
-  };
   tasks.forRanges(std::int32_t(refs.size()), kRefsPerMarkRange, [&](std::int32_t begin, std::int32_t end) {
+    std::uint8_t unmade = 0;
+    const auto markNext = [&](std::int32_t from, std::int32_t to) {
+      const bool marks = (to != 0) & (markOf(from).load(std::memory_order_relaxed) == ring) &
+                         (markOf(to).load(std::memory_order_relaxed) == 0);
+      std::uint8_t& mark = marks ? zone[std::size_t(to)] : unmade;
+      std::atomic_ref<std::uint8_t>(mark).store(std::uint8_t(ring - 1), std::memory_order_relaxed);
+    };
     for (const ConstraintRef& ref : refs.subspan(std::size_t(begin), std::size_t(end - begin))) {
       markNext(ref.stateA, ref.stateB);
       markNext(ref.stateB, ref.stateA);
