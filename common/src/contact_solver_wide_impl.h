@@ -584,11 +584,11 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
       set.bundlePushLanes[std::size_t(b)] = lanes;
     }
   });
-  for (std::size_t b = 0; b < bundles.size(); ++b) {
-    const std::uint8_t lanes = set.bundlePushLanes[b];
-    if (lanes == 0) continue;
-    set.pushBundles.push_back(static_cast<std::int32_t>(b));
-    set.pushLanes.push_back(lanes);
+  listWhere(bundles.size(), [&](std::size_t b) { return set.bundlePushLanes[b] != 0; }, set.pushBundles);
+  set.pushLanes.resize(set.pushBundles.size());
+  for (std::size_t k = 0; k < set.pushBundles.size(); ++k) {
+    const std::uint8_t lanes = set.bundlePushLanes[std::size_t(set.pushBundles[k])];
+    set.pushLanes[k] = lanes;
     set.pushedContacts += std::popcount(lanes);
   }
   for (std::size_t k = 0; k < set.overflow.size(); ++k) {
@@ -741,10 +741,7 @@ bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> re
         });
   });
 
-  set.bounceBundles.clear();
-  for (std::int32_t b = 0; b < bundleCount; ++b) {
-    if (set.bundleTraits[std::size_t(b)].mayBounce) set.bounceBundles.push_back(b);
-  }
+  listWhere(std::size_t(bundleCount), [&](std::size_t b) { return set.bundleTraits[b].mayBounce; }, set.bounceBundles);
   set.overflow.clear();
   set.overflowIntrudes.clear();
   set.overflowSupportRecord.clear();

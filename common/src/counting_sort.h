@@ -1,7 +1,8 @@
 #pragma once
 // A stable counting sort of positions by small integer keys, in linear time:
 // the solver orders its constraints by colour and the narrow phase its
-// touching contacts by body this way.
+// touching contacts by body this way. And the positions that pass a test,
+// listed without a branch on it.
 
 #include <algorithm>
 #include <cstdint>
@@ -33,6 +34,21 @@ inline void countingSort(std::span<const std::int32_t> keys, std::span<std::int3
 inline void placesInOrder(std::span<const std::int32_t> order, std::vector<std::int32_t>& place) {
   place.resize(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) place[static_cast<std::size_t>(order[k])] = static_cast<std::int32_t>(k);
+}
+
+/// The positions i in [0, count) where takes(i), in order, into `list`,
+/// without a branch on takes(i): where the test is a coin toss (whether a
+/// crowd's contact is level, whether a bundle may bounce), the loops that
+/// branched on it mispredicted about half the time.
+template <class Takes>
+void listWhere(std::size_t count, Takes&& takes, std::vector<std::int32_t>& list) {
+  list.resize(count);
+  std::size_t listed = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    list[listed] = static_cast<std::int32_t>(i);
+    listed += takes(i) ? 1 : 0;
+  }
+  list.resize(listed);
 }
 
 }  // namespace impulse

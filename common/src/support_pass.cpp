@@ -61,25 +61,6 @@ Vec2 upwards(const Vec2& gravity) {
   return gravity.squaredNorm() > 0 ? Vec2(-gravity.normalized()) : Vec2::Zero();
 }
 
-namespace {
-
-// The positions i in [0, count) where takes(i), in order, into `list`.
-// Without a branch on takes(i): whether a contact in a tumbling crowd is
-// level is a coin toss, and the loops over every ref that branched on it
-// mispredicted about half the time (the levelling took twice as long).
-template <class Takes>
-void listWhere(std::size_t count, Takes&& takes, std::vector<std::int32_t>& list) {
-  list.resize(count);
-  std::size_t listed = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    list[listed] = std::int32_t(i);
-    listed += takes(i) ? 1 : 0;
-  }
-  list.resize(listed);
-}
-
-}  // namespace
-
 // Adjacency lists in one array (counted, then filled) over the contacts
 // `joined` lists (by position in refs), each edge marked steep where its
 // contact is not level.
