@@ -376,12 +376,12 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
   keepStacksThatSink();
   for (const SupportRow& row : rows_) refs[std::size_t(row.ref)].holdsUp = true;
   if (anyHangs_) {
-    startCandidates_.clear();
-    for (std::size_t i = 0; i < refs.size(); ++i) {
-      ConstraintRef& ref = refs[i];
-      ref.hangs = hangs_[std::size_t(ref.stateA)] != 0 || hangs_[std::size_t(ref.stateB)] != 0;
-      if (ref.hangs && ref.touchesUnloaded && !ref.jointed()) startCandidates_.push_back(std::int32_t(i));
+    // Without a branch: in a crowd, whether a body hangs is a coin toss.
+    for (ConstraintRef& ref : refs) {
+      ref.hangs = (hangs_[std::size_t(ref.stateA)] | hangs_[std::size_t(ref.stateB)]) != 0;
     }
+    listWhere(refs.size(), [&](std::size_t i) { return refs[i].hangs & refs[i].touchesUnloaded & !refs[i].jointed(); },
+              startCandidates_);
     // New contacts change the graph.
     if (graphChanged) estimateStartLoads(world, refs);
   }
