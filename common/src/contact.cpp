@@ -439,17 +439,29 @@ void listTouching(WorldData& world) {
   world.touchingContacts.resize(std::size_t(touching));
   world.touchingKeys.resize(std::size_t(touching));
   world.eventfulEntries.resize(std::size_t(eventful));
+  // Every entry writes its slots and only a touching (an eventful) one
+  // keeps them, so that the loop does not branch on whether a crowd's
+  // contact touches, a coin toss; a chunk whose slots are all taken writes
+  // into a sink of its own, never into the next chunk's.
   world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t chunk = begin; chunk < end; ++chunk) {
-      auto at = std::size_t(tallies[std::size_t(chunk)].firstTouching);
-      auto eventfulAt = std::size_t(tallies[std::size_t(chunk)].firstEventful);
+      const CollideTally& tally = tallies[std::size_t(chunk)];
+      auto at = std::size_t(tally.firstTouching);
+      auto eventfulAt = std::size_t(tally.firstEventful);
+      const std::size_t touchingEnd = at + std::size_t(tally.touching);
+      const std::size_t eventfulEnd = eventfulAt + std::size_t(tally.eventful);
+      std::int32_t sink[3];
       for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
         const std::uint8_t outcome = world.collideOutcomes[i];
-        if (isEventful(outcome)) world.eventfulEntries[eventfulAt++] = std::int32_t(i);
-        if ((outcome & kTouching) == 0) continue;
-        world.touchingContacts[at] = world.collideList[i];
-        world.touchingKeys[at] = world.collideKeys[i];
-        ++at;
+        const bool touchingRoom = at < touchingEnd;
+        std::int32_t* contact = touchingRoom ? world.touchingContacts.data() + at : &sink[0];
+        std::int32_t* key = touchingRoom ? world.touchingKeys.data() + at : &sink[1];
+        std::int32_t* entry = eventfulAt < eventfulEnd ? world.eventfulEntries.data() + eventfulAt : &sink[2];
+        *contact = world.collideList[i];
+        *key = world.collideKeys[i];
+        *entry = std::int32_t(i);
+        at += (outcome & kTouching) != 0 ? 1 : 0;
+        eventfulAt += isEventful(outcome) ? 1 : 0;
       }
     }
   });
