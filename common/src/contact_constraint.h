@@ -252,16 +252,15 @@ struct WideContactSet {
   std::vector<float> supportImpulses;
   /// The push pass's contacts: those of the bodies at most two contacts
   /// from one whose contact overlaps deeper than its load explains when
-  /// prepared (hasIntrusion), which pushZone marks. By bundle, in bundle order,
-  /// with a bit per such lane; and by index in the overflow list.
+  /// prepared (hasIntrusion), which pushZone marks. The bundles with such a
+  /// lane, in bundle order, and per contact bundle its pushed lanes (a bit
+  /// each; read only for the bundles listed); and by index in the overflow
+  /// list.
   std::vector<std::int32_t> pushBundles;
-  std::vector<std::uint8_t> pushLanes;
+  std::vector<std::uint8_t> bundlePushLanes;
   std::vector<std::int32_t> pushOverflow;
   /// Per overflow constraint, 1 where it intrudes (as bundleIntrusion).
   std::vector<std::uint8_t> overflowIntrudes;
-  /// Per contact bundle, its lanes the push pass runs on (scratch for the
-  /// lists above).
-  std::vector<std::uint8_t> bundlePushLanes;
   /// How many contacts that is.
   int pushedContacts = 0;
   /// Per solver state: kIntrudingBody where one of its contacts intrudes,

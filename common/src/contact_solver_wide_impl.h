@@ -566,7 +566,6 @@ void markIntruding(WideContactSet& set, std::int32_t stateA, std::int32_t stateB
 template <class F>
 void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool anyIntrusion) {
   set.pushBundles.clear();
-  set.pushLanes.clear();
   set.pushOverflow.clear();
   set.pushedContacts = 0;
   if (!anyIntrusion) return;
@@ -585,12 +584,7 @@ void selectPushedContacts(const TaskRunner& tasks, WideContactSet& set, bool any
     }
   });
   listWhere(bundles.size(), [&](std::size_t b) { return set.bundlePushLanes[b] != 0; }, set.pushBundles);
-  set.pushLanes.resize(set.pushBundles.size());
-  for (std::size_t k = 0; k < set.pushBundles.size(); ++k) {
-    const std::uint8_t lanes = set.bundlePushLanes[std::size_t(set.pushBundles[k])];
-    set.pushLanes[k] = lanes;
-    set.pushedContacts += std::popcount(lanes);
-  }
+  for (const std::uint8_t lanes : set.bundlePushLanes) set.pushedContacts += std::popcount(lanes);
   for (std::size_t k = 0; k < set.overflow.size(); ++k) {
     const ContactConstraint& c = set.overflow[k];
     if (!nearIntrusion(set, c.stateA, c.stateB)) continue;
@@ -970,7 +964,7 @@ void pushWide(const ContactSolverContext& context, WideContactSet& set) {
     const F* loadOverlap = cold[bundle].loadOverlap;
     const BundleTraits& traits = set.bundleTraits[bundle];
     const int points = traits.points();
-    const F pushes = simd::maskOfBits<F>(set.pushLanes[k]);
+    const F pushes = simd::maskOfBits<F>(set.bundlePushLanes[bundle]);
     WideBody<F> a = gather<F>(context.states, c.stateA);
     WideBody<F> b = gather<F>(context.states, c.stateB);
     F dpx = b.dpx - a.dpx;
