@@ -450,16 +450,15 @@ void listTouching(WorldData& world) {
       auto eventfulAt = std::size_t(tally.firstEventful);
       const std::size_t touchingEnd = at + std::size_t(tally.touching);
       const std::size_t eventfulEnd = eventfulAt + std::size_t(tally.eventful);
-      std::int32_t sink[3];
+      std::int32_t sink = 0;
+      const auto slot = [&](std::vector<std::int32_t>& list, std::size_t position, std::size_t slotsEnd) {
+        return position < slotsEnd ? list.data() + position : &sink;
+      };
       for (std::size_t i = chunkStart(size, chunk, chunks); i < chunkStart(size, chunk + 1, chunks); ++i) {
         const std::uint8_t outcome = world.collideOutcomes[i];
-        const bool touchingRoom = at < touchingEnd;
-        std::int32_t* contact = touchingRoom ? world.touchingContacts.data() + at : &sink[0];
-        std::int32_t* key = touchingRoom ? world.touchingKeys.data() + at : &sink[1];
-        std::int32_t* entry = eventfulAt < eventfulEnd ? world.eventfulEntries.data() + eventfulAt : &sink[2];
-        *contact = world.collideList[i];
-        *key = world.collideKeys[i];
-        *entry = std::int32_t(i);
+        *slot(world.touchingContacts, at, touchingEnd) = world.collideList[i];
+        *slot(world.touchingKeys, at, touchingEnd) = world.collideKeys[i];
+        *slot(world.eventfulEntries, eventfulAt, eventfulEnd) = std::int32_t(i);
         at += (outcome & kTouching) != 0 ? 1 : 0;
         eventfulAt += isEventful(outcome) ? 1 : 0;
       }
