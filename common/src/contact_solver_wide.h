@@ -46,6 +46,12 @@ struct WideContactKernels {
   void (*warmStartPins)(std::span<SolverState> states, std::span<PinBlock> blocks);
   void (*solvePins)(std::span<SolverState> states, std::span<PinBlock> blocks,
                     const Softness& softness);
+  /// The same for the plain pins of the tree pass (joint_pins.h), whose
+  /// impulses stay in `rows`; the pass is a relax (`softness`).
+  void (*warmStartTreePins)(std::span<SolverState> states, std::span<TreePinBlock> blocks,
+                            std::span<JointRow> rows);
+  void (*solveTreePins)(std::span<SolverState> states, std::span<TreePinBlock> blocks,
+                        std::span<JointRow> rows, const Softness& softness);
   /// The same for revolute joints with a limit, motor or spring (joint_pins.h),
   /// whose pins' impulses stay in `rows` (the tree pass's); a pass of `pass`.
   void (*warmStartRevolutes)(std::span<SolverState> states, std::span<RevoluteBlock> blocks,

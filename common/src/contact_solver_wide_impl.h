@@ -1141,7 +1141,8 @@ template <class F>
 WideContactKernels makeWideContactKernels() {
   return {F::kLanes,      &buildWideContacts<F>, &warmStartWide<F>,    &solveWide<F>,
           &pushWide<F>,    &solveSupportWide<F>,  &restitutionWide<F>, &storeWideImpulses<F>,
-          &warmStartPins<F>, &solvePins<F>,      &warmStartRevolutes<F>, &solveRevolutes<F>, &integratePositionsWide<F>};
+          &warmStartPins<F>, &solvePins<F>,      &warmStartTreePins<F>,  &solveTreePins<F>,
+          &warmStartRevolutes<F>, &solveRevolutes<F>, &integratePositionsWide<F>};
 }
 
 }  // namespace

@@ -14,6 +14,30 @@ namespace {
 // Blocks of PinGeometry::kLanes lanes that hold `rows` rows.
 std::int32_t blocksFor(std::int32_t rows) { return (rows + PinGeometry::kLanes - 1) / PinGeometry::kLanes; }
 
+// Marks, per block of a list laid out colour by colour from `starts`, the
+// blocks of the colour's first leadingRows(color) rows (which take another
+// pass or softness).
+template <class LeadingRows>
+void markLeadingBlocks(const ColorStarts& starts, int colours, std::vector<std::uint8_t>& marks,
+                       LeadingRows&& leadingRows) {
+  marks.assign(std::size_t(starts[std::size_t(colours)]), 0);
+  for (int color = 0; color < colours; ++color) {
+    const auto first = marks.begin() + starts[std::size_t(color)];
+    std::fill(first, first + blocksFor(leadingRows(color)), 1);
+  }
+}
+
+// How many of `part` (a run of one colour's blocks of `all`) lead it marked:
+// a colour's marked blocks come first.
+template <class Block>
+std::size_t leadingMarked(const std::vector<std::uint8_t>& marks, const std::vector<Block>& all,
+                          std::span<Block> part) {
+  const auto first = std::size_t(part.data() - all.data());
+  std::size_t marked = 0;
+  while (marked < part.size() && marks[first + marked] != 0) ++marked;
+  return marked;
+}
+
 // Rigid rows are as stiff as the soft step allows (a quarter of the sub-step
 // rate, beyond which it rings): 60 Hz at the default 4 sub-steps of 60 Hz,
 // Box2D v3's figure, and stiffer with more sub-steps, which is what lets a
@@ -135,9 +159,11 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
   pullingRows_.clear();
   pinBlocks_.clear();
   revoluteBlocks_.clear();
+  treePinBlocks_.clear();
   rowsBesidePins_.clear();
   pinBlockStarts_ = {};
   revoluteBlockStarts_ = {};
+  treePinBlockStarts_ = {};
   besideStarts_ = {};
   // What the colouring needs of each joint, side by side; then the colours
   // one by one (a colour depends on the joints before it), from those
@@ -190,13 +216,13 @@ void JointConstraints::findJointSides(const WorldData& world) {
   });
 }
 
-// Each colour's plain pins, and its revolute joints with turning rows, get
-// a place in blocks of their own kind (block times eight plus lane, by
-// rank); the colour's other rows are listed beside them. A colour's rows
-// share no awake body, so solving its blocks first changes nothing. Pins
-// the tree pass solves exactly stay rows: the tree pass reads and writes
-// their impulses during the step, which a pin block holds (a revolute block
-// leaves them in the rows).
+// Each colour's plain pins, its revolute joints with turning rows, and its
+// plain pins that the tree pass solves get a place in blocks of their own
+// kind (block times eight plus lane, by rank); the colour's other rows are
+// listed beside them. A colour's rows share no awake body, so solving its
+// blocks first changes nothing. The tree pass reads and writes its pins'
+// impulses in the rows during the step, which a pin block would hold: its
+// pins take blocks that leave them there (as a revolute block does).
 void JointConstraints::placeBlocks(const TaskRunner& tasks) {
   // Overflow rows stay out of blocks; the coloured rows are all written
   // below, side by side, a colour to a range: first each row's kind and
@@ -220,6 +246,8 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
     pinBlockStarts_[next] =
         pinBlockStarts_[next - 1] + blocksFor(rows.loopPins) + blocksFor(rows.pins);
     revoluteBlockStarts_[next] = revoluteBlockStarts_[next - 1] + blocksFor(rows.revolutes);
+    treePinBlockStarts_[next] =
+        treePinBlockStarts_[next - 1] + blocksFor(rows.relaxedTreePins) + blocksFor(rows.exactTreePins);
     besideStarts_[next] = besideStarts_[next - 1] + rows.beside;
   }
   rowsBesidePins_.resize(std::size_t(besideStarts_[std::size_t(colours)]));
@@ -228,12 +256,12 @@ void JointConstraints::placeBlocks(const TaskRunner& tasks) {
       placeRowsOfColour(color, counts[std::size_t(color)]);
   });
   pinBlocks_.resize(std::size_t(pinBlockStarts_[std::size_t(colours)]));
-  pinBlockInLoop_.assign(pinBlocks_.size(), 0);
-  for (int color = 0; color < colours; ++color) {
-    const auto first = pinBlockInLoop_.begin() + pinBlockStarts_[std::size_t(color)];
-    std::fill(first, first + blocksFor(counts[std::size_t(color)].loopPins), 1);
-  }
+  markLeadingBlocks(pinBlockStarts_, colours, pinBlockInLoop_,
+                    [&](int color) { return counts[std::size_t(color)].loopPins; });
   revoluteBlocks_.resize(std::size_t(revoluteBlockStarts_[std::size_t(colours)]));
+  treePinBlocks_.resize(std::size_t(treePinBlockStarts_[std::size_t(colours)]));
+  markLeadingBlocks(treePinBlockStarts_, colours, treePinBlockRelaxed_,
+                    [&](int color) { return counts[std::size_t(color)].relaxedTreePins; });
 }
 
 // Each row of the colour marked with the kind of block it goes in (None:
@@ -246,6 +274,9 @@ JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) 
     if (row.plainPin && !row.inTree) {
       kind = BlockKind::Pin;
       ++(row.pinInLoop ? counts.loopPins : counts.pins);
+    } else if (row.plainPin) {
+      kind = BlockKind::TreePin;
+      ++(row.relaxedExactly ? counts.exactTreePins : counts.relaxedTreePins);
     } else if (isTurningRevolute(row)) {
       kind = BlockKind::Revolute;
       ++counts.revolutes;
@@ -258,19 +289,24 @@ JointConstraints::ColourRows JointConstraints::markRowKinds(std::int32_t color) 
 }
 
 // Each blocked row of the colour its lane (block times eight plus lane, by
-// rank within its kind, pins in loops first), each other row its place
-// beside the blocks.
+// rank within its kind, pins in loops and tree pins relaxed first), each
+// other row its place beside the blocks.
 void JointConstraints::placeRowsOfColour(std::int32_t color, const ColourRows& rows) {
   std::int32_t loopPin = pinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
   std::int32_t pin =
       (pinBlockStarts_[std::size_t(color)] + blocksFor(rows.loopPins)) * PinGeometry::kLanes;
   std::int32_t revolute = revoluteBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+  std::int32_t relaxedTreePin = treePinBlockStarts_[std::size_t(color)] * PinGeometry::kLanes;
+  std::int32_t exactTreePin =
+      (treePinBlockStarts_[std::size_t(color)] + blocksFor(rows.relaxedTreePins)) * PinGeometry::kLanes;
   std::int32_t beside = besideStarts_[std::size_t(color)];
   for (std::int32_t r = colorStarts_[std::size_t(color)]; r < colorStarts_[std::size_t(color) + 1]; ++r) {
     BlockPlace& place = placeOf_[std::size_t(r)];
     if (place.kind == BlockKind::Pin)
       place.lane = rows_[std::size_t(r)].pinInLoop ? loopPin++ : pin++;
     if (place.kind == BlockKind::Revolute) place.lane = revolute++;
+    if (place.kind == BlockKind::TreePin)
+      place.lane = rows_[std::size_t(r)].relaxedExactly ? exactTreePin++ : relaxedTreePin++;
     if (place.kind == BlockKind::None) rowsBesidePins_[std::size_t(beside++)] = r;
   }
 }
@@ -300,20 +336,23 @@ void JointConstraints::fillBlocks(const TaskRunner& tasks) {
             placePin(pinBlocks_[block], lane, rows_[std::size_t(r)], r);
           if (place.kind == BlockKind::Revolute)
             placeRevolute(revoluteBlocks_[block], lane, rows_[std::size_t(r)], r, pass_.h);
+          if (place.kind == BlockKind::TreePin)
+            placeGeometry(treePinBlocks_[block].pin, lane, rows_[std::size_t(r)], r);
         }
       });
 }
 
 // Colour by colour: visitPins(blocks) on the colour's pin blocks,
-// visitRevolutes(blocks) on its revolute blocks and visit(row, stateA,
-// stateB) on its other rows, all side by side; then the rows that found no
+// visitRevolutes(blocks) on its revolute blocks, visitTreePins(blocks) on
+// its tree pin blocks and visit(row, stateA, stateB) on its other rows, all
+// side by side; then the rows that found no
 // colour one by one. Rows on a static or sleeping body write a copy of the
 // dummy state 0, never the state itself, which two threads would otherwise
 // write together (it stays zero: such a body has no inverse mass); the
 // block kernels' scatter does the same.
-template <class Visit, class VisitPins, class VisitRevolutes>
+template <class Visit, class VisitPins, class VisitRevolutes, class VisitTreePins>
 void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins,
-                                         VisitRevolutes&& visitRevolutes) {
+                                         VisitRevolutes&& visitRevolutes, VisitTreePins&& visitTreePins) {
   auto visitRow = [&](std::int32_t r, SolverState& sink) {
     JointRow& row = rows_[std::size_t(r)];
     visit(row, row.stateA != 0 ? sub.states[row.stateA] : sink, row.stateB != 0 ? sub.states[row.stateB] : sink);
@@ -323,12 +362,13 @@ void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, Visi
     const std::int32_t firstPins = pinBlockStarts_[std::size_t(color)];
     const std::int32_t pins = pinBlockStarts_[std::size_t(color) + 1] - firstPins;
     const std::int32_t firstRevolutes = revoluteBlockStarts_[std::size_t(color)];
-    const std::int32_t blocks =
-        pins + revoluteBlockStarts_[std::size_t(color) + 1] - firstRevolutes;
+    const std::int32_t revolutes = pins + revoluteBlockStarts_[std::size_t(color) + 1] - firstRevolutes;
+    const std::int32_t firstTreePins = treePinBlockStarts_[std::size_t(color)];
+    const std::int32_t blocks = revolutes + treePinBlockStarts_[std::size_t(color) + 1] - firstTreePins;
     const std::int32_t firstBeside = besideStarts_[std::size_t(color)];
     const std::int32_t beside = besideStarts_[std::size_t(color) + 1] - firstBeside;
-    // Items [0, pins) are pin blocks, [pins, blocks) revolute blocks, the
-    // rest the rows beside them.
+    // Items [0, pins) are pin blocks, [pins, revolutes) revolute blocks,
+    // [revolutes, blocks) tree pin blocks, the rest the rows beside them.
     const std::int32_t perRange = blocks > 0 ? kJointBlocksPerRange : kJointRowsPerRange;
     sub.tasks->forRanges(
         blocks + beside, perRange, [&](std::int32_t begin, std::int32_t end) {
@@ -337,11 +377,18 @@ void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, Visi
             visitPins(std::span(pinBlocks_)
                           .subspan(std::size_t(firstPins + begin), std::size_t(pinEnd - begin)));
           const std::int32_t revoluteBegin = std::max(begin, pins);
-          const std::int32_t revoluteEnd = std::min(end, blocks);
+          const std::int32_t revoluteEnd = std::min(end, revolutes);
           if (revoluteBegin < revoluteEnd) {
             visitRevolutes(std::span(revoluteBlocks_)
                                .subspan(std::size_t(firstRevolutes + revoluteBegin - pins),
                                         std::size_t(revoluteEnd - revoluteBegin)));
+          }
+          const std::int32_t treePinBegin = std::max(begin, revolutes);
+          const std::int32_t treePinEnd = std::min(end, blocks);
+          if (treePinBegin < treePinEnd) {
+            visitTreePins(std::span(treePinBlocks_)
+                              .subspan(std::size_t(firstTreePins + treePinBegin - revolutes),
+                                       std::size_t(treePinEnd - treePinBegin)));
           }
           SolverState sink = sub.states[0];
           for (std::int32_t item = std::max(begin, blocks); item < end; ++item) {
@@ -361,7 +408,8 @@ void JointConstraints::warmStart(const SubStep& sub) {
       [&](std::span<PinBlock> blocks) { kernels_->warmStartPins(sub.states, blocks); },
       [&](std::span<RevoluteBlock> blocks) {
         kernels_->warmStartRevolutes(sub.states, blocks, rows_);
-      });
+      },
+      [&](std::span<TreePinBlock> blocks) { kernels_->warmStartTreePins(sub.states, blocks, rows_); });
 }
 
 void JointConstraints::run(const SubStep& sub, bool useBias) {
@@ -372,6 +420,9 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
       [&](std::span<PinBlock> blocks) { solvePinBlocks(sub, blocks, pass); },
       [&](std::span<RevoluteBlock> blocks) {
         kernels_->solveRevolutes(sub.states, blocks, rows_, pass);
+      },
+      [&](std::span<TreePinBlock> blocks) {
+        if (!useBias) relaxTreePinBlocks(sub, blocks, pass);
       });
 }
 
@@ -379,13 +430,20 @@ void JointConstraints::run(const SubStep& sub, bool useBias) {
 // come first.
 void JointConstraints::solvePinBlocks(const SubStep& sub, std::span<PinBlock> blocks,
                                       const JointPass& pass) {
-  const auto first = std::size_t(blocks.data() - pinBlocks_.data());
-  std::size_t loopBlocks = 0;
-  while (loopBlocks < blocks.size() && pinBlockInLoop_[first + loopBlocks] != 0) ++loopBlocks;
+  const std::size_t loopBlocks = leadingMarked(pinBlockInLoop_, pinBlocks_, blocks);
   if (loopBlocks > 0)
     kernels_->solvePins(sub.states, blocks.first(loopBlocks), loopPinSoftness(pass));
   if (loopBlocks < blocks.size())
     kernels_->solvePins(sub.states, blocks.subspan(loopBlocks), rowSoftness(pass));
+}
+
+// Tree pin blocks of one colour in the relax: only those the tree pass does
+// not relax exactly, which come first. The biased pass leaves them all to
+// the tree pass.
+void JointConstraints::relaxTreePinBlocks(const SubStep& sub, std::span<TreePinBlock> blocks,
+                                          const JointPass& pass) {
+  const std::size_t relaxed = leadingMarked(treePinBlockRelaxed_, treePinBlocks_, blocks);
+  if (relaxed > 0) kernels_->solveTreePins(sub.states, blocks.first(relaxed), rows_, rowSoftness(pass));
 }
 
 void JointConstraints::solve(const SubStep& sub) { run(sub, true); }

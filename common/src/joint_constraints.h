@@ -34,21 +34,26 @@ class JointConstraints final : public ConstraintKind {
 
  private:
   void run(const SubStep& sub, bool useBias);
-  template <class Visit, class VisitPins, class VisitRevolutes>
-  void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins, VisitRevolutes&& visitRevolutes);
+  template <class Visit, class VisitPins, class VisitRevolutes, class VisitTreePins>
+  void forEachRowByColor(const SubStep& sub, Visit&& visit, VisitPins&& visitPins, VisitRevolutes&& visitRevolutes,
+                         VisitTreePins&& visitTreePins);
   void findJointSides(const WorldData& world);
   /// How many of a colour's rows go in pin blocks (those of pins in loops
-  /// apart), in revolute blocks and beside them.
+  /// apart), in revolute blocks, in tree pin blocks (those the tree pass
+  /// relaxes exactly apart) and beside them.
   struct ColourRows {
     std::int32_t loopPins = 0;
     std::int32_t pins = 0;
     std::int32_t revolutes = 0;
+    std::int32_t relaxedTreePins = 0;
+    std::int32_t exactTreePins = 0;
     std::int32_t beside = 0;
   };
   void placeBlocks(const TaskRunner& tasks);
   ColourRows markRowKinds(std::int32_t color);
   void placeRowsOfColour(std::int32_t color, const ColourRows& rows);
   void solvePinBlocks(const SubStep& sub, std::span<PinBlock> blocks, const JointPass& pass);
+  void relaxTreePinBlocks(const SubStep& sub, std::span<TreePinBlock> blocks, const JointPass& pass);
   void fillBlocks(const TaskRunner& tasks);
 
   std::vector<JointRow> rows_;
@@ -73,15 +78,20 @@ class JointConstraints final : public ConstraintKind {
   ColorStarts colorStarts_{};
   /// Colour c's plain pins outside the tree pass, eight to a block, are
   /// pinBlocks_[pinBlockStarts_[c], pinBlockStarts_[c + 1]), its revolute
-  /// joints with turning rows likewise in revoluteBlocks_; its other rows
-  /// are rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]). A
-  /// colour's pins in loops (JointRow::pinInLoop) fill its first pin blocks,
-  /// marked in pinBlockInLoop_, as they take another softness.
+  /// joints with turning rows likewise in revoluteBlocks_, its plain pins
+  /// of the tree pass in treePinBlocks_; its other rows are
+  /// rowsBesidePins_[besideStarts_[c], besideStarts_[c + 1]). A colour's
+  /// pins in loops (JointRow::pinInLoop) fill its first pin blocks, marked
+  /// in pinBlockInLoop_, as they take another softness; its tree pins that
+  /// the relax solves (not JointRow::relaxedExactly) fill its first tree pin
+  /// blocks, marked in treePinBlockRelaxed_.
   std::vector<PinBlock> pinBlocks_;
   std::vector<std::uint8_t> pinBlockInLoop_;
   std::vector<RevoluteBlock> revoluteBlocks_;
+  std::vector<TreePinBlock> treePinBlocks_;
+  std::vector<std::uint8_t> treePinBlockRelaxed_;
   /// Per row (by rank), the kind of block it is in and its block * 8 + lane.
-  enum class BlockKind : std::uint8_t { None, Pin, Revolute };
+  enum class BlockKind : std::uint8_t { None, Pin, Revolute, TreePin };
   struct BlockPlace {
     BlockKind kind = BlockKind::None;
     std::int32_t lane = 0;
@@ -89,6 +99,7 @@ class JointConstraints final : public ConstraintKind {
   std::vector<BlockPlace> placeOf_;
   ColorStarts pinBlockStarts_{};
   ColorStarts revoluteBlockStarts_{};
+  ColorStarts treePinBlockStarts_{};
   std::vector<std::int32_t> rowsBesidePins_;
   ColorStarts besideStarts_{};
   const WideContactKernels* kernels_ = nullptr;

@@ -74,6 +74,16 @@ inline void storePinImpulses(const PinBlock& block, std::span<JointRow> rows) {
   }
 }
 
+/// Plain pins the tree pass solves (JointRow::inTree), eight at a time: the
+/// geometry alone, as the pins' impulses stay in their JointRows, where the
+/// tree pass reads and writes them during the step. Their warm start, and
+/// the relax of those the tree pass does not relax exactly, run as a
+/// PinBlock's.
+struct alignas(32) TreePinBlock {
+  static constexpr int kLanes = PinGeometry::kLanes;
+  PinGeometry pin;
+};
+
 /// Revolute joints with a limit, a motor or a spring (every ragdoll joint),
 /// eight at a time: the pin as in PinBlock, then each lane's turning rows
 /// (joint_rows.cpp's solveKind for a revolute joint, row for row). What a

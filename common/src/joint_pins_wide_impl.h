@@ -146,6 +146,68 @@ void solvePins(std::span<SolverState> states, std::span<PinBlock> blocks, const 
                    });
 }
 
+/// The pins' accumulated impulses of a run of lanes where they stay in the
+/// JointRows (the tree pass reads and writes them there): gathered lane by
+/// lane, zero for an empty lane.
+template <class F>
+struct PointImpulses {
+  F x, y;
+};
+
+template <class F>
+PointImpulses<F> loadPointImpulses(const PinGeometry& pin, int first, std::span<const JointRow> rows) {
+  float x[F::kLanes] = {};
+  float y[F::kLanes] = {};
+  for (int l = 0; l < F::kLanes; ++l) {
+    const std::int32_t r = pin.row[first + l];
+    if (r < 0) continue;
+    const Vec2& point = rows[std::size_t(r)].impulses.point;
+    x[l] = point.x();
+    y[l] = point.y();
+  }
+  return {simd::load<F>(x), simd::load<F>(y)};
+}
+
+template <class F>
+void storePointImpulses(const PinGeometry& pin, int first, const PointImpulses<F>& impulses,
+                        std::span<JointRow> rows) {
+  float x[F::kLanes];
+  float y[F::kLanes];
+  simd::store(x, impulses.x);
+  simd::store(y, impulses.y);
+  for (int l = 0; l < F::kLanes; ++l) {
+    const std::int32_t r = pin.row[first + l];
+    if (r >= 0) rows[std::size_t(r)].impulses.point = Vec2(x[l], y[l]);
+  }
+}
+
+// ---- plain pins of the tree pass (TreePinBlock) ------------------------------
+
+template <class F>
+void warmStartTreePins(std::span<SolverState> states, std::span<TreePinBlock> blocks,
+                       std::span<JointRow> rows) {
+  forEachPinRun<F>(states, blocks,
+                   [&](TreePinBlock& block, const PinLanes<F>& p, const PinFrame<F>& f, WideBody<F>& a,
+                       WideBody<F>& b) {
+                     const PointImpulses<F> i = loadPointImpulses<F>(block.pin, p.first, rows);
+                     applyPinImpulse(p, f, i.x, i.y, a, b);
+                   });
+}
+
+/// solvePins on pins whose impulses stay in `rows`.
+template <class F>
+void solveTreePins(std::span<SolverState> states, std::span<TreePinBlock> blocks, std::span<JointRow> rows,
+                   const Softness& soft) {
+  forEachPinRun<F>(states, blocks,
+                   [&](TreePinBlock& block, const PinLanes<F>& p, const PinFrame<F>& f, WideBody<F>& a,
+                       WideBody<F>& b) {
+                     const PointImpulses<F> i = loadPointImpulses<F>(block.pin, p.first, rows);
+                     const PinStep<F> next = stepPin(p, f, a, b, soft, i.x, i.y);
+                     applyPinImpulse(p, f, next.nextX - i.x, next.nextY - i.y, a, b);
+                     storePointImpulses<F>(block.pin, p.first, {next.nextX, next.nextY}, rows);
+                   });
+}
+
 // ---- revolute joints with turning rows (RevoluteBlock) ----------------------
 
 /// The turn row's Jacobian (angularJacobian or its negation): a zero
@@ -197,17 +259,9 @@ struct TurnImpulses {
 template <class F>
 TurnImpulses<F> loadImpulses(const RevoluteBlock& block, int first,
                              std::span<const JointRow> rows) {
-  float x[F::kLanes] = {};
-  float y[F::kLanes] = {};
-  for (int l = 0; l < F::kLanes; ++l) {
-    const std::int32_t r = block.pin.row[first + l];
-    if (r < 0) continue;
-    const Vec2& point = rows[std::size_t(r)].impulses.point;
-    x[l] = point.x();
-    y[l] = point.y();
-  }
-  return {simd::load<F>(x),
-          simd::load<F>(y),
+  const PointImpulses<F> point = loadPointImpulses<F>(block.pin, first, rows);
+  return {point.x,
+          point.y,
           simd::load<F>(block.angularImpulse + first),
           simd::load<F>(block.axialImpulse + first),
           simd::load<F>(block.springImpulse + first),
@@ -221,14 +275,7 @@ TurnImpulses<F> loadImpulses(const RevoluteBlock& block, int first,
 template <class F>
 void storeImpulses(RevoluteBlock& block, int first, const TurnImpulses<F>& impulses,
                    std::span<JointRow> rows) {
-  float x[F::kLanes];
-  float y[F::kLanes];
-  simd::store(x, impulses.pointX);
-  simd::store(y, impulses.pointY);
-  for (int l = 0; l < F::kLanes; ++l) {
-    const std::int32_t r = block.pin.row[first + l];
-    if (r >= 0) rows[std::size_t(r)].impulses.point = Vec2(x[l], y[l]);
-  }
+  storePointImpulses<F>(block.pin, first, {impulses.pointX, impulses.pointY}, rows);
   simd::store(block.springImpulse + first, impulses.spring);
   simd::store(block.motorImpulse + first, impulses.motor);
   simd::store(block.lowerImpulse + first, impulses.lower);
