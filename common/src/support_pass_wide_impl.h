@@ -398,7 +398,10 @@ void holdUp(std::span<SolverState> states, F inverseSubStep, SupportRows rows, b
 // Storey by storey from the ground (storey 0: the rows on the static
 // world); within a storey the groups run backwards on the sub-steps that
 // also reverse the contacts' point order. A group's bundles run side by
-// side: its rows lift distinct upper bodies and only read lower ones.
+// side: its rows lift distinct upper bodies and only read lower ones, in
+// ranges as short as a colour's: with 64 bundles a range, a group of fewer
+// than 128 (the upper storeys of v3's many_pyramids) ran on one thread
+// while the other waited.
 template <class F>
 void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
                       const SupportPass& pass, SupportRows rows) {
@@ -411,7 +414,7 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
     for (std::int32_t k = 0; k < count; ++k) {
       const std::size_t group = std::size_t(context.reversePointOrder ? first + count - 1 - k : first + k);
       const std::int32_t groupFirst = set.supportGroupBundle[group];
-      context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerRange,
+      context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerColorRange,
                                [&](std::int32_t begin, std::int32_t end) {
                                  for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
                                    holdUp(context.states, inverseSubStep, rows, storey == 0,
