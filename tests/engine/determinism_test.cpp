@@ -88,6 +88,34 @@ TEST(Determinism, Sse2AndWidestSimd_GiveIdenticalHashes) {
   }
 }
 
+// A step whose colours hold four contacts or fewer runs the four-lane
+// kernels whatever the width asked for; a column grown box by box from one
+// to twelve (two colours, of up to six contacts) crosses that line mid-run.
+std::vector<std::uint64_t> growingColumnHashes(SimdWidth width) {
+  WorldSettings settings = sleepless();
+  settings.simdWidth = width;
+  World world(settings);
+  addGround(world);
+  std::vector<std::uint64_t> hashes;
+  for (int box = 0; box < 12; ++box) {
+    addBox(world, {.center = Vec2(Real(0.02) * Real(box % 3), Real(0.5) + Real(box) * Real(1.05))});
+    for (int i = 0; i < 20; ++i) {
+      world.step(kDt);
+      hashes.push_back(world.stateHash());
+    }
+  }
+  return hashes;
+}
+
+TEST(Determinism, ColumnGrowingPastFourContactsAColour_GivesEveryWidthsBits) {
+  const std::vector<std::uint64_t> sse2 = growingColumnHashes(SimdWidth::Sse2);
+  const std::vector<std::uint64_t> widest = growingColumnHashes(SimdWidth::Best);
+  ASSERT_EQ(sse2.size(), widest.size());
+  for (std::size_t i = 0; i < sse2.size(); ++i) {
+    ASSERT_EQ(sse2[i], widest[i]) << "widths diverge after step " << i + 1;
+  }
+}
+
 TEST(Determinism, SameCommandsAtSameTicks_GiveIdenticalStates) {
   auto run = [] {
     World world;
