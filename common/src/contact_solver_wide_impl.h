@@ -716,7 +716,7 @@ template <class F>
 bool buildWideContacts(const WorldData& world, std::span<const ConstraintRef> refs,
                        const ContactSoftness& softness, const SupportPass& support, WideContactSet& set) {
   const ColorStarts& start = set.colorStart;
-  placeSupportRows<F>(support, refs.size(), set);
+  placeSupportRows<F>(support, refs.size(), world.tasks, set);
   set.contactSlices.cut(std::span(start).first(GraphColoring::kOverflow + 1), F::kLanes, set.colorBundleStart);
   const std::int32_t bundleCount = set.contactSlices.count();
 

@@ -202,11 +202,16 @@ void finishSupportBundle(const WideContactSet& set, std::int32_t b, WideSupportR
   row.pairInverse22 = simd::select(pair, k11 / det, zero);
 }
 
+// Refs per range when clearing their support places side by side.
+constexpr std::int32_t kPlacesPerRange = 4096;
+
 // Lays the rows out group by group, each group in bundles of F::kLanes, and
 // notes each row's lane by its contact, which fills the lane's record as it
 // is prepared (packSupportLanes): the contact's numbers are at hand then.
+// Side by side (a contact has at most one row): on v3's many_pyramids the
+// places' scattered writes had kept the other thread waiting.
 template <class F>
-void placeSupportRows(const SupportPass& pass, std::size_t refCount, WideContactSet& set) {
+void placeSupportRows(const SupportPass& pass, std::size_t refCount, const TaskRunner& tasks, WideContactSet& set) {
   const std::span<const std::int32_t> groups = pass.groupStarts();
   set.supportGroupBundle.resize(groups.size());
   set.supportSlices.cut(groups, F::kLanes, set.supportGroupBundle);
@@ -214,17 +219,22 @@ void placeSupportRows(const SupportPass& pass, std::size_t refCount, WideContact
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   bundles.resize(std::size_t(count));
   set.supportLanes.resize(std::size_t(count) * F::kLanes);
-  set.supportPlaceOf.assign(refCount, SupportPlace{});
-  for (std::int32_t b = 0; b < count; ++b) {
-    const std::int32_t first = set.supportSlices.first[std::size_t(b)];
-    std::uint8_t leans = 0;
-    for (int lane = 0; lane < set.supportSlices.lanes[std::size_t(b)]; ++lane) {
-      const SupportRow& row = pass.rows()[std::size_t(first + lane)];
-      set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
-      if (row.leans) leans = std::uint8_t(leans | (1u << lane));
+  set.supportPlaceOf.resize(refCount);
+  tasks.forRanges(std::int32_t(refCount), kPlacesPerRange, [&](std::int32_t begin, std::int32_t end) {
+    std::fill(set.supportPlaceOf.begin() + begin, set.supportPlaceOf.begin() + end, SupportPlace{});
+  });
+  tasks.forRanges(count, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end; ++b) {
+      const std::int32_t first = set.supportSlices.first[std::size_t(b)];
+      std::uint8_t leans = 0;
+      for (int lane = 0; lane < set.supportSlices.lanes[std::size_t(b)]; ++lane) {
+        const SupportRow& row = pass.rows()[std::size_t(first + lane)];
+        set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
+        if (row.leans) leans = std::uint8_t(leans | (1u << lane));
+      }
+      bundles[std::size_t(b)].leans = simd::maskOfBits<F>(leans);
     }
-    bundles[std::size_t(b)].leans = simd::maskOfBits<F>(leans);
-  }
+  });
 }
 
 // The index of a row's lane record (SupportPlace), -1 for a contact that
