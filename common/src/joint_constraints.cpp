@@ -311,21 +311,10 @@ void JointConstraints::placeRowsOfColour(std::int32_t color, const ColourRows& r
   }
 }
 
-// The last block of each colour that has any, reset: the lanes a colour's
-// last joints leave empty.
-template <class Block>
-void resetColoursLastBlocks(std::vector<Block>& blocks, const ColorStarts& starts, int colours) {
-  for (int color = 0; color < colours; ++color) {
-    const std::int32_t end = starts[std::size_t(color) + 1];
-    if (end > starts[std::size_t(color)]) blocks[std::size_t(end - 1)] = Block{};
-  }
-}
-
-// Copies each blocked joint into its lane, side by side.
+// Copies each blocked joint into its lane, side by side. The lanes no joint
+// takes keep their empty defaults: the blocks are made afresh each step
+// (prepare clears them, placeBlocks sizes them).
 void JointConstraints::fillBlocks(const TaskRunner& tasks) {
-  const int colours = coloursTaken(colorStarts_);
-  resetColoursLastBlocks(pinBlocks_, pinBlockStarts_, colours);
-  resetColoursLastBlocks(revoluteBlocks_, revoluteBlockStarts_, colours);
   tasks.forRanges(
       std::int32_t(rows_.size()), kJointsPerMakeRange, [&](std::int32_t begin, std::int32_t end) {
         for (std::int32_t r = begin; r < end; ++r) {
