@@ -127,6 +127,21 @@ void putIslandToSleep(WorldData& world) {
   for (std::int32_t slot : world.islandBodies) deactivateBodyContacts(world, slot);
 }
 
+// Slot order, so the solver's row order does not depend on traversal. The
+// bodies woken since the last step were appended to the sorted rest: they
+// are sorted alone and merged in (sorting the whole list had taken Box2D
+// v3's smash, waking a few bodies a step among 6 000, tens of microseconds
+// a step on the calling thread).
+void restoreSlotOrder(WorldData& world) {
+  std::vector<std::int32_t>& awake = world.awakeBodies;
+  const auto woken = std::is_sorted_until(awake.begin(), awake.end());
+  if (woken == awake.end()) return;
+  std::sort(woken, awake.end());
+  world.awakeMerge.resize(awake.size());
+  std::merge(awake.begin(), woken, woken, awake.end(), world.awakeMerge.begin());
+  awake.swap(world.awakeMerge);
+}
+
 }  // namespace
 
 void updateSleep(WorldData& world, Real dt) {
@@ -150,11 +165,7 @@ void updateSleep(WorldData& world, Real dt) {
     }
   }
   if (anyAsleep) std::erase_if(world.awakeBodies, [&](std::int32_t slot) { return !world.bodies[slot].awake; });
-  // Slot order (woken bodies were appended), so the solver's row order does
-  // not depend on traversal.
-  if (!std::is_sorted(world.awakeBodies.begin(), world.awakeBodies.end())) {
-    std::sort(world.awakeBodies.begin(), world.awakeBodies.end());
-  }
+  restoreSlotOrder(world);
   listMovedBodies(world);
 }
 

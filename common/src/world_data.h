@@ -144,6 +144,9 @@ struct WorldData {
   BroadPhase broadPhase;
   // Awake dynamic bodies in a deterministic order.
   std::vector<std::int32_t> awakeBodies;
+  // Where updateSleep merges the bodies woken in a step into awakeBodies
+  // (the two swap: both keep their room).
+  std::vector<std::int32_t> awakeMerge;
   std::vector<BodyId> movedBodies;
 
   // The kinds of constraint the solver runs (solver.cpp lists them).
