@@ -97,7 +97,7 @@ inline F4 maskOfBits<F4>(std::uint8_t bits) {
 }
 
 /// Reads the first eight floats of four rows as eight four-lane columns.
-inline void loadColumns(const float* const rows[4], F4 columns[8]) {
+[[gnu::always_inline]] inline void loadColumns(const float* const rows[4], F4 columns[8]) {
   __m128 a0 = _mm_loadu_ps(rows[0]), a1 = _mm_loadu_ps(rows[1]), a2 = _mm_loadu_ps(rows[2]),
          a3 = _mm_loadu_ps(rows[3]);
   __m128 b0 = _mm_loadu_ps(rows[0] + 4), b1 = _mm_loadu_ps(rows[1] + 4),
@@ -109,7 +109,7 @@ inline void loadColumns(const float* const rows[4], F4 columns[8]) {
 }
 
 /// Writes four columns back as the first four floats of four rows.
-inline void storeColumns(const F4 columns[4], float* const rows[4]) {
+[[gnu::always_inline]] inline void storeColumns(const F4 columns[4], float* const rows[4]) {
   __m128 r0 = columns[0].v, r1 = columns[1].v, r2 = columns[2].v, r3 = columns[3].v;
   _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
   _mm_storeu_ps(rows[0], r0);
