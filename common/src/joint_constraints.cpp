@@ -361,24 +361,20 @@ void JointConstraints::forEachRowByColor(const SubStep& sub, Visit&& visit, Visi
     const std::int32_t perRange = blocks > 0 ? kJointBlocksPerRange : kJointRowsPerRange;
     sub.tasks->forRanges(
         blocks + beside, perRange, [&](std::int32_t begin, std::int32_t end) {
-          const std::int32_t pinEnd = std::min(end, pins);
-          if (begin < pinEnd)
-            visitPins(std::span(pinBlocks_)
-                          .subspan(std::size_t(firstPins + begin), std::size_t(pinEnd - begin)));
-          const std::int32_t revoluteBegin = std::max(begin, pins);
-          const std::int32_t revoluteEnd = std::min(end, revolutes);
-          if (revoluteBegin < revoluteEnd) {
-            visitRevolutes(std::span(revoluteBlocks_)
-                               .subspan(std::size_t(firstRevolutes + revoluteBegin - pins),
-                                        std::size_t(revoluteEnd - revoluteBegin)));
-          }
-          const std::int32_t treePinBegin = std::max(begin, revolutes);
-          const std::int32_t treePinEnd = std::min(end, blocks);
-          if (treePinBegin < treePinEnd) {
-            visitTreePins(std::span(treePinBlocks_)
-                              .subspan(std::size_t(firstTreePins + treePinBegin - revolutes),
-                                       std::size_t(treePinEnd - treePinBegin)));
-          }
+          // The range's share of items [from, to), the colour's blocks of
+          // `list` from `first` on, visited as one span.
+          const auto visitShare = [&](auto& list, std::int32_t first, std::int32_t from, std::int32_t to,
+                                      auto&& visitBlocks) {
+            const std::int32_t shareBegin = std::max(begin, from);
+            const std::int32_t shareEnd = std::min(end, to);
+            if (shareBegin < shareEnd) {
+              visitBlocks(std::span(list).subspan(std::size_t(first + shareBegin - from),
+                                                  std::size_t(shareEnd - shareBegin)));
+            }
+          };
+          visitShare(pinBlocks_, firstPins, 0, pins, visitPins);
+          visitShare(revoluteBlocks_, firstRevolutes, pins, revolutes, visitRevolutes);
+          visitShare(treePinBlocks_, firstTreePins, revolutes, blocks, visitTreePins);
           SolverState sink = sub.states[0];
           for (std::int32_t item = std::max(begin, blocks); item < end; ++item) {
             visitRow(rowsBesidePins_[std::size_t(firstBeside + item - blocks)], sink);
