@@ -254,7 +254,7 @@ struct WideContactSet {
   /// from one whose contact overlaps deeper than its load explains when
   /// prepared (hasIntrusion), which pushZone marks. The bundles with such a
   /// lane, in bundle order, and per contact bundle its pushed lanes (a bit
-  /// each; read only for the bundles listed); and by index in the overflow
+  /// each, none for a bundle not listed); and by index in the overflow
   /// list.
   std::vector<std::int32_t> pushBundles;
   std::vector<std::uint8_t> bundlePushLanes;
