@@ -239,6 +239,9 @@ struct WideContactSet {
   /// in bundles8); support group g is bundles [supportGroupBundle[g],
   /// supportGroupBundle[g + 1]).
   std::vector<WideSupportRow<simd::F4>> support4;
+  /// Per support bundle that holds one row, that row alone, which the
+  /// support pass solves instead of the bundle (support_pass_wide_impl.h).
+  std::vector<WideSupportRow<simd::F1>> supportLoneRows;
   std::vector<std::int32_t> supportGroupBundle;
   /// Lane l of support bundle b as its contact filled it: record
   /// b * lanes + l (SupportLaneRecord).

@@ -118,4 +118,72 @@ inline F4 maskOfBits<F4>(std::uint8_t bits) {
   _mm_storeu_ps(rows[3], r3);
 }
 
+// ---- one lane ------------------------------------------------------------------
+
+/// A single lane: the first of an SSE register, with the scalar forms of
+/// the vector operations (the same bits as a vector lane), so that a row
+/// alone in its bundle (a tower's support row) costs its own two bodies
+/// instead of a whole bundle's gather and scatter. Masks stay in the
+/// register, as the vector types' do: through the integer registers, each
+/// select and compare on a row's chain of dependent arithmetic had cost
+/// a round trip.
+struct F1 {
+  static constexpr int kLanes = 1;
+  __m128 v;
+};
+
+inline F1 operator+(F1 a, F1 b) { return {_mm_add_ss(a.v, b.v)}; }
+inline F1 operator-(F1 a, F1 b) { return {_mm_sub_ss(a.v, b.v)}; }
+inline F1 operator*(F1 a, F1 b) { return {_mm_mul_ss(a.v, b.v)}; }
+inline F1 operator/(F1 a, F1 b) { return {_mm_div_ss(a.v, b.v)}; }
+inline F1 operator-(F1 a) { return {_mm_sub_ss(_mm_setzero_ps(), a.v)}; }
+inline F1 sqrt(F1 a) { return {_mm_sqrt_ss(a.v)}; }
+inline F1& operator+=(F1& a, F1 b) { return a = a + b; }
+inline F1& operator-=(F1& a, F1 b) { return a = a - b; }
+inline F1 abs(F1 a) { return {_mm_andnot_ps(_mm_set_ss(-0.0f), a.v)}; }
+inline F1 negated(F1 a) { return {_mm_xor_ps(_mm_set_ss(-0.0f), a.v)}; }
+inline F1 max(F1 a, F1 b) { return {_mm_max_ss(a.v, b.v)}; }
+inline F1 min(F1 a, F1 b) { return {_mm_min_ss(a.v, b.v)}; }
+inline F1 clamp(F1 x, F1 lo, F1 hi) { return min(max(x, lo), hi); }
+inline F1 greater(F1 a, F1 b) { return {_mm_cmpgt_ss(a.v, b.v)}; }
+inline F1 less(F1 a, F1 b) { return {_mm_cmplt_ss(a.v, b.v)}; }
+inline F1 atLeast(F1 a, F1 b) { return {_mm_cmpge_ss(a.v, b.v)}; }
+inline F1 notEqual(F1 a, F1 b) { return {_mm_cmpneq_ss(a.v, b.v)}; }
+inline F1 both(F1 a, F1 b) { return {_mm_and_ps(a.v, b.v)}; }
+inline F1 either(F1 a, F1 b) { return {_mm_or_ps(a.v, b.v)}; }
+inline F1 select(F1 mask, F1 a, F1 b) {
+  return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
+}
+inline F1 intGreater(F1 a, std::int32_t b) {
+  return {_mm_castsi128_ps(_mm_cmpgt_epi32(_mm_castps_si128(a.v), _mm_cvtsi32_si128(b)))};
+}
+inline bool any(F1 mask) { return (_mm_movemask_ps(mask.v) & 1) != 0; }
+inline std::uint8_t bitsOf(F1 mask) { return std::uint8_t(_mm_movemask_ps(mask.v) & 1); }
+inline void store(float* p, F1 a) { _mm_store_ss(p, a.v); }
+template <>
+inline F1 load<F1>(const float* p) {
+  return {_mm_load_ss(p)};
+}
+template <>
+inline F1 loadInts<F1>(const std::int32_t* p) {
+  return {_mm_castsi128_ps(_mm_cvtsi32_si128(*p))};
+}
+inline void storeInts(std::int32_t* p, F1 a) { *p = _mm_cvtsi128_si32(_mm_castps_si128(a.v)); }
+template <>
+inline F1 broadcast<F1>(float x) {
+  return {_mm_set_ss(x)};
+}
+template <>
+inline F1 maskOfBits<F1>(std::uint8_t bits) {
+  return {_mm_castsi128_ps(_mm_cvtsi32_si128((bits & 1u) != 0 ? -1 : 0))};
+}
+/// The first eight floats of one row, each its own column.
+[[gnu::always_inline]] inline void loadColumns(const float* const rows[1], F1 columns[8]) {
+  for (int i = 0; i < 8; ++i) columns[i] = {_mm_load_ss(rows[0] + i)};
+}
+/// Four columns back as the first four floats of one row.
+[[gnu::always_inline]] inline void storeColumns(const F1 columns[4], float* const rows[1]) {
+  for (int i = 0; i < 4; ++i) _mm_store_ss(rows[0] + i, columns[i].v);
+}
+
 }  // namespace impulse::simd

@@ -170,13 +170,9 @@ void loadSupportLanes(const void* const records[F::kLanes], WideSupportRow<F>& r
 // inverted once per step: both points together (zero when singular or a
 // point is missing), and each alone (1 / K_jj; zero for a missing point).
 template <class F>
-void finishSupportBundle(const WideContactSet& set, std::int32_t b, WideSupportRow<F>& row) {
-  const int lanes = set.supportSlices.lanes[std::size_t(b)];
+void finishSupportBundle(const SupportLaneRecord* first, int lanes, WideSupportRow<F>& row) {
   const void* records[F::kLanes];
-  for (int lane = 0; lane < F::kLanes; ++lane) {
-    records[lane] = lane < lanes ? &set.supportLanes[std::size_t(b) * F::kLanes + std::size_t(lane)]
-                                 : &kPaddingSupportLane;
-  }
+  for (int lane = 0; lane < F::kLanes; ++lane) records[lane] = lane < lanes ? first + lane : &kPaddingSupportLane;
   loadSupportLanes<F>(records, row);
   const F zero = simd::broadcast<F>(0);
   for (WideSupportPoint<F>& p : row.points) {
@@ -275,13 +271,31 @@ void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std:
   storeRecordColumns<F>(column, kSupportLaneFloats, records);
 }
 
+// A support bundle of one row is solved as that row alone
+// (WideContactSet::supportLoneRows): a bundle's cost is mostly its gather
+// and scatter of a body per lane, used or not, where a lone row reads and
+// writes only its own two. A tower has one row a storey (a 15-box tower's
+// holdUp had a quarter of its perf samples), a pyramid's top storeys one each.
+// Two rows alone were no faster than their bundle on four lanes.
+bool holdsOneRow(const WideContactSet& set, std::int32_t b) { return set.supportSlices.lanes[std::size_t(b)] == 1; }
+
 // Each support bundle's masses once all its lanes are in, side by side.
 template <class F>
 void finishSupportBundles(const TaskRunner& tasks, WideContactSet& set) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
+  set.supportLoneRows.resize(bundles.size());
   tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
                   [&](std::int32_t begin, std::int32_t end) {
-                    for (std::int32_t b = begin; b < end; ++b) finishSupportBundle(set, b, bundles[std::size_t(b)]);
+                    for (std::int32_t b = begin; b < end; ++b) {
+                      const SupportLaneRecord* first = &set.supportLanes[std::size_t(b) * F::kLanes];
+                      if (!holdsOneRow(set, b)) {
+                        finishSupportBundle(first, set.supportSlices.lanes[std::size_t(b)], bundles[std::size_t(b)]);
+                        continue;
+                      }
+                      WideSupportRow<simd::F1>& row = set.supportLoneRows[std::size_t(b)];
+                      finishSupportBundle(first, 1, row);
+                      row.leans = simd::maskOfBits<simd::F1>(simd::bitsOf(bundles[std::size_t(b)].leans));
+                    }
                   });
 }
 
@@ -427,8 +441,13 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
       context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerColorRange,
                                [&](std::int32_t begin, std::int32_t end) {
                                  for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
-                                   holdUp(context.states, inverseSubStep, rows, storey == 0,
-                                          bundles[std::size_t(b)]);
+                                   if (holdsOneRow(set, b)) {
+                                     holdUp(context.states, simd::broadcast<simd::F1>(context.inverseSubStep), rows,
+                                            storey == 0, set.supportLoneRows[std::size_t(b)]);
+                                   } else {
+                                     holdUp(context.states, inverseSubStep, rows, storey == 0,
+                                            bundles[std::size_t(b)]);
+                                   }
                                  }
                                });
     }
@@ -446,8 +465,12 @@ void collectSupportImpulses(WideContactSet& set, const TaskRunner& tasks) {
                   [&](std::int32_t begin, std::int32_t end) {
                     for (std::int32_t b = begin; b < end; ++b) {
                       for (int j = 0; j < 2; ++j) {
-                        simd::store(&set.supportImpulses[(std::size_t(b) * 2 + std::size_t(j)) * F::kLanes],
-                                    rows[std::size_t(b)].points[j].impulse);
+                        float* column = &set.supportImpulses[(std::size_t(b) * 2 + std::size_t(j)) * F::kLanes];
+                        if (holdsOneRow(set, b)) {
+                          simd::store(column, set.supportLoneRows[std::size_t(b)].points[j].impulse);
+                        } else {
+                          simd::store(column, rows[std::size_t(b)].points[j].impulse);
+                        }
                       }
                     }
                   });
