@@ -252,8 +252,8 @@ void markNextRing(const TaskRunner& tasks, std::span<const ConstraintRef> refs, 
   tasks.forRanges(std::int32_t(refs.size()), kRefsPerMarkRange, [&](std::int32_t begin, std::int32_t end) {
     std::uint8_t unmade = 0;
     const auto markNext = [&](std::int32_t from, std::int32_t to) {
-      const bool marks = (to != 0) & (markOf(from).load(std::memory_order_relaxed) == ring) &
-                         (markOf(to).load(std::memory_order_relaxed) == 0);
+      const bool marks = (int(to != 0) & int(markOf(from).load(std::memory_order_relaxed) == ring) &
+                          int(markOf(to).load(std::memory_order_relaxed) == 0)) != 0;
       std::uint8_t& mark = marks ? zone[std::size_t(to)] : unmade;
       std::atomic_ref<std::uint8_t>(mark).store(std::uint8_t(ring - 1), std::memory_order_relaxed);
     };
