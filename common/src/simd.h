@@ -1,6 +1,6 @@
 #pragma once
 // Four float lanes on SSE2 (part of every x86-64 CPU, so no build flag is
-// needed); eight on AVX2 live in simd_avx2.h. The
+// needed), or one; eight on AVX2 live in simd_avx2.h. The
 // contact solver works on independent constraints side by side; Eigen's
 // fixed-size types cover one vector, not lanes of unrelated rows, hence
 // these small types. Operation order is fixed and the same at both widths
@@ -12,51 +12,84 @@
 
 namespace impulse::simd {
 
-struct F4 {
-  static constexpr int kLanes = 4;
+/// Lanes of one SSE register: four (F4), or the first alone (F1: a row
+/// that is alone in its bundle, a tower's support row, costs its own two
+/// bodies instead of a whole bundle's gather and scatter). The arithmetic,
+/// compares and masks are the same instructions for both, as no lane's
+/// bits depend on another's; a lone lane's neighbours hold whatever those
+/// instructions make of the zeros it was loaded with, and only what reads
+/// or writes memory, or asks which lanes are set, counts lanes.
+template <int Lanes>
+struct SseLanes {
+  static constexpr int kLanes = Lanes;
   __m128 v;
 };
+using F4 = SseLanes<4>;
+using F1 = SseLanes<1>;
 
-inline F4 splat(float x) { return {_mm_set1_ps(x)}; }
-inline F4 zero() { return {_mm_setzero_ps()}; }
-inline F4 operator+(F4 a, F4 b) { return {_mm_add_ps(a.v, b.v)}; }
-inline F4 operator-(F4 a, F4 b) { return {_mm_sub_ps(a.v, b.v)}; }
-inline F4 operator*(F4 a, F4 b) { return {_mm_mul_ps(a.v, b.v)}; }
-inline F4 operator/(F4 a, F4 b) { return {_mm_div_ps(a.v, b.v)}; }
-inline F4 operator-(F4 a) { return {_mm_sub_ps(_mm_setzero_ps(), a.v)}; }
+template <int N>
+inline SseLanes<N> operator+(SseLanes<N> a, SseLanes<N> b) { return {_mm_add_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> operator-(SseLanes<N> a, SseLanes<N> b) { return {_mm_sub_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> operator*(SseLanes<N> a, SseLanes<N> b) { return {_mm_mul_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> operator/(SseLanes<N> a, SseLanes<N> b) { return {_mm_div_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> operator-(SseLanes<N> a) { return {_mm_sub_ps(_mm_setzero_ps(), a.v)}; }
 /// The correctly rounded square root, as std::sqrt's of each lane.
-inline F4 sqrt(F4 a) { return {_mm_sqrt_ps(a.v)}; }
-inline F4& operator+=(F4& a, F4 b) { return a = a + b; }
-inline F4& operator-=(F4& a, F4 b) { return a = a - b; }
+template <int N>
+inline SseLanes<N> sqrt(SseLanes<N> a) { return {_mm_sqrt_ps(a.v)}; }
+template <int N>
+inline SseLanes<N>& operator+=(SseLanes<N>& a, SseLanes<N> b) { return a = a + b; }
+template <int N>
+inline SseLanes<N>& operator-=(SseLanes<N>& a, SseLanes<N> b) { return a = a - b; }
 /// |a|: the sign bit cleared.
-inline F4 abs(F4 a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
+template <int N>
+inline SseLanes<N> abs(SseLanes<N> a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
 /// -a exactly as a scalar negation: the sign flipped, also of a zero.
-inline F4 negated(F4 a) { return {_mm_xor_ps(_mm_set1_ps(-0.0f), a.v)}; }
-inline F4 max(F4 a, F4 b) { return {_mm_max_ps(a.v, b.v)}; }
-inline F4 min(F4 a, F4 b) { return {_mm_min_ps(a.v, b.v)}; }
-inline F4 clamp(F4 x, F4 lo, F4 hi) { return min(max(x, lo), hi); }
+template <int N>
+inline SseLanes<N> negated(SseLanes<N> a) { return {_mm_xor_ps(_mm_set1_ps(-0.0f), a.v)}; }
+template <int N>
+inline SseLanes<N> max(SseLanes<N> a, SseLanes<N> b) { return {_mm_max_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> min(SseLanes<N> a, SseLanes<N> b) { return {_mm_min_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> clamp(SseLanes<N> x, SseLanes<N> lo, SseLanes<N> hi) { return min(max(x, lo), hi); }
 /// All-ones lanes where a > b.
-inline F4 greater(F4 a, F4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
-inline F4 less(F4 a, F4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
-inline F4 atLeast(F4 a, F4 b) { return {_mm_cmpge_ps(a.v, b.v)}; }
-inline F4 notEqual(F4 a, F4 b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
-inline F4 both(F4 a, F4 b) { return {_mm_and_ps(a.v, b.v)}; }
-inline F4 either(F4 a, F4 b) { return {_mm_or_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> greater(SseLanes<N> a, SseLanes<N> b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> less(SseLanes<N> a, SseLanes<N> b) { return {_mm_cmplt_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> atLeast(SseLanes<N> a, SseLanes<N> b) { return {_mm_cmpge_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> notEqual(SseLanes<N> a, SseLanes<N> b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> both(SseLanes<N> a, SseLanes<N> b) { return {_mm_and_ps(a.v, b.v)}; }
+template <int N>
+inline SseLanes<N> either(SseLanes<N> a, SseLanes<N> b) { return {_mm_or_ps(a.v, b.v)}; }
 /// mask ? a : b, lane by lane.
-inline F4 select(F4 mask, F4 a, F4 b) {
+template <int N>
+inline SseLanes<N> select(SseLanes<N> mask, SseLanes<N> a, SseLanes<N> b) {
   return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
 }
 /// All-ones lanes where a, read as a 32-bit integer, is greater than b (a
 /// lane that carries an index or a count rather than a float).
-inline F4 intGreater(F4 a, std::int32_t b) {
+template <int N>
+inline SseLanes<N> intGreater(SseLanes<N> a, std::int32_t b) {
   return {_mm_castsi128_ps(_mm_cmpgt_epi32(_mm_castps_si128(a.v), _mm_set1_epi32(b)))};
 }
-/// True when any lane of a mask is set.
-inline bool any(F4 mask) { return _mm_movemask_ps(mask.v) != 0; }
 /// A mask's lanes as bits (lane i: bit i); maskOfBits turns them back.
-inline std::uint8_t bitsOf(F4 mask) { return std::uint8_t(_mm_movemask_ps(mask.v)); }
+template <int N>
+inline std::uint8_t bitsOf(SseLanes<N> mask) {
+  return std::uint8_t(_mm_movemask_ps(mask.v) & ((1 << N) - 1));
+}
+/// True when any lane of a mask is set.
+template <int N>
+inline bool any(SseLanes<N> mask) { return bitsOf(mask) != 0; }
 inline void store(float* p, F4 a) { _mm_storeu_ps(p, a.v); }
-inline F4 set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
+inline void store(float* p, F1 a) { _mm_store_ss(p, a.v); }
 
 /// F's lanes from p[0], p[1], ... (width-generic code).
 template <class F>
@@ -64,6 +97,10 @@ F load(const float* p);
 template <>
 inline F4 load<F4>(const float* p) {
   return {_mm_loadu_ps(p)};
+}
+template <>
+inline F1 load<F1>(const float* p) {
+  return {_mm_load_ss(p)};
 }
 
 /// Lanes of 32-bit integers from p[0], p[1], ... (an index column), and
@@ -76,14 +113,23 @@ template <>
 inline F4 loadInts<F4>(const std::int32_t* p) {
   return {_mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))};
 }
+template <>
+inline F1 loadInts<F1>(const std::int32_t* p) {
+  return {_mm_castsi128_ps(_mm_cvtsi32_si128(*p))};
+}
 inline void storeInts(std::int32_t* p, F4 a) { _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm_castps_si128(a.v)); }
+inline void storeInts(std::int32_t* p, F1 a) { *p = _mm_cvtsi128_si32(_mm_castps_si128(a.v)); }
 
 /// x in every lane of F (width-generic code).
 template <class F>
 F broadcast(float x);
 template <>
 inline F4 broadcast<F4>(float x) {
-  return splat(x);
+  return {_mm_set1_ps(x)};
+}
+template <>
+inline F1 broadcast<F1>(float x) {
+  return {_mm_set_ss(x)};
 }
 
 /// A mask with lane i all ones where bit i of `bits` is set (width-generic
@@ -94,6 +140,10 @@ template <>
 inline F4 maskOfBits<F4>(std::uint8_t bits) {
   const __m128i laneBit = _mm_setr_epi32(1, 2, 4, 8);
   return {_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(bits), laneBit), laneBit))};
+}
+template <>
+inline F1 maskOfBits<F1>(std::uint8_t bits) {
+  return {_mm_castsi128_ps(_mm_cvtsi32_si128((bits & 1u) != 0 ? -1 : 0))};
 }
 
 /// Reads the first eight floats of four rows as eight four-lane columns.
@@ -118,65 +168,6 @@ inline F4 maskOfBits<F4>(std::uint8_t bits) {
   _mm_storeu_ps(rows[3], r3);
 }
 
-// ---- one lane ------------------------------------------------------------------
-
-/// A single lane: the first of an SSE register, with the scalar forms of
-/// the vector operations (the same bits as a vector lane), so that a row
-/// alone in its bundle (a tower's support row) costs its own two bodies
-/// instead of a whole bundle's gather and scatter. Masks stay in the
-/// register, as the vector types' do: through the integer registers, each
-/// select and compare on a row's chain of dependent arithmetic had cost
-/// a round trip.
-struct F1 {
-  static constexpr int kLanes = 1;
-  __m128 v;
-};
-
-inline F1 operator+(F1 a, F1 b) { return {_mm_add_ss(a.v, b.v)}; }
-inline F1 operator-(F1 a, F1 b) { return {_mm_sub_ss(a.v, b.v)}; }
-inline F1 operator*(F1 a, F1 b) { return {_mm_mul_ss(a.v, b.v)}; }
-inline F1 operator/(F1 a, F1 b) { return {_mm_div_ss(a.v, b.v)}; }
-inline F1 operator-(F1 a) { return {_mm_sub_ss(_mm_setzero_ps(), a.v)}; }
-inline F1 sqrt(F1 a) { return {_mm_sqrt_ss(a.v)}; }
-inline F1& operator+=(F1& a, F1 b) { return a = a + b; }
-inline F1& operator-=(F1& a, F1 b) { return a = a - b; }
-inline F1 abs(F1 a) { return {_mm_andnot_ps(_mm_set_ss(-0.0f), a.v)}; }
-inline F1 negated(F1 a) { return {_mm_xor_ps(_mm_set_ss(-0.0f), a.v)}; }
-inline F1 max(F1 a, F1 b) { return {_mm_max_ss(a.v, b.v)}; }
-inline F1 min(F1 a, F1 b) { return {_mm_min_ss(a.v, b.v)}; }
-inline F1 clamp(F1 x, F1 lo, F1 hi) { return min(max(x, lo), hi); }
-inline F1 greater(F1 a, F1 b) { return {_mm_cmpgt_ss(a.v, b.v)}; }
-inline F1 less(F1 a, F1 b) { return {_mm_cmplt_ss(a.v, b.v)}; }
-inline F1 atLeast(F1 a, F1 b) { return {_mm_cmpge_ss(a.v, b.v)}; }
-inline F1 notEqual(F1 a, F1 b) { return {_mm_cmpneq_ss(a.v, b.v)}; }
-inline F1 both(F1 a, F1 b) { return {_mm_and_ps(a.v, b.v)}; }
-inline F1 either(F1 a, F1 b) { return {_mm_or_ps(a.v, b.v)}; }
-inline F1 select(F1 mask, F1 a, F1 b) {
-  return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
-}
-inline F1 intGreater(F1 a, std::int32_t b) {
-  return {_mm_castsi128_ps(_mm_cmpgt_epi32(_mm_castps_si128(a.v), _mm_cvtsi32_si128(b)))};
-}
-inline bool any(F1 mask) { return (_mm_movemask_ps(mask.v) & 1) != 0; }
-inline std::uint8_t bitsOf(F1 mask) { return std::uint8_t(_mm_movemask_ps(mask.v) & 1); }
-inline void store(float* p, F1 a) { _mm_store_ss(p, a.v); }
-template <>
-inline F1 load<F1>(const float* p) {
-  return {_mm_load_ss(p)};
-}
-template <>
-inline F1 loadInts<F1>(const std::int32_t* p) {
-  return {_mm_castsi128_ps(_mm_cvtsi32_si128(*p))};
-}
-inline void storeInts(std::int32_t* p, F1 a) { *p = _mm_cvtsi128_si32(_mm_castps_si128(a.v)); }
-template <>
-inline F1 broadcast<F1>(float x) {
-  return {_mm_set_ss(x)};
-}
-template <>
-inline F1 maskOfBits<F1>(std::uint8_t bits) {
-  return {_mm_castsi128_ps(_mm_cvtsi32_si128((bits & 1u) != 0 ? -1 : 0))};
-}
 /// The first eight floats of one row, each its own column.
 [[gnu::always_inline]] inline void loadColumns(const float* const rows[1], F1 columns[8]) {
   for (int i = 0; i < 8; ++i) columns[i] = {_mm_load_ss(rows[0] + i)};

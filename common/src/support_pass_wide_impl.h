@@ -198,6 +198,14 @@ void finishSupportBundle(const SupportLaneRecord* first, int lanes, WideSupportR
   row.pairInverse22 = simd::select(pair, k11 / det, zero);
 }
 
+// A support bundle of one row is solved as that row alone
+// (WideContactSet::supportLoneRows): a bundle's cost is mostly its gather
+// and scatter of a body per lane, used or not, where a lone row reads and
+// writes only its own two. A tower has one row a storey (a 15-box tower's
+// holdUp had a quarter of its perf samples), a pyramid's top storeys one each.
+// Two rows alone were no faster than their bundle on four lanes.
+bool holdsOneRow(const WideContactSet& set, std::int32_t b) { return set.supportSlices.lanes[std::size_t(b)] == 1; }
+
 // Refs per range when clearing their support places side by side.
 constexpr std::int32_t kPlacesPerRange = 4096;
 
@@ -214,6 +222,7 @@ void placeSupportRows(const SupportPass& pass, std::size_t refCount, const TaskR
   const std::int32_t count = set.supportSlices.count();
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   bundles.resize(std::size_t(count));
+  set.supportLoneRows.resize(std::size_t(count));
   set.supportLanes.resize(std::size_t(count) * F::kLanes);
   set.supportPlaceOf.resize(refCount);
   tasks.forRanges(std::int32_t(refCount), kPlacesPerRange, [&](std::int32_t begin, std::int32_t end) {
@@ -228,7 +237,11 @@ void placeSupportRows(const SupportPass& pass, std::size_t refCount, const TaskR
         set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
         if (row.leans) leans = std::uint8_t(leans | (1u << lane));
       }
-      bundles[std::size_t(b)].leans = simd::maskOfBits<F>(leans);
+      if (holdsOneRow(set, b)) {
+        set.supportLoneRows[std::size_t(b)].leans = simd::maskOfBits<simd::F1>(leans);
+      } else {
+        bundles[std::size_t(b)].leans = simd::maskOfBits<F>(leans);
+      }
     }
   });
 }
@@ -271,30 +284,19 @@ void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std:
   storeRecordColumns<F>(column, kSupportLaneFloats, records);
 }
 
-// A support bundle of one row is solved as that row alone
-// (WideContactSet::supportLoneRows): a bundle's cost is mostly its gather
-// and scatter of a body per lane, used or not, where a lone row reads and
-// writes only its own two. A tower has one row a storey (a 15-box tower's
-// holdUp had a quarter of its perf samples), a pyramid's top storeys one each.
-// Two rows alone were no faster than their bundle on four lanes.
-bool holdsOneRow(const WideContactSet& set, std::int32_t b) { return set.supportSlices.lanes[std::size_t(b)] == 1; }
-
 // Each support bundle's masses once all its lanes are in, side by side.
 template <class F>
 void finishSupportBundles(const TaskRunner& tasks, WideContactSet& set) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
-  set.supportLoneRows.resize(bundles.size());
   tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
                   [&](std::int32_t begin, std::int32_t end) {
                     for (std::int32_t b = begin; b < end; ++b) {
                       const SupportLaneRecord* first = &set.supportLanes[std::size_t(b) * F::kLanes];
-                      if (!holdsOneRow(set, b)) {
+                      if (holdsOneRow(set, b)) {
+                        finishSupportBundle(first, 1, set.supportLoneRows[std::size_t(b)]);
+                      } else {
                         finishSupportBundle(first, set.supportSlices.lanes[std::size_t(b)], bundles[std::size_t(b)]);
-                        continue;
                       }
-                      WideSupportRow<simd::F1>& row = set.supportLoneRows[std::size_t(b)];
-                      finishSupportBundle(first, 1, row);
-                      row.leans = simd::maskOfBits<simd::F1>(simd::bitsOf(bundles[std::size_t(b)].leans));
                     }
                   });
 }
@@ -431,6 +433,7 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
                       const SupportPass& pass, SupportRows rows) {
   std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
   const F inverseSubStep = simd::broadcast<F>(context.inverseSubStep);
+  const simd::F1 loneInverseSubStep = simd::broadcast<simd::F1>(context.inverseSubStep);
   const std::span<const std::int32_t> storeys = pass.storeyStarts();
   for (std::size_t storey = 0; storey + 1 < storeys.size(); ++storey) {
     const std::int32_t first = storeys[storey];
@@ -442,8 +445,8 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
                                [&](std::int32_t begin, std::int32_t end) {
                                  for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
                                    if (holdsOneRow(set, b)) {
-                                     holdUp(context.states, simd::broadcast<simd::F1>(context.inverseSubStep), rows,
-                                            storey == 0, set.supportLoneRows[std::size_t(b)]);
+                                     holdUp(context.states, loneInverseSubStep, rows, storey == 0,
+                                            set.supportLoneRows[std::size_t(b)]);
                                    } else {
                                      holdUp(context.states, inverseSubStep, rows, storey == 0,
                                             bundles[std::size_t(b)]);
