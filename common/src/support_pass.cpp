@@ -380,8 +380,12 @@ void SupportPass::order(const WorldData& world, std::span<ConstraintRef> refs, s
     for (ConstraintRef& ref : refs) {
       ref.hangs = (hangs_[std::size_t(ref.stateA)] | hangs_[std::size_t(ref.stateB)]) != 0;
     }
-    listWhere(refs.size(), [&](std::size_t i) { return refs[i].hangs & refs[i].touchesUnloaded & !refs[i].jointed(); },
-              startCandidates_);
+    listWhere(
+        refs.size(),
+        [&](std::size_t i) {
+          return (int(refs[i].hangs) & int(refs[i].touchesUnloaded) & int(!refs[i].jointed())) != 0;
+        },
+        startCandidates_);
     // New contacts change the graph.
     if (graphChanged) estimateStartLoads(world, refs);
   }
