@@ -206,6 +206,17 @@ void finishSupportBundle(const SupportLaneRecord* first, int lanes, WideSupportR
 // Two rows alone were no faster than their bundle on four lanes.
 bool holdsOneRow(const WideContactSet& set, std::int32_t b) { return set.supportSlices.lanes[std::size_t(b)] == 1; }
 
+// visit(row) on support bundle b as the pass keeps it: its lone row where it
+// holds one, the bundle of F's lanes otherwise.
+template <class F, class Visit>
+void visitSupportRow(WideContactSet& set, std::int32_t b, Visit&& visit) {
+  if (holdsOneRow(set, b)) {
+    visit(set.supportLoneRows[std::size_t(b)]);
+  } else {
+    visit(supportBundlesOf<F>(set)[std::size_t(b)]);
+  }
+}
+
 // Refs per range when clearing their support places side by side.
 constexpr std::int32_t kPlacesPerRange = 4096;
 
@@ -220,8 +231,7 @@ void placeSupportRows(const SupportPass& pass, std::size_t refCount, const TaskR
   set.supportGroupBundle.resize(groups.size());
   set.supportSlices.cut(groups, F::kLanes, set.supportGroupBundle);
   const std::int32_t count = set.supportSlices.count();
-  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
-  bundles.resize(std::size_t(count));
+  supportBundlesOf<F>(set).resize(std::size_t(count));
   set.supportLoneRows.resize(std::size_t(count));
   set.supportLanes.resize(std::size_t(count) * F::kLanes);
   set.supportPlaceOf.resize(refCount);
@@ -237,11 +247,7 @@ void placeSupportRows(const SupportPass& pass, std::size_t refCount, const TaskR
         set.supportPlaceOf[std::size_t(row.ref)] = {b, static_cast<std::int16_t>(lane), row.upperIsB};
         if (row.leans) leans = std::uint8_t(leans | (1u << lane));
       }
-      if (holdsOneRow(set, b)) {
-        set.supportLoneRows[std::size_t(b)].leans = simd::maskOfBits<simd::F1>(leans);
-      } else {
-        bundles[std::size_t(b)].leans = simd::maskOfBits<F>(leans);
-      }
+      visitSupportRow<F>(set, b, [&]<class L>(WideSupportRow<L>& bundle) { bundle.leans = simd::maskOfBits<L>(leans); });
     }
   });
 }
@@ -287,18 +293,13 @@ void packSupportLanes(WideContactSet& set, const WideConstraint<F>& bundle, std:
 // Each support bundle's masses once all its lanes are in, side by side.
 template <class F>
 void finishSupportBundles(const TaskRunner& tasks, WideContactSet& set) {
-  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
-  tasks.forRanges(static_cast<std::int32_t>(bundles.size()), kBundlesPerFillRange,
-                  [&](std::int32_t begin, std::int32_t end) {
-                    for (std::int32_t b = begin; b < end; ++b) {
-                      const SupportLaneRecord* first = &set.supportLanes[std::size_t(b) * F::kLanes];
-                      if (holdsOneRow(set, b)) {
-                        finishSupportBundle(first, 1, set.supportLoneRows[std::size_t(b)]);
-                      } else {
-                        finishSupportBundle(first, set.supportSlices.lanes[std::size_t(b)], bundles[std::size_t(b)]);
-                      }
-                    }
-                  });
+  tasks.forRanges(set.supportSlices.count(), kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end; ++b) {
+      const SupportLaneRecord* first = &set.supportLanes[std::size_t(b) * F::kLanes];
+      const int lanes = set.supportSlices.lanes[std::size_t(b)];
+      visitSupportRow<F>(set, b, [&](auto& bundle) { finishSupportBundle(first, lanes, bundle); });
+    }
+  });
 }
 
 template <class F>
@@ -431,9 +432,7 @@ void holdUp(std::span<SolverState> states, F inverseSubStep, SupportRows rows, b
 template <class F>
 void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
                       const SupportPass& pass, SupportRows rows) {
-  std::vector<WideSupportRow<F>>& bundles = supportBundlesOf<F>(set);
-  const F inverseSubStep = simd::broadcast<F>(context.inverseSubStep);
-  const simd::F1 loneInverseSubStep = simd::broadcast<simd::F1>(context.inverseSubStep);
+  const float inverseSubStep = context.inverseSubStep;
   const std::span<const std::int32_t> storeys = pass.storeyStarts();
   for (std::size_t storey = 0; storey + 1 < storeys.size(); ++storey) {
     const std::int32_t first = storeys[storey];
@@ -444,13 +443,10 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
       context.tasks->forRanges(set.supportGroupBundle[group + 1] - groupFirst, kBundlesPerColorRange,
                                [&](std::int32_t begin, std::int32_t end) {
                                  for (std::int32_t b = groupFirst + begin; b < groupFirst + end; ++b) {
-                                   if (holdsOneRow(set, b)) {
-                                     holdUp(context.states, loneInverseSubStep, rows, storey == 0,
-                                            set.supportLoneRows[std::size_t(b)]);
-                                   } else {
-                                     holdUp(context.states, inverseSubStep, rows, storey == 0,
-                                            bundles[std::size_t(b)]);
-                                   }
+                                   visitSupportRow<F>(set, b, [&]<class L>(WideSupportRow<L>& bundle) {
+                                     holdUp(context.states, simd::broadcast<L>(inverseSubStep), rows, storey == 0,
+                                            bundle);
+                                   });
                                  }
                                });
     }
@@ -462,21 +458,16 @@ void solveSupportWide(const ContactSolverContext& context, WideContactSet& set,
 // own order, instead of writing each row's manifold a second time.
 template <class F>
 void collectSupportImpulses(WideContactSet& set, const TaskRunner& tasks) {
-  const std::vector<WideSupportRow<F>>& rows = supportBundlesOf<F>(set);
-  set.supportImpulses.resize(rows.size() * 2 * F::kLanes);
-  tasks.forRanges(static_cast<std::int32_t>(rows.size()), kBundlesPerFillRange,
-                  [&](std::int32_t begin, std::int32_t end) {
-                    for (std::int32_t b = begin; b < end; ++b) {
-                      for (int j = 0; j < 2; ++j) {
-                        float* column = &set.supportImpulses[(std::size_t(b) * 2 + std::size_t(j)) * F::kLanes];
-                        if (holdsOneRow(set, b)) {
-                          simd::store(column, set.supportLoneRows[std::size_t(b)].points[j].impulse);
-                        } else {
-                          simd::store(column, rows[std::size_t(b)].points[j].impulse);
-                        }
-                      }
-                    }
-                  });
+  const std::int32_t count = set.supportSlices.count();
+  set.supportImpulses.resize(std::size_t(count) * 2 * F::kLanes);
+  tasks.forRanges(count, kBundlesPerFillRange, [&](std::int32_t begin, std::int32_t end) {
+    for (std::int32_t b = begin; b < end; ++b) {
+      float* columns = &set.supportImpulses[std::size_t(b) * 2 * F::kLanes];
+      visitSupportRow<F>(set, b, [&](const auto& bundle) {
+        for (int j = 0; j < 2; ++j) simd::store(columns + std::size_t(j) * F::kLanes, bundle.points[j].impulse);
+      });
+    }
+  });
 }
 
 // Point j's impulse of the row whose lane is record `record`
