@@ -4,6 +4,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <type_traits>
 
 #include "union_find.h"
 
@@ -41,8 +43,10 @@ bool isBody(std::int32_t state, Real invMass) { return state != 0 && invMass > 0
 bool hasBodyA(const JointRow& row) { return isBody(row.stateA, row.invMassA); }
 bool hasBodyB(const JointRow& row) { return isBody(row.stateB, row.invMassB); }
 
+// A joint's rows on one body, row by row (vx, vy, w).
+using SideRows = std::array<std::array<double, 3>, 3>;
+
 // The joint's N rows acting on one of its bodies (by vx, vy, w).
-template <class SideRows>
 void fillSide(const RigidRows& rows, int count, bool sideB, SideRows& side) {
   const double sign = sideB ? 1 : -1;
   for (int r = 0; r < count; ++r) {
@@ -62,76 +66,117 @@ double rowSpeed(const std::array<double, 3>& onA, const std::array<double, 3>& o
   return velocity(row, a, b);
 }
 
-template <int N>
-using Square = Eigen::Matrix<double, N, N>;
+// Row r of one lane's rows on a side.
+template <class T>
+std::array<double, 3> laneRow(const T (&rows)[3][3], int r, int lane) {
+  return {laneOf(rows[r][0], lane), laneOf(rows[r][1], lane), laneOf(rows[r][2], lane)};
+}
+
+// The numbers below are the pass's arithmetic on a T, one group's (double)
+// or four's (Quad), written out element by element in one order.
 
 // The blocks D_i are symmetric: their inverse by cofactors, read from the
-// upper triangle.
-template <int N>
-[[gnu::always_inline]] inline Square<N> symmetricInverse(const Square<N>& a) {
+// upper triangle, in place.
+template <int N, class T>
+[[gnu::always_inline]] inline void invertSymmetric(T (&a)[3][3]) {
   if constexpr (N == 1) {
-    return Square<1>(1 / a(0, 0));
+    a[0][0] = splat<T>(1) / a[0][0];
   } else if constexpr (N == 2) {
-    const double scale = 1 / (a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1));
-    Square<2> inverse;
-    inverse << a(1, 1) * scale, -a(0, 1) * scale, -a(0, 1) * scale, a(0, 0) * scale;
-    return inverse;
+    const T scale = splat<T>(1) / (a[0][0] * a[1][1] - a[0][1] * a[0][1]);
+    const T offDiagonal = -a[0][1] * scale;
+    const T first = a[1][1] * scale;
+    a[1][1] = a[0][0] * scale;
+    a[0][0] = first;
+    a[0][1] = offDiagonal;
+    a[1][0] = offDiagonal;
   } else {
-    const double xx = a(1, 1) * a(2, 2) - a(1, 2) * a(1, 2);
-    const double xy = a(0, 2) * a(1, 2) - a(0, 1) * a(2, 2);
-    const double xz = a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1);
-    const double scale = 1 / (a(0, 0) * xx + a(0, 1) * xy + a(0, 2) * xz);
-    const double yy = (a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2)) * scale;
-    const double yz = (a(0, 2) * a(0, 1) - a(0, 0) * a(1, 2)) * scale;
-    const double zz = (a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1)) * scale;
-    Square<3> inverse;
-    inverse << xx * scale, xy * scale, xz * scale, xy * scale, yy, yz, xz * scale, yz, zz;
-    return inverse;
+    const T xx = a[1][1] * a[2][2] - a[1][2] * a[1][2];
+    const T xy = a[0][2] * a[1][2] - a[0][1] * a[2][2];
+    const T xz = a[0][1] * a[1][2] - a[0][2] * a[1][1];
+    const T scale = splat<T>(1) / (a[0][0] * xx + a[0][1] * xy + a[0][2] * xz);
+    const T yy = (a[0][0] * a[2][2] - a[0][2] * a[0][2]) * scale;
+    const T yz = (a[0][2] * a[0][1] - a[0][0] * a[1][2]) * scale;
+    const T zz = (a[0][0] * a[1][1] - a[0][1] * a[0][1]) * scale;
+    a[0][0] = xx * scale;
+    a[0][1] = xy * scale;
+    a[0][2] = xz * scale;
+    a[1][0] = a[0][1];
+    a[1][1] = yy;
+    a[1][2] = yz;
+    a[2][0] = a[0][2];
+    a[2][1] = yz;
+    a[2][2] = zz;
   }
 }
 
-// target -= left^T * right where the product is symmetric (left^T D^-1
-// left, left^T M^-1 left): its upper triangle, mirrored.
-template <int Cols, class Left, class Right, class Target>
-[[gnu::always_inline]] inline void subtractSymmetricProduct(const Left& left, const Right& right, Target& target) {
-  for (int i = 0; i < Cols; ++i) {
-    for (int j = i; j < Cols; ++j) {
-      const double product = left.col(i).dot(right.col(j));
-      target(i, j) -= product;
-      if (j != i) target(j, i) -= product;
+// Element (i, j) of left * right, the sum over k in order.
+template <int K, class T>
+[[gnu::always_inline]] inline T productAt(const T (&left)[3][3], const T (&right)[3][3], int i, int j) {
+  T sum = left[i][0] * right[0][j];
+  for (int k = 1; k < K; ++k) sum += left[i][k] * right[k][j];
+  return sum;
+}
+
+// One node's elimination, for its size N and its parent's P (0: a root),
+// fixed at compile time (a chain's pins are 2 x 2): D_i^-1, then
+// D_i^-1 H_{i,parent}, and the parent's block less H_{i,parent}^T D_i^-1
+// H_{i,parent} (symmetric: its upper triangle, mirrored).
+template <int N, int P, class T>
+[[gnu::always_inline]] inline void eliminateNode(TreeNodeNumbers<T>& node, TreeNodeNumbers<T>& parent) {
+  invertSymmetric<N>(node.diagonal);
+  if constexpr (P > 0) {
+    T lower[3][3];
+    for (int i = 0; i < N; ++i) {
+      for (int j = 0; j < P; ++j) lower[i][j] = productAt<N>(node.diagonal, node.toParent, i, j);
+    }
+    for (int i = 0; i < P; ++i) {
+      for (int j = i; j < P; ++j) {
+        T product = node.toParent[0][i] * lower[0][j];
+        for (int k = 1; k < N; ++k) product += node.toParent[k][i] * lower[k][j];
+        parent.diagonal[i][j] -= product;
+        if (j != i) parent.diagonal[j][i] -= product;
+      }
+    }
+    for (int i = 0; i < N; ++i) {
+      for (int j = 0; j < P; ++j) node.toParent[i][j] = lower[i][j];
     }
   }
 }
 
-// One node's elimination and substitutions, for its size N and its
-// parent's P (0: a root), fixed at compile time: a chain's pins are 2 x 2.
-template <int N, int P, class Block>
-[[gnu::always_inline]] inline void eliminateNode(Block& node, Block& parent) {
-  const Square<N> inverse = symmetricInverse<N>(node.diagonal.template topLeftCorner<N, N>());
-  node.diagonal.template topLeftCorner<N, N>() = inverse;
+// The forward substitution of a node: its value times D_i^-1, and the
+// parent's value less H_{i,parent}^T times the node's value before.
+template <int N, int P, class T>
+[[gnu::always_inline]] inline void substituteForward(TreeNodeNumbers<T>& node, TreeNodeNumbers<T>& parent) {
+  T reduced[3];
+  for (int i = 0; i < N; ++i) reduced[i] = node.value[i];
+  for (int i = 0; i < N; ++i) {
+    T sum = node.diagonal[i][0] * reduced[0];
+    for (int k = 1; k < N; ++k) sum += node.diagonal[i][k] * reduced[k];
+    node.value[i] = sum;
+  }
   if constexpr (P > 0) {
-    const Eigen::Matrix<double, N, P> coupling = node.toParent.template topLeftCorner<N, P>();
-    const Eigen::Matrix<double, N, P> lower = inverse * coupling;
-    subtractSymmetricProduct<P>(coupling, lower, parent.diagonal);
-    node.toParent.template topLeftCorner<N, P>() = lower;
+    for (int j = 0; j < P; ++j) {
+      T sum = node.toParent[0][j] * reduced[0];
+      for (int k = 1; k < N; ++k) sum += node.toParent[k][j] * reduced[k];
+      parent.value[j] -= sum;
+    }
   }
 }
 
-template <int N, int P, class Block>
-[[gnu::always_inline]] inline void substituteForward(Block& node, Block& parent) {
-  const Eigen::Matrix<double, N, 1> reduced = node.value.template head<N>();
-  node.value.template head<N>().noalias() = node.diagonal.template topLeftCorner<N, N>() * reduced;
-  if constexpr (P > 0) {
-    parent.value.template head<P>().noalias() -=
-        node.toParent.template topLeftCorner<N, P>().transpose() * reduced;
-  }
-}
-
-template <int N, int P, class Block>
-[[gnu::always_inline]] inline void substituteBackward(Block& node, const Block& parent) {
-  if constexpr (P > 0) {
-    node.value.template head<N>().noalias() -=
-        node.toParent.template topLeftCorner<N, P>() * parent.value.template head<P>();
+// The backward substitution of a node, its solution also into `solved`:
+// read from there, not from the values just stored one by one (a load of two
+// of them at once waited for both stores to leave).
+template <int N, int P, class T>
+[[gnu::always_inline]] inline void substituteBackward(TreeNodeNumbers<T>& node, const TreeNodeNumbers<T>& parent,
+                                                      T (&solved)[3]) {
+  for (int i = 0; i < N; ++i) {
+    solved[i] = node.value[i];
+    if constexpr (P > 0) {
+      T sum = node.toParent[i][0] * parent.value[0];
+      for (int k = 1; k < P; ++k) sum += node.toParent[i][k] * parent.value[k];
+      solved[i] -= sum;
+      node.value[i] = solved[i];
+    }
   }
 }
 
@@ -188,6 +233,7 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
     }
     if (alone) markRelaxedExactly(group, rows);
   }
+  formBatches();
 }
 
 // The soft relax of such a group's rows moves its bodies only along the
@@ -203,7 +249,7 @@ void JointTreePass::markRelaxedExactly(const GroupView& group, std::span<JointRo
 JointTreePass::GroupView JointTreePass::groupAt(std::size_t g) {
   const GroupEnd begin = g == 0 ? GroupEnd{} : groupEnds_[g - 1];
   const GroupEnd end = groupEnds_[g];
-  return {begin.nodes, end.nodes,
+  return {begin.nodes, end.nodes, begin.bodies,
           std::span<TreeBody>(bodies_).subspan(std::size_t(begin.bodies), std::size_t(end.bodies - begin.bodies)),
           end.otherJoints};
 }
@@ -272,6 +318,7 @@ void JointTreePass::orderAnew(std::span<const JointRow> rows, std::size_t stateC
       orderGroup(static_cast<std::int32_t>(r), rows);
     }
   }
+  findGroupShapes();
 }
 
 // Joints with a rigid row and a body are the edges; a joint that closes a
@@ -428,14 +475,128 @@ void JointTreePass::storeBody(std::span<const JointRow> rows, std::int32_t at) {
   joints_.emplace_back();
 }
 
-// Solved groups per range when they run side by side: a ragdoll's group
-// takes a microsecond or two a pass, a hand-off to a thread about one.
-constexpr std::int32_t kGroupsPerRange = 4;
+// A group's shape: its nodes' sizes and links and its bodies' places, each
+// relative to the group's own start. Groups of one shape (a pile's
+// ragdolls) are solved four at a time (formBatches).
+void JointTreePass::findGroupShapes() {
+  std::map<std::vector<std::int32_t>, std::int32_t> shapes;
+  std::vector<std::int32_t> key;
+  groupShape_.resize(groupEnds_.size());
+  for (std::size_t g = 0; g < groupEnds_.size(); ++g) {
+    const GroupView group = groupAt(g);
+    const auto nodeAt = [&](std::int32_t node) { return node < 0 ? -1 : node - group.begin; };
+    const auto bodyAt = [&](std::int32_t body) { return body < 0 ? -1 : body - group.firstBody; };
+    key.clear();
+    for (std::int32_t node = group.begin; node < group.end; ++node) {
+      const Block& block = blocks_[std::size_t(node)];
+      const JointNode& joint = joints_[std::size_t(node)];
+      key.insert(key.end(), {block.size, block.parentSize, nodeAt(block.parent), joint.row < 0 ? 0 : 1,
+                             bodyAt(joint.bodies[0]), bodyAt(joint.bodies[1]), joint.parentSide});
+    }
+    key.push_back(-2);  // no node's entry: the nodes end here
+    for (const TreeBody& body : group.bodies) {
+      key.insert(key.end(), {nodeAt(body.node), nodeAt(body.parentJoint), body.parentSide});
+    }
+    groupShape_[g] = shapes.try_emplace(key, std::int32_t(shapes.size())).first->second;
+  }
+  shapeCount_ = std::int32_t(shapes.size());
+}
+
+// This step's solved groups in batches of one shape, up to four, in the
+// order the groups come: the same batches whatever the thread count. Then
+// their numbers' storage, their views of it and their bodies' masses.
+void JointTreePass::formBatches() {
+  batches_.clear();
+  openBatch_.assign(std::size_t(shapeCount_), -1);
+  for (const std::int32_t g : solvedGroups_) {
+    std::int32_t& open = openBatch_[std::size_t(groupShape_[std::size_t(g)])];
+    if (open < 0 || batches_[std::size_t(open)].lanes == kLanesOf<Quad>) {
+      open = std::int32_t(batches_.size());
+      batches_.emplace_back();
+    }
+    Batch& batch = batches_[std::size_t(open)];
+    batch.groups[std::size_t(batch.lanes++)] = g;
+  }
+  std::array<std::size_t, 2> nodes{};  // lone, quad
+  std::array<std::size_t, 2> bodies{};
+  for (const Batch& batch : batches_) {
+    const GroupView group = groupAt(std::size_t(batch.groups[0]));
+    const std::size_t width = batch.lanes == 1 ? 0 : 1;
+    nodes[width] += std::size_t(group.end - group.begin);
+    bodies[width] += group.bodies.size();
+  }
+  loneNodes_.resize(nodes[0]);
+  loneBodies_.resize(bodies[0]);
+  quadNodes_.resize(nodes[1]);
+  quadBodies_.resize(bodies[1]);
+  loneViews_.clear();
+  quadViews_.clear();
+  nodes = {};
+  bodies = {};
+  for (Batch& batch : batches_) {
+    if (batch.lanes == 1) {
+      batch.view = addView(batch, loneNodes_, loneBodies_, nodes[0], bodies[0], loneViews_);
+    } else {
+      batch.view = addView(batch, quadNodes_, quadBodies_, nodes[1], bodies[1], quadViews_);
+    }
+  }
+}
+
+// The batch's view of its numbers, from `nodes` and `bodies` on in the
+// storage of its width (both moved on past it), with its bodies' masses.
+template <class T>
+std::int32_t JointTreePass::addView(const Batch& batch, std::vector<TreeNodeNumbers<T>>& nodeNumbers,
+                                    std::vector<TreeBodyNumbers<T>>& bodyNumbers, std::size_t& nodes,
+                                    std::size_t& bodies, std::vector<BatchView<T>>& views) {
+  BatchView<T>& view = views.emplace_back();
+  view.laneCount = batch.lanes;
+  for (int lane = 0; lane < batch.lanes; ++lane) {
+    view.lanes[std::size_t(lane)] = groupAt(std::size_t(batch.groups[std::size_t(lane)]));
+  }
+  view.shape = view.lanes[0];
+  const auto nodeCount = std::size_t(view.shape.end - view.shape.begin);
+  view.nodes = std::span(nodeNumbers).subspan(nodes, nodeCount);
+  view.bodies = std::span(bodyNumbers).subspan(bodies, view.shape.bodies.size());
+  nodes += nodeCount;
+  bodies += view.shape.bodies.size();
+  loadBodyNumbers(view);
+  return std::int32_t(views.size() - 1);
+}
+
+// A lane without a group holds bodies of unit masses under rows of zeros:
+// it makes no impulse and divides by nothing that is zero.
+template <class T>
+void JointTreePass::loadBodyNumbers(const BatchView<T>& view) {
+  for (std::size_t b = 0; b < view.bodies.size(); ++b) {
+    TreeBodyNumbers<T>& numbers = view.bodies[b];
+    for (int lane = 0; lane < kLanesOf<T>; ++lane) {
+      const bool used = lane < view.laneCount;
+      const double invMass = used ? view.lanes[std::size_t(lane)].bodies[b].invMass : 1;
+      const double invInertia = used ? view.lanes[std::size_t(lane)].bodies[b].invInertia : 1;
+      setLane(numbers.invMass, lane, invMass);
+      setLane(numbers.invInertia, lane, invInertia);
+      // A body that cannot turn has an inertia beyond any lever.
+      setLane(numbers.hubInertia, lane, invInertia > 0 ? 1.0 / invInertia : 1e30);
+    }
+  }
+}
+
+// Batches per range when they run side by side: a ragdoll's group takes a
+// microsecond or two a pass, a batch up to four of them, a hand-off to a
+// thread about one.
+constexpr std::int32_t kBatchesPerRange = 2;
 
 template <class Pass>
-void JointTreePass::forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass) {
-  tasks.forRanges(std::int32_t(solvedGroups_.size()), kGroupsPerRange, [&](std::int32_t first, std::int32_t last) {
-    for (std::int32_t k = first; k < last; ++k) pass(groupAt(std::size_t(solvedGroups_[std::size_t(k)])));
+void JointTreePass::forEachBatch(const TaskRunner& tasks, Pass&& pass) {
+  tasks.forRanges(std::int32_t(batches_.size()), kBatchesPerRange, [&](std::int32_t first, std::int32_t last) {
+    for (std::int32_t k = first; k < last; ++k) {
+      const Batch& batch = batches_[std::size_t(k)];
+      if (batch.lanes == 1) {
+        pass(loneViews_[std::size_t(batch.view)]);
+      } else {
+        pass(quadViews_[std::size_t(batch.view)]);
+      }
+    }
   });
 }
 
@@ -451,186 +612,214 @@ void JointTreePass::relax(std::span<JointRow> rows, std::span<SolverState> state
   solveGroups(rows, states, 0, tasks);
 }
 
-// Group by group, so that a group's nodes stay in cache through the passes.
-// The factors made here are this geometry's until the positions move: the
-// push reuses them, and so does the next sub-step's solve after a relax
-// (only velocities change in between).
+// Batch by batch, so that a batch's numbers stay in cache through the
+// passes. The factors made here are this geometry's until the positions
+// move: the push reuses them, and so does the next sub-step's solve after a
+// relax (only velocities change in between).
 void JointTreePass::solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
                                 const TaskRunner& tasks) {
   const bool factored = factorsCurrent_;
-  forEachSolvedGroup(tasks, [&](const GroupView& group) {
+  forEachBatch(tasks, [&](auto& view) {
     if (factored) {
-      if (!assembleSpeeds(group, states, errorRate)) return;  // no row moves: no impulse
-      reduce(group);
+      if (!assembleSpeeds(view, states, errorRate)) return;  // no row moves: no impulse
+      reduce(view);
     } else {
-      assemble(group, rows, states, errorRate);
-      factorAndReduce(group);
+      assemble(view, rows, states, errorRate);
+      factorAndReduce(view);
     }
-    backSubstituteAndApply(group, states, true);
+    backSubstituteAndApply(view, states, true);
   });
   factorsCurrent_ = true;
 }
 
 void JointTreePass::push(std::span<SolverState> states, const TaskRunner& tasks) {
-  forEachSolvedGroup(tasks, [&](const GroupView& group) {
-    if (!assembleSpeeds(group, states, 0)) return;  // nothing pushed it: no change
-    reduce(group);
-    backSubstituteAndApply(group, states, false);
+  forEachBatch(tasks, [&](auto& view) {
+    if (!assembleSpeeds(view, states, 0)) return;  // nothing pushed it: no change
+    reduce(view);
+    backSubstituteAndApply(view, states, false);
   });
 }
 
-// A joint's block at the sub-step's geometry: its rows' compliance, and the
-// right-hand side that takes out their share of position error.
-template <int N, int P>
-void JointTreePass::assembleJoint(std::int32_t node, JointRow& row, std::span<const SolverState> states,
-                                  double errorRate) {
-  Block& block = blocks_[std::size_t(node)];
-  JointNode& joint = joints_[std::size_t(node)];
-  const SolverState& a = states[row.stateA];
-  const SolverState& b = states[row.stateB];
-  RigidRows rigid;
-  if (row.plainPin) {
-    plainPinRows(row, a, b, rigid);
-  } else {
-    rigidRows(row, a, b, rigid);
+// A joint's block at the sub-step's geometry, lane by lane: its rows'
+// compliance, and the right-hand side that takes out their share of
+// position error; then what its bodies add, all lanes at once.
+template <class T, int N, int P>
+void JointTreePass::assembleJoint(BatchView<T>& view, std::int32_t k, std::span<JointRow> rows,
+                                  std::span<const SolverState> states, double errorRate) {
+  TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) numbers.diagonal[i][j] = splat<T>(i == j ? 1 : 0);
+    numbers.value[i] = splat<T>(0);
   }
-  SideRows& onA = joint.sideJacobian[0];
-  SideRows& onB = joint.sideJacobian[1];
-  fillSide(rigid, N, false, onA);
-  fillSide(rigid, N, true, onB);
-  block.diagonal.setIdentity();
-  block.value.setZero();
-  joint.impulses = {};
-  for (int r = 0; r < N; ++r) {
-    const auto k = std::size_t(r);
-    const Jacobian& g = rigid[k].jacobian;
-    const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
-                               row.invInertiaA * g.angularA * g.angularA +
-                               row.invInertiaB * g.angularB * g.angularB;
-    if (inverseMass <= 0) {  // moves nothing: an identity row, cut loose
-      onA[k] = {};
-      onB[k] = {};
-      continue;
+  for (int lane = 0; lane < kLanesOf<T>; ++lane) {
+    SideRows onA{};
+    SideRows onB{};
+    if (lane < view.laneCount) {
+      JointNode& joint = joints_[std::size_t(view.lanes[std::size_t(lane)].begin + k)];
+      JointRow& row = rows[std::size_t(joint.row)];
+      const SolverState& a = states[row.stateA];
+      const SolverState& b = states[row.stateB];
+      RigidRows rigid;
+      if (row.plainPin) {
+        plainPinRows(row, a, b, rigid);
+      } else {
+        rigidRows(row, a, b, rigid);
+      }
+      fillSide(rigid, N, false, onA);
+      fillSide(rigid, N, true, onB);
+      joint.impulses = {};
+      for (int r = 0; r < N; ++r) {
+        const auto i = std::size_t(r);
+        const Jacobian& g = rigid[i].jacobian;
+        const double inverseMass = (row.invMassA + row.invMassB) * g.linear.squaredNorm() +
+                                   row.invInertiaA * g.angularA * g.angularA +
+                                   row.invInertiaB * g.angularB * g.angularB;
+        if (inverseMass <= 0) {  // moves nothing: an identity row, cut loose
+          onA[i] = {};
+          onB[i] = {};
+          continue;
+        }
+        setLane(numbers.diagonal[r][r], lane, -kCompliance * inverseMass);
+        setLane(numbers.value[r], lane,
+                -(rowSpeed(onA[i], onB[i], a, b) + correctionSpeed(errorRate, rigid[i].position)));
+        joint.impulses[i] = rigid[i].impulse;
+        joint.position[i] = rigid[i].position;
+      }
     }
-    block.diagonal(r, r) = -kCompliance * inverseMass;
-    block.value(r) = -(rowSpeed(onA[k], onB[k], a, b) + correctionSpeed(errorRate, rigid[k].position));
-    joint.impulses[k] = rigid[k].impulse;
-    joint.position[k] = rigid[k].position;
+    for (int r = 0; r < N; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        setLane(numbers.side[0][r][c], lane, onA[std::size_t(r)][std::size_t(c)]);
+        setLane(numbers.side[1][r][c], lane, onB[std::size_t(r)][std::size_t(c)]);
+      }
+    }
   }
-  coupleSide<N, P>(node, 0);
-  coupleSide<N, P>(node, 1);
+  coupleSide<T, N, P>(view, k, 0);
+  coupleSide<T, N, P>(view, k, 1);
 }
 
 // What one side's body adds to the joint's block: a body eliminated first
 // its inverse mass through the joint's rows, and a coupling to the joint of
 // its parent when that is the joint's parent; a hub its coupling to the
 // joint, as the joint's parent or child.
-template <int N, int P>
-[[gnu::always_inline]] inline void JointTreePass::coupleSide(std::int32_t node, int side) {
-  Block& block = blocks_[std::size_t(node)];
-  const JointNode& joint = joints_[std::size_t(node)];
-  if (joint.bodies[std::size_t(side)] < 0) return;
-  const TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
-  const SideRows& rows = joint.sideJacobian[std::size_t(side)];
+template <class T, int N, int P>
+[[gnu::always_inline]] inline void JointTreePass::coupleSide(BatchView<T>& view, std::int32_t k, int side) {
+  const JointNode& joint = joints_[std::size_t(view.shape.begin + k)];
+  const std::int32_t bodyIndex = joint.bodies[std::size_t(side)];
+  if (bodyIndex < 0) return;
+  const TreeBody& body = bodies_[std::size_t(bodyIndex)];
+  const TreeBodyNumbers<T>& mass = view.bodies[std::size_t(bodyIndex - view.shape.firstBody)];
+  TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
+  const T(&rows)[3][3] = numbers.side[side];
   const bool towardsParent = side == joint.parentSide;
   if (body.node >= 0) {
-    Block& hub = blocks_[std::size_t(body.node)];
+    TreeNodeNumbers<T>& hub = view.nodes[std::size_t(body.node - view.shape.begin)];
     if (!towardsParent) {
-      // A body that cannot turn has an inertia beyond any lever.
-      const double inertia = body.invInertia > 0 ? 1.0 / body.invInertia : 1e30;
-      hub.diagonal = Eigen::Vector3d(1.0 / body.invMass, 1.0 / body.invMass, inertia).asDiagonal();
-      hub.value.setZero();
+      const T inverse = splat<T>(1) / mass.invMass;
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) hub.diagonal[i][j] = splat<T>(0);
+        hub.value[i] = splat<T>(0);
+      }
+      hub.diagonal[0][0] = inverse;
+      hub.diagonal[1][1] = inverse;
+      hub.diagonal[2][2] = mass.hubInertia;
     }
     for (int r = 0; r < N; ++r) {
-      for (int k = 0; k < 3; ++k) {
-        const double entry = rows[std::size_t(r)][std::size_t(k)];
+      for (int c = 0; c < 3; ++c) {
         if (towardsParent) {
-          block.toParent(r, k) = entry;
+          numbers.toParent[r][c] = rows[r][c];
         } else {
-          hub.toParent(k, r) = entry;
+          hub.toParent[c][r] = rows[r][c];
         }
       }
     }
     return;
   }
-  const std::array<double, 3> inverseMass{body.invMass, body.invMass, body.invInertia};
-  const SideRows& parentRows =
-      joints_[std::size_t(body.parentJoint)].sideJacobian[std::size_t(body.parentSide)];
+  const T inverseMass[3] = {mass.invMass, mass.invMass, mass.invInertia};
+  const T(&parentRows)[3][3] = view.nodes[std::size_t(body.parentJoint - view.shape.begin)].side[body.parentSide];
   for (int i = 0; i < N; ++i) {
-    std::array<double, 3> weighted;
-    for (std::size_t k = 0; k < 3; ++k) weighted[k] = rows[std::size_t(i)][k] * inverseMass[k];
-    auto dot = [&](const std::array<double, 3>& other) {
-      return weighted[0] * other[0] + weighted[1] * other[1] + weighted[2] * other[2];
-    };
+    T weighted[3];
+    for (int c = 0; c < 3; ++c) weighted[c] = rows[i][c] * inverseMass[c];
+    auto dot = [&](const T(&other)[3]) { return weighted[0] * other[0] + weighted[1] * other[1] + weighted[2] * other[2]; };
     for (int j = i; j < N; ++j) {
-      const double product = dot(rows[std::size_t(j)]);
-      block.diagonal(i, j) -= product;
-      if (j != i) block.diagonal(j, i) -= product;
+      const T product = dot(rows[j]);
+      numbers.diagonal[i][j] -= product;
+      if (j != i) numbers.diagonal[j][i] -= product;
     }
     if (!towardsParent) continue;
-    for (int j = 0; j < P; ++j) block.toParent(i, j) = -dot(parentRows[std::size_t(j)]);
+    for (int j = 0; j < P; ++j) numbers.toParent[i][j] = -dot(parentRows[j]);
   }
 }
 
 // Every block at the sub-step's geometry, parents first: a joint's coupling
 // through a body eliminated first reads its parent joint's rows.
-void JointTreePass::assemble(const GroupView& group, std::span<JointRow> rows,
-                             std::span<const SolverState> states, double errorRate) {
-  for (std::int32_t node = group.end - 1; node >= group.begin; --node) {
-    const std::int32_t row = joints_[std::size_t(node)].row;
-    if (row < 0) continue;
+template <class T>
+void JointTreePass::assemble(BatchView<T>& view, std::span<JointRow> rows, std::span<const SolverState> states,
+                             double errorRate) {
+  for (std::int32_t node = view.shape.end - 1; node >= view.shape.begin; --node) {
+    if (joints_[std::size_t(node)].row < 0) continue;
     withSizes(blocks_[std::size_t(node)], [&](auto n, auto p) {
-      assembleJoint<n(), p()>(node, rows[std::size_t(row)], states, errorRate);
+      assembleJoint<T, n(), p()>(view, node - view.shape.begin, rows, states, errorRate);
     });
   }
 }
 
 // The right-hand side alone, on blocks made at this geometry: each used
 // row's speed and its correction (none in the push). Returns whether any
-// row moves.
-bool JointTreePass::assembleSpeeds(const GroupView& group, std::span<const SolverState> states,
-                                   double errorRate) {
+// row of any lane moves.
+template <class T>
+bool JointTreePass::assembleSpeeds(BatchView<T>& view, std::span<const SolverState> states, double errorRate) {
   bool moving = false;
-  for (std::int32_t node = group.begin; node < group.end; ++node) {
-    Block& block = blocks_[std::size_t(node)];
-    const JointNode& joint = joints_[std::size_t(node)];
-    block.value.setZero();
-    if (joint.row < 0) continue;
-    const SolverState& a = states[std::size_t(joint.states[0])];
-    const SolverState& b = states[std::size_t(joint.states[1])];
-    for (int r = 0; r < block.size; ++r) {
-      const auto k = std::size_t(r);
-      if (joint.impulses[k] == nullptr) continue;
-      block.value(r) = -(rowSpeed(joint.sideJacobian[0][k], joint.sideJacobian[1][k], a, b) +
-                         correctionSpeed(errorRate, joint.position[k]));
-      moving = moving || block.value(r) != 0;
+  for (std::int32_t k = 0; k < view.shape.end - view.shape.begin; ++k) {
+    TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
+    for (T& value : numbers.value) value = splat<T>(0);
+    if (joints_[std::size_t(view.shape.begin + k)].row < 0) continue;
+    const int size = blocks_[std::size_t(view.shape.begin + k)].size;
+    for (int lane = 0; lane < view.laneCount; ++lane) {
+      const JointNode& joint = joints_[std::size_t(view.lanes[std::size_t(lane)].begin + k)];
+      const SolverState& a = states[std::size_t(joint.states[0])];
+      const SolverState& b = states[std::size_t(joint.states[1])];
+      for (int r = 0; r < size; ++r) {
+        if (joint.impulses[std::size_t(r)] == nullptr) continue;
+        const double value = -(rowSpeed(laneRow(numbers.side[0], r, lane), laneRow(numbers.side[1], r, lane), a, b) +
+                               correctionSpeed(errorRate, joint.position[std::size_t(r)]));
+        setLane(numbers.value[r], lane, value);
+        moving = moving || value != 0;
+      }
     }
   }
   return moving;
 }
 
-// L D L^T of the tree, leaves first (every child before its parent): each
-// node keeps D_i^-1 and D_i^-1 H_{i,parent}, all the substitutions need,
-// and takes its forward substitution at once (its children's are in). A
-// root's parent is itself, unread.
-void JointTreePass::factorAndReduce(const GroupView& group) {
-  for (std::int32_t node = group.begin; node < group.end; ++node) {
-    Block& block = blocks_[std::size_t(node)];
-    Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
-    withSizes(block, [&](auto n, auto p) {
-      eliminateNode<n(), p()>(block, parent);
-      substituteForward<n(), p()>(block, parent);
-    });
+// visit(n, p, node, parent) for each node of the batch, with its size and
+// its parent's, leaves first (every child before its parent). A root's
+// parent is itself, unread.
+template <class T, class NodeVisit>
+void JointTreePass::forEachNodeLeavesFirst(BatchView<T>& view, NodeVisit&& visit) {
+  for (std::int32_t k = 0; k < view.shape.end - view.shape.begin; ++k) {
+    const Block& block = blocks_[std::size_t(view.shape.begin + k)];
+    TreeNodeNumbers<T>& node = view.nodes[std::size_t(k)];
+    TreeNodeNumbers<T>& parent = view.nodes[std::size_t(block.parent >= 0 ? block.parent - view.shape.begin : k)];
+    withSizes(block, [&](auto n, auto p) { visit(n, p, node, parent); });
   }
 }
 
+// L D L^T of the tree, leaves first: each node keeps D_i^-1 and D_i^-1
+// H_{i,parent}, all the substitutions need, and takes its forward
+// substitution at once (its children's are in).
+template <class T>
+void JointTreePass::factorAndReduce(BatchView<T>& view) {
+  forEachNodeLeavesFirst(view, [](auto n, auto p, TreeNodeNumbers<T>& node, TreeNodeNumbers<T>& parent) {
+    eliminateNode<n(), p()>(node, parent);
+    substituteForward<n(), p()>(node, parent);
+  });
+}
+
 // The forward substitution alone, on factors already made.
-void JointTreePass::reduce(const GroupView& group) {
-  for (std::int32_t node = group.begin; node < group.end; ++node) {
-    Block& block = blocks_[std::size_t(node)];
-    Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
-    withSizes(block, [&](auto n, auto p) { substituteForward<n(), p()>(block, parent); });
-  }
+template <class T>
+void JointTreePass::reduce(BatchView<T>& view) {
+  forEachNodeLeavesFirst(view, [](auto n, auto p, TreeNodeNumbers<T>& node, TreeNodeNumbers<T>& parent) {
+    substituteForward<n(), p()>(node, parent);
+  });
 }
 
 // The backward substitution, root first; each node's solution is then
@@ -639,42 +828,57 @@ void JointTreePass::reduce(const GroupView& group) {
 // impulses, summed in double (a light link between two heavily loaded pins
 // takes two large, nearly opposite ones); joints' impulses join the warm
 // start, except the push's, which belong to pseudo velocities.
-void JointTreePass::backSubstituteAndApply(const GroupView& group, std::span<SolverState> states,
-                                           bool keepImpulses) {
-  for (TreeBody& body : group.bodies) body.change.setZero();
-  for (std::int32_t node = group.end - 1; node >= group.begin; --node) {
-    Block& block = blocks_[std::size_t(node)];
-    const Block& parent = blocks_[std::size_t(block.parent >= 0 ? block.parent : node)];
-    const JointNode& joint = joints_[std::size_t(node)];
+template <class T>
+void JointTreePass::backSubstituteAndApply(BatchView<T>& view, std::span<SolverState> states, bool keepImpulses) {
+  for (TreeBodyNumbers<T>& body : view.bodies) {
+    for (T& change : body.change) change = splat<T>(0);
+  }
+  for (std::int32_t k = view.shape.end - view.shape.begin - 1; k >= 0; --k) {
+    const Block& block = blocks_[std::size_t(view.shape.begin + k)];
+    TreeNodeNumbers<T>& node = view.nodes[std::size_t(k)];
+    const TreeNodeNumbers<T>& parent =
+        view.nodes[std::size_t(block.parent >= 0 ? block.parent - view.shape.begin : k)];
+    const bool joint = joints_[std::size_t(view.shape.begin + k)].row >= 0;
     withSizes(block, [&](auto n, auto p) {
-      substituteBackward<n(), p()>(block, parent);
-      if (joint.row >= 0) applyImpulses<n()>(joint, block.value, keepImpulses);
+      T solved[3]{};
+      substituteBackward<n(), p()>(node, parent, solved);
+      if (joint) applyImpulses<T, n()>(view, k, solved, keepImpulses);
     });
   }
-  for (const TreeBody& body : group.bodies) {
-    SolverState& state = states[body.state];
-    state.linearVelocity += Vec2(Real(body.change(0)), Real(body.change(1)));
-    state.angularVelocity += Real(body.change(2));
+  for (std::size_t b = 0; b < view.bodies.size(); ++b) {
+    const TreeBodyNumbers<T>& numbers = view.bodies[b];
+    for (int lane = 0; lane < view.laneCount; ++lane) {
+      SolverState& state = states[std::size_t(view.lanes[std::size_t(lane)].bodies[b].state)];
+      state.linearVelocity += Vec2(Real(laneOf(numbers.change[0], lane)), Real(laneOf(numbers.change[1], lane)));
+      state.angularVelocity += Real(laneOf(numbers.change[2], lane));
+    }
   }
 }
 
-template <int N>
-void JointTreePass::applyImpulses(const JointNode& joint, const Eigen::Vector3d& negated, bool keepImpulses) {
+// Inline, so that the solution comes in registers (substituteBackward).
+template <class T, int N>
+[[gnu::always_inline]] inline void JointTreePass::applyImpulses(BatchView<T>& view, std::int32_t k, const T (&negated)[3], bool keepImpulses) {
+  const JointNode& joint = joints_[std::size_t(view.shape.begin + k)];
+  const TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
   for (int side = 0; side < 2; ++side) {
     if (joint.bodies[std::size_t(side)] < 0) continue;
-    TreeBody& body = bodies_[std::size_t(joint.bodies[std::size_t(side)])];
-    const SideRows& rows = joint.sideJacobian[std::size_t(side)];
-    std::array<double, 3> push{};
+    TreeBodyNumbers<T>& body = view.bodies[std::size_t(joint.bodies[std::size_t(side)] - view.shape.firstBody)];
+    const T(&rows)[3][3] = numbers.side[side];
+    T push[3] = {splat<T>(0), splat<T>(0), splat<T>(0)};
     for (int r = 0; r < N; ++r) {
-      for (std::size_t k = 0; k < 3; ++k) push[k] += rows[std::size_t(r)][k] * negated(r);
+      for (int c = 0; c < 3; ++c) push[c] += rows[r][c] * negated[r];
     }
-    body.change(0) -= body.invMass * push[0];
-    body.change(1) -= body.invMass * push[1];
-    body.change(2) -= body.invInertia * push[2];
+    body.change[0] -= body.invMass * push[0];
+    body.change[1] -= body.invMass * push[1];
+    body.change[2] -= body.invInertia * push[2];
   }
   if (!keepImpulses) return;
-  for (int r = 0; r < N; ++r) {
-    if (joint.impulses[std::size_t(r)] != nullptr) *joint.impulses[std::size_t(r)] -= Real(negated(r));
+  for (int lane = 0; lane < view.laneCount; ++lane) {
+    const JointNode& laneJoint = joints_[std::size_t(view.lanes[std::size_t(lane)].begin + k)];
+    for (int r = 0; r < N; ++r) {
+      Real* impulse = laneJoint.impulses[std::size_t(r)];
+      if (impulse != nullptr) *impulse -= Real(laneOf(negated[r], lane));
+    }
   }
 }
 

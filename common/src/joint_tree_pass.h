@@ -25,16 +25,19 @@
 // joints carried last step, and a free group in flight is solved exactly
 // while it would give way by kExactTreeStretch or more. A ragdoll falling
 // keeps the soft rows alone; from the step it lands, it does not.
+//
+// Groups of one shape (the same nodes, sizes and links: a pile of one
+// ragdoll) are solved four at a time, a group a lane (tree_lanes.h): the
+// same arithmetic, in the same order, as alone: the same bits.
 
 #include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "joint_row.h"
 #include "task_runner.h"
+#include "tree_lanes.h"
 
 namespace impulse {
 
@@ -61,6 +64,9 @@ class JointTreePass {
     bodies_.clear();
     groupEnds_.clear();
     solvedGroups_.clear();
+    groupShape_.clear();
+    shapeCount_ = 0;
+    batches_.clear();
     orderedFrom_.clear();
     jointCount_ = 0;
     factorsCurrent_ = false;
@@ -89,26 +95,18 @@ class JointTreePass {
   /// no fill-in while the joints stay a tree): a chain solves 2x2 blocks of
   /// its pins instead of 3x3 blocks of pins and links. Bodies with three or
   /// more joints (a ragdoll's torso) stay nodes, where eliminating them
-  /// first would couple all their joints.
+  /// first would couple all their joints. Its numbers are TreeNodeNumbers.
   struct Block {
-    Eigen::Matrix3d diagonal;  ///< H_ii, then D_i, then D_i^-1 (size x size)
-    Eigen::Matrix3d toParent;  ///< H_{i,parent}, then D_i^-1 H_{i,parent} (size x parentSize)
-    Eigen::Vector3d value;     ///< right-hand side, then solution (size)
     std::int32_t parent = -1;  ///< position in blocks_, -1 for a root
     std::int8_t size = 3;
     std::int8_t parentSize = 0;  ///< 0 for a root
   };
-  /// A joint's rows on one body, row by row (read and written element by
-  /// element: no vector load straddles two scalar stores).
-  using SideRows = std::array<std::array<double, 3>, 3>;
   /// A joint node's rows, beside its block (unused for a hub).
   struct JointNode {
     std::int32_t row = -1;                       ///< its JointRow, -1: a hub body
     std::array<std::int32_t, 2> states{0, 0};    ///< its JointRow's stateA and stateB
     std::array<std::int32_t, 2> bodies{-1, -1};  ///< its bodies (A, B) in bodies_, -1: none
     std::int8_t parentSide = -1;                 ///< the side whose body leads to the parent, -1: root
-    /// Its rows (size of them) on A's and B's (vx, vy, w); cut rows zero.
-    std::array<SideRows, 2> sideJacobian{};
     std::array<Real*, 3> impulses{};   ///< its rows' accumulated impulses; null: unused
     std::array<Real, 3> position{};    ///< its rows' errors at the blocks' geometry
   };
@@ -120,7 +118,6 @@ class JointTreePass {
     std::int32_t node = -1;         ///< its hub block, -1: eliminated into its joints
     std::int32_t parentJoint = -1;  ///< the joint node that reached it
     std::int8_t parentSide = 0;     ///< which side of that joint it is
-    Eigen::Vector3d change = Eigen::Vector3d::Zero();  ///< velocity change, summed from its joints
   };
   /// Where a group's blocks and bodies end.
   struct GroupEnd {
@@ -132,8 +129,28 @@ class JointTreePass {
   struct GroupView {
     std::int32_t begin = 0;
     std::int32_t end = 0;
+    std::int32_t firstBody = 0;  ///< its first body's place in bodies_
     std::span<TreeBody> bodies;
     bool otherJoints = false;
+  };
+  /// Up to four solved groups of one shape (groupShape_), solved side by
+  /// side, a lane each (tree_lanes.h); a lone group in double. `view` is
+  /// its place among the views of its width (loneViews_, quadViews_).
+  struct Batch {
+    std::array<std::int32_t, kLanesOf<Quad>> groups{};
+    int lanes = 0;
+    std::int32_t view = 0;
+  };
+  /// A batch's groups and numbers: the first group gives the shape (node
+  /// and body k of every group are alike), each lane its own rows, states
+  /// and masses.
+  template <class T>
+  struct BatchView {
+    GroupView shape;
+    std::array<GroupView, kLanesOf<Quad>> lanes;
+    int laneCount = 0;
+    std::span<TreeNodeNumbers<T>> nodes;
+    std::span<TreeBodyNumbers<T>> bodies;
   };
   /// What the groups are built from, per row.
   struct RowShape {
@@ -169,23 +186,38 @@ class JointTreePass {
   /// Whether a group is held by the world, touches anything, or the soft
   /// rows alone would let its joints give way by kExactTreeStretch or more.
   bool needsExactPass(const GroupView& group, std::span<const JointRow> rows, Real compliance) const;
-  /// Runs pass(group) for each solved group, side by side.
+  void findGroupShapes();
+  void formBatches();
+  template <class T>
+  std::int32_t addView(const Batch& batch, std::vector<TreeNodeNumbers<T>>& nodeNumbers,
+                       std::vector<TreeBodyNumbers<T>>& bodyNumbers, std::size_t& nodes, std::size_t& bodies,
+                       std::vector<BatchView<T>>& views);
+  template <class T>
+  void loadBodyNumbers(const BatchView<T>& view);
+  /// Runs pass(view) for each batch of solved groups, side by side.
   template <class Pass>
-  void forEachSolvedGroup(const TaskRunner& tasks, Pass&& pass);
-  void assemble(const GroupView& group, std::span<JointRow> rows, std::span<const SolverState> states,
-                double errorRate);
-  template <int N, int P>
-  void assembleJoint(std::int32_t node, JointRow& row, std::span<const SolverState> states, double errorRate);
-  template <int N, int P>
-  void coupleSide(std::int32_t node, int side);
-  bool assembleSpeeds(const GroupView& group, std::span<const SolverState> states, double errorRate);
+  void forEachBatch(const TaskRunner& tasks, Pass&& pass);
+  template <class T>
+  void assemble(BatchView<T>& view, std::span<JointRow> rows, std::span<const SolverState> states, double errorRate);
+  template <class T, int N, int P>
+  void assembleJoint(BatchView<T>& view, std::int32_t k, std::span<JointRow> rows,
+                     std::span<const SolverState> states, double errorRate);
+  template <class T, int N, int P>
+  void coupleSide(BatchView<T>& view, std::int32_t k, int side);
+  template <class T>
+  bool assembleSpeeds(BatchView<T>& view, std::span<const SolverState> states, double errorRate);
   void solveGroups(std::span<JointRow> rows, std::span<SolverState> states, double errorRate,
                    const TaskRunner& tasks);
-  void factorAndReduce(const GroupView& group);
-  void reduce(const GroupView& group);
-  void backSubstituteAndApply(const GroupView& group, std::span<SolverState> states, bool keepImpulses);
-  template <int N>
-  void applyImpulses(const JointNode& joint, const Eigen::Vector3d& negated, bool keepImpulses);
+  template <class T, class NodeVisit>
+  void forEachNodeLeavesFirst(BatchView<T>& view, NodeVisit&& visit);
+  template <class T>
+  void factorAndReduce(BatchView<T>& view);
+  template <class T>
+  void reduce(BatchView<T>& view);
+  template <class T>
+  void backSubstituteAndApply(BatchView<T>& view, std::span<SolverState> states, bool keepImpulses);
+  template <class T, int N>
+  void applyImpulses(BatchView<T>& view, std::int32_t k, const T (&negated)[3], bool keepImpulses);
 
   std::vector<std::int32_t> bodyGroup_;     ///< union-find over solver states
   std::vector<std::uint8_t> groupHasLoop_;  ///< by union-find root
@@ -205,6 +237,16 @@ class JointTreePass {
   std::vector<TreeBody> bodies_;  ///< every group's bodies
   std::vector<GroupEnd> groupEnds_;  ///< where each group ends in blocks_ and bodies_
   std::vector<std::int32_t> solvedGroups_;  ///< the groups that need the pass this step
+  std::vector<std::int32_t> groupShape_;    ///< by group: its shape, groups of one shape alike node by node
+  std::int32_t shapeCount_ = 0;
+  std::vector<std::int32_t> openBatch_;     ///< by shape: the batch taking its next group, -1: none
+  std::vector<Batch> batches_;              ///< this step's solved groups in batches
+  std::vector<TreeNodeNumbers<double>> loneNodes_;  ///< numbers of the batches of one group
+  std::vector<TreeBodyNumbers<double>> loneBodies_;
+  std::vector<TreeNodeNumbers<Quad>> quadNodes_;    ///< numbers of the batches of two to four
+  std::vector<TreeBodyNumbers<Quad>> quadBodies_;
+  std::vector<BatchView<double>> loneViews_;
+  std::vector<BatchView<Quad>> quadViews_;
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
   int jointCount_ = 0;
   /// The solved groups' factors are at the states' current geometry: the

@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <random>
 #include <vector>
@@ -176,6 +177,75 @@ TEST(JointTreePass, RelaxOnTreesOfEveryRowKind_GivesTheDenseSolvesImpulsesAndVel
     const Eigen::VectorXd v1 = velocities(scene.states);
     const double largestSpeed = v0.cwiseAbs().maxCoeff();
     for (Eigen::Index i = 3; i < v1.size(); ++i) EXPECT_NEAR(v1(i), expected(i), 1e-5 * largestSpeed) << "dof " << i;
+  }
+}
+
+// `copies` copies of a scene side by side: copy c's bodies are states
+// c * n + 1 to (c + 1) * n, the world's is still 0.
+TreeScene copiesOf(const TreeScene& scene, int copies) {
+  const auto bodies = std::int32_t(scene.states.size()) - 1;
+  TreeScene copied;
+  copied.states.push_back(scene.states[0]);
+  for (int c = 0; c < copies; ++c) {
+    copied.states.insert(copied.states.end(), scene.states.begin() + 1, scene.states.end());
+    for (const JointRow& original : scene.rows) {
+      JointRow row = original;
+      row.joint = &copied.joints.emplace_back(*original.joint);
+      row.index = std::int32_t(copied.rows.size());
+      if (row.stateA != 0) row.stateA += c * bodies;
+      if (row.stateB != 0) row.stateB += c * bodies;
+      copied.rows.push_back(row);
+    }
+  }
+  return copied;
+}
+
+// A sub-step of the pass as the solver runs it: the solve with position
+// correction, the push on (here, the same) velocities, the relax.
+void runSubStep(JointTreePass& pass, TreeScene& scene, const TaskRunner& tasks) {
+  pass.order(scene.rows, scene.states.size(), makeSoftness(60, 2, kH), tasks);
+  pass.solve(scene.rows, scene.states, kH, tasks);
+  pass.push(scene.states, tasks);
+  pass.relax(scene.rows, scene.states, tasks);
+}
+
+bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof(Real)) == 0; }
+
+// Five copies of each group: four are solved side by side in the lanes of
+// one batch, the fifth alone, in double. Every copy ends with the bits of
+// the scene solved on its own.
+TEST(JointTreePass, GroupsOfOneShapeSolvedSideBySide_EndWithTheBitsOfOneSolvedAlone) {
+  constexpr int kCopies = 5;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(seed);
+    TreeScene alone = makeTree(seed);
+    TreeScene copies = copiesOf(alone, kCopies);
+    TaskRunner tasks;
+    JointTreePass alonePass;
+    JointTreePass copiesPass;
+    for (int subStep = 0; subStep < 3; ++subStep) {
+      runSubStep(alonePass, alone, tasks);
+      runSubStep(copiesPass, copies, tasks);
+    }
+    const std::size_t bodies = alone.states.size() - 1;
+    for (int c = 0; c < kCopies; ++c) {
+      for (std::size_t s = 1; s <= bodies; ++s) {
+        const SolverState& expected = alone.states[s];
+        const SolverState& copy = copies.states[std::size_t(c) * bodies + s];
+        EXPECT_TRUE(sameBits(copy.linearVelocity.x(), expected.linearVelocity.x()) &&
+                    sameBits(copy.linearVelocity.y(), expected.linearVelocity.y()) &&
+                    sameBits(copy.angularVelocity, expected.angularVelocity))
+            << "copy " << c << " body " << s;
+      }
+      for (std::size_t r = 0; r < alone.rows.size(); ++r) {
+        const JointImpulses& expected = alone.rows[r].joint->impulses;
+        const JointImpulses& copy = copies.rows[std::size_t(c) * alone.rows.size() + r].joint->impulses;
+        EXPECT_TRUE(sameBits(copy.point.x(), expected.point.x()) && sameBits(copy.point.y(), expected.point.y()) &&
+                    sameBits(copy.perpendicular, expected.perpendicular) && sameBits(copy.angular, expected.angular) &&
+                    sameBits(copy.axial, expected.axial))
+            << "copy " << c << " joint " << r;
+      }
+    }
   }
 }
 
