@@ -206,7 +206,8 @@ void withSizes(const Block& node, Visit&& visit) {
 
 void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, const Softness& rigid,
                           const TaskRunner& tasks) {
-  if (!sameRowsAsOrdered(rows, tasks)) orderAnew(rows, stateCount);
+  const bool reordered = !sameRowsAsOrdered(rows, tasks);
+  if (reordered) orderAnew(rows, stateCount);
   const Real compliance = rigid.impulseScale / (rigid.massScale * rigid.biasRate);
   factorsCurrent_ = false;
   jointCount_ = 0;
@@ -233,7 +234,11 @@ void JointTreePass::order(std::span<JointRow> rows, std::size_t stateCount, cons
     }
     if (alone) markRelaxedExactly(group, rows);
   }
-  formBatches();
+  // Last step's batches stand while the same groups are solved.
+  if (reordered || solvedGroups_ != batchedGroups_) {
+    formBatches();
+    batchedGroups_ = solvedGroups_;
+  }
 }
 
 // The soft relax of such a group's rows moves its bodies only along the

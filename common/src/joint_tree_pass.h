@@ -67,6 +67,7 @@ class JointTreePass {
     groupShape_.clear();
     shapeCount_ = 0;
     batches_.clear();
+    batchedGroups_.clear();
     orderedFrom_.clear();
     jointCount_ = 0;
     factorsCurrent_ = false;
@@ -241,6 +242,7 @@ class JointTreePass {
   std::int32_t shapeCount_ = 0;
   std::vector<std::int32_t> openBatch_;     ///< by shape: the batch taking its next group, -1: none
   std::vector<Batch> batches_;              ///< this step's solved groups in batches
+  std::vector<std::int32_t> batchedGroups_; ///< the solved groups batches_ holds
   std::vector<TreeNodeNumbers<double>> loneNodes_;  ///< numbers of the batches of one group
   std::vector<TreeBodyNumbers<double>> loneBodies_;
   std::vector<TreeNodeNumbers<Quad>> quadNodes_;    ///< numbers of the batches of two to four
