@@ -522,50 +522,44 @@ void JointTreePass::formBatches() {
     Batch& batch = batches_[std::size_t(open)];
     batch.groups[std::size_t(batch.lanes++)] = g;
   }
-  std::array<std::size_t, 2> nodes{};  // lone, quad
-  std::array<std::size_t, 2> bodies{};
-  for (const Batch& batch : batches_) {
-    const GroupView group = groupAt(std::size_t(batch.groups[0]));
-    const std::size_t width = batch.lanes == 1 ? 0 : 1;
-    nodes[width] += std::size_t(group.end - group.begin);
-    bodies[width] += group.bodies.size();
-  }
-  loneNodes_.resize(nodes[0]);
-  loneBodies_.resize(bodies[0]);
-  quadNodes_.resize(nodes[1]);
-  quadBodies_.resize(bodies[1]);
-  loneViews_.clear();
-  quadViews_.clear();
-  nodes = {};
-  bodies = {};
-  for (Batch& batch : batches_) {
-    if (batch.lanes == 1) {
-      batch.view = addView(batch, loneNodes_, loneBodies_, nodes[0], bodies[0], loneViews_);
-    } else {
-      batch.view = addView(batch, quadNodes_, quadBodies_, nodes[1], bodies[1], quadViews_);
-    }
-  }
+  storeBatches(lone_);
+  storeBatches(quad_);
 }
 
-// The batch's view of its numbers, from `nodes` and `bodies` on in the
-// storage of its width (both moved on past it), with its bodies' masses.
+// The batches of T's width (a lone group's for double, two to four groups'
+// for Quad): their numbers' storage, their views of it, which `view`
+// names, and their bodies' masses.
 template <class T>
-std::int32_t JointTreePass::addView(const Batch& batch, std::vector<TreeNodeNumbers<T>>& nodeNumbers,
-                                    std::vector<TreeBodyNumbers<T>>& bodyNumbers, std::size_t& nodes,
-                                    std::size_t& bodies, std::vector<BatchView<T>>& views) {
-  BatchView<T>& view = views.emplace_back();
-  view.laneCount = batch.lanes;
-  for (int lane = 0; lane < batch.lanes; ++lane) {
-    view.lanes[std::size_t(lane)] = groupAt(std::size_t(batch.groups[std::size_t(lane)]));
+void JointTreePass::storeBatches(BatchStore<T>& store) {
+  const auto ofWidth = [](const Batch& batch) { return (batch.lanes == 1) == std::is_same_v<T, double>; };
+  std::size_t nodes = 0;
+  std::size_t bodies = 0;
+  for (const Batch& batch : batches_) {
+    if (!ofWidth(batch)) continue;
+    const GroupView group = groupAt(std::size_t(batch.groups[0]));
+    nodes += std::size_t(group.end - group.begin);
+    bodies += group.bodies.size();
   }
-  view.shape = view.lanes[0];
-  const auto nodeCount = std::size_t(view.shape.end - view.shape.begin);
-  view.nodes = std::span(nodeNumbers).subspan(nodes, nodeCount);
-  view.bodies = std::span(bodyNumbers).subspan(bodies, view.shape.bodies.size());
-  nodes += nodeCount;
-  bodies += view.shape.bodies.size();
-  loadBodyNumbers(view);
-  return std::int32_t(views.size() - 1);
+  store.nodes.resize(nodes);
+  store.bodies.resize(bodies);
+  store.views.clear();
+  nodes = 0;
+  bodies = 0;
+  for (Batch& batch : batches_) {
+    if (!ofWidth(batch)) continue;
+    batch.view = std::int32_t(store.views.size());
+    BatchView<T>& view = store.views.emplace_back();
+    view.laneCount = batch.lanes;
+    for (int lane = 0; lane < batch.lanes; ++lane) {
+      view.lanes[std::size_t(lane)] = groupAt(std::size_t(batch.groups[std::size_t(lane)]));
+    }
+    const auto nodeCount = std::size_t(view.shape().end - view.shape().begin);
+    view.nodes = std::span(store.nodes).subspan(nodes, nodeCount);
+    view.bodies = std::span(store.bodies).subspan(bodies, view.shape().bodies.size());
+    nodes += nodeCount;
+    bodies += view.shape().bodies.size();
+    loadBodyNumbers(view);
+  }
 }
 
 // A lane without a group holds bodies of unit masses under rows of zeros:
@@ -597,9 +591,9 @@ void JointTreePass::forEachBatch(const TaskRunner& tasks, Pass&& pass) {
     for (std::int32_t k = first; k < last; ++k) {
       const Batch& batch = batches_[std::size_t(k)];
       if (batch.lanes == 1) {
-        pass(loneViews_[std::size_t(batch.view)]);
+        pass(lone_.views[std::size_t(batch.view)]);
       } else {
-        pass(quadViews_[std::size_t(batch.view)]);
+        pass(quad_.views[std::size_t(batch.view)]);
       }
     }
   });
@@ -708,16 +702,16 @@ void JointTreePass::assembleJoint(BatchView<T>& view, std::int32_t k, std::span<
 // joint, as the joint's parent or child.
 template <class T, int N, int P>
 [[gnu::always_inline]] inline void JointTreePass::coupleSide(BatchView<T>& view, std::int32_t k, int side) {
-  const JointNode& joint = joints_[std::size_t(view.shape.begin + k)];
+  const JointNode& joint = joints_[std::size_t(view.shape().begin + k)];
   const std::int32_t bodyIndex = joint.bodies[std::size_t(side)];
   if (bodyIndex < 0) return;
   const TreeBody& body = bodies_[std::size_t(bodyIndex)];
-  const TreeBodyNumbers<T>& mass = view.bodies[std::size_t(bodyIndex - view.shape.firstBody)];
+  const TreeBodyNumbers<T>& mass = view.bodies[std::size_t(bodyIndex - view.shape().firstBody)];
   TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
   const T(&rows)[3][3] = numbers.side[side];
   const bool towardsParent = side == joint.parentSide;
   if (body.node >= 0) {
-    TreeNodeNumbers<T>& hub = view.nodes[std::size_t(body.node - view.shape.begin)];
+    TreeNodeNumbers<T>& hub = view.nodes[std::size_t(body.node - view.shape().begin)];
     if (!towardsParent) {
       const T inverse = splat<T>(1) / mass.invMass;
       for (int i = 0; i < 3; ++i) {
@@ -740,7 +734,7 @@ template <class T, int N, int P>
     return;
   }
   const T inverseMass[3] = {mass.invMass, mass.invMass, mass.invInertia};
-  const T(&parentRows)[3][3] = view.nodes[std::size_t(body.parentJoint - view.shape.begin)].side[body.parentSide];
+  const T(&parentRows)[3][3] = view.nodes[std::size_t(body.parentJoint - view.shape().begin)].side[body.parentSide];
   for (int i = 0; i < N; ++i) {
     T weighted[3];
     for (int c = 0; c < 3; ++c) weighted[c] = rows[i][c] * inverseMass[c];
@@ -760,10 +754,10 @@ template <class T, int N, int P>
 template <class T>
 void JointTreePass::assemble(BatchView<T>& view, std::span<JointRow> rows, std::span<const SolverState> states,
                              double errorRate) {
-  for (std::int32_t node = view.shape.end - 1; node >= view.shape.begin; --node) {
+  for (std::int32_t node = view.shape().end - 1; node >= view.shape().begin; --node) {
     if (joints_[std::size_t(node)].row < 0) continue;
     withSizes(blocks_[std::size_t(node)], [&](auto n, auto p) {
-      assembleJoint<T, n(), p()>(view, node - view.shape.begin, rows, states, errorRate);
+      assembleJoint<T, n(), p()>(view, node - view.shape().begin, rows, states, errorRate);
     });
   }
 }
@@ -774,11 +768,11 @@ void JointTreePass::assemble(BatchView<T>& view, std::span<JointRow> rows, std::
 template <class T>
 bool JointTreePass::assembleSpeeds(BatchView<T>& view, std::span<const SolverState> states, double errorRate) {
   bool moving = false;
-  for (std::int32_t k = 0; k < view.shape.end - view.shape.begin; ++k) {
+  for (std::int32_t k = 0; k < view.shape().end - view.shape().begin; ++k) {
     TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
     for (T& value : numbers.value) value = splat<T>(0);
-    if (joints_[std::size_t(view.shape.begin + k)].row < 0) continue;
-    const int size = blocks_[std::size_t(view.shape.begin + k)].size;
+    if (joints_[std::size_t(view.shape().begin + k)].row < 0) continue;
+    const int size = blocks_[std::size_t(view.shape().begin + k)].size;
     for (int lane = 0; lane < view.laneCount; ++lane) {
       const JointNode& joint = joints_[std::size_t(view.lanes[std::size_t(lane)].begin + k)];
       const SolverState& a = states[std::size_t(joint.states[0])];
@@ -800,10 +794,10 @@ bool JointTreePass::assembleSpeeds(BatchView<T>& view, std::span<const SolverSta
 // parent is itself, unread.
 template <class T, class NodeVisit>
 void JointTreePass::forEachNodeLeavesFirst(BatchView<T>& view, NodeVisit&& visit) {
-  for (std::int32_t k = 0; k < view.shape.end - view.shape.begin; ++k) {
-    const Block& block = blocks_[std::size_t(view.shape.begin + k)];
+  for (std::int32_t k = 0; k < view.shape().end - view.shape().begin; ++k) {
+    const Block& block = blocks_[std::size_t(view.shape().begin + k)];
     TreeNodeNumbers<T>& node = view.nodes[std::size_t(k)];
-    TreeNodeNumbers<T>& parent = view.nodes[std::size_t(block.parent >= 0 ? block.parent - view.shape.begin : k)];
+    TreeNodeNumbers<T>& parent = view.nodes[std::size_t(block.parent >= 0 ? block.parent - view.shape().begin : k)];
     withSizes(block, [&](auto n, auto p) { visit(n, p, node, parent); });
   }
 }
@@ -838,12 +832,12 @@ void JointTreePass::backSubstituteAndApply(BatchView<T>& view, std::span<SolverS
   for (TreeBodyNumbers<T>& body : view.bodies) {
     for (T& change : body.change) change = splat<T>(0);
   }
-  for (std::int32_t k = view.shape.end - view.shape.begin - 1; k >= 0; --k) {
-    const Block& block = blocks_[std::size_t(view.shape.begin + k)];
+  for (std::int32_t k = view.shape().end - view.shape().begin - 1; k >= 0; --k) {
+    const Block& block = blocks_[std::size_t(view.shape().begin + k)];
     TreeNodeNumbers<T>& node = view.nodes[std::size_t(k)];
     const TreeNodeNumbers<T>& parent =
-        view.nodes[std::size_t(block.parent >= 0 ? block.parent - view.shape.begin : k)];
-    const bool joint = joints_[std::size_t(view.shape.begin + k)].row >= 0;
+        view.nodes[std::size_t(block.parent >= 0 ? block.parent - view.shape().begin : k)];
+    const bool joint = joints_[std::size_t(view.shape().begin + k)].row >= 0;
     withSizes(block, [&](auto n, auto p) {
       T solved[3]{};
       substituteBackward<n(), p()>(node, parent, solved);
@@ -863,11 +857,11 @@ void JointTreePass::backSubstituteAndApply(BatchView<T>& view, std::span<SolverS
 // Inline, so that the solution comes in registers (substituteBackward).
 template <class T, int N>
 [[gnu::always_inline]] inline void JointTreePass::applyImpulses(BatchView<T>& view, std::int32_t k, const T (&negated)[3], bool keepImpulses) {
-  const JointNode& joint = joints_[std::size_t(view.shape.begin + k)];
+  const JointNode& joint = joints_[std::size_t(view.shape().begin + k)];
   const TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
   for (int side = 0; side < 2; ++side) {
     if (joint.bodies[std::size_t(side)] < 0) continue;
-    TreeBodyNumbers<T>& body = view.bodies[std::size_t(joint.bodies[std::size_t(side)] - view.shape.firstBody)];
+    TreeBodyNumbers<T>& body = view.bodies[std::size_t(joint.bodies[std::size_t(side)] - view.shape().firstBody)];
     const T(&rows)[3][3] = numbers.side[side];
     T push[3] = {splat<T>(0), splat<T>(0), splat<T>(0)};
     for (int r = 0; r < N; ++r) {

@@ -136,22 +136,29 @@ class JointTreePass {
   };
   /// Up to four solved groups of one shape (groupShape_), solved side by
   /// side, a lane each (tree_lanes.h); a lone group in double. `view` is
-  /// its place among the views of its width (loneViews_, quadViews_).
+  /// its place among the views of its width (lone_, quad_).
   struct Batch {
     std::array<std::int32_t, kLanesOf<Quad>> groups{};
     int lanes = 0;
     std::int32_t view = 0;
   };
-  /// A batch's groups and numbers: the first group gives the shape (node
-  /// and body k of every group are alike), each lane its own rows, states
-  /// and masses.
+  /// A batch's groups and numbers: each lane its own rows, states and
+  /// masses; node and body k of every group are alike.
   template <class T>
   struct BatchView {
-    GroupView shape;
     std::array<GroupView, kLanesOf<Quad>> lanes;
     int laneCount = 0;
     std::span<TreeNodeNumbers<T>> nodes;
     std::span<TreeBodyNumbers<T>> bodies;
+    /// The first group: the shape (sizes, links) every lane shares.
+    const GroupView& shape() const { return lanes[0]; }
+  };
+  /// The numbers and views of the batches of one width.
+  template <class T>
+  struct BatchStore {
+    std::vector<TreeNodeNumbers<T>> nodes;
+    std::vector<TreeBodyNumbers<T>> bodies;
+    std::vector<BatchView<T>> views;
   };
   /// What the groups are built from, per row.
   struct RowShape {
@@ -190,9 +197,7 @@ class JointTreePass {
   void findGroupShapes();
   void formBatches();
   template <class T>
-  std::int32_t addView(const Batch& batch, std::vector<TreeNodeNumbers<T>>& nodeNumbers,
-                       std::vector<TreeBodyNumbers<T>>& bodyNumbers, std::size_t& nodes, std::size_t& bodies,
-                       std::vector<BatchView<T>>& views);
+  void storeBatches(BatchStore<T>& store);
   template <class T>
   void loadBodyNumbers(const BatchView<T>& view);
   /// Runs pass(view) for each batch of solved groups, side by side.
@@ -243,12 +248,8 @@ class JointTreePass {
   std::vector<std::int32_t> openBatch_;     ///< by shape: the batch taking its next group, -1: none
   std::vector<Batch> batches_;              ///< this step's solved groups in batches
   std::vector<std::int32_t> batchedGroups_; ///< the solved groups batches_ holds
-  std::vector<TreeNodeNumbers<double>> loneNodes_;  ///< numbers of the batches of one group
-  std::vector<TreeBodyNumbers<double>> loneBodies_;
-  std::vector<TreeNodeNumbers<Quad>> quadNodes_;    ///< numbers of the batches of two to four
-  std::vector<TreeBodyNumbers<Quad>> quadBodies_;
-  std::vector<BatchView<double>> loneViews_;
-  std::vector<BatchView<Quad>> quadViews_;
+  BatchStore<double> lone_;  ///< the batches of one group
+  BatchStore<Quad> quad_;    ///< the batches of two to four
   std::vector<RowShape> orderedFrom_;    ///< the rows the groups were built from
   int jointCount_ = 0;
   /// The solved groups' factors are at the states' current geometry: the
