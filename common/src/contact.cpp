@@ -107,7 +107,7 @@ constexpr Real kApproachTolerance = Real(5e-3);
 constexpr Real kReachMassRatio = 10;
 
 bool muchHeavier(const Body& body, const Body& other) {
-  return other.invMass > 0 && body.invMass * kReachMassRatio < other.invMass;
+  return (other.invMass > 0) & (body.invMass * kReachMassRatio < other.invMass);
 }
 
 // How far the gap between two bodies may close within a step of dt. A body
@@ -126,9 +126,14 @@ bool muchHeavier(const Body& body, const Body& other) {
 Real closingReach(const Body& a, const Body& b, Real dt) {
   if (a.invMass == 0 || b.invMass == 0) return 0;
   const Vec2 between = b.transform.apply(b.mass.center) - a.transform.apply(a.mass.center);
-  const bool aCloses = a.linearVelocity.dot(between) > 0 && !muchHeavier(a, b);
-  const bool bCloses = b.linearVelocity.dot(between) < 0 && !muchHeavier(b, a);
-  return ((aCloses ? a.linearVelocity.norm() : Real(0)) + (bCloses ? b.linearVelocity.norm() : Real(0))) * dt;
+  // Both speeds, each weighed by 0 or 1, and no branch on which body
+  // closes: in a crowd that is a coin toss per contact, and the mispredicted
+  // branches were a fifth of the narrow phase's update loop (confined's
+  // circles). A speed is finite (the solver caps it), so the weighing picks
+  // it or zero exactly.
+  const Real aCloses = Real((a.linearVelocity.dot(between) > 0) & !muchHeavier(a, b));
+  const Real bCloses = Real((b.linearVelocity.dot(between) < 0) & !muchHeavier(b, a));
+  return (aCloses * a.linearVelocity.norm() + bCloses * b.linearVelocity.norm()) * dt;
 }
 
 // A manifold without points says nothing about gaps beyond the distance it
