@@ -66,12 +66,6 @@ double rowSpeed(const std::array<double, 3>& onA, const std::array<double, 3>& o
   return velocity(row, a, b);
 }
 
-// Row r of one lane's rows on a side.
-template <class T>
-std::array<double, 3> laneRow(const T (&rows)[3][3], int r, int lane) {
-  return {laneOf(rows[r][0], lane), laneOf(rows[r][1], lane), laneOf(rows[r][2], lane)};
-}
-
 // The numbers below are the pass's arithmetic on a T, one group's (double)
 // or four's (Quad), written out element by element in one order.
 
@@ -763,27 +757,50 @@ void JointTreePass::assemble(BatchView<T>& view, std::span<JointRow> rows, std::
 }
 
 // The right-hand side alone, on blocks made at this geometry: each used
-// row's speed and its correction (none in the push). Returns whether any
-// row of any lane moves.
+// row's speed and its correction (none in the push), all lanes at once, each
+// lane's arithmetic rowSpeed's and correctionSpeed's (lane by lane, reading
+// each lane's row back out of its lanes had been a fifth of the pass on the
+// ragdoll pile). Returns whether any row of any lane moves.
 template <class T>
 bool JointTreePass::assembleSpeeds(BatchView<T>& view, std::span<const SolverState> states, double errorRate) {
+  using Floats = FloatsOf<T>;
   bool moving = false;
   for (std::int32_t k = 0; k < view.shape().end - view.shape().begin; ++k) {
     TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
     for (T& value : numbers.value) value = splat<T>(0);
     if (joints_[std::size_t(view.shape().begin + k)].row < 0) continue;
     const int size = blocks_[std::size_t(view.shape().begin + k)].size;
-    for (int lane = 0; lane < view.laneCount; ++lane) {
-      const JointNode& joint = joints_[std::size_t(view.lanes[std::size_t(lane)].begin + k)];
-      const SolverState& a = states[std::size_t(joint.states[0])];
-      const SolverState& b = states[std::size_t(joint.states[1])];
-      for (int r = 0; r < size; ++r) {
-        if (joint.impulses[std::size_t(r)] == nullptr) continue;
-        const double value = -(rowSpeed(laneRow(numbers.side[0], r, lane), laneRow(numbers.side[1], r, lane), a, b) +
-                               correctionSpeed(errorRate, joint.position[std::size_t(r)]));
-        setLane(numbers.value[r], lane, value);
-        moving = moving || value != 0;
-      }
+    // The lanes' joints (none past the batch's groups: no velocity, no
+    // rows used).
+    const JointNode* laneJoints[kLanesOf<T>];
+    for (int lane = 0; lane < kLanesOf<T>; ++lane) {
+      laneJoints[lane] =
+          lane < view.laneCount ? &joints_[std::size_t(view.lanes[std::size_t(lane)].begin + k)] : nullptr;
+    }
+    const auto velocityOf = [&](int side, int component) {
+      return floatLanesOf<T>([&](int lane) {
+        if (laneJoints[lane] == nullptr) return 0.0f;
+        const SolverState& state = states[std::size_t(laneJoints[lane]->states[std::size_t(side)])];
+        return component < 2 ? state.linearVelocity[component] : state.angularVelocity;
+      });
+    };
+    const Floats velocity[2][3] = {{velocityOf(0, 0), velocityOf(0, 1), velocityOf(0, 2)},
+                                   {velocityOf(1, 0), velocityOf(1, 1), velocityOf(1, 2)}};
+    const T(&onA)[3][3] = numbers.side[0];
+    const T(&onB)[3][3] = numbers.side[1];
+    for (int r = 0; r < size; ++r) {
+      const Floats speed = toFloats(onB[r][0]) * (velocity[1][0] - velocity[0][0]) +
+                           toFloats(onB[r][1]) * (velocity[1][1] - velocity[0][1]) +
+                           toFloats(onB[r][2]) * velocity[1][2] - toFloats(-onA[r][2]) * velocity[0][2];
+      const T position = lanesOf<T>([&](int lane) {
+        return laneJoints[lane] == nullptr ? 0.0 : double(laneJoints[lane]->position[std::size_t(r)]);
+      });
+      const T used = lanesOf<T>([&](int lane) {
+        return laneJoints[lane] != nullptr && laneJoints[lane]->impulses[std::size_t(r)] != nullptr ? 1.0 : 0.0;
+      });
+      const T correction = clampLanes(splat<T>(errorRate) * position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
+      numbers.value[r] = keepWhere(used, -(toDoubles(speed) + correction));
+      moving = moving || anyNonZero(numbers.value[r]);
     }
   }
   return moving;
