@@ -34,9 +34,11 @@ constexpr double kCompliance = 1e-5;
 // marking it): a row costs a few nanoseconds.
 constexpr std::int32_t kRowsPerRange = 1024;
 
-// The speed a row is given to take out its share of position error.
-double correctionSpeed(double errorRate, Real position) {
-  return std::clamp(errorRate * position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
+// The speed a row is given to take out its share of position error, lane
+// by lane.
+template <class T>
+T correctionSpeed(double errorRate, const T& position) {
+  return clampLanes(splat<T>(errorRate) * position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
 }
 
 bool isBody(std::int32_t state, Real invMass) { return state != 0 && invMass > 0; }
@@ -56,14 +58,29 @@ void fillSide(const RigidRows& rows, int count, bool sideB, SideRows& side) {
   }
 }
 
-// A row's speed, from its rows on A and B (which hold its float Jacobian
-// exactly), worked out in float as the soft rows do: the bench's ragdoll
+// A joint's two bodies' velocities (vx, vy, w), A's then B's, lane by lane
+// in float.
+template <class T>
+struct LaneVelocities {
+  FloatsOf<T> of[2][3];
+};
+
+LaneVelocities<double> velocitiesOf(const SolverState& a, const SolverState& b) {
+  return {{{a.linearVelocity.x(), a.linearVelocity.y(), a.angularVelocity},
+           {b.linearVelocity.x(), b.linearVelocity.y(), b.angularVelocity}}};
+}
+
+// A row's speed, lane by lane, from its rows on A and B (which hold its
+// float Jacobian exactly: A's linear part is B's negated, so only A's
+// angular part is read), worked out in float as the soft rows do (the
+// operations and order of joint_row.h's velocity): the bench's ragdoll
 // pile, whose widest pin gap comes from one moment, opened 14.6 cm instead
 // of 5.3 with the speeds in double.
-double rowSpeed(const std::array<double, 3>& onA, const std::array<double, 3>& onB, const SolverState& a,
-                const SolverState& b) {
-  const Jacobian row{Vec2(Real(onB[0]), Real(onB[1])), Real(-onA[2]), Real(onB[2])};
-  return velocity(row, a, b);
+template <class T>
+T rowSpeed(const T& onAAngular, const T (&onB)[3], const LaneVelocities<T>& v) {
+  const auto& [a, b] = v.of;
+  return toDoubles(toFloats(onB[0]) * (b[0] - a[0]) + toFloats(onB[1]) * (b[1] - a[1]) + toFloats(onB[2]) * b[2] -
+                   toFloats(-onAAngular) * a[2]);
 }
 
 // The numbers below are the pass's arithmetic on a T, one group's (double)
@@ -673,8 +690,10 @@ void JointTreePass::assembleJoint(BatchView<T>& view, std::int32_t k, std::span<
           continue;
         }
         setLane(numbers.diagonal[r][r], lane, -kCompliance * inverseMass);
+        const double rowOnB[3] = {onB[i][0], onB[i][1], onB[i][2]};
         setLane(numbers.value[r], lane,
-                -(rowSpeed(onA[i], onB[i], a, b) + correctionSpeed(errorRate, rigid[i].position)));
+                -(rowSpeed(onA[i][2], rowOnB, velocitiesOf(a, b)) +
+                  correctionSpeed(errorRate, double(rigid[i].position))));
         joint.impulses[i] = rigid[i].impulse;
         joint.position[i] = rigid[i].position;
       }
@@ -757,13 +776,12 @@ void JointTreePass::assemble(BatchView<T>& view, std::span<JointRow> rows, std::
 }
 
 // The right-hand side alone, on blocks made at this geometry: each used
-// row's speed and its correction (none in the push), all lanes at once, each
-// lane's arithmetic rowSpeed's and correctionSpeed's (lane by lane, reading
-// each lane's row back out of its lanes had been a fifth of the pass on the
-// ragdoll pile). Returns whether any row of any lane moves.
+// row's speed and its correction (none in the push), all lanes at once
+// (lane by lane, reading each lane's rows back out of its lanes had been a
+// fifth of the pass on the ragdoll pile). Returns whether any row of any
+// lane moves.
 template <class T>
 bool JointTreePass::assembleSpeeds(BatchView<T>& view, std::span<const SolverState> states, double errorRate) {
-  using Floats = FloatsOf<T>;
   bool moving = false;
   for (std::int32_t k = 0; k < view.shape().end - view.shape().begin; ++k) {
     TreeNodeNumbers<T>& numbers = view.nodes[std::size_t(k)];
@@ -784,22 +802,18 @@ bool JointTreePass::assembleSpeeds(BatchView<T>& view, std::span<const SolverSta
         return component < 2 ? state.linearVelocity[component] : state.angularVelocity;
       });
     };
-    const Floats velocity[2][3] = {{velocityOf(0, 0), velocityOf(0, 1), velocityOf(0, 2)},
-                                   {velocityOf(1, 0), velocityOf(1, 1), velocityOf(1, 2)}};
+    const LaneVelocities<T> velocities{{{velocityOf(0, 0), velocityOf(0, 1), velocityOf(0, 2)},
+                                        {velocityOf(1, 0), velocityOf(1, 1), velocityOf(1, 2)}}};
     const T(&onA)[3][3] = numbers.side[0];
     const T(&onB)[3][3] = numbers.side[1];
     for (int r = 0; r < size; ++r) {
-      const Floats speed = toFloats(onB[r][0]) * (velocity[1][0] - velocity[0][0]) +
-                           toFloats(onB[r][1]) * (velocity[1][1] - velocity[0][1]) +
-                           toFloats(onB[r][2]) * velocity[1][2] - toFloats(-onA[r][2]) * velocity[0][2];
       const T position = lanesOf<T>([&](int lane) {
         return laneJoints[lane] == nullptr ? 0.0 : double(laneJoints[lane]->position[std::size_t(r)]);
       });
       const T used = lanesOf<T>([&](int lane) {
         return laneJoints[lane] != nullptr && laneJoints[lane]->impulses[std::size_t(r)] != nullptr ? 1.0 : 0.0;
       });
-      const T correction = clampLanes(splat<T>(errorRate) * position, -kMaxCorrectionSpeed, kMaxCorrectionSpeed);
-      numbers.value[r] = keepWhere(used, -(toDoubles(speed) + correction));
+      numbers.value[r] = keepWhere(used, -(rowSpeed(onA[r][2], onB[r], velocities) + correctionSpeed(errorRate, position)));
       moving = moving || anyNonZero(numbers.value[r]);
     }
   }
