@@ -107,7 +107,7 @@ constexpr Real kApproachTolerance = Real(5e-3);
 constexpr Real kReachMassRatio = 10;
 
 bool muchHeavier(const Body& body, const Body& other) {
-  return (other.invMass > 0) & (body.invMass * kReachMassRatio < other.invMass);
+  return (int(other.invMass > 0) & int(body.invMass * kReachMassRatio < other.invMass)) != 0;
 }
 
 // How far the gap between two bodies may close within a step of dt. A body
@@ -131,8 +131,8 @@ Real closingReach(const Body& a, const Body& b, Real dt) {
   // branches were a fifth of the narrow phase's update loop (confined's
   // circles). A speed is finite (the solver caps it), so the weighing picks
   // it or zero exactly.
-  const Real aCloses = Real((a.linearVelocity.dot(between) > 0) & !muchHeavier(a, b));
-  const Real bCloses = Real((b.linearVelocity.dot(between) < 0) & !muchHeavier(b, a));
+  const Real aCloses = Real(int(a.linearVelocity.dot(between) > 0) & int(!muchHeavier(a, b)));
+  const Real bCloses = Real(int(b.linearVelocity.dot(between) < 0) & int(!muchHeavier(b, a)));
   return (aCloses * a.linearVelocity.norm() + bCloses * b.linearVelocity.norm()) * dt;
 }
 

@@ -578,16 +578,17 @@ void JointTreePass::storeBatches(BatchStore<T>& store) {
 template <class T>
 void JointTreePass::loadBodyNumbers(const BatchView<T>& view) {
   for (std::size_t b = 0; b < view.bodies.size(); ++b) {
+    const auto invMass = [&](int lane) {
+      return lane < view.laneCount ? double(view.lanes[std::size_t(lane)].bodies[b].invMass) : 1.0;
+    };
+    const auto invInertia = [&](int lane) {
+      return lane < view.laneCount ? double(view.lanes[std::size_t(lane)].bodies[b].invInertia) : 1.0;
+    };
     TreeBodyNumbers<T>& numbers = view.bodies[b];
-    for (int lane = 0; lane < kLanesOf<T>; ++lane) {
-      const bool used = lane < view.laneCount;
-      const double invMass = used ? view.lanes[std::size_t(lane)].bodies[b].invMass : 1;
-      const double invInertia = used ? view.lanes[std::size_t(lane)].bodies[b].invInertia : 1;
-      setLane(numbers.invMass, lane, invMass);
-      setLane(numbers.invInertia, lane, invInertia);
-      // A body that cannot turn has an inertia beyond any lever.
-      setLane(numbers.hubInertia, lane, invInertia > 0 ? 1.0 / invInertia : 1e30);
-    }
+    numbers.invMass = lanesOf<T>(invMass);
+    numbers.invInertia = lanesOf<T>(invInertia);
+    // A body that cannot turn has an inertia beyond any lever.
+    numbers.hubInertia = lanesOf<T>([&](int lane) { return invInertia(lane) > 0 ? 1.0 / invInertia(lane) : 1e30; });
   }
 }
 

@@ -8,6 +8,7 @@
 // vector type changes how functions pass it (GCC's -Wpsabi), and two pairs
 // keep four independent chains of arithmetic in flight on any x86-64.
 
+#include <algorithm>
 #include <cstdint>
 
 namespace impulse {
@@ -72,7 +73,7 @@ inline bool anyNonZero(const Quad& x) {
 }
 
 /// x clamped into [low, high] lane by lane, as std::clamp does.
-inline double clampLanes(double x, double low, double high) { return x < low ? low : (high < x ? high : x); }
+inline double clampLanes(double x, double low, double high) { return std::clamp(x, low, high); }
 inline Quad clampLanes(const Quad& x, double low, double high) {
   const DoublePair lows{low, low};
   const DoublePair highs{high, high};
