@@ -120,7 +120,11 @@ void supportColumns(const WideConstraint<F>& c, F upperIsB, F (&column)[kSupport
   const F stateB = simd::loadInts<F>(c.stateB);
   const F normalX = simd::select(upperIsB, c.normalX, simd::negated(c.normalX));
   const F normalY = simd::select(upperIsB, c.normalY, simd::negated(c.normalY));
-  for (F& value : column) value = simd::broadcast<F>(0);  // the record's unused tail
+  // The record's unused tail; the other columns are all set below (zeroing
+  // every column first was a memset, a tenth of v3's many_pyramids' fill).
+  for (std::size_t k = floatAt(offsetof(SupportLaneRecord, unused)); k < kSupportLaneFloats; ++k) {
+    column[k] = simd::broadcast<F>(0);
+  }
   column[floatAt(offsetof(SupportLaneRecord, stateA))] = simd::select(upperIsB, stateA, stateB);
   column[floatAt(offsetof(SupportLaneRecord, stateB))] = simd::select(upperIsB, stateB, stateA);
   column[floatAt(offsetof(SupportLaneRecord, normalX))] = normalX;
