@@ -107,6 +107,15 @@ std::string cpuModel() {
   return "unknown CPU";
 }
 
+// How the engine linked in was compiled (IMPULSE_AVX2), which the table's
+// Impulse figures depend on as v3's do on BOX2D_AVX2.
+constexpr const char* kEngineBuild =
+#ifdef IMPULSE_BENCH_ENGINE_AVX2
+    "impulse built for AVX2";
+#else
+    "impulse built for x86-64";
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -114,8 +123,9 @@ int main(int argc, char** argv) {
   std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  std::printf("impulse-bench%s%s%s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "",
-              options.v3Suite ? " --v3-suite" : "", options.solver2D ? " --solver2d" : "", date, cpuModel().c_str());
+  std::printf("impulse-bench%s%s%s  %s  %s  %s  dt 1/60\n", options.quick ? " --quick" : "",
+              options.v3Suite ? " --v3-suite" : "", options.solver2D ? " --solver2d" : "", date, cpuModel().c_str(),
+              kEngineBuild);
   if (options.queries) {
     const int disagreements = bench::runQueryBench(stdout, {options.quick, options.engineFilter});
     // Round-off may split a grazing ray; the bench reports, it does not judge.
