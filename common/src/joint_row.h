@@ -71,10 +71,19 @@ struct Jacobian {
   Jacobian operator-() const { return {-linear, -angularA, -angularB}; }
 };
 
+/// A row's speed Cdot from its Jacobian's parts and the bodies' velocities
+/// (v, w of A, then of B), in float or in float lanes (the exact tree pass
+/// works several groups' rows at once, as the soft rows do, in float).
+template <class F>
+F rowVelocity(F linearX, F linearY, F angularA, F angularB, const F (&a)[3], const F (&b)[3]) {
+  return linearX * (b[0] - a[0]) + linearY * (b[1] - a[1]) + angularB * b[2] - angularA * a[2];
+}
+
 /// The row's speed Cdot at the states' velocities.
 inline Real velocity(const Jacobian& j, const SolverState& a, const SolverState& b) {
-  return j.linear.dot(b.linearVelocity - a.linearVelocity) + j.angularB * b.angularVelocity -
-         j.angularA * a.angularVelocity;
+  const Real velocityA[3] = {a.linearVelocity.x(), a.linearVelocity.y(), a.angularVelocity};
+  const Real velocityB[3] = {b.linearVelocity.x(), b.linearVelocity.y(), b.angularVelocity};
+  return rowVelocity(j.linear.x(), j.linear.y(), j.angularA, j.angularB, velocityA, velocityB);
 }
 
 /// A rigid (equality) row of a joint at the sub-step's geometry: its error

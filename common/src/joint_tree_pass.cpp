@@ -72,15 +72,14 @@ LaneVelocities<double> velocitiesOf(const SolverState& a, const SolverState& b) 
 
 // A row's speed, lane by lane, from its rows on A and B (which hold its
 // float Jacobian exactly: A's linear part is B's negated, so only A's
-// angular part is read), worked out in float as the soft rows do (the
-// operations and order of joint_row.h's velocity): the bench's ragdoll
-// pile, whose widest pin gap comes from one moment, opened 14.6 cm instead
-// of 5.3 with the speeds in double.
-template <class T>
-T rowSpeed(const T& onAAngular, const T (&onB)[3], const LaneVelocities<T>& v) {
-  const auto& [a, b] = v.of;
-  return toDoubles(toFloats(onB[0]) * (b[0] - a[0]) + toFloats(onB[1]) * (b[1] - a[1]) + toFloats(onB[2]) * b[2] -
-                   toFloats(-onAAngular) * a[2]);
+// angular part is read), worked out in float by the soft rows' own
+// rowVelocity (joint_row.h): the bench's ragdoll pile, whose widest pin gap
+// comes from one moment, opened 14.6 cm instead of 5.3 with the speeds in
+// double. `OnB` is a row of three T.
+template <class T, class OnB>
+T rowSpeed(const T& onAAngular, const OnB& onB, const LaneVelocities<T>& v) {
+  return toDoubles(rowVelocity(toFloats(onB[0]), toFloats(onB[1]), toFloats(-onAAngular), toFloats(onB[2]), v.of[0],
+                               v.of[1]));
 }
 
 // The numbers below are the pass's arithmetic on a T, one group's (double)
@@ -678,6 +677,7 @@ void JointTreePass::assembleJoint(BatchView<T>& view, std::int32_t k, std::span<
       }
       fillSide(rigid, N, false, onA);
       fillSide(rigid, N, true, onB);
+      const LaneVelocities<double> velocities = velocitiesOf(a, b);
       joint.impulses = {};
       for (int r = 0; r < N; ++r) {
         const auto i = std::size_t(r);
@@ -691,10 +691,8 @@ void JointTreePass::assembleJoint(BatchView<T>& view, std::int32_t k, std::span<
           continue;
         }
         setLane(numbers.diagonal[r][r], lane, -kCompliance * inverseMass);
-        const double rowOnB[3] = {onB[i][0], onB[i][1], onB[i][2]};
         setLane(numbers.value[r], lane,
-                -(rowSpeed(onA[i][2], rowOnB, velocitiesOf(a, b)) +
-                  correctionSpeed(errorRate, double(rigid[i].position))));
+                -(rowSpeed(onA[i][2], onB[i], velocities) + correctionSpeed(errorRate, double(rigid[i].position))));
         joint.impulses[i] = rigid[i].impulse;
         joint.position[i] = rigid[i].position;
       }
