@@ -509,6 +509,10 @@ namespace {
 // allocates nothing). A proxy's query takes about a microsecond.
 constexpr std::int32_t kPairChunksPerWorker = 4;
 constexpr std::size_t kQueriesPerChunk = 16;
+// Parts per worker of a walk of the movable tree against itself
+// (BroadPhase::queuedProxies): its parts differ in size (a subtree against
+// itself, two neighbouring ones), so more of them than chunks of queries.
+constexpr std::size_t kWalkPartsPerWorker = 16;
 
 // The broad phase's new pairs that may touch: the queued proxies' queries
 // side by side (the world is only read), then joined and sorted. A pair
@@ -523,15 +527,23 @@ void searchNewPairs(WorldData& world) {
     });
     return std::size_t(unknown - candidates.begin());
   };
-  const std::span<const std::int32_t> queued = world.broadPhase.queuedProxies();
-  const std::int32_t chunks = chunksFor(world, queued.size(), kPairChunksPerWorker, kQueriesPerChunk);
+  const std::span<const std::int32_t> queued =
+      world.broadPhase.queuedProxies(kWalkPartsPerWorker * std::size_t(world.tasks.workerCount()));
+  const std::int32_t queryChunks = chunksFor(world, queued.size(), kPairChunksPerWorker, kQueriesPerChunk);
+  // The queries' chunks, then the parts of the walk of the movable tree
+  // (BroadPhase::queuedProxies), if any.
+  const std::int32_t chunks = queryChunks + std::int32_t(world.broadPhase.walkPartCount());
   if (world.pairChunks.size() < std::size_t(chunks)) world.pairChunks.resize(std::size_t(chunks));
   world.tasks.forRanges(chunks, 1, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t chunk = begin; chunk < end; ++chunk) {
       std::vector<ProxyPair>& found = world.pairChunks[std::size_t(chunk)];
       found.clear();
-      const std::size_t first = chunkStart(queued.size(), chunk, chunks);
-      const std::size_t last = chunkStart(queued.size(), chunk + 1, chunks);
+      if (chunk >= queryChunks) {
+        world.broadPhase.walkPairs(std::size_t(chunk - queryChunks), known, found);
+        continue;
+      }
+      const std::size_t first = chunkStart(queued.size(), chunk, queryChunks);
+      const std::size_t last = chunkStart(queued.size(), chunk + 1, queryChunks);
       world.broadPhase.queryPairs(queued.subspan(first, last - first), known, found);
     }
   });

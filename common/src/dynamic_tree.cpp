@@ -118,6 +118,26 @@ void DynamicTree::enlargeProxy(std::int32_t node, const AABB& box) {
   markForRebuild(node);
 }
 
+void DynamicTree::splitLeafPairs(std::size_t count, std::vector<NodePair>& parts) const {
+  parts.clear();
+  if (root_ == kNull) return;
+  // Breadth first from the whole tree against itself, in place: parts
+  // [0, done) are pairs of leaves, kept as they are; [next, end) wait to be
+  // replaced by what their walks go on to, appended.
+  parts.push_back({root_, root_});
+  std::size_t done = 0;
+  std::size_t next = 0;
+  while (next < parts.size() && done + (parts.size() - next) < count) {
+    const NodePair pair = parts[next++];
+    if (bothLeaves(pair)) {
+      parts[done++] = pair;
+    } else {
+      splitPair(pair, [&](const NodePair& part) { parts.push_back(part); });
+    }
+  }
+  parts.erase(parts.begin() + std::ptrdiff_t(done), parts.begin() + std::ptrdiff_t(next));
+}
+
 void DynamicTree::markForRebuild(std::int32_t node) {
   // Marking stops at the first node marked before: whoever marked it goes
   // on to the root, so its ancestors are all marked by the time the marking

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -68,14 +69,15 @@ class Scenario {
     for (int i = 0; i < fixed; ++i) create(Kind::Static);
   }
 
-  // One step of random activity, without the pair search.
-  void step() {
+  // One step of random activity, without the pair search: `jumpPercent`
+  // of the movable proxies jump out of their fat boxes.
+  void step(int jumpPercent = 30) {
     std::uniform_real_distribution<Real> small(-kAabbMargin / 2, kAabbMargin / 2);
     std::uniform_real_distribution<Real> large(-2, 2);
     std::uniform_int_distribution<int> percent(0, 99);
     for (ModelProxy& proxy : proxies_) {
       if (!proxy.alive || proxy.kind != Kind::Movable) continue;
-      const bool jump = percent(rng_) < 30;
+      const bool jump = percent(rng_) < jumpPercent;
       const Real dx = jump ? large(rng_) : small(rng_);
       const Real dy = jump ? large(rng_) : small(rng_);
       move(proxy, shifted(proxy.tight, dx, dy));
@@ -103,6 +105,31 @@ class Scenario {
     broadPhase_.findNewPairs(pairs);
     for (ModelProxy& proxy : proxies_) proxy.queued = false;
     return pairs;
+  }
+
+  // The search split as the world's step splits it among threads: the
+  // queued proxies' queries in `chunks` slices, then the parts of the walk
+  // of the movable tree (at least `walkParts`, where it walks), each into
+  // a list of its own. Returns the joined pairs and how many walk parts ran.
+  std::pair<std::vector<ProxyPair>, std::size_t> findPairsInParts(std::size_t chunks, std::size_t walkParts) {
+    const std::span<const std::int32_t> queued = broadPhase_.queuedProxies(walkParts);
+    std::vector<ProxyPair> pairs;
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+      std::vector<ProxyPair> found;
+      const std::size_t first = queued.size() * chunk / chunks;
+      const std::size_t last = queued.size() * (chunk + 1) / chunks;
+      broadPhase_.queryPairs(queued.subspan(first, last - first), nullptr, found);
+      pairs.insert(pairs.end(), found.begin(), found.end());
+    }
+    const std::size_t walked = broadPhase_.walkPartCount();
+    for (std::size_t part = 0; part < walked; ++part) {
+      std::vector<ProxyPair> found;
+      broadPhase_.walkPairs(part, nullptr, found);
+      pairs.insert(pairs.end(), found.begin(), found.end());
+    }
+    broadPhase_.finishPairSearch(pairs);
+    for (ModelProxy& proxy : proxies_) proxy.queued = false;
+    return {pairs, walked};
   }
 
   // Pairs of live proxies whose fat boxes overlap, involving a queued proxy and
@@ -221,6 +248,29 @@ std::string movesName(const ::testing::TestParamInfo<Moves>& moves) {
 
 INSTANTIATE_TEST_SUITE_P(HowMoversArrive, BroadPhaseMoves,
                          ::testing::Values(Moves::OneByOne, Moves::InBulk, Moves::InBatches), movesName);
+
+// Where most movable proxies are queued the search walks the movable tree
+// against itself, where few are it queries each: either finds exactly the
+// pairs a brute-force search does, however it is split.
+TEST(BroadPhase, WalkedOrQueried_InAnyNumberOfParts_FindsExactlyTheOverlappingPairs) {
+  for (const Moves moves : {Moves::OneByOne, Moves::InBulk}) {
+    Scenario scenario(77, moves);
+    scenario.populate(400, 60);
+    bool walked = false;
+    bool queried = false;
+    for (int step = 0; step < 12; ++step) {
+      const std::vector<Pair> expected = asPairs(scenario.expectedPairs());
+      const std::size_t splits = std::size_t(1 + step % 4);
+      const auto [pairs, walkParts] = scenario.findPairsInParts(splits, 4 * splits);
+      ASSERT_EQ(asPairs(pairs), expected) << "step " << step;
+      walked = walked || walkParts >= 4 * splits;
+      queried = queried || walkParts == 0;
+      scenario.step(step % 2 == 0 ? 100 : 5);
+    }
+    EXPECT_TRUE(walked);
+    EXPECT_TRUE(queried);
+  }
+}
 
 TEST(BroadPhase, PairsAreSortedUniqueAndNeverStaticStatic) {
   Scenario scenario(9);

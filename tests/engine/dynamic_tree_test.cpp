@@ -172,6 +172,69 @@ TEST(DynamicTree, QueryReturnsExactlyTheOverlappingLeaves) {
   expectQueriesMatchBruteForce(tree, kept, source);
 }
 
+using LeafPair = std::pair<std::int32_t, std::int32_t>;
+
+// Every two leaves whose boxes overlap, smaller node first, sorted.
+std::vector<LeafPair> overlappingPairs(const std::vector<Leaf>& leaves) {
+  std::vector<LeafPair> pairs;
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    for (std::size_t j = i + 1; j < leaves.size(); ++j) {
+      if (!leaves[i].box.overlaps(leaves[j].box)) continue;
+      pairs.emplace_back(std::min(leaves[i].node, leaves[j].node), std::max(leaves[i].node, leaves[j].node));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+// What the walks of the tree split into at least `count` parts find, in
+// the order found (smaller node first in each pair).
+std::vector<LeafPair> walkedPairs(const DynamicTree& tree, std::size_t count, std::size_t* partCount = nullptr) {
+  std::vector<DynamicTree::NodePair> parts;
+  tree.splitLeafPairs(count, parts);
+  if (partCount != nullptr) *partCount = parts.size();
+  std::vector<LeafPair> pairs;
+  for (const DynamicTree::NodePair& part : parts) {
+    tree.forEachLeafPair(part, [&](std::int32_t a, std::int32_t b) { pairs.emplace_back(std::min(a, b), std::max(a, b)); });
+  }
+  return pairs;
+}
+
+TEST(DynamicTree, WalksInAnyNumberOfParts_FindEachOverlappingPairOnce) {
+  DynamicTree tree;
+  BoxSource source(23);
+  std::vector<Leaf> leaves = addRandomLeaves(tree, source, 1500);
+  for (Leaf& leaf : leaves) {
+    leaf.box = source.moved(leaf.box);
+    tree.enlargeProxy(leaf.node, leaf.box);
+  }
+  tree.rebuild();
+  const std::vector<LeafPair> expected = overlappingPairs(leaves);
+  ASSERT_GT(expected.size(), 1000U);  // a crowd, not a handful
+  for (const std::size_t count : {std::size_t(1), std::size_t(3), std::size_t(16), std::size_t(64), std::size_t(5000)}) {
+    std::size_t parts = 0;
+    std::vector<LeafPair> found = walkedPairs(tree, count, &parts);
+    // As many parts as asked for, while the tree has them to give.
+    EXPECT_GE(parts, std::min(count, expected.size())) << count;
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(std::adjacent_find(found.begin(), found.end()), found.end()) << "a pair found twice, " << count;
+    EXPECT_EQ(found, expected) << count;
+  }
+  // The same tree splits and walks the same way.
+  EXPECT_EQ(walkedPairs(tree, 16), walkedPairs(tree, 16));
+}
+
+TEST(DynamicTree, WalksOfTinyTrees) {
+  DynamicTree tree;
+  EXPECT_TRUE(walkedPairs(tree, 8).empty());
+  const std::int32_t first = tree.createProxy(makeBox(0, 0, 1, 1), 0);
+  EXPECT_TRUE(walkedPairs(tree, 8).empty());
+  const std::int32_t second = tree.createProxy(makeBox(1.5, 0, 1, 1), 1);
+  tree.createProxy(makeBox(9, 0, 1, 1), 2);
+  EXPECT_EQ(walkedPairs(tree, 1), (std::vector<LeafPair>{{std::min(first, second), std::max(first, second)}}));
+  EXPECT_EQ(walkedPairs(tree, 8), (std::vector<LeafPair>{{std::min(first, second), std::max(first, second)}}));
+}
+
 TEST(DynamicTree, ShiftedTree_StaysValid_HoldsEachBoxMoved_AndQueriesExactly) {
   DynamicTree tree;
   BoxSource source(23);

@@ -125,14 +125,22 @@ class BroadPhase {
   /// most of the work.
   void findNewPairs(std::vector<ProxyPair>& pairs, const KnownPairs& known = nullptr);
 
-  /// findNewPairs in three parts, for a search split among threads: the
-  /// queued proxies (each once); then, from any thread, queryPairs on a
-  /// slice of them, appending the pairs it finds to that thread's list; then
-  /// finishPairSearch on all the lists joined, which sorts them, drops
-  /// duplicates and empties the queue.
-  std::span<const std::int32_t> queuedProxies();
+  /// findNewPairs in parts, for a search split among threads: the queued
+  /// proxies (each once); then, from any thread, queryPairs on a slice of
+  /// them and walkPairs on a part of the walk, each appending the pairs it
+  /// finds to that thread's list; then finishPairSearch on all the lists
+  /// joined, which sorts them, drops duplicates and empties the queue.
+  /// Where half the movable proxies or more are queued (a tumbling crowd),
+  /// queuedProxies splits the search for pairs of two movable proxies into
+  /// the parts of one walk of the movable tree against itself (DynamicTree::
+  /// forEachLeafPair), at least `minWalkParts` of them, and queryPairs finds
+  /// a queued movable proxy's static partners only; otherwise there are no
+  /// walk parts. The pairs found are the same either way.
+  std::span<const std::int32_t> queuedProxies(std::size_t minWalkParts = 1);
   void queryPairs(std::span<const std::int32_t> proxyKeys, const KnownPairs& known,
                   std::vector<ProxyPair>& pairs) const;
+  std::size_t walkPartCount() const { return walkParts_.size(); }
+  void walkPairs(std::size_t part, const KnownPairs& known, std::vector<ProxyPair>& pairs) const;
   void finishPairSearch(std::vector<ProxyPair>& pairs);
 
   /// Whether the fat AABBs of the live proxies of two user values overlap.
@@ -220,6 +228,9 @@ class BroadPhase {
   /// queued proxies that overlap would find each other twice; one of them
   /// leaves the pair to the other.
   std::vector<std::uint8_t> queuedNode_[2];
+  /// During a pair search that walks the movable tree: the walk's parts
+  /// (queuedProxies), empty when each queued proxy is queried.
+  std::vector<DynamicTree::NodePair> walkParts_;
 };
 
 }  // namespace impulse

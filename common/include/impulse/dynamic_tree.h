@@ -74,6 +74,24 @@ class DynamicTree {
   template <typename Visit>
   void query(const AABB& box, Visit&& visit) const;
 
+  /// Two nodes whose leaves a walk pairs: each leaf under `a` with each
+  /// under `b`, or, where a == b, every two leaves under a.
+  struct NodePair {
+    std::int32_t a = kNull;
+    std::int32_t b = kNull;
+  };
+  /// Splits the search for every two leaves whose boxes overlap into at
+  /// least `count` node pairs where the tree has that many (`parts`,
+  /// cleared first): their walks (forEachLeafPair) together find each such
+  /// pair once. The parts are the same for the same tree.
+  void splitLeafPairs(std::size_t count, std::vector<NodePair>& parts) const;
+  /// Calls visit(leafA, leafB) for each two distinct leaves of `part` whose
+  /// boxes overlap, each pair once, in a deterministic order. Walking the
+  /// tree against itself finds the pairs of most of its leaves for less
+  /// than a query of each, which starts from the root every time.
+  template <typename Visit>
+  void forEachLeafPair(NodePair part, Visit&& visit) const;
+
   /// A segment origin -> origin + maxFraction * translation, or a box of
   /// half-size `extent` centred on it and swept along it (a shape cast).
   struct Ray {
@@ -238,6 +256,42 @@ class DynamicTree {
     __builtin_prefetch(&nodes_[node]);
     return node;
   }
+  // Whether a pair of leaves, the end of a walk's descent.
+  bool bothLeaves(const NodePair& pair) const {
+    return pair.a != pair.b && nodes_[pair.a].isLeaf() && nodes_[pair.b].isLeaf();
+  }
+  // emit(next) for each pair a walk of `pair` goes on to whose boxes
+  // overlap: a node against itself, its two children each against itself
+  // and against each other; two nodes, the larger one's children (by
+  // perimeter, a leaf never) against the other. None for a leaf against
+  // itself or two leaves. The children's boxes are their parent's copies.
+  template <typename Emit>
+  void splitPair(const NodePair& pair, Emit&& emit) const {
+    const TreeNode& a = nodes_[pair.a];
+    if (pair.a == pair.b) {
+      if (a.isLeaf()) return;
+      const std::int32_t first = fetch(a.child1);
+      const std::int32_t second = fetch(a.child2);
+      if (a.childBoxes[0].overlaps(a.childBoxes[1])) emit(NodePair{first, second});
+      emit(NodePair{second, second});
+      emit(NodePair{first, first});
+      return;
+    }
+    const TreeNode& b = nodes_[pair.b];
+    const bool splitsA = !a.isLeaf() && (b.isLeaf() || a.box.perimeter() >= b.box.perimeter());
+    const TreeNode& split = splitsA ? a : b;
+    const AABB& other = splitsA ? b.box : a.box;
+    for (int child = 0; child < 2; ++child) {
+      if (!split.childBoxes[child].overlaps(other)) continue;
+      const std::int32_t node = fetch(child == 0 ? split.child1 : split.child2);
+      emit(splitsA ? NodePair{node, pair.b} : NodePair{pair.a, node});
+    }
+  }
+  // A walk's stack: each level of its descent, which goes one node deeper
+  // on one side or both, leaves at most two pairs waiting, and it descends
+  // at most twice the height.
+  static constexpr int kPairStackSize = 4 * kStackSize;
+  static_assert(kPairStackSize >= 2 * (2 * kMaxHeight) + 1);
 };
 
 template <typename Visit>
@@ -259,6 +313,21 @@ void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
     const bool second = node.childBoxes[1].overlaps(queryBox);
     if (first) stack[count++] = fetch(node.child1);
     if (second) stack[count++] = fetch(node.child2);
+  }
+}
+
+template <typename Visit>
+void DynamicTree::forEachLeafPair(NodePair part, Visit&& visit) const {
+  NodePair stack[kPairStackSize];
+  int count = 0;
+  stack[count++] = part;
+  while (count > 0) {
+    const NodePair pair = stack[--count];
+    if (bothLeaves(pair)) {
+      visit(pair.a, pair.b);
+      continue;
+    }
+    splitPair(pair, [&](const NodePair& next) { stack[count++] = next; });
   }
 }
 
