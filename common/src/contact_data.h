@@ -42,6 +42,9 @@ struct alignas(64) Contact : ContactSolverPart {
   /// Either shape is round (ShapeSlot::rolls): read by the support pass's
   /// second levelling only, off the refs' lines.
   bool rolls = false;
+  /// Either shape is a chain segment: continuous collision looks among
+  /// these alone for bodies pressed into a static chain.
+  bool onChain = false;
   ManifoldFrame frame;
   CollideFunction collide = nullptr;
   std::uint64_t pairKey = 0;
@@ -58,6 +61,7 @@ inline void setContactShapes(Contact& contact, std::int32_t a, const ShapeSlot& 
   contact.shapeA = a;
   contact.shapeB = b;
   contact.rolls = shapeA.rolls() || shapeB.rolls();
+  contact.onChain = shapeA.type() == ShapeType::ChainSegment || shapeB.type() == ShapeType::ChainSegment;
   contact.collide = collideFunction(shapeA.type(), shapeB.type());
   contact.pairKey = contactPairKey(a, b);
 }

@@ -229,12 +229,13 @@ bool pressedOnChain(const WorldData& world, std::int32_t shape, std::int32_t cha
 // check is a few cache misses.
 constexpr std::int32_t kContactsPerPressRange = 512;
 
-// How far ahead of its check a touching contact's shape slots are fetched
-// and, half as far, the slots they name: the list is in the contacts'
-// order in memory, but with gaps, and on v3's spinner (25 000 touching
-// contacts, one static chain) two thirds of the search's time went to
-// loading the contacts' shape slots. A check is a few nanoseconds: at 16
-// ahead most loads still waited, at 128 the search takes 0.4 of its time.
+// How far ahead of its check a touching contact's line is fetched and,
+// half as far, the shape slots of one on a chain: the list is in the
+// contacts' order in memory, but with gaps, and on v3's spinner (25 000
+// touching contacts, one static chain) two thirds of the search's time had
+// gone to loading the contacts' shape slots. A check is a few nanoseconds:
+// at 16 ahead most loads still waited, at 128 the search takes 0.4 of its
+// time.
 constexpr std::size_t kPressContactAhead = 128;
 constexpr std::size_t kPressShapeAhead = kPressContactAhead / 2;
 
@@ -243,9 +244,19 @@ void fetchForPressCheck(const WorldData& world, const std::vector<std::int32_t>&
   if (i + kPressContactAhead < end) fetchLines(&world.contacts[std::size_t(touching[i + kPressContactAhead])].shapeA);
   if (i + kPressShapeAhead < end) {
     const Contact& ahead = world.contacts[std::size_t(touching[i + kPressShapeAhead])];
+    if (!ahead.onChain) return;
     fetchLines(&world.shapes[ahead.shapeA]);
     fetchLines(&world.shapes[ahead.shapeB]);
   }
+}
+
+// Which of the contact's bodies lies pressed on a static chain's segment:
+// bit 0 A's, bit 1 B's. Only a contact on a chain (Contact::onChain) reads
+// its shapes: in a drum most touching contacts are between its bodies.
+std::uint8_t pressesOf(const WorldData& world, const Contact& contact) {
+  if (!contact.onChain) return 0;
+  return std::uint8_t((pressedOnChain(world, contact.shapeA, contact.shapeB) ? 1 : 0) |
+                      (pressedOnChain(world, contact.shapeB, contact.shapeA) ? 2 : 0));
 }
 
 // A body slow for its size can still be pushed across a chain segment it is
@@ -268,9 +279,7 @@ void addSlowBodiesOnChains(WorldData& world, std::vector<std::int32_t>& bodies) 
                         [&](std::int32_t begin, std::int32_t end) {
                           for (auto i = std::size_t(begin); i < std::size_t(end); ++i) {
                             fetchForPressCheck(world, touching, i, std::size_t(end));
-                            const Contact& contact = world.contacts[std::size_t(touching[i])];
-                            presses[i] = std::uint8_t((pressedOnChain(world, contact.shapeA, contact.shapeB) ? 1 : 0) |
-                                                      (pressedOnChain(world, contact.shapeB, contact.shapeA) ? 2 : 0));
+                            presses[i] = pressesOf(world, world.contacts[std::size_t(touching[i])]);
                           }
                         });
   for (std::size_t i = 0; i < touching.size(); ++i) {
