@@ -186,12 +186,18 @@ void BroadPhase::findNewPairs(std::vector<ProxyPair>& pairs, const KnownPairs& k
 
 // A pair search walks the movable tree against itself (walkPairs) rather
 // than query each queued movable proxy where one in kWalkFromQueuedShare
-// movable proxies or more is queued. The walk pairs every proxy, queued or
-// not, and costs about as much as querying half of them: from one in four,
-// the bench's scaling-8000 took 1.1 of the queries' time in its pair stage;
-// v3's crowds, with 55 to 92 % of their proxies queued each step, 0.65 to
-// 0.8 of it.
+// movable proxies or more is queued, and at least kMinWalkedProxies. The
+// walk pairs every proxy, queued or not, and costs about as much as
+// querying half of them: from one in four, the bench's scaling-8000 took
+// 1.1 of the queries' time in its pair stage; v3's crowds, with 55 to 92 %
+// of their proxies queued each step, 0.65 to 0.8 of it. A few hundred
+// queries cost little, and where they are a chain's links the walk costs
+// more: heavy-chain-300's 300 links
+// walked took twice their queries' time (each link's box overlaps its two
+// neighbours', and the boxes of a hanging chain's stretches overlap far
+// more than their links do).
 constexpr int kWalkFromQueuedShare = 2;
+constexpr int kMinWalkedProxies = 400;
 
 std::span<const std::int32_t> BroadPhase::queuedProxies(std::size_t minWalkParts) {
   // The flags are all clear between searches (finishPairSearch clears the
@@ -215,7 +221,7 @@ std::span<const std::int32_t> BroadPhase::queuedProxies(std::size_t minWalkParts
   moveBuffer_.erase(kept, moveBuffer_.end());
   const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
   walkParts_.clear();
-  if (queuedMovable > 0 && kWalkFromQueuedShare * queuedMovable >= movable.leafCount()) {
+  if (queuedMovable >= kMinWalkedProxies && kWalkFromQueuedShare * queuedMovable >= movable.leafCount()) {
     movable.splitLeafPairs(minWalkParts, walkParts_);
   }
   return moveBuffer_;

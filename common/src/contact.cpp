@@ -510,9 +510,16 @@ namespace {
 constexpr std::int32_t kPairChunksPerWorker = 4;
 constexpr std::size_t kQueriesPerChunk = 16;
 // Parts per worker of a walk of the movable tree against itself
-// (BroadPhase::queuedProxies): its parts differ in size (a subtree against
-// itself, two neighbouring ones), so more of them than chunks of queries.
+// (BroadPhase::queuedProxies) where there are several: its parts differ in
+// size (a subtree against itself, two neighbouring ones), so more of them
+// than chunks of queries. One thread walks it whole: each part costs a
+// batch of known-pair lookups of its own.
 constexpr std::size_t kWalkPartsPerWorker = 16;
+
+std::size_t walkPartsFor(const WorldData& world) {
+  const auto workers = std::size_t(world.tasks.workerCount());
+  return workers == 1 ? 1 : kWalkPartsPerWorker * workers;
+}
 
 // The broad phase's new pairs that may touch: the queued proxies' queries
 // side by side (the world is only read), then joined and sorted. A pair
@@ -528,7 +535,7 @@ void searchNewPairs(WorldData& world) {
     return std::size_t(unknown - candidates.begin());
   };
   const std::span<const std::int32_t> queued =
-      world.broadPhase.queuedProxies(kWalkPartsPerWorker * std::size_t(world.tasks.workerCount()));
+      world.broadPhase.queuedProxies(walkPartsFor(world));
   const std::int32_t queryChunks = chunksFor(world, queued.size(), kPairChunksPerWorker, kQueriesPerChunk);
   // The queries' chunks, then the parts of the walk of the movable tree
   // (BroadPhase::queuedProxies), if any.

@@ -255,7 +255,7 @@ INSTANTIATE_TEST_SUITE_P(HowMoversArrive, BroadPhaseMoves,
 TEST(BroadPhase, WalkedOrQueried_InAnyNumberOfParts_FindsExactlyTheOverlappingPairs) {
   for (const Moves moves : {Moves::OneByOne, Moves::InBulk}) {
     Scenario scenario(77, moves);
-    scenario.populate(400, 60);
+    scenario.populate(800, 60);
     bool walked = false;
     bool queried = false;
     for (int step = 0; step < 12; ++step) {

@@ -130,12 +130,13 @@ class BroadPhase {
   /// them and walkPairs on a part of the walk, each appending the pairs it
   /// finds to that thread's list; then finishPairSearch on all the lists
   /// joined, which sorts them, drops duplicates and empties the queue.
-  /// Where half the movable proxies or more are queued (a tumbling crowd),
-  /// queuedProxies splits the search for pairs of two movable proxies into
-  /// the parts of one walk of the movable tree against itself (DynamicTree::
-  /// forEachLeafPair), at least `minWalkParts` of them, and queryPairs finds
-  /// a queued movable proxy's static partners only; otherwise there are no
-  /// walk parts. The pairs found are the same either way.
+  /// Where half the movable proxies or more are queued, and at least a few
+  /// hundred (a tumbling crowd), queuedProxies splits the search for pairs
+  /// of two movable proxies into the parts of one walk of the movable tree
+  /// against itself (DynamicTree::forEachLeafPair), at least
+  /// `minWalkParts` of them, and queryPairs finds a queued movable proxy's
+  /// static partners only; otherwise there are no walk parts. The pairs
+  /// found are the same either way.
   std::span<const std::int32_t> queuedProxies(std::size_t minWalkParts = 1);
   void queryPairs(std::span<const std::int32_t> proxyKeys, const KnownPairs& known,
                   std::vector<ProxyPair>& pairs) const;
