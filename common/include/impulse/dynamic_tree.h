@@ -256,6 +256,10 @@ class DynamicTree {
     __builtin_prefetch(&nodes_[node]);
     return node;
   }
+  // query below `top`, whose box overlaps queryBox; false when visit
+  // stopped it.
+  template <typename Visit>
+  bool querySubtree(std::int32_t top, const AABB& queryBox, Visit&& visit) const;
   // Whether a pair of leaves, the end of a walk's descent.
   bool bothLeaves(const NodePair& pair) const {
     return pair.a != pair.b && nodes_[pair.a].isLeaf() && nodes_[pair.b].isLeaf();
@@ -297,16 +301,21 @@ class DynamicTree {
 template <typename Visit>
 void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
   if (root_ == kNull || !nodes_[root_].box.overlaps(queryBox)) return;
+  querySubtree(root_, queryBox, visit);
+}
+
+template <typename Visit>
+bool DynamicTree::querySubtree(std::int32_t top, const AABB& queryBox, Visit&& visit) const {
   // Only nodes whose box overlaps go on the stack, tested from their
   // parent's copies of their boxes.
   std::int32_t stack[kStackSize];
   int count = 0;
-  stack[count++] = root_;
+  stack[count++] = top;
   while (count > 0) {
     const std::int32_t index = stack[--count];
     const TreeNode& node = nodes_[index];
     if (node.isLeaf()) {
-      if (!visit(index)) return;
+      if (!visit(index)) return false;
       continue;
     }
     const bool first = node.childBoxes[0].overlaps(queryBox);
@@ -314,6 +323,7 @@ void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
     if (first) stack[count++] = fetch(node.child1);
     if (second) stack[count++] = fetch(node.child2);
   }
+  return true;
 }
 
 template <typename Visit>
@@ -323,9 +333,19 @@ void DynamicTree::forEachLeafPair(NodePair part, Visit&& visit) const {
   stack[count++] = part;
   while (count > 0) {
     const NodePair pair = stack[--count];
-    if (bothLeaves(pair)) {
-      visit(pair.a, pair.b);
-      continue;
+    if (pair.a != pair.b) {
+      // A leaf against a subtree (or a leaf): the subtree is queried with
+      // the leaf's box, two child boxes tested a node, where the walk would
+      // weigh both sides of every pair it meets.
+      const bool leafA = nodes_[pair.a].isLeaf();
+      if (leafA || nodes_[pair.b].isLeaf()) {
+        const std::int32_t leaf = leafA ? pair.a : pair.b;
+        querySubtree(leafA ? pair.b : pair.a, nodes_[leaf].box, [&](std::int32_t other) {
+          visit(leaf, other);
+          return true;
+        });
+        continue;
+      }
     }
     splitPair(pair, [&](const NodePair& next) { stack[count++] = next; });
   }
