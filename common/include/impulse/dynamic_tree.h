@@ -256,10 +256,9 @@ class DynamicTree {
     __builtin_prefetch(&nodes_[node]);
     return node;
   }
-  // query below `top`, whose box overlaps queryBox; false when visit
-  // stopped it.
+  // query below `top`, whose box overlaps queryBox.
   template <typename Visit>
-  bool querySubtree(std::int32_t top, const AABB& queryBox, Visit&& visit) const;
+  void querySubtree(std::int32_t top, const AABB& queryBox, Visit&& visit) const;
   // Whether a pair of leaves, the end of a walk's descent.
   bool bothLeaves(const NodePair& pair) const {
     return pair.a != pair.b && nodes_[pair.a].isLeaf() && nodes_[pair.b].isLeaf();
@@ -305,7 +304,7 @@ void DynamicTree::query(const AABB& queryBox, Visit&& visit) const {
 }
 
 template <typename Visit>
-bool DynamicTree::querySubtree(std::int32_t top, const AABB& queryBox, Visit&& visit) const {
+void DynamicTree::querySubtree(std::int32_t top, const AABB& queryBox, Visit&& visit) const {
   // Only nodes whose box overlaps go on the stack, tested from their
   // parent's copies of their boxes.
   std::int32_t stack[kStackSize];
@@ -315,7 +314,7 @@ bool DynamicTree::querySubtree(std::int32_t top, const AABB& queryBox, Visit&& v
     const std::int32_t index = stack[--count];
     const TreeNode& node = nodes_[index];
     if (node.isLeaf()) {
-      if (!visit(index)) return false;
+      if (!visit(index)) return;
       continue;
     }
     const bool first = node.childBoxes[0].overlaps(queryBox);
@@ -323,7 +322,6 @@ bool DynamicTree::querySubtree(std::int32_t top, const AABB& queryBox, Visit&& v
     if (first) stack[count++] = fetch(node.child1);
     if (second) stack[count++] = fetch(node.child2);
   }
-  return true;
 }
 
 template <typename Visit>
