@@ -42,6 +42,9 @@ void markQueued(std::vector<std::uint8_t> (&queuedNode)[2], std::int32_t proxyKe
   queuedNode[treeIndex(kindOf(proxyKey))][std::size_t(nodeOf(proxyKey))] = queued;
 }
 
+// The pair of two user values, the smaller first.
+ProxyPair orderedPair(std::int32_t a, std::int32_t b) { return {std::min(a, b), std::max(a, b)}; }
+
 bool pairLess(const ProxyPair& a, const ProxyPair& b) {
   return a.first != b.first ? a.first < b.first : a.second < b.second;
 }
@@ -98,8 +101,7 @@ template <class Skip, class Add>
 void collectPairs(const DynamicTree& tree, const AABB& box, std::int32_t userValue, Skip&& skip, Add&& add) {
   tree.query(box, [&](std::int32_t node) {
     if (skip(node)) return true;
-    const std::int32_t other = tree.userValue(node);
-    add(ProxyPair{std::min(userValue, other), std::max(userValue, other)});
+    add(orderedPair(userValue, tree.userValue(node)));
     return true;
   });
 }
@@ -232,9 +234,7 @@ void BroadPhase::walkPairs(std::size_t part, const KnownPairs& known, std::vecto
   const DynamicTree& movable = trees_[treeIndex(ProxyKind::Movable)];
   movable.forEachLeafPair(walkParts_[part], [&](std::int32_t a, std::int32_t b) {
     if (!isQueued(ProxyKind::Movable, a) && !isQueued(ProxyKind::Movable, b)) return;
-    const std::int32_t userA = movable.userValue(a);
-    const std::int32_t userB = movable.userValue(b);
-    batch.add(ProxyPair{std::min(userA, userB), std::max(userA, userB)});
+    batch.add(orderedPair(movable.userValue(a), movable.userValue(b)));
   });
 }
 

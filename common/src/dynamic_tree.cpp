@@ -122,14 +122,14 @@ void DynamicTree::splitLeafPairs(std::size_t count, std::vector<NodePair>& parts
   parts.clear();
   if (root_ == kNull) return;
   // Breadth first from the whole tree against itself, in place: parts
-  // [0, done) are pairs of leaves, kept as they are; [next, end) wait to be
-  // replaced by what their walks go on to, appended.
+  // [0, done) have a leaf (a walk queries them whole), kept as they are;
+  // [next, end) wait to be replaced by what their walks go on to, appended.
   parts.push_back({root_, root_});
   std::size_t done = 0;
   std::size_t next = 0;
   while (next < parts.size() && done + (parts.size() - next) < count) {
     const NodePair pair = parts[next++];
-    if (bothLeaves(pair)) {
+    if (leafSide(pair) != kNull) {
       parts[done++] = pair;
     } else {
       splitPair(pair, [&](const NodePair& part) { parts.push_back(part); });

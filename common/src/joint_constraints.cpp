@@ -146,6 +146,12 @@ bool isAwayFromTarget(const JointRow& row) {
 
 }  // namespace
 
+JointPass jointPassAt(Real h) {
+  const Real hertz = Real(0.25) / h;
+  return {h, 1 / h, makeSoftness(hertz, kJointDampingRatio, h), makeSoftness(kLoopPinRate / h, kLoopPinDampingRatio, h),
+          true};
+}
+
 bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
                                GraphColoring& coloring) {
   if (world.liveJoints == 0) {
@@ -191,9 +197,7 @@ bool JointConstraints::prepare(const WorldData& world, const SolveStep& step,
       rows_[std::size_t(rankOf_[std::size_t(i)])] = makeRow(world, world.joints[std::size_t(index)], index);
     }
   });
-  Real hertz = Real(0.25) / step.h;
-  pass_ = {step.h, 1 / step.h, makeSoftness(hertz, kJointDampingRatio, step.h),
-           makeSoftness(kLoopPinRate / step.h, kLoopPinDampingRatio, step.h), true};
+  pass_ = jointPassAt(step.h);
   tree_.order(rows_, world.solverStates.size(), pass_.rigid, world.tasks);
   placeBlocks(world.tasks);
   fillBlocks(world.tasks);

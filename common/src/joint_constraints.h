@@ -19,6 +19,10 @@ namespace impulse {
 struct WideContactKernels;
 class TaskRunner;
 
+/// The joints' pass at sub-step h, with position correction: the rigid
+/// rows' softness and the stiffer one of plain pins in loops.
+JointPass jointPassAt(Real h);
+
 class JointConstraints final : public ConstraintKind {
  public:
   bool prepare(const WorldData& world, const SolveStep& step, GraphColoring& coloring) override;

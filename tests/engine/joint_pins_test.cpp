@@ -14,20 +14,13 @@
 #include <vector>
 
 #include "contact_solver_wide.h"
+#include "joint_constraints.h"
 #include "joint_data.h"
 
 namespace impulse {
 namespace {
 
 constexpr Real kH = Real(1.0 / 240);
-
-// The joints' pass at the engine's rigid softness. These scenes have no
-// pins in loops; their softness is set all the same (the rigid one), so
-// that no field is left to brace elision.
-JointPass testPass() {
-  const Softness rigid = makeSoftness(Real(0.25) / kH, 2, kH);
-  return {.h = kH, .invH = 1 / kH, .rigid = rigid, .loop = rigid, .useBias = true};
-}
 
 // Pins of one colour: row i joins states 2i + 1 and 2i + 2; every third row
 // holds its body to the world (the static dummy, state 0) instead.
@@ -107,7 +100,7 @@ void checkKernels(const WideContactKernels& kernels) {
   PinScene scalar = makeScene(29, 11);
   std::vector<SolverState> wideStates = scalar.states;
   std::vector<PinBlock> blocks = blocksOf(scalar.rows);
-  JointPass pass = testPass();
+  JointPass pass = jointPassAt(kH);
 
   forEachRow(scalar, [](JointRow& row, SolverState& a, SolverState& b) { warmStartJoint(row, a, b); });
   kernels.warmStartPins(wideStates, blocks);
@@ -200,7 +193,7 @@ void checkRevoluteKernels(const WideContactKernels& kernels) {
   std::vector<SolverState> wideStates = scalar.pins.states;
   std::vector<JointRow> wideRows = scalar.pins.rows;
   std::vector<RevoluteBlock> blocks = revoluteBlocksOf(wideRows);
-  JointPass pass = testPass();
+  JointPass pass = jointPassAt(kH);
 
   forEachRow(scalar.pins,
              [](JointRow& row, SolverState& a, SolverState& b) { warmStartJoint(row, a, b); });

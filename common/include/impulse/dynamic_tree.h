@@ -259,15 +259,19 @@ class DynamicTree {
   // query below `top`, whose box overlaps queryBox.
   template <typename Visit>
   void querySubtree(std::int32_t top, const AABB& queryBox, Visit&& visit) const;
-  // Whether a pair of leaves, the end of a walk's descent.
-  bool bothLeaves(const NodePair& pair) const {
-    return pair.a != pair.b && nodes_[pair.a].isLeaf() && nodes_[pair.b].isLeaf();
+  // The leaf of two nodes one of which at least is a leaf (a walk queries
+  // the other with its box); kNull for a node against itself or two inner
+  // nodes, which the walk splits.
+  std::int32_t leafSide(const NodePair& pair) const {
+    if (pair.a == pair.b) return kNull;
+    if (nodes_[pair.a].isLeaf()) return pair.a;
+    return nodes_[pair.b].isLeaf() ? pair.b : kNull;
   }
-  // emit(next) for each pair a walk of `pair` goes on to whose boxes
-  // overlap: a node against itself, its two children each against itself
-  // and against each other; two nodes, the larger one's children (by
-  // perimeter, a leaf never) against the other. None for a leaf against
-  // itself or two leaves. The children's boxes are their parent's copies.
+  // emit(next) for each pair a walk of `pair` (no leafSide) goes on to
+  // whose boxes overlap: a node against itself, its two children each
+  // against itself and against each other (none for a leaf); two inner
+  // nodes, the larger one's children (by perimeter) against the other. The
+  // children's boxes are their parent's copies.
   template <typename Emit>
   void splitPair(const NodePair& pair, Emit&& emit) const {
     const TreeNode& a = nodes_[pair.a];
@@ -281,7 +285,7 @@ class DynamicTree {
       return;
     }
     const TreeNode& b = nodes_[pair.b];
-    const bool splitsA = !a.isLeaf() && (b.isLeaf() || a.box.perimeter() >= b.box.perimeter());
+    const bool splitsA = a.box.perimeter() >= b.box.perimeter();
     const TreeNode& split = splitsA ? a : b;
     const AABB& other = splitsA ? b.box : a.box;
     for (int child = 0; child < 2; ++child) {
@@ -331,21 +335,18 @@ void DynamicTree::forEachLeafPair(NodePair part, Visit&& visit) const {
   stack[count++] = part;
   while (count > 0) {
     const NodePair pair = stack[--count];
-    if (pair.a != pair.b) {
-      // A leaf against a subtree (or a leaf): the subtree is queried with
-      // the leaf's box, two child boxes tested a node, where the walk would
-      // weigh both sides of every pair it meets.
-      const bool leafA = nodes_[pair.a].isLeaf();
-      if (leafA || nodes_[pair.b].isLeaf()) {
-        const std::int32_t leaf = leafA ? pair.a : pair.b;
-        querySubtree(leafA ? pair.b : pair.a, nodes_[leaf].box, [&](std::int32_t other) {
-          visit(leaf, other);
-          return true;
-        });
-        continue;
-      }
+    // A leaf against a subtree (or a leaf): the subtree is queried with the
+    // leaf's box, two child boxes tested a node, where the walk would weigh
+    // both sides of every pair it meets.
+    const std::int32_t leaf = leafSide(pair);
+    if (leaf == kNull) {
+      splitPair(pair, [&](const NodePair& next) { stack[count++] = next; });
+      continue;
     }
-    splitPair(pair, [&](const NodePair& next) { stack[count++] = next; });
+    querySubtree(leaf == pair.a ? pair.b : pair.a, nodes_[leaf].box, [&](std::int32_t other) {
+      visit(leaf, other);
+      return true;
+    });
   }
 }
 
