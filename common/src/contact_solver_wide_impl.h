@@ -1028,6 +1028,17 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
   applyRestitution(overflowContext(context, set));
 }
 
+// Whether a quiet bundle stayed so through the step: it holds no impulse
+// and none of its lanes holds a body up. Its manifolds held none either
+// (ConstraintRef::quiet), and its store would write them as they are: in a
+// crowd of debris flying apart most of the contacts are such speculative
+// ones, apart and closing too slowly to act.
+template <class F>
+bool keepsQuietManifolds(const WideConstraint<F>& w, const BundleTraits& traits, const std::int32_t* records) {
+  if (!traits.quiet || !holdsNoImpulse(w)) return false;
+  return std::all_of(records, records + F::kLanes, [](std::int32_t record) { return record < 0; });
+}
+
 // Writes one bundle's impulses into its lanes' manifolds: the support
 // pass's where a lane's contact holds a body up (its `records`). Only
 // writes: each lane's point count comes with the bundle (reading the
@@ -1035,6 +1046,7 @@ void restitutionWide(const ContactSolverContext& context, WideContactSet& set) {
 template <class F>
 void storeBundleImpulses(const WideContactSet& set, const WideConstraint<F>& w, const WideContactCold<F>& cold,
                          const BundleTraits& traits, const std::int32_t* records, WorldData& world) {
+  if (keepsQuietManifolds(w, traits, records)) return;
   alignas(16) float rolling[F::kLanes];
   alignas(16) float normal[2][F::kLanes], tangent[2][F::kLanes], support[2][F::kLanes];
   simd::store(rolling, w.rollingImpulse);
@@ -1091,7 +1103,14 @@ void storeWideImpulses(WideContactSet& set, WorldData& world) {
                         [&](std::int32_t begin, std::int32_t end) {
                           visitFetchingAhead(
                               begin, end,
-                              [&](std::int32_t b) { prefetchStoreTargets(cold[std::size_t(b)], world); },
+                              [&](std::int32_t b) {
+                                const std::size_t k = std::size_t(b);
+                                if (keepsQuietManifolds(bundles[k], set.bundleTraits[k],
+                                                        &set.laneSupportRecord[k * F::kLanes])) {
+                                  return;
+                                }
+                                prefetchStoreTargets(cold[k], world);
+                              },
                               [&](std::int32_t b) {
                                 storeBundleImpulses(set, bundles[std::size_t(b)], cold[std::size_t(b)],
                                                     set.bundleTraits[std::size_t(b)],
