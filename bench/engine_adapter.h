@@ -71,6 +71,9 @@ class EngineAdapter {
   /// Which of the engine's optional solver passes ran, and on how much, over
   /// the steps so far (empty: the engine has none to report).
   virtual std::string passes() const { return {}; }
+  /// Called after each step of a measured run, outside its timing: counts
+  /// for passes() that the engine would take inside the step's time.
+  virtual void countStep() {}
   /// Where the engine's own timers put a step's time, mean over the steps
   /// so far (empty: the engine has none to report). Each engine's stages end
   /// where its own timers end them (StageTimes).

@@ -60,7 +60,8 @@ void printTable(std::FILE* out, const std::vector<RunResult>& results) {
   }
   // One line, at the default setting: the passes barely differ by sub-steps.
   for (const RunResult& r : results) {
-    if (r.ok() && !r.passes.empty() && r.setting.engine == Engine::Impulse && atDefaultSubSteps(r)) {
+    const bool counted = r.setting.engine == Engine::Impulse || r.setting.engine == Engine::Box2DV3Avx2;
+    if (r.ok() && !r.passes.empty() && counted && atDefaultSubSteps(r)) {
       std::fprintf(out, "passes of %s: %s\n", engineSetting(r).c_str(), r.passes.c_str());
     }
   }

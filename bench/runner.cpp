@@ -38,6 +38,7 @@ RunResult runScene(const Scene& scene, const SceneDescription& description, cons
         auto start = std::chrono::steady_clock::now();
         engine->step(kDt);
         elapsed += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (measure) engine->countStep();
         if (measure && (step % length.observeEvery == 0 || step == length.steps - 1)) {
           measure->observe(*engine, step);
         }

@@ -174,7 +174,6 @@ class ImpulseAdapter final : public EngineAdapter {
     for (const KinematicTarget& target : scene_.targets) steer(target, dt);
     world_.step(Real(dt));
     const impulse::StepProfile& profile = world_.profile();
-    passTotals_.add(profile.passes);
     stageTimes_.add({profile.pairs, profile.collide, profile.solve, profile.continuous, profile.sleep});
     ++stepCount_;
     spawnDue();
@@ -208,17 +207,20 @@ class ImpulseAdapter final : public EngineAdapter {
     return static_cast<int>(world_.overlapAABB({local(lower), local(upper)}).results.size());
   }
 
-  std::string passes() const override { return passTotals_.describe(stepCount_); }
+  void countStep() override { passTotals_.add(world_.profile().passes); }
+  std::string passes() const override { return passTotals_.describe(); }
   std::string stages() const override { return stageTimes_.describe(); }
 
  private:
   /// The solver's pass counts summed over the steps.
   struct PassTotals {
-    long contacts = 0, supportRows = 0, joints = 0, treeJoints = 0, pushedContacts = 0;
-    int pushSteps = 0;
+    long contacts = 0, supportRows = 0, joints = 0, treeJoints = 0, pushedContacts = 0, quietContacts = 0;
+    int steps = 0, pushSteps = 0;
 
     void add(const impulse::SolverPasses& step) {
+      ++steps;
       contacts += step.contacts;
+      quietContacts += step.quietContacts;
       supportRows += step.supportRows;
       joints += step.joints;
       treeJoints += step.treeJoints;
@@ -226,14 +228,17 @@ class ImpulseAdapter final : public EngineAdapter {
       pushSteps += step.pushedContacts > 0 ? 1 : 0;
     }
 
-    std::string describe(int steps) const {
+    std::string describe() const {
       if (steps == 0) return {};
-      char text[200];
+      char text[256];
       if (contacts == 0) {
         std::snprintf(text, sizeof text, "no contacts");
       } else {
-        std::snprintf(text, sizeof text, "support %.1f%% of contacts, push %.2f%% of contacts in %.1f%% of steps",
-                      percent(supportRows, contacts), percent(pushedContacts, contacts), percent(pushSteps, steps));
+        std::snprintf(text, sizeof text,
+                      "%.0f contacts a step (%.1f%% quiet: speculative, holding nothing), support %.1f%% of contacts, "
+                      "push %.2f%% of contacts in %.1f%% of steps",
+                      double(contacts) / steps, percent(quietContacts, contacts), percent(supportRows, contacts),
+                      percent(pushedContacts, contacts), percent(pushSteps, steps));
       }
       std::string line = text;
       if (joints == 0) return line + ", no joints";

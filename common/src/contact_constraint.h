@@ -266,6 +266,8 @@ struct WideContactSet {
   std::vector<std::uint8_t> overflowIntrudes;
   /// How many contacts that is.
   int pushedContacts = 0;
+  /// How many of the step's contacts are quiet (ConstraintRef::quiet).
+  int quietContacts = 0;
   /// Per solver state: kIntrudingBody where one of its contacts intrudes,
   /// down to kNearIntrusion two contacts from such a body, else 0 (the
   /// static dummy 0 always); pushQueue is markNearIntrusions' scratch.

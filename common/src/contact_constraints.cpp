@@ -144,6 +144,22 @@ constexpr int kKeysPerColor = 4;
 // the one-point ones first.
 int keyWithinColor(const ConstraintRef& ref) { return (ref.quiet ? 2 : 0) + (ref.twoPoints ? 1 : 0); }
 
+// How many refs are quiet: each colour's quiet keys' counts, off the sort's
+// key starts (`keyStart`, the colours' keys), and the overflow's one by one.
+std::int32_t countQuiet(std::span<const ConstraintRef> refs, const WideContactSet& set,
+                        std::span<const std::int32_t> keyStart, int coloursTaken) {
+  std::int32_t quiet = 0;
+  for (int color = 0; color < coloursTaken; ++color) {
+    const auto firstQuiet = std::size_t(kKeysPerColor * color + 2);
+    const std::int32_t end = set.colorStart[std::size_t(color) + 1];
+    quiet += end - keyStart[firstQuiet];
+  }
+  for (std::int32_t k = set.colorStart[GraphColoring::kOverflow]; k < std::int32_t(refs.size()); ++k) {
+    quiet += refs[std::size_t(set.order[std::size_t(k)])].quiet ? 1 : 0;
+  }
+  return quiet;
+}
+
 // Takes each ref a colour from the step's shared colouring and sorts the
 // refs by colour, each colour's quiet ones last and its one-point ones
 // together: what the wide build cuts into bundles. A colour's contacts share
@@ -176,6 +192,7 @@ void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring
     set.colorStart[color] = keyStart[std::size_t(key)];
   }
   set.colorStart[GraphColoring::kOverflow + 1] = std::int32_t(refs.size());
+  set.quietContacts = countQuiet(refs, set, std::span(keyStart).first(std::size_t(overflowKey)), coloursTaken);
 }
 
 // The kernels for this step's colours: the widest the world allows, but
@@ -261,6 +278,7 @@ void ContactConstraints::countPasses(SolverPasses& passes) const {
   passes.contacts += static_cast<int>(refs_.size());
   passes.supportRows += static_cast<int>(support_.rows().size());
   passes.pushedContacts += wide_.pushedContacts;
+  passes.quietContacts += wide_.quietContacts;
 }
 
 }  // namespace impulse

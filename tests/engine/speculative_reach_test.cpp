@@ -93,6 +93,26 @@ std::vector<BodyId> addFlyingRow(World& world, int count) {
   return row;
 }
 
+// Boxes flying together hold each other's speculative contacts, which
+// act on nothing while the row keeps its spacing: the solver counts them
+// as quiet (each pass only checks that they still would not act). Landed
+// on the ground, the boxes load their contacts and none is quiet.
+TEST(SpeculativeReach, RowFlyingTogether_HoldsQuietContacts_UntilItRests) {
+  World world;
+  addFlyingRow(world, 8);
+  simulate(world, 0.1);
+  EXPECT_EQ(world.profile().passes.contacts, 7) << "each pair of neighbours, 5 cm apart, within a step's reach";
+  EXPECT_EQ(world.profile().passes.quietContacts, 7);
+
+  World resting(sleepless());
+  addGround(resting);
+  addBox(resting, {.center = Vec2(0, Real(0.5))});
+  addBox(resting, {.center = Vec2(0, Real(1.5))});
+  simulate(resting, 1);
+  EXPECT_EQ(resting.profile().passes.contacts, 2);
+  EXPECT_EQ(resting.profile().passes.quietContacts, 0);
+}
+
 // A row flying into a wall: each box stops against the one ahead, which has
 // landed or is landing within the same step, instead of ending the step
 // inside it. The reach of a pair whose bodies move together is their whole

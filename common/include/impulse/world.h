@@ -95,6 +95,10 @@ struct SolverPasses {
   int joints = 0;          ///< joints solved
   int treeJoints = 0;      ///< joints the exact tree pass solved
   int pushedContacts = 0;  ///< contacts the push pass ran on (0: no push)
+  /// Of the contacts, the speculative ones that held nothing when prepared:
+  /// apart, and closing no faster than their gap (each pass only checks
+  /// that they still would not act).
+  int quietContacts = 0;
 };
 
 /// Wall-clock milliseconds spent in each phase of the last step.
