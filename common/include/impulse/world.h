@@ -95,9 +95,9 @@ struct SolverPasses {
   int joints = 0;          ///< joints solved
   int treeJoints = 0;      ///< joints the exact tree pass solved
   int pushedContacts = 0;  ///< contacts the push pass ran on (0: no push)
-  /// Of the contacts, the speculative ones that held nothing when prepared:
-  /// apart, and closing no faster than their gap (each pass only checks
-  /// that they still would not act).
+  /// Of the contacts, the quiet ones: speculative, every point apart and no
+  /// impulse carried from the last step (each pass first checks whether
+  /// they would act, and leaves their bodies alone where not).
   int quietContacts = 0;
 };
 
