@@ -144,25 +144,10 @@ constexpr int kKeysPerColor = 4;
 // the one-point ones first.
 int keyWithinColor(const ConstraintRef& ref) { return (ref.quiet ? 2 : 0) + (ref.twoPoints ? 1 : 0); }
 
-// How many refs are quiet: each colour's quiet keys' counts, off the sort's
-// key starts (`keyStart`, the colours' keys), and the overflow's one by one.
-std::int32_t countQuiet(std::span<const ConstraintRef> refs, const WideContactSet& set,
-                        std::span<const std::int32_t> keyStart, int coloursTaken) {
-  std::int32_t quiet = 0;
-  for (int color = 0; color < coloursTaken; ++color) {
-    const auto firstQuiet = std::size_t(kKeysPerColor * color + 2);
-    const std::int32_t end = set.colorStart[std::size_t(color) + 1];
-    quiet += end - keyStart[firstQuiet];
-  }
-  for (std::int32_t k = set.colorStart[GraphColoring::kOverflow]; k < std::int32_t(refs.size()); ++k) {
-    quiet += refs[std::size_t(set.order[std::size_t(k)])].quiet ? 1 : 0;
-  }
-  return quiet;
-}
-
 // Takes each ref a colour from the step's shared colouring and sorts the
 // refs by colour, each colour's quiet ones last and its one-point ones
-// together: what the wide build cuts into bundles. A colour's contacts share
+// together: what the wide build cuts into bundles (and counts the quiet
+// ones, SolverPasses::quietContacts). A colour's contacts share
 // no body, so their order within it changes no result; the overflow's,
 // solved one by one, keep theirs. The sort runs over the keys of the
 // colours taken and the overflow's, which follows them: its fixed cost over
@@ -172,8 +157,10 @@ void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring
   set.colorKey.resize(refs.size());
   int coloursTaken = 0;
   bool anyOverflow = false;
+  std::int32_t quiet = 0;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const ConstraintRef& ref = refs[i];
+    quiet += ref.quiet ? 1 : 0;
     // A body contacts do not move (static, kinematic) is only read: it
     // takes no colour, or a drum's contacts would take one colour each.
     const int color = coloring.take(movesBody(ref.invMassA, ref.invInertiaA) ? ref.stateA : 0,
@@ -192,7 +179,7 @@ void colourContacts(std::span<const ConstraintRef> refs, GraphColoring& coloring
     set.colorStart[color] = keyStart[std::size_t(key)];
   }
   set.colorStart[GraphColoring::kOverflow + 1] = std::int32_t(refs.size());
-  set.quietContacts = countQuiet(refs, set, std::span(keyStart).first(std::size_t(overflowKey)), coloursTaken);
+  set.quietContacts = quiet;
 }
 
 // The kernels for this step's colours: the widest the world allows, but

@@ -1104,6 +1104,10 @@ void storeWideImpulses(WideContactSet& set, WorldData& world) {
                           visitFetchingAhead(
                               begin, end,
                               [&](std::int32_t b) {
+                                // The store's own test, a few bundles ahead (its lines are
+                                // then still in for it): the lines of a bundle it skips are
+                                // not fetched. Fetching for every bundle but quiet ones
+                                // instead took smash's store 0.91-1.00 -> 1.05-1.25 %.
                                 const std::size_t k = std::size_t(b);
                                 if (keepsQuietManifolds(bundles[k], set.bundleTraits[k],
                                                         &set.laneSupportRecord[k * F::kLanes])) {
